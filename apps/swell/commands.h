@@ -1,0 +1,41 @@
+// The subcommands of the swell executable. Each returns a process exit code
+// (swell::kExitOk, kExitBadInput, kExitFailure) and throws nothing.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace swell::app {
+
+struct RenderOptions {
+    std::string scenePath;          // empty: the built-in default scene
+    std::string output;             // .png (one frame, or a sequence), or .mp4
+    int width = 1280, height = 720; // pixels
+    double time_s = 0.0;            // simulation time of the (first) frame, s
+    std::optional<double> duration_s; // render a sequence this long, s
+    double fps = 30.0;              // frames per second of a sequence
+};
+int runRender(const RenderOptions& options);
+
+struct ViewOptions {
+    std::string scenePath;
+    // For tests and scripts: quit after this many frames, writing a screenshot
+    // to screenshotPath first when it is set.
+    int exitAfterFrames = 0;
+    std::string screenshotPath;
+    int width = 1280, height = 720;
+};
+int runView(const ViewOptions& options);
+
+// True when a window can be opened (a display is there and usable).
+bool displayAvailable();
+
+struct BenchOptions {
+    int width = 1280, height = 720;
+    int frames = 60;       // measured frames along the camera path
+    int warmup = 10;       // frames rendered and discarded first
+    std::string jsonPath;  // also write the results as JSON here
+};
+int runBench(const BenchOptions& options);
+
+} // namespace swell::app

@@ -1,0 +1,105 @@
+// swell: view an ocean in a window, render it headless, or benchmark it.
+// With no subcommand it shows the default scene in a window when a display is
+// usable, and otherwise renders it to a PNG whose path it prints.
+#include "commands.h"
+
+#include "swell/error.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <regex>
+
+namespace {
+
+// "1280x720" -> width, height; throws CLI::ValidationError otherwise.
+void parseSize(const std::string& text, int& width, int& height)
+{
+    static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
+    std::smatch m;
+    if (!std::regex_match(text, m, pattern))
+        throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 1280x720, got '" + text + "'");
+    width = std::stoi(m[1]);
+    height = std::stoi(m[2]);
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        throw CLI::ValidationError("--size", "each side must be 1..16384 pixels, got '" + text + "'");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"Swell: a real-time ocean renderer.\n"
+                 "With no subcommand: a window on the default scene when a display is usable,\n"
+                 "otherwise a headless render of it to swell-default.png."};
+    app.set_version_flag("--version", std::string("swell ") + SWELL_VERSION);
+    app.require_subcommand(0, 1);
+
+    swell::app::ViewOptions view;
+    std::string viewSize = "1280x720";
+    CLI::App* viewCommand = app.add_subcommand("view", "Open the interactive viewer");
+    viewCommand->add_option("scene", view.scenePath, "Scene file (TOML); the built-in default when omitted");
+    viewCommand->add_option("--size", viewSize, "Window size, WIDTHxHEIGHT")->capture_default_str();
+    viewCommand->add_option("--exit-after-frames", view.exitAfterFrames,
+                            "Quit after this many frames (for tests and scripts)")->check(CLI::Range(0, 1000000));
+    viewCommand->add_option("--screenshot", view.screenshotPath,
+                            "With --exit-after-frames: write the last frame to this PNG first");
+
+    swell::app::RenderOptions render;
+    std::string renderSize = "1280x720";
+    double duration = -1.0;
+    CLI::App* renderCommand = app.add_subcommand("render", "Render headless to a PNG, an image sequence or an MP4");
+    renderCommand->add_option("scene", render.scenePath, "Scene file (TOML); the built-in default when omitted");
+    renderCommand->add_option("-o,--output", render.output,
+                              "Output: NAME.png for one frame; with --duration, NAME.png becomes NAME_00000.png, "
+                              "NAME_00001.png, ... or NAME.mp4 a video (needs the ffmpeg program)")->required();
+    renderCommand->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->capture_default_str();
+    renderCommand->add_option("--time", render.time_s, "Simulation time of the first frame, seconds")
+        ->check(CLI::Range(0.0, 1.0e9))->capture_default_str();
+    renderCommand->add_option("--duration", duration, "Render a sequence this many seconds long")
+        ->check(CLI::Range(0.0, 3600.0));
+    renderCommand->add_option("--fps", render.fps, "Frames per second of a sequence")
+        ->check(CLI::Range(1.0, 240.0))->capture_default_str();
+
+    swell::app::BenchOptions bench;
+    std::string benchSize = "1280x720";
+    CLI::App* benchCommand = app.add_subcommand("bench", "Benchmark the default scene headless along a fixed camera path");
+    benchCommand->add_option("--size", benchSize, "Frame size, WIDTHxHEIGHT")->capture_default_str();
+    benchCommand->add_option("--frames", bench.frames, "Measured frames")->check(CLI::Range(1, 100000))->capture_default_str();
+    benchCommand->add_option("--warmup", bench.warmup, "Frames rendered first and not measured")
+        ->check(CLI::Range(0, 100000))->capture_default_str();
+    benchCommand->add_option("--json", bench.jsonPath, "Also write the results as JSON to this file");
+
+    try {
+        app.parse(argc, argv);
+        if (*viewCommand) {
+            parseSize(viewSize, view.width, view.height);
+            return swell::app::runView(view);
+        }
+        if (*renderCommand) {
+            parseSize(renderSize, render.width, render.height);
+            if (duration >= 0.0)
+                render.duration_s = duration;
+            return swell::app::runRender(render);
+        }
+        if (*benchCommand) {
+            parseSize(benchSize, bench.width, bench.height);
+            return swell::app::runBench(bench);
+        }
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return swell::kExitBadInput;
+    }
+    // No subcommand: the main job.
+    if (swell::app::displayAvailable())
+        return swell::app::runView(view);
+    render.output = "swell-default.png";
+    return swell::app::runRender(render);
+}

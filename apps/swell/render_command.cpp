@@ -1,0 +1,143 @@
+// `swell render`: headless frames to PNG, a PNG sequence, or an MP4 through
+// the ffmpeg program.
+#include "commands.h"
+#include "progress.h"
+#include "scene_loading.h"
+
+#include "swell/camera.h"
+#include "swell/error.h"
+#include "swell/gl/context.h"
+#include "swell/renderer.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
+
+namespace swell::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool programOnPath(const std::string& name)
+{
+    const char* path = std::getenv("PATH");
+    if (!path)
+        return false;
+    std::string dirs = path;
+    size_t start = 0;
+    while (start <= dirs.size()) {
+        const size_t end = std::min(dirs.find(':', start), dirs.size());
+        const fs::path candidate = fs::path(dirs.substr(start, end - start)) / name;
+        if (::access(candidate.c_str(), X_OK) == 0)
+            return true;
+        start = end + 1;
+    }
+    return false;
+}
+
+// Where frame i of a sequence goes: NAME.png -> NAME_00042.png.
+fs::path sequencePath(const fs::path& output, int frame)
+{
+    return output.parent_path() / fmt::format("{}_{:05d}{}", output.stem().string(), frame, output.extension().string());
+}
+
+// Pipes raw RGBA frames into ffmpeg, which encodes H.264 into an MP4.
+class VideoWriter {
+public:
+    VideoWriter(const fs::path& output, int width, int height, double fps)
+    {
+        const std::string command = fmt::format(
+            "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s {}x{} -r {} -i - -c:v libx264 -pix_fmt yuv420p "
+            "-movflags +faststart '{}'",
+            width, height, fps, output.string());
+        pipe_ = ::popen(command.c_str(), "w");
+        if (!pipe_)
+            throw Error("cannot start ffmpeg");
+    }
+    ~VideoWriter()
+    {
+        if (pipe_)
+            ::pclose(pipe_);
+    }
+    void write(const Image& image)
+    {
+        if (std::fwrite(image.rgba.data(), 1, image.rgba.size(), pipe_) != image.rgba.size())
+            throw Error("ffmpeg stopped taking frames (see its message above)");
+    }
+    void finish()
+    {
+        const int status = ::pclose(pipe_);
+        pipe_ = nullptr;
+        if (status != 0)
+            throw Error(fmt::format("ffmpeg failed (exit status {})", status));
+    }
+
+private:
+    FILE* pipe_ = nullptr;
+};
+
+} // namespace
+
+int runRender(const RenderOptions& options)
+{
+    try {
+        const fs::path output = options.output;
+        const std::string extension = output.extension().string();
+        if (extension != ".png" && extension != ".mp4")
+            throw InputError({"--output"}, fmt::format("'{}': the output must end in .png or .mp4", options.output));
+        const bool video = extension == ".mp4";
+        if (video && !options.duration_s)
+            throw InputError({"--output"}, "an .mp4 output needs --duration SECONDS");
+        if (video && !programOnPath("ffmpeg"))
+            throw InputError({"--output"}, "writing .mp4 needs the ffmpeg program, which is not installed "
+                                           "(apt-get install ffmpeg), or write a PNG sequence instead");
+        if (output.has_parent_path())
+            fs::create_directories(output.parent_path());
+
+        const Scene scene = loadSceneOrDefault(options.scenePath);
+        gl::HeadlessContext context(true);
+        gl::DebugHandler debug = gl::logOnceDebugHandler();
+        gl::installDebugHandler(&debug);
+        Renderer renderer(scene);
+        const glm::ivec2 size(options.width, options.height);
+
+        const int frames = options.duration_s ? std::max(1, int(std::lround(*options.duration_s * options.fps))) : 1;
+        std::unique_ptr<VideoWriter> videoWriter;
+        if (video)
+            videoWriter = std::make_unique<VideoWriter>(output, options.width, options.height, options.fps);
+        Progress progress("rendering", frames);
+        for (int i = 0; i < frames; ++i) {
+            const double t = options.time_s + double(i) / options.fps;
+            const Image image = renderer.renderImage(cameraAt(scene.camera, t), t, size);
+            if (video)
+                videoWriter->write(image);
+            else
+                writePng(image, options.duration_s ? sequencePath(output, i) : output);
+            progress.advance();
+        }
+        if (videoWriter)
+            videoWriter->finish();
+        progress.finish();
+        if (frames == 1 && !video)
+            std::printf("%s\n", fs::absolute(output).c_str());
+        else if (video)
+            std::printf("%s\n", fs::absolute(output).c_str());
+        else
+            std::printf("%s .. %s\n", fs::absolute(sequencePath(output, 0)).c_str(),
+                        fs::absolute(sequencePath(output, frames - 1)).c_str());
+        return kExitOk;
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "swell: error: %s\n", e.what());
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "swell: error: %s\n", e.what());
+        return kExitFailure;
+    }
+}
+
+} // namespace swell::app

@@ -1,0 +1,28 @@
+// A perspective camera in world space, in double precision; the renderer
+// draws relative to its x,z so precision does not depend on where it is.
+#pragma once
+
+#include "swell/scene.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace swell {
+
+struct Camera {
+    glm::dvec3 position_m{0.0, 6.0, 0.0}; // world position, m
+    double yaw_deg = 0.0;                  // heading, degrees from -z towards +x
+    double pitch_deg = 0.0;                // degrees, -89..89
+    double fovY_deg = 60.0;                // vertical field of view, degrees
+    double near_m = 0.1, far_m = 20000.0;  // clip planes, m
+
+    glm::dvec3 forward() const;
+    // View matrix for positions relative to `origin_m` (the render origin).
+    glm::dmat4 viewRelativeTo(glm::dvec3 origin_m) const;
+    glm::dmat4 projection(double aspect) const;
+};
+
+// The scene's camera at time t: its fixed pose, or its path interpolated.
+Camera cameraAt(const CameraSettings& settings, double time_s);
+
+} // namespace swell

@@ -1,0 +1,71 @@
+// The ocean renderer: draws a Scene with a Camera at a simulation time into a
+// framebuffer of the current OpenGL 4.5 context. Passes:
+//   1  reflection: sky and world mirrored about the water plane (colour + depth)
+//   1b refraction: the world below the water plane (colour + depth)
+//   2  main: sky and world, then the water, depth-tested against the world
+#pragma once
+
+#include "swell/camera.h"
+#include "swell/gl/shader.h"
+#include "swell/image.h"
+#include "swell/scene.h"
+
+#include <glm/vec2.hpp>
+
+#include <memory>
+
+namespace swell {
+
+struct RendererOptions {
+    // Where shaders come from: the embedded copies, or a folder for hot reload.
+    gl::ShaderSources shaders = gl::ShaderSources::embedded();
+};
+
+// Triangles and draw calls of the last frame, for the benchmark and tests.
+struct FrameCounters {
+    long long waterTriangles = 0;
+    long long worldTriangles = 0;
+    int drawCalls = 0;
+};
+
+class Renderer {
+public:
+    // Needs a current OpenGL 4.5 core context. Throws swell::InputError when a
+    // shader does not compile (naming the file and line) or an asset is bad.
+    explicit Renderer(const Scene& scene, RendererOptions options = {});
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Switches to another scene; rebuilds only what its changes require.
+    void setScene(const Scene& scene);
+    const Scene& scene() const;
+    // The waves being rendered (generated from the wind or listed).
+    const WaveSet& waves() const;
+
+    // Recompiles every shader from options.shaders (for hot reload). On failure
+    // the old programs stay in use and the error is thrown.
+    void reloadShaders();
+
+    // Draws one frame into `framebuffer` (0: the default one) of `size` pixels.
+    // A zero-sized frame draws nothing.
+    void render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer = 0);
+    // Draws one frame offscreen and reads it back (top row first).
+    Image renderImage(const Camera& camera, double time_s, glm::ivec2 size);
+
+    const FrameCounters& counters() const;
+
+    // For tests: binds the water program with transform feedback capture of
+    // vRestPoint, vPosition and vNormal (8 floats per vertex) for this frame
+    // setup, draws the grid's vertices as points into `buffer`, and returns the
+    // vertex count. Render origin: the camera's x,z.
+    int captureWaterVertices(const Camera& camera, double time_s, unsigned buffer);
+    // The number of vertices captureWaterVertices writes.
+    int waterVertexCount() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace swell

@@ -1,0 +1,133 @@
+// Everything that describes what Swell renders: waves, grid, sun, sky, fog,
+// water optics, objects and camera. Plain data with units; scene files
+// (swell/scene_file.h) read and write it, and the renderer draws it.
+#pragma once
+
+#include "swell/spectrum.h"
+#include "swell/waves.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace swell {
+
+// How the water finds what it reflects.
+enum class ReflectionMode {
+    FixedDistance, // the paper's lookup: step a fixed distance along the reflected ray
+    RayMarch,      // march the reflected ray against the reflection depth buffer (default)
+};
+
+// What the water pass shows: the shaded ocean or one of its ingredients.
+enum class DebugView { Shaded, Normals, Reflection, Refraction, Lod, Wireframe };
+
+// Where the waves come from: listed by hand, or generated from the wind.
+struct WaveSource {
+    std::optional<WindSettings> wind; // when set, waves are generated and `listed` is ignored
+    WaveSet listed;                   // hand-listed waves (and the water depth for both)
+};
+
+// The camera-following LOD grid of the paper. Rebuild settings: a change
+// recreates the grid's index buffer.
+struct GridSettings {
+    int resolution = 256;       // vertices along each side, 16..2048
+    double radius_m = 2000.0;   // half-size of the detailed grid around the camera, m, 10..100000
+    // Wave height fades to zero between these distances from the camera, m (Earth-curvature trick).
+    double fadeStart_m = 800.0;
+    double fadeEnd_m = 1900.0;
+};
+
+struct SunSettings {
+    glm::dvec3 direction{-0.4, 0.35, -0.85}; // towards the sun, world space; normalised on use
+    glm::dvec3 color{1.0, 0.95, 0.85};        // linear RGB, 0..1
+    double intensity = 1.0;                   // multiplier, 0..20
+};
+
+struct SkySettings {
+    // Six images (+x, -x, +y, -y, +z, -z), paths relative to the scene file.
+    // Empty: the built-in procedural sky, coloured from the values below.
+    std::vector<std::string> cubemapFaces;
+    glm::dvec3 zenithColor{0.18, 0.36, 0.70};  // linear RGB, 0..1
+    glm::dvec3 horizonColor{0.70, 0.80, 0.90}; // linear RGB, 0..1
+};
+
+struct FogSettings {
+    double start_m = 1200.0;               // fog begins, m from the camera, >= 0
+    double end_m = 6000.0;                 // fog is complete, m, > start
+    glm::dvec3 color{0.70, 0.80, 0.90};    // linear RGB, 0..1
+};
+
+struct WaterSettings {
+    glm::dvec3 deepColor{0.01, 0.06, 0.10};       // colour of light scattered back from deep water, linear RGB
+    glm::dvec3 absorption_per_m{0.45, 0.09, 0.06}; // Beer-Lambert absorption coefficient per channel, 1/m, >= 0
+    double fresnelF0 = 0.02;                      // reflectance looking straight down, 0..1 (water: 0.02)
+    double shininess = 400.0;                     // Phong specular exponent, 1..10000
+    double specularStrength = 1.0;                // 0..10
+    double refractionDistortion = 0.05;           // how much the normal bends the refraction lookup, 0..1
+};
+
+struct ReflectionSettings {
+    ReflectionMode mode = ReflectionMode::RayMarch;
+    double fixedDistance_m = 5.0;  // step along the reflected ray in FixedDistance mode, m (the paper: 5)
+    double resolutionScale = 0.5;  // reflection/refraction target size relative to the output, 0.1..1
+    double clipOffset_m = 0.3;     // the mirrored world is clipped this far below the water plane, m
+};
+
+// SceneObject::path names a model drawn without a file when it is
+// kBuiltinObjectPrefix followed by one of kBuiltinObjects ("builtin:buoy").
+inline constexpr std::string_view kBuiltinObjectPrefix = "builtin:";
+inline constexpr std::array<std::string_view, 3> kBuiltinObjects{"buoy", "boat", "rock"};
+
+// A glTF model placed in the world.
+struct SceneObject {
+    std::string path;                 // .gltf or .glb, relative to the scene file; "builtin:NAME" for a built-in
+    glm::dvec3 position_m{0.0};       // world position, m
+    double yaw_deg = 0.0;             // rotation about +y, degrees
+    double scale = 1.0;               // uniform scale, > 0
+    bool floats = false;              // ride the waves (height and tilt from the CPU wave query)
+};
+
+struct CameraKey {
+    double time_s = 0.0;          // when the camera is here, s
+    glm::dvec3 position_m{0.0};   // world position, m
+    double yaw_deg = 0.0;         // heading, degrees from -z towards +x
+    double pitch_deg = 0.0;       // up/down, degrees, -89..89
+};
+
+struct CameraSettings {
+    glm::dvec3 position_m{0.0, 6.0, 0.0}; // world position, m
+    double yaw_deg = 0.0;                  // heading, degrees from -z towards +x
+    double pitch_deg = -5.0;               // degrees, -89..89
+    double fovY_deg = 60.0;                // vertical field of view, degrees, 10..150
+    double near_m = 0.1;                   // near plane, m, > 0
+    double far_m = 20000.0;                // far plane, m, > near
+    std::vector<CameraKey> path;           // optional: keys sorted by time, interpolated linearly
+};
+
+struct Scene {
+    WaveSource waves;
+    GridSettings grid;
+    SunSettings sun;
+    SkySettings sky;
+    FogSettings fog;
+    WaterSettings water;
+    ReflectionSettings reflection;
+    std::vector<SceneObject> objects;
+    CameraSettings camera;
+    DebugView debugView = DebugView::Shaded;
+    bool showTerrain = true; // the built-in island
+};
+
+// The built-in default scene: an open ocean under a trade wind, with an island.
+Scene defaultScene();
+
+// The wave set the scene describes at load time: generateWaves(*source.wind)
+// when the wind is set, else source.listed. Either way the water depth is
+// source.listed.depth_m (the wind's own depth_m is overridden by it).
+WaveSet resolveWaves(const WaveSource& source);
+
+} // namespace swell

@@ -1,0 +1,40 @@
+// Constants shared by C++ and GLSL. This file is included by both, so it holds
+// only preprocessor lines and comments. Every value has its reason above it.
+#ifndef SWELL_SHADER_CONSTANTS_H
+#define SWELL_SHADER_CONSTANTS_H
+
+// Most Gerstner waves summed per vertex. 64 keeps the wave UBO at 2 KiB
+// (two vec4 per wave) and the vertex shader affordable on software GL.
+#define SWELL_MAX_WAVES 64
+
+// Snap levels of the LOD grid: level l snaps vertices to multiples of
+// (finest step * 2^l). 24 levels span 0.1 m to over 800 km.
+#define SWELL_GRID_LEVELS 24
+
+// Uniform block binding points, fixed so every program agrees without queries.
+#define SWELL_BINDING_FRAME 0
+#define SWELL_BINDING_WAVES 1
+
+// Texture units, fixed for the same reason.
+#define SWELL_UNIT_SKY 0
+#define SWELL_UNIT_REFLECTION_COLOR 1
+#define SWELL_UNIT_REFLECTION_DEPTH 2
+#define SWELL_UNIT_REFRACTION_COLOR 3
+#define SWELL_UNIT_REFRACTION_DEPTH 4
+#define SWELL_UNIT_BASE_COLOR 5
+
+// A wave is faded out where the grid samples it with fewer than this many
+// cells per wavelength (Nyquist is 2; a little more keeps shading stable).
+#define SWELL_MIN_CELLS_PER_WAVELENGTH 2.0
+// ...and is at full strength from this many cells per wavelength on.
+#define SWELL_FULL_CELLS_PER_WAVELENGTH 4.0
+
+// Debug views, selected by the scene or viewer (prepended as SWELL_DEBUG_VIEW).
+#define SWELL_VIEW_SHADED 0
+#define SWELL_VIEW_NORMALS 1
+#define SWELL_VIEW_REFLECTION 2
+#define SWELL_VIEW_REFRACTION 3
+#define SWELL_VIEW_LOD 4
+#define SWELL_VIEW_WIREFRAME 5
+
+#endif

@@ -1,0 +1,15 @@
+// The sky behind everything, fogged toward the horizon with the same fog as the water.
+#include "frame.glsl"
+#include "fog.glsl"
+#include "sky.glsl"
+
+in vec2 vNdc;
+out vec4 fragColor;
+
+void main()
+{
+    vec4 far = passInvViewProj * vec4(vNdc, 1.0, 1.0);
+    vec4 near = passInvViewProj * vec4(vNdc, -1.0, 1.0);
+    vec3 direction = normalize(far.xyz / far.w - near.xyz / near.w);
+    fragColor = passOutput(applyFog(skyRadiance(direction), skyDistance(direction)));
+}

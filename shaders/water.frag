@@ -1,0 +1,59 @@
+// Water shading: reflection weighed against refraction by Fresnel, Phong
+// diffuse and specular from the sun, and fog.
+#include "frame.glsl"
+#include "fog.glsl"
+#include "lighting.glsl"
+#include "reflection.glsl"
+#include "refraction.glsl"
+#include "waves.glsl"
+
+in vec3 vPosition;
+in vec3 vNormal;
+in vec2 vRestPoint;
+in float vCellSize;
+in float vHeightScale;
+out vec4 fragColor;
+
+void main()
+{
+    // The grid carries only the waves it can sample; the shading normal sums
+    // every wave this pixel can resolve, filtered by the pixel's footprint on
+    // the water instead of the grid spacing (the same wave function).
+    vec2 footprint = fwidth(vRestPoint);
+    float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
+    vec3 n = gerstnerSum(vRestPoint - gridCenter.xz, pixelSize_m, vHeightScale).normal;
+    vec3 toEye = eyePosition.xyz - vPosition;
+    float distance_m = length(toEye);
+    vec3 v = toEye / distance_m;
+    // Seen from a grazing angle, an interpolated normal can face away.
+    if (dot(n, v) < 0.0)
+        n = normalize(n - v * dot(n, v) * 1.01);
+
+    vec2 screenUv = gl_FragCoord.xy * viewport.zw;
+    vec3 reflected = reflectedRadiance(vPosition, reflect(-v, n));
+    float path_m;
+    vec3 refracted = refractedRadiance(vPosition, n, screenUv, path_m);
+    // Phong diffuse lights the light scattered inside the water.
+    float lit = 0.35 + 0.65 * phongDiffuse(n);
+    refracted *= mix(1.0, lit, 1.0 - exp(-0.2 * min(path_m, 100.0)));
+
+    float fresnel = fresnelSchlick(dot(n, v), waterOptics.x);
+    vec3 color = mix(refracted, reflected, fresnel);
+    color += sunColor.rgb * sunDirection.w * waterOptics.z * phongSpecular(n, v, waterOptics.y) * step(0.0, sunDirection.y);
+
+#if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS
+    color = n * 0.5 + 0.5;
+#elif SWELL_DEBUG_VIEW == SWELL_VIEW_REFLECTION
+    color = reflected;
+#elif SWELL_DEBUG_VIEW == SWELL_VIEW_REFRACTION
+    color = refracted;
+#elif SWELL_DEBUG_VIEW == SWELL_VIEW_LOD
+    // Cell size on a log scale: 0.25 m red ... 256 m blue, with stripes per level.
+    float level = log2(max(vCellSize, 0.01) / 0.25) / 10.0;
+    color = mix(vec3(1.0, 0.2, 0.1), vec3(0.1, 0.3, 1.0), clamp(level, 0.0, 1.0)) * (0.75 + 0.25 * fract(level * 10.0));
+#endif
+#if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED || SWELL_DEBUG_VIEW == SWELL_VIEW_REFLECTION || SWELL_DEBUG_VIEW == SWELL_VIEW_REFRACTION
+    color = applyFog(color, distance_m);
+#endif
+    fragColor = passOutput(color);
+}

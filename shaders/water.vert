@@ -1,0 +1,25 @@
+// Water surface: grid vertex from gl_VertexID, Gerstner waves in world space.
+#include "frame.glsl"
+#include "grid.glsl"
+#include "waves.glsl"
+
+out vec3 vPosition;    // displaced position relative to the render origin, m
+out vec3 vNormal;
+out vec2 vRestPoint;   // rest position relative to the render origin, m (captured by tests)
+out float vCellSize;   // grid spacing, m (for the LOD view)
+out float vHeightScale; // horizon fade, 0..1
+
+void main()
+{
+    GridVertex g = gridVertex(gl_VertexID);
+    vec2 rest = gridCenter.xz + g.offset;
+    float distance_m = length(rest - eyePosition.xz);
+    float fade = horizonFade(distance_m);
+    SurfacePoint p = gerstnerSum(g.offset, g.cellSize, fade);
+    vPosition = vec3(rest.x, 0.0, rest.y) + p.displacement;
+    vNormal = p.normal;
+    vRestPoint = rest;
+    vCellSize = g.cellSize;
+    vHeightScale = fade;
+    gl_Position = passViewProj * vec4(vPosition, 1.0);
+}

@@ -1,0 +1,63 @@
+#include "swell/camera.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swell {
+
+glm::dvec3 Camera::forward() const
+{
+    const double yaw = glm::radians(yaw_deg), pitch = glm::radians(std::clamp(pitch_deg, -89.9, 89.9));
+    return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch)};
+}
+
+glm::dmat4 Camera::viewRelativeTo(glm::dvec3 origin_m) const
+{
+    const glm::dvec3 eye = position_m - origin_m;
+    return glm::lookAt(eye, eye + forward(), glm::dvec3(0.0, 1.0, 0.0));
+}
+
+glm::dmat4 Camera::projection(double aspect) const
+{
+    return glm::perspective(glm::radians(fovY_deg), aspect, near_m, far_m);
+}
+
+Camera cameraAt(const CameraSettings& s, double time_s)
+{
+    Camera c;
+    c.position_m = s.position_m;
+    c.yaw_deg = s.yaw_deg;
+    c.pitch_deg = s.pitch_deg;
+    c.fovY_deg = s.fovY_deg;
+    c.near_m = s.near_m;
+    c.far_m = s.far_m;
+    if (s.path.empty())
+        return c;
+    const auto& path = s.path;
+    auto apply = [&c](const CameraKey& k) {
+        c.position_m = k.position_m;
+        c.yaw_deg = k.yaw_deg;
+        c.pitch_deg = k.pitch_deg;
+    };
+    if (time_s <= path.front().time_s) {
+        apply(path.front());
+        return c;
+    }
+    if (time_s >= path.back().time_s) {
+        apply(path.back());
+        return c;
+    }
+    const auto next = std::upper_bound(path.begin(), path.end(), time_s,
+                                       [](double t, const CameraKey& k) { return t < k.time_s; });
+    const CameraKey& a = *(next - 1);
+    const CameraKey& b = *next;
+    const double f = (time_s - a.time_s) / std::max(b.time_s - a.time_s, 1e-9);
+    c.position_m = glm::mix(a.position_m, b.position_m, f);
+    c.yaw_deg = a.yaw_deg + (b.yaw_deg - a.yaw_deg) * f;
+    c.pitch_deg = a.pitch_deg + (b.pitch_deg - a.pitch_deg) * f;
+    return c;
+}
+
+} // namespace swell

@@ -1,0 +1,59 @@
+#include "swell/image.h"
+
+#include "swell/error.h"
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBI_FAILURE_USERMSG
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace swell {
+
+void writePng(const Image& image, const std::filesystem::path& path)
+{
+    if (image.width <= 0 || image.height <= 0)
+        throw Error("swell::writePng(): cannot write an empty image to " + path.string());
+    if (path.has_parent_path())
+        std::filesystem::create_directories(path.parent_path());
+    if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4))
+        throw Error("swell::writePng(): cannot write " + path.string());
+}
+
+Image readImage(const std::filesystem::path& path)
+{
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+    if (!data)
+        throw InputError({path.string()}, std::string("cannot read image: ") + stbi_failure_reason());
+    Image image{w, h, std::vector<std::uint8_t>(data, data + size_t(w) * size_t(h) * 4)};
+    stbi_image_free(data);
+    return image;
+}
+
+ImageDifference compareImages(const Image& a, const Image& b)
+{
+    ImageDifference d;
+    if (a.width != b.width || a.height != b.height) {
+        d.sameSize = false;
+        d.maxChannel = 255;
+        d.meanChannel = 255.0;
+        return d;
+    }
+    d.diff = Image{a.width, a.height, std::vector<std::uint8_t>(a.rgba.size(), 255)};
+    double sum = 0.0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4)
+        for (size_t c = 0; c < 3; ++c) {
+            const int delta = std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c]));
+            d.maxChannel = std::max(d.maxChannel, delta);
+            sum += delta;
+            d.diff.rgba[i + c] = std::uint8_t(std::min(255, delta * 4));
+        }
+    d.meanChannel = a.rgba.empty() ? 0.0 : sum / double(a.rgba.size() / 4 * 3);
+    return d;
+}
+
+} // namespace swell

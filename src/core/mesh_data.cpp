@@ -1,0 +1,149 @@
+// Procedural built-in models and the island heightfield.
+#include "core/mesh_data.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+
+namespace swell::detail {
+
+namespace {
+
+// Smooth value noise, deterministic, for the island's and rocks' relief.
+double hash2(int x, int y)
+{
+    std::uint32_t h = std::uint32_t(x) * 374761393u + std::uint32_t(y) * 668265263u;
+    h = (h ^ (h >> 13)) * 1274126177u;
+    return double(h ^ (h >> 16)) / 4294967295.0;
+}
+
+double valueNoise(double x, double y)
+{
+    const int ix = int(std::floor(x)), iy = int(std::floor(y));
+    const double fx = x - ix, fy = y - iy;
+    const double sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
+    const double a = hash2(ix, iy), b = hash2(ix + 1, iy), c = hash2(ix, iy + 1), d = hash2(ix + 1, iy + 1);
+    return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
+}
+
+double fractalNoise(double x, double y)
+{
+    double sum = 0.0, amplitude = 0.5;
+    for (int octave = 0; octave < 5; ++octave) {
+        sum += amplitude * (valueNoise(x, y) - 0.5);
+        x *= 2.03;
+        y *= 2.03;
+        amplitude *= 0.5;
+    }
+    return sum;
+}
+
+void addTriangleNormals(MeshData& mesh)
+{
+    for (MeshVertex& v : mesh.vertices)
+        v.normal = glm::vec3(0.0f);
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        MeshVertex& a = mesh.vertices[mesh.indices[i]];
+        MeshVertex& b = mesh.vertices[mesh.indices[i + 1]];
+        MeshVertex& c = mesh.vertices[mesh.indices[i + 2]];
+        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+        a.normal += n;
+        b.normal += n;
+        c.normal += n;
+    }
+    for (MeshVertex& v : mesh.vertices)
+        v.normal = glm::length(v.normal) > 0.0f ? glm::normalize(v.normal) : glm::vec3(0, 1, 0);
+}
+
+// A surface of revolution about +y: profile points (radius, height), each ring
+// coloured by colorAt(height). Closed with caps at both ends.
+template <class ColorAt>
+void addLathe(MeshData& mesh, const std::vector<glm::vec2>& profile, int segments, ColorAt colorAt)
+{
+    const auto base = std::uint32_t(mesh.vertices.size());
+    for (const glm::vec2& p : profile)
+        for (int s = 0; s <= segments; ++s) {
+            const float a = float(s) / float(segments) * glm::two_pi<float>();
+            mesh.vertices.push_back({{p.x * std::cos(a), p.y, p.x * std::sin(a)}, {}, colorAt(p.y)});
+        }
+    const auto ring = std::uint32_t(segments + 1);
+    for (std::uint32_t r = 0; r + 1 < profile.size(); ++r)
+        for (std::uint32_t s = 0; s < std::uint32_t(segments); ++s) {
+            const std::uint32_t a = base + r * ring + s, b = a + 1, c = a + ring, d = c + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
+        }
+}
+
+} // namespace
+
+MeshData makeIsland(double size_m, double peak_m, int resolution)
+{
+    MeshData mesh;
+    const int n = resolution;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            const double x = (double(i) / n - 0.5) * size_m, z = (double(j) / n - 0.5) * size_m;
+            const double r = std::sqrt(x * x + z * z) / (0.5 * size_m);
+            // A dome that dips below the water at r ~ 0.45, shallows to r ~ 0.75, then deep.
+            const double dome = std::exp(-r * r * 9.0);
+            const double relief = fractalNoise(x / 90.0 + 7.3, z / 90.0 - 2.1);
+            double h = peak_m * (dome + 0.9 * relief * dome) - 2.0 - 38.0 * std::min(r, 1.0) * std::min(r, 1.0);
+            h = std::max(h, -45.0);
+            glm::vec3 color;
+            if (h < -1.0)
+                color = {0.55f, 0.50f, 0.38f}; // wet sand under water
+            else if (h < 2.5)
+                color = {0.80f, 0.73f, 0.55f}; // beach
+            else if (h < peak_m * 0.55)
+                color = {0.22f, 0.36f, 0.14f}; // vegetation
+            else
+                color = {0.42f, 0.40f, 0.37f}; // rock
+            mesh.vertices.push_back({{float(x), float(h), float(z)}, {}, color});
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const auto a = std::uint32_t(j * (n + 1) + i), b = a + 1, c = a + std::uint32_t(n + 1), d = c + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
+        }
+    addTriangleNormals(mesh);
+    return mesh;
+}
+
+MeshData makeBuiltinModel(const std::string& name)
+{
+    MeshData mesh;
+    if (name == "buoy") {
+        // A 2.4 m navigation buoy: red and white bands, a float below the waterline.
+        const std::vector<glm::vec2> profile{{0.0f, -1.2f}, {0.9f, -1.0f}, {1.0f, -0.2f}, {0.9f, 0.3f},
+                                             {0.35f, 0.5f}, {0.3f, 2.0f}, {0.45f, 2.1f}, {0.0f, 2.4f}};
+        addLathe(mesh, profile, 24, [](float y) {
+            return (y > 0.9f && y < 1.5f) || y > 2.05f ? glm::vec3(0.9f, 0.9f, 0.85f) : glm::vec3(0.75f, 0.06f, 0.04f);
+        });
+    } else if (name == "rock") {
+        // A weathered boulder, 6 m across: a lumpy dome that stands in the water.
+        std::vector<glm::vec2> profile;
+        for (int i = 0; i <= 10; ++i) {
+            const float t = float(i) / 10.0f;
+            profile.push_back({3.0f * std::sqrt(std::max(0.0f, 1.0f - t * t)) + 0.01f, -4.0f + 7.0f * t});
+        }
+        profile.push_back({0.0f, 3.05f});
+        addLathe(mesh, profile, 20, [](float) { return glm::vec3(0.36f, 0.34f, 0.31f); });
+        for (MeshVertex& v : mesh.vertices) {
+            const float bump = float(fractalNoise(v.position.x * 0.7 + 11.0, v.position.z * 0.7 + v.position.y * 0.5));
+            v.position *= 1.0f + 0.6f * bump;
+        }
+    } else if (name == "boat") {
+        // A 7 m open boat: a hull of revolution, flattened across, white above a dark bottom.
+        std::vector<glm::vec2> profile{{0.0f, -0.6f}, {0.6f, -0.55f}, {0.95f, -0.2f}, {1.0f, 0.5f}, {0.98f, 0.6f}};
+        addLathe(mesh, profile, 32, [](float y) {
+            return y < 0.0f ? glm::vec3(0.12f, 0.16f, 0.25f) : glm::vec3(0.88f, 0.86f, 0.80f);
+        });
+        for (MeshVertex& v : mesh.vertices)
+            v.position *= glm::vec3(3.5f, 1.0f, 1.1f);
+    }
+    addTriangleNormals(mesh);
+    return mesh;
+}
+
+} // namespace swell::detail

@@ -1,0 +1,37 @@
+// CPU triangle meshes of world geometry: built-in procedural models, the
+// island heightfield, and glTF files. render/mesh.h uploads them.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace swell::detail {
+
+struct MeshVertex {
+    glm::vec3 position; // object space, m
+    glm::vec3 normal;
+    glm::vec3 color;    // linear RGB albedo
+};
+
+struct MeshData {
+    std::vector<MeshVertex> vertices;
+    std::vector<std::uint32_t> indices; // triangles
+};
+
+// The built-in island: a heightfield of side size_m centred on the origin,
+// peak_m above the water, sloping into shallows and then deep water.
+MeshData makeIsland(double size_m, double peak_m, int resolution);
+
+// Built-in models by name ("buoy", "boat", "rock"); empty data for unknown names.
+MeshData makeBuiltinModel(const std::string& name);
+
+// Loads every mesh of a glTF 2.0 file (.gltf or .glb) into one MeshData, with
+// node transforms applied. Throws swell::InputError naming the file and problem.
+MeshData loadGltf(const std::filesystem::path& path);
+
+} // namespace swell::detail

@@ -1,0 +1,17 @@
+// A text file compiled into the library (see cmake/EmbedFiles.cmake).
+#pragma once
+
+#include <span>
+#include <string_view>
+
+namespace swell::detail {
+
+struct EmbeddedFile {
+    std::string_view path; // relative to the shaders/ folder, '/'-separated
+    std::string_view text;
+};
+
+// The GLSL sources and the shared constants header, as they were at build time.
+std::span<const EmbeddedFile> embeddedShaderFiles();
+
+} // namespace swell::detail

@@ -1,0 +1,445 @@
+// The ocean renderer: owns the GPU state of a scene and draws its passes.
+#include "swell/renderer.h"
+
+#include "core/mesh_data.h"
+#include "render/gpu_types.h"
+#include "render/mesh.h"
+#include "render/render_target.h"
+#include "swell/error.h"
+#include "swell/grid.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+namespace swell {
+
+using namespace detail;
+
+namespace {
+
+constexpr double kIslandSize_m = 1400.0;
+constexpr double kIslandPeak_m = 70.0;
+constexpr int kIslandResolution = 192;
+// Where the built-in island stands: ahead-left of the default camera.
+constexpr glm::dvec3 kIslandPosition_m{-700.0, 0.0, -1700.0};
+
+enum Pass { PassReflection = 0, PassRefraction = 1, PassMain = 2, PassCount = 3 };
+
+glm::vec4 vec4Of(glm::dvec3 v, double w = 0.0) { return glm::vec4(glm::dvec4(v, w)); }
+
+int debugViewDefine(DebugView v)
+{
+    switch (v) {
+    case DebugView::Shaded: return SWELL_VIEW_SHADED;
+    case DebugView::Normals: return SWELL_VIEW_NORMALS;
+    case DebugView::Reflection: return SWELL_VIEW_REFLECTION;
+    case DebugView::Refraction: return SWELL_VIEW_REFRACTION;
+    case DebugView::Lod: return SWELL_VIEW_LOD;
+    case DebugView::Wireframe: return SWELL_VIEW_WIREFRAME;
+    }
+    return SWELL_VIEW_SHADED;
+}
+
+struct Programs {
+    gl::Program water, sky, mesh, capture;
+};
+
+struct WorldObject {
+    GpuMesh* mesh = nullptr;
+    SceneObject placement;
+};
+
+} // namespace
+
+struct Renderer::Impl {
+    Scene scene;
+    WaveSet waves;
+    GridShape gridShape;
+    gl::ShaderSources sources;
+    Programs programs;
+    gl::Buffer frameUbo[PassCount];
+    gl::Buffer waveUbo;
+    gl::VertexArray gridVao, emptyVao;
+    gl::Buffer gridIndices;
+    GLsizei gridIndexCount = 0;
+    GpuMesh island;
+    std::vector<std::unique_ptr<GpuMesh>> meshes; // one per scene object
+    gl::Texture skyCube;
+    RenderTarget reflection, refraction, output;
+    FrameCounters counters;
+    std::string sceneDirectory;
+
+    explicit Impl(RendererOptions options) : sources(std::move(options.shaders)) {}
+
+    Programs buildPrograms() const
+    {
+        const std::vector<std::string> defines{
+            "SWELL_DEBUG_VIEW " + std::to_string(debugViewDefine(scene.debugView)),
+            std::string("SWELL_SKY_CUBEMAP ") + (scene.sky.cubemapFaces.empty() ? "0" : "1")};
+        Programs p;
+        p.water = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}, {GL_FRAGMENT_SHADER, "water.frag"}}, defines);
+        p.sky = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}, defines);
+        p.mesh = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, defines);
+        p.capture = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, defines,
+                                     {"vRestPoint", "vPosition", "vNormal"});
+        return p;
+    }
+
+    void buildGrid()
+    {
+        gridShape.cells = std::max(4, (scene.grid.resolution - 1) & ~1);
+        gridShape.radius_m = scene.grid.radius_m;
+        gridShape.skirt_m = std::max(scene.camera.far_m * 0.9, scene.grid.radius_m * 2.0);
+        const auto lines = std::uint32_t(gridShape.cells + 1);
+        std::vector<std::uint32_t> indices;
+        indices.reserve(size_t(gridShape.cells) * size_t(gridShape.cells) * 6);
+        for (std::uint32_t j = 0; j + 1 < lines; ++j)
+            for (std::uint32_t i = 0; i + 1 < lines; ++i) {
+                const std::uint32_t a = j * lines + i, b = a + 1, c = a + lines, d = c + 1;
+                // Split each cell along the diagonal facing the centre, so the
+                // four quadrants are mirror images.
+                const bool flip = (i < lines / 2) != (j < lines / 2);
+                if (flip)
+                    indices.insert(indices.end(), {a, c, b, b, c, d});
+                else
+                    indices.insert(indices.end(), {a, c, d, a, d, b});
+            }
+        gridIndices = gl::Buffer::create();
+        glNamedBufferStorage(gridIndices.id(), GLsizeiptr(indices.size() * 4), indices.data(), 0);
+        gridVao = gl::VertexArray::create();
+        glVertexArrayElementBuffer(gridVao.id(), gridIndices.id());
+        gridIndexCount = GLsizei(indices.size());
+    }
+
+    void buildWorld()
+    {
+        island = scene.showTerrain ? GpuMesh(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution)) : GpuMesh();
+        meshes.clear();
+        for (const SceneObject& o : scene.objects) {
+            MeshData data;
+            if (o.path.starts_with("builtin:"))
+                data = makeBuiltinModel(o.path.substr(8));
+            else
+                data = loadGltf(std::filesystem::path(o.path));
+            if (data.vertices.empty())
+                throw InputError({o.path}, "model has no triangles");
+            meshes.push_back(std::make_unique<GpuMesh>(data));
+        }
+        skyCube.reset();
+        if (!scene.sky.cubemapFaces.empty()) {
+            std::vector<Image> faces;
+            for (const std::string& f : scene.sky.cubemapFaces) {
+                faces.push_back(readImage(f));
+                if (faces.back().width != faces.back().height || faces.back().width != faces.front().width)
+                    throw InputError({f}, "sky cubemap faces must be square and all the same size");
+            }
+            skyCube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
+            const int n = faces.front().width;
+            glTextureStorage2D(skyCube.id(), 1, GL_SRGB8_ALPHA8, n, n);
+            for (int face = 0; face < 6; ++face)
+                glTextureSubImage3D(skyCube.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_UNSIGNED_BYTE, faces[size_t(face)].rgba.data());
+            glTextureParameteri(skyCube.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(skyCube.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        }
+    }
+
+    void uploadWaves(const GridPlacement& grid, double time_s)
+    {
+        WaveUniforms u{};
+        const int count = std::min<int>(int(waves.waves.size()), SWELL_MAX_WAVES);
+        for (int i = 0; i < count; ++i) {
+            const Wave& w = waves.waves[size_t(i)];
+            const glm::dvec2 d = glm::normalize(w.direction);
+            const double k = 2.0 * glm::pi<double>() / w.wavelength_m;
+            u.waveShape[i] = glm::vec4(glm::dvec4(d.x, d.y, k, w.amplitude_m));
+            u.wavePhase[i] = glm::vec4(glm::dvec4(w.steepness, wrappedPhase(w, waves.depth_m, grid.center_m, time_s),
+                                                  w.wavelength_m, 0.0));
+        }
+        u.waveCount = glm::ivec4(count, 0, 0, 0);
+        glNamedBufferSubData(waveUbo.id(), 0, sizeof(u), &u);
+        glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_WAVES, waveUbo.id());
+    }
+
+    // The uniforms shared by every pass; pass-specific fields are set by the caller.
+    FrameUniforms frameUniforms(const Camera& camera, const GridPlacement& grid, glm::dvec3 origin, glm::ivec2 size) const
+    {
+        FrameUniforms f{};
+        const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
+        f.cameraViewProj = glm::mat4(viewProj);
+        f.cameraInvViewProj = glm::mat4(glm::inverse(viewProj));
+        f.passViewProj = f.cameraViewProj;
+        f.passInvViewProj = f.cameraInvViewProj;
+        f.clipPlane = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        f.eyePosition = vec4Of(camera.position_m - origin, 1.0);
+        f.sunDirection = vec4Of(glm::normalize(scene.sun.direction), scene.sun.intensity);
+        f.sunColor = vec4Of(scene.sun.color);
+        // The sky's fog layer: the height at which a ray at the fog's end distance has
+        // risen by 2% of it, so the sky stays clear a few degrees above the horizon.
+        f.fogColor = vec4Of(scene.fog.color, 0.02 * scene.fog.end_m);
+        f.fogRange = glm::vec4(float(scene.fog.start_m), float(scene.fog.end_m), 0.0f, 0.0f);
+        f.skyZenith = vec4Of(scene.sky.zenithColor);
+        f.skyHorizon = vec4Of(scene.sky.horizonColor);
+        f.waterDeep = vec4Of(scene.water.deepColor);
+        f.waterAbsorption = vec4Of(scene.water.absorption_per_m);
+        f.waterOptics = glm::vec4(glm::dvec4(scene.water.fresnelF0, scene.water.shininess,
+                                             scene.water.specularStrength, scene.water.refractionDistortion));
+        f.gridShape = glm::vec4(glm::dvec4(gridShape.radius_m, gridShape.cells, gridShape.skirt_m, grid.finestStep_m));
+        const double fadeEnd = std::min(scene.grid.fadeEnd_m, gridShape.radius_m);
+        f.gridFade = glm::vec4(glm::dvec4(std::min(scene.grid.fadeStart_m, fadeEnd), fadeEnd, 0.0, 0.0));
+        const glm::dvec2 centre = grid.center_m - glm::dvec2(origin.x, origin.z);
+        f.gridCenter = glm::vec4(glm::dvec4(centre.x, 0.0, centre.y, 0.0));
+        for (int l = 0; l < SWELL_GRID_LEVELS; ++l)
+            f.snapOffsets[l] = glm::vec4(glm::dvec4(grid.snapOffsets[size_t(l)], 0.0, 0.0));
+        f.reflectionParams = glm::vec4(glm::dvec4(scene.reflection.fixedDistance_m, scene.reflection.clipOffset_m,
+                                                  scene.reflection.mode == ReflectionMode::RayMarch ? 1.0 : 0.0, 0.0));
+        f.viewport = glm::vec4(float(size.x), float(size.y), 1.0f / float(size.x), 1.0f / float(size.y));
+        return f;
+    }
+
+    void bindFrame(Pass pass, const FrameUniforms& f)
+    {
+        glNamedBufferSubData(frameUbo[pass].id(), 0, sizeof(f), &f);
+        glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_FRAME, frameUbo[pass].id());
+    }
+
+    glm::dmat4 objectModel(const SceneObject& o, glm::dvec3 origin, double time_s) const
+    {
+        glm::dvec3 position = o.position_m;
+        glm::dmat4 tilt(1.0);
+        if (o.floats) {
+            const glm::dvec2 xz(o.position_m.x, o.position_m.z);
+            position.y += heightAt(waves, xz, time_s);
+            const glm::dvec3 n = normalAt(waves, restPointUnder(waves, xz, time_s), time_s);
+            // A body larger than the short waves does not follow every ripple:
+            // tilt half way towards the surface normal.
+            const glm::dvec3 up = glm::normalize(glm::mix(glm::dvec3(0, 1, 0), n, 0.5));
+            const glm::dvec3 axis = glm::cross(glm::dvec3(0, 1, 0), up);
+            const double s = glm::length(axis);
+            if (s > 1e-9)
+                tilt = glm::rotate(glm::dmat4(1.0), std::asin(std::min(s, 1.0)), axis / s);
+        }
+        return glm::translate(glm::dmat4(1.0), position - origin) * tilt *
+               glm::rotate(glm::dmat4(1.0), glm::radians(o.yaw_deg), glm::dvec3(0, 1, 0)) *
+               glm::scale(glm::dmat4(1.0), glm::dvec3(o.scale));
+    }
+
+    void drawWorld(glm::dvec3 origin, double time_s)
+    {
+        glUseProgram(programs.mesh.id());
+        if (island.indexCount() > 0) {
+            const glm::mat4 model(glm::translate(glm::dmat4(1.0), kIslandPosition_m - origin));
+            glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));
+            island.draw();
+            counters.worldTriangles += island.indexCount() / 3;
+            ++counters.drawCalls;
+        }
+        for (size_t i = 0; i < meshes.size(); ++i) {
+            const glm::mat4 model(objectModel(scene.objects[i], origin, time_s));
+            glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));
+            meshes[i]->draw();
+            counters.worldTriangles += meshes[i]->indexCount() / 3;
+            ++counters.drawCalls;
+        }
+    }
+
+    void drawSky()
+    {
+        glUseProgram(programs.sky.id());
+        glBindTextureUnit(SWELL_UNIT_SKY, skyCube.id());
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(GL_FALSE);
+        glBindVertexArray(emptyVao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        ++counters.drawCalls;
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
+    }
+
+    void drawWater()
+    {
+        glUseProgram(programs.water.id());
+        glBindTextureUnit(SWELL_UNIT_SKY, skyCube.id());
+        glBindTextureUnit(SWELL_UNIT_REFLECTION_COLOR, reflection.color());
+        glBindTextureUnit(SWELL_UNIT_REFLECTION_DEPTH, reflection.depth());
+        glBindTextureUnit(SWELL_UNIT_REFRACTION_COLOR, refraction.color());
+        glBindTextureUnit(SWELL_UNIT_REFRACTION_DEPTH, refraction.depth());
+        glBindVertexArray(gridVao.id());
+        if (scene.debugView == DebugView::Wireframe)
+            glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        glDrawElements(GL_TRIANGLES, gridIndexCount, GL_UNSIGNED_INT, nullptr);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        counters.waterTriangles += gridIndexCount / 3;
+        ++counters.drawCalls;
+    }
+
+    // Every pass sets all the state it depends on, so passes can be reordered.
+    void beginPass(GLuint framebuffer, glm::ivec2 size, glm::vec4 clear)
+    {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glViewport(0, 0, size.x, size.y);
+        glDisable(GL_BLEND);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_SCISSOR_TEST);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glClearColor(clear.r, clear.g, clear.b, clear.a);
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+
+    void render(const Camera& camera, double time_s, glm::ivec2 size, GLuint framebuffer)
+    {
+        counters = {};
+        if (size.x <= 0 || size.y <= 0)
+            return;
+        const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
+        const GridPlacement grid = placeGrid(gridShape, {camera.position_m.x, camera.position_m.z});
+        uploadWaves(grid, time_s);
+        const FrameUniforms base = frameUniforms(camera, grid, origin, size);
+        const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
+        reflection.resize(scaled);
+        refraction.resize(scaled);
+
+        // Pass 1: the world mirrored about the water plane, clipped just below it.
+        FrameUniforms f = base;
+        const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, -1.0f, 1.0f));
+        f.passViewProj = base.cameraViewProj * mirror;
+        f.passInvViewProj = glm::inverse(f.passViewProj);
+        f.clipPlane = glm::vec4(0.0f, 1.0f, 0.0f, float(scene.reflection.clipOffset_m));
+        f.eyePosition.y = -base.eyePosition.y;
+        f.viewport = glm::vec4(float(scaled.x), float(scaled.y), 1.0f / float(scaled.x), 1.0f / float(scaled.y));
+        bindFrame(PassReflection, f);
+        beginPass(reflection.framebuffer(), scaled, glm::vec4(0.0f));
+        glEnable(GL_CLIP_DISTANCE0);
+        drawWorld(origin, time_s);
+        drawSky();
+
+        // Pass 1b: the world below the water, for refraction.
+        f = base;
+        f.clipPlane = glm::vec4(0.0f, -1.0f, 0.0f, float(scene.reflection.clipOffset_m));
+        f.viewport = glm::vec4(float(scaled.x), float(scaled.y), 1.0f / float(scaled.x), 1.0f / float(scaled.y));
+        bindFrame(PassRefraction, f);
+        beginPass(refraction.framebuffer(), scaled, glm::vec4(0.0f));
+        drawWorld(origin, time_s);
+        glDisable(GL_CLIP_DISTANCE0);
+
+        // Pass 2: world, sky, then the water depth-tested against the world, so
+        // objects crossing the surface meet it cleanly.
+        f = base;
+        f.passFlags = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+        bindFrame(PassMain, f);
+        beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        drawWorld(origin, time_s);
+        drawSky();
+        drawWater();
+        glBindVertexArray(0);
+        glUseProgram(0);
+    }
+};
+
+Renderer::Renderer(const Scene& scene, RendererOptions options) : impl_(std::make_unique<Impl>(std::move(options)))
+{
+    for (gl::Buffer& b : impl_->frameUbo) {
+        b = gl::Buffer::create();
+        glNamedBufferStorage(b.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    impl_->waveUbo = gl::Buffer::create();
+    glNamedBufferStorage(impl_->waveUbo.id(), sizeof(WaveUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    impl_->emptyVao = gl::VertexArray::create();
+    setScene(scene);
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::setScene(const Scene& scene)
+{
+    Impl& s = *impl_;
+    const bool first = !s.programs.water;
+    const bool programsChanged = first || scene.debugView != s.scene.debugView ||
+                                 scene.sky.cubemapFaces.empty() != s.scene.sky.cubemapFaces.empty();
+    const bool gridChanged = first || scene.grid.resolution != s.scene.grid.resolution ||
+                             scene.grid.radius_m != s.scene.grid.radius_m || scene.camera.far_m != s.scene.camera.far_m;
+    WaveSet waves = resolveWaves(scene.waves);
+    limitSteepness(waves);
+    if (const std::string problem = validate(waves); !problem.empty())
+        throw InputError({}, "waves: " + problem);
+    Programs programs;
+    if (programsChanged) {
+        const Scene previous = std::exchange(s.scene, scene);
+        try {
+            programs = s.buildPrograms();
+        } catch (...) {
+            s.scene = previous;
+            throw;
+        }
+    }
+    s.scene = scene;
+    s.waves = std::move(waves);
+    if (programsChanged)
+        s.programs = std::move(programs);
+    if (gridChanged)
+        s.buildGrid();
+    s.buildWorld();
+}
+
+const Scene& Renderer::scene() const { return impl_->scene; }
+const WaveSet& Renderer::waves() const { return impl_->waves; }
+const FrameCounters& Renderer::counters() const { return impl_->counters; }
+
+void Renderer::reloadShaders() { impl_->programs = impl_->buildPrograms(); }
+
+void Renderer::render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer)
+{
+    impl_->render(camera, time_s, size, framebuffer);
+}
+
+Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size)
+{
+    Image image;
+    if (size.x <= 0 || size.y <= 0)
+        return image;
+    impl_->output.resize(size, GL_RGBA8);
+    impl_->render(camera, time_s, size, impl_->output.framebuffer());
+    image.width = size.x;
+    image.height = size.y;
+    image.rgba.resize(size_t(size.x) * size_t(size.y) * 4);
+    std::vector<std::uint8_t> bottomUp(image.rgba.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(impl_->output.color(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(bottomUp.size()), bottomUp.data());
+    const size_t row = size_t(size.x) * 4;
+    for (int y = 0; y < size.y; ++y)
+        std::copy_n(&bottomUp[size_t(size.y - 1 - y) * row], row, &image.rgba[size_t(y) * row]);
+    return image;
+}
+
+int Renderer::waterVertexCount() const { return (impl_->gridShape.cells + 1) * (impl_->gridShape.cells + 1); }
+
+int Renderer::captureWaterVertices(const Camera& camera, double time_s, unsigned buffer)
+{
+    Impl& s = *impl_;
+    const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
+    const GridPlacement grid = placeGrid(s.gridShape, {camera.position_m.x, camera.position_m.z});
+    s.uploadWaves(grid, time_s);
+    s.bindFrame(PassMain, s.frameUniforms(camera, grid, origin, {640, 480}));
+    glUseProgram(s.programs.capture.id());
+    glBindVertexArray(s.emptyVao.id());
+    glEnable(GL_RASTERIZER_DISCARD);
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
+    glBeginTransformFeedback(GL_POINTS);
+    const int count = waterVertexCount();
+    glDrawArrays(GL_POINTS, 0, count);
+    glEndTransformFeedback();
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+    glDisable(GL_RASTERIZER_DISCARD);
+    glUseProgram(0);
+    return count;
+}
+
+} // namespace swell
