@@ -28,6 +28,15 @@ struct FrameCounters {
     int drawCalls = 0;
 };
 
+// Told when each pass of a frame begins and ends (for timing and counters).
+// Passes: "reflection", "refraction", "main"; within "main", "water" for the water draw.
+class PassObserver {
+public:
+    virtual ~PassObserver() = default;
+    virtual void beginPass(const char* name) = 0;
+    virtual void endPass(const char* name) = 0;
+};
+
 class Renderer {
 public:
     // Needs a current OpenGL 4.5 core context. Throws swell::InputError when a
@@ -54,6 +63,9 @@ public:
     Image renderImage(const Camera& camera, double time_s, glm::ivec2 size);
 
     const FrameCounters& counters() const;
+
+    // Observes the passes of later frames; nullptr stops. Not owned.
+    void setPassObserver(PassObserver* observer);
 
     // For tests: binds the water program with transform feedback capture of
     // vRestPoint, vPosition and vNormal (8 floats per vertex) for this frame

@@ -72,7 +72,13 @@ struct Renderer::Impl {
     gl::Texture skyCube;
     RenderTarget reflection, refraction, output;
     FrameCounters counters;
-    std::string sceneDirectory;
+    PassObserver* observer = nullptr;
+
+    void notify(bool begin, const char* pass) const
+    {
+        if (observer)
+            begin ? observer->beginPass(pass) : observer->endPass(pass);
+    }
 
     explicit Impl(RendererOptions options) : sources(std::move(options.shaders)) {}
 
@@ -315,30 +321,38 @@ struct Renderer::Impl {
         f.clipPlane = glm::vec4(0.0f, 1.0f, 0.0f, float(scene.reflection.clipOffset_m));
         f.eyePosition.y = -base.eyePosition.y;
         f.viewport = glm::vec4(float(scaled.x), float(scaled.y), 1.0f / float(scaled.x), 1.0f / float(scaled.y));
+        notify(true, "reflection");
         bindFrame(PassReflection, f);
         beginPass(reflection.framebuffer(), scaled, glm::vec4(0.0f));
         glEnable(GL_CLIP_DISTANCE0);
         drawWorld(origin, time_s);
         drawSky();
+        notify(false, "reflection");
 
         // Pass 1b: the world below the water, for refraction.
         f = base;
         f.clipPlane = glm::vec4(0.0f, -1.0f, 0.0f, float(scene.reflection.clipOffset_m));
         f.viewport = glm::vec4(float(scaled.x), float(scaled.y), 1.0f / float(scaled.x), 1.0f / float(scaled.y));
+        notify(true, "refraction");
         bindFrame(PassRefraction, f);
         beginPass(refraction.framebuffer(), scaled, glm::vec4(0.0f));
         drawWorld(origin, time_s);
         glDisable(GL_CLIP_DISTANCE0);
+        notify(false, "refraction");
 
         // Pass 2: world, sky, then the water depth-tested against the world, so
         // objects crossing the surface meet it cleanly.
         f = base;
         f.passFlags = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+        notify(true, "main");
         bindFrame(PassMain, f);
         beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin, time_s);
         drawSky();
+        notify(true, "water");
         drawWater();
+        notify(false, "water");
+        notify(false, "main");
         glBindVertexArray(0);
         glUseProgram(0);
     }
@@ -392,6 +406,7 @@ void Renderer::setScene(const Scene& scene)
 const Scene& Renderer::scene() const { return impl_->scene; }
 const WaveSet& Renderer::waves() const { return impl_->waves; }
 const FrameCounters& Renderer::counters() const { return impl_->counters; }
+void Renderer::setPassObserver(PassObserver* observer) { impl_->observer = observer; }
 
 void Renderer::reloadShaders() { impl_->programs = impl_->buildPrograms(); }
 
