@@ -3,6 +3,7 @@
 // shader uses (shaders/grid.glsl holds the diagram and the GPU twin).
 #pragma once
 
+#include "swell/scene.h"
 #include "swell/shader_constants.h"
 
 #include <glm/vec2.hpp>
@@ -16,6 +17,21 @@ struct GridShape {
     double radius_m = 2000.0; // half-size of the detailed grid, m
     double skirt_m = 1.0e5;   // where the outermost lines go, m (beyond the fog: unbounded water)
 };
+
+// The grid a scene's settings ask for: cells even, the skirt beyond the fog.
+GridShape gridShapeFor(const GridSettings& grid, const CameraSettings& camera);
+
+// Fade distances the renderer uses: the scene's, kept inside the detailed grid.
+struct HorizonFade {
+    double start_m = 0.0, end_m = 0.0;
+};
+HorizonFade horizonFadeFor(const GridSettings& grid, const GridShape& shape);
+
+// CPU twins of horizonFade() and waveLodWeight() in the shaders: the factor
+// wave heights are scaled by at distance_m from the camera (1 near, 0 beyond
+// end), and the weight of a wave of wavelength_m on cells cellSize_m wide.
+double horizonFadeAt(const HorizonFade& fade, double distance_m);
+double waveLodWeight(double wavelength_m, double cellSize_m);
 
 // Offset of grid line i (0..cells) from the centre before snapping: radius * u * |u|.
 double gridLineOffset(const GridShape& shape, int i);

@@ -7,6 +7,41 @@
 
 namespace swell {
 
+GridShape gridShapeFor(const GridSettings& grid, const CameraSettings& camera)
+{
+    GridShape shape;
+    shape.cells = std::max(4, (grid.resolution - 1) & ~1);
+    shape.radius_m = grid.radius_m;
+    shape.skirt_m = std::max(camera.far_m * 0.9, grid.radius_m * 2.0);
+    return shape;
+}
+
+HorizonFade horizonFadeFor(const GridSettings& grid, const GridShape& shape)
+{
+    const double end = std::min(grid.fadeEnd_m, shape.radius_m);
+    // GLSL's smoothstep is undefined when its edges meet: keep start below end.
+    return {std::min(grid.fadeStart_m, end * 0.999), end};
+}
+
+namespace {
+double smoothstep(double edge0, double edge1, double x)
+{
+    const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+} // namespace
+
+double horizonFadeAt(const HorizonFade& fade, double distance_m)
+{
+    return 1.0 - smoothstep(fade.start_m, fade.end_m, distance_m);
+}
+
+double waveLodWeight(double wavelength_m, double cellSize_m)
+{
+    return smoothstep(SWELL_MIN_CELLS_PER_WAVELENGTH * cellSize_m, SWELL_FULL_CELLS_PER_WAVELENGTH * cellSize_m,
+                      wavelength_m);
+}
+
 double gridLineOffset(const GridShape& shape, int i)
 {
     const double half = 0.5 * shape.cells;

@@ -98,9 +98,7 @@ struct Renderer::Impl {
 
     void buildGrid()
     {
-        gridShape.cells = std::max(4, (scene.grid.resolution - 1) & ~1);
-        gridShape.radius_m = scene.grid.radius_m;
-        gridShape.skirt_m = std::max(scene.camera.far_m * 0.9, scene.grid.radius_m * 2.0);
+        gridShape = gridShapeFor(scene.grid, scene.camera);
         const auto lines = std::uint32_t(gridShape.cells + 1);
         std::vector<std::uint32_t> indices;
         indices.reserve(size_t(gridShape.cells) * size_t(gridShape.cells) * 6);
@@ -195,8 +193,8 @@ struct Renderer::Impl {
         f.waterOptics = glm::vec4(glm::dvec4(scene.water.fresnelF0, scene.water.shininess,
                                              scene.water.specularStrength, scene.water.refractionDistortion));
         f.gridShape = glm::vec4(glm::dvec4(gridShape.radius_m, gridShape.cells, gridShape.skirt_m, grid.finestStep_m));
-        const double fadeEnd = std::min(scene.grid.fadeEnd_m, gridShape.radius_m);
-        f.gridFade = glm::vec4(glm::dvec4(std::min(scene.grid.fadeStart_m, fadeEnd), fadeEnd, 0.0, 0.0));
+        const HorizonFade fade = horizonFadeFor(scene.grid, gridShape);
+        f.gridFade = glm::vec4(glm::dvec4(fade.start_m, fade.end_m, 0.0, 0.0));
         const glm::dvec2 centre = grid.center_m - glm::dvec2(origin.x, origin.z);
         f.gridCenter = glm::vec4(glm::dvec4(centre.x, 0.0, centre.y, 0.0));
         for (int l = 0; l < SWELL_GRID_LEVELS; ++l)
@@ -443,6 +441,11 @@ int Renderer::captureWaterVertices(const Camera& camera, double time_s, unsigned
     const GridPlacement grid = placeGrid(s.gridShape, {camera.position_m.x, camera.position_m.z});
     s.uploadWaves(grid, time_s);
     s.bindFrame(PassMain, s.frameUniforms(camera, grid, origin, {640, 480}));
+    // Drawing needs a complete framebuffer even with rasterisation discarded
+    // (a headless context has no default one).
+    if (s.output.size().x == 0)
+        s.output.resize({1, 1}, GL_RGBA8);
+    glBindFramebuffer(GL_FRAMEBUFFER, s.output.framebuffer());
     glUseProgram(s.programs.capture.id());
     glBindVertexArray(s.emptyVao.id());
     glEnable(GL_RASTERIZER_DISCARD);

@@ -1,0 +1,87 @@
+// One wave function: the vertex shader's Gerstner sum and swell::displacementAt
+// / normalAt agree over the whole grid, near the origin and 10^6 m from it, at
+// small times and at t = 10^6 s.
+#include "support/gl_test.h"
+#include "swell/renderer.h"
+#include "wave_capture.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace {
+
+class WaveAgreement : public swell::test::GlTest {};
+
+swell::Scene agreementScene()
+{
+    swell::Scene scene = swell::defaultScene();
+    scene.objects.clear();
+    scene.showTerrain = false;
+    scene.grid.resolution = 129; // 128 cells: 16641 vertices, enough to cover every LOD level
+    return scene;
+}
+
+void expectAgreement(const swell::Scene& scene, glm::dvec3 cameraPosition, double time_s)
+{
+    swell::Renderer renderer(scene);
+    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    camera.position_m = cameraPosition;
+    const auto gpu = swell::test::captureGpu(renderer, camera, time_s);
+    const auto cpu = swell::test::computeCpu(renderer, camera, time_s);
+    ASSERT_EQ(gpu.size(), cpu.size());
+    const int last = int(std::lround(std::sqrt(double(gpu.size())))) - 1;
+    double worstPosition = 0.0, worstRest = 0.0, worstNormal = 0.0;
+    int compared = 0;
+    for (size_t k = 0; k < gpu.size(); ++k) {
+        // The outermost lines are the skirt, 18 km out, where waves are faded to
+        // zero; float spacing there is ~1 mm, so they are checked loosely below.
+        const bool skirt = gpu[k].i == 0 || gpu[k].j == 0 || gpu[k].i == last || gpu[k].j == last;
+        const double rest = glm::length(gpu[k].rest_m - cpu[k].rest_m);
+        const double position = glm::length(gpu[k].position_m - cpu[k].position_m);
+        if (skirt) {
+            EXPECT_LT(position, 0.01) << "skirt vertex " << k;
+            continue;
+        }
+        worstRest = std::max(worstRest, rest);
+        worstPosition = std::max(worstPosition, position);
+        worstNormal = std::max(worstNormal, glm::length(gpu[k].normal - cpu[k].normal));
+        ++compared;
+    }
+    EXPECT_GT(compared, 10000);
+    // 1 mm: the bound. Float positions relative to the camera within the
+    // 2 km grid carry ~0.1 mm; phases are wrapped in double on the CPU.
+    EXPECT_LT(worstRest, 1e-3) << "grid rest points differ";
+    EXPECT_LT(worstPosition, 1e-3) << "displaced positions differ at t=" << time_s;
+    // Normals: float sin/cos of phases up to ~10^4 rad carry ~10^-3 rad.
+    EXPECT_LT(worstNormal, 2e-3) << "normals differ at t=" << time_s;
+}
+
+TEST_F(WaveAgreement, NearTheOriginAtSeveralTimes)
+{
+    const swell::Scene scene = agreementScene();
+    for (double t : {0.0, 37.25, 1000.0})
+        expectAgreement(scene, {3.7, 6.0, -12.2}, t);
+}
+
+TEST_F(WaveAgreement, AfterAMillionSeconds)
+{
+    expectAgreement(agreementScene(), {3.7, 6.0, -12.2}, 1.0e6);
+}
+
+TEST_F(WaveAgreement, AMillionMetresFromTheOrigin)
+{
+    expectAgreement(agreementScene(), {1.0e6 + 0.37, 6.0, -1.0e6 - 0.81}, 1.0e6);
+}
+
+TEST_F(WaveAgreement, FiniteDepthAndHandListedWaves)
+{
+    swell::Scene scene = agreementScene();
+    scene.waves.wind.reset();
+    scene.waves.listed.depth_m = 12.0;
+    scene.waves.listed.waves = {{{1.0, 0.3}, 60.0, 0.8, 0.7, 0.2}, {{-0.4, 1.0}, 23.0, 0.3, 0.9, 1.9},
+                                {{0.2, -1.0}, 7.5, 0.08, 0.5, -2.0}, {{0.9, 0.9}, 1.2, 0.02, 0.3, 0.0}};
+    expectAgreement(scene, {-250.0, 3.0, 90.0}, 512.5);
+}
+
+} // namespace

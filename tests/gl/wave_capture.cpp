@@ -1,0 +1,64 @@
+#include "wave_capture.h"
+
+#include "swell/grid.h"
+
+#include <epoxy/gl.h>
+#include <glm/geometric.hpp>
+
+#include "swell/gl/handle.h"
+
+namespace swell::test {
+
+std::vector<WaterVertex> captureGpu(Renderer& renderer, const Camera& camera, double time_s)
+{
+    const int count = renderer.waterVertexCount();
+    gl::Buffer buffer = gl::Buffer::create();
+    glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
+    renderer.captureWaterVertices(camera, time_s, buffer.id());
+    std::vector<float> data(size_t(count) * 8);
+    glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
+    const int lines = int(std::lround(std::sqrt(double(count))));
+    const glm::dvec2 origin(camera.position_m.x, camera.position_m.z);
+    std::vector<WaterVertex> out(static_cast<size_t>(count));
+    for (int k = 0; k < count; ++k) {
+        const float* v = &data[size_t(k) * 8];
+        WaterVertex& w = out[size_t(k)];
+        w.rest_m = origin + glm::dvec2(v[0], v[1]);
+        w.position_m = glm::dvec3(origin.x, 0.0, origin.y) + glm::dvec3(v[2], v[3], v[4]);
+        w.normal = glm::dvec3(v[5], v[6], v[7]);
+        w.i = k % lines;
+        w.j = k / lines;
+    }
+    return out;
+}
+
+std::vector<WaterVertex> computeCpu(const Renderer& renderer, const Camera& camera, double time_s)
+{
+    const Scene& scene = renderer.scene();
+    const GridShape shape = gridShapeFor(scene.grid, scene.camera);
+    const HorizonFade fade = horizonFadeFor(scene.grid, shape);
+    const GridPlacement placement = placeGrid(shape, {camera.position_m.x, camera.position_m.z});
+    const int lines = shape.cells + 1;
+    std::vector<WaterVertex> out;
+    out.reserve(size_t(lines) * size_t(lines));
+    for (int j = 0; j < lines; ++j)
+        for (int i = 0; i < lines; ++i) {
+            double sx = 0.0, sz = 0.0;
+            const glm::dvec2 offset(snappedGridLine(shape, placement, i, 0, sx), snappedGridLine(shape, placement, j, 1, sz));
+            WaterVertex w;
+            w.i = i;
+            w.j = j;
+            w.rest_m = placement.center_m + offset;
+            const double distance = glm::length(w.rest_m - glm::dvec2(camera.position_m.x, camera.position_m.z));
+            WaveSet weighted = renderer.waves();
+            for (Wave& wave : weighted.waves)
+                wave.amplitude_m *= horizonFadeAt(fade, distance) * waveLodWeight(wave.wavelength_m, std::max(sx, sz));
+            const glm::dvec3 d = displacementAt(weighted, w.rest_m, time_s);
+            w.position_m = glm::dvec3(w.rest_m.x, 0.0, w.rest_m.y) + d;
+            w.normal = normalAt(weighted, w.rest_m, time_s);
+            out.push_back(w);
+        }
+    return out;
+}
+
+} // namespace swell::test
