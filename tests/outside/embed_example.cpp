@@ -1,0 +1,22 @@
+// The minimal embedding of Swell (docs/LIBRARY.md shows this same file):
+// a headless OpenGL context, the default scene, one frame to a PNG.
+#include <swell/camera.h>
+#include <swell/gl/context.h>
+#include <swell/renderer.h>
+
+#include <cstdio>
+
+int main(int argc, char** argv)
+{
+    const char* output = argc > 1 ? argv[1] : "embedded.png";
+    swell::gl::HeadlessContext context;           // OpenGL 4.5 core through EGL, no display needed
+    const swell::Scene scene = swell::defaultScene();
+    swell::Renderer renderer(scene);               // compiles the embedded shaders, builds the grid
+    const double time_s = 3.0;
+    const swell::Image image = renderer.renderImage(swell::cameraAt(scene.camera, time_s), time_s, {320, 180});
+    swell::writePng(image, output);
+    // A buoyancy query: the exact surface height under a point, m.
+    std::printf("%s\nheight at (10, -20): %.3f m\n", output,
+                swell::heightAt(renderer.waves(), {10.0, -20.0}, time_s));
+    return 0;
+}
