@@ -13,11 +13,15 @@ float phongDiffuse(vec3 normal)
     return max(dot(normal, sunDirection.xyz), 0.0);
 }
 
-// Specular lobe of the sun reflected about normal, seen along toEye.
-float phongSpecular(vec3 normal, vec3 toEye, float shininess)
+// Specular lobe of the sun reflected about normal, seen along toEye:
+// energy-conserving Phong ((n + 2) / 8pi keeps the reflected energy fixed as
+// the lobe narrows), weighted by Fresnel at the half vector, since water
+// reflects the sun only as much as it reflects anything at that angle.
+float phongSpecular(vec3 normal, vec3 toEye, float shininess, float f0)
 {
     vec3 r = reflect(-sunDirection.xyz, normal);
-    // Normalised Phong, so a tighter lobe is brighter rather than dimmer.
-    return pow(max(dot(r, toEye), 0.0), shininess) * (shininess + 2.0) / 8.0;
+    vec3 h = normalize(sunDirection.xyz + toEye);
+    const float pi = 3.14159265;
+    return fresnelSchlick(dot(h, toEye), f0) * pow(max(dot(r, toEye), 0.0), shininess) * (shininess + 2.0) / (8.0 * pi);
 }
 #endif

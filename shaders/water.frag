@@ -39,7 +39,7 @@ void main()
 
     float fresnel = fresnelSchlick(dot(n, v), waterOptics.x);
     vec3 color = mix(refracted, reflected, fresnel);
-    color += sunColor.rgb * sunDirection.w * waterOptics.z * phongSpecular(n, v, waterOptics.y) * step(0.0, sunDirection.y);
+    color += sunColor.rgb * sunDirection.w * waterOptics.z * phongSpecular(n, v, waterOptics.y, waterOptics.x) * step(0.0, sunDirection.y);
 
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS
     color = n * 0.5 + 0.5;
