@@ -1,6 +1,8 @@
 // Everything that describes what Swell renders: waves, grid, sun, sky, fog,
 // water optics, objects and camera. Plain data with units; scene files
-// (swell/scene_file.h) read and write it, and the renderer draws it.
+// (swell/scene_file.h) read and write it, and the renderer draws it. The
+// ranges that are checked, and shown on sliders, live in one table in
+// swell/parameters.h; the comments below only summarise them.
 #pragma once
 
 #include "swell/spectrum.h"

@@ -1,0 +1,70 @@
+// Scene files: TOML in, swell::Scene out, and back. The format is described
+// in docs/SCENE.md; the keys, units and ranges of the values come from the
+// parameter table (swell/parameters.h).
+//
+// Loading is all or nothing: a scene that loads is valid in every field
+// (ranges, cross-field rules, referenced files, the wave set), so the
+// renderer never has to half-render. Any problem throws swell::InputError
+// whose place is the file, line and column of the offending key or value.
+#pragma once
+
+#include "swell/scene.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace swell {
+
+// Larger inputs are refused before parsing: a real scene is a few KiB, and
+// the cap bounds the parser's time and memory on whatever it is handed.
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{4} << 20; // 4 MiB
+
+// Longest arrays a scene file may hold. Waves are capped by the shader's
+// uniform block (SWELL_MAX_WAVES); the others by what stays interactive:
+// each object is a draw call per pass, each camera key a line of the file.
+inline constexpr std::size_t kMaxSceneObjects = 256;
+inline constexpr std::size_t kMaxCameraKeys = 10000;
+
+// Structural limits checked before the TOML parser sees the text, because
+// its recursion depth follows them: dotted parts in one key or table header
+// ("waves.wind.speed_mps" has 3), and [ ] / { } nested inside one value.
+inline constexpr int kMaxSceneKeyParts = 8;
+inline constexpr int kMaxSceneNesting = 16;
+
+// Reads and validates the scene file at `path`. Relative object paths and
+// sky cubemap faces are resolved against the file's folder.
+// Throws InputError: missing, unreadable, too large, not UTF-8 TOML, or any
+// invalid content (see parseScene).
+Scene loadScene(const std::filesystem::path& path);
+
+// Parses and validates scene TOML held in memory. `virtualPath` is used for
+// error places and as the base for relative paths in the file (its folder;
+// the working directory when it has none); it need not exist.
+// Throws InputError for syntax errors, unknown keys (with a suggestion when
+// one is close), wrong types, values out of range or not finite, broken
+// cross-field rules, referenced files that are missing or unreadable, unknown
+// built-in objects, arrays over their limits, and wave sets that fail
+// validate().
+Scene parseScene(std::string_view toml, const std::filesystem::path& virtualPath);
+
+// The checks parseScene makes after reading, for a scene built in code (the
+// viewer's edits): every parameter in range, the cross-field rules, the
+// referenced files relative to `sceneFile`'s folder, the wave set. Throws
+// InputError whose place is `sceneFile` with no line, naming the key.
+void validateScene(const Scene& scene, const std::filesystem::path& sceneFile);
+
+// The scene as TOML that parseScene reads back to an equal scene. Every
+// parameter is written, with its unit and range in a comment. When the wind
+// is set the listed waves are not written (the wind replaces them).
+std::string saveScene(const Scene& scene);
+
+// Writes saveScene(scene) to `path` atomically: to a temporary file in the
+// same folder, flushed to disk, then renamed over `path`, so a failure leaves
+// any existing file untouched. Relative paths inside the scene are written
+// as they are, so save next to the original to keep them valid.
+// Throws InputError naming `path` when it cannot be written.
+void saveSceneFile(const Scene& scene, const std::filesystem::path& path);
+
+} // namespace swell

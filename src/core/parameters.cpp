@@ -1,0 +1,523 @@
+// The scene parameter table (swell/parameters.h) and the checks and
+// formatting built on it. Each entry says where its value lives in Scene with
+// a small generic lambda; Field<> turns that into the get/set pair.
+#include "swell/parameters.h"
+
+#include "swell/shader_constants.h"
+
+#include <fmt/format.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace swell {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+
+// World coordinates beyond this lose too much precision in the GPU's floats
+// (1 mm steps at 1e4 m, 10 cm at 1e6 m), so positions stop here, m.
+constexpr double kWorldLimit_m = 1.0e6;
+// Angles may wind round several times (a camera path that turns twice), deg.
+constexpr double kAngleLimit_deg = 3600.0;
+// Direction components are normalised on use; this only keeps them finite.
+constexpr double kDirectionLimit = 1.0e3;
+
+// The TOML names of the enums, indexed by the enum's value.
+constexpr std::array<std::string_view, 2> kReflectionModes{"fixed", "raymarch"};
+static_assert(static_cast<int>(ReflectionMode::FixedDistance) == 0 && static_cast<int>(ReflectionMode::RayMarch) == 1);
+
+constexpr std::array<std::string_view, 6> kDebugViews{"shaded", "normals", "reflection", "refraction", "lod", "wireframe"};
+static_assert(static_cast<int>(DebugView::Shaded) == SWELL_VIEW_SHADED && static_cast<int>(DebugView::Normals) == SWELL_VIEW_NORMALS
+              && static_cast<int>(DebugView::Reflection) == SWELL_VIEW_REFLECTION
+              && static_cast<int>(DebugView::Refraction) == SWELL_VIEW_REFRACTION
+              && static_cast<int>(DebugView::Lod) == SWELL_VIEW_LOD && static_cast<int>(DebugView::Wireframe) == SWELL_VIEW_WIREFRAME);
+
+// The wind settings, for reading (defaults when the wind is not set) and for
+// writing (setting a wind parameter turns the wind on).
+const WindSettings& wind(const Scene& s)
+{
+    static const WindSettings none;
+    return s.waves.wind ? *s.waves.wind : none;
+}
+WindSettings& wind(Scene& s)
+{
+    if (!s.waves.wind)
+        s.waves.wind.emplace();
+    return *s.waves.wind;
+}
+
+template <class T>
+ParameterValue toValue(const T& x)
+{
+    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, double>)
+        return x;
+    else if constexpr (std::is_enum_v<T> || std::is_integral_v<T>)
+        return static_cast<std::int64_t>(x);
+    else
+        return x; // glm::dvec2, glm::dvec3
+}
+
+template <class T>
+T fromValue(const ParameterValue& v)
+{
+    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, double>)
+        return std::get<T>(v);
+    else if constexpr (std::is_enum_v<T> || std::is_integral_v<T>)
+        return static_cast<T>(std::get<std::int64_t>(v));
+    else
+        return std::get<T>(v);
+}
+
+// Ref is a capture-less generic lambda (auto& scene, size_t item) -> auto&
+// naming the field, so one lambda serves both the const get and the set.
+template <class Ref>
+struct Field {
+    static ParameterValue get(const Scene& s, std::size_t i) { return toValue(Ref{}(s, i)); }
+    static void set(Scene& s, std::size_t i, const ParameterValue& v)
+    {
+        auto& ref = Ref{}(s, i);
+        ref = fromValue<std::remove_cvref_t<decltype(ref)>>(v);
+    }
+};
+
+template <class Ref>
+Parameter at(Ref, Parameter p)
+{
+    p.get = &Field<Ref>::get;
+    p.set = &Field<Ref>::set;
+    return p;
+}
+
+bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
+
+using K = ParameterKind;
+using L = ParameterList;
+using E = ParameterEffect;
+
+std::vector<Parameter> buildTable()
+{
+    // Keep in the order of scene.h; scene files and docs list them so.
+    std::vector<Parameter> t{
+        // [waves]
+        at([](auto& s, std::size_t) -> auto& { return s.waves.listed.depth_m; },
+           {.key = "waves.depth_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
+            .sliderMin = 1.0, .sliderMax = 500.0, .logarithmic = true,
+            .description = "water depth for listed and wind waves; inf is deep water"}),
+        // [waves.wind]
+        at([](auto& s, std::size_t) -> auto& { return wind(s).windSpeed_mps; },
+           {.key = "waves.wind.speed_mps", .effect = E::Waves, .unit = "m/s", .min = 0.5, .max = 40.0,
+            .sliderMin = 0.5, .sliderMax = 40.0, .description = "wind speed 10 m above the sea", .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).windDirection_deg; },
+           {.key = "waves.wind.direction_deg", .effect = E::Waves, .unit = "deg", .min = -360.0, .max = 360.0,
+            .sliderMin = 0.0, .sliderMax = 360.0, .description = "direction the wind blows towards, from +x towards +z",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).spread_deg; },
+           {.key = "waves.wind.spread_deg", .effect = E::Waves, .unit = "deg", .min = 0.0, .max = 180.0,
+            .sliderMin = 0.0, .sliderMax = 180.0, .description = "half-width of the spread of wave directions around the wind",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).fetch_km; },
+           {.key = "waves.wind.fetch_km", .effect = E::Waves, .unit = "km", .min = 1.0, .max = 10000.0,
+            .sliderMin = 1.0, .sliderMax = 10000.0, .logarithmic = true,
+            .description = "distance over which the wind has blown; short fetch, young short waves", .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).waveCount; },
+           {.key = "waves.wind.count", .kind = K::Integer, .effect = E::Waves, .min = 1.0, .max = SWELL_MAX_WAVES,
+            .sliderMin = 1.0, .sliderMax = SWELL_MAX_WAVES, .description = "how many waves to generate",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).minWavelength_m; },
+           {.key = "waves.wind.min_wavelength_m", .effect = E::Waves, .unit = "m", .min = 0.01, .max = 1000.0,
+            .sliderMin = 0.1, .sliderMax = 50.0, .logarithmic = true, .description = "shortest wave generated",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).seed; },
+           {.key = "waves.wind.seed", .kind = K::Integer, .effect = E::Waves, .min = 0.0, .max = 4294967295.0,
+            .sliderMin = 0.0, .sliderMax = 1000.0, .description = "random seed; the same seed gives the same waves",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).steepness; },
+           {.key = "waves.wind.steepness", .effect = E::Waves, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "overall choppiness, scaled down to stay fold-free", .present = windIsSet}),
+        // [[waves.list]]
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].direction; },
+           {.key = "waves.list.direction", .kind = K::Direction2, .list = L::Waves, .effect = E::Waves,
+            .min = -kDirectionLimit, .max = kDirectionLimit, .sliderMin = -1.0, .sliderMax = 1.0,
+            .description = "direction of travel [x, z]"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].wavelength_m; },
+           {.key = "waves.list.wavelength_m", .list = L::Waves, .effect = E::Waves, .unit = "m", .min = 0.0,
+            .max = 10000.0, .minExclusive = true, .sliderMin = 0.1, .sliderMax = 500.0, .logarithmic = true,
+            .description = "crest to crest"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].amplitude_m; },
+           {.key = "waves.list.amplitude_m", .list = L::Waves, .effect = E::Waves, .unit = "m", .min = 0.0,
+            .max = 100.0, .sliderMin = 0.0, .sliderMax = 5.0, .description = "crest height above rest"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].steepness; },
+           {.key = "waves.list.steepness", .list = L::Waves, .effect = E::Waves, .min = 0.0, .max = 1.0,
+            .sliderMin = 0.0, .sliderMax = 1.0, .description = "Gerstner Q: 0 is a sine wave, 1 the sharpest crest"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].phase_rad; },
+           {.key = "waves.list.phase_rad", .list = L::Waves, .effect = E::Waves, .unit = "rad", .min = -1000.0,
+            .max = 1000.0, .sliderMin = -kPi, .sliderMax = kPi, .description = "phase offset"}),
+        // [grid]
+        at([](auto& s, std::size_t) -> auto& { return s.grid.resolution; },
+           {.key = "grid.resolution", .kind = K::Integer, .effect = E::Rebuild, .min = 16.0, .max = 2048.0,
+            .sliderMin = 16.0, .sliderMax = 2048.0, .logarithmic = true, .description = "grid vertices along each side"}),
+        at([](auto& s, std::size_t) -> auto& { return s.grid.radius_m; },
+           {.key = "grid.radius_m", .effect = E::Rebuild, .unit = "m", .min = 10.0, .max = 100000.0, .sliderMin = 100.0,
+            .sliderMax = 20000.0, .logarithmic = true, .description = "half-size of the detailed grid around the camera"}),
+        at([](auto& s, std::size_t) -> auto& { return s.grid.fadeStart_m; },
+           {.key = "grid.fade_start_m", .effect = E::Rebuild, .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
+            .sliderMax = 20000.0, .description = "distance from the camera where wave height starts to fade"}),
+        at([](auto& s, std::size_t) -> auto& { return s.grid.fadeEnd_m; },
+           {.key = "grid.fade_end_m", .effect = E::Rebuild, .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
+            .sliderMax = 20000.0,
+            .description = "distance where the water is flat; > fade_start_m, <= radius_m"}),
+        // [sun]
+        at([](auto& s, std::size_t) -> auto& { return s.sun.direction; },
+           {.key = "sun.direction", .kind = K::Direction3, .min = -kDirectionLimit, .max = kDirectionLimit,
+            .sliderMin = -1.0, .sliderMax = 1.0, .description = "towards the sun [x, y, z], world space"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sun.color; },
+           {.key = "sun.color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "sunlight colour, linear RGB"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sun.intensity; },
+           {.key = "sun.intensity", .min = 0.0, .max = 20.0, .sliderMin = 0.0, .sliderMax = 20.0,
+            .description = "sunlight multiplier"}),
+        // [sky]
+        at([](auto& s, std::size_t) -> auto& { return s.sky.zenithColor; },
+           {.key = "sky.zenith_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "procedural sky straight up, linear RGB"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.horizonColor; },
+           {.key = "sky.horizon_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "procedural sky at the horizon, linear RGB"}),
+        // [fog]
+        at([](auto& s, std::size_t) -> auto& { return s.fog.start_m; },
+           {.key = "fog.start_m", .unit = "m", .min = 0.0, .max = kWorldLimit_m, .sliderMin = 0.0, .sliderMax = 20000.0,
+            .description = "distance from the camera where fog begins"}),
+        at([](auto& s, std::size_t) -> auto& { return s.fog.end_m; },
+           {.key = "fog.end_m", .unit = "m", .min = 0.0, .max = kWorldLimit_m, .sliderMin = 0.0, .sliderMax = 20000.0,
+            .description = "distance where fog is complete; > start_m"}),
+        at([](auto& s, std::size_t) -> auto& { return s.fog.color; },
+           {.key = "fog.color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "fog colour, linear RGB"}),
+        // [water]
+        at([](auto& s, std::size_t) -> auto& { return s.water.deepColor; },
+           {.key = "water.deep_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "light scattered back from deep water, linear RGB"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.absorption_per_m; },
+           {.key = "water.absorption_per_m", .kind = K::Vector3, .unit = "1/m", .min = 0.0, .max = 100.0,
+            .sliderMin = 0.0, .sliderMax = 2.0, .description = "Beer-Lambert absorption per channel [r, g, b]"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.fresnelF0; },
+           {.key = "water.fresnel_f0", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.2,
+            .description = "reflectance looking straight down (water: 0.02)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.shininess; },
+           {.key = "water.shininess", .min = 1.0, .max = 10000.0, .sliderMin = 1.0, .sliderMax = 10000.0,
+            .logarithmic = true, .description = "Phong specular exponent of the sun glint"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.specularStrength; },
+           {.key = "water.specular_strength", .min = 0.0, .max = 10.0, .sliderMin = 0.0, .sliderMax = 10.0,
+            .description = "sun glint multiplier"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.refractionDistortion; },
+           {.key = "water.refraction_distortion", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.3,
+            .description = "how far the normal bends the refraction lookup"}),
+        // [reflection]
+        at([](auto& s, std::size_t) -> auto& { return s.reflection.mode; },
+           {.key = "reflection.mode", .kind = K::Choice, .min = 0.0, .max = kReflectionModes.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kReflectionModes.size() - 1.0,
+            .description = "raymarch: march the reflected ray; fixed: step a fixed distance along it",
+            .choices = kReflectionModes}),
+        at([](auto& s, std::size_t) -> auto& { return s.reflection.fixedDistance_m; },
+           {.key = "reflection.fixed_distance_m", .unit = "m", .min = 0.0, .max = 1000.0, .minExclusive = true,
+            .sliderMin = 0.5, .sliderMax = 50.0, .logarithmic = true,
+            .description = "step along the reflected ray in fixed mode"}),
+        at([](auto& s, std::size_t) -> auto& { return s.reflection.resolutionScale; },
+           {.key = "reflection.resolution_scale", .effect = E::Rebuild, .min = 0.1, .max = 1.0, .sliderMin = 0.1,
+            .sliderMax = 1.0, .description = "reflection and refraction target size relative to the output"}),
+        at([](auto& s, std::size_t) -> auto& { return s.reflection.clipOffset_m; },
+           {.key = "reflection.clip_offset_m", .unit = "m", .min = 0.0, .max = 10.0, .sliderMin = 0.0, .sliderMax = 2.0,
+            .description = "the mirrored world is clipped this far below the water plane"}),
+        // [[objects]]
+        at([](auto& s, std::size_t i) -> auto& { return s.objects[i].position_m; },
+           {.key = "objects.position_m", .kind = K::Vector3, .list = L::Objects, .unit = "m", .min = -kWorldLimit_m,
+            .max = kWorldLimit_m, .sliderMin = -1000.0, .sliderMax = 1000.0, .description = "world position [x, y, z]"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.objects[i].yaw_deg; },
+           {.key = "objects.yaw_deg", .list = L::Objects, .unit = "deg", .min = -kAngleLimit_deg, .max = kAngleLimit_deg,
+            .sliderMin = -180.0, .sliderMax = 180.0, .description = "rotation about +y"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.objects[i].scale; },
+           {.key = "objects.scale", .list = L::Objects, .min = 0.0, .max = 10000.0, .minExclusive = true,
+            .sliderMin = 0.01, .sliderMax = 100.0, .logarithmic = true, .description = "uniform scale"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.objects[i].floats; },
+           {.key = "objects.floats", .kind = K::Flag, .list = L::Objects, .min = 0.0, .max = 1.0, .sliderMin = 0.0,
+            .sliderMax = 1.0, .description = "ride the waves: height and tilt follow the surface"}),
+        // [camera]
+        at([](auto& s, std::size_t) -> auto& { return s.camera.position_m; },
+           {.key = "camera.position_m", .kind = K::Vector3, .unit = "m", .min = -kWorldLimit_m, .max = kWorldLimit_m,
+            .sliderMin = -1000.0, .sliderMax = 1000.0, .description = "world position [x, y, z]; y is up"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.yaw_deg; },
+           {.key = "camera.yaw_deg", .unit = "deg", .min = -kAngleLimit_deg, .max = kAngleLimit_deg, .sliderMin = -180.0,
+            .sliderMax = 180.0, .description = "heading, from -z towards +x"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.pitch_deg; },
+           {.key = "camera.pitch_deg", .unit = "deg", .min = -89.0, .max = 89.0, .sliderMin = -89.0, .sliderMax = 89.0,
+            .description = "up (+) or down (-) from the horizon"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.fovY_deg; },
+           {.key = "camera.fov_y_deg", .unit = "deg", .min = 10.0, .max = 150.0, .sliderMin = 10.0, .sliderMax = 150.0,
+            .description = "vertical field of view"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.near_m; },
+           {.key = "camera.near_m", .unit = "m", .min = 0.0, .max = 1000.0, .minExclusive = true, .sliderMin = 0.01,
+            .sliderMax = 10.0, .logarithmic = true, .description = "near clip plane"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.far_m; },
+           {.key = "camera.far_m", .unit = "m", .min = 0.0, .max = 1.0e7, .minExclusive = true, .sliderMin = 100.0,
+            .sliderMax = 100000.0, .logarithmic = true, .description = "far clip plane; > near_m"}),
+        // [[camera.path]]
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].time_s; },
+           {.key = "camera.path.time_s", .list = L::CameraPath, .unit = "s", .min = 0.0, .max = 1.0e6, .sliderMin = 0.0,
+            .sliderMax = 600.0, .description = "when the camera is here; keys strictly increase"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].position_m; },
+           {.key = "camera.path.position_m", .kind = K::Vector3, .list = L::CameraPath, .unit = "m",
+            .min = -kWorldLimit_m, .max = kWorldLimit_m, .sliderMin = -1000.0, .sliderMax = 1000.0,
+            .description = "world position [x, y, z]"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].yaw_deg; },
+           {.key = "camera.path.yaw_deg", .list = L::CameraPath, .unit = "deg", .min = -kAngleLimit_deg,
+            .max = kAngleLimit_deg, .sliderMin = -180.0, .sliderMax = 180.0, .description = "heading, from -z towards +x"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].pitch_deg; },
+           {.key = "camera.path.pitch_deg", .list = L::CameraPath, .unit = "deg", .min = -89.0, .max = 89.0,
+            .sliderMin = -89.0, .sliderMax = 89.0, .description = "up (+) or down (-) from the horizon"}),
+        // top level
+        at([](auto& s, std::size_t) -> auto& { return s.debugView; },
+           {.key = "debug_view", .kind = K::Choice, .min = 0.0, .max = kDebugViews.size() - 1.0, .sliderMin = 0.0,
+            .sliderMax = kDebugViews.size() - 1.0, .description = "what the water shows: the shaded ocean or one ingredient",
+            .choices = kDebugViews}),
+        at([](auto& s, std::size_t) -> auto& { return s.showTerrain; },
+           {.key = "terrain", .kind = K::Flag, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "draw the built-in island"}),
+    };
+
+    // Defaults come from the member initialisers: a default Scene with one
+    // item in every list and the wind switched on.
+    Scene prototype;
+    prototype.waves.wind.emplace();
+    prototype.waves.listed.waves.emplace_back();
+    prototype.objects.emplace_back();
+    prototype.camera.path.emplace_back();
+    for (Parameter& p : t)
+        p.defaultValue = p.get(prototype, 0);
+    return t;
+}
+
+std::string withUnit(std::string text, std::string_view unit)
+{
+    if (!unit.empty())
+        text += fmt::format(" {}", unit);
+    return text;
+}
+
+std::string formatReal(double x)
+{
+    if (std::isnan(x))
+        return "nan";
+    if (std::isinf(x))
+        return x > 0 ? "inf" : "-inf";
+    std::string s = fmt::format("{}", x);
+    // A TOML float needs a '.' or an exponent, or it reads back as an integer.
+    if (s.find_first_of(".e") == std::string::npos)
+        s += ".0";
+    return s;
+}
+
+// Numbers in messages and docs: shortest form, "inf" for infinity.
+std::string formatNumber(double x)
+{
+    if (std::isinf(x))
+        return x > 0 ? "inf" : "-inf";
+    return fmt::format("{}", x);
+}
+
+bool holdsKind(const Parameter& p, const ParameterValue& v)
+{
+    switch (p.kind) {
+    case K::Real: return std::holds_alternative<double>(v);
+    case K::Integer:
+    case K::Choice: return std::holds_alternative<std::int64_t>(v);
+    case K::Flag: return std::holds_alternative<bool>(v);
+    case K::Colour:
+    case K::Direction3:
+    case K::Vector3: return std::holds_alternative<glm::dvec3>(v);
+    case K::Direction2: return std::holds_alternative<glm::dvec2>(v);
+    }
+    return false;
+}
+
+} // namespace
+
+std::span<const Parameter> parameters()
+{
+    static const std::vector<Parameter> table = buildTable();
+    return table;
+}
+
+const Parameter* findParameter(std::string_view key)
+{
+    for (const Parameter& p : parameters())
+        if (p.key == key)
+            return &p;
+    return nullptr;
+}
+
+std::string_view listKey(ParameterList list)
+{
+    switch (list) {
+    case L::None: return "";
+    case L::Waves: return "waves.list";
+    case L::Objects: return "objects";
+    case L::CameraPath: return "camera.path";
+    }
+    return "";
+}
+
+std::size_t listSize(const Scene& scene, ParameterList list)
+{
+    switch (list) {
+    case L::None: return 1;
+    case L::Waves: return scene.waves.listed.waves.size();
+    case L::Objects: return scene.objects.size();
+    case L::CameraPath: return scene.camera.path.size();
+    }
+    return 0;
+}
+
+bool isPresent(const Parameter& p, const Scene& scene) { return p.present == nullptr || p.present(scene); }
+
+int componentCount(ParameterKind kind)
+{
+    switch (kind) {
+    case K::Colour:
+    case K::Direction3:
+    case K::Vector3: return 3;
+    case K::Direction2: return 2;
+    default: return 1;
+    }
+}
+
+bool inRange(const Parameter& p, double x)
+{
+    if (std::isnan(x))
+        return false;
+    if (p.minExclusive ? !(x > p.min) : !(x >= p.min))
+        return false;
+    return x <= p.max; // +inf passes only when max is +inf
+}
+
+std::string rangeText(const Parameter& p)
+{
+    if (p.kind == K::Flag)
+        return "true or false";
+    if (p.kind == K::Choice) {
+        std::string s;
+        for (std::size_t i = 0; i < p.choices.size(); ++i) {
+            if (i > 0)
+                s += (i + 1 == p.choices.size()) ? " or " : ", ";
+            s += fmt::format("\"{}\"", p.choices[i]);
+        }
+        return s;
+    }
+    std::string span;
+    if (std::isinf(p.max))
+        span = fmt::format("{} {}", p.minExclusive ? ">" : ">=", formatNumber(p.min));
+    else if (p.minExclusive)
+        span = fmt::format("> {} and <= {}", formatNumber(p.min), formatNumber(p.max));
+    else
+        span = fmt::format("{}..{}", formatNumber(p.min), formatNumber(p.max));
+    span = withUnit(span, p.unit);
+    if (std::isinf(p.max))
+        span += ", inf allowed";
+    switch (p.kind) {
+    case K::Colour: return "each channel " + span;
+    case K::Vector3: return "each component " + span;
+    case K::Direction3:
+    case K::Direction2: return "non-zero, each component " + span;
+    default: return span;
+    }
+}
+
+std::string rangeMessage(const Parameter& p, std::string_view name, double x)
+{
+    bool finiteExpected = !(std::isinf(x) && std::isinf(p.max));
+    const char* what = (std::isfinite(x) || !finiteExpected) ? "is out of range" : "is not a finite number";
+    return fmt::format("{} = {} {}; allowed {}", name, formatNumber(x), what, rangeText(p));
+}
+
+std::string valueProblem(const Parameter& p, const ParameterValue& value, std::string_view name)
+{
+    if (name.empty())
+        name = p.key;
+    if (!holdsKind(p, value))
+        return fmt::format("{} holds the wrong type of value", name);
+    switch (p.kind) {
+    case K::Real: {
+        double x = std::get<double>(value);
+        return inRange(p, x) ? "" : rangeMessage(p, name, x);
+    }
+    case K::Integer: {
+        double x = static_cast<double>(std::get<std::int64_t>(value));
+        return inRange(p, x) ? "" : rangeMessage(p, name, x);
+    }
+    case K::Choice: {
+        std::int64_t i = std::get<std::int64_t>(value);
+        if (i >= 0 && static_cast<std::size_t>(i) < p.choices.size())
+            return "";
+        return fmt::format("{} has no choice number {}; allowed {}", name, i, rangeText(p));
+    }
+    case K::Flag: return "";
+    case K::Colour:
+    case K::Direction3:
+    case K::Vector3: {
+        glm::dvec3 v = std::get<glm::dvec3>(value);
+        for (int c = 0; c < 3; ++c)
+            if (!inRange(p, v[c]))
+                return rangeMessage(p, fmt::format("{}[{}]", name, c), v[c]);
+        if (p.kind == K::Direction3 && glm::dot(v, v) == 0.0)
+            return fmt::format("{} is [0, 0, 0]; a direction must not be zero", name);
+        return "";
+    }
+    case K::Direction2: {
+        glm::dvec2 v = std::get<glm::dvec2>(value);
+        for (int c = 0; c < 2; ++c)
+            if (!inRange(p, v[c]))
+                return rangeMessage(p, fmt::format("{}[{}]", name, c), v[c]);
+        if (glm::dot(v, v) == 0.0)
+            return fmt::format("{} is [0, 0]; a direction must not be zero", name);
+        return "";
+    }
+    }
+    return "";
+}
+
+std::string formatValue(const Parameter& p, const ParameterValue& value)
+{
+    if (!holdsKind(p, value))
+        return "?";
+    switch (p.kind) {
+    case K::Real: return formatReal(std::get<double>(value));
+    case K::Integer: return fmt::format("{}", std::get<std::int64_t>(value));
+    case K::Flag: return std::get<bool>(value) ? "true" : "false";
+    case K::Choice: {
+        std::int64_t i = std::get<std::int64_t>(value);
+        if (i >= 0 && static_cast<std::size_t>(i) < p.choices.size())
+            return fmt::format("\"{}\"", p.choices[static_cast<std::size_t>(i)]);
+        return fmt::format("{}", i);
+    }
+    case K::Colour:
+    case K::Direction3:
+    case K::Vector3: {
+        glm::dvec3 v = std::get<glm::dvec3>(value);
+        return fmt::format("[{}, {}, {}]", formatReal(v.x), formatReal(v.y), formatReal(v.z));
+    }
+    case K::Direction2: {
+        glm::dvec2 v = std::get<glm::dvec2>(value);
+        return fmt::format("[{}, {}]", formatReal(v.x), formatReal(v.y));
+    }
+    }
+    return "?";
+}
+
+} // namespace swell
