@@ -32,8 +32,9 @@ struct SpectrumParameters {
 
 // Parameters for a wind, after the clamping generateWaves() applies.
 // Fetch-limited: alpha = 0.076*chi^-0.22 and omega_p = 22*(g/U)*chi^(-1/3)
-// with chi = g*fetch/U^2, except that omega_p never drops below the fully
-// developed Pierson-Moskowitz peak 0.877*g/U: longer fetch adds nothing.
+// with chi = g*fetch/U^2. chi is capped where omega_p reaches the fully
+// developed Pierson-Moskowitz peak 0.877*g/U (chi ~ 15800, 160 km of fetch
+// at 10 m/s): longer fetch adds nothing.
 SpectrumParameters jonswapParameters(const WindSettings& wind);
 
 // Energy density S(omega), m^2*s/rad, at angular frequency omega_radps > 0.

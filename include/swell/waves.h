@@ -101,9 +101,11 @@ double wrappedPhase(const Wave& wave, double depth_m, glm::dvec2 origin_m, doubl
 // does the per-wave work once (wavenumber vectors, amplitude terms, the phase
 // at origin_m and time_s); a query then reduces each phase in double relative
 // to the origin and solves for the rest point in float, with a polynomial
-// sincos over several waves at a time.
+// sincos over several waves (heightAt) or several points (heightsAt) at a
+// time. Build one per frame (about 1 us for 16 waves) and query it freely;
+// it is immutable, so threads may share it.
 //
-// Agrees with swell::heightAt within 1 mm (typically 0.001 mm) for points
+// Agrees with swell::heightAt within 1 mm (typically 0.01 mm) for points
 // within 10 km of the origin, and degrades slowly beyond; it assumes
 // wavelengths of a centimetre or more. The solve is Newton on the rest point
 // (a step that does not shrink the residual is halved), at most 12
@@ -117,9 +119,11 @@ public:
     // x86-64, NEON on ARM64. Asking for Avx2 on a CPU without it gives Baseline.
     enum class Simd { Auto, Baseline, Avx2 };
 
-    // The solve stops once a Newton step is shorter than this, m. The height
-    // error left is of order step^2 * sum(A*k^2), far below 1 mm.
-    static constexpr float kStepTolerance_m = 1e-3f;
+    // The solve stops once a Newton step is shorter than this, m. Newton's
+    // convergence is quadratic and the step is applied to first order, so
+    // the height error left is of order step^2 * sum(A*k^2): 5 mm gives
+    // ~0.01 mm on generated seas, and saves an evaluation on most queries.
+    static constexpr float kStepTolerance_m = 5e-3f;
 
     // An empty sampler: height 0 everywhere.
     WaveSampler() = default;
@@ -131,7 +135,10 @@ public:
     // Surface height, m, at world (x, z) = worldPoint_m.
     double heightAt(glm::dvec2 worldPoint_m) const;
 
-    // heights_m[i] = heightAt(worldPoints_m[i]); the spans must be the same size.
+    // heights_m[i] = height at worldPoints_m[i], computed several points side
+    // by side: about 2.5 times the throughput of heightAt for 16 waves. The
+    // same solve, so within 1 mm of heightAt, but not bit for bit. The spans
+    // must be the same size (else std::invalid_argument).
     void heightsAt(std::span<const glm::dvec2> worldPoints_m, std::span<double> heights_m) const;
 
     double time_s() const { return time_s_; }
@@ -150,7 +157,6 @@ private:
     double time_s_ = 0.0;
     glm::dvec2 origin_m_{0.0, 0.0};
     int waveCount_ = 0;
-    int paddedCount_ = 0;
     float maxOffset_m_ = 0.0f; // sum(Q*A), m: how far a rest point can lie from its image
     Simd simd_ = Simd::Baseline;
 
