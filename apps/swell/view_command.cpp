@@ -1,8 +1,29 @@
-// Placeholder until the viewer lands: reports that no viewer is built.
+// `swell view`: the interactive viewer, whose parts live in viewer/. Turns its
+// errors into exit codes: bad input 2, anything else 1.
 #include "commands.h"
+#include "viewer/viewer.h"
+#include "viewer/window.h"
+
 #include "swell/error.h"
+
 #include <cstdio>
+#include <exception>
+
 namespace swell::app {
-bool displayAvailable() { return false; }
-int runView(const ViewOptions&) { std::fprintf(stderr, "swell: the viewer is not built yet\n"); return kExitFailure; }
+
+int runView(const ViewOptions& options)
+{
+    try {
+        return viewer::run(options);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "swell: error: %s\n", e.what());
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "swell: error: %s\n", e.what());
+        return kExitFailure;
+    }
 }
+
+bool displayAvailable() { return viewer::displayUsable(); }
+
+} // namespace swell::app

@@ -1,0 +1,117 @@
+// The viewer's ImGui panel: frame times, the view (debug view, time, camera),
+// scene files, shader reload, and every scene parameter edited live. Slider
+// ranges, units and descriptions come from the parameter table
+// (swell/parameters.h), so nothing here repeats a range.
+//
+// Every accepted edit reaches the renderer through Session::apply(), since
+// the renderer reads even per-frame values from its own copy of the scene.
+// Parameters whose effect is Rebuild (grid size, target scale) are applied
+// when their slider is released rather than on every step of a drag.
+#pragma once
+
+#include "viewer/fly_camera.h"
+#include "viewer/session.h"
+
+#include "swell/parameters.h"
+#include "swell/renderer.h"
+
+#include <glm/vec2.hpp>
+
+#include <array>
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swell::app::viewer {
+
+// What the viewer loop and the panel share about the view (not the scene).
+struct ViewState {
+    double time_s = 0.0;           // simulation time, s
+    bool paused = false;
+    double timeRate = 1.0;         // simulated seconds per real second
+    bool followSceneCamera = true; // the scene's camera (and its path); false: free flight
+    FlyCamera fly;
+    bool showPanel = true;
+};
+
+// The last kCount frame times, for the plot.
+class FrameTimes {
+public:
+    static constexpr int kCount = 240;
+    void add(float ms);
+    // Oldest first from offset(), wrapping, as ImGui::PlotLines takes them.
+    const float* values() const { return values_.data(); }
+    int offset() const { return next_; }
+    int count() const { return kCount; }
+    float average() const;
+    float maximum() const;
+    float latest() const;
+
+private:
+    std::array<float, kCount> values_{};
+    int next_ = 0;
+    int filled_ = 0;
+};
+
+// What the panel shows about the last frame.
+struct FrameStats {
+    FrameTimes times;
+    FrameCounters counters;
+    glm::ivec2 size{0};
+    std::string context; // GL_RENDERER, GL_VERSION
+    Camera camera;       // the camera the frame was drawn with
+};
+
+// What the panel asks of the loop (the same as some keys).
+struct PanelRequests {
+    bool reloadShaders = false;
+    bool screenshot = false;
+};
+
+class Panel {
+public:
+    // presetFolder: the repository's scenes/, listed for loading.
+    explicit Panel(std::filesystem::path presetFolder);
+
+    PanelRequests draw(Session& session, ViewState& view, const FrameStats& stats);
+
+    // The outcome of the last screenshot, shown under the view section.
+    void setScreenshotMessage(Message message) { screenshot_ = std::move(message); }
+    // After a scene file is loaded: suggests NAME-edited.toml beside it as
+    // the path to save to, and selects it in the presets when it is one.
+    void sceneLoaded(const std::filesystem::path& sceneFile);
+
+private:
+    // A Rebuild parameter's value while its slider is held.
+    struct Staged {
+        std::string_view key;
+        std::size_t item = 0;
+        ParameterValue value;
+    };
+
+    void drawStats(const FrameStats& stats);
+    void drawView(Session& session, ViewState& view, const FrameStats& stats, Scene& edited, bool& changed,
+                  PanelRequests& requests);
+    void drawFiles(Session& session);
+    void drawShaders(Session& session, PanelRequests& requests);
+    void drawParameters(Session& session, Scene& edited, bool& changed);
+    void drawList(Session& session, ParameterList list, Scene& edited, bool& changed);
+    // One parameter's widget; writes an accepted change into `edited`.
+    bool editParameter(Session& session, const Parameter& p, std::size_t item, Scene& edited);
+    void refreshPresets();
+
+    float width_ = 0.0f; // of the panel, pixels; 0 until the first frame
+    std::filesystem::path presetFolder_;
+    std::vector<std::filesystem::path> presets_;
+    int presetIndex_ = 0;
+    std::string savePath_;
+    std::optional<Staged> staged_;
+    std::optional<WindSettings> lastWind_; // restored when the wind is switched back on
+    std::optional<std::filesystem::path> loadRequest_;
+    bool saveRequest_ = false;
+    Message screenshot_;
+};
+
+} // namespace swell::app::viewer
