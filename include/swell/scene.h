@@ -121,6 +121,9 @@ struct Scene {
     std::vector<SceneObject> objects;
     CameraSettings camera;
     DebugView debugView = DebugView::Shaded;
+    // Where relative object and sky paths are found: the scene file's folder
+    // (set by loadScene/parseScene); empty means the working directory.
+    std::string assetFolder;
     bool showTerrain = true; // the built-in island
 };
 

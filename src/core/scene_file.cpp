@@ -957,6 +957,7 @@ Scene parseScene(std::string_view text, const fs::path& virtualPath)
 
     Scene scene = SceneReader(places).read(root);
     checkScene(scene, places, baseFolder(virtualPath));
+    scene.assetFolder = baseFolder(virtualPath).string();
     return scene;
 }
 

@@ -49,9 +49,11 @@ struct Programs {
     gl::Program water, sky, mesh, capture;
 };
 
-struct WorldObject {
-    GpuMesh* mesh = nullptr;
-    SceneObject placement;
+// What the world draws: the island, one mesh per scene object, the sky cubemap.
+struct World {
+    GpuMesh island;
+    std::vector<std::unique_ptr<GpuMesh>> meshes;
+    gl::Texture skyCube;
 };
 
 } // namespace
@@ -67,9 +69,7 @@ struct Renderer::Impl {
     gl::VertexArray gridVao, emptyVao;
     gl::Buffer gridIndices;
     GLsizei gridIndexCount = 0;
-    GpuMesh island;
-    std::vector<std::unique_ptr<GpuMesh>> meshes; // one per scene object
-    gl::Texture skyCube;
+    World world;
     RenderTarget reflection, refraction, output;
     FrameCounters counters;
     PassObserver* observer = nullptr;
@@ -120,36 +120,41 @@ struct Renderer::Impl {
         gridIndexCount = GLsizei(indices.size());
     }
 
-    void buildWorld()
+    // Builds the meshes and sky of `from` without touching the current ones,
+    // so a bad asset leaves the renderer as it was.
+    static World buildWorld(const Scene& from)
     {
-        island = scene.showTerrain ? GpuMesh(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution)) : GpuMesh();
-        meshes.clear();
-        for (const SceneObject& o : scene.objects) {
-            MeshData data;
-            if (o.path.starts_with("builtin:"))
-                data = makeBuiltinModel(o.path.substr(8));
-            else
-                data = loadGltf(std::filesystem::path(o.path));
+        // A path from the scene, found relative to the scene file's folder.
+        auto assetPath = [&from](const std::string& path) {
+            const std::filesystem::path p(path);
+            return p.is_absolute() || from.assetFolder.empty() ? p : std::filesystem::path(from.assetFolder) / p;
+        };
+        World world;
+        if (from.showTerrain)
+            world.island = GpuMesh(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution));
+        for (const SceneObject& o : from.objects) {
+            const MeshData data = o.path.starts_with("builtin:") ? makeBuiltinModel(o.path.substr(8)) : loadGltf(assetPath(o.path));
             if (data.vertices.empty())
                 throw InputError({o.path}, "model has no triangles");
-            meshes.push_back(std::make_unique<GpuMesh>(data));
+            world.meshes.push_back(std::make_unique<GpuMesh>(data));
         }
-        skyCube.reset();
-        if (!scene.sky.cubemapFaces.empty()) {
+        if (!from.sky.cubemapFaces.empty()) {
             std::vector<Image> faces;
-            for (const std::string& f : scene.sky.cubemapFaces) {
-                faces.push_back(readImage(f));
+            for (const std::string& f : from.sky.cubemapFaces) {
+                faces.push_back(readImage(assetPath(f)));
                 if (faces.back().width != faces.back().height || faces.back().width != faces.front().width)
                     throw InputError({f}, "sky cubemap faces must be square and all the same size");
             }
-            skyCube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
+            world.skyCube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
             const int n = faces.front().width;
-            glTextureStorage2D(skyCube.id(), 1, GL_SRGB8_ALPHA8, n, n);
+            glTextureStorage2D(world.skyCube.id(), 1, GL_SRGB8_ALPHA8, n, n);
             for (int face = 0; face < 6; ++face)
-                glTextureSubImage3D(skyCube.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_UNSIGNED_BYTE, faces[size_t(face)].rgba.data());
-            glTextureParameteri(skyCube.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-            glTextureParameteri(skyCube.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+                glTextureSubImage3D(world.skyCube.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                                    faces[size_t(face)].rgba.data());
+            glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         }
+        return world;
     }
 
     void uploadWaves(const GridPlacement& grid, double time_s)
@@ -235,6 +240,7 @@ struct Renderer::Impl {
     void drawWorld(glm::dvec3 origin, double time_s)
     {
         glUseProgram(programs.mesh.id());
+        const GpuMesh& island = world.island;
         if (island.indexCount() > 0) {
             const glm::mat4 model(glm::translate(glm::dmat4(1.0), kIslandPosition_m - origin));
             glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));
@@ -242,11 +248,11 @@ struct Renderer::Impl {
             counters.worldTriangles += island.indexCount() / 3;
             ++counters.drawCalls;
         }
-        for (size_t i = 0; i < meshes.size(); ++i) {
+        for (size_t i = 0; i < world.meshes.size(); ++i) {
             const glm::mat4 model(objectModel(scene.objects[i], origin, time_s));
             glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));
-            meshes[i]->draw();
-            counters.worldTriangles += meshes[i]->indexCount() / 3;
+            world.meshes[i]->draw();
+            counters.worldTriangles += world.meshes[i]->indexCount() / 3;
             ++counters.drawCalls;
         }
     }
@@ -254,7 +260,7 @@ struct Renderer::Impl {
     void drawSky()
     {
         glUseProgram(programs.sky.id());
-        glBindTextureUnit(SWELL_UNIT_SKY, skyCube.id());
+        glBindTextureUnit(SWELL_UNIT_SKY, world.skyCube.id());
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);
         glBindVertexArray(emptyVao.id());
@@ -267,7 +273,7 @@ struct Renderer::Impl {
     void drawWater()
     {
         glUseProgram(programs.water.id());
-        glBindTextureUnit(SWELL_UNIT_SKY, skyCube.id());
+        glBindTextureUnit(SWELL_UNIT_SKY, world.skyCube.id());
         glBindTextureUnit(SWELL_UNIT_REFLECTION_COLOR, reflection.color());
         glBindTextureUnit(SWELL_UNIT_REFLECTION_DEPTH, reflection.depth());
         glBindTextureUnit(SWELL_UNIT_REFRACTION_COLOR, refraction.color());
@@ -378,10 +384,19 @@ void Renderer::setScene(const Scene& scene)
                                  scene.sky.cubemapFaces.empty() != s.scene.sky.cubemapFaces.empty();
     const bool gridChanged = first || scene.grid.resolution != s.scene.grid.resolution ||
                              scene.grid.radius_m != s.scene.grid.radius_m || scene.camera.far_m != s.scene.camera.far_m;
+    auto sameObjects = [](const std::vector<SceneObject>& a, const std::vector<SceneObject>& b) {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                          [](const SceneObject& x, const SceneObject& y) { return x.path == y.path; });
+    };
+    // Meshes and the sky cubemap are read from disk only when what they come from changed.
+    const bool worldChanged = first || scene.showTerrain != s.scene.showTerrain ||
+                              !sameObjects(scene.objects, s.scene.objects) ||
+                              scene.sky.cubemapFaces != s.scene.sky.cubemapFaces || scene.assetFolder != s.scene.assetFolder;
     WaveSet waves = resolveWaves(scene.waves);
     limitSteepness(waves);
     if (const std::string problem = validate(waves); !problem.empty())
         throw InputError({}, "waves: " + problem);
+    // Everything that can fail is built first; the renderer changes only when all succeeded.
     Programs programs;
     if (programsChanged) {
         const Scene previous = std::exchange(s.scene, scene);
@@ -391,14 +406,19 @@ void Renderer::setScene(const Scene& scene)
             s.scene = previous;
             throw;
         }
+        s.scene = previous;
     }
+    World world;
+    if (worldChanged)
+        world = Impl::buildWorld(scene);
     s.scene = scene;
     s.waves = std::move(waves);
     if (programsChanged)
         s.programs = std::move(programs);
+    if (worldChanged)
+        s.world = std::move(world);
     if (gridChanged)
         s.buildGrid();
-    s.buildWorld();
 }
 
 const Scene& Renderer::scene() const { return impl_->scene; }
@@ -406,7 +426,11 @@ const WaveSet& Renderer::waves() const { return impl_->waves; }
 const FrameCounters& Renderer::counters() const { return impl_->counters; }
 void Renderer::setPassObserver(PassObserver* observer) { impl_->observer = observer; }
 
-void Renderer::reloadShaders() { impl_->programs = impl_->buildPrograms(); }
+void Renderer::reloadShaders()
+{
+    impl_->sources.forgetCachedFiles();
+    impl_->programs = impl_->buildPrograms();
+}
 
 void Renderer::render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer)
 {

@@ -24,6 +24,10 @@ public:
     // In-memory sources, for tests.
     static ShaderSources fromMap(std::map<std::string, std::string> files);
 
+    // Files read from disk are kept after their first read; this forgets them
+    // so the next build reads them again (hot reload).
+    void forgetCachedFiles() { cache_.clear(); }
+
     // The text of one file. Throws swell::InputError when it does not exist.
     const std::string& file(const std::string& name) const;
 
