@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <regex>
 
@@ -25,6 +26,17 @@ void parseSize(const std::string& text, int& width, int& height)
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         throw CLI::ValidationError("--size", "each side must be 1..16384 pixels, got '" + text + "'");
 }
+
+// Range checks let NaN through (every comparison with it is false).
+const CLI::Validator finiteNumber(
+    [](std::string& text) {
+        try {
+            return std::isfinite(std::stod(text)) ? std::string() : "must be a finite number, got '" + text + "'";
+        } catch (const std::exception&) {
+            return "must be a number, got '" + text + "'";
+        }
+    },
+    "FINITE");
 
 } // namespace
 
@@ -56,11 +68,11 @@ int main(int argc, char** argv)
                               "NAME_00001.png, ... or NAME.mp4 a video (needs the ffmpeg program)")->required();
     renderCommand->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->capture_default_str();
     renderCommand->add_option("--time", render.time_s, "Simulation time of the first frame, seconds")
-        ->check(CLI::Range(0.0, 1.0e9))->capture_default_str();
+        ->check(finiteNumber & CLI::Range(0.0, 1.0e9))->capture_default_str();
     renderCommand->add_option("--duration", duration, "Render a sequence this many seconds long")
-        ->check(CLI::Range(0.0, 3600.0));
+        ->check(finiteNumber & CLI::Range(0.0, 3600.0));
     renderCommand->add_option("--fps", render.fps, "Frames per second of a sequence")
-        ->check(CLI::Range(1.0, 240.0))->capture_default_str();
+        ->check(finiteNumber & CLI::Range(1.0, 240.0))->capture_default_str();
 
     swell::app::BenchOptions bench;
     std::string benchSize = "1280x720";

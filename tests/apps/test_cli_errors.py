@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Feeds the swell executable malformed scene files and argument lists.
+
+Each case must exit with its documented code (2: bad input, 0: fine) and say
+where the problem is; none may crash (a signal, or exit codes other than 0/1/2).
+usage: test_cli_errors.py SWELL_EXECUTABLE WORK_DIR
+"""
+import os
+import subprocess
+import sys
+
+swell, work = sys.argv[1], sys.argv[2]
+os.makedirs(work, exist_ok=True)
+
+# (name, scene text, expected "line:column" or "" for file-level errors, substring of the message)
+SCENES = [
+    ("syntax", "[fog\nstart_m = 1\n", "1:", "TOML"),
+    ("unknown_key", "[fog]\nstrat_m = 10.0\n", "2:1", "start_m"),
+    ("wrong_type", "[fog]\nstart_m = \"far\"\n", "2:", "fog.start_m"),
+    ("negative_fog_end", "[fog]\nend_m = -5.0\n", "2:", "fog.end_m"),
+    ("fog_order", "[fog]\nstart_m = 500.0\nend_m = 100.0\n", "3:", "fog.end_m"),
+    ("nan", "[sun]\nintensity = nan\n", "2:", "sun.intensity"),
+    ("infinite", "[water]\nshininess = inf\n", "2:", "water.shininess"),
+    ("huge_grid", "[grid]\nresolution = 100000000\n", "2:", "grid.resolution"),
+    ("negative_radius", "[grid]\nradius_m = -1.0\n", "2:", "grid.radius_m"),
+    ("zero_wavelength", "[[waves.list]]\ndirection = [1.0, 0.0]\nwavelength_m = 0.0\namplitude_m = 0.1\n", "3:", "wavelength_m"),
+    ("negative_amplitude", "[[waves.list]]\ndirection = [1.0, 0.0]\nwavelength_m = 5.0\namplitude_m = -0.1\n", "4:", "amplitude_m"),
+    ("zero_direction", "[[waves.list]]\ndirection = [0.0, 0.0]\nwavelength_m = 5.0\namplitude_m = 0.1\n", "2:", "direction"),
+    ("steepness_above_one", "[[waves.list]]\ndirection = [1.0, 0.0]\nwavelength_m = 5.0\namplitude_m = 0.1\nsteepness = 3.0\n", "5:", "steepness"),
+    ("wind_too_fast", "[waves.wind]\nspeed_mps = 400.0\n", "2:", "speed_mps"),
+    ("too_many_waves", "".join("[[waves.list]]\ndirection = [1.0, 0.0]\nwavelength_m = 5.0\namplitude_m = 0.01\n" for _ in range(65)), "257:", "waves.list"),
+    ("bad_reflection_mode", "[reflection]\nmode = \"mirror\"\n", "2:", "reflection.mode"),
+    ("bad_debug_view", "debug_view = \"xray\"\n", "1:", "debug_view"),
+    ("missing_model", "[[objects]]\npath = \"no/such/model.glb\"\n", "2:", "no/such/model.glb"),
+    ("unknown_builtin", "[[objects]]\npath = \"builtin:submarine\"\n", "2:", "builtin:submarine"),
+    ("camera_path_unsorted", "[[camera.path]]\ntime_s = 5.0\n[[camera.path]]\ntime_s = 1.0\n", "4:", "camera.path"),
+    ("fov_out_of_range", "[camera]\nfov_y_deg = 179.5\n", "2:", "fov_y_deg"),
+    ("deep_nesting", "a = " + "[" * 200 + "]" * 200 + "\n", "1:", "nest"),
+    ("binary_garbage", None, "", "UTF-8"),
+    ("sky_faces_count", "[sky]\nfaces = [\"a.png\"]\n", "2:", "sky.faces"),
+]
+
+# (name, arguments, expected exit code, substring of stderr)
+ARGUMENTS = [
+    ("no_output", ["render"], 2, "--output"),
+    ("bad_size", ["render", "-o", "x.png", "--size", "big"], 2, "--size"),
+    ("zero_size", ["render", "-o", "x.png", "--size", "0x10"], 2, "--size"),
+    ("huge_size", ["render", "-o", "x.png", "--size", "99999x99999"], 2, "--size"),
+    ("negative_time", ["render", "-o", "x.png", "--time", "-3"], 2, "--time"),
+    ("nan_time", ["render", "-o", "x.png", "--time", "nan"], 2, "--time"),
+    ("bad_fps", ["render", "-o", "x.png", "--duration", "1", "--fps", "0"], 2, "--fps"),
+    ("bad_extension", ["render", "-o", "x.jpg"], 2, ".png or .mp4"),
+    ("mp4_without_duration", ["render", "-o", "x.mp4"], 2, "--duration"),
+    ("missing_scene", ["render", "nowhere.toml", "-o", "x.png"], 2, "nowhere.toml"),
+    ("scene_is_a_folder", ["render", work, "-o", "x.png"], 2, work),
+    ("unknown_subcommand", ["paint"], 2, "paint"),
+    ("unknown_option", ["render", "-o", "x.png", "--colour", "red"], 2, "--colour"),
+    ("bench_bad_frames", ["bench", "--frames", "0"], 2, "--frames"),
+]
+
+failures = []
+count = 0
+
+
+def run(args):
+    return subprocess.run([swell] + args, cwd=work, capture_output=True, text=True, timeout=300,
+                          env=dict(os.environ, DISPLAY=""))
+
+
+for name, text, place, needle in SCENES:
+    count += 1
+    path = os.path.join(work, name + ".toml")
+    with open(path, "wb") as f:
+        f.write(bytes(range(256)) * 8 if text is None else text.encode())
+    r = run(["render", path, "-o", os.path.join(work, name + ".png"), "--size", "32x32"])
+    prefix = path + ":" + place
+    if r.returncode != 2 or prefix not in r.stderr or needle not in r.stderr:
+        failures.append(f"scene {name}: exit {r.returncode}, stderr: {r.stderr.strip()[:300]!r} "
+                        f"(wanted exit 2 with {prefix!r} and {needle!r})")
+    if os.path.exists(os.path.join(work, name + ".png")):
+        failures.append(f"scene {name}: a bad scene still wrote an image")
+
+for name, args, code, needle in ARGUMENTS:
+    count += 1
+    r = run(args)
+    if r.returncode != code or needle not in r.stderr + r.stdout:
+        failures.append(f"arguments {name} {args}: exit {r.returncode}, output: {(r.stderr + r.stdout).strip()[:300]!r} "
+                        f"(wanted exit {code} with {needle!r})")
+
+# And a good one, so the cases above fail for their own reasons.
+count += 1
+r = run(["render", "-o", "good.png", "--size", "48x27"])
+if r.returncode != 0 or not os.path.exists(os.path.join(work, "good.png")):
+    failures.append(f"the default scene did not render: {r.returncode} {r.stderr[:300]!r}")
+
+for f in failures:
+    print("FAIL", f)
+print(f"{count - len(failures)} passed, {len(failures)} failed")
+sys.exit(1 if failures else 0)
