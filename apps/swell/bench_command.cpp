@@ -1,7 +1,226 @@
-// Placeholder until the benchmark lands.
+// `swell bench`: renders the default scene headless along a fixed camera path
+// and reports, for each pass, its wall time, what the driver counted, its cost
+// relative to a floor frame with trivial shading, and how well the water
+// grid's level of detail fits the view. docs/PERFORMANCE.md explains the figures.
+#include "bench.h"
 #include "commands.h"
+#include "progress.h"
+
 #include "swell/error.h"
+#include "swell/gl/context.h"
+#include "swell/renderer.h"
+#include "swell/scene.h"
+#include "swell/shader_constants.h"
+
+#include <epoxy/gl.h>
+#include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+
 namespace swell::app {
-int runBench(const BenchOptions&) { std::fprintf(stderr, "swell: the benchmark is not built yet\n"); return kExitFailure; }
+
+namespace bench {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Simulation time between frames, s.
+constexpr double kFrameStep_s = 1.0 / 60.0;
+// Frames of the floor drawn and discarded before its measured ones (at most
+// --warmup): it has no caches to fill beyond its first frame.
+constexpr int kFloorWarmup = 3;
+// Where on the path the LOD is measured: the default view, the far side of
+// the circle, half way up the climb, near its top, the grazing pass.
+constexpr std::array<double, 5> kLodPathPoints{0.0, 0.25, 0.625, 0.74, 0.875};
+
+double smoothstep01(double x)
+{
+    x = std::clamp(x, 0.0, 1.0);
+    return x * x * (3.0 - 2.0 * x);
 }
+
+// The benchmark's camera path at s in [0, 1). Measured frame k of n sits at
+// s = k / n, so any --frames walks the whole path (more frames sample it more
+// finely); warm-up frames stand at s = 0. Field of view and clip planes are
+// the scene's.
+//
+//   s 0    .. 0.5   a circle of radius 40 m at 6 m height, looking along the
+//                   motion at pitch -5: it starts at the default camera's pose
+//                   (0, 6, 0) looking along -z and turns right, so every
+//                   heading is seen once, the island included
+//   s 0.5  .. 0.75  a further quarter turn while climbing to 40 m and pitching
+//                   down to -20
+//   s 0.75 .. 1     a low grazing pass: 2 m up, pitch -1, 100 m in a straight
+//                   line from (0, 2, 0) towards the island (yaw -22)
+Camera pathCamera(const CameraSettings& settings, double s)
+{
+    constexpr double kRadius_m = 40.0, kLow_m = 6.0, kHigh_m = 40.0;
+    Camera c = cameraAt(settings, 0.0);
+    const double twoPi = 2.0 * glm::pi<double>();
+    auto onCircle = [&](double angle, double height_m, double pitch_deg) {
+        // Centre (R, h, 0); at angle 0 the camera is at (0, h, 0) heading -z.
+        // (+ 0.0 turns a -0 into 0 for the table.)
+        c.position_m = {kRadius_m - kRadius_m * std::cos(angle), height_m, -kRadius_m * std::sin(angle) + 0.0};
+        c.yaw_deg = std::remainder(glm::degrees(angle), 360.0);
+        c.pitch_deg = pitch_deg;
+    };
+    if (s < 0.5) {
+        onCircle(twoPi * s / 0.5, kLow_m, -5.0);
+    } else if (s < 0.75) {
+        const double u = (s - 0.5) / 0.25, e = smoothstep01(u);
+        onCircle(twoPi + 0.25 * twoPi * u, kLow_m + (kHigh_m - kLow_m) * e, -5.0 - 15.0 * e);
+    } else {
+        const double u = (s - 0.75) / 0.25;
+        constexpr double kYaw_deg = -22.0, kLength_m = 100.0;
+        const double yaw = glm::radians(kYaw_deg);
+        c.position_m = glm::dvec3(std::sin(yaw), 0.0, -std::cos(yaw)) * (kLength_m * u) + glm::dvec3(0.0, 2.0, 0.0);
+        c.yaw_deg = kYaw_deg;
+        c.pitch_deg = -1.0;
+    }
+    return c;
+}
+
+// Throws swell::Error naming `stage` when GL has recorded an error.
+void checkGl(const char* stage)
+{
+    const GLenum error = glGetError();
+    if (error == GL_NO_ERROR)
+        return;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    throw Error(fmt::format("swell bench: GL error 0x{:04x} while {}", error, stage));
+}
+
+bool softwareRasterizer(const std::string& glRenderer)
+{
+    return glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos;
+}
+
+} // namespace
+
+} // namespace bench
+
+int runBench(const BenchOptions& options)
+{
+    using namespace bench;
+    try {
+        if (options.frames < 1 || options.warmup < 0)
+            throw InputError({"--frames"}, "need at least one measured frame and no negative warm-up");
+        if (!options.jsonPath.empty()) {
+            // Found out now rather than after minutes of rendering.
+            const fs::path folder = fs::absolute(options.jsonPath).parent_path();
+            if (!fs::is_directory(folder) || ::access(folder.c_str(), W_OK) != 0)
+                throw InputError({"--json"}, fmt::format("cannot write '{}': '{}' is not a writable folder",
+                                                         options.jsonPath, folder.string()));
+        }
+        const Scene scene = defaultScene();
+        // No debug context: its checks would be part of what is measured. GL
+        // errors are polled after each stage instead.
+        gl::HeadlessContext context(false);
+        Renderer renderer(scene);
+        checkGl("creating the renderer");
+
+        Results r;
+        r.machine = describeMachine();
+        r.size = {options.width, options.height};
+        r.passSize = glm::max(glm::ivec2(glm::dvec2(r.size) * scene.reflection.resolutionScale), glm::ivec2(1));
+        r.waveCount = std::min<int>(int(renderer.waves().waves.size()), SWELL_MAX_WAVES);
+        r.gridCells = int(std::lround(std::sqrt(double(renderer.waterVertexCount())))) - 1;
+        r.frames = options.frames;
+        r.warmup = options.warmup;
+        r.frameStep_s = kFrameStep_s;
+        r.pipelineStatistics = epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query");
+        r.gpuTimers = !softwareRasterizer(r.machine.glRenderer);
+
+        const OffscreenTarget output = makeOffscreenTarget(r.size, GL_RGBA8);
+        PassRecorder recorder(r.pipelineStatistics, r.gpuTimers);
+        renderer.setPassObserver(&recorder);
+        checkGl("creating the benchmark's targets and queries");
+
+        const int floorWarmup = std::min(options.warmup, kFloorWarmup);
+        Progress progress("benchmarking", options.warmup + options.frames + floorWarmup + options.frames);
+        // The real frames: warm-up at the path's start, then the measured ones.
+        for (int i = 0; i < options.warmup + options.frames; ++i) {
+            const bool measured = i >= options.warmup;
+            const int k = i - options.warmup;
+            const double t = double(i) * kFrameStep_s;
+            const Camera camera = pathCamera(scene.camera, measured ? double(k) / double(options.frames) : 0.0);
+            FrameSample frame = recorder.recordFrame([&] { renderer.render(camera, t, r.size, output.framebuffer.id()); });
+            checkGl("rendering a frame");
+            if (measured) {
+                r.real.push_back(std::move(frame));
+                r.realTimes_s.push_back(t);
+                r.realCameras.push_back(camera);
+            }
+            progress.advance();
+        }
+        renderer.setPassObserver(nullptr);
+
+        // The floor: the same passes at the same sizes with trivial shading.
+        FloorFrame floorFrame(r.passSize, r.size);
+        for (int i = 0; i < floorWarmup + options.frames; ++i) {
+            FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder); });
+            checkGl("rendering the floor");
+            if (i >= floorWarmup)
+                r.floor.push_back(std::move(frame));
+            progress.advance();
+        }
+        progress.finish();
+
+        // The water grid's LOD at a few frames of the path, from the vertices
+        // the water shader produces for the same camera and time.
+        const int vertexCount = renderer.waterVertexCount();
+        gl::Buffer capture = gl::Buffer::create();
+        glNamedBufferStorage(capture.id(), GLsizeiptr(vertexCount) * 8 * GLsizeiptr(sizeof(float)), nullptr, 0);
+        std::vector<float> vertices(size_t(vertexCount) * 8);
+        std::vector<int> lodFrames;
+        for (const double s : kLodPathPoints) {
+            const int k = std::min(options.frames - 1, int(std::floor(s * options.frames)));
+            if (std::find(lodFrames.begin(), lodFrames.end(), k) == lodFrames.end())
+                lodFrames.push_back(k);
+        }
+        const double aspect = double(r.size.x) / double(r.size.y);
+        for (const int k : lodFrames) {
+            const Camera& camera = r.realCameras[size_t(k)];
+            const int count = renderer.captureWaterVertices(camera, r.realTimes_s[size_t(k)], capture.id());
+            glGetNamedBufferSubData(capture.id(), 0, GLsizeiptr(count) * 8 * GLsizeiptr(sizeof(float)), vertices.data());
+            checkGl("capturing the water's vertices");
+            const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
+            const glm::dmat4 viewProj = camera.projection(aspect) * camera.viewRelativeTo(origin);
+            LodSample lod = measureLod(vertices, count, viewProj, r.size);
+            lod.frame = k;
+            lod.camera = camera;
+            if (const PassSample* water = r.real[size_t(k)].find("water"); water && r.pipelineStatistics) {
+                lod.clipInput = water->counters.clippingInputPrimitives;
+                lod.clipOutput = water->counters.clippingOutputPrimitives;
+                if (lod.clipInput > 0)
+                    lod.clipShare = double(lod.clipOutput) / double(lod.clipInput);
+            }
+            r.lod.push_back(lod);
+        }
+
+        printReport(r);
+        if (!options.jsonPath.empty()) {
+            writeJson(r, options.jsonPath);
+            std::fprintf(stderr, "swell bench: results written to %s\n", options.jsonPath.c_str());
+        }
+        return kExitOk;
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "swell: error: %s\n", e.what());
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "swell: error: %s\n", e.what());
+        return kExitFailure;
+    }
+}
+
+} // namespace swell::app

@@ -1,0 +1,192 @@
+// `swell bench`: the parts of the GPU benchmark shared between its files.
+//   bench_command.cpp  the camera path and the run: real frames, floor, LOD
+//   bench_passes.cpp   per-pass wall and CPU time, GPU timers and pipeline
+//                      counters; the floor (the same passes, trivial shading)
+//   bench_lod.cpp      the water grid's triangles seen from the camera
+//   bench_report.cpp   the machine, the text table and the JSON file
+#pragma once
+
+#include "swell/camera.h"
+#include "swell/gl/handle.h"
+#include "swell/renderer.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace swell::app::bench {
+
+// What the driver counted during one pass (GL_ARB_pipeline_statistics_query
+// and GL_SAMPLES_PASSED). Exact and deterministic for a given frame.
+struct PassCounters {
+    std::uint64_t vertexShaderInvocations = 0;
+    std::uint64_t fragmentShaderInvocations = 0;
+    std::uint64_t primitivesSubmitted = 0;
+    std::uint64_t clippingInputPrimitives = 0;
+    std::uint64_t clippingOutputPrimitives = 0;
+    std::uint64_t samplesPassed = 0;
+    PassCounters& operator+=(const PassCounters& other);
+};
+
+// One pass of one frame. A pass that contains another ("main" holds
+// "water") includes the inner pass in its time and counters.
+struct PassSample {
+    std::string name;
+    double wall_ms = 0.0;          // steady clock between glFinish at begin and end
+    double cpu_ms = 0.0;           // process CPU time over the same span (all threads:
+                                   // a software rasteriser's workers included)
+    std::optional<double> gpu_ms;  // GL_TIME_ELAPSED, only on a real GPU
+    PassCounters counters;
+    int depth = 0;                 // 0 for a top-level pass, 1 inside another
+    std::string parent;            // the pass this one is inside, or empty
+};
+
+struct FrameSample {
+    double wall_ms = 0.0;          // the whole frame, glFinish before and after
+    double cpu_ms = 0.0;           // process CPU time over the same span
+    std::vector<PassSample> passes; // in the order they began
+    const PassSample* find(const std::string& name) const;
+};
+
+// Records each pass of the frames rendered while it observes: glFinish at
+// begin and end around a steady clock and the process CPU time clock (which,
+// on a machine shared with other work, varies much less than wall time when
+// the GPU is a software rasteriser), and, when available, pipeline
+// statistics, samples passed and GPU time. GL queries of one kind cannot
+// nest, so an outer pass's queries are paused while an inner pass runs and
+// the inner results are added to the outer pass afterwards.
+class PassRecorder : public PassObserver {
+public:
+    // pipelineStatistics: the context has GL_ARB_pipeline_statistics_query.
+    // gpuTimers: record GL_TIME_ELAPSED (meaningless on software rasterisers).
+    PassRecorder(bool pipelineStatistics, bool gpuTimers);
+    ~PassRecorder() override;
+    PassRecorder(const PassRecorder&) = delete;
+    PassRecorder& operator=(const PassRecorder&) = delete;
+
+    // Brackets one frame; `draw` renders it (and tells this recorder its passes).
+    template <class Draw>
+    FrameSample recordFrame(Draw&& draw)
+    {
+        beginFrame();
+        draw();
+        return endFrame();
+    }
+
+    void beginPass(const char* name) override;
+    void endPass(const char* name) override;
+
+private:
+    struct Queries;
+    struct Open {
+        size_t index;   // into frame_.passes
+        std::chrono::steady_clock::time_point start;
+        double cpuStart_ms;
+    };
+    void beginFrame();
+    FrameSample endFrame();
+    void startQueries();
+    // Ends the running queries and adds their results to frame_.passes[index].
+    void stopQueries(size_t index);
+
+    std::unique_ptr<Queries> queries_;
+    std::vector<Open> open_;
+    FrameSample frame_;
+    std::chrono::steady_clock::time_point frameStart_;
+    double frameCpuStart_ms_ = 0.0;
+};
+
+// A colour + depth framebuffer, formats as the renderer's: GL_RGBA16F for its
+// reflection and refraction images, GL_RGBA8 for the output, 32-bit float depth.
+struct OffscreenTarget {
+    glm::ivec2 size{0};
+    gl::Texture color, depth;
+    gl::Framebuffer framebuffer;
+};
+// Throws swell::Error when the framebuffer is incomplete.
+OffscreenTarget makeOffscreenTarget(glm::ivec2 size, GLenum colorFormat);
+
+// The floor: for each pass of the real frame, a target of the same size
+// cleared and covered by one full-screen triangle with a constant colour;
+// "water" is one more such triangle inside "main". What a frame costs at
+// the least on this machine at this size, shading aside.
+class FloorFrame {
+public:
+    // Sizes: the reflection and refraction targets, and the output.
+    FloorFrame(glm::ivec2 passSize, glm::ivec2 outputSize);
+    ~FloorFrame();
+    FloorFrame(const FloorFrame&) = delete;
+    FloorFrame& operator=(const FloorFrame&) = delete;
+    void render(PassObserver& observer);
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+// The water grid seen from one camera: how many of its triangles reach the
+// view frustum, and how large those are on screen.
+struct LodSample {
+    int frame = 0;                  // measured frame index on the path
+    Camera camera;
+    long long triangles = 0;        // submitted (the whole grid)
+    long long inFrustum = 0;        // at least partly inside the view frustum
+    double inFrustumShare = 0.0;    // inFrustum / triangles
+    // The water pass's clipper: output / input primitives of the same frame.
+    std::optional<double> clipShare;
+    std::uint64_t clipInput = 0, clipOutput = 0;
+    // Projected area of the in-frustum triangles, px² (the part behind the
+    // near plane cut away; the part outside the screen counted).
+    double areaP10_px2 = 0.0, areaMedian_px2 = 0.0, areaP90_px2 = 0.0;
+    double edgeMedian_px = 0.0;     // longest projected edge, median, px
+    double subPixelShare = 0.0;     // share of in-frustum triangles under 1 px²
+};
+
+// vertices: captureWaterVertices() output, 8 floats per vertex (restPoint.xz,
+// position xyz, normal xyz, relative to the render origin) on a (cells+1)²
+// grid. viewProj: the renderer's, relative to the same origin.
+LodSample measureLod(const std::vector<float>& vertices, int vertexCount, const glm::dmat4& viewProj, glm::ivec2 size);
+
+// median, p95 (nearest rank) and maximum of a series.
+struct Summary {
+    double median = 0.0, p95 = 0.0, max = 0.0;
+};
+Summary summarize(std::vector<double> values);
+// Nearest-rank percentile q (0..1) of values, which it reorders.
+double percentile(std::vector<double>& values, double q);
+// The middle value (the mean of the two middle ones for an even count); 0 when empty.
+double median(std::vector<double>& values);
+
+// Everything one run found, for the table and the JSON file.
+struct Machine {
+    std::string cpu;       // "model name" of /proc/cpuinfo
+    int cores = 0;
+    std::string glRenderer, glVersion;
+    std::string commit;    // short hash of the source tree, or "unknown"
+};
+Machine describeMachine();
+
+struct Results {
+    Machine machine;
+    glm::ivec2 size{0}, passSize{0};
+    int waveCount = 0, gridCells = 0, frames = 0, warmup = 0;
+    double frameStep_s = 0.0;
+    bool pipelineStatistics = false, gpuTimers = false;
+    std::vector<FrameSample> real, floor;
+    std::vector<double> realTimes_s;     // simulation time of each measured frame
+    std::vector<Camera> realCameras;     // camera of each measured frame
+    std::vector<LodSample> lod;
+};
+
+void printReport(const Results& results);
+// Throws swell::Error when the file cannot be written.
+void writeJson(const Results& results, const std::string& path);
+
+} // namespace swell::app::bench

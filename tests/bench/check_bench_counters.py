@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Runs `swell bench` twice on a small frame and checks that it succeeds and
+that everything it counts is identical between the runs: the pipeline
+statistics and samples passed of every pass of every measured frame, their
+totals (real and floor), and the water LOD figures. Timings vary and are only
+checked for being there.
+
+Usage: check_bench_counters.py SWELL_EXECUTABLE OUTPUT_DIR
+"""
+import json
+import os
+import subprocess
+import sys
+
+ARGS = ["bench", "--size", "160x90", "--frames", "3", "--warmup", "1"]
+
+
+def run(swell, json_path):
+    command = [swell, *ARGS, "--json", json_path]
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(command)} exited {result.returncode}\n{result.stdout}\n{result.stderr}")
+    if "Time per pass" not in result.stdout or "Goals" not in result.stdout:
+        sys.exit(f"FAIL: no table on stdout:\n{result.stdout}")
+    with open(json_path, encoding="utf-8") as f:
+        return json.load(f)
+
+
+def deterministic(results):
+    """The parts of a result file that must not change from run to run."""
+    return {
+        "size": results["size"],
+        "pass_size": results["pass_size"],
+        "wave_count": results["wave_count"],
+        "grid_cells": results["grid_cells"],
+        "frames": results["frames"],
+        "totals": {name: (p["counters_total"], p["floor_counters_total"]) for name, p in results["passes"].items()},
+        "measured_frames": [
+            {
+                "time_s": f["time_s"],
+                "camera": f["camera"],
+                "counters": {name: p["counters"] for name, p in f["passes"].items()},
+            }
+            for f in results["measured_frames"]
+        ],
+        "lod": results["lod"],
+    }
+
+
+def differences(a, b, path=""):
+    if isinstance(a, dict) and isinstance(b, dict):
+        for key in sorted(set(a) | set(b)):
+            if key not in a or key not in b:
+                yield f"{path}/{key}: only in run {'2' if key not in a else '1'}"
+            else:
+                yield from differences(a[key], b[key], f"{path}/{key}")
+    elif isinstance(a, list) and isinstance(b, list) and len(a) == len(b):
+        for i, (x, y) in enumerate(zip(a, b)):
+            yield from differences(x, y, f"{path}[{i}]")
+    elif a != b:
+        yield f"{path}: {a!r} != {b!r}"
+
+
+def main():
+    swell, out_dir = sys.argv[1], sys.argv[2]
+    os.makedirs(out_dir, exist_ok=True)
+    first = run(swell, os.path.join(out_dir, "bench_run1.json"))
+    second = run(swell, os.path.join(out_dir, "bench_run2.json"))
+
+    problems = list(differences(deterministic(first), deterministic(second)))
+
+    # The counters mean what they say.
+    passes = first["passes"]
+    for name in ("reflection", "refraction", "main", "water"):
+        if name not in passes:
+            problems.append(f"pass '{name}' missing")
+    if "water" in passes and "main" in passes:
+        water, main_pass = passes["water"]["counters_total"], passes["main"]["counters_total"]
+        if main_pass["samples_passed"] <= 0:
+            problems.append("main pass passed no samples")
+        if first["pipeline_statistics"]:
+            triangles = 2 * first["grid_cells"] ** 2
+            if water["primitives_submitted"] != first["frames"] * triangles:
+                problems.append(f"water primitives submitted {water['primitives_submitted']}, "
+                                f"expected {first['frames']} frames x {triangles} triangles")
+            for key, value in water.items():
+                if value > main_pass[key]:
+                    problems.append(f"water {key} {value} exceeds main's {main_pass[key]}, which includes it")
+    for lod in first["lod"]:
+        if lod["triangles"] != 2 * first["grid_cells"] ** 2 or not 0.0 <= lod["in_frustum_share"] <= 1.0:
+            problems.append(f"implausible LOD sample {lod}")
+    for name, p in passes.items():
+        if not p["wall_ms"]["median"] > 0.0 or not p["floor_wall_ms"]["median"] > 0.0:
+            problems.append(f"pass '{name}' has no wall time")
+
+    if problems:
+        print("FAIL:\n  " + "\n  ".join(problems))
+        return 1
+    print(f"OK: {len(first['measured_frames'])} frames, counters identical in two runs")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
