@@ -112,115 +112,107 @@ bool softwareRasterizer(const std::string& glRenderer)
 int runBench(const BenchOptions& options)
 {
     using namespace bench;
-    try {
-        if (options.frames < 1 || options.warmup < 0)
-            throw InputError({"--frames"}, "need at least one measured frame and no negative warm-up");
-        if (!options.jsonPath.empty()) {
-            // Found out now rather than after minutes of rendering.
-            const fs::path folder = fs::absolute(options.jsonPath).parent_path();
-            if (!fs::is_directory(folder) || ::access(folder.c_str(), W_OK) != 0)
-                throw InputError({"--json"}, fmt::format("cannot write '{}': '{}' is not a writable folder",
-                                                         options.jsonPath, folder.string()));
-        }
-        const Scene scene = defaultScene();
-        // No debug context: its checks would be part of what is measured. GL
-        // errors are polled after each stage instead.
-        gl::HeadlessContext context(false);
-        Renderer renderer(scene);
-        checkGl("creating the renderer");
-
-        Results r;
-        r.machine = describeMachine();
-        r.size = {options.width, options.height};
-        r.passSize = glm::max(glm::ivec2(glm::dvec2(r.size) * scene.reflection.resolutionScale), glm::ivec2(1));
-        r.waveCount = std::min<int>(int(renderer.waves().waves.size()), SWELL_MAX_WAVES);
-        r.gridCells = int(std::lround(std::sqrt(double(renderer.waterVertexCount())))) - 1;
-        r.frames = options.frames;
-        r.warmup = options.warmup;
-        r.frameStep_s = kFrameStep_s;
-        r.pipelineStatistics = epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query");
-        r.gpuTimers = !softwareRasterizer(r.machine.glRenderer);
-
-        const OffscreenTarget output = makeOffscreenTarget(r.size, GL_RGBA8);
-        PassRecorder recorder(r.pipelineStatistics, r.gpuTimers);
-        renderer.setPassObserver(&recorder);
-        checkGl("creating the benchmark's targets and queries");
-
-        const int floorWarmup = std::min(options.warmup, kFloorWarmup);
-        Progress progress("benchmarking", options.warmup + options.frames + floorWarmup + options.frames);
-        // The real frames: warm-up at the path's start, then the measured ones.
-        for (int i = 0; i < options.warmup + options.frames; ++i) {
-            const bool measured = i >= options.warmup;
-            const int k = i - options.warmup;
-            const double t = double(i) * kFrameStep_s;
-            const Camera camera = pathCamera(scene.camera, measured ? double(k) / double(options.frames) : 0.0);
-            FrameSample frame = recorder.recordFrame([&] { renderer.render(camera, t, r.size, output.framebuffer.id()); });
-            checkGl("rendering a frame");
-            if (measured) {
-                r.real.push_back(std::move(frame));
-                r.realTimes_s.push_back(t);
-                r.realCameras.push_back(camera);
-            }
-            progress.advance();
-        }
-        renderer.setPassObserver(nullptr);
-
-        // The floor: the same passes at the same sizes with trivial shading.
-        FloorFrame floorFrame(r.passSize, r.size);
-        for (int i = 0; i < floorWarmup + options.frames; ++i) {
-            FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder); });
-            checkGl("rendering the floor");
-            if (i >= floorWarmup)
-                r.floor.push_back(std::move(frame));
-            progress.advance();
-        }
-        progress.finish();
-
-        // The water grid's LOD at a few frames of the path, from the vertices
-        // the water shader produces for the same camera and time.
-        const int vertexCount = renderer.waterVertexCount();
-        gl::Buffer capture = gl::Buffer::create();
-        glNamedBufferStorage(capture.id(), GLsizeiptr(vertexCount) * 8 * GLsizeiptr(sizeof(float)), nullptr, 0);
-        std::vector<float> vertices(size_t(vertexCount) * 8);
-        std::vector<int> lodFrames;
-        for (const double s : kLodPathPoints) {
-            const int k = std::min(options.frames - 1, int(std::floor(s * options.frames)));
-            if (std::find(lodFrames.begin(), lodFrames.end(), k) == lodFrames.end())
-                lodFrames.push_back(k);
-        }
-        const double aspect = double(r.size.x) / double(r.size.y);
-        for (const int k : lodFrames) {
-            const Camera& camera = r.realCameras[size_t(k)];
-            const int count = renderer.captureWaterVertices(camera, r.realTimes_s[size_t(k)], capture.id());
-            glGetNamedBufferSubData(capture.id(), 0, GLsizeiptr(count) * 8 * GLsizeiptr(sizeof(float)), vertices.data());
-            checkGl("capturing the water's vertices");
-            const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
-            const glm::dmat4 viewProj = camera.projection(aspect) * camera.viewRelativeTo(origin);
-            LodSample lod = measureLod(vertices, count, viewProj, r.size);
-            lod.frame = k;
-            lod.camera = camera;
-            if (const PassSample* water = r.real[size_t(k)].find("water"); water && r.pipelineStatistics) {
-                lod.clipInput = water->counters.clippingInputPrimitives;
-                lod.clipOutput = water->counters.clippingOutputPrimitives;
-                if (lod.clipInput > 0)
-                    lod.clipShare = double(lod.clipOutput) / double(lod.clipInput);
-            }
-            r.lod.push_back(lod);
-        }
-
-        printReport(r);
-        if (!options.jsonPath.empty()) {
-            writeJson(r, options.jsonPath);
-            std::fprintf(stderr, "swell bench: results written to %s\n", options.jsonPath.c_str());
-        }
-        return kExitOk;
-    } catch (const InputError& e) {
-        std::fprintf(stderr, "swell: error: %s\n", e.what());
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "swell: error: %s\n", e.what());
-        return kExitFailure;
+    if (options.frames < 1 || options.warmup < 0)
+        throw InputError({"--frames"}, "need at least one measured frame and no negative warm-up");
+    if (!options.jsonPath.empty()) {
+        // Found out now rather than after minutes of rendering.
+        const fs::path folder = fs::absolute(options.jsonPath).parent_path();
+        if (!fs::is_directory(folder) || ::access(folder.c_str(), W_OK) != 0)
+            throw InputError({"--json"}, fmt::format("cannot write '{}': '{}' is not a writable folder",
+                                                     options.jsonPath, folder.string()));
     }
+    const Scene scene = defaultScene();
+    // No debug context: its checks would be part of what is measured. GL
+    // errors are polled after each stage instead.
+    gl::HeadlessContext context(false);
+    Renderer renderer(scene);
+    checkGl("creating the renderer");
+
+    Results r;
+    r.machine = describeMachine();
+    r.size = {options.width, options.height};
+    r.passSize = glm::max(glm::ivec2(glm::dvec2(r.size) * scene.reflection.resolutionScale), glm::ivec2(1));
+    r.waveCount = std::min<int>(int(renderer.waves().waves.size()), SWELL_MAX_WAVES);
+    r.gridCells = int(std::lround(std::sqrt(double(renderer.waterVertexCount())))) - 1;
+    r.frames = options.frames;
+    r.warmup = options.warmup;
+    r.frameStep_s = kFrameStep_s;
+    r.pipelineStatistics = epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query");
+    r.gpuTimers = !softwareRasterizer(r.machine.glRenderer);
+
+    const OffscreenTarget output = makeOffscreenTarget(r.size, GL_RGBA8);
+    PassRecorder recorder(r.pipelineStatistics, r.gpuTimers);
+    renderer.setPassObserver(&recorder);
+    checkGl("creating the benchmark's targets and queries");
+
+    const int floorWarmup = std::min(options.warmup, kFloorWarmup);
+    Progress progress("benchmarking", options.warmup + options.frames + floorWarmup + options.frames);
+    // The real frames: warm-up at the path's start, then the measured ones.
+    for (int i = 0; i < options.warmup + options.frames; ++i) {
+        const bool measured = i >= options.warmup;
+        const int k = i - options.warmup;
+        const double t = double(i) * kFrameStep_s;
+        const Camera camera = pathCamera(scene.camera, measured ? double(k) / double(options.frames) : 0.0);
+        FrameSample frame = recorder.recordFrame([&] { renderer.render(camera, t, r.size, output.framebuffer.id()); });
+        checkGl("rendering a frame");
+        if (measured) {
+            r.real.push_back(std::move(frame));
+            r.realTimes_s.push_back(t);
+            r.realCameras.push_back(camera);
+        }
+        progress.advance();
+    }
+    renderer.setPassObserver(nullptr);
+
+    // The floor: the same passes at the same sizes with trivial shading.
+    FloorFrame floorFrame(r.passSize, r.size);
+    for (int i = 0; i < floorWarmup + options.frames; ++i) {
+        FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder); });
+        checkGl("rendering the floor");
+        if (i >= floorWarmup)
+            r.floor.push_back(std::move(frame));
+        progress.advance();
+    }
+    progress.finish();
+
+    // The water grid's LOD at a few frames of the path, from the vertices
+    // the water shader produces for the same camera and time.
+    const int vertexCount = renderer.waterVertexCount();
+    gl::Buffer capture = gl::Buffer::create();
+    glNamedBufferStorage(capture.id(), GLsizeiptr(vertexCount) * 8 * GLsizeiptr(sizeof(float)), nullptr, 0);
+    std::vector<float> vertices(size_t(vertexCount) * 8);
+    std::vector<int> lodFrames;
+    for (const double s : kLodPathPoints) {
+        const int k = std::min(options.frames - 1, int(std::floor(s * options.frames)));
+        if (std::find(lodFrames.begin(), lodFrames.end(), k) == lodFrames.end())
+            lodFrames.push_back(k);
+    }
+    const double aspect = double(r.size.x) / double(r.size.y);
+    for (const int k : lodFrames) {
+        const Camera& camera = r.realCameras[size_t(k)];
+        const int count = renderer.captureWaterVertices(camera, r.realTimes_s[size_t(k)], capture.id());
+        glGetNamedBufferSubData(capture.id(), 0, GLsizeiptr(count) * 8 * GLsizeiptr(sizeof(float)), vertices.data());
+        checkGl("capturing the water's vertices");
+        const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
+        const glm::dmat4 viewProj = camera.projection(aspect) * camera.viewRelativeTo(origin);
+        LodSample lod = measureLod(vertices, count, viewProj, r.size);
+        lod.frame = k;
+        lod.camera = camera;
+        if (const PassSample* water = r.real[size_t(k)].find("water"); water && r.pipelineStatistics) {
+            lod.clipInput = water->counters.clippingInputPrimitives;
+            lod.clipOutput = water->counters.clippingOutputPrimitives;
+            if (lod.clipInput > 0)
+                lod.clipShare = double(lod.clipOutput) / double(lod.clipInput);
+        }
+        r.lod.push_back(lod);
+    }
+
+    printReport(r);
+    if (!options.jsonPath.empty()) {
+        writeJson(r, options.jsonPath);
+        std::fprintf(stderr, "swell bench: results written to %s\n", options.jsonPath.c_str());
+    }
+    return kExitOk;
 }
 
 } // namespace swell::app

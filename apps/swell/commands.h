@@ -1,5 +1,6 @@
-// The subcommands of the swell executable. Each returns a process exit code
-// (swell::kExitOk, kExitBadInput, kExitFailure) and throws nothing.
+// The subcommands of the swell executable. Each returns a process exit code;
+// bad input throws swell::InputError and other failures std::exception, which
+// main() turns into kExitBadInput and kExitFailure with one message format.
 #pragma once
 
 #include <optional>

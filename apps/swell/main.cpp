@@ -85,6 +85,17 @@ int main(int argc, char** argv)
 
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return swell::kExitBadInput;
+    }
+    try {
         if (*viewCommand) {
             parseSize(viewSize, view.width, view.height);
             return swell::app::runView(view);
@@ -99,19 +110,19 @@ int main(int argc, char** argv)
             parseSize(benchSize, bench.width, bench.height);
             return swell::app::runBench(bench);
         }
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
+        // No subcommand: the main job.
+        if (swell::app::displayAvailable())
+            return swell::app::runView(view);
+        render.output = "swell-default.png";
+        return swell::app::runRender(render);
+    } catch (const CLI::ParseError& e) { // parseSize's checks
         app.exit(e);
         return swell::kExitBadInput;
+    } catch (const swell::InputError& e) {
+        std::fprintf(stderr, "swell: error: %s\n", e.what());
+        return swell::kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "swell: error: %s\n", e.what());
+        return swell::kExitFailure;
     }
-    // No subcommand: the main job.
-    if (swell::app::displayAvailable())
-        return swell::app::runView(view);
-    render.output = "swell-default.png";
-    return swell::app::runRender(render);
 }

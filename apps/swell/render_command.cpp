@@ -85,59 +85,51 @@ private:
 
 int runRender(const RenderOptions& options)
 {
-    try {
-        const fs::path output = options.output;
-        const std::string extension = output.extension().string();
-        if (extension != ".png" && extension != ".mp4")
-            throw InputError({"--output"}, fmt::format("'{}': the output must end in .png or .mp4", options.output));
-        const bool video = extension == ".mp4";
-        if (video && !options.duration_s)
-            throw InputError({"--output"}, "an .mp4 output needs --duration SECONDS");
-        if (video && !programOnPath("ffmpeg"))
-            throw InputError({"--output"}, "writing .mp4 needs the ffmpeg program, which is not installed "
-                                           "(apt-get install ffmpeg), or write a PNG sequence instead");
-        if (output.has_parent_path())
-            fs::create_directories(output.parent_path());
+    const fs::path output = options.output;
+    const std::string extension = output.extension().string();
+    if (extension != ".png" && extension != ".mp4")
+        throw InputError({"--output"}, fmt::format("'{}': the output must end in .png or .mp4", options.output));
+    const bool video = extension == ".mp4";
+    if (video && !options.duration_s)
+        throw InputError({"--output"}, "an .mp4 output needs --duration SECONDS");
+    if (video && !programOnPath("ffmpeg"))
+        throw InputError({"--output"}, "writing .mp4 needs the ffmpeg program, which is not installed "
+                                       "(apt-get install ffmpeg), or write a PNG sequence instead");
+    if (output.has_parent_path())
+        fs::create_directories(output.parent_path());
 
-        const Scene scene = loadSceneOrDefault(options.scenePath);
-        gl::HeadlessContext context(true);
-        gl::DebugHandler debug = gl::logOnceDebugHandler();
-        gl::installDebugHandler(&debug);
-        Renderer renderer(scene);
-        const glm::ivec2 size(options.width, options.height);
+    const Scene scene = loadSceneOrDefault(options.scenePath);
+    gl::HeadlessContext context(true);
+    gl::DebugHandler debug = gl::logOnceDebugHandler();
+    gl::installDebugHandler(&debug);
+    Renderer renderer(scene);
+    const glm::ivec2 size(options.width, options.height);
 
-        const int frames = options.duration_s ? std::max(1, int(std::lround(*options.duration_s * options.fps))) : 1;
-        std::unique_ptr<VideoWriter> videoWriter;
+    const int frames = options.duration_s ? std::max(1, int(std::lround(*options.duration_s * options.fps))) : 1;
+    std::unique_ptr<VideoWriter> videoWriter;
+    if (video)
+        videoWriter = std::make_unique<VideoWriter>(output, options.width, options.height, options.fps);
+    Progress progress("rendering", frames);
+    for (int i = 0; i < frames; ++i) {
+        const double t = options.time_s + double(i) / options.fps;
+        const Image image = renderer.renderImage(cameraAt(scene.camera, t), t, size);
         if (video)
-            videoWriter = std::make_unique<VideoWriter>(output, options.width, options.height, options.fps);
-        Progress progress("rendering", frames);
-        for (int i = 0; i < frames; ++i) {
-            const double t = options.time_s + double(i) / options.fps;
-            const Image image = renderer.renderImage(cameraAt(scene.camera, t), t, size);
-            if (video)
-                videoWriter->write(image);
-            else
-                writePng(image, options.duration_s ? sequencePath(output, i) : output);
-            progress.advance();
-        }
-        if (videoWriter)
-            videoWriter->finish();
-        progress.finish();
-        if (frames == 1 && !video)
-            std::printf("%s\n", fs::absolute(output).c_str());
-        else if (video)
-            std::printf("%s\n", fs::absolute(output).c_str());
+            videoWriter->write(image);
         else
-            std::printf("%s .. %s\n", fs::absolute(sequencePath(output, 0)).c_str(),
-                        fs::absolute(sequencePath(output, frames - 1)).c_str());
-        return kExitOk;
-    } catch (const InputError& e) {
-        std::fprintf(stderr, "swell: error: %s\n", e.what());
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "swell: error: %s\n", e.what());
-        return kExitFailure;
+            writePng(image, options.duration_s ? sequencePath(output, i) : output);
+        progress.advance();
     }
+    if (videoWriter)
+        videoWriter->finish();
+    progress.finish();
+    if (frames == 1 && !video)
+        std::printf("%s\n", fs::absolute(output).c_str());
+    else if (video)
+        std::printf("%s\n", fs::absolute(output).c_str());
+    else
+        std::printf("%s .. %s\n", fs::absolute(sequencePath(output, 0)).c_str(),
+                    fs::absolute(sequencePath(output, frames - 1)).c_str());
+    return kExitOk;
 }
 
 } // namespace swell::app

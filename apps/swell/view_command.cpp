@@ -13,15 +13,7 @@ namespace swell::app {
 
 int runView(const ViewOptions& options)
 {
-    try {
-        return viewer::run(options);
-    } catch (const InputError& e) {
-        std::fprintf(stderr, "swell: error: %s\n", e.what());
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "swell: error: %s\n", e.what());
-        return kExitFailure;
-    }
+    return viewer::run(options);
 }
 
 bool displayAvailable() { return viewer::displayUsable(); }
