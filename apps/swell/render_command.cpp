@@ -122,13 +122,11 @@ int runRender(const RenderOptions& options)
     if (videoWriter)
         videoWriter->finish();
     progress.finish();
-    if (frames == 1 && !video)
-        std::printf("%s\n", fs::absolute(output).c_str());
-    else if (video)
-        std::printf("%s\n", fs::absolute(output).c_str());
-    else
+    if (options.duration_s && !video)
         std::printf("%s .. %s\n", fs::absolute(sequencePath(output, 0)).c_str(),
                     fs::absolute(sequencePath(output, frames - 1)).c_str());
+    else
+        std::printf("%s\n", fs::absolute(output).c_str());
     return kExitOk;
 }
 

@@ -82,11 +82,12 @@ struct Renderer::Impl {
 
     explicit Impl(RendererOptions options) : sources(std::move(options.shaders)) {}
 
-    Programs buildPrograms() const
+    // The programs for a scene's variant: its debug view and sky kind.
+    Programs buildPrograms(const Scene& variant) const
     {
         const std::vector<std::string> defines{
-            "SWELL_DEBUG_VIEW " + std::to_string(debugViewDefine(scene.debugView)),
-            std::string("SWELL_SKY_CUBEMAP ") + (scene.sky.cubemapFaces.empty() ? "0" : "1")};
+            "SWELL_DEBUG_VIEW " + std::to_string(debugViewDefine(variant.debugView)),
+            std::string("SWELL_SKY_CUBEMAP ") + (variant.sky.cubemapFaces.empty() ? "0" : "1")};
         Programs p;
         p.water = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}, {GL_FRAGMENT_SHADER, "water.frag"}}, defines);
         p.sky = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}, defines);
@@ -163,8 +164,10 @@ struct Renderer::Impl {
         const int count = std::min<int>(int(waves.waves.size()), SWELL_MAX_WAVES);
         for (int i = 0; i < count; ++i) {
             const Wave& w = waves.waves[size_t(i)];
-            const glm::dvec2 d = glm::normalize(w.direction);
-            const double k = 2.0 * glm::pi<double>() / w.wavelength_m;
+            // Exactly the k*d the CPU wave functions use.
+            const glm::dvec2 kd = wavenumberVector(w);
+            const double k = glm::length(kd);
+            const glm::dvec2 d = kd / k;
             u.waveShape[i] = glm::vec4(glm::dvec4(d.x, d.y, k, w.amplitude_m));
             u.wavePhase[i] = glm::vec4(glm::dvec4(w.steepness, wrappedPhase(w, waves.depth_m, grid.center_m, time_s),
                                                   w.wavelength_m, 0.0));
@@ -210,6 +213,16 @@ struct Renderer::Impl {
         return f;
     }
 
+    // Per-frame setup shared by drawing and capture: the render origin is the
+    // camera's x,z; waves are phased at the snapped grid centre.
+    FrameUniforms prepareFrame(const Camera& camera, double time_s, glm::ivec2 size, glm::dvec3& origin)
+    {
+        origin = glm::dvec3(camera.position_m.x, 0.0, camera.position_m.z);
+        const GridPlacement grid = placeGrid(gridShape, {camera.position_m.x, camera.position_m.z});
+        uploadWaves(grid, time_s);
+        return frameUniforms(camera, grid, origin, size);
+    }
+
     void bindFrame(Pass pass, const FrameUniforms& f)
     {
         glNamedBufferSubData(frameUbo[pass].id(), 0, sizeof(f), &f);
@@ -221,9 +234,10 @@ struct Renderer::Impl {
         glm::dvec3 position = o.position_m;
         glm::dmat4 tilt(1.0);
         if (o.floats) {
-            const glm::dvec2 xz(o.position_m.x, o.position_m.z);
-            position.y += heightAt(waves, xz, time_s);
-            const glm::dvec3 n = normalAt(waves, restPointUnder(waves, xz, time_s), time_s);
+            // One inverse solve serves both the height and the tilt.
+            const glm::dvec2 rest = restPointUnder(waves, {o.position_m.x, o.position_m.z}, time_s);
+            position.y += displacementAt(waves, rest, time_s).y;
+            const glm::dvec3 n = normalAt(waves, rest, time_s);
             // A body larger than the short waves does not follow every ripple:
             // tilt half way towards the surface normal.
             const glm::dvec3 up = glm::normalize(glm::mix(glm::dvec3(0, 1, 0), n, 0.5));
@@ -309,10 +323,8 @@ struct Renderer::Impl {
         counters = {};
         if (size.x <= 0 || size.y <= 0)
             return;
-        const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
-        const GridPlacement grid = placeGrid(gridShape, {camera.position_m.x, camera.position_m.z});
-        uploadWaves(grid, time_s);
-        const FrameUniforms base = frameUniforms(camera, grid, origin, size);
+        glm::dvec3 origin;
+        const FrameUniforms base = prepareFrame(camera, time_s, size, origin);
         const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
         reflection.resize(scaled);
         refraction.resize(scaled);
@@ -398,16 +410,8 @@ void Renderer::setScene(const Scene& scene)
         throw InputError({}, "waves: " + problem);
     // Everything that can fail is built first; the renderer changes only when all succeeded.
     Programs programs;
-    if (programsChanged) {
-        const Scene previous = std::exchange(s.scene, scene);
-        try {
-            programs = s.buildPrograms();
-        } catch (...) {
-            s.scene = previous;
-            throw;
-        }
-        s.scene = previous;
-    }
+    if (programsChanged)
+        programs = s.buildPrograms(scene);
     World world;
     if (worldChanged)
         world = Impl::buildWorld(scene);
@@ -429,7 +433,7 @@ void Renderer::setPassObserver(PassObserver* observer) { impl_->observer = obser
 void Renderer::reloadShaders()
 {
     impl_->sources.forgetCachedFiles();
-    impl_->programs = impl_->buildPrograms();
+    impl_->programs = impl_->buildPrograms(impl_->scene);
 }
 
 void Renderer::render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer)
@@ -461,10 +465,8 @@ int Renderer::waterVertexCount() const { return (impl_->gridShape.cells + 1) * (
 int Renderer::captureWaterVertices(const Camera& camera, double time_s, unsigned buffer)
 {
     Impl& s = *impl_;
-    const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
-    const GridPlacement grid = placeGrid(s.gridShape, {camera.position_m.x, camera.position_m.z});
-    s.uploadWaves(grid, time_s);
-    s.bindFrame(PassMain, s.frameUniforms(camera, grid, origin, {640, 480}));
+    glm::dvec3 origin;
+    s.bindFrame(PassMain, s.prepareFrame(camera, time_s, {640, 480}, origin));
     // Drawing needs a complete framebuffer even with rasterisation discarded
     // (a headless context has no default one).
     if (s.output.size().x == 0)
