@@ -22,10 +22,11 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     vec4 waterDeep;         // rgb: scattering colour of deep water
     vec4 waterAbsorption;   // rgb: Beer-Lambert coefficient, 1/m
     vec4 waterOptics;       // x: Fresnel F0, y: shininess, z: specular strength, w: refraction distortion
-    vec4 gridShape;         // x: radius, m; y: cells per side; z: distance of the outer skirt, m; w: finest snap step, m
+    vec4 gridShape;         // x: radius, m; y: cells per side; z: distance of the outer skirt, m; w: finest snap step (scaled), m
     vec4 gridFade;          // x: fade start, y: fade end, m
     vec4 gridCenter;        // xz: grid centre relative to the render origin, m
-    vec4 snapOffsets[SWELL_GRID_LEVELS]; // xy: grid centre (absolute) modulo each level's snap step, m
+    vec4 gridLayout;        // x: 0 geometric, 1 paper; y: inner scale r0 times the scale, m; z: growth k; w: scale
+    vec4 snapOffsets[SWELL_GRID_LEVELS]; // xy: grid centre (absolute) modulo each level's snap step, m; z: first ring of the level (geometric)
     vec4 reflectionParams;  // x: fixed distance, m; y: clip offset, m; z: mode (0 fixed, 1 ray march)
     vec4 viewport;          // xy: size in pixels, zw: 1 / size
     vec4 passFlags;         // x: 1 when this pass writes display colours (sRGB), 0 for linear targets

@@ -1,23 +1,62 @@
-// The paper's camera-following LOD grid, generated from the vertex index.
+// The camera-following LOD grid, generated from the vertex index.
 //
-// Grid line i of n (i = 0..n) sits at offset s(i) from the grid centre:
+// Grid line i of n (i = 0..n) sits at offset s(i) from the grid centre, with
+// u = (i - n/2) / (n/2) in -1..1. Two layouts (gridLayout.x):
 //
-//     u    = (i - n/2) / (n/2)             in -1..1
-//     s(i) = radius * u * |u|               the paper's p = 1/2 + (2/n^2)|i - n/2|(i - n/2), scaled
+// paper (1): the paper's quadratic division points, p = 1/2 + (2/n^2)|i - n/2|(i - n/2), scaled:
+//
+//     s(i) = radius * u * |u|                    spacing grows with sqrt(distance)
 //
 //     -R                 0                 +R
-//     |    |   |  | | ||||||| | |  |   |    |     spacing grows linearly with distance
+//     |    |   |  | | ||||||| | |  |   |    |
 //
-// Lines 0 and n are moved out to a skirt far beyond the fog, so the water has
-// no edge. To keep the surface from swimming as the camera moves, the centre
-// snaps to the finest step and each line snaps to a world-fixed lattice whose
-// step is the largest power-of-two multiple of the finest step not above the
-// line's own spacing: a vertex only ever sits on world-fixed points of its level.
+// Its lines run the whole grid, so the fine lines near the centre make slivers
+// far out. geometric (0, the default) uses concentric square rings instead:
+// ring r = max(|i - n/2|, |j - n/2|) lies at Chebyshev radius
+//
+//     f(r) = scale * r0 * (exp(k * r / (n/2)) - 1),   k = ln(1 + radius / r0)
+//
+// with its vertices evenly along each side (vertex (i, j) at (i - n/2, j - n/2) * f(r) / r):
+//
+//     +-------------------------------+     spacing about even within r0 of
+//     |   +-----------------------+   |     the centre, then in proportion to
+//     |   |    +-------------+    |   |     distance both across and along
+//     |   |    |  +-------+  |    |   |     the rings: no slivers, and a
+//     |   |    |  |  +-+  |  |    |   |     grazing view's far triangles keep
+//     |   |    |  |  +-+  |  |    |   |     their size on screen
+//     |   |    |  +-------+  |    |   |
+//     |   |    +-------------+    |   |
+//     |   +-----------------------+   |
+//     +-------------------------------+
+//
+// and the whole grid doubles (scale 1, 2, 4, ...) with each doubling of the
+// camera's height, so the water seen from high up is not over-tessellated.
+//
+// The outermost lines (ring) are moved out to a skirt far beyond the fog, so
+// the water has no edge. To keep the surface from swimming as the camera
+// moves, the centre snaps to the finest step, and each vertex snaps to a
+// world-fixed lattice whose step is a power-of-two multiple of the finest
+// step: not above the line's spacing (paper), or half the ring's spacing
+// (geometric; its level comes from a per-ring table, snapOffsets[l].z, so
+// the CPU twin agrees). A vertex only ever sits on world-fixed points of its
+// level. The finest step of scale 2^m is 2^m times that of scale 1, so every
+// scale's lattices are lattices of scale 1.
 #ifndef SWELL_GRID_GLSL
 #define SWELL_GRID_GLSL
 #include "frame.glsl"
 
-float gridLineOffset(float i)
+struct GridVertex {
+    vec2 offset;     // rest position relative to the grid centre, m
+    float cellSize;  // the coarser of the two spacings there, m
+};
+
+float snapToLattice(float s, float step, float offset)
+{
+    return step * floor((offset + s) / step + 0.5) - offset;
+}
+
+// The paper's layout: offset of line i (scale is 1).
+float paperLineOffset(float i)
 {
     float half_n = 0.5 * gridShape.y;
     float u = (i - half_n) / half_n;
@@ -26,34 +65,51 @@ float gridLineOffset(float i)
 
 // Offset of line i after snapping to its level's lattice; spacing returns the
 // line's spacing (the smaller gap to its neighbours), m.
-float snappedLine(int i, int axis, out float spacing)
+float paperLine(int i, int axis, out float spacing)
 {
     float n = gridShape.y;
-    float s = gridLineOffset(float(i));
     if (i == 0 || i == int(n)) {
         spacing = gridShape.z;
-        return sign(s) * gridShape.z;
+        return (i == 0 ? -1.0 : 1.0) * gridShape.z;
     }
-    spacing = min(gridLineOffset(float(i + 1)) - s, s - gridLineOffset(float(i - 1)));
+    float s = paperLineOffset(float(i));
+    spacing = min(paperLineOffset(float(i + 1)) - s, s - paperLineOffset(float(i - 1)));
     float step0 = gridShape.w;
     int level = clamp(int(floor(log2(max(spacing, step0) / step0))), 0, SWELL_GRID_LEVELS - 1);
-    float step = step0 * exp2(float(level));
-    float offset = snapOffsets[level][axis];
-    return step * floor((offset + s) / step + 0.5) - offset;
+    return snapToLattice(s, step0 * exp2(float(level)), snapOffsets[level][axis]);
 }
 
-struct GridVertex {
-    vec2 offset;     // rest position relative to the grid centre, m
-    float cellSize;  // the coarser of the two spacings there, m
-};
+GridVertex geometricVertex(int i, int j)
+{
+    int half_n = int(gridShape.y) / 2;
+    ivec2 d = ivec2(i, j) - half_n;
+    int ring = max(abs(d.x), abs(d.y));
+    if (ring == half_n)
+        return GridVertex(vec2(d) * (gridShape.z / float(half_n)), gridShape.z);
+    float r0 = gridLayout.y, k = gridLayout.z;
+    float u = float(ring) / float(half_n);
+    float radius = r0 * (exp(k * u) - 1.0);
+    float radial = r0 * k * exp(k * u) / float(half_n);
+    float tangential = ring == 0 ? radial : radius / float(ring);
+    int level = 0;
+    for (int l = 1; l < SWELL_GRID_LEVELS; ++l)
+        level = ring >= int(snapOffsets[l].z) ? l : level;
+    float step = gridShape.w * exp2(float(level));
+    vec2 nominal = vec2(d) * tangential;
+    vec2 offset = vec2(snapToLattice(nominal.x, step, snapOffsets[level].x),
+                       snapToLattice(nominal.y, step, snapOffsets[level].y));
+    return GridVertex(offset, max(radial, tangential));
+}
 
 GridVertex gridVertex(int vertexId)
 {
     int lines = int(gridShape.y) + 1;
     int i = vertexId % lines;
     int j = vertexId / lines;
+    if (gridLayout.x < 0.5)
+        return geometricVertex(i, j);
     float sx, sz;
-    vec2 offset = vec2(snappedLine(i, 0, sx), snappedLine(j, 1, sz));
+    vec2 offset = vec2(paperLine(i, 0, sx), paperLine(j, 1, sz));
     return GridVertex(offset, max(sx, sz));
 }
 

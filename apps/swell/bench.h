@@ -150,9 +150,11 @@ struct LodSample {
 };
 
 // vertices: captureWaterVertices() output, 8 floats per vertex (restPoint.xz,
-// position xyz, normal xyz, relative to the render origin) on a (cells+1)²
-// grid. viewProj: the renderer's, relative to the same origin.
-LodSample measureLod(const std::vector<float>& vertices, int vertexCount, const glm::dmat4& viewProj, glm::ivec2 size);
+// position xyz, normal xyz, relative to the render origin); triangles: the
+// vertex indices the frame draws, three per triangle (the tiles in view).
+// viewProj: the renderer's, relative to the same origin.
+LodSample measureLod(const std::vector<float>& vertices, int vertexCount, const std::vector<std::uint32_t>& triangles,
+                     const glm::dmat4& viewProj, glm::ivec2 size);
 
 // median, p95 (nearest rank) and maximum of a series.
 struct Summary {

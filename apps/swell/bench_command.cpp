@@ -188,14 +188,15 @@ int runBench(const BenchOptions& options)
             lodFrames.push_back(k);
     }
     const double aspect = double(r.size.x) / double(r.size.y);
+    std::vector<std::uint32_t> triangles;
     for (const int k : lodFrames) {
         const Camera& camera = r.realCameras[size_t(k)];
-        const int count = renderer.captureWaterVertices(camera, r.realTimes_s[size_t(k)], capture.id());
+        const int count = renderer.captureWaterVertices(camera, r.realTimes_s[size_t(k)], capture.id(), r.size, &triangles);
         glGetNamedBufferSubData(capture.id(), 0, GLsizeiptr(count) * 8 * GLsizeiptr(sizeof(float)), vertices.data());
         checkGl("capturing the water's vertices");
         const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
         const glm::dmat4 viewProj = camera.projection(aspect) * camera.viewRelativeTo(origin);
-        LodSample lod = measureLod(vertices, count, viewProj, r.size);
+        LodSample lod = measureLod(vertices, count, triangles, viewProj, r.size);
         lod.frame = k;
         lod.camera = camera;
         if (const PassSample* water = r.real[size_t(k)].find("water"); water && r.pipelineStatistics) {

@@ -1,8 +1,8 @@
 // `swell bench`: how well the water grid's level of detail fits one view.
-// From the vertices the water shader really produces (transform feedback),
-// rebuild the grid's triangles on the CPU, project them with the renderer's
-// view-projection, and count those that reach the view frustum and their
-// size on screen.
+// Take the vertices the water shader really produces (transform feedback) and
+// the triangles the renderer draws for that view (the grid tiles it did not
+// cull), project them with the renderer's view-projection, and count those
+// that reach the view frustum and their size on screen.
 #include "bench.h"
 
 #include "swell/error.h"
@@ -75,12 +75,13 @@ ScreenSize screenSize(const std::array<glm::dvec4, 3>& triangle, glm::ivec2 size
 
 } // namespace
 
-LodSample measureLod(const std::vector<float>& vertices, int vertexCount, const glm::dmat4& viewProj, glm::ivec2 size)
+LodSample measureLod(const std::vector<float>& vertices, int vertexCount, const std::vector<std::uint32_t>& triangles,
+                     const glm::dmat4& viewProj, glm::ivec2 size)
 {
     constexpr int kFloatsPerVertex = 8; // restPoint.xz, position xyz, normal xyz
-    const int lines = int(std::lround(std::sqrt(double(vertexCount))));
-    if (lines < 2 || lines * lines != vertexCount || vertices.size() < size_t(vertexCount) * kFloatsPerVertex)
-        throw Error(fmt::format("swell bench: {} water vertices do not make a square grid", vertexCount));
+    if (vertexCount < 3 || vertices.size() < size_t(vertexCount) * kFloatsPerVertex || triangles.size() % 3 != 0 ||
+        std::any_of(triangles.begin(), triangles.end(), [&](std::uint32_t v) { return v >= std::uint32_t(vertexCount); }))
+        throw Error(fmt::format("swell bench: {} water triangles do not index {} vertices", triangles.size() / 3, vertexCount));
 
     std::vector<glm::dvec4> clip(static_cast<size_t>(vertexCount));
     std::vector<unsigned> codes(static_cast<size_t>(vertexCount));
@@ -101,20 +102,8 @@ LodSample measureLod(const std::vector<float>& vertices, int vertexCount, const 
         areas.push_back(s.area_px2);
         edges.push_back(s.longestEdge_px);
     };
-    // The renderer's index order: each cell split along the diagonal facing
-    // the grid centre, so the four quadrants mirror each other.
-    const auto n = std::uint32_t(lines);
-    for (std::uint32_t j = 0; j + 1 < n; ++j)
-        for (std::uint32_t i = 0; i + 1 < n; ++i) {
-            const std::uint32_t a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-            if ((i < n / 2) != (j < n / 2)) {
-                addTriangle(a, c, b);
-                addTriangle(b, c, d);
-            } else {
-                addTriangle(a, c, d);
-                addTriangle(a, d, b);
-            }
-        }
+    for (size_t t = 0; t < triangles.size(); t += 3)
+        addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
 
     out.inFrustumShare = out.triangles > 0 ? double(out.inFrustum) / double(out.triangles) : 0.0;
     if (!areas.empty()) {

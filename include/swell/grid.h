@@ -1,5 +1,5 @@
-// CPU side of the paper's LOD grid: where grid lines fall, how the grid
-// centre snaps to the camera, and the per-level snap offsets the vertex
+// CPU side of the camera-following LOD grid: where grid lines fall, how the
+// grid centre snaps to the camera, and the per-level snap offsets the vertex
 // shader uses (shaders/grid.glsl holds the diagram and the GPU twin).
 #pragma once
 
@@ -7,15 +7,27 @@
 #include "swell/shader_constants.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <array>
 
 namespace swell {
 
 struct GridShape {
-    int cells = 256;          // cells per side, even, >= 4
-    double radius_m = 2000.0; // half-size of the detailed grid, m
+    GridLayout layout = GridLayout::Geometric;
+    int cells = 254;          // cells per side, even, >= 4
+    double radius_m = 2000.0; // reach of the detailed grid at scale 1, m
     double skirt_m = 1.0e5;   // where the outermost lines go, m (beyond the fog: unbounded water)
+    // Geometric layout: concentric square rings; ring r of n/2 lies at
+    // Chebyshev radius f(u) = innerScale * (exp(growth * u) - 1), u = r / (n/2),
+    // so spacing is about even within innerScale of the centre and grows in
+    // proportion to distance beyond it; growth makes f(1) = radius.
+    double innerScale_m = 0.0;
+    double growth = 0.0;
+    double maxScale = 1.0; // largest height scale: the scaled grid stays well inside the skirt
+    // Geometric layout: the first ring that snaps to each lattice level. A
+    // table, so the CPU and the GPU choose a vertex's level alike.
+    std::array<int, SWELL_GRID_LEVELS> levelFirstRing{};
 };
 
 // The grid a scene's settings ask for: cells even, the skirt beyond the fog.
@@ -33,23 +45,43 @@ HorizonFade horizonFadeFor(const GridSettings& grid, const GridShape& shape);
 double horizonFadeAt(const HorizonFade& fade, double distance_m);
 double waveLodWeight(double wavelength_m, double cellSize_m);
 
-// Offset of grid line i (0..cells) from the centre before snapping: radius * u * |u|.
+// Offset of grid line i (0..cells) from the centre at scale 1, before
+// snapping: the paper's line, or the geometric layout's ring radius f.
 double gridLineOffset(const GridShape& shape, int i);
 
-// Spacing of the innermost cell, m: the step the grid centre snaps to.
+// The finest lattice step at scale 1, m: the innermost cell's spacing for the
+// paper's layout, half of it for the geometric one (whose vertices do not lie
+// on straight lines, so they snap to a lattice finer than their spacing).
 double finestGridStep(const GridShape& shape);
 
-// Where the grid sits this frame: its centre snapped to the finest step, and
-// the centre modulo each level's step (so the GPU can snap in small numbers).
+// The geometric grid's scale for a camera this high above the water: 1, 2,
+// 4, ... (a power of two, so every scale's lattices are lattices of scale 1),
+// keeping triangles a similar size on screen from any height. Always 1 for
+// the paper's layout.
+double gridScaleFor(const GridShape& shape, double cameraHeight_m);
+
+// Where the grid sits this frame: its scale, its centre snapped to the finest
+// step, and the centre modulo each level's step (so the GPU can snap in small
+// numbers).
 struct GridPlacement {
-    glm::dvec2 center_m{0.0};  // absolute world x,z
-    double finestStep_m = 0.0;
+    double scale = 1.0;
+    glm::dvec2 center_m{0.0}; // absolute world x,z
+    double finestStep_m = 0.0; // scale * finestGridStep(shape)
     std::array<glm::dvec2, SWELL_GRID_LEVELS> snapOffsets{};
 };
-GridPlacement placeGrid(const GridShape& shape, glm::dvec2 camera_m);
+GridPlacement placeGrid(const GridShape& shape, glm::dvec3 camera_m);
 
-// CPU twin of snappedLine() in grid.glsl: offset of line i from the centre
-// along axis (0: x, 1: z) after snapping; spacing receives the line's spacing.
-double snappedGridLine(const GridShape& shape, const GridPlacement& placement, int i, int axis, double& spacing_m);
+// CPU twin of gridVertex() in grid.glsl: where grid vertex (i, j) sits.
+struct GridPoint {
+    glm::dvec2 offset_m{0.0};      // rest position relative to the grid centre after snapping, m
+    double cellSize_m = 0.0;       // the coarser spacing there, m (drives the wave filter)
+    glm::dvec2 latticeStep_m{0.0}; // the world-fixed lattice step it snapped to, per axis, m; 0 on the skirt
+    // How near the snap was to a tie, in lattice steps (0.5: far from it).
+    // Below about 1e-4 the GPU's float arithmetic may pick the other
+    // neighbouring lattice point.
+    double snapMargin = 0.5;
+    bool skirt = false;            // on the outermost ring, out beyond the fog
+};
+GridPoint gridPoint(const GridShape& shape, const GridPlacement& placement, int i, int j);
 
 } // namespace swell

@@ -12,7 +12,9 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace swell {
 
@@ -67,11 +69,14 @@ public:
     // Observes the passes of later frames; nullptr stops. Not owned.
     void setPassObserver(PassObserver* observer);
 
-    // For tests: binds the water program with transform feedback capture of
-    // vRestPoint, vPosition and vNormal (8 floats per vertex) for this frame
-    // setup, draws the grid's vertices as points into `buffer`, and returns the
-    // vertex count. Render origin: the camera's x,z.
-    int captureWaterVertices(const Camera& camera, double time_s, unsigned buffer);
+    // For tests and the benchmark: binds the water program with transform
+    // feedback capture of vRestPoint, vPosition and vNormal (8 floats per
+    // vertex) for this frame setup, draws all the grid's vertices as points
+    // into `buffer`, and returns the vertex count. Render origin: the camera's
+    // x,z. drawnIndices, when given, receives the triangles (three vertex
+    // indices each) a frame of this size would draw: the tiles in view.
+    int captureWaterVertices(const Camera& camera, double time_s, unsigned buffer, glm::ivec2 size = {640, 480},
+                             std::vector<std::uint32_t>* drawnIndices = nullptr);
     // The number of vertices captureWaterVertices writes.
     int waterVertexCount() const;
 

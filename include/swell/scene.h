@@ -33,10 +33,17 @@ struct WaveSource {
     WaveSet listed;                   // hand-listed waves (and the water depth for both)
 };
 
+// How the grid's lines are spaced away from the camera (see shaders/grid.glsl).
+enum class GridLayout {
+    Geometric, // spacing grows in proportion to distance, and the grid scales with camera height
+    Paper,     // the paper's quadratic division points: spacing grows with the square root of distance
+};
+
 // The camera-following LOD grid of the paper. Rebuild settings: a change
 // recreates the grid's index buffer.
 struct GridSettings {
-    int resolution = 256;       // vertices along each side, 16..2048
+    GridLayout layout = GridLayout::Geometric;
+    int resolution = 129;       // vertices along each side, 16..2048
     double radius_m = 2000.0;   // half-size of the detailed grid around the camera, m, 10..100000
     // Wave height fades to zero between these distances from the camera, m (Earth-curvature trick).
     double fadeStart_m = 800.0;

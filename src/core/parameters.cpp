@@ -34,6 +34,9 @@ constexpr double kDirectionLimit = 1.0e3;
 constexpr std::array<std::string_view, 2> kReflectionModes{"fixed", "raymarch"};
 static_assert(static_cast<int>(ReflectionMode::FixedDistance) == 0 && static_cast<int>(ReflectionMode::RayMarch) == 1);
 
+constexpr std::array<std::string_view, 2> kGridLayouts{"geometric", "paper"};
+static_assert(static_cast<int>(GridLayout::Geometric) == 0 && static_cast<int>(GridLayout::Paper) == 1);
+
 constexpr std::array<std::string_view, 6> kDebugViews{"shaded", "normals", "reflection", "refraction", "lod", "wireframe"};
 static_assert(static_cast<int>(DebugView::Shaded) == SWELL_VIEW_SHADED && static_cast<int>(DebugView::Normals) == SWELL_VIEW_NORMALS
               && static_cast<int>(DebugView::Reflection) == SWELL_VIEW_REFLECTION
@@ -161,6 +164,12 @@ std::vector<Parameter> buildTable()
            {.key = "waves.list.phase_rad", .list = L::Waves, .effect = E::Waves, .unit = "rad", .min = -1000.0,
             .max = 1000.0, .sliderMin = -kPi, .sliderMax = kPi, .description = "phase offset"}),
         // [grid]
+        at([](auto& s, std::size_t) -> auto& { return s.grid.layout; },
+           {.key = "grid.layout", .kind = K::Choice, .effect = E::Rebuild, .min = 0.0, .max = kGridLayouts.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kGridLayouts.size() - 1.0,
+            .description = "geometric: spacing in proportion to distance, scaled with camera height; paper: the "
+                           "paper's quadratic division points",
+            .choices = kGridLayouts}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.resolution; },
            {.key = "grid.resolution", .kind = K::Integer, .effect = E::Rebuild, .min = 16.0, .max = 2048.0,
             .sliderMin = 16.0, .sliderMax = 2048.0, .logarithmic = true, .description = "grid vertices along each side"}),

@@ -29,6 +29,7 @@ struct alignas(16) FrameUniforms {
     glm::vec4 gridShape;
     glm::vec4 gridFade;
     glm::vec4 gridCenter;
+    glm::vec4 gridLayout;
     glm::vec4 snapOffsets[SWELL_GRID_LEVELS];
     glm::vec4 reflectionParams;
     glm::vec4 viewport;

@@ -5,6 +5,7 @@
 #include "render/gpu_types.h"
 #include "render/mesh.h"
 #include "render/render_target.h"
+#include "render/water_grid.h"
 #include "swell/error.h"
 #include "swell/grid.h"
 
@@ -66,9 +67,9 @@ struct Renderer::Impl {
     Programs programs;
     gl::Buffer frameUbo[PassCount];
     gl::Buffer waveUbo;
-    gl::VertexArray gridVao, emptyVao;
-    gl::Buffer gridIndices;
-    GLsizei gridIndexCount = 0;
+    gl::VertexArray emptyVao;
+    WaterGrid waterGrid;
+    WaveReach reach; // how far the waves move the surface, for culling
     World world;
     RenderTarget reflection, refraction, output;
     FrameCounters counters;
@@ -100,25 +101,7 @@ struct Renderer::Impl {
     void buildGrid()
     {
         gridShape = gridShapeFor(scene.grid, scene.camera);
-        const auto lines = std::uint32_t(gridShape.cells + 1);
-        std::vector<std::uint32_t> indices;
-        indices.reserve(size_t(gridShape.cells) * size_t(gridShape.cells) * 6);
-        for (std::uint32_t j = 0; j + 1 < lines; ++j)
-            for (std::uint32_t i = 0; i + 1 < lines; ++i) {
-                const std::uint32_t a = j * lines + i, b = a + 1, c = a + lines, d = c + 1;
-                // Split each cell along the diagonal facing the centre, so the
-                // four quadrants are mirror images.
-                const bool flip = (i < lines / 2) != (j < lines / 2);
-                if (flip)
-                    indices.insert(indices.end(), {a, c, b, b, c, d});
-                else
-                    indices.insert(indices.end(), {a, c, d, a, d, b});
-            }
-        gridIndices = gl::Buffer::create();
-        glNamedBufferStorage(gridIndices.id(), GLsizeiptr(indices.size() * 4), indices.data(), 0);
-        gridVao = gl::VertexArray::create();
-        glVertexArrayElementBuffer(gridVao.id(), gridIndices.id());
-        gridIndexCount = GLsizei(indices.size());
+        waterGrid.build(gridShape);
     }
 
     // Builds the meshes and sky of `from` without touching the current ones,
@@ -205,8 +188,10 @@ struct Renderer::Impl {
         f.gridFade = glm::vec4(glm::dvec4(fade.start_m, fade.end_m, 0.0, 0.0));
         const glm::dvec2 centre = grid.center_m - glm::dvec2(origin.x, origin.z);
         f.gridCenter = glm::vec4(glm::dvec4(centre.x, 0.0, centre.y, 0.0));
+        f.gridLayout = glm::vec4(glm::dvec4(gridShape.layout == GridLayout::Paper ? 1.0 : 0.0,
+                                            grid.scale * gridShape.innerScale_m, gridShape.growth, grid.scale));
         for (int l = 0; l < SWELL_GRID_LEVELS; ++l)
-            f.snapOffsets[l] = glm::vec4(glm::dvec4(grid.snapOffsets[size_t(l)], 0.0, 0.0));
+            f.snapOffsets[l] = glm::vec4(glm::dvec4(grid.snapOffsets[size_t(l)], gridShape.levelFirstRing[size_t(l)], 0.0));
         f.reflectionParams = glm::vec4(glm::dvec4(scene.reflection.fixedDistance_m, scene.reflection.clipOffset_m,
                                                   scene.reflection.mode == ReflectionMode::RayMarch ? 1.0 : 0.0, 0.0));
         f.viewport = glm::vec4(float(size.x), float(size.y), 1.0f / float(size.x), 1.0f / float(size.y));
@@ -214,13 +199,17 @@ struct Renderer::Impl {
     }
 
     // Per-frame setup shared by drawing and capture: the render origin is the
-    // camera's x,z; waves are phased at the snapped grid centre.
+    // camera's x,z; waves are phased at the snapped grid centre; the water
+    // tiles in view are chosen.
     FrameUniforms prepareFrame(const Camera& camera, double time_s, glm::ivec2 size, glm::dvec3& origin)
     {
         origin = glm::dvec3(camera.position_m.x, 0.0, camera.position_m.z);
-        const GridPlacement grid = placeGrid(gridShape, {camera.position_m.x, camera.position_m.z});
+        const GridPlacement grid = placeGrid(gridShape, camera.position_m);
         uploadWaves(grid, time_s);
-        return frameUniforms(camera, grid, origin, size);
+        const FrameUniforms f = frameUniforms(camera, grid, origin, size);
+        const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
+        waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
+        return f;
     }
 
     void bindFrame(Pass pass, const FrameUniforms& f)
@@ -292,12 +281,11 @@ struct Renderer::Impl {
         glBindTextureUnit(SWELL_UNIT_REFLECTION_DEPTH, reflection.depth());
         glBindTextureUnit(SWELL_UNIT_REFRACTION_COLOR, refraction.color());
         glBindTextureUnit(SWELL_UNIT_REFRACTION_DEPTH, refraction.depth());
-        glBindVertexArray(gridVao.id());
+        glBindVertexArray(waterGrid.vertexArray());
         if (scene.debugView == DebugView::Wireframe)
             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-        glDrawElements(GL_TRIANGLES, gridIndexCount, GL_UNSIGNED_INT, nullptr);
+        counters.waterTriangles += waterGrid.draw();
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-        counters.waterTriangles += gridIndexCount / 3;
         ++counters.drawCalls;
     }
 
@@ -394,7 +382,8 @@ void Renderer::setScene(const Scene& scene)
     const bool first = !s.programs.water;
     const bool programsChanged = first || scene.debugView != s.scene.debugView ||
                                  scene.sky.cubemapFaces.empty() != s.scene.sky.cubemapFaces.empty();
-    const bool gridChanged = first || scene.grid.resolution != s.scene.grid.resolution ||
+    const bool gridChanged = first || scene.grid.layout != s.scene.grid.layout ||
+                             scene.grid.resolution != s.scene.grid.resolution ||
                              scene.grid.radius_m != s.scene.grid.radius_m || scene.camera.far_m != s.scene.camera.far_m;
     auto sameObjects = [](const std::vector<SceneObject>& a, const std::vector<SceneObject>& b) {
         return std::equal(a.begin(), a.end(), b.begin(), b.end(),
@@ -417,6 +406,7 @@ void Renderer::setScene(const Scene& scene)
         world = Impl::buildWorld(scene);
     s.scene = scene;
     s.waves = std::move(waves);
+    s.reach = waveReach(s.waves);
     if (programsChanged)
         s.programs = std::move(programs);
     if (worldChanged)
@@ -462,11 +452,14 @@ Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size
 
 int Renderer::waterVertexCount() const { return (impl_->gridShape.cells + 1) * (impl_->gridShape.cells + 1); }
 
-int Renderer::captureWaterVertices(const Camera& camera, double time_s, unsigned buffer)
+int Renderer::captureWaterVertices(const Camera& camera, double time_s, unsigned buffer, glm::ivec2 size,
+                                   std::vector<std::uint32_t>* drawnIndices)
 {
     Impl& s = *impl_;
     glm::dvec3 origin;
-    s.bindFrame(PassMain, s.prepareFrame(camera, time_s, {640, 480}, origin));
+    s.bindFrame(PassMain, s.prepareFrame(camera, time_s, glm::max(size, glm::ivec2(1)), origin));
+    if (drawnIndices)
+        *drawnIndices = s.waterGrid.chosenIndices();
     // Drawing needs a complete framebuffer even with rasterisation discarded
     // (a headless context has no default one).
     if (s.output.size().x == 0)

@@ -79,16 +79,23 @@ def main():
         if main_pass["samples_passed"] <= 0:
             problems.append("main pass passed no samples")
         if first["pipeline_statistics"]:
+            # Culling leaves out the grid tiles outside the view, never adds any.
             triangles = 2 * first["grid_cells"] ** 2
-            if water["primitives_submitted"] != first["frames"] * triangles:
+            if not 0 < water["primitives_submitted"] < first["frames"] * triangles:
                 problems.append(f"water primitives submitted {water['primitives_submitted']}, "
-                                f"expected {first['frames']} frames x {triangles} triangles")
+                                f"expected some but fewer than {first['frames']} frames x {triangles} triangles")
             for key, value in water.items():
                 if value > main_pass[key]:
                     problems.append(f"water {key} {value} exceeds main's {main_pass[key]}, which includes it")
     for lod in first["lod"]:
-        if lod["triangles"] != 2 * first["grid_cells"] ** 2 or not 0.0 <= lod["in_frustum_share"] <= 1.0:
+        if not 0 < lod["triangles"] < 2 * first["grid_cells"] ** 2 or not 0.0 <= lod["in_frustum_share"] <= 1.0:
             problems.append(f"implausible LOD sample {lod}")
+        # The LOD figures describe the triangles that frame really drew.
+        frame = first["measured_frames"][lod["frame"]]["passes"].get("water", {})
+        drawn = frame.get("counters", {}).get("primitives_submitted")
+        if first["pipeline_statistics"] and drawn != lod["triangles"]:
+            problems.append(f"LOD sample of frame {lod['frame']} counts {lod['triangles']} triangles, "
+                            f"the frame drew {drawn}")
     for name, p in passes.items():
         if not p["wall_ms"]["median"] > 0.0 or not p["floor_wall_ms"]["median"] > 0.0:
             problems.append(f"pass '{name}' has no wall time")

@@ -237,7 +237,7 @@ TEST(SceneFile, EverythingRoundTrips)
     s.waves.listed.depth_m = 17.25;
     s.waves.listed.waves.push_back(Wave{{0.1 + 0.2, -1.0}, 33.3, 0.123456789012345, 0.7, -3.0});
     s.waves.listed.waves.push_back(Wave{{-0.0, 1e-7}, 1e-3, 0.0, 0.0, 999.0});
-    s.grid = {512, 3000.5, 1000.0, 2999.0};
+    s.grid = {GridLayout::Paper, 512, 3000.5, 1000.0, 2999.0};
     s.sun = {{0.25, 0.5, -1.0}, {1.0, 0.5, 1.0 / 3.0}, 7.5};
     s.sky.cubemapFaces = {"sky/px.png", "sky/nx.png", "sky/py.png", "sky/ny.png", "sky/pz.png", "sky/nz.png"};
     s.sky.zenithColor = {0.0, 0.0, 0.0};

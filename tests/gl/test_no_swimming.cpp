@@ -12,24 +12,26 @@
 
 namespace {
 
-class NoSwimming : public swell::test::GlTest {};
+// Both grid layouts keep the guarantee.
+class NoSwimming : public swell::test::GlTest, public testing::WithParamInterface<swell::GridLayout> {};
 
-swell::Scene swimScene()
+swell::Scene swimScene(swell::GridLayout layout)
 {
     swell::Scene scene = swell::defaultScene();
     scene.objects.clear();
     scene.showTerrain = false;
     scene.grid.resolution = 129;
+    scene.grid.layout = layout;
     return scene;
 }
 
-TEST_F(NoSwimming, SubCellMotionChangesNoVertex)
+TEST_P(NoSwimming, SubCellMotionChangesNoVertex)
 {
-    const swell::Scene scene = swimScene();
+    const swell::Scene scene = swimScene(GetParam());
     swell::Renderer renderer(scene);
     const swell::GridShape shape = swell::gridShapeFor(scene.grid, scene.camera);
-    const double step = swell::finestGridStep(shape);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    const double step = swell::placeGrid(shape, {0.0, 6.0, 0.0}).finestStep_m;
     // Start just past a snap point so that moving 0.3 cells crosses none.
     camera.position_m = {200.0 * step + 0.05 * step, 6.0, -80.0 * step + 0.05 * step};
     const auto before = swell::test::captureGpu(renderer, camera, 42.0);
@@ -51,26 +53,29 @@ TEST_F(NoSwimming, SubCellMotionChangesNoVertex)
     EXPECT_LT(worst, 5e-4) << "the surface moved with the camera (finest cell " << step << " m)";
 }
 
-TEST_F(NoSwimming, EveryVertexSitsOnItsLevelsWorldFixedLattice)
+TEST_P(NoSwimming, EveryVertexSitsOnItsLevelsWorldFixedLattice)
 {
-    const swell::Scene scene = swimScene();
+    const swell::Scene scene = swimScene(GetParam());
     swell::Renderer renderer(scene);
     const swell::GridShape shape = swell::gridShapeFor(scene.grid, scene.camera);
+    // The lattices of every height scale are lattices of the finest step at scale 1.
     const double step0 = swell::finestGridStep(shape);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    for (glm::dvec3 p : {glm::dvec3(0.0, 6.0, 0.0), glm::dvec3(7.31, 6.0, -3.17), glm::dvec3(1234.5, 9.0, 987.6),
-                         glm::dvec3(-5.0e5 + 0.123, 6.0, 2.5e5 - 0.456)}) {
+    // Heights that give the geometric layout scales 1, 2 and 8.
+    for (glm::dvec3 p : {glm::dvec3(0.0, 6.0, 0.0), glm::dvec3(7.31, 6.0, -3.17), glm::dvec3(1234.5, 13.0, 987.6),
+                         glm::dvec3(-5.0e5 + 0.123, 50.0, 2.5e5 - 0.456)}) {
         camera.position_m = p;
         const auto vertices = swell::test::captureGpu(renderer, camera, 0.0);
-        const swell::GridPlacement placement = swell::placeGrid(shape, {p.x, p.z});
+        const swell::GridPlacement placement = swell::placeGrid(shape, p);
         int checked = 0;
         for (const auto& v : vertices) {
             if (v.i == 0 || v.j == 0 || v.i == shape.cells || v.j == shape.cells)
                 continue; // the skirt, beyond the fog
+            const swell::GridPoint point = swell::gridPoint(shape, placement, v.i, v.j);
             for (int axis = 0; axis < 2; ++axis) {
-                double spacing = 0.0;
-                swell::snappedGridLine(shape, placement, axis == 0 ? v.i : v.j, axis, spacing);
-                const double step = step0 * std::exp2(std::floor(std::log2(std::max(spacing, step0) / step0)));
+                const double step = point.latticeStep_m[axis];
+                // Each level's lattice is a power-of-two multiple of scale 1's finest step.
+                EXPECT_NEAR(std::exp2(std::round(std::log2(step / step0))), step / step0, 1e-9);
                 const double along = axis == 0 ? v.rest_m.x : v.rest_m.y;
                 const double off = along / step - std::round(along / step);
                 // In units of the lattice step; float rest positions near 2 km carry ~1e-4 m.
@@ -81,5 +86,10 @@ TEST_F(NoSwimming, EveryVertexSitsOnItsLevelsWorldFixedLattice)
         EXPECT_GT(checked, 30000);
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Layouts, NoSwimming, testing::Values(swell::GridLayout::Geometric, swell::GridLayout::Paper),
+                         [](const testing::TestParamInfo<swell::GridLayout>& layout) {
+                             return layout.param == swell::GridLayout::Paper ? "Paper" : "Geometric";
+                         });
 
 } // namespace

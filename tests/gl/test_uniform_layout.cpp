@@ -36,7 +36,7 @@ const char* kProbe = R"(#include "frame.glsl"
 void main() {
     vec4 s = passViewProj[0] + passInvViewProj[0] + cameraViewProj[0] + cameraInvViewProj[0] + clipPlane
            + eyePosition + sunDirection + sunColor + fogColor + fogRange + skyZenith + skyHorizon + waterDeep
-           + waterAbsorption + waterOptics + gridShape + gridFade + gridCenter + snapOffsets[gl_VertexID]
+           + waterAbsorption + waterOptics + gridShape + gridFade + gridCenter + gridLayout + snapOffsets[gl_VertexID]
            + reflectionParams + viewport + passFlags + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
     gl_Position = s;
 }
@@ -73,6 +73,7 @@ TEST_F(UniformLayout, FrameAndWaveBlocksMatchTheirCppMirrors)
     SWELL_EXPECT_OFFSET(F, gridShape);
     SWELL_EXPECT_OFFSET(F, gridFade);
     SWELL_EXPECT_OFFSET(F, gridCenter);
+    SWELL_EXPECT_OFFSET(F, gridLayout);
     EXPECT_EQ(offsetOf(p.id(), "snapOffsets[0]"), GLint(offsetof(F, snapOffsets)));
     SWELL_EXPECT_OFFSET(F, reflectionParams);
     SWELL_EXPECT_OFFSET(F, viewport);

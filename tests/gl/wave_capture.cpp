@@ -37,22 +37,23 @@ std::vector<WaterVertex> computeCpu(const Renderer& renderer, const Camera& came
     const Scene& scene = renderer.scene();
     const GridShape shape = gridShapeFor(scene.grid, scene.camera);
     const HorizonFade fade = horizonFadeFor(scene.grid, shape);
-    const GridPlacement placement = placeGrid(shape, {camera.position_m.x, camera.position_m.z});
+    const GridPlacement placement = placeGrid(shape, camera.position_m);
     const int lines = shape.cells + 1;
     std::vector<WaterVertex> out;
     out.reserve(size_t(lines) * size_t(lines));
     for (int j = 0; j < lines; ++j)
         for (int i = 0; i < lines; ++i) {
-            double sx = 0.0, sz = 0.0;
-            const glm::dvec2 offset(snappedGridLine(shape, placement, i, 0, sx), snappedGridLine(shape, placement, j, 1, sz));
+            const GridPoint point = gridPoint(shape, placement, i, j);
             WaterVertex w;
             w.i = i;
             w.j = j;
-            w.rest_m = placement.center_m + offset;
+            w.snapMargin = point.snapMargin;
+            w.latticeStep_m = std::max(point.latticeStep_m.x, point.latticeStep_m.y);
+            w.rest_m = placement.center_m + point.offset_m;
             const double distance = glm::length(w.rest_m - glm::dvec2(camera.position_m.x, camera.position_m.z));
             WaveSet weighted = renderer.waves();
             for (Wave& wave : weighted.waves)
-                wave.amplitude_m *= horizonFadeAt(fade, distance) * waveLodWeight(wave.wavelength_m, std::max(sx, sz));
+                wave.amplitude_m *= horizonFadeAt(fade, distance) * waveLodWeight(wave.wavelength_m, point.cellSize_m);
             const glm::dvec3 d = displacementAt(weighted, w.rest_m, time_s);
             w.position_m = glm::dvec3(w.rest_m.x, 0.0, w.rest_m.y) + d;
             w.normal = normalAt(weighted, w.rest_m, time_s);

@@ -1,0 +1,98 @@
+#include "core/grid_tiles.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace swell::detail {
+
+TiledGrid tileGrid(int cells, int tileCells)
+{
+    TiledGrid grid;
+    const auto lines = std::uint32_t(cells + 1);
+    const auto half = std::uint32_t(cells / 2);
+    grid.indices.reserve(size_t(cells) * size_t(cells) * 6);
+    for (int j0 = 0; j0 < cells; j0 += tileCells)
+        for (int i0 = 0; i0 < cells; i0 += tileCells) {
+            GridTile tile{i0, std::min(i0 + tileCells, cells), j0, std::min(j0 + tileCells, cells),
+                          std::uint32_t(grid.indices.size()), 0};
+            for (auto j = std::uint32_t(tile.j0); j < std::uint32_t(tile.j1); ++j)
+                for (auto i = std::uint32_t(tile.i0); i < std::uint32_t(tile.i1); ++i) {
+                    const std::uint32_t a = j * lines + i, b = a + 1, c = a + lines, d = c + 1;
+                    if ((i < half) != (j < half))
+                        grid.indices.insert(grid.indices.end(), {a, c, b, b, c, d});
+                    else
+                        grid.indices.insert(grid.indices.end(), {a, c, d, a, d, b});
+                }
+            tile.indexCount = std::uint32_t(grid.indices.size()) - tile.firstIndex;
+            grid.tiles.push_back(tile);
+        }
+    return grid;
+}
+
+WaveReach waveReach(const WaveSet& waves)
+{
+    WaveReach reach;
+    for (const Wave& w : waves.waves) {
+        reach.vertical_m += w.amplitude_m;
+        reach.horizontal_m += w.steepness * w.amplitude_m;
+    }
+    return reach;
+}
+
+Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach)
+{
+    // Along a row a vertex's x grows with i, and |x| grows with the ring
+    // along a column (paper's layout: x depends on i alone), so the extremes
+    // of x lie at the tile's corners or at the point of its left or right edge
+    // nearest the centre; likewise for z. Eight points bound the tile.
+    Bounds box{glm::dvec3(std::numeric_limits<double>::infinity()), glm::dvec3(-std::numeric_limits<double>::infinity())};
+    double margin = 0.0;
+    auto add = [&](int i, int j) {
+        const GridPoint p = gridPoint(shape, placement, i, j);
+        box.lo = glm::min(box.lo, glm::dvec3(p.offset_m.x, 0.0, p.offset_m.y));
+        box.hi = glm::max(box.hi, glm::dvec3(p.offset_m.x, 0.0, p.offset_m.y));
+        margin = std::max({margin, p.latticeStep_m.x, p.latticeStep_m.y});
+    };
+    const int half = shape.cells / 2;
+    const int nearestI = std::clamp(half, tile.i0, tile.i1), nearestJ = std::clamp(half, tile.j0, tile.j1);
+    for (const int i : {tile.i0, tile.i1})
+        for (const int j : {tile.j0, tile.j1})
+            add(i, j);
+    add(tile.i0, nearestJ);
+    add(tile.i1, nearestJ);
+    add(nearestI, tile.j0);
+    add(nearestI, tile.j1);
+    // One lattice step, so a vertex the GPU's float arithmetic rounds to the
+    // neighbouring lattice point is still inside; then the waves' reach.
+    const glm::dvec3 pad(margin + reach.horizontal_m, reach.vertical_m, margin + reach.horizontal_m);
+    box.lo -= pad;
+    box.hi += pad;
+    return box;
+}
+
+Frustum frustumPlanes(const glm::dmat4& m)
+{
+    const glm::dvec4 row0(m[0][0], m[1][0], m[2][0], m[3][0]);
+    const glm::dvec4 row1(m[0][1], m[1][1], m[2][1], m[3][1]);
+    const glm::dvec4 row2(m[0][2], m[1][2], m[2][2], m[3][2]);
+    const glm::dvec4 row3(m[0][3], m[1][3], m[2][3], m[3][3]);
+    return {row3 + row0, row3 - row0, row3 + row1, row3 - row1, row3 + row2, row3 - row2};
+}
+
+bool outsideFrustum(const Frustum& frustum, const Bounds& box)
+{
+    for (const glm::dvec4& plane : frustum) {
+        // The box's corner farthest along the plane's normal.
+        const glm::dvec3 corner(plane.x >= 0.0 ? box.hi.x : box.lo.x, plane.y >= 0.0 ? box.hi.y : box.lo.y,
+                                plane.z >= 0.0 ? box.hi.z : box.lo.z);
+        if (glm::dot(glm::dvec3(plane), corner) + plane.w < 0.0)
+            return true;
+    }
+    return false;
+}
+
+} // namespace swell::detail

@@ -1,0 +1,56 @@
+// The water grid cut into square tiles of cells, so the tiles outside the view
+// frustum can be left out of the draw. Tile bounds hold the displaced surface
+// wherever the waves move it; the test against the frustum is conservative:
+// a tile is culled only when all of its bounds lie outside one frustum plane.
+#pragma once
+
+#include "swell/grid.h"
+#include "swell/waves.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace swell::detail {
+
+// Cells [i0, i1) x [j0, j1) and where their triangles sit in the index buffer.
+struct GridTile {
+    int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+    std::uint32_t firstIndex = 0, indexCount = 0;
+};
+
+// Tiles of up to tileCells x tileCells cells covering a grid of cells x cells,
+// and the grid's triangle indices laid out tile after tile. Each cell is split
+// along the diagonal facing the centre, so the four quadrants mirror each other.
+struct TiledGrid {
+    std::vector<GridTile> tiles;
+    std::vector<std::uint32_t> indices;
+};
+TiledGrid tileGrid(int cells, int tileCells);
+
+// How far waves can move the surface from its rest plane, m: up or down
+// (the sum of amplitudes) and sideways (the sum of Q * amplitude).
+struct WaveReach {
+    double vertical_m = 0.0, horizontal_m = 0.0;
+};
+WaveReach waveReach(const WaveSet& waves);
+
+struct Bounds {
+    glm::dvec3 lo{0.0}, hi{0.0};
+};
+// A box holding every displaced vertex of the tile, relative to the grid centre.
+// Each side has one lattice step of margin, so a line the GPU's float math
+// rounds to the neighbouring lattice point is still inside.
+Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach);
+
+// The six planes (a, b, c, d) of a view-projection's clip volume: a point p is
+// inside when dot(plane, (p, 1)) >= 0 for all six (OpenGL clip z in -w..w).
+using Frustum = std::array<glm::dvec4, 6>;
+Frustum frustumPlanes(const glm::dmat4& viewProj);
+bool outsideFrustum(const Frustum& frustum, const Bounds& box);
+
+} // namespace swell::detail

@@ -1,0 +1,48 @@
+// The water grid on the GPU: one index buffer laid out tile by tile, and each
+// frame the list of tiles that reach the view frustum, drawn with one call.
+#pragma once
+
+#include "core/grid_tiles.h"
+#include "swell/gl/handle.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace swell::detail {
+
+class WaterGrid {
+public:
+    // Tiles of this many cells a side: small enough that the frustum's edges
+    // waste few triangles, large enough that culling costs little on the CPU.
+    static constexpr int kTileCells = 4;
+
+    void build(const GridShape& shape);
+
+    // Chooses the tiles to draw for a camera. viewProj maps positions relative
+    // to the render origin; gridCenter_m is the grid centre relative to it.
+    void cull(const GridShape& shape, const GridPlacement& placement, const WaveReach& reach,
+              const glm::dmat4& viewProj, glm::dvec2 gridCenter_m);
+
+    // Draws the chosen tiles (the grid VAO must be bound: see vertexArray()).
+    // Returns the triangles submitted.
+    long long draw() const;
+    unsigned vertexArray() const { return vao_.id(); }
+
+    // The indices of the chosen tiles' triangles, in the order drawn.
+    std::vector<std::uint32_t> chosenIndices() const;
+    int tileCount() const { return int(grid_.tiles.size()); }
+    int chosenTileCount() const { return chosenTiles_; }
+
+private:
+    TiledGrid grid_;
+    gl::Buffer indices_;
+    gl::VertexArray vao_;
+    // glMultiDrawElements' arguments for the chosen tiles.
+    std::vector<int> counts_;
+    std::vector<const void*> offsets_;
+    int chosenTiles_ = 0;
+};
+
+} // namespace swell::detail

@@ -1,0 +1,106 @@
+// The water grid's tiles outside the view are left out of the draw, and only
+// those: every triangle the GPU would place even partly inside the view
+// frustum is among the triangles drawn, for both layouts and many cameras.
+#include "support/gl_test.h"
+#include "swell/renderer.h"
+
+#include <epoxy/gl.h>
+#include <glm/vec4.hpp>
+
+#include "swell/gl/handle.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <string>
+
+namespace {
+
+struct Case {
+    swell::GridLayout layout;
+    glm::dvec3 position_m;
+    double yaw_deg, pitch_deg;
+};
+
+class GridCulling : public swell::test::GlTest, public testing::WithParamInterface<Case> {};
+
+// Bits of the clip-space planes a point lies outside of.
+unsigned outcode(const glm::dvec4& c)
+{
+    return (c.x < -c.w ? 1u : 0u) | (c.x > c.w ? 2u : 0u) | (c.y < -c.w ? 4u : 0u) | (c.y > c.w ? 8u : 0u) |
+           (c.z < -c.w ? 16u : 0u) | (c.z > c.w ? 32u : 0u);
+}
+
+TEST_P(GridCulling, EveryTriangleThatReachesTheViewIsDrawn)
+{
+    const Case c = GetParam();
+    swell::Scene scene = swell::defaultScene();
+    scene.objects.clear();
+    scene.showTerrain = false;
+    scene.grid.layout = c.layout;
+    scene.grid.resolution = 129;
+    // Steep, tall waves: their sideways and vertical reach must be in the bounds.
+    scene.waves.wind->windSpeed_mps = 20.0;
+    swell::Renderer renderer(scene);
+    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    camera.position_m = c.position_m;
+    camera.yaw_deg = c.yaw_deg;
+    camera.pitch_deg = c.pitch_deg;
+    const glm::ivec2 size(320, 180);
+
+    const int count = renderer.waterVertexCount();
+    swell::gl::Buffer buffer = swell::gl::Buffer::create();
+    glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
+    std::vector<std::uint32_t> drawn;
+    renderer.captureWaterVertices(camera, 12.0, buffer.id(), size, &drawn);
+    std::vector<float> data(size_t(count) * 8);
+    glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
+
+    const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
+    const glm::dmat4 viewProj = camera.projection(double(size.x) / size.y) * camera.viewRelativeTo(origin);
+    std::vector<unsigned> codes(static_cast<size_t>(count));
+    for (size_t v = 0; v < codes.size(); ++v) {
+        const float* p = &data[v * 8 + 2];
+        codes[v] = outcode(viewProj * glm::dvec4(p[0], p[1], p[2], 1.0));
+    }
+    // Drawn triangles, as sorted vertex triples.
+    std::set<std::array<std::uint32_t, 3>> drawnSet;
+    for (size_t t = 0; t + 2 < drawn.size(); t += 3) {
+        std::array<std::uint32_t, 3> tri{drawn[t], drawn[t + 1], drawn[t + 2]};
+        std::sort(tri.begin(), tri.end());
+        drawnSet.insert(tri);
+    }
+    // Every cell's two triangles, whichever diagonal the renderer chose.
+    const auto lines = std::uint32_t(std::lround(std::sqrt(double(count))));
+    int visibleCells = 0, missing = 0;
+    for (std::uint32_t j = 0; j + 1 < lines; ++j)
+        for (std::uint32_t i = 0; i + 1 < lines; ++i) {
+            const std::uint32_t a = j * lines + i, b = a + 1, cc = a + lines, d = cc + 1;
+            if (codes[a] & codes[b] & codes[cc] & codes[d])
+                continue; // wholly outside one plane: may be culled
+            ++visibleCells;
+            const bool found = drawnSet.count({a, b, d}) + drawnSet.count({a, cc, d}) + drawnSet.count({a, b, cc}) +
+                                   drawnSet.count({b, cc, d}) >= 2;
+            missing += found ? 0 : 1;
+        }
+    EXPECT_GT(visibleCells, 100);
+    EXPECT_EQ(missing, 0) << "cells reaching the view but not drawn";
+    // Culling must cull: no camera here sees three quarters of the grid around it.
+    const size_t triangles = 2 * size_t(lines - 1) * (lines - 1);
+    EXPECT_LT(drawnSet.size(), triangles * 3 / 4) << "too few tiles culled";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Views, GridCulling,
+    testing::Values(Case{swell::GridLayout::Geometric, {0.0, 6.0, 0.0}, 0.0, -5.0},
+                    Case{swell::GridLayout::Geometric, {123.4, 2.0, -56.7}, 137.0, -1.0},
+                    Case{swell::GridLayout::Geometric, {-40.0, 60.0, 10.0}, -60.0, -35.0},
+                    Case{swell::GridLayout::Geometric, {5.0e5, 12.0, -3.0e5}, 250.0, 10.0},
+                    Case{swell::GridLayout::Paper, {0.0, 6.0, 0.0}, 45.0, -5.0},
+                    Case{swell::GridLayout::Paper, {-7.0, 25.0, 3.0}, 200.0, -50.0}),
+    [](const testing::TestParamInfo<Case>& view) {
+        return (view.param.layout == swell::GridLayout::Paper ? "Paper" : "Geometric") + std::to_string(view.index);
+    });
+
+} // namespace
