@@ -5,6 +5,7 @@
 #include "render/gpu_types.h"
 #include "render/mesh.h"
 #include "render/render_target.h"
+#include "render/sky_cubemap.h"
 #include "swell/error.h"
 #include "swell/grid.h"
 
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace swell {
@@ -46,10 +48,11 @@ int debugViewDefine(DebugView v)
 }
 
 struct Programs {
-    gl::Program water, sky, mesh, capture;
+    gl::Program water, sky, mesh, capture, skyBake;
 };
 
-// What the world draws: the island, one mesh per scene object, the sky cubemap.
+// What the world draws: the island, one mesh per scene object, the sky
+// cubemap (the user's six images, or the procedural sky baked by render()).
 struct World {
     GpuMesh island;
     std::vector<std::unique_ptr<GpuMesh>> meshes;
@@ -73,6 +76,8 @@ struct Renderer::Impl {
     RenderTarget reflection, refraction, output;
     FrameCounters counters;
     PassObserver* observer = nullptr;
+    // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
+    std::optional<SkyBakeKey> bakedSky;
 
     void notify(bool begin, const char* pass) const
     {
@@ -82,16 +87,15 @@ struct Renderer::Impl {
 
     explicit Impl(RendererOptions options) : sources(std::move(options.shaders)) {}
 
-    // The programs for a scene's variant: its debug view and sky kind.
+    // The programs for a scene's variant: its debug view.
     Programs buildPrograms(const Scene& variant) const
     {
-        const std::vector<std::string> defines{
-            "SWELL_DEBUG_VIEW " + std::to_string(debugViewDefine(variant.debugView)),
-            std::string("SWELL_SKY_CUBEMAP ") + (variant.sky.cubemapFaces.empty() ? "0" : "1")};
+        const std::vector<std::string> defines{"SWELL_DEBUG_VIEW " + std::to_string(debugViewDefine(variant.debugView))};
         Programs p;
         p.water = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}, {GL_FRAGMENT_SHADER, "water.frag"}}, defines);
         p.sky = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}, defines);
         p.mesh = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, defines);
+        p.skyBake = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky_bake.frag"}}, defines);
         p.capture = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, defines,
                                      {"vRestPoint", "vPosition", "vNormal"});
         return p;
@@ -148,11 +152,15 @@ struct Renderer::Impl {
             }
             world.skyCube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
             const int n = faces.front().width;
-            glTextureStorage2D(world.skyCube.id(), 1, GL_SRGB8_ALPHA8, n, n);
+            // A full mip chain: user photos may be far more detailed than the
+            // pixels the sky pass samples them with.
+            const int levels = 1 + int(std::floor(std::log2(double(n))));
+            glTextureStorage2D(world.skyCube.id(), levels, GL_SRGB8_ALPHA8, n, n);
             for (int face = 0; face < 6; ++face)
                 glTextureSubImage3D(world.skyCube.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_UNSIGNED_BYTE,
                                     faces[size_t(face)].rgba.data());
-            glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glGenerateTextureMipmap(world.skyCube.id());
+            glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
             glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         }
         return world;
@@ -313,6 +321,8 @@ struct Renderer::Impl {
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        // Filter across cubemap face edges (off by default even in core profiles).
+        glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
         glClearColor(clear.r, clear.g, clear.b, clear.a);
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -325,6 +335,13 @@ struct Renderer::Impl {
             return;
         glm::dvec3 origin;
         const FrameUniforms base = prepareFrame(camera, time_s, size, origin);
+        // The procedural sky is baked into the cubemap when first needed and
+        // after the sun or sky changed (the bake reads the frame uniforms).
+        if (scene.sky.cubemapFaces.empty() && bakedSky != skyBakeKeyOf(scene)) {
+            bindFrame(PassMain, base);
+            bakeProceduralSky(programs.skyBake, world.skyCube, emptyVao.id());
+            bakedSky = skyBakeKeyOf(scene);
+        }
         const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
         reflection.resize(scaled);
         refraction.resize(scaled);
@@ -392,8 +409,7 @@ void Renderer::setScene(const Scene& scene)
 {
     Impl& s = *impl_;
     const bool first = !s.programs.water;
-    const bool programsChanged = first || scene.debugView != s.scene.debugView ||
-                                 scene.sky.cubemapFaces.empty() != s.scene.sky.cubemapFaces.empty();
+    const bool programsChanged = first || scene.debugView != s.scene.debugView;
     const bool gridChanged = first || scene.grid.resolution != s.scene.grid.resolution ||
                              scene.grid.radius_m != s.scene.grid.radius_m || scene.camera.far_m != s.scene.camera.far_m;
     auto sameObjects = [](const std::vector<SceneObject>& a, const std::vector<SceneObject>& b) {
@@ -419,8 +435,10 @@ void Renderer::setScene(const Scene& scene)
     s.waves = std::move(waves);
     if (programsChanged)
         s.programs = std::move(programs);
-    if (worldChanged)
+    if (worldChanged) {
         s.world = std::move(world);
+        s.bakedSky.reset();
+    }
     if (gridChanged)
         s.buildGrid();
 }
@@ -434,6 +452,7 @@ void Renderer::reloadShaders()
 {
     impl_->sources.forgetCachedFiles();
     impl_->programs = impl_->buildPrograms(impl_->scene);
+    impl_->bakedSky.reset(); // the bake shader may have changed
 }
 
 void Renderer::render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer)
