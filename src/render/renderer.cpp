@@ -56,6 +56,8 @@ struct Programs {
 struct World {
     GpuMesh island;
     std::vector<std::unique_ptr<GpuMesh>> meshes;
+    // Per scene object, the closed volume of its open hull, or null (see drawHullVolumes).
+    std::vector<std::unique_ptr<GpuMesh>> hullVolumes;
     gl::Texture skyCube;
 };
 
@@ -138,10 +140,15 @@ struct Renderer::Impl {
         if (from.showTerrain)
             world.island = GpuMesh(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution));
         for (const SceneObject& o : from.objects) {
-            const MeshData data = o.path.starts_with("builtin:") ? makeBuiltinModel(o.path.substr(8)) : loadGltf(assetPath(o.path));
+            const bool builtin = o.path.starts_with("builtin:");
+            const MeshData data = builtin ? makeBuiltinModel(o.path.substr(8)) : loadGltf(assetPath(o.path));
             if (data.vertices.empty())
                 throw InputError({o.path}, "model has no triangles");
             world.meshes.push_back(std::make_unique<GpuMesh>(data));
+            // User models have no hull volume: a glTF file cannot say which
+            // part of a model is an open hull (docs/RENDERING.md).
+            const MeshData volume = builtin ? makeBuiltinHullVolume(o.path.substr(8)) : MeshData{};
+            world.hullVolumes.push_back(volume.indices.empty() ? nullptr : std::make_unique<GpuMesh>(volume));
         }
         if (!from.sky.cubemapFaces.empty()) {
             std::vector<Image> faces;
@@ -279,6 +286,26 @@ struct Renderer::Impl {
         }
     }
 
+    // Pass 3's clean intersections: each open hull's closed volume is drawn
+    // into depth only, after the world and before the water. Its outer surface
+    // coincides with the hull's, so only its lid at the gunwale changes the
+    // depth buffer: a ray into the open hull meets the lid before the water
+    // inside, and that water fails the depth test. (The reflection and
+    // refraction passes draw no water, so they need no mask.)
+    void drawHullVolumes(glm::dvec3 origin, double time_s)
+    {
+        glUseProgram(programs.mesh.id());
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        for (size_t i = 0; i < world.hullVolumes.size(); ++i)
+            if (world.hullVolumes[i]) {
+                const glm::mat4 model(objectModel(scene.objects[i], origin, time_s));
+                glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));
+                world.hullVolumes[i]->draw();
+                ++counters.drawCalls;
+            }
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+
     void drawSky()
     {
         glUseProgram(programs.sky.id());
@@ -382,6 +409,7 @@ struct Renderer::Impl {
         beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin, time_s);
         drawSky();
+        drawHullVolumes(origin, time_s);
         notify(true, "water");
         drawWater();
         notify(false, "water");
