@@ -154,8 +154,12 @@ struct Renderer::Impl {
             std::vector<Image> faces;
             for (const std::string& f : from.sky.cubemapFaces) {
                 faces.push_back(readImage(assetPath(f)));
-                if (faces.back().width != faces.back().height || faces.back().width != faces.front().width)
-                    throw InputError({f}, "sky cubemap faces must be square and all the same size");
+                const Image& face = faces.back();
+                if (face.width != face.height || face.width != faces.front().width)
+                    throw InputError({assetPath(f).string()},
+                                     "sky cubemap face is " + std::to_string(face.width) + "x" + std::to_string(face.height) +
+                                         "; faces must be square and all the size of the first (" +
+                                         std::to_string(faces.front().width) + "x" + std::to_string(faces.front().width) + ")");
             }
             world.skyCube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
             const int n = faces.front().width;
