@@ -7,9 +7,9 @@
 layout(binding = SWELL_UNIT_SKY) uniform samplerCube skyCube;
 
 // The sun's disc (about 0.5 degrees, softened), 20 times the sky's brightness.
-// It stays analytic: at 1280x720 it is six pixels across, while a cubemap
-// texel of the baked sky is a quarter of a degree, so a baked disc would be a
-// blurred square two texels wide.
+// It stays analytic: at 1280x720 with a 60-degree field of view its core is
+// six pixels across, while a texel of the baked sky is about a third of a
+// degree, so a baked disc would be a blurred blob two or three texels wide.
 vec3 sunDisc(vec3 d)
 {
     float disk = smoothstep(0.99996, 0.99999, dot(d, sunDirection.xyz));
