@@ -11,5 +11,5 @@ void main()
     vec4 far = passInvViewProj * vec4(vNdc, 1.0, 1.0);
     vec4 near = passInvViewProj * vec4(vNdc, -1.0, 1.0);
     vec3 direction = normalize(far.xyz / far.w - near.xyz / near.w);
-    fragColor = passOutput(applyFog(skyRadiance(direction), skyDistance(direction)));
+    fragColor = passOutput(applyFog(skyRadianceFiltered(direction), skyDistance(direction)));
 }

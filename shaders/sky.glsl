@@ -1,27 +1,35 @@
-// The built-in procedural sky (gradient and sun), and the cubemap sky.
+// The sky as every pass sees it: a cubemap (the procedural sky baked at start,
+// or the user's six images) plus the sun's disc drawn analytically on top.
 #ifndef SWELL_SKY_GLSL
 #define SWELL_SKY_GLSL
 #include "frame.glsl"
 
 layout(binding = SWELL_UNIT_SKY) uniform samplerCube skyCube;
 
+// The sun's disc (about 0.5 degrees, softened), 20 times the sky's brightness.
+// It stays analytic: at 1280x720 with a 60-degree field of view its core is
+// six pixels across, while a texel of the baked sky is about a third of a
+// degree, so a baked disc would be a blurred blob two or three texels wide.
+vec3 sunDisc(vec3 d)
+{
+    float disk = smoothstep(0.99996, 0.99999, dot(d, sunDirection.xyz));
+    return sunColor.rgb * sunDirection.w * disk * 20.0;
+}
+
+// Linear sky radiance along a direction, from mip level 0. For callers in
+// non-uniform control flow (the water's reflection lookups), where implicit
+// derivatives, and so automatic mip selection, are undefined.
 vec3 skyRadiance(vec3 direction)
 {
     vec3 d = normalize(direction);
-#if SWELL_SKY_CUBEMAP
-    vec3 color = texture(skyCube, d).rgb;
-#else
-    float elevation = clamp(d.y, 0.0, 1.0);
-    vec3 color = mix(skyHorizon.rgb, skyZenith.rgb, pow(elevation, 0.45));
-    // Below the horizon the sky shows the horizon colour (the reflection
-    // pass can look there through wave slopes).
-    if (d.y < 0.0)
-        color = skyHorizon.rgb;
-#endif
-    // Sun disk (about 0.5 degrees, softened) and a glow around it.
-    float cosToSun = dot(d, sunDirection.xyz);
-    float disk = smoothstep(0.99996, 0.99999, cosToSun);
-    float glow = pow(max(cosToSun, 0.0), 200.0) * 0.35 + pow(max(cosToSun, 0.0), 8.0) * 0.12;
-    return color + sunColor.rgb * sunDirection.w * (disk * 20.0 + glow);
+    return textureLod(skyCube, d, 0.0).rgb + sunDisc(d);
+}
+
+// The same with the mip level chosen from the pixel's footprint, for the sky
+// pass (uniform control flow), so a detailed user cubemap does not alias.
+vec3 skyRadianceFiltered(vec3 direction)
+{
+    vec3 d = normalize(direction);
+    return texture(skyCube, d).rgb + sunDisc(d);
 }
 #endif

@@ -75,6 +75,15 @@ void addLathe(MeshData& mesh, const std::vector<glm::vec2>& profile, int segment
         }
 }
 
+// The built-in boat's hull profile, (radius, height) in m from the keel up to
+// the gunwale at 0.6 m, and its stretch into a 7 m x 2.2 m boat.
+std::vector<glm::vec2> boatProfile()
+{
+    return {{0.0f, -0.6f}, {0.6f, -0.55f}, {0.95f, -0.2f}, {1.0f, 0.5f}, {0.98f, 0.6f}};
+}
+constexpr glm::vec3 kBoatStretch{3.5f, 1.0f, 1.1f};
+constexpr int kBoatSegments = 32;
+
 } // namespace
 
 MeshData makeIsland(double size_m, double peak_m, int resolution)
@@ -135,14 +144,30 @@ MeshData makeBuiltinModel(const std::string& name)
         }
     } else if (name == "boat") {
         // A 7 m open boat: a hull of revolution, flattened across, white above a dark bottom.
-        std::vector<glm::vec2> profile{{0.0f, -0.6f}, {0.6f, -0.55f}, {0.95f, -0.2f}, {1.0f, 0.5f}, {0.98f, 0.6f}};
-        addLathe(mesh, profile, 32, [](float y) {
+        addLathe(mesh, boatProfile(), kBoatSegments, [](float y) {
             return y < 0.0f ? glm::vec3(0.12f, 0.16f, 0.25f) : glm::vec3(0.88f, 0.86f, 0.80f);
         });
         for (MeshVertex& v : mesh.vertices)
-            v.position *= glm::vec3(3.5f, 1.0f, 1.1f);
+            v.position *= kBoatStretch;
     }
     addTriangleNormals(mesh);
+    return mesh;
+}
+
+MeshData makeBuiltinHullVolume(const std::string& name)
+{
+    MeshData mesh;
+    if (name == "boat") {
+        // The boat's own hull, with the same rings, closed by a lid at the
+        // gunwale: its outer surface coincides with the boat's, so the lid
+        // is the only part that can change the depth buffer.
+        std::vector<glm::vec2> profile = boatProfile();
+        profile.push_back({0.0f, profile.back().y});
+        addLathe(mesh, profile, kBoatSegments, [](float) { return glm::vec3(0.0f); });
+        for (MeshVertex& v : mesh.vertices)
+            v.position *= kBoatStretch;
+        addTriangleNormals(mesh);
+    }
     return mesh;
 }
 

@@ -30,6 +30,11 @@ MeshData makeIsland(double size_m, double peak_m, int resolution);
 // Built-in models by name ("buoy", "boat", "rock"); empty data for unknown names.
 MeshData makeBuiltinModel(const std::string& name);
 
+// The closed volume a built-in model's open hull encloses, from the keel up to
+// the gunwale ("boat"); empty for models with no open hull. The renderer draws
+// it into depth only before the water, so no water shows inside the hull.
+MeshData makeBuiltinHullVolume(const std::string& name);
+
 // Loads every mesh of a glTF 2.0 file (.gltf or .glb) into one MeshData, with
 // node transforms applied. Throws swell::InputError naming the file and problem.
 MeshData loadGltf(const std::filesystem::path& path);

@@ -5,6 +5,7 @@
 #include "render/gpu_types.h"
 #include "render/mesh.h"
 #include "render/render_target.h"
+#include "render/sky_cubemap.h"
 #include "render/water_grid.h"
 #include "swell/error.h"
 #include "swell/grid.h"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace swell {
@@ -47,13 +49,16 @@ int debugViewDefine(DebugView v)
 }
 
 struct Programs {
-    gl::Program water, sky, mesh, capture;
+    gl::Program water, sky, mesh, capture, skyBake;
 };
 
-// What the world draws: the island, one mesh per scene object, the sky cubemap.
+// What the world draws: the island, one mesh per scene object, the sky
+// cubemap (the user's six images, or the procedural sky baked by render()).
 struct World {
     GpuMesh island;
     std::vector<std::unique_ptr<GpuMesh>> meshes;
+    // Per scene object, the closed volume of its open hull, or null (see drawHullVolumes).
+    std::vector<std::unique_ptr<GpuMesh>> hullVolumes;
     gl::Texture skyCube;
 };
 
@@ -74,6 +79,8 @@ struct Renderer::Impl {
     RenderTarget reflection, refraction, output;
     FrameCounters counters;
     PassObserver* observer = nullptr;
+    // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
+    std::optional<SkyBakeKey> bakedSky;
 
     void notify(bool begin, const char* pass) const
     {
@@ -83,16 +90,15 @@ struct Renderer::Impl {
 
     explicit Impl(RendererOptions options) : sources(std::move(options.shaders)) {}
 
-    // The programs for a scene's variant: its debug view and sky kind.
+    // The programs for a scene's variant: its debug view.
     Programs buildPrograms(const Scene& variant) const
     {
-        const std::vector<std::string> defines{
-            "SWELL_DEBUG_VIEW " + std::to_string(debugViewDefine(variant.debugView)),
-            std::string("SWELL_SKY_CUBEMAP ") + (variant.sky.cubemapFaces.empty() ? "0" : "1")};
+        const std::vector<std::string> defines{"SWELL_DEBUG_VIEW " + std::to_string(debugViewDefine(variant.debugView))};
         Programs p;
         p.water = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}, {GL_FRAGMENT_SHADER, "water.frag"}}, defines);
         p.sky = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}, defines);
         p.mesh = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, defines);
+        p.skyBake = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky_bake.frag"}}, defines);
         p.capture = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, defines,
                                      {"vRestPoint", "vPosition", "vNormal"});
         return p;
@@ -117,25 +123,38 @@ struct Renderer::Impl {
         if (from.showTerrain)
             world.island = GpuMesh(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution));
         for (const SceneObject& o : from.objects) {
-            const MeshData data = o.path.starts_with("builtin:") ? makeBuiltinModel(o.path.substr(8)) : loadGltf(assetPath(o.path));
+            const bool builtin = o.path.starts_with("builtin:");
+            const MeshData data = builtin ? makeBuiltinModel(o.path.substr(8)) : loadGltf(assetPath(o.path));
             if (data.vertices.empty())
                 throw InputError({o.path}, "model has no triangles");
             world.meshes.push_back(std::make_unique<GpuMesh>(data));
+            // User models have no hull volume: a glTF file cannot say which
+            // part of a model is an open hull (docs/RENDERING.md).
+            const MeshData volume = builtin ? makeBuiltinHullVolume(o.path.substr(8)) : MeshData{};
+            world.hullVolumes.push_back(volume.indices.empty() ? nullptr : std::make_unique<GpuMesh>(volume));
         }
         if (!from.sky.cubemapFaces.empty()) {
             std::vector<Image> faces;
             for (const std::string& f : from.sky.cubemapFaces) {
                 faces.push_back(readImage(assetPath(f)));
-                if (faces.back().width != faces.back().height || faces.back().width != faces.front().width)
-                    throw InputError({f}, "sky cubemap faces must be square and all the same size");
+                const Image& face = faces.back();
+                if (face.width != face.height || face.width != faces.front().width)
+                    throw InputError({assetPath(f).string()},
+                                     "sky cubemap face is " + std::to_string(face.width) + "x" + std::to_string(face.height) +
+                                         "; faces must be square and all the size of the first (" +
+                                         std::to_string(faces.front().width) + "x" + std::to_string(faces.front().width) + ")");
             }
             world.skyCube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
             const int n = faces.front().width;
-            glTextureStorage2D(world.skyCube.id(), 1, GL_SRGB8_ALPHA8, n, n);
+            // A full mip chain: user photos may be far more detailed than the
+            // pixels the sky pass samples them with.
+            const int levels = 1 + int(std::floor(std::log2(double(n))));
+            glTextureStorage2D(world.skyCube.id(), levels, GL_SRGB8_ALPHA8, n, n);
             for (int face = 0; face < 6; ++face)
                 glTextureSubImage3D(world.skyCube.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_UNSIGNED_BYTE,
                                     faces[size_t(face)].rgba.data());
-            glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glGenerateTextureMipmap(world.skyCube.id());
+            glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
             glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         }
         return world;
@@ -260,6 +279,26 @@ struct Renderer::Impl {
         }
     }
 
+    // Pass 3's clean intersections: each open hull's closed volume is drawn
+    // into depth only, after the world and before the water. Its outer surface
+    // coincides with the hull's, so only its lid at the gunwale changes the
+    // depth buffer: a ray into the open hull meets the lid before the water
+    // inside, and that water fails the depth test. (The reflection and
+    // refraction passes draw no water, so they need no mask.)
+    void drawHullVolumes(glm::dvec3 origin, double time_s)
+    {
+        glUseProgram(programs.mesh.id());
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        for (size_t i = 0; i < world.hullVolumes.size(); ++i)
+            if (world.hullVolumes[i]) {
+                const glm::mat4 model(objectModel(scene.objects[i], origin, time_s));
+                glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));
+                world.hullVolumes[i]->draw();
+                ++counters.drawCalls;
+            }
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+
     void drawSky()
     {
         glUseProgram(programs.sky.id());
@@ -301,6 +340,8 @@ struct Renderer::Impl {
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        // Filter across cubemap face edges (off by default even in core profiles).
+        glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
         glClearColor(clear.r, clear.g, clear.b, clear.a);
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -313,6 +354,13 @@ struct Renderer::Impl {
             return;
         glm::dvec3 origin;
         const FrameUniforms base = prepareFrame(camera, time_s, size, origin);
+        // The procedural sky is baked into the cubemap when first needed and
+        // after the sun or sky changed (the bake reads the frame uniforms).
+        if (scene.sky.cubemapFaces.empty() && bakedSky != skyBakeKeyOf(scene)) {
+            bindFrame(PassMain, base);
+            bakeProceduralSky(programs.skyBake, world.skyCube, emptyVao.id());
+            bakedSky = skyBakeKeyOf(scene);
+        }
         const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
         reflection.resize(scaled);
         refraction.resize(scaled);
@@ -353,6 +401,7 @@ struct Renderer::Impl {
         beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin, time_s);
         drawSky();
+        drawHullVolumes(origin, time_s);
         notify(true, "water");
         drawWater();
         notify(false, "water");
@@ -380,8 +429,7 @@ void Renderer::setScene(const Scene& scene)
 {
     Impl& s = *impl_;
     const bool first = !s.programs.water;
-    const bool programsChanged = first || scene.debugView != s.scene.debugView ||
-                                 scene.sky.cubemapFaces.empty() != s.scene.sky.cubemapFaces.empty();
+    const bool programsChanged = first || scene.debugView != s.scene.debugView;
     const bool gridChanged = first || scene.grid.layout != s.scene.grid.layout ||
                              scene.grid.resolution != s.scene.grid.resolution ||
                              scene.grid.radius_m != s.scene.grid.radius_m || scene.camera.far_m != s.scene.camera.far_m;
@@ -409,8 +457,10 @@ void Renderer::setScene(const Scene& scene)
     s.reach = waveReach(s.waves);
     if (programsChanged)
         s.programs = std::move(programs);
-    if (worldChanged)
+    if (worldChanged) {
         s.world = std::move(world);
+        s.bakedSky.reset();
+    }
     if (gridChanged)
         s.buildGrid();
 }
@@ -424,6 +474,7 @@ void Renderer::reloadShaders()
 {
     impl_->sources.forgetCachedFiles();
     impl_->programs = impl_->buildPrograms(impl_->scene);
+    impl_->bakedSky.reset(); // the bake shader may have changed
 }
 
 void Renderer::render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer)

@@ -1,0 +1,29 @@
+// Renders one face of the procedural sky cubemap (drawn with fullscreen.vert
+// into a face of the cubemap; see src/render/sky_cubemap.cpp).
+#include "frame.glsl"
+#include "sky_procedural.glsl"
+
+layout(location = 0) uniform int face; // 0..5: +x, -x, +y, -y, +z, -z
+
+in vec2 vNdc;
+out vec4 fragColor;
+
+// The direction of the texel at face coordinates (s, t) in -1..1: the inverse
+// of the OpenGL cube map face selection table (spec 8.13). Window x and y of
+// a face attachment are its s and t.
+vec3 faceDirection(int f, vec2 st)
+{
+    float s = st.x, t = st.y;
+    if (f == 0) return vec3(1.0, -t, -s);
+    if (f == 1) return vec3(-1.0, -t, s);
+    if (f == 2) return vec3(s, 1.0, t);
+    if (f == 3) return vec3(s, -1.0, -t);
+    if (f == 4) return vec3(s, -t, 1.0);
+    return vec3(-s, -t, -1.0);
+}
+
+void main()
+{
+    // Linear radiance: the cubemap is half-float, as the glow can exceed 1.
+    fragColor = vec4(proceduralSky(normalize(faceDirection(face, vNdc))), 1.0);
+}

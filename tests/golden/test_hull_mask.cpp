@@ -1,0 +1,103 @@
+// Pass 3's clean intersections: seen from above, no water shows inside the
+// floating boat's open hull, because the hull's closed volume is drawn into
+// depth before the water. The control is the same hull loaded as a user glTF
+// model, which has no hull volume: there the water does show, so the check
+// finds water where there is some.
+#include "core/mesh_data.h"
+#include "support/camera_rays.h"
+#include "support/gl_test.h"
+#include "support/gltf_writer.h"
+#include "support/golden.h"
+#include "swell/renderer.h"
+
+#include <filesystem>
+
+namespace {
+
+class HullMask : public swell::test::GlTest {};
+
+constexpr glm::ivec2 kSize{320, 240};
+constexpr double kTime_s = 7.0;
+// The built-in boat's gunwale (src/core/mesh_data.cpp): 0.6 m above its
+// origin, an ellipse of semi-axes 0.98 * 3.5 m along x and 0.98 * 1.1 m along z.
+constexpr double kGunwaleHeight_m = 0.6;
+constexpr double kGunwaleHalfLength_m = 0.98 * 3.5, kGunwaleHalfWidth_m = 0.98 * 1.1;
+
+// A floating boat in wind waves, the camera 12 m above it looking down. The
+// water is painted a green no hull or sky has (deep colour pure green, light
+// absorbed within centimetres, no sun glitter), so water pixels are easy to tell.
+swell::Scene boatFromAbove(const std::string& boatPath)
+{
+    swell::Scene scene = swell::defaultScene();
+    scene.showTerrain = false;
+    scene.fog.start_m = 1.0e5;
+    scene.fog.end_m = 2.0e5;
+    scene.sun.intensity = 0.0;
+    scene.water.deepColor = {0.0, 1.0, 0.0};
+    scene.water.absorption_per_m = {50.0, 50.0, 50.0};
+    scene.objects = {{boatPath, {0.0, 0.0, 0.0}, 0.0, 1.0, true}};
+    scene.camera.position_m = {0.0, 12.0, 0.5};
+    scene.camera.pitch_deg = -85.0;
+    return scene;
+}
+
+bool isWaterGreen(const std::uint8_t* p) { return p[1] > p[0] + 80 && p[1] > p[2] + 80; }
+
+struct Count {
+    int inside = 0, water = 0;
+};
+
+// Water-green pixels among those whose ray crosses the gunwale's plane within
+// 75% of its ellipse: rays that enter the open hull. The boat's tilt (at most
+// half the wave slope, a few degrees here) moves the gunwale by centimetres;
+// the 25% margin is over 25 cm across.
+Count waterInsideHull(const swell::Renderer& renderer, const swell::Camera& camera, const swell::Image& image)
+{
+    const double gunwaleY = swell::heightAt(renderer.waves(), {0.0, 0.0}, kTime_s) + kGunwaleHeight_m;
+    Count count;
+    for (int y = 0; y < kSize.y; ++y)
+        for (int x = 0; x < kSize.x; ++x) {
+            const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+            const glm::dvec3 p = camera.position_m + d * ((gunwaleY - camera.position_m.y) / d.y);
+            const double u = p.x / kGunwaleHalfLength_m, v = p.z / kGunwaleHalfWidth_m;
+            if (u * u + v * v > 0.75 * 0.75)
+                continue;
+            ++count.inside;
+            count.water += isWaterGreen(image.pixel(x, y));
+        }
+    return count;
+}
+
+TEST_F(HullMask, NoWaterInsideTheFloatingBuiltinBoat)
+{
+    const swell::Scene scene = boatFromAbove("builtin:boat");
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
+    const swell::Image image = renderer.renderImage(camera, kTime_s, kSize);
+    const std::string path = swell::test::saveTestImage(image, "hull_mask_builtin_boat");
+    // The water outside is green, or the colour test means nothing.
+    EXPECT_TRUE(isWaterGreen(image.pixel(8, 8))) << path;
+    const Count c = waterInsideHull(renderer, camera, image);
+    // The hull opening is about 90 x 28 pixels here.
+    EXPECT_GT(c.inside, 1000) << "the hull opening is not where the test expects it: " << path;
+    EXPECT_EQ(c.water, 0) << "water shows inside the hull: " << path;
+}
+
+TEST_F(HullMask, WaterShowsInsideTheSameHullWithoutAVolume)
+{
+    const std::filesystem::path folder = std::filesystem::path(SWELL_TEST_OUTPUT_DIR) / "hull_mask";
+    std::filesystem::create_directories(folder);
+    swell::test::writeGltf(swell::detail::makeBuiltinModel("boat"), folder / "open_boat.gltf");
+    swell::Scene scene = boatFromAbove("open_boat.gltf");
+    scene.assetFolder = folder.string();
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
+    const swell::Image image = renderer.renderImage(camera, kTime_s, kSize);
+    const std::string path = swell::test::saveTestImage(image, "hull_mask_user_gltf_boat");
+    const Count c = waterInsideHull(renderer, camera, image);
+    // The boat floats with its origin on the water, 0.6 m above its keel, so
+    // without a mask most of the opening shows water.
+    EXPECT_GT(c.water, c.inside / 2) << "expected water inside an unmasked hull: " << path;
+}
+
+} // namespace

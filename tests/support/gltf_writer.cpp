@@ -1,0 +1,104 @@
+#include "support/gltf_writer.h"
+
+#include <glm/common.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace swell::test {
+
+namespace {
+
+std::string base64(const std::vector<std::uint8_t>& data)
+{
+    static const char* chars = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < data.size(); i += 3) {
+        const std::uint32_t n = std::uint32_t(data[i]) << 16 | (i + 1 < data.size() ? data[i + 1] << 8 : 0) |
+                                (i + 2 < data.size() ? data[i + 2] : 0);
+        out += chars[n >> 18 & 63];
+        out += chars[n >> 12 & 63];
+        out += i + 1 < data.size() ? chars[n >> 6 & 63] : '=';
+        out += i + 2 < data.size() ? chars[n & 63] : '=';
+    }
+    return out;
+}
+
+template <class T>
+void appendRaw(std::vector<std::uint8_t>& out, const T& value)
+{
+    std::uint8_t bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    out.insert(out.end(), bytes, bytes + sizeof(T));
+}
+
+} // namespace
+
+void writeGltf(const detail::MeshData& mesh, const std::filesystem::path& path)
+{
+    using nlohmann::json;
+    // Layout: positions, normals, colours (each n * 12 bytes), then indices.
+    std::vector<std::uint8_t> buffer;
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const detail::MeshVertex& v : mesh.vertices) {
+        appendRaw(buffer, v.position);
+        lo = glm::min(lo, v.position);
+        hi = glm::max(hi, v.position);
+    }
+    for (const detail::MeshVertex& v : mesh.vertices)
+        appendRaw(buffer, v.normal);
+    for (const detail::MeshVertex& v : mesh.vertices)
+        appendRaw(buffer, v.color);
+    for (std::uint32_t i : mesh.indices)
+        appendRaw(buffer, i);
+    const std::size_t n = mesh.vertices.size(), attribute = n * 12;
+    json views = json::array();
+    for (int a = 0; a < 3; ++a)
+        views.push_back({{"buffer", 0}, {"byteOffset", a * attribute}, {"byteLength", attribute}});
+    views.push_back({{"buffer", 0}, {"byteOffset", 3 * attribute}, {"byteLength", mesh.indices.size() * 4}});
+    json accessors = json::array();
+    for (int a = 0; a < 3; ++a) {
+        json accessor{{"bufferView", a}, {"componentType", 5126}, {"count", n}, {"type", "VEC3"}};
+        if (a == 0) {
+            accessor["min"] = {lo.x, lo.y, lo.z};
+            accessor["max"] = {hi.x, hi.y, hi.z};
+        }
+        accessors.push_back(accessor);
+    }
+    accessors.push_back({{"bufferView", 3}, {"componentType", 5125}, {"count", mesh.indices.size()}, {"type", "SCALAR"}});
+    const json gltf{
+        {"asset", {{"version", "2.0"}}},
+        {"scene", 0},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"nodes", {{{"mesh", 0}}}},
+        {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"COLOR_0", 2}}}, {"indices", 3}}}}}}},
+        {"buffers", {{{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}}}},
+        {"bufferViews", views},
+        {"accessors", accessors},
+    };
+    std::ofstream(path) << gltf.dump(1);
+}
+
+detail::MeshData makeBox(float halfSize_m, glm::vec3 color)
+{
+    detail::MeshData mesh;
+    for (int axis = 0; axis < 3; ++axis)
+        for (float sign : {-1.0f, 1.0f}) {
+            glm::vec3 n(0.0f);
+            n[axis] = sign;
+            // Two tangents with u x v = n, so the triangles wind counter-clockwise seen from outside.
+            glm::vec3 u(0.0f), v(0.0f);
+            u[(axis + 1) % 3] = 1.0f;
+            v[(axis + 2) % 3] = sign;
+            const auto base = std::uint32_t(mesh.vertices.size());
+            for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
+                mesh.vertices.push_back({(n + u * c.x + v * c.y) * halfSize_m, n, color});
+            mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        }
+    return mesh;
+}
+
+} // namespace swell::test

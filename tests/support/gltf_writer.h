@@ -1,0 +1,18 @@
+// Writes a mesh as a small glTF 2.0 file (one buffer embedded as a data URI;
+// POSITION, NORMAL and COLOR_0 as float VEC3, u32 indices), so tests can place
+// a model of known shape and colour through a scene file.
+#pragma once
+
+#include "core/mesh_data.h"
+
+#include <filesystem>
+
+namespace swell::test {
+
+void writeGltf(const detail::MeshData& mesh, const std::filesystem::path& path);
+
+// An axis-aligned box centred on the origin, half-size halfSize_m, one flat
+// colour (linear RGB), with outward normals.
+detail::MeshData makeBox(float halfSize_m, glm::vec3 color);
+
+} // namespace swell::test
