@@ -27,7 +27,8 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     vec4 gridCenter;        // xz: grid centre relative to the render origin, m
     vec4 gridLayout;        // x: 0 geometric, 1 paper; y: inner scale r0 times the scale, m; z: growth k; w: scale
     vec4 snapOffsets[SWELL_GRID_LEVELS]; // xy: grid centre (absolute) modulo each level's snap step, m; z: first ring of the level (geometric)
-    vec4 reflectionParams;  // x: fixed distance, m; y: clip offset, m; z: mode (0 fixed, 1 ray march)
+    vec4 reflectionParams;  // x: fixed distance, m; y: clip offset, m; z: mode (0 fixed, 1 ray march); w: world boxes in use (-1: unbounded)
+    vec4 worldBoxes[2 * SWELL_MAX_WORLD_BOXES]; // min.xyz, max.xyz of boxes holding all world geometry, relative to the render origin, m
     vec4 viewport;          // xy: size in pixels, zw: 1 / size
     vec4 passFlags;         // x: 1 when this pass writes display colours (sRGB), 0 for linear targets
 };

@@ -39,20 +39,45 @@ vec3 reflectFixedDistance(vec3 surface, vec3 direction)
     return lookupWithFallback(p.xy, direction);
 }
 
+const float kOffTexture = -2e9;
+
 // How far (m) the mirrored ray point at distance t lies behind the mirrored
-// world seen in the same texel; negative in front. Sets uv. Large when nothing is there.
+// world seen in the same texel; negative in front. Sets uv. Very negative when nothing is there (kOffTexture off the texture).
 float behindScene(vec3 surface, vec3 direction, float t, out vec2 uv)
 {
     vec3 ray = surface + direction * t;
     vec3 p = projectMirrored(ray);
     uv = p.xy;
     if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0))) || p.z >= 1.0)
-        return -1e9;
+        return kOffTexture;
     float sceneDepth = texture(reflectionDepth, p.xy).r;
     if (sceneDepth >= 1.0)
         return -1e9;
     vec3 mirroredRay = vec3(ray.x, -ray.y, ray.z);
     return distance(eyePosition.xyz, mirroredRay) - distance(eyePosition.xyz, worldFromScreen(p.xy, sceneDepth));
+}
+
+// The distances along the ray from surface where it is inside any world box
+// (x: first entry, y: last exit; x > y when it misses them all).
+vec2 worldSpan(vec3 surface, vec3 direction)
+{
+    int boxes = int(reflectionParams.w);
+    if (boxes < 0)
+        return vec2(0.0, 1e30);
+    // Axis-parallel components would divide by zero: nudge them.
+    vec3 d = mix(direction, vec3(1e-7), lessThan(abs(direction), vec3(1e-7)));
+    vec3 inverse = 1.0 / d;
+    vec2 span = vec2(1e30, -1e30);
+    for (int b = 0; b < boxes; ++b) {
+        vec3 t0 = (worldBoxes[2 * b].xyz - surface) * inverse;
+        vec3 t1 = (worldBoxes[2 * b + 1].xyz - surface) * inverse;
+        vec3 near = min(t0, t1), far = max(t0, t1);
+        float enter = max(max(near.x, near.y), max(near.z, 0.0));
+        float exit = min(min(far.x, far.y), far.z);
+        if (enter <= exit)
+            span = vec2(min(span.x, enter), max(span.y, exit));
+    }
+    return span;
 }
 
 // March the reflected ray against the reflection depth buffer: geometric
@@ -64,11 +89,19 @@ vec3 reflectRayMarch(vec3 surface, vec3 direction)
 {
     const int steps = 20;
     const float growth = 1.5;
-    float tFront = 0.0;
-    float t = 0.5;
+    // Only the stretch of the ray inside the world's boxes can meet anything.
+    vec2 span = worldSpan(surface, direction);
+    if (span.x > span.y)
+        return applyFog(skyRadiance(direction), skyDistance(direction));
+    float tFront = span.x;
+    float t = max(0.5, span.x * growth);
     vec2 uv;
-    for (int i = 0; i < steps; ++i) {
+    for (int i = 0; i < steps && tFront <= span.y; ++i) {
         float behind = behindScene(surface, direction, t, uv);
+        // Off the texture or past the far plane: a straight ray's image is a
+        // straight path towards its vanishing point and never comes back.
+        if (behind == kOffTexture)
+            break;
         if (behind >= 0.0) {
             float tBehind = t;
             for (int j = 0; j < 6; ++j) {

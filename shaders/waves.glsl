@@ -5,7 +5,7 @@
 #define SWELL_WAVES_GLSL
 #include "swell/shader_constants.h"
 
-// Mirrored by swell::detail::WaveUniforms.
+// Mirrored by swell::detail::WaveUniforms. Sorted longest wave first.
 layout(std140, binding = SWELL_BINDING_WAVES) uniform Waves {
     vec4 waveShape[SWELL_MAX_WAVES]; // xy: direction of travel (unit), z: wavenumber k, rad/m, w: amplitude, m
     vec4 wavePhase[SWELL_MAX_WAVES]; // x: steepness Q, y: phase at the grid centre and this time, rad, z: wavelength, m
@@ -35,9 +35,13 @@ SurfacePoint gerstnerSum(vec2 restOffset_m, float cellSize_m, float heightScale)
     vec3 tangent = vec3(1.0, 0.0, 0.0);
     vec3 binormal = vec3(0.0, 0.0, 1.0);
     for (int i = 0; i < waveCount.x; ++i) {
+        float weight = waveLodWeight(wavePhase[i].z, cellSize_m);
+        // The waves come longest first: none after this one is resolved either.
+        if (weight <= 0.0)
+            break;
         vec2 d = waveShape[i].xy;
         float k = waveShape[i].z;
-        float amplitude = waveShape[i].w * heightScale * waveLodWeight(wavePhase[i].z, cellSize_m);
+        float amplitude = waveShape[i].w * heightScale * weight;
         float q = wavePhase[i].x;
         float theta = k * dot(d, restOffset_m) + wavePhase[i].y;
         float s = sin(theta);

@@ -10,6 +10,9 @@
 // Snap levels of the LOD grid: level l snaps vertices to multiples of
 // (finest step * 2^l). 24 levels span 0.1 m to over 800 km.
 #define SWELL_GRID_LEVELS 24
+// Boxes that bound the world's geometry for the reflection ray march; a
+// scene with more objects marches every ray.
+#define SWELL_MAX_WORLD_BOXES 16
 
 // Uniform block binding points, fixed so every program agrees without queries.
 #define SWELL_BINDING_FRAME 0

@@ -32,6 +32,7 @@ struct alignas(16) FrameUniforms {
     glm::vec4 gridLayout;
     glm::vec4 snapOffsets[SWELL_GRID_LEVELS];
     glm::vec4 reflectionParams;
+    glm::vec4 worldBoxes[2 * SWELL_MAX_WORLD_BOXES];
     glm::vec4 viewport;
     glm::vec4 passFlags;
 };

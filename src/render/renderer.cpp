@@ -57,6 +57,8 @@ struct Programs {
 struct World {
     GpuMesh island;
     std::vector<std::unique_ptr<GpuMesh>> meshes;
+    // Per scene object, the farthest any vertex lies from the model's origin, m (unscaled).
+    std::vector<double> meshReach_m;
     // Per scene object, the closed volume of its open hull, or null (see drawHullVolumes).
     std::vector<std::unique_ptr<GpuMesh>> hullVolumes;
     gl::Texture skyCube;
@@ -128,6 +130,10 @@ struct Renderer::Impl {
             if (data.vertices.empty())
                 throw InputError({o.path}, "model has no triangles");
             world.meshes.push_back(std::make_unique<GpuMesh>(data));
+            double reach = 0.0;
+            for (const MeshVertex& v : data.vertices)
+                reach = std::max(reach, double(glm::length(v.position)));
+            world.meshReach_m.push_back(reach);
             // User models have no hull volume: a glTF file cannot say which
             // part of a model is an open hull (docs/RENDERING.md).
             const MeshData volume = builtin ? makeBuiltinHullVolume(o.path.substr(8)) : MeshData{};
@@ -164,8 +170,15 @@ struct Renderer::Impl {
     {
         WaveUniforms u{};
         const int count = std::min<int>(int(waves.waves.size()), SWELL_MAX_WAVES);
+        // Longest first: the shaders stop at the first wave their cells or
+        // pixels cannot resolve, since every later one is shorter still.
+        std::vector<const Wave*> order;
+        for (int i = 0; i < count; ++i)
+            order.push_back(&waves.waves[size_t(i)]);
+        std::stable_sort(order.begin(), order.end(),
+                         [](const Wave* a, const Wave* b) { return a->wavelength_m > b->wavelength_m; });
         for (int i = 0; i < count; ++i) {
-            const Wave& w = waves.waves[size_t(i)];
+            const Wave& w = *order[size_t(i)];
             // Exactly the k*d the CPU wave functions use.
             const glm::dvec2 kd = wavenumberVector(w);
             const double k = glm::length(kd);
@@ -177,6 +190,34 @@ struct Renderer::Impl {
         u.waveCount = glm::ivec4(count, 0, 0, 0);
         glNamedBufferSubData(waveUbo.id(), 0, sizeof(u), &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_WAVES, waveUbo.id());
+    }
+
+    // Boxes holding all world geometry, relative to the render origin: a
+    // reflected ray that misses them all can only meet the sky. Objects may
+    // turn and tilt, so each is boxed as a sphere round its origin; floating
+    // ones also rise and fall with the waves. Returns the count, or -1 when
+    // there are more than fit (every ray is then marched).
+    int worldBoxes(glm::dvec3 origin, glm::vec4* boxes) const
+    {
+        std::vector<std::pair<glm::dvec3, glm::dvec3>> list;
+        if (world.island.indexCount() > 0) {
+            const glm::dvec3 half(0.5 * kIslandSize_m, 0.0, 0.5 * kIslandSize_m);
+            list.push_back({kIslandPosition_m - half - glm::dvec3(0.0, 1.0, 0.0),
+                            kIslandPosition_m + half + glm::dvec3(0.0, kIslandPeak_m + 1.0, 0.0)});
+        }
+        for (size_t i = 0; i < world.meshes.size() && i < scene.objects.size(); ++i) {
+            const SceneObject& o = scene.objects[i];
+            const double r = world.meshReach_m[i] * o.scale;
+            const glm::dvec3 pad(r, r + (o.floats ? reach.vertical_m : 0.0), r);
+            list.push_back({o.position_m - pad, o.position_m + pad});
+        }
+        if (list.size() > SWELL_MAX_WORLD_BOXES)
+            return -1;
+        for (size_t b = 0; b < list.size(); ++b) {
+            boxes[2 * b] = vec4Of(list[b].first - origin);
+            boxes[2 * b + 1] = vec4Of(list[b].second - origin);
+        }
+        return int(list.size());
     }
 
     // The uniforms shared by every pass; pass-specific fields are set by the caller.
@@ -211,8 +252,9 @@ struct Renderer::Impl {
                                             grid.scale * gridShape.innerScale_m, gridShape.growth, grid.scale));
         for (int l = 0; l < SWELL_GRID_LEVELS; ++l)
             f.snapOffsets[l] = glm::vec4(glm::dvec4(grid.snapOffsets[size_t(l)], gridShape.levelFirstRing[size_t(l)], 0.0));
+        const int boxes = worldBoxes(origin, f.worldBoxes);
         f.reflectionParams = glm::vec4(glm::dvec4(scene.reflection.fixedDistance_m, scene.reflection.clipOffset_m,
-                                                  scene.reflection.mode == ReflectionMode::RayMarch ? 1.0 : 0.0, 0.0));
+                                                  scene.reflection.mode == ReflectionMode::RayMarch ? 1.0 : 0.0, boxes));
         f.viewport = glm::vec4(float(size.x), float(size.y), 1.0f / float(size.x), 1.0f / float(size.y));
         return f;
     }

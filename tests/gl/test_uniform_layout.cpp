@@ -37,7 +37,7 @@ void main() {
     vec4 s = passViewProj[0] + passInvViewProj[0] + cameraViewProj[0] + cameraInvViewProj[0] + clipPlane
            + eyePosition + sunDirection + sunColor + fogColor + fogRange + skyZenith + skyHorizon + waterDeep
            + waterAbsorption + waterOptics + gridShape + gridFade + gridCenter + gridLayout + snapOffsets[gl_VertexID]
-           + reflectionParams + viewport + passFlags + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
+           + reflectionParams + worldBoxes[gl_VertexID] + viewport + passFlags + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
     gl_Position = s;
 }
 )";
@@ -76,6 +76,7 @@ TEST_F(UniformLayout, FrameAndWaveBlocksMatchTheirCppMirrors)
     SWELL_EXPECT_OFFSET(F, gridLayout);
     EXPECT_EQ(offsetOf(p.id(), "snapOffsets[0]"), GLint(offsetof(F, snapOffsets)));
     SWELL_EXPECT_OFFSET(F, reflectionParams);
+    SWELL_EXPECT_OFFSET(F, worldBoxes);
     SWELL_EXPECT_OFFSET(F, viewport);
     SWELL_EXPECT_OFFSET(F, passFlags);
     EXPECT_EQ(offsetOf(p.id(), "waveShape[0]"), GLint(offsetof(W, waveShape)));
