@@ -9,26 +9,35 @@
 
 namespace swell::detail {
 
-TiledGrid tileGrid(int cells, int tileCells)
+TiledGrid tileGrid(int cells, int tileCells, int blockTiles)
 {
     TiledGrid grid;
     const auto lines = std::uint32_t(cells + 1);
     const auto half = std::uint32_t(cells / 2);
     grid.indices.reserve(size_t(cells) * size_t(cells) * 6);
-    for (int j0 = 0; j0 < cells; j0 += tileCells)
-        for (int i0 = 0; i0 < cells; i0 += tileCells) {
-            GridTile tile{i0, std::min(i0 + tileCells, cells), j0, std::min(j0 + tileCells, cells),
-                          std::uint32_t(grid.indices.size()), 0};
-            for (auto j = std::uint32_t(tile.j0); j < std::uint32_t(tile.j1); ++j)
-                for (auto i = std::uint32_t(tile.i0); i < std::uint32_t(tile.i1); ++i) {
-                    const std::uint32_t a = j * lines + i, b = a + 1, c = a + lines, d = c + 1;
-                    if ((i < half) != (j < half))
-                        grid.indices.insert(grid.indices.end(), {a, c, b, b, c, d});
-                    else
-                        grid.indices.insert(grid.indices.end(), {a, c, d, a, d, b});
+    const int blockCells = tileCells * blockTiles;
+    for (int bj = 0; bj < cells; bj += blockCells)
+        for (int bi = 0; bi < cells; bi += blockCells) {
+            GridTile block{bi, std::min(bi + blockCells, cells), bj, std::min(bj + blockCells, cells),
+                           std::uint32_t(grid.indices.size()), 0, int(grid.tiles.size()), 0};
+            for (int j0 = block.j0; j0 < block.j1; j0 += tileCells)
+                for (int i0 = block.i0; i0 < block.i1; i0 += tileCells) {
+                    GridTile tile{i0, std::min(i0 + tileCells, block.i1), j0, std::min(j0 + tileCells, block.j1),
+                                  std::uint32_t(grid.indices.size())};
+                    for (auto j = std::uint32_t(tile.j0); j < std::uint32_t(tile.j1); ++j)
+                        for (auto i = std::uint32_t(tile.i0); i < std::uint32_t(tile.i1); ++i) {
+                            const std::uint32_t a = j * lines + i, b = a + 1, c = a + lines, d = c + 1;
+                            if ((i < half) != (j < half))
+                                grid.indices.insert(grid.indices.end(), {a, c, b, b, c, d});
+                            else
+                                grid.indices.insert(grid.indices.end(), {a, c, d, a, d, b});
+                        }
+                    tile.indexCount = std::uint32_t(grid.indices.size()) - tile.firstIndex;
+                    grid.tiles.push_back(tile);
                 }
-            tile.indexCount = std::uint32_t(grid.indices.size()) - tile.firstIndex;
-            grid.tiles.push_back(tile);
+            block.indexCount = std::uint32_t(grid.indices.size()) - block.firstIndex;
+            block.tileCount = int(grid.tiles.size()) - block.firstTile;
+            grid.blocks.push_back(block);
         }
     return grid;
 }
@@ -83,16 +92,21 @@ Frustum frustumPlanes(const glm::dmat4& m)
     return {row3 + row0, row3 - row0, row3 + row1, row3 - row1, row3 + row2, row3 - row2};
 }
 
-bool outsideFrustum(const Frustum& frustum, const Bounds& box)
+Containment frustumContains(const Frustum& frustum, const Bounds& box)
 {
+    bool inside = true;
     for (const glm::dvec4& plane : frustum) {
-        // The box's corner farthest along the plane's normal.
-        const glm::dvec3 corner(plane.x >= 0.0 ? box.hi.x : box.lo.x, plane.y >= 0.0 ? box.hi.y : box.lo.y,
-                                plane.z >= 0.0 ? box.hi.z : box.lo.z);
-        if (glm::dot(glm::dvec3(plane), corner) + plane.w < 0.0)
-            return true;
+        // The box's corners farthest along and against the plane's normal.
+        const glm::dvec3 far(plane.x >= 0.0 ? box.hi.x : box.lo.x, plane.y >= 0.0 ? box.hi.y : box.lo.y,
+                             plane.z >= 0.0 ? box.hi.z : box.lo.z);
+        const glm::dvec3 near(plane.x >= 0.0 ? box.lo.x : box.hi.x, plane.y >= 0.0 ? box.lo.y : box.hi.y,
+                              plane.z >= 0.0 ? box.lo.z : box.hi.z);
+        if (glm::dot(glm::dvec3(plane), far) + plane.w < 0.0)
+            return Containment::Outside;
+        if (glm::dot(glm::dvec3(plane), near) + plane.w < 0.0)
+            inside = false;
     }
-    return false;
+    return inside ? Containment::Inside : Containment::Partly;
 }
 
 } // namespace swell::detail

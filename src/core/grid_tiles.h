@@ -17,20 +17,26 @@
 
 namespace swell::detail {
 
-// Cells [i0, i1) x [j0, j1) and where their triangles sit in the index buffer.
+// Cells [i0, i1) x [j0, j1) and where their triangles sit in the index
+// buffer; for a block, also which tiles it holds.
 struct GridTile {
     int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
     std::uint32_t firstIndex = 0, indexCount = 0;
+    int firstTile = 0, tileCount = 0;
 };
 
 // Tiles of up to tileCells x tileCells cells covering a grid of cells x cells,
-// and the grid's triangle indices laid out tile after tile. Each cell is split
-// along the diagonal facing the centre, so the four quadrants mirror each other.
+// grouped in blocks of up to blockTiles x blockTiles tiles, so culling can
+// test a block first and its tiles only when the frustum's edge crosses it.
+// The triangle indices are laid out block by block and, within a block, tile
+// by tile, so a block's tiles are one range. Each cell is split along the
+// diagonal facing the centre, so the four quadrants mirror each other.
 struct TiledGrid {
+    std::vector<GridTile> blocks;
     std::vector<GridTile> tiles;
     std::vector<std::uint32_t> indices;
 };
-TiledGrid tileGrid(int cells, int tileCells);
+TiledGrid tileGrid(int cells, int tileCells, int blockTiles);
 
 // How far waves can move the surface from its rest plane, m: up or down
 // (the sum of amplitudes) and sideways (the sum of Q * amplitude).
@@ -49,8 +55,11 @@ Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const 
 
 // The six planes (a, b, c, d) of a view-projection's clip volume: a point p is
 // inside when dot(plane, (p, 1)) >= 0 for all six (OpenGL clip z in -w..w).
+// A box is Outside when it lies wholly outside one plane (conservative: a box
+// past a corner of the frustum may count as Partly), Inside when wholly inside all.
 using Frustum = std::array<glm::dvec4, 6>;
 Frustum frustumPlanes(const glm::dmat4& viewProj);
-bool outsideFrustum(const Frustum& frustum, const Bounds& box);
+enum class Containment { Outside, Partly, Inside };
+Containment frustumContains(const Frustum& frustum, const Bounds& box);
 
 } // namespace swell::detail

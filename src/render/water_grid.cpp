@@ -6,7 +6,7 @@ namespace swell::detail {
 
 void WaterGrid::build(const GridShape& shape)
 {
-    grid_ = tileGrid(shape.cells, kTileCells);
+    grid_ = tileGrid(shape.cells, kTileCells, kBlockTiles);
     indices_ = gl::Buffer::create();
     glNamedBufferStorage(indices_.id(), GLsizeiptr(grid_.indices.size() * sizeof(std::uint32_t)), grid_.indices.data(), 0);
     vao_ = gl::VertexArray::create();
@@ -24,24 +24,41 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
     counts_.clear();
     offsets_.clear();
     chosenTiles_ = 0;
-    for (const GridTile& tile : grid_.tiles) {
-        Bounds box = tileBounds(shape, placement, tile, reach);
+    auto bounds = [&](const GridTile& t) {
+        Bounds box = tileBounds(shape, placement, t, reach);
         box.lo += centre;
         box.hi += centre;
-        if (outsideFrustum(frustum, box))
+        return box;
+    };
+    for (const GridTile& block : grid_.blocks) {
+        const Containment c = frustumContains(frustum, bounds(block));
+        if (c == Containment::Outside)
             continue;
-        ++chosenTiles_;
-        // Neighbouring tiles are neighbours in the buffer too: merge their ranges.
-        const auto offset = reinterpret_cast<const void*>(std::uintptr_t(tile.firstIndex) * sizeof(std::uint32_t));
-        if (!counts_.empty() &&
-            reinterpret_cast<std::uintptr_t>(offsets_.back()) + std::uintptr_t(counts_.back()) * sizeof(std::uint32_t) ==
-                reinterpret_cast<std::uintptr_t>(offset)) {
-            counts_.back() += int(tile.indexCount);
+        if (c == Containment::Inside) {
+            choose(block.firstIndex, block.indexCount, block.tileCount);
             continue;
         }
-        counts_.push_back(int(tile.indexCount));
-        offsets_.push_back(offset);
+        for (int t = block.firstTile; t < block.firstTile + block.tileCount; ++t) {
+            const GridTile& tile = grid_.tiles[size_t(t)];
+            if (frustumContains(frustum, bounds(tile)) != Containment::Outside)
+                choose(tile.firstIndex, tile.indexCount, 1);
+        }
     }
+}
+
+void WaterGrid::choose(std::uint32_t firstIndex, std::uint32_t indexCount, int tiles)
+{
+    chosenTiles_ += tiles;
+    const auto offset = reinterpret_cast<const void*>(std::uintptr_t(firstIndex) * sizeof(std::uint32_t));
+    // Neighbouring tiles are neighbours in the buffer too: merge their ranges.
+    if (!counts_.empty() &&
+        reinterpret_cast<std::uintptr_t>(offsets_.back()) + std::uintptr_t(counts_.back()) * sizeof(std::uint32_t) ==
+            reinterpret_cast<std::uintptr_t>(offset)) {
+        counts_.back() += int(indexCount);
+        return;
+    }
+    counts_.push_back(int(indexCount));
+    offsets_.push_back(offset);
 }
 
 long long WaterGrid::draw() const

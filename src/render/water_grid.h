@@ -14,9 +14,11 @@ namespace swell::detail {
 
 class WaterGrid {
 public:
-    // Tiles of this many cells a side: small enough that the frustum's edges
-    // waste few triangles, large enough that culling costs little on the CPU.
-    static constexpr int kTileCells = 4;
+    // Tiles of this many cells a side: small, so the frustum's edges waste
+    // few triangles; blocks of kBlockTiles x kBlockTiles tiles are tested
+    // first, so the CPU tests the small tiles only along the frustum's edges.
+    static constexpr int kTileCells = 2;
+    static constexpr int kBlockTiles = 4;
 
     void build(const GridShape& shape);
 
@@ -36,6 +38,10 @@ public:
     int chosenTileCount() const { return chosenTiles_; }
 
 private:
+    // Adds a range of the index buffer to the draw, merged with the last one
+    // when they touch.
+    void choose(std::uint32_t firstIndex, std::uint32_t indexCount, int tiles);
+
     TiledGrid grid_;
     gl::Buffer indices_;
     gl::VertexArray vao_;
