@@ -43,7 +43,7 @@ enum class GridLayout {
 // recreates the grid's index buffer.
 struct GridSettings {
     GridLayout layout = GridLayout::Geometric;
-    int resolution = 129;       // vertices along each side, 16..2048
+    int resolution = 121;       // vertices along each side, 16..2048
     double radius_m = 2000.0;   // half-size of the detailed grid around the camera, m, 10..100000
     // Wave height fades to zero between these distances from the camera, m (Earth-curvature trick).
     double fadeStart_m = 800.0;
