@@ -2,6 +2,7 @@
 // files written here, and hostile files that must fail with an InputError
 // naming the file and the problem, never crash.
 #include "core/mesh_data.h"
+#include "support/base64.h"
 
 #include "swell/error.h"
 
@@ -65,20 +66,7 @@ void pad4(Bytes& out)
         out.push_back(0);
 }
 
-std::string base64(const Bytes& data)
-{
-    static const char* chars = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < data.size(); i += 3) {
-        const std::uint32_t n = std::uint32_t(data[i]) << 16 | (i + 1 < data.size() ? data[i + 1] << 8 : 0) |
-                                (i + 2 < data.size() ? data[i + 2] : 0);
-        out += chars[n >> 18 & 63];
-        out += chars[n >> 12 & 63];
-        out += i + 1 < data.size() ? chars[n >> 6 & 63] : '=';
-        out += i + 2 < data.size() ? chars[n & 63] : '=';
-    }
-    return out;
-}
+using swell::test::base64;
 
 // A glTF document and the bytes of its buffer 0.
 struct Model {

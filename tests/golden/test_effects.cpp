@@ -1,5 +1,6 @@
 // Each shading effect on a fixed scene: an analytic check that a wrong
 // implementation breaks, then a golden image of the scene as judged by eye.
+#include "support/stage.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "swell/renderer.h"
@@ -19,14 +20,8 @@ constexpr glm::ivec2 kSize{320, 240};
 // Still water, no island, a clear sky: the stage for each effect.
 swell::Scene stillWater()
 {
-    swell::Scene scene = swell::defaultScene();
-    scene.waves.wind.reset();
-    scene.waves.listed.waves.clear();
-    scene.showTerrain = false;
-    scene.objects.clear();
+    swell::Scene scene = swell::test::emptyStage();
     scene.reflection.resolutionScale = 1.0;
-    scene.fog.start_m = 1.0e5;
-    scene.fog.end_m = 2.0e5;
     return scene;
 }
 

@@ -2,6 +2,7 @@
 // renderer draws must equal the formula in shaders/sky_procedural.glsl along
 // every direction (so the faces are oriented and placed right), and must
 // follow the sun and sky colours when they change.
+#include "support/stage.h"
 #include "support/camera_rays.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
@@ -26,14 +27,7 @@ constexpr glm::ivec2 kSize{320, 240};
 // No waves, island or objects, and fog far away: only sky above the horizon.
 swell::Scene clearSky()
 {
-    swell::Scene scene = swell::defaultScene();
-    scene.waves.wind.reset();
-    scene.waves.listed.waves.clear();
-    scene.showTerrain = false;
-    scene.objects.clear();
-    scene.fog.start_m = 1.0e5;
-    scene.fog.end_m = 2.0e5;
-    return scene;
+    return swell::test::emptyStage();
 }
 
 // The procedural sky with the sun's disc, linear (sky_procedural.glsl and sky.glsl).

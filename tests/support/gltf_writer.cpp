@@ -1,5 +1,7 @@
 #include "support/gltf_writer.h"
 
+#include "support/base64.h"
+
 #include <glm/common.hpp>
 #include <nlohmann/json.hpp>
 
@@ -12,20 +14,6 @@ namespace swell::test {
 
 namespace {
 
-std::string base64(const std::vector<std::uint8_t>& data)
-{
-    static const char* chars = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < data.size(); i += 3) {
-        const std::uint32_t n = std::uint32_t(data[i]) << 16 | (i + 1 < data.size() ? data[i + 1] << 8 : 0) |
-                                (i + 2 < data.size() ? data[i + 2] : 0);
-        out += chars[n >> 18 & 63];
-        out += chars[n >> 12 & 63];
-        out += i + 1 < data.size() ? chars[n >> 6 & 63] : '=';
-        out += i + 2 < data.size() ? chars[n & 63] : '=';
-    }
-    return out;
-}
 
 template <class T>
 void appendRaw(std::vector<std::uint8_t>& out, const T& value)
