@@ -156,10 +156,15 @@ struct LodSample {
 LodSample measureLod(const std::vector<float>& vertices, int vertexCount, const std::vector<std::uint32_t>& triangles,
                      const glm::dmat4& viewProj, glm::ivec2 size);
 
-// median, p95 (nearest rank) and maximum of a series.
+// minimum, median, p95 (nearest rank) and maximum of a series.
 struct Summary {
-    double median = 0.0, p95 = 0.0, max = 0.0;
+    double min = 0.0, median = 0.0, p95 = 0.0, max = 0.0;
 };
+// The floor's cost from its frames: the least. Every floor frame does the
+// same work, so what any frame took beyond the least was the machine's other
+// load; its median moved by 2x between runs on a shared machine. (The real
+// frames differ along the camera path, so they are summarised by the median.)
+inline double floorCost(const Summary& floor) { return floor.min; }
 Summary summarize(std::vector<double> values);
 // Nearest-rank percentile q (0..1) of values, which it reorders.
 double percentile(std::vector<double>& values, double q);
