@@ -9,6 +9,7 @@
 #pragma once
 
 #include "swell/scene.h"
+#include "swell/shader_constants.h"
 
 #include <cstddef>
 #include <filesystem>
@@ -32,6 +33,12 @@ inline constexpr std::size_t kMaxCameraKeys = 10000;
 // ("waves.wind.speed_mps" has 3), and [ ] / { } nested inside one value.
 inline constexpr int kMaxSceneKeyParts = 8;
 inline constexpr int kMaxSceneNesting = 16;
+// Also checked before parsing, because the parser builds a node for each
+// before the limits above can be applied: entries of one [ ] array (the
+// longest list a scene holds), and [[...]] headers in the file (every list
+// at its longest, together).
+inline constexpr std::size_t kMaxSceneArrayItems = kMaxCameraKeys;
+inline constexpr int kMaxSceneTableArrayHeaders = int(kMaxCameraKeys + kMaxSceneObjects) + SWELL_MAX_WAVES;
 
 // Reads and validates the scene file at `path`. Relative object paths and
 // sky cubemap faces are resolved against the file's folder.

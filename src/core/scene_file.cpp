@@ -158,9 +158,12 @@ void checkText(std::string_view text, const std::string& path)
 
 // ---------------------------------------------------------------------------
 // Step 1b: structure. toml++ recurses once per dotted key part and once per
-// nested [ ] or { }, so a 4 MiB line of "a.a.a..." overflows the stack. This
-// scan skips strings and comments and counts just those two things; anything
-// else, including broken syntax, is left for the parser to report.
+// nested [ ] or { }, so a 4 MiB line of "a.a.a..." overflows the stack; and it
+// builds a node for every array entry before the reader can count them, so
+// "list = [{},{},...]" would allocate a million tables. This scan skips
+// strings and comments and counts just those things (parts, nesting, array
+// entries, [[ ]] headers); anything else, including broken syntax, is left
+// for the parser to report.
 
 class StructureScan {
 public:
@@ -237,6 +240,12 @@ private:
             step();
     }
 
+    void pop()
+    {
+        nest_.pop_back();
+        items_.pop_back();
+    }
+
     void startKey()
     {
         mode_ = Mode::Key;
@@ -251,8 +260,13 @@ private:
             skipComment();
         } else if (c == '[') { // table header, [name] or [[name]]
             step();
-            if (i_ < text_.size() && text_[i_] == '[')
+            if (i_ < text_.size() && text_[i_] == '[') {
+                if (++tableArrayHeaders_ > kMaxSceneTableArrayHeaders)
+                    fail(here(), fmt::format("more than {} [[...]] headers; a scene holds at most {} camera keys, {} "
+                                             "objects and {} waves",
+                                             kMaxSceneTableArrayHeaders, kMaxCameraKeys, kMaxSceneObjects, SWELL_MAX_WAVES));
                 step();
+            }
             startKey();
         } else {
             startKey();
@@ -278,7 +292,7 @@ private:
             return;
         case '}': // an empty inline table
             if (!nest_.empty() && nest_.back() == '{')
-                nest_.pop_back();
+                pop();
             mode_ = Mode::Value;
             step();
             return;
@@ -299,6 +313,7 @@ private:
         case '[':
         case '{':
             nest_.push_back(c);
+            items_.push_back(1);
             if (static_cast<int>(nest_.size()) > kMaxSceneNesting)
                 fail(here(), fmt::format("values nested more than {} deep in [ ] and {{ }}; scene values nest at most 3 deep",
                                          kMaxSceneNesting));
@@ -309,10 +324,15 @@ private:
         case ']':
         case '}':
             if (!nest_.empty() && nest_.back() == (c == ']' ? '[' : '{'))
-                nest_.pop_back();
+                pop();
             step();
             return;
         case ',':
+            // TOML allows a comma after the last entry: n commas hold at least n entries.
+            if (!nest_.empty() && nest_.back() == '[' && ++items_.back() > kMaxSceneArrayItems + 1)
+                fail(here(), fmt::format("an array with more than {} entries; the longest list in a scene "
+                                         "(camera.path) has at most {}",
+                                         kMaxSceneArrayItems, kMaxCameraKeys));
             step();
             if (!nest_.empty() && nest_.back() == '{')
                 startKey();
@@ -334,6 +354,9 @@ private:
     Mode mode_ = Mode::LineStart;
     int keyParts_ = 1;
     std::vector<char> nest_;
+    // 1 + the commas so far of each open [ ] or { } in nest_ (counted for [ ] only).
+    std::vector<std::size_t> items_;
+    int tableArrayHeaders_ = 0;
 };
 
 // ---------------------------------------------------------------------------

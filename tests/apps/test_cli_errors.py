@@ -87,6 +87,34 @@ for name, args, code, needle in ARGUMENTS:
         failures.append(f"arguments {name} {args}: exit {r.returncode}, output: {(r.stderr + r.stdout).strip()[:300]!r} "
                         f"(wanted exit {code} with {needle!r})")
 
+# Scenes whose model is a broken glTF: the scene loads (the file exists), the
+# renderer's loader refuses the model, and the error names the model's file.
+# valid_triangle.glb of the fuzz corpus cut short, and a .gltf whose buffer
+# claims more bytes than its file has.
+corpus = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "fuzz", "corpus", "gltf")
+with open(os.path.join(corpus, "valid_triangle.glb"), "rb") as f:
+    glb = f.read()
+MODELS = [
+    ("truncated_glb", "truncated.glb", glb[: len(glb) // 2]),
+    ("lying_buffer", "lying.gltf", b'{"asset": {"version": "2.0"}, "buffers": [{"byteLength": 4096, "uri": "short.bin"}],'
+     b' "bufferViews": [{"buffer": 0, "byteLength": 4096}], "accessors": [{"bufferView": 0, "componentType": 5126,'
+     b' "count": 3, "type": "VEC3"}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],'
+     b' "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0}'),
+]
+with open(os.path.join(work, "short.bin"), "wb") as f:
+    f.write(bytes(36))
+for name, model, data in MODELS:
+    count += 1
+    with open(os.path.join(work, model), "wb") as f:
+        f.write(data)
+    scene = os.path.join(work, name + ".toml")
+    with open(scene, "w") as f:
+        f.write(f'[[objects]]\npath = "{model}"\n')
+    r = run(["render", scene, "-o", os.path.join(work, name + ".png"), "--size", "32x32"])
+    if r.returncode != 2 or os.path.join(work, model) not in r.stderr:
+        failures.append(f"model {name}: exit {r.returncode}, stderr: {r.stderr.strip()[:300]!r} "
+                        f"(wanted exit 2 naming {model})")
+
 # And a good one, so the cases above fail for their own reasons.
 count += 1
 r = run(["render", "-o", "good.png", "--size", "48x27"])

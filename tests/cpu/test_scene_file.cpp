@@ -787,3 +787,39 @@ TEST(SceneFile, ValidateSceneNamesTheKey)
     InputError w = expectInputError([&] { validateScene(waves, "edited.toml"); });
     EXPECT_NE(w.message().find("waves.list has 65 waves"), std::string::npos) << w.message();
 }
+
+// ---------------------------------------------------------------------------
+// The fuzzer's corpus (fuzz/corpus/scene, docs/FUZZING.md): valid_* files
+// load, invalid_* files throw InputError, and crash-* files, inputs that
+// once crashed the parser or broke its promises, do either but nothing else,
+// and a scene that loads saves to a file that loads again. The texts are
+// parsed as if they lay in a folder that holds model.gltf and model.glb, as
+// the fuzz target's does.
+
+TEST(SceneFile, FuzzCorpus)
+{
+    const fs::path corpus = fs::path(SWELL_SOURCE_DIR) / "fuzz" / "corpus" / "scene";
+    const fs::path folder = workFolder() / "fuzz";
+    fs::create_directories(folder);
+    std::ofstream(folder / "model.gltf");
+    std::ofstream(folder / "model.glb");
+    int valid = 0, invalid = 0;
+    for (const auto& entry : fs::directory_iterator(corpus)) {
+        const std::string name = entry.path().filename().string();
+        SCOPED_TRACE(name);
+        const fs::path path = folder / name;
+        try {
+            const Scene scene = parseScene(readFile(entry.path()), path);
+            EXPECT_FALSE(name.starts_with("invalid_")) << "loaded without error";
+            valid += name.starts_with("valid_");
+            EXPECT_NO_THROW(validateScene(scene, path));
+            EXPECT_NO_THROW(parseScene(saveScene(scene), path));
+        } catch (const InputError& e) {
+            EXPECT_FALSE(name.starts_with("valid_")) << e.what();
+            invalid += name.starts_with("invalid_");
+            EXPECT_EQ(e.place().path, path.string()) << e.what();
+        }
+    }
+    EXPECT_GE(valid, 10);
+    EXPECT_GE(invalid, 15);
+}

@@ -52,9 +52,12 @@ bool displayUsable()
     if (!environmentHasDisplay())
         return false;
     glfwSetErrorCallback(keepGlfwError);
+    // On success GLFW stays initialised for the Window that normally follows
+    // (its glfwInit() is then a no-op; its destructor terminates GLFW).
+    // Terminating here would close the X connection, and an X server whose
+    // last client leaves resets (Xvfb under xvfb-run does), refusing the
+    // Window's connection a moment later.
     const bool ok = glfwInit() == GLFW_TRUE;
-    if (ok)
-        glfwTerminate();
     lastGlfwError().clear();
     return ok;
 }

@@ -12,7 +12,7 @@ struct GLFWwindow;
 namespace swell::app::viewer {
 
 // True when DISPLAY or WAYLAND_DISPLAY is set and GLFW can start on it.
-// Prints nothing either way.
+// Prints nothing either way. When true, GLFW is left initialised for a Window.
 bool displayUsable();
 
 class Window {
