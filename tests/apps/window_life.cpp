@@ -7,6 +7,7 @@
 // still shows sky above water.
 //
 // Exit: 0 passed; 1 failed (saying why); 77 skipped (no display).
+#include "sky_above_water.h"
 #include "support/gl_objects.h"
 #include "viewer/screenshot.h"
 #include "viewer/window.h"
@@ -66,32 +67,12 @@ void frame(const Window& window, swell::Renderer& renderer, double time_s)
         renderer.render(swell::cameraAt(renderer.scene().camera, time_s), time_s, size);
 }
 
-// The share of pixels of the rectangle passing `test`.
-template <class Test>
-double share(const swell::Image& image, int x0, int y0, int x1, int y1, Test test)
-{
-    long passed = 0, total = 0;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x, ++total) {
-            const std::uint8_t* p = image.pixel(x, y);
-            passed += test(int(p[0]), int(p[1]), int(p[2])) ? 1 : 0;
-        }
-    return total ? double(passed) / double(total) : 0.0;
-}
-
-// The criteria of tests/apps/png_check.cpp, on the right third of the frame
-// (the default scene's island is on the left): top quarter mostly sky (bright,
-// clearly blue), bottom quarter mostly water (darker, bluish).
 bool showsSkyAboveWater(const swell::Image& image)
 {
-    auto sky = [](int r, int g, int b) { return b > 140 && b > r + 15 && b >= g; };
-    auto water = [](int r, int g, int b) { return r + g + b < 3 * 150 && b > r && b + g > 2 * r; };
-    const int x0 = image.width * 2 / 3;
-    const double skyShare = share(image, x0, 0, image.width, image.height / 4, sky);
-    const double waterShare = share(image, x0, image.height * 3 / 4, image.width, image.height, water);
+    const swell::test::SkyAboveWater seen = swell::test::skyAboveWater(image);
     std::printf("window_life: restored frame, right third: top quarter %.0f%% sky, bottom quarter %.0f%% water\n",
-                100.0 * skyShare, 100.0 * waterShare);
-    return skyShare >= 0.6 && waterShare >= 0.6;
+                100.0 * seen.sky, 100.0 * seen.water);
+    return seen.shown();
 }
 
 int run()
