@@ -52,6 +52,13 @@ double angularFrequency(double wavenumber_radpm, double depth_m);
 // The fold-free measure sum(Q_i * k_i * A_i). Above 1 the surface loops over itself.
 double foldMeasure(const WaveSet& set);
 
+// How far a wave set can move the surface from its rest plane, m: up or down
+// (the sum of amplitudes) and sideways (the sum of Q * amplitude).
+struct WaveReach {
+    double vertical_m = 0.0, horizontal_m = 0.0;
+};
+WaveReach waveReach(const WaveSet& set);
+
 // Why a wave set is not usable, or an empty string. Checks finiteness,
 // wavelength > 0, amplitude >= 0, steepness in 0..1, depth > 0, a non-zero
 // direction, and at most SWELL_MAX_WAVES waves.

@@ -42,16 +42,6 @@ TiledGrid tileGrid(int cells, int tileCells, int blockTiles)
     return grid;
 }
 
-WaveReach waveReach(const WaveSet& waves)
-{
-    WaveReach reach;
-    for (const Wave& w : waves.waves) {
-        reach.vertical_m += w.amplitude_m;
-        reach.horizontal_m += w.steepness * w.amplitude_m;
-    }
-    return reach;
-}
-
 Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach)
 {
     // Along a row a vertex's x grows with i, and |x| grows with the ring

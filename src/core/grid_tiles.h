@@ -38,13 +38,6 @@ struct TiledGrid {
 };
 TiledGrid tileGrid(int cells, int tileCells, int blockTiles);
 
-// How far waves can move the surface from its rest plane, m: up or down
-// (the sum of amplitudes) and sideways (the sum of Q * amplitude).
-struct WaveReach {
-    double vertical_m = 0.0, horizontal_m = 0.0;
-};
-WaveReach waveReach(const WaveSet& waves);
-
 struct Bounds {
     glm::dvec3 lo{0.0}, hi{0.0};
 };

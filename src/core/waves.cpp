@@ -138,13 +138,12 @@ Inverse solveInverse(const WaveSet& set, glm::dvec2 worldPoint_m, double time_s)
     const std::size_t n = set.waves.size();
     std::vector<WaveTerms> terms(n);
     std::vector<double> theta0(n); // phase at the world point, rad
-    double amplitudeSum = 0.0;     // sum(A), m
-    double radius = 0.0;           // sum(Q*A) >= |Dxz| >= |offset of the answer|, m
+    const WaveReach reach = waveReach(set);
+    const double amplitudeSum = reach.vertical_m; // sum(A), m
+    const double radius = reach.horizontal_m;     // sum(Q*A) >= |Dxz| >= |offset of the answer|, m
     for (std::size_t i = 0; i < n; ++i) {
         terms[i] = termsOf(set.waves[i], set.depth_m);
         theta0[i] = phaseAt(terms[i], set.waves[i].phase_rad, worldPoint_m, time_s);
-        amplitudeSum += set.waves[i].amplitude_m;
-        radius += set.waves[i].steepness * set.waves[i].amplitude_m;
     }
 
     // Residual r(offset) = offset + Dxz(worldPoint + offset). Its Jacobian
@@ -226,6 +225,16 @@ double angularFrequency(double wavenumber_radpm, double depth_m)
     if (std::isinf(depth_m))
         return std::sqrt(gk);
     return std::sqrt(gk * std::tanh(wavenumber_radpm * depth_m));
+}
+
+WaveReach waveReach(const WaveSet& set)
+{
+    WaveReach reach;
+    for (const Wave& w : set.waves) {
+        reach.vertical_m += w.amplitude_m;
+        reach.horizontal_m += w.steepness * w.amplitude_m;
+    }
+    return reach;
 }
 
 double foldMeasure(const WaveSet& set)
@@ -788,10 +797,7 @@ WaveSampler::WaveSampler(const WaveSet& set, double time_s, glm::dvec2 origin_m,
     if (std::string why = validate(set); !why.empty())
         throw std::invalid_argument("swell::WaveSampler::WaveSampler(): " + why);
     simd_ = simd != Simd::Baseline && cpuHasAvx2Fma() ? Simd::Avx2 : Simd::Baseline;
-    double radius = 0.0;
-    for (const Wave& w : set.waves)
-        radius += w.steepness * w.amplitude_m;
-    maxOffset_m_ = static_cast<float>(radius);
+    maxOffset_m_ = static_cast<float>(waveReach(set).horizontal_m);
     for (int i = 0; i < waveCount_; ++i) {
         const Wave& w = set.waves[static_cast<std::size_t>(i)];
         const WaveTerms t = termsOf(w, set.depth_m);

@@ -199,32 +199,33 @@ struct Renderer::Impl {
     // there are more than fit (every ray is then marched).
     int worldBoxes(glm::dvec3 origin, glm::vec4* boxes) const
     {
-        std::vector<std::pair<glm::dvec3, glm::dvec3>> list;
+        int count = 0;
+        auto add = [&](glm::dvec3 lo, glm::dvec3 hi) {
+            if (count < SWELL_MAX_WORLD_BOXES) {
+                boxes[2 * count] = vec4Of(lo - origin);
+                boxes[2 * count + 1] = vec4Of(hi - origin);
+            }
+            ++count;
+        };
         if (world.island.indexCount() > 0) {
             const glm::dvec3 half(0.5 * kIslandSize_m, 0.0, 0.5 * kIslandSize_m);
-            list.push_back({kIslandPosition_m - half - glm::dvec3(0.0, 1.0, 0.0),
-                            kIslandPosition_m + half + glm::dvec3(0.0, kIslandPeak_m + 1.0, 0.0)});
+            add(kIslandPosition_m - half - glm::dvec3(0.0, 1.0, 0.0),
+                kIslandPosition_m + half + glm::dvec3(0.0, kIslandPeak_m + 1.0, 0.0));
         }
         for (size_t i = 0; i < world.meshes.size() && i < scene.objects.size(); ++i) {
             const SceneObject& o = scene.objects[i];
             const double r = world.meshReach_m[i] * o.scale;
             const glm::dvec3 pad(r, r + (o.floats ? reach.vertical_m : 0.0), r);
-            list.push_back({o.position_m - pad, o.position_m + pad});
+            add(o.position_m - pad, o.position_m + pad);
         }
-        if (list.size() > SWELL_MAX_WORLD_BOXES)
-            return -1;
-        for (size_t b = 0; b < list.size(); ++b) {
-            boxes[2 * b] = vec4Of(list[b].first - origin);
-            boxes[2 * b + 1] = vec4Of(list[b].second - origin);
-        }
-        return int(list.size());
+        return count <= SWELL_MAX_WORLD_BOXES ? count : -1;
     }
 
     // The uniforms shared by every pass; pass-specific fields are set by the caller.
-    FrameUniforms frameUniforms(const Camera& camera, const GridPlacement& grid, glm::dvec3 origin, glm::ivec2 size) const
+    FrameUniforms frameUniforms(const Camera& camera, const glm::dmat4& viewProj, const GridPlacement& grid,
+                                glm::dvec3 origin, glm::ivec2 size) const
     {
         FrameUniforms f{};
-        const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         f.cameraViewProj = glm::mat4(viewProj);
         f.cameraInvViewProj = glm::mat4(glm::inverse(viewProj));
         f.passViewProj = f.cameraViewProj;
@@ -267,8 +268,8 @@ struct Renderer::Impl {
         origin = glm::dvec3(camera.position_m.x, 0.0, camera.position_m.z);
         const GridPlacement grid = placeGrid(gridShape, camera.position_m);
         uploadWaves(grid, time_s);
-        const FrameUniforms f = frameUniforms(camera, grid, origin, size);
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
+        const FrameUniforms f = frameUniforms(camera, viewProj, grid, origin, size);
         waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
         return f;
     }

@@ -13,7 +13,6 @@ void WaterGrid::build(const GridShape& shape)
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
     counts_.clear();
     offsets_.clear();
-    chosenTiles_ = 0;
 }
 
 void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, const WaveReach& reach,
@@ -23,7 +22,6 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
     const glm::dvec3 centre(gridCenter_m.x, 0.0, gridCenter_m.y);
     counts_.clear();
     offsets_.clear();
-    chosenTiles_ = 0;
     auto bounds = [&](const GridTile& t) {
         Bounds box = tileBounds(shape, placement, t, reach);
         box.lo += centre;
@@ -35,20 +33,19 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
         if (c == Containment::Outside)
             continue;
         if (c == Containment::Inside) {
-            choose(block.firstIndex, block.indexCount, block.tileCount);
+            choose(block.firstIndex, block.indexCount);
             continue;
         }
         for (int t = block.firstTile; t < block.firstTile + block.tileCount; ++t) {
             const GridTile& tile = grid_.tiles[size_t(t)];
             if (frustumContains(frustum, bounds(tile)) != Containment::Outside)
-                choose(tile.firstIndex, tile.indexCount, 1);
+                choose(tile.firstIndex, tile.indexCount);
         }
     }
 }
 
-void WaterGrid::choose(std::uint32_t firstIndex, std::uint32_t indexCount, int tiles)
+void WaterGrid::choose(std::uint32_t firstIndex, std::uint32_t indexCount)
 {
-    chosenTiles_ += tiles;
     const auto offset = reinterpret_cast<const void*>(std::uintptr_t(firstIndex) * sizeof(std::uint32_t));
     // Neighbouring tiles are neighbours in the buffer too: merge their ranges.
     if (!counts_.empty() &&

@@ -34,13 +34,11 @@ public:
 
     // The indices of the chosen tiles' triangles, in the order drawn.
     std::vector<std::uint32_t> chosenIndices() const;
-    int tileCount() const { return int(grid_.tiles.size()); }
-    int chosenTileCount() const { return chosenTiles_; }
 
 private:
     // Adds a range of the index buffer to the draw, merged with the last one
     // when they touch.
-    void choose(std::uint32_t firstIndex, std::uint32_t indexCount, int tiles);
+    void choose(std::uint32_t firstIndex, std::uint32_t indexCount);
 
     TiledGrid grid_;
     gl::Buffer indices_;
@@ -48,7 +46,6 @@ private:
     // glMultiDrawElements' arguments for the chosen tiles.
     std::vector<int> counts_;
     std::vector<const void*> offsets_;
-    int chosenTiles_ = 0;
 };
 
 } // namespace swell::detail
