@@ -34,6 +34,7 @@ constexpr std::array<std::string_view, 2> kReflectionModes{"fixed", "raymarch"};
 static_assert(static_cast<int>(ReflectionMode::FixedDistance) == 0 && static_cast<int>(ReflectionMode::RayMarch) == 1);
 
 constexpr std::array<std::string_view, 2> kGridLayouts{"geometric", "paper"};
+constexpr std::array<std::string_view, 2> kWaveModels{"gerstner", "spectral"};
 static_assert(static_cast<int>(GridLayout::Geometric) == 0 && static_cast<int>(GridLayout::Paper) == 1);
 
 constexpr std::array<std::string_view, 6> kDebugViews{"shaded", "normals", "reflection", "refraction", "lod", "wireframe"};
@@ -99,6 +100,7 @@ Parameter at(Ref, Parameter p)
 }
 
 bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
+bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
 
 using K = ParameterKind;
 using L = ParameterList;
@@ -109,6 +111,14 @@ std::vector<Parameter> buildTable()
     // Keep in the order of scene.h; scene files and docs list them so.
     std::vector<Parameter> t{
         // [waves]
+        at([](auto& s, std::size_t) -> auto& { return s.waves.model; },
+           {.key = "waves.model", .kind = K::Choice, .effect = E::Waves, .min = 0.0, .max = kWaveModels.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kWaveModels.size() - 1.0,
+            .description = "gerstner: a sum of waves, listed or from the wind; spectral: the wind's spectrum on FFT cascades",
+            .choices = kWaveModels}),
+        at([](auto& s, std::size_t) -> auto& { return s.waves.choppiness; },
+           {.key = "waves.choppiness", .effect = E::Waves, .min = 0.0, .max = 2.0, .sliderMin = 0.0, .sliderMax = 2.0,
+            .description = "spectral model: how far crests lean and troughs widen (0: linear sea)", .present = isSpectral}),
         at([](auto& s, std::size_t) -> auto& { return s.waves.listed.depth_m; },
            {.key = "waves.depth_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
             .sliderMin = 1.0, .sliderMax = 500.0, .logarithmic = true,
