@@ -15,7 +15,6 @@ namespace swell {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Pierson & Moskowitz 1964, S = alpha*g^2*omega^-5*exp(-0.74*(g/(U19.5*omega))^4)
 // with alpha = 8.1e-3; its peak is where dS/domega = 0, omega_p = (4*0.74/5)^(1/4)*g/U19.5

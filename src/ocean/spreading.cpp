@@ -10,7 +10,6 @@ namespace swell {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // theta wrapped into (-pi, pi].
 double wrapAngle(double theta_rad)

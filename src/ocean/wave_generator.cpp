@@ -17,7 +17,6 @@ namespace swell {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Uniform in [0, 1) with 53 random bits from two 32-bit draws.
 double uniform01(std::mt19937& rng)

@@ -17,7 +17,7 @@ namespace {
 
 using swell::WindSettings;
 
-constexpr double kPi = std::numbers::pi;
+using swell::kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 bool bitIdentical(const swell::WaveSet& a, const swell::WaveSet& b)
