@@ -33,7 +33,8 @@ struct FrameCounters {
 };
 
 // Told when each pass of a frame begins and ends (for timing and counters).
-// Passes: "reflection", "refraction", "main"; within "main", "water" for the water draw.
+// Passes: "ocean" (the wave model's simulation for the frame), "reflection",
+// "refraction", "main"; within "main", "water" for the water draw.
 class PassObserver {
 public:
     virtual ~PassObserver() = default;

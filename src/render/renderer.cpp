@@ -75,8 +75,11 @@ struct Renderer::Impl {
     {
         origin = glm::dvec3(camera.position_m.x, 0.0, camera.position_m.z);
         const GridPlacement grid = placeGrid(gridShape, camera.position_m);
+        // The wave model's own work for the frame (the spectral model's FFTs).
+        notify(true, "ocean");
         modelGpu->prepareFrame(grid.center_m, time_s);
         modelGpu->bind();
+        notify(false, "ocean");
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         const WaveReach reach = model().reach();
