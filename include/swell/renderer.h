@@ -2,8 +2,8 @@
 // framebuffer of the current OpenGL 4.5 context. Passes:
 //   1  reflection: sky and world mirrored about the water plane (colour + depth)
 //   1b refraction: the world below the water plane (colour + depth)
-//   2  main: sky and world, the closed volumes of open hulls into depth
-//      only, then the water, depth-tested against both
+//   2  main: the world, the closed volumes of open hulls into depth only,
+//      the water depth-tested against both, then the sky where nothing is
 #pragma once
 
 #include "swell/camera.h"

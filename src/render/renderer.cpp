@@ -225,19 +225,21 @@ struct Renderer::Impl {
         glDisable(GL_CLIP_DISTANCE0);
         notify(false, "refraction");
 
-        // Pass 2: world, sky, then the water depth-tested against the world, so
-        // objects crossing the surface meet it cleanly.
+        // Pass 2: world, then the water depth-tested against it, so objects
+        // crossing the surface meet it cleanly; the sky last, only where
+        // nothing else was drawn (its depth test passes at the far plane
+        // alone), so its shader runs on the visible sky's pixels only.
         f = base;
         f.passEncodesSrgb = 1;
         notify(true, "main");
         bindFrame(PassMain, f);
         beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin);
-        drawSky();
         drawHullVolumes();
         notify(true, "water");
         drawWater();
         notify(false, "water");
+        drawSky();
         notify(false, "main");
         glBindVertexArray(0);
         glUseProgram(0);
