@@ -17,6 +17,8 @@
 //   4. every index, bufferView, accessor, node and value is checked here
 //      before it is used, and the output is capped at kMaxVertices and
 //      kMaxIndices before anything is allocated for it.
+#include "core/asset_path.h"
+#include "core/input_file.h"
 #include "core/mesh_data.h"
 
 #include "swell/error.h"
@@ -45,6 +47,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string_view>
 
@@ -137,21 +140,20 @@ std::uint32_t readU32(const unsigned char* p)
 }
 
 // ---------------------------------------------------------------------------
-// File callbacks for tinygltf: only regular files under the model's folder
-// (tinygltf would also look in the working directory) and no bigger than
-// kMaxFileBytes. The folder is passed as user data.
+// File callbacks for tinygltf. Every external buffer was found, checked and
+// read by checkBuffers() (inside the model's folder, a regular file, the
+// size it claims); tinygltf is served those bytes and reads nothing itself.
 
-bool isUnder(const std::string& file, const std::string& folder)
-{
-    if (folder == "/")
-        return file.size() > 1 && file[0] == '/';
-    return file.size() > folder.size() && file.compare(0, folder.size(), folder) == 0 && file[folder.size()] == '/';
-}
+// Buffer files read ahead, by the path tinygltf will ask for.
+struct ReadAhead {
+    std::string bytes;
+    int uses = 0; // buffers that name this file; the last one takes the bytes
+};
+using ReadAheadFiles = std::map<std::string, ReadAhead>;
 
-bool callbackFileExists(const std::string& file, void* folder)
+bool callbackFileExists(const std::string& file, void* files)
 {
-    std::error_code ec;
-    return isUnder(file, *static_cast<const std::string*>(folder)) && fs::is_regular_file(file, ec);
+    return static_cast<const ReadAheadFiles*>(files)->count(file) != 0;
 }
 
 std::string callbackExpandFilePath(const std::string& file, void*)
@@ -159,23 +161,18 @@ std::string callbackExpandFilePath(const std::string& file, void*)
     return file;
 }
 
-bool callbackReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& file, void* folder)
+bool callbackReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& file, void* files)
 {
-    std::error_code ec;
-    const auto fail = [&](const std::string& why) {
+    auto& all = *static_cast<ReadAheadFiles*>(files);
+    const auto it = all.find(file);
+    if (it == all.end() || it->second.uses <= 0) {
         if (err)
-            *err += why;
+            *err += "not a buffer file this model may read";
         return false;
-    };
-    if (!isUnder(file, *static_cast<const std::string*>(folder)) || !fs::is_regular_file(file, ec))
-        return fail("not a regular file beside the model");
-    const std::uintmax_t size = fs::file_size(file, ec);
-    if (ec || size > kMaxFileBytes)
-        return fail("cannot read or too large");
-    out->resize(std::size_t(size));
-    std::ifstream in(file, std::ios::binary);
-    if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size)))
-        return fail("cannot read");
+    }
+    out->assign(it->second.bytes.begin(), it->second.bytes.end());
+    if (--it->second.uses == 0)
+        all.erase(it);
     return true;
 }
 
@@ -234,8 +231,8 @@ public:
 
     MeshData load()
     {
-        const std::vector<unsigned char> bytes = readFile();
-        const bool binary = bytes.size() >= 4 && readU32(bytes.data()) == kGlbMagic;
+        const std::string bytes = readFile();
+        const bool binary = bytes.size() >= 4 && readU32(reinterpret_cast<const unsigned char*>(bytes.data())) == kGlbMagic;
         std::string extension = path_.extension().string();
         std::transform(extension.begin(), extension.end(), extension.begin(),
                        [](unsigned char c) { return char(std::tolower(c)); });
@@ -243,17 +240,16 @@ public:
             fail("not a binary glTF file: it does not start with the 'glTF' magic");
 
         std::error_code ec;
-        folder_ = fs::absolute(path_, ec).parent_path().lexically_normal().string();
+        const fs::path absolute = fs::absolute(path_, ec);
         if (ec)
             fail("cannot resolve the file's folder: " + ec.message());
-        while (folder_.size() > 1 && folder_.back() == '/')
-            folder_.pop_back();
+        folder_ = resolvedFolder(absolute.parent_path());
 
         GlbChunks chunks;
         if (binary)
             chunks = splitGlb(bytes);
         else
-            chunks.json = std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+            chunks.json = bytes;
 
         std::string cleaned = prepareJson(chunks, binary);
         parseWithTinygltf(std::move(cleaned), chunks, binary);
@@ -268,46 +264,40 @@ private:
 
     // ---- Step 1 ------------------------------------------------------------
 
-    std::vector<unsigned char> readFile() const
+    std::string readFile() const
     {
-        std::error_code ec;
-        const fs::file_status status = fs::status(path_, ec);
-        if (status.type() == fs::file_type::not_found)
-            fail("file does not exist");
-        if (ec)
-            fail("cannot read file: " + ec.message());
-        if (status.type() == fs::file_type::directory)
-            fail("is a directory, not a glTF file");
-        if (status.type() != fs::file_type::regular)
-            fail("is not a regular file");
-        const std::uintmax_t size = fs::file_size(path_, ec);
-        if (ec)
-            fail("cannot read file: " + ec.message());
-        if (size == 0)
+        std::string bytes;
+        try {
+            bytes = readInputFile(path_, kMaxFileBytes, "model");
+        } catch (const InputError& e) {
+            std::error_code ec;
+            if (fs::is_directory(path_, ec))
+                fail("is a directory, not a glTF file");
+            if (!fs::exists(fs::symlink_status(path_, ec)))
+                fail("file does not exist");
+            fail(e.message());
+        }
+        if (bytes.empty())
             fail("file is empty");
-        if (size > kMaxFileBytes)
-            fail(fmt::format("file is too large ({} bytes; the limit is {})", size, kMaxFileBytes));
-        std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
-        std::ifstream in(path_, std::ios::binary);
-        if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
-            fail("cannot read file");
         return bytes;
     }
 
     // Splits a .glb into its JSON and BIN chunks; unknown chunks are skipped.
-    GlbChunks splitGlb(const std::vector<unsigned char>& bytes) const
+    GlbChunks splitGlb(std::string_view text) const
     {
-        if (bytes.size() < 12)
-            fail(fmt::format("truncated binary glTF: {} bytes is shorter than the 12-byte header", bytes.size()));
-        const std::uint32_t version = readU32(bytes.data() + 4);
-        const std::uint32_t length = readU32(bytes.data() + 8);
+        const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
+        const std::size_t byteCount = text.size();
+        if (byteCount < 12)
+            fail(fmt::format("truncated binary glTF: {} bytes is shorter than the 12-byte header", byteCount));
+        const std::uint32_t version = readU32(bytes + 4);
+        const std::uint32_t length = readU32(bytes + 8);
         if (version != 2)
             fail(fmt::format("unsupported binary glTF version {} (only version 2 is supported)", version));
         if (length < 12)
             fail(fmt::format("invalid binary glTF: the header says {} bytes, less than the header itself", length));
-        if (length > bytes.size())
+        if (length > byteCount)
             fail(fmt::format("truncated binary glTF: the header says {} bytes but the file has {}", length,
-                             bytes.size()));
+                             byteCount));
         GlbChunks chunks;
         bool haveJson = false;
         std::size_t offset = 12;
@@ -315,13 +305,13 @@ private:
             if (length - offset < 8)
                 fail(fmt::format("truncated binary glTF: chunk {} at byte {} has no room for its header", chunk,
                                  offset));
-            const std::uint32_t chunkLength = readU32(bytes.data() + offset);
-            const std::uint32_t type = readU32(bytes.data() + offset + 4);
+            const std::uint32_t chunkLength = readU32(bytes + offset);
+            const std::uint32_t type = readU32(bytes + offset + 4);
             offset += 8;
             if (chunkLength > length - offset)
                 fail(fmt::format("truncated binary glTF: chunk {} claims {} bytes but only {} remain", chunk,
                                  chunkLength, length - offset));
-            const unsigned char* data = bytes.data() + offset;
+            const unsigned char* data = bytes + offset;
             if (chunk == 0) {
                 if (type != kGlbChunkJson)
                     fail("binary glTF: the first chunk is not JSON");
@@ -340,7 +330,7 @@ private:
 
     // ---- Step 2 ------------------------------------------------------------
 
-    std::string prepareJson(const GlbChunks& chunks, bool binary) const
+    std::string prepareJson(const GlbChunks& chunks, bool binary)
     {
         json doc;
         {
@@ -395,7 +385,7 @@ private:
         }
         for (const auto& [key, value] : doc.items())
             checkNumbers(value, key, key);
-        checkBuffers(doc, chunks, binary);
+        readBuffers(doc, chunks, binary);
         try {
             return doc.dump();
         } catch (const json::exception& e) {
@@ -434,8 +424,9 @@ private:
     }
 
     // Buffers must have the bytes they claim, from a base64 data: URI, a file
-    // beside the model, or (buffer 0 of a .glb) the BIN chunk.
-    void checkBuffers(const json& doc, const GlbChunks& chunks, bool binary) const
+    // in the model's folder or below it (read here, for tinygltf to be served
+    // by the callbacks above), or (buffer 0 of a .glb) the BIN chunk.
+    void readBuffers(const json& doc, const GlbChunks& chunks, bool binary)
     {
         const auto buffers = doc.find("buffers");
         if (buffers == doc.end())
@@ -491,15 +482,40 @@ private:
             if (uri.empty() || uri.front() == '/' || (colon != std::string::npos && colon < slash))
                 fail(fmt::format("buffer {} refers to '{}': only relative file paths are supported", i,
                                  printable(uri)));
-            const std::string file = folder_ + "/" + decodeUri(uri);
-            std::error_code ec;
-            if (!fs::is_regular_file(file, ec))
-                fail(fmt::format("buffer {}'s file '{}' was not found beside the model", i, printable(uri)));
-            const std::uintmax_t size = fs::file_size(file, ec);
-            if (ec || size != byteLength)
-                fail(fmt::format("buffer {}'s file '{}' has {} bytes but its byteLength is {}", i, printable(uri),
-                                 ec ? 0 : size, byteLength));
+            readBufferFile(i, uri, byteLength);
         }
+    }
+
+    // External buffer i: decoded, resolved (links included) and required to
+    // lie under the model's folder before anything about it is looked at, so
+    // a refusal tells nothing about a file outside.
+    void readBufferFile(std::size_t i, const std::string& uri, std::uint64_t byteLength)
+    {
+        const std::string decoded = decodeUri(uri);
+        if (std::any_of(decoded.begin(), decoded.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
+            fail(fmt::format("buffer {}'s uri '{}' holds a control character", i, printable(uri)));
+        const std::optional<fs::path> file = resolveInside(folder_, decoded);
+        if (!file)
+            fail(fmt::format("buffer {} refers to '{}', which lies outside the model's folder; a model may use only "
+                             "files in its folder or below it",
+                             i, printable(uri)));
+        std::string bytes;
+        try {
+            bytes = readInputFile(*file, kMaxFileBytes, "buffer file");
+        } catch (const InputError& e) {
+            std::error_code ec;
+            if (!fs::exists(fs::symlink_status(*file, ec)))
+                fail(fmt::format("buffer {}'s file '{}' was not found beside the model", i, printable(uri)));
+            fail(fmt::format("buffer {}'s file '{}': {}", i, printable(uri), e.message()));
+        }
+        if (bytes.size() != byteLength)
+            fail(fmt::format("buffer {}'s file '{}' has {} bytes but its byteLength is {}", i, printable(uri),
+                             bytes.size(), byteLength));
+        // The path tinygltf asks for: its JoinPath of the base folder and the same decoding.
+        const std::string folder = folder_.string();
+        ReadAhead& entry = readAhead_[folder.back() == '/' ? folder + decoded : folder + "/" + decoded];
+        entry.bytes = std::move(bytes);
+        ++entry.uses;
     }
 
     // ---- Step 3 ------------------------------------------------------------
@@ -508,7 +524,7 @@ private:
     {
         tinygltf::TinyGLTF loader;
         loader.SetFsCallbacks(tinygltf::FsCallbacks{&callbackFileExists, &callbackExpandFilePath,
-                                                    &callbackReadWholeFile, &callbackWriteWholeFile, &folder_});
+                                                    &callbackReadWholeFile, &callbackWriteWholeFile, &readAhead_});
         std::string err, warn;
         bool ok = false;
         try {
@@ -538,13 +554,13 @@ private:
                     glb.resize(glb.size() + binPadded - chunks.binSize, 0);
                 }
                 text = std::string();
-                ok = loader.LoadBinaryFromMemory(&model_, &err, &warn, glb.data(), std::uint32_t(glb.size()), folder_,
+                ok = loader.LoadBinaryFromMemory(&model_, &err, &warn, glb.data(), std::uint32_t(glb.size()), folder_.string(),
                                                  tinygltf::REQUIRE_VERSION);
             } else {
                 if (text.size() > std::numeric_limits<std::uint32_t>::max())
                     fail("file is too large");
                 ok = loader.LoadASCIIFromString(&model_, &err, &warn, text.data(), std::uint32_t(text.size()),
-                                                folder_, tinygltf::REQUIRE_VERSION);
+                                                folder_.string(), tinygltf::REQUIRE_VERSION);
             }
         } catch (const InputError&) {
             throw;
@@ -1081,7 +1097,8 @@ private:
 
     fs::path path_;
     std::string where_;
-    std::string folder_;
+    fs::path folder_; // resolved (asset_path.h)
+    ReadAheadFiles readAhead_;
     tinygltf::Model model_;
 };
 

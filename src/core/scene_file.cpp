@@ -13,6 +13,8 @@
 // docs: one key per line with its range in a comment.
 #include "swell/scene_file.h"
 
+#include "core/asset_path.h"
+#include "core/input_file.h"
 #include "swell/error.h"
 #include "swell/parameters.h"
 #include "swell/shader_constants.h"
@@ -41,6 +43,10 @@
 
 namespace swell {
 namespace fs = std::filesystem;
+using detail::checkInputFile;
+using detail::readInputFile;
+using detail::resolvedFolder;
+using detail::resolveInside;
 namespace {
 
 // ---------------------------------------------------------------------------
@@ -445,11 +451,18 @@ std::size_t editDistance(std::string_view a, std::string_view b)
 }
 
 // The candidate closest to `word`, if it is close enough to be a typo.
+// The distance is at least the difference in length, so a candidate whose
+// length differs by the threshold or more is skipped unmeasured: the table
+// editDistance builds is then at most (candidate + 3)^2 entries, whatever
+// the word's length (a 4 MiB key once cost 1.1 GB and 31 s here).
 std::optional<std::string> closest(std::string_view word, const std::vector<std::string>& candidates)
 {
     std::optional<std::string> best;
     std::size_t bestDistance = word.size() >= 5 ? 3 : 2; // must beat this
     for (const std::string& c : candidates) {
+        const std::size_t lengthGap = word.size() > c.size() ? word.size() - c.size() : c.size() - word.size();
+        if (lengthGap >= bestDistance)
+            continue;
         std::size_t d = editDistance(word, c);
         if (d < bestDistance) {
             bestDistance = d;
@@ -482,6 +495,14 @@ std::optional<double> number(const toml::node& node)
     if (const auto* f = node.as_floating_point())
         return f->get();
     return std::nullopt;
+}
+
+// User text quoted in a message, cut to a readable length: a 4 MiB key
+// must not become a 4 MiB message.
+std::string shortText(std::string_view s)
+{
+    constexpr std::size_t kMaxQuoted = 80;
+    return s.size() <= kMaxQuoted ? std::string(s) : fmt::format("{}... ({} bytes)", s.substr(0, kMaxQuoted), s.size());
 }
 
 bool hasControlCharacter(std::string_view s)
@@ -527,6 +548,10 @@ private:
                    std::size_t item)
     {
         for (auto [k, node] : inFileOrder(table)) {
+            // A quoted key is one name, dots and all: "fog.start_m" = 1 at
+            // the top level is not fog.start_m, and must not pass for it.
+            if (k->str().find('.') != std::string_view::npos)
+                quotedDottedKey(*k, shown);
             std::string childSchema = join(schema, k->str());
             std::string childShown = join(shown, k->str());
             if (const Parameter* p = findParameterIn(childSchema, list)) {
@@ -555,6 +580,19 @@ private:
         }
     }
 
+    [[noreturn]] void quotedDottedKey(const toml::key& key, const std::string& shownPrefix)
+    {
+        const std::string name = shortText(key.str());
+        const std::string shown = shownPrefix.empty() ? fmt::format("\"{}\"", name) : fmt::format("{}.\"{}\"", shownPrefix, name);
+        std::string hint;
+        if (const std::string dotted = join(shownPrefix, key.str()); findParameter(dotted) != nullptr)
+            hint = fmt::format("; to set {}, write the key without quotes", dotted);
+        fail(places_.of(key.source()),
+             fmt::format("unknown key '{}': a quoted key is one name, dots included, and no scene key has a dot in "
+                         "its name{}",
+                         shown, hint));
+    }
+
     [[noreturn]] void unknownKey(const toml::key& key, const std::string& schema, const std::string& shownPrefix,
                                  ParameterList list)
     {
@@ -575,7 +613,7 @@ private:
                 consider(s.key);
 
         std::string shown = join(shownPrefix, key.str());
-        std::string message = fmt::format("unknown key '{}'", shown);
+        std::string message = fmt::format("unknown key '{}'", shortText(shown));
         std::optional<std::string> guess = closest(schema, schemaNames);
         if (!guess) {
             // A known key in the wrong table: the same last part, exactly one owner.
@@ -733,7 +771,7 @@ private:
                 std::vector<std::string> names(p.choices.begin(), p.choices.end());
                 std::optional<std::string> guess = closest(s->get(), names);
                 fail(places_.of(node.source()),
-                     fmt::format("{} = \"{}\" is not a choice; allowed {}{}", shown, s->get(), rangeText(p),
+                     fmt::format("{} = \"{}\" is not a choice; allowed {}{}", shown, shortText(s->get()), rangeText(p),
                                  guess ? fmt::format("; did you mean \"{}\"?", *guess) : std::string()));
             }
             value = static_cast<std::int64_t>(it - p.choices.begin());
@@ -773,26 +811,35 @@ std::string lowercase(std::string s)
     return s;
 }
 
-// A file the scene refers to must exist and be readable now, so that the
-// renderer does not find out halfway through loading.
-void checkFile(const fs::path& base, const std::string& relative, const std::string& name, const SourcePlace& place)
+// A file the scene refers to must lie in the scene's folder (or below it),
+// exist, and be a regular file that can be read now, so that the renderer
+// does not find out halfway through loading. `base` is the folder as given,
+// `resolved` the same with links followed (resolvedFolder).
+void checkFile(const fs::path& base, const fs::path& resolved, const std::string& relative, const std::string& name,
+               const SourcePlace& place)
 {
-    fs::path file(relative);
-    if (file.is_relative())
-        file = base / file;
+    const std::optional<fs::path> inside = resolveInside(resolved, relative);
+    if (!inside)
+        fail(place, fmt::format("{}: '{}' lies outside the scene's folder '{}'; a scene may name only files in its "
+                                "folder or below it, links included",
+                                name, shortText(relative), base.string()));
+    const fs::path file = fs::path(relative).is_absolute() ? fs::path(relative) : base / relative;
     std::error_code ec;
     fs::file_status status = fs::status(file, ec);
-    if (!fs::exists(status))
-        fail(place, fmt::format("{}: file '{}' not found (relative paths start at the scene file's folder)", name,
-                                file.string()));
     if (fs::is_directory(status))
         fail(place, fmt::format("{}: '{}' is a folder, not a file", name, file.string()));
-    std::ifstream in(file, std::ios::binary);
-    if (!in)
-        fail(place, fmt::format("{}: cannot read '{}': {}", name, file.string(), std::strerror(errno)));
+    if (!fs::exists(status) && !fs::is_symlink(fs::symlink_status(file, ec)))
+        fail(place, fmt::format("{}: file '{}' not found (relative paths start at the scene file's folder)", name,
+                                file.string()));
+    try {
+        checkInputFile(file, "file");
+    } catch (const InputError& e) {
+        fail(place, fmt::format("{}: '{}': {}", name, file.string(), e.message()));
+    }
 }
 
-void checkObjectPath(const fs::path& base, const std::string& path, const std::string& name, const SourcePlace& place)
+void checkObjectPath(const fs::path& base, const fs::path& resolved, const std::string& path, const std::string& name,
+                     const SourcePlace& place)
 {
     if (path.empty())
         fail(place, fmt::format("{} is empty; it must name a file", name));
@@ -808,7 +855,7 @@ void checkObjectPath(const fs::path& base, const std::string& path, const std::s
     std::string extension = lowercase(fs::path(path).extension().string());
     if (extension != ".gltf" && extension != ".glb")
         fail(place, fmt::format("{} = \"{}\" is not a glTF model; use a .gltf or .glb file, or \"builtin:NAME\"", name, path));
-    checkFile(base, path, name, place);
+    checkFile(base, resolved, path, name, place);
 }
 
 void checkWaves(const Scene& scene, const Places& places)
@@ -879,6 +926,11 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base)
         }
 
     // Referenced files.
+    const bool namesFiles = !scene.sky.cubemapFaces.empty() ||
+                            std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
+                                return !o.path.starts_with(kBuiltinObjectPrefix);
+                            });
+    const fs::path resolved = namesFiles ? resolvedFolder(base) : fs::path();
     const auto& faces = scene.sky.cubemapFaces;
     if (!faces.empty() && faces.size() != 6)
         fail(places.at("sky.faces"), fmt::format("sky.faces must list 6 image paths, or none; it lists {}", faces.size()));
@@ -886,13 +938,13 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base)
         std::string name = fmt::format("sky.faces[{}]", i);
         if (faces[i].empty() || hasControlCharacter(faces[i]))
             fail(places.at(name), fmt::format("{} must name a file", name));
-        checkFile(base, faces[i], name, places.at(name));
+        checkFile(base, resolved, faces[i], name, places.at(name));
     }
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         std::string name = fmt::format("objects[{}].path", i);
         if (hasControlCharacter(scene.objects[i].path))
             fail(places.at(name), fmt::format("{} contains a control character", name));
-        checkObjectPath(base, scene.objects[i].path, name, places.at(name));
+        checkObjectPath(base, resolved, scene.objects[i].path, name, places.at(name));
     }
 
     checkWaves(scene, places);
@@ -986,36 +1038,16 @@ Scene parseScene(std::string_view text, const fs::path& virtualPath)
 
 Scene loadScene(const fs::path& path)
 {
-    const SourcePlace file{path.string(), 0, 0};
-    std::error_code ec;
-    fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status))
-        fail(file, "scene file not found");
-    if (fs::is_directory(status))
-        fail(file, "is a folder, not a scene file");
-    if (fs::is_regular_file(status)) {
-        std::uintmax_t size = fs::file_size(path, ec);
-        if (!ec && size > kMaxSceneFileBytes)
-            fail(file, fmt::format("the scene file is {} bytes; scene files are at most {} bytes (4 MiB)", size,
-                                   kMaxSceneFileBytes));
-    }
-
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        fail(file, fmt::format("cannot read the scene file: {}", std::strerror(errno)));
-    // Read at most one byte past the limit, whatever the size claimed (pipes, /dev files).
     std::string text;
-    char buffer[64 * 1024];
-    while (text.size() <= kMaxSceneFileBytes) {
-        in.read(buffer, sizeof buffer);
-        if (in.gcount() <= 0)
-            break;
-        text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    try {
+        text = readInputFile(path, kMaxSceneFileBytes, "scene file");
+    } catch (const InputError& e) {
+        // The folder case in the scene's own words; the rest as the reader says it.
+        std::error_code ec;
+        if (fs::is_directory(path, ec))
+            fail(e.place(), "is a folder, not a scene file");
+        throw;
     }
-    if (in.bad())
-        fail(file, fmt::format("cannot read the scene file: {}", std::strerror(errno)));
-    if (text.size() > kMaxSceneFileBytes)
-        fail(file, fmt::format("the scene file is over {} bytes; scene files are at most 4 MiB", kMaxSceneFileBytes));
     return parseScene(text, path);
 }
 
