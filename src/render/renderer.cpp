@@ -1,7 +1,7 @@
 // The ocean renderer: owns the GPU state of a scene and draws its passes.
 #include "swell/renderer.h"
 
-#include "core/mesh_data.h"
+#include "assets/mesh_data.h"
 #include "render/gpu_types.h"
 #include "render/mesh.h"
 #include "render/render_target.h"

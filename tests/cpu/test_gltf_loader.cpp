@@ -1,7 +1,7 @@
 // loadGltf: the project's models, node transforms and vertex formats on small
 // files written here, and hostile files that must fail with an InputError
 // naming the file and the problem, never crash.
-#include "core/mesh_data.h"
+#include "assets/mesh_data.h"
 #include "support/base64.h"
 
 #include "swell/error.h"
