@@ -49,6 +49,14 @@ Scene parseScene(std::string_view text, const fs::path& virtualPath)
     Scene scene = readScene(root, places);
     checkScene(scene, places, baseFolder(virtualPath));
     scene.assetFolder = baseFolder(virtualPath).string();
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const std::string key = fmt::format("objects[{}].path", i);
+        scene.assetReferences.push_back({key, scene.objects[i].path, places.at(key)});
+    }
+    for (std::size_t i = 0; i < scene.sky.cubemapFaces.size(); ++i) {
+        const std::string key = fmt::format("sky.faces[{}]", i);
+        scene.assetReferences.push_back({key, scene.sky.cubemapFaces[i], places.at(key)});
+    }
     return scene;
 }
 
