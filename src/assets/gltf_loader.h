@@ -31,14 +31,19 @@ namespace swell::detail::gltf {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// Most vertices and most indices one model may produce: ten million of each
-// is about 400 MB of MeshData, far more than any prop we draw, and stops a
-// small file that claims huge counts from allocating without bound.
-constexpr std::size_t kMaxVertices = 10'000'000;
-constexpr std::size_t kMaxIndices = 10'000'000;
-// Largest file read, the model or one of its buffers, bytes; tinygltf takes
-// sizes as 32-bit, and a bigger model would exceed the limits above anyway.
-constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(512) << 20;
+// Most vertices and most indices one model may produce. They bound what
+// loading allocates whatever the file holds: an accessor without a
+// bufferView is all zeros, so a file of a few hundred bytes may claim the
+// full count. At these caps MeshData is 72 MB of vertices and 24 MB of
+// indices, and loading stays within the bound in docs/TESTING.md; two
+// million vertices is still far more than any prop we draw.
+constexpr std::size_t kMaxVertices = 2'000'000;
+constexpr std::size_t kMaxIndices = 6'000'000;
+// Largest file read, the model or one of its buffers, bytes. Loading holds
+// the file, tinygltf's copy of its buffers and the decoded mesh at once, so
+// this also bounds memory; a model within the caps above needs about 100 MB
+// of vertex data at most.
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(64) << 20;
 // Deepest JSON nesting accepted: glTF needs about 6 levels, and tinygltf
 // converts `extras` recursively, so deep nesting could exhaust the stack.
 constexpr int kMaxJsonDepth = 64;

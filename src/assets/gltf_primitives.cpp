@@ -219,7 +219,11 @@ MeshData GltfLoader::assemble() const
         fail(fmt::format("model has {} indices, more than the limit of {}", needs(indices), kMaxIndices));
 
     // Pass 2: the data.
+    // Reserved at the totals: growing by doubling would hold the old and the
+    // new copy at once, half again the peak at the caps.
     MeshData out;
+    out.vertices.reserve(std::size_t(*vertices));
+    out.indices.reserve(std::size_t(*indices));
     for (const Instance& i : instances)
         addPrimitive(out, i.mesh, i.primitive, i.world, i.node);
     if (out.indices.empty())

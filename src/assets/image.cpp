@@ -8,9 +8,6 @@
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBI_FAILURE_USERMSG
-// A second guard behind the header check in readImage: stb refuses to
-// decode anything larger, whatever path reaches it.
-#define STBI_MAX_DIMENSIONS (swell::kMaxImageSide)
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 

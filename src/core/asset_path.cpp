@@ -20,9 +20,12 @@ fs::path resolvedFolder(const fs::path& folder)
 std::optional<fs::path> resolveInside(const fs::path& folder, const fs::path& path)
 {
     std::error_code ec;
-    const fs::path resolved = fs::weakly_canonical(path.is_absolute() ? path : folder / path, ec);
+    const fs::path joined = path.is_absolute() ? path : folder / path;
+    fs::path resolved = fs::weakly_canonical(joined, ec);
+    // Links that cannot be followed (a loop) lead nowhere: judge the path as
+    // written, and let opening it report the loop.
     if (ec || resolved.empty())
-        return std::nullopt;
+        resolved = joined.lexically_normal();
     const fs::path relative = resolved.lexically_relative(folder);
     if (relative.empty() || relative == "." || *relative.begin() == "..")
         return std::nullopt;

@@ -20,8 +20,9 @@ std::filesystem::path resolvedFolder(const std::filesystem::path& folder);
 
 // `path` (relative to `folder`, or absolute) resolved like resolvedFolder;
 // nothing when it does not lie strictly below `folder`, which must already
-// be resolved, or cannot be resolved at all. Reads nothing but the links on
-// the way, so a refusal says nothing about the file outside.
+// be resolved. Links that cannot be followed (a loop) are judged as written;
+// opening the path then fails. Reads nothing but the links on the way, so a
+// refusal says nothing about the file outside.
 std::optional<std::filesystem::path> resolveInside(const std::filesystem::path& folder, const std::filesystem::path& path);
 
 } // namespace swell::detail

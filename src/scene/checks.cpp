@@ -54,14 +54,14 @@ void checkFile(const fs::path& base, const fs::path& resolved, const std::string
     std::error_code ec;
     fs::file_status status = fs::status(file, ec);
     if (fs::is_directory(status))
-        fail(place, fmt::format("{}: '{}' is a folder, not a file", name, file.string()));
+        fail(place, fmt::format("{}: '{}' is a folder, not a file", name, shortText(file.string())));
     if (!fs::exists(status) && !fs::is_symlink(fs::symlink_status(file, ec)))
         fail(place, fmt::format("{}: file '{}' not found (relative paths start at the scene file's folder)", name,
-                                file.string()));
+                                shortText(file.string())));
     try {
         checkInputFile(file, "file");
     } catch (const InputError& e) {
-        fail(place, fmt::format("{}: '{}': {}", name, file.string(), e.message()));
+        fail(place, fmt::format("{}: '{}': {}", name, shortText(file.string()), e.message()));
     }
 }
 
@@ -77,11 +77,12 @@ void checkObjectPath(const fs::path& base, const fs::path& resolved, const std::
         std::string known;
         for (std::string_view b : kBuiltinObjects)
             known += fmt::format("{}\"{}{}\"", known.empty() ? "" : ", ", kBuiltinObjectPrefix, b);
-        fail(place, fmt::format("{} = \"{}\" is not a built-in object; the built-ins are {}", name, path, known));
+        fail(place, fmt::format("{} = \"{}\" is not a built-in object; the built-ins are {}", name, shortText(path), known));
     }
     std::string extension = lowercase(fs::path(path).extension().string());
     if (extension != ".gltf" && extension != ".glb")
-        fail(place, fmt::format("{} = \"{}\" is not a glTF model; use a .gltf or .glb file, or \"builtin:NAME\"", name, path));
+        fail(place, fmt::format("{} = \"{}\" is not a glTF model; use a .gltf or .glb file, or \"builtin:NAME\"", name,
+                                shortText(path)));
     checkFile(base, resolved, path, name, place);
 }
 
