@@ -44,6 +44,18 @@ constexpr std::size_t kMaxIndices = 6'000'000;
 // this also bounds memory; a model within the caps above needs about 100 MB
 // of vertex data at most.
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(64) << 20;
+// Largest JSON accepted, bytes: the glTF's own JSON, or a .glb's JSON chunk.
+// Geometry belongs in buffers; the JSON is parsed twice (here and by
+// tinygltf), and its strings are copied on the way.
+constexpr std::size_t kMaxJsonBytes = std::size_t(16) << 20;
+// Most JSON values (numbers, strings, objects, arrays) accepted: parsing
+// allocates for each, about 100 bytes, so this bounds the parse at about
+// 100 MB whatever the text ("[{},{},...]" is three bytes a value).
+constexpr std::size_t kMaxJsonValues = 1'000'000;
+// Most entries in the sections tinygltf reads (scenes, nodes, meshes and
+// their primitives, accessors, bufferViews, buffers, materials) together:
+// it makes a struct of several hundred bytes for each.
+constexpr std::size_t kMaxJsonEntries = 65'536;
 // Deepest JSON nesting accepted: glTF needs about 6 levels, and tinygltf
 // converts `extras` recursively, so deep nesting could exhaust the stack.
 constexpr int kMaxJsonDepth = 64;
@@ -108,6 +120,8 @@ private:
     // Step 2 (gltf_json.cpp)
     std::string prepareJson(const GlbChunks& chunks, bool binary);
     void checkNumbers(const json& value, const std::string& where, std::string_view key) const;
+    void scanJson(std::string_view text) const;
+    void checkEntries(const json& doc) const;
     void readBuffers(const json& doc, const GlbChunks& chunks, bool binary);
     void readBufferFile(std::size_t i, const std::string& uri, std::uint64_t byteLength);
 

@@ -457,4 +457,36 @@ TEST(Bombs, ModelsThatClaimMoreThanTheyHold)
     writeFile(folder / "at_the_caps.gltf", claim);
     expectWithinBounds("model at the vertex/index caps", [&] { (void)detail::loadGltf(folder / "at_the_caps.gltf"); },
                        Outcome::Loaded);
+
+    // JSON that is all structure: as many entries as the JSON limit allows,
+    // in sections that are read and in one that is dropped.
+    const std::size_t jsonLimit = 16u << 20;
+    for (const auto& [name, head, entry] :
+         {std::tuple{"accessors of {}", std::string(R"({"asset": {"version": "2.0"}, "accessors": [)"), std::string("{},")},
+          std::tuple{"nodes of {}", std::string(R"({"asset": {"version": "2.0"}, "nodes": [)"), std::string("{},")},
+          std::tuple{"extras of 0", std::string(R"({"asset": {"version": "2.0"}, "extras": [)"), std::string("0,")}}) {
+        std::string json = head;
+        json.reserve(jsonLimit);
+        while (json.size() + entry.size() + 8 < jsonLimit)
+            json += entry;
+        json += entry.substr(0, entry.size() - 1) + "]}";
+        writeFile(folder / "structure.gltf", json);
+        expectWithinBounds(name, [&] { (void)detail::loadGltf(folder / "structure.gltf"); }, Outcome::Refused,
+                           "the JSON holds more than 1000000 values");
+    }
+    // Just under the value limit (each "{},", counts twice in the scan): parsed,
+    // then refused for its entries, or
+    // (extras, which are dropped) for having nothing to draw.
+    for (const auto& [name, head, entry, needle] :
+         {std::tuple{"499,000 accessors", std::string(R"({"asset": {"version": "2.0"}, "accessors": [)"), std::string("{},"),
+                     "at most 65536 are allowed"},
+          std::tuple{"499,000 extras", std::string(R"({"asset": {"version": "2.0"}, "nodes": [{"extras": [)"),
+                     std::string("[],"), "no triangles"}}) {
+        std::string json = head;
+        for (int i = 0; i < 499'000; ++i)
+            json += entry;
+        json += entry.substr(0, entry.size() - 1) + (name[8] == 'e' ? "]}]}" : "]}");
+        writeFile(folder / "under.gltf", json);
+        expectWithinBounds(name, [&] { (void)detail::loadGltf(folder / "under.gltf"); }, Outcome::Refused, needle);
+    }
 }
