@@ -20,7 +20,6 @@ namespace swell {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 
 // World coordinates beyond this lose too much precision in the GPU's floats
 // (1 mm steps at 1e4 m, 10 cm at 1e6 m), so positions stop here, m.
@@ -67,6 +66,7 @@ constexpr std::array<std::string_view, 2> kReflectionModes{"fixed", "raymarch"};
 static_assert(static_cast<int>(ReflectionMode::FixedDistance) == 0 && static_cast<int>(ReflectionMode::RayMarch) == 1);
 
 constexpr std::array<std::string_view, 2> kGridLayouts{"geometric", "paper"};
+constexpr std::array<std::string_view, 2> kWaveModels{"gerstner", "spectral"};
 static_assert(static_cast<int>(GridLayout::Geometric) == 0 && static_cast<int>(GridLayout::Paper) == 1);
 
 constexpr std::array<std::string_view, 6> kDebugViews{"shaded", "normals", "reflection", "refraction", "lod", "wireframe"};
@@ -74,6 +74,9 @@ static_assert(static_cast<int>(DebugView::Shaded) == SWELL_VIEW_SHADED && static
               && static_cast<int>(DebugView::Reflection) == SWELL_VIEW_REFLECTION
               && static_cast<int>(DebugView::Refraction) == SWELL_VIEW_REFRACTION
               && static_cast<int>(DebugView::Lod) == SWELL_VIEW_LOD && static_cast<int>(DebugView::Wireframe) == SWELL_VIEW_WIREFRAME);
+
+constexpr std::array<std::string_view, 2> kSpreadings{"mitsuyasu", "donelan-banner"};
+static_assert(static_cast<int>(SpreadingModel::Mitsuyasu) == 0 && static_cast<int>(SpreadingModel::DonelanBanner) == 1);
 
 // The wind settings, for reading (defaults when the wind is not set) and for
 // writing (setting a wind parameter turns the wind on).
@@ -87,6 +90,20 @@ WindSettings& wind(Scene& s)
     if (!s.waves.wind)
         s.waves.wind.emplace();
     return *s.waves.wind;
+}
+
+// The swell, likewise: setting a swell parameter turns the wind and the swell on.
+const SwellSettings& swellOf(const Scene& s)
+{
+    static const SwellSettings none;
+    return s.waves.wind && s.waves.wind->swell ? *s.waves.wind->swell : none;
+}
+SwellSettings& swellOf(Scene& s)
+{
+    WindSettings& w = wind(s);
+    if (!w.swell)
+        w.swell.emplace();
+    return *w.swell;
 }
 
 template <class T>
@@ -132,6 +149,8 @@ Parameter at(Ref, Parameter p)
 }
 
 bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
+bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
+bool swellIsSet(const Scene& s) { return s.waves.wind && s.waves.wind->swell; }
 
 using K = ParameterKind;
 using L = ParameterList;
@@ -142,6 +161,14 @@ std::vector<Parameter> buildTable()
     // Keep in the order of scene.h; scene files and docs list them so.
     std::vector<Parameter> t{
         // [waves]
+        at([](auto& s, std::size_t) -> auto& { return s.waves.model; },
+           {.key = "waves.model", .kind = K::Choice, .effect = E::Waves, .min = 0.0, .max = kWaveModels.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kWaveModels.size() - 1.0,
+            .description = "gerstner: a sum of waves, listed or from the wind; spectral: the wind's spectrum on FFT cascades",
+            .choices = kWaveModels}),
+        at([](auto& s, std::size_t) -> auto& { return s.waves.choppiness; },
+           {.key = "waves.choppiness", .effect = E::Waves, .min = 0.0, .max = 2.0, .sliderMin = 0.0, .sliderMax = 2.0,
+            .description = "spectral model: how far crests lean and troughs widen (0: linear sea)", .present = isSpectral}),
         at([](auto& s, std::size_t) -> auto& { return s.waves.listed.depth_m; },
            {.key = "waves.depth_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
             .sliderMin = 1.0, .sliderMax = 500.0, .logarithmic = true,
@@ -177,6 +204,34 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return wind(s).steepness; },
            {.key = "waves.wind.steepness", .effect = E::Waves, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "overall choppiness, scaled down to stay fold-free", .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).spreading; },
+           {.key = "waves.wind.spreading", .kind = K::Choice, .effect = E::Waves, .min = 0.0,
+            .max = kSpreadings.size() - 1.0, .sliderMin = 0.0, .sliderMax = kSpreadings.size() - 1.0,
+            .description = "how wave energy spreads over directions: cos^2s (Mitsuyasu/Hasselmann) or sech^2 (Donelan-Banner)",
+            .choices = kSpreadings, .present = windIsSet}),
+        // [waves.swell]
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).height_m; },
+           {.key = "waves.swell.height_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = 15.0, .sliderMin = 0.0,
+            .sliderMax = 8.0, .description = "significant wave height of the swell alone", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).period_s; },
+           {.key = "waves.swell.period_s", .effect = E::Waves, .unit = "s", .min = 3.0, .max = 25.0, .sliderMin = 3.0,
+            .sliderMax = 25.0, .description = "peak period; long swell from afar is 10-20 s", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).direction_deg; },
+           {.key = "waves.swell.direction_deg", .effect = E::Waves, .unit = "deg", .min = -360.0, .max = 360.0,
+            .sliderMin = 0.0, .sliderMax = 360.0, .description = "direction the swell travels towards, from +x towards +z",
+            .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).gamma; },
+           {.key = "waves.swell.gamma", .effect = E::Waves, .min = 1.0, .max = 10.0, .sliderMin = 1.0, .sliderMax = 10.0,
+            .description = "JONSWAP peak enhancement: higher is a narrower band of periods", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).sMax; },
+           {.key = "waves.swell.spreading_s", .effect = E::Waves, .min = 1.0, .max = 200.0, .sliderMin = 1.0,
+            .sliderMax = 200.0, .logarithmic = true,
+            .description = "cos^2s spreading exponent at the peak: 25 young swell, 75 from afar (Goda 1985)",
+            .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).waveCount; },
+           {.key = "waves.swell.count", .kind = K::Integer, .effect = E::Waves, .min = 1.0, .max = SWELL_MAX_WAVES - 1.0,
+            .sliderMin = 1.0, .sliderMax = SWELL_MAX_WAVES - 1.0,
+            .description = "how many swell waves, on top of waves.wind.count (together at most 64)", .present = swellIsSet}),
         // [[waves.list]]
         at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].direction; },
            {.key = "waves.list.direction", .kind = K::Direction2, .list = L::Waves, .effect = E::Waves,
@@ -197,22 +252,22 @@ std::vector<Parameter> buildTable()
             .max = 1000.0, .sliderMin = -kPi, .sliderMax = kPi, .description = "phase offset"}),
         // [grid]
         at([](auto& s, std::size_t) -> auto& { return s.grid.layout; },
-           {.key = "grid.layout", .kind = K::Choice, .effect = E::Rebuild, .min = 0.0, .max = kGridLayouts.size() - 1.0,
+           {.key = "grid.layout", .kind = K::Choice, .effect = E::Grid | E::Programs, .min = 0.0, .max = kGridLayouts.size() - 1.0,
             .sliderMin = 0.0, .sliderMax = kGridLayouts.size() - 1.0,
             .description = "geometric: spacing in proportion to distance, scaled with camera height; paper: the "
                            "paper's quadratic division points",
             .choices = kGridLayouts}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.resolution; },
-           {.key = "grid.resolution", .kind = K::Integer, .effect = E::Rebuild, .min = 16.0, .max = 2048.0,
+           {.key = "grid.resolution", .kind = K::Integer, .effect = E::Grid, .min = 16.0, .max = 2048.0,
             .sliderMin = 16.0, .sliderMax = 2048.0, .logarithmic = true, .description = "grid vertices along each side"}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.radius_m; },
-           {.key = "grid.radius_m", .effect = E::Rebuild, .unit = "m", .min = 10.0, .max = 100000.0, .sliderMin = 100.0,
+           {.key = "grid.radius_m", .effect = E::Grid, .unit = "m", .min = 10.0, .max = 100000.0, .sliderMin = 100.0,
             .sliderMax = 20000.0, .logarithmic = true, .description = "half-size of the detailed grid around the camera"}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.fadeStart_m; },
-           {.key = "grid.fade_start_m", .effect = E::Rebuild, .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
+           {.key = "grid.fade_start_m", .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
             .sliderMax = 20000.0, .description = "distance from the camera where wave height starts to fade"}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.fadeEnd_m; },
-           {.key = "grid.fade_end_m", .effect = E::Rebuild, .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
+           {.key = "grid.fade_end_m", .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
             .sliderMax = 20000.0,
             .description = "distance where the water is flat; > fade_start_m, <= radius_m"}),
         // [sun]
@@ -263,7 +318,7 @@ std::vector<Parameter> buildTable()
             .description = "how far the normal bends the refraction lookup"}),
         // [reflection]
         at([](auto& s, std::size_t) -> auto& { return s.reflection.mode; },
-           {.key = "reflection.mode", .kind = K::Choice, .min = 0.0, .max = kReflectionModes.size() - 1.0,
+           {.key = "reflection.mode", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kReflectionModes.size() - 1.0,
             .sliderMin = 0.0, .sliderMax = kReflectionModes.size() - 1.0,
             .description = "raymarch: march the reflected ray; fixed: step a fixed distance along it",
             .choices = kReflectionModes}),
@@ -272,7 +327,7 @@ std::vector<Parameter> buildTable()
             .sliderMin = 0.5, .sliderMax = 50.0, .logarithmic = true,
             .description = "step along the reflected ray in fixed mode"}),
         at([](auto& s, std::size_t) -> auto& { return s.reflection.resolutionScale; },
-           {.key = "reflection.resolution_scale", .effect = E::Rebuild, .min = 0.1, .max = 1.0, .sliderMin = 0.1,
+           {.key = "reflection.resolution_scale", .min = 0.1, .max = 1.0, .sliderMin = 0.1,
             .sliderMax = 1.0, .description = "reflection and refraction target size relative to the output"}),
         at([](auto& s, std::size_t) -> auto& { return s.reflection.clipOffset_m; },
            {.key = "reflection.clip_offset_m", .unit = "m", .min = 0.0, .max = 10.0, .sliderMin = 0.0, .sliderMax = 2.0,
@@ -307,7 +362,7 @@ std::vector<Parameter> buildTable()
            {.key = "camera.near_m", .unit = "m", .min = 0.0, .max = 1000.0, .minExclusive = true, .sliderMin = 0.01,
             .sliderMax = 10.0, .logarithmic = true, .description = "near clip plane"}),
         at([](auto& s, std::size_t) -> auto& { return s.camera.far_m; },
-           {.key = "camera.far_m", .unit = "m", .min = 0.0, .max = 1.0e7, .minExclusive = true, .sliderMin = 100.0,
+           {.key = "camera.far_m", .effect = E::Grid, .unit = "m", .min = 0.0, .max = 1.0e7, .minExclusive = true, .sliderMin = 100.0,
             .sliderMax = 100000.0, .logarithmic = true, .description = "far clip plane; > near_m"}),
         // [[camera.path]]
         at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].time_s; },
@@ -325,11 +380,11 @@ std::vector<Parameter> buildTable()
             .sliderMin = -89.0, .sliderMax = 89.0, .description = "up (+) or down (-) from the horizon"}),
         // top level
         at([](auto& s, std::size_t) -> auto& { return s.debugView; },
-           {.key = "debug_view", .kind = K::Choice, .min = 0.0, .max = kDebugViews.size() - 1.0, .sliderMin = 0.0,
+           {.key = "debug_view", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kDebugViews.size() - 1.0, .sliderMin = 0.0,
             .sliderMax = kDebugViews.size() - 1.0, .description = "what the water shows: the shaded ocean or one ingredient",
             .choices = kDebugViews}),
         at([](auto& s, std::size_t) -> auto& { return s.showTerrain; },
-           {.key = "terrain", .kind = K::Flag, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+           {.key = "terrain", .kind = K::Flag, .effect = E::World, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "draw the built-in island"}),
     };
 

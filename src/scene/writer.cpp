@@ -76,6 +76,10 @@ std::string saveScene(const Scene& scene)
     if (scene.waves.wind) {
         out += "\n[waves.wind]\n";
         writeParameters(out, scene, "waves.wind", ParameterList::None, 0);
+        if (scene.waves.wind->swell) {
+            out += "\n[waves.swell]\n";
+            writeParameters(out, scene, "waves.swell", ParameterList::None, 0);
+        }
     } else {
         for (std::size_t i = 0; i < scene.waves.listed.waves.size(); ++i) {
             out += "\n[[waves.list]]\n";

@@ -129,6 +129,14 @@ std::string numberFormat(const Parameter& p)
     return format;
 }
 
+// Parameters whose change rebuilds GPU resources are applied once, when the
+// slider is let go, not at every step of a drag.
+bool appliedOnRelease(const Parameter& p)
+{
+    return hasEffect(p.effect, ParameterEffect::Grid) || hasEffect(p.effect, ParameterEffect::Programs) ||
+           hasEffect(p.effect, ParameterEffect::World);
+}
+
 void tooltip(const Parameter& p)
 {
     if (!ImGui::IsItemHovered())
@@ -139,11 +147,10 @@ void tooltip(const Parameter& p)
     if (!p.description.empty())
         ImGui::TextUnformatted(p.description.data(), p.description.data() + p.description.size());
     ImGui::TextDisabled("allowed: %s", rangeText(p).c_str());
-    switch (p.effect) {
-    case ParameterEffect::Frame: break;
-    case ParameterEffect::Waves: ImGui::TextDisabled("changes the wave set"); break;
-    case ParameterEffect::Rebuild: ImGui::TextDisabled("rebuilds GPU resources: applied when the slider is let go"); break;
-    }
+    if (hasEffect(p.effect, ParameterEffect::Waves))
+        ImGui::TextDisabled("changes the wave set");
+    if (appliedOnRelease(p))
+        ImGui::TextDisabled("rebuilds GPU resources: applied when the slider is let go");
     ImGui::TextDisabled("Ctrl+click to type a value outside the slider");
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
@@ -322,7 +329,7 @@ bool Panel::editParameter(Session& session, const Parameter& p, std::size_t item
     ImGui::PopID();
 
     bool commit = r.changed;
-    if (p.effect == ParameterEffect::Rebuild) {
+    if (appliedOnRelease(p)) {
         if (r.changed && r.active) {
             staged_ = Staged{p.key, item, value};
             commit = false;
@@ -547,7 +554,7 @@ void Panel::drawParameters(Session& session, Scene& edited, bool& changed)
                     // Keep the sea as it looks: the generated waves become the list.
                     std::vector<Wave>& listed = edited.waves.listed.waves;
                     if (listed.empty()) {
-                        listed = session.renderer().waves().waves;
+                        listed = resolveWaves(edited.waves).waves;
                         if (listed.size() > SWELL_MAX_WAVES)
                             listed.resize(SWELL_MAX_WAVES);
                     }
