@@ -5,6 +5,8 @@
 // swell/parameters.h; the comments below only summarise them.
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/spectrum.h"
 #include "swell/waves.h"
 
@@ -28,7 +30,7 @@ enum class ReflectionMode {
 enum class DebugView { Shaded, Normals, Reflection, Refraction, Lod, Wireframe };
 
 // Where the waves come from: listed by hand, or generated from the wind.
-struct WaveSource {
+struct SWELL_API WaveSource {
     std::optional<WindSettings> wind; // when set, waves are generated and `listed` is ignored
     WaveSet listed;                   // hand-listed waves (and the water depth for both)
 };
@@ -41,7 +43,7 @@ enum class GridLayout {
 
 // The camera-following LOD grid of the paper. Rebuild settings: a change
 // recreates the grid's index buffer.
-struct GridSettings {
+struct SWELL_API GridSettings {
     GridLayout layout = GridLayout::Geometric;
     int resolution = 121;       // vertices along each side, 16..2048
     double radius_m = 2000.0;   // half-size of the detailed grid around the camera, m, 10..100000
@@ -50,13 +52,13 @@ struct GridSettings {
     double fadeEnd_m = 1900.0;
 };
 
-struct SunSettings {
+struct SWELL_API SunSettings {
     glm::dvec3 direction{-0.4, 0.35, -0.85}; // towards the sun, world space; normalised on use
     glm::dvec3 color{1.0, 0.95, 0.85};        // linear RGB, 0..1
     double intensity = 1.0;                   // multiplier, 0..20
 };
 
-struct SkySettings {
+struct SWELL_API SkySettings {
     // Six images (+x, -x, +y, -y, +z, -z), paths relative to the scene file.
     // Empty: the built-in procedural sky, coloured from the values below.
     std::vector<std::string> cubemapFaces;
@@ -64,13 +66,13 @@ struct SkySettings {
     glm::dvec3 horizonColor{0.70, 0.80, 0.90}; // linear RGB, 0..1
 };
 
-struct FogSettings {
+struct SWELL_API FogSettings {
     double start_m = 1200.0;               // fog begins, m from the camera, >= 0
     double end_m = 6000.0;                 // fog is complete, m, > start
     glm::dvec3 color{0.70, 0.80, 0.90};    // linear RGB, 0..1
 };
 
-struct WaterSettings {
+struct SWELL_API WaterSettings {
     glm::dvec3 deepColor{0.01, 0.06, 0.10};       // colour of light scattered back from deep water, linear RGB
     glm::dvec3 absorption_per_m{0.45, 0.09, 0.06}; // Beer-Lambert absorption coefficient per channel, 1/m, >= 0
     double fresnelF0 = 0.02;                      // reflectance looking straight down, 0..1 (water: 0.02)
@@ -79,7 +81,7 @@ struct WaterSettings {
     double refractionDistortion = 0.05;           // how much the normal bends the refraction lookup, 0..1
 };
 
-struct ReflectionSettings {
+struct SWELL_API ReflectionSettings {
     ReflectionMode mode = ReflectionMode::RayMarch;
     double fixedDistance_m = 5.0;  // step along the reflected ray in FixedDistance mode, m (the paper: 5)
     double resolutionScale = 0.5;  // reflection/refraction target size relative to the output, 0.1..1
@@ -92,7 +94,7 @@ inline constexpr std::string_view kBuiltinObjectPrefix = "builtin:";
 inline constexpr std::array<std::string_view, 3> kBuiltinObjects{"buoy", "boat", "rock"};
 
 // A glTF model placed in the world.
-struct SceneObject {
+struct SWELL_API SceneObject {
     std::string path;                 // .gltf or .glb, relative to the scene file; "builtin:NAME" for a built-in
     glm::dvec3 position_m{0.0};       // world position, m
     double yaw_deg = 0.0;             // rotation about +y, degrees
@@ -100,14 +102,14 @@ struct SceneObject {
     bool floats = false;              // ride the waves (height and tilt from the CPU wave query)
 };
 
-struct CameraKey {
+struct SWELL_API CameraKey {
     double time_s = 0.0;          // when the camera is here, s
     glm::dvec3 position_m{0.0};   // world position, m
     double yaw_deg = 0.0;         // heading, degrees from -z towards +x
     double pitch_deg = 0.0;       // up/down, degrees, -89..89
 };
 
-struct CameraSettings {
+struct SWELL_API CameraSettings {
     glm::dvec3 position_m{0.0, 6.0, 0.0}; // world position, m
     double yaw_deg = 0.0;                  // heading, degrees from -z towards +x
     double pitch_deg = -5.0;               // degrees, -89..89
@@ -117,7 +119,7 @@ struct CameraSettings {
     std::vector<CameraKey> path;           // optional: keys sorted by time, interpolated linearly
 };
 
-struct Scene {
+struct SWELL_API Scene {
     WaveSource waves;
     GridSettings grid;
     SunSettings sun;
@@ -135,11 +137,11 @@ struct Scene {
 };
 
 // The built-in default scene: an open ocean under a trade wind, with an island.
-Scene defaultScene();
+SWELL_API Scene defaultScene();
 
 // The wave set the scene describes at load time: generateWaves(*source.wind)
 // when the wind is set, else source.listed. Either way the water depth is
 // source.listed.depth_m (the wind's own depth_m is overridden by it).
-WaveSet resolveWaves(const WaveSource& source);
+SWELL_API WaveSet resolveWaves(const WaveSource& source);
 
 } // namespace swell

@@ -3,13 +3,15 @@
 // settings always give the same waves.
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/waves.h"
 
 #include <cstdint>
 
 namespace swell {
 
-struct WindSettings {
+struct SWELL_API WindSettings {
     double windSpeed_mps = 8.0;       // wind speed 10 m above the sea, m/s, 0.5..40
     double windDirection_deg = 0.0;   // direction the wind blows towards, degrees from +x towards +z
     double spread_deg = 35.0;         // half-width of the directional spread, degrees, 0..180
@@ -23,7 +25,7 @@ struct WindSettings {
 
 // The JONSWAP spectrum of a wind (Hasselmann et al. 1973), in finite depth
 // with the TMA factor (Bouws et al. 1985).
-struct SpectrumParameters {
+struct SWELL_API SpectrumParameters {
     double alpha = 0.0081;            // Phillips constant, dimensionless
     double peakFrequency_radps = 1.0; // omega_p, rad/s
     double gamma = 3.3;               // peak enhancement, dimensionless
@@ -35,14 +37,14 @@ struct SpectrumParameters {
 // with chi = g*fetch/U^2. chi is capped where omega_p reaches the fully
 // developed Pierson-Moskowitz peak 0.877*g/U (chi ~ 15800, 160 km of fetch
 // at 10 m/s): longer fetch adds nothing.
-SpectrumParameters jonswapParameters(const WindSettings& wind);
+SWELL_API SpectrumParameters jonswapParameters(const WindSettings& wind);
 
 // Energy density S(omega), m^2*s/rad, at angular frequency omega_radps > 0.
-double spectralDensity(const SpectrumParameters& spectrum, double omega_radps);
+SWELL_API double spectralDensity(const SpectrumParameters& spectrum, double omega_radps);
 
 // Significant wave height 4*sqrt(m0), m, of a wave set, where m0 = sum(A^2/2)
 // is the variance of the surface height.
-double significantWaveHeight(const WaveSet& set);
+SWELL_API double significantWaveHeight(const WaveSet& set);
 
 // Draws a wave set whose energy follows the JONSWAP spectrum for the given
 // wind, fetch and depth, split over waveCount waves. The result passes
@@ -66,6 +68,6 @@ double significantWaveHeight(const WaveSet& set);
 // The same settings give bit-identical waves: the random numbers come from
 // std::mt19937, whose sequence the C++ standard fixes, through distributions
 // written here, not the standard library's implementation-defined ones.
-WaveSet generateWaves(const WindSettings& wind);
+SWELL_API WaveSet generateWaves(const WindSettings& wind);
 
 } // namespace swell

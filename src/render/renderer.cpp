@@ -8,6 +8,7 @@
 #include "render/sky_cubemap.h"
 #include "render/water_grid.h"
 #include "swell/error.h"
+#include "swell/gl/shader.h"
 #include "swell/grid.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -383,6 +384,9 @@ struct Renderer::Impl {
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        // The shaders write display-ready (sRGB-encoded) colour: a host that
+        // enabled sRGB writes would have it encoded twice.
+        glDisable(GL_FRAMEBUFFER_SRGB);
         // Filter across cubemap face edges (off by default even in core profiles).
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
         glClearColor(clear.r, clear.g, clear.b, clear.a);
