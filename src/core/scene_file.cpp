@@ -555,6 +555,14 @@ private:
         }
     }
 
+    static bool isTopLevelKey(std::string_view name)
+    {
+        for (const Parameter& p : parameters())
+            if (p.list == ParameterList::None && p.key == name)
+                return true;
+        return false;
+    }
+
     [[noreturn]] void unknownKey(const toml::key& key, const std::string& schema, const std::string& shownPrefix,
                                  ParameterList list)
     {
@@ -590,6 +598,12 @@ private:
         if (guess) {
             auto at = std::find(schemaNames.begin(), schemaNames.end(), *guess) - schemaNames.begin();
             message += fmt::format("; did you mean '{}'?", shownNames[static_cast<std::size_t>(at)]);
+        } else if (const std::size_t dot = shown.rfind('.'); dot != std::string::npos && isTopLevelKey(key.str())) {
+            // In TOML a key belongs to the last [table] above it, so a
+            // top-level key written after one lands in that table.
+            message += fmt::format("; '{}' is a top-level key: write it above the first [table] header, "
+                                   "since every key after [{}] belongs to that table",
+                                   key.str(), shown.substr(0, dot));
         }
         fail(places_.of(key.source()), message);
     }
@@ -962,6 +976,64 @@ void writeParameters(std::string& out, const Scene& scene, std::string_view tabl
 
 // ---------------------------------------------------------------------------
 
+// A missing ']' at the end of an array's line is found by the TOML parser
+// only on the next line, which it reads as more of the array. When the error
+// lies on a later line than the innermost array still open there, this is
+// the place to report instead: the end of the line that opened that array.
+// Strings and comments are skipped; nullopt when no array is open.
+std::optional<SourcePlace> unclosedArrayBefore(std::string_view text, const toml::source_position& error,
+                                               const std::string& path)
+{
+    std::vector<std::pair<int, std::size_t>> open; // line and offset of each '[' still open
+    int line = 1;
+    std::size_t lineStart = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (line > int(error.line) || (line == int(error.line) && i - lineStart + 1 >= error.column))
+            break;
+        const char c = text[i];
+        if (c == '\n') {
+            ++line;
+            lineStart = i + 1;
+        } else if (c == '#') {
+            while (i + 1 < text.size() && text[i + 1] != '\n')
+                ++i;
+        } else if (c == '"' || c == '\'') {
+            // A basic or literal string on one line; multi-line strings are not
+            // looked into (an error inside one is reported where the parser says).
+            while (i + 1 < text.size() && text[i + 1] != c && text[i + 1] != '\n')
+                i += text[i + 1] == '\\' && c == '"' ? 2 : 1;
+            ++i;
+        } else if (c == '[') {
+            open.emplace_back(line, i);
+        } else if (c == ']' && !open.empty()) {
+            open.pop_back();
+        }
+    }
+    if (open.empty() || open.back().first >= int(error.line))
+        return std::nullopt;
+    // Only where the parser stopped at the first thing on its line, and the
+    // array's line goes on after its '[' (an array written one element a line
+    // has its '[' last: there the missing piece is more likely a comma).
+    const std::size_t errorLineStart = lineStart;
+    const std::size_t firstToken = text.find_first_not_of(" \t", errorLineStart);
+    if (firstToken == std::string_view::npos || firstToken - errorLineStart + 1 != error.column)
+        return std::nullopt;
+    // The end of the opening line, comments and trailing blanks left out.
+    const std::size_t from = open.back().second;
+    std::size_t end = text.find('\n', from);
+    if (end == std::string_view::npos)
+        end = text.size();
+    std::string_view rest = text.substr(from, end - from);
+    if (const std::size_t hash = rest.find('#'); hash != std::string_view::npos)
+        rest = rest.substr(0, hash);
+    while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t' || rest.back() == '\r'))
+        rest.remove_suffix(1);
+    if (rest.size() <= 1)
+        return std::nullopt;
+    const std::size_t start = text.rfind('\n', from) == std::string_view::npos ? 0 : text.rfind('\n', from) + 1;
+    return SourcePlace{path, open.back().first, int(from - start + rest.size()) + 1};
+}
+
 Scene parseScene(std::string_view text, const fs::path& virtualPath)
 {
     Places places(virtualPath.string());
@@ -975,6 +1047,12 @@ Scene parseScene(std::string_view text, const fs::path& virtualPath)
     try {
         root = toml::parse(text, std::string_view(places.path()));
     } catch (const toml::parse_error& e) {
+        const bool arrayOpen = e.description().find("closing ']'") != std::string_view::npos;
+        if (const std::optional<SourcePlace> open =
+                arrayOpen ? unclosedArrayBefore(text, e.source().begin, places.path()) : std::nullopt)
+            fail(*open, fmt::format("TOML syntax: this array has no closing ']' (the parser read on into line {} "
+                                    "and stopped there: {})",
+                                    e.source().begin.line, e.description()));
         fail(places.of(e.source()), fmt::format("TOML syntax: {}", e.description()));
     }
 
