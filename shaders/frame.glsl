@@ -6,31 +6,56 @@
 #define SWELL_FRAME_GLSL
 #include "swell/shader_constants.h"
 
+// A box holding world geometry, relative to the render origin, m.
+struct WorldBox {
+    vec3 min_m;
+    vec3 max_m;
+};
+
+// One snap level of the LOD grid (see grid.glsl).
+struct GridLevel {
+    vec2 snapOffset_m; // grid centre (absolute) modulo this level's snap step, m
+    float firstRing;   // geometric layout: the first ring that snaps to this level
+};
+
 layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     mat4 passViewProj;      // this pass's camera (mirrored in the reflection pass)
     mat4 passInvViewProj;
     mat4 cameraViewProj;    // the real camera, for screen-space lookups
     mat4 cameraInvViewProj;
     vec4 clipPlane;         // world geometry keeps dot(clipPlane, (p, 1)) >= 0
-    vec4 eyePosition;       // xyz: eye relative to the render origin, m
-    vec4 sunDirection;      // xyz: towards the sun (unit), w: intensity
-    vec4 sunColor;          // rgb: linear colour
-    vec4 fogColor;          // rgb: linear colour, w: height of the fog layer for the sky, m
-    vec4 fogRange;          // x: start, y: end, m
-    vec4 skyZenith;         // rgb
-    vec4 skyHorizon;        // rgb
-    vec4 waterDeep;         // rgb: scattering colour of deep water
-    vec4 waterAbsorption;   // rgb: Beer-Lambert coefficient, 1/m
-    vec4 waterOptics;       // x: Fresnel F0, y: shininess, z: specular strength, w: refraction distortion
-    vec4 gridShape;         // x: radius, m; y: cells per side; z: distance of the outer skirt, m; w: finest snap step (scaled), m
-    vec4 gridFade;          // x: fade start, y: fade end, m
-    vec4 gridCenter;        // xz: grid centre relative to the render origin, m
-    vec4 gridLayout;        // x: 0 geometric, 1 paper; y: inner scale r0 times the scale, m; z: growth k; w: scale
-    vec4 snapOffsets[SWELL_GRID_LEVELS]; // xy: grid centre (absolute) modulo each level's snap step, m; z: first ring of the level (geometric)
-    vec4 reflectionParams;  // x: fixed distance, m; y: clip offset, m; z: mode (0 fixed, 1 ray march); w: world boxes in use (-1: unbounded)
-    vec4 worldBoxes[2 * SWELL_MAX_WORLD_BOXES]; // min.xyz, max.xyz of boxes holding all world geometry, relative to the render origin, m
-    vec4 viewport;          // xy: size in pixels, zw: 1 / size
-    vec4 passFlags;         // x: 1 when this pass writes display colours (sRGB), 0 for linear targets
+    vec3 eyePosition;       // the eye relative to the render origin, m
+    float fresnelF0;        // reflectance looking straight down, 0..1
+    vec3 sunDirection;      // towards the sun, unit
+    float sunIntensity;     // multiplier
+    vec3 sunColor;          // linear RGB
+    float fogSkyLayer_m;    // height of the fog layer the sky is fogged through, m
+    vec3 fogColor;          // linear RGB
+    float fogStart_m;       // fog begins, m from the eye
+    vec3 skyZenith;         // linear RGB
+    float fogEnd_m;         // fog is complete, m
+    vec3 skyHorizon;        // linear RGB
+    float shininess;        // Phong exponent of the sun glint
+    vec3 waterDeep;         // linear RGB scattered back by deep water
+    float specularStrength; // sun glint multiplier
+    vec3 waterAbsorption;   // Beer-Lambert coefficient per channel, 1/m
+    float refractionDistortion; // how far the normal bends the refraction lookup
+    vec2 gridCenter;        // x,z of the grid centre relative to the render origin, m
+    float gridRadius_m;     // reach of the detailed grid (paper layout), m
+    float gridCells;        // cells per side
+    float gridSkirt_m;      // distance of the outer skirt, m
+    float gridFinestStep_m; // finest snap step (scaled), m
+    float gridFadeStart_m;  // wave heights fade to 0 between these distances, m
+    float gridFadeEnd_m;
+    float gridInnerScale_m; // geometric layout: inner scale r0 times the grid scale, m
+    float gridGrowth;       // geometric layout: growth k
+    float reflectionFixedDistance_m; // the paper's lookup: step along the reflected ray, m
+    int worldBoxCount;      // boxes in use; -1: unbounded (every ray is marched)
+    vec2 viewportSize;      // pixels
+    vec2 viewportInvSize;   // 1 / pixels
+    int passEncodesSrgb;    // 1 when this pass writes display colours (sRGB), 0 for linear targets
+    GridLevel gridLevels[SWELL_GRID_LEVELS];
+    WorldBox worldBoxes[SWELL_MAX_WORLD_BOXES];
 };
 
 // The point the real camera sees at texture coordinate uv and window depth.
@@ -43,7 +68,7 @@ vec3 worldFromScreen(vec2 uv, float depth)
 // Linear colour as this pass must store it: sRGB-encoded for display, as is otherwise.
 vec4 passOutput(vec3 linear)
 {
-    if (passFlags.x > 0.5)
+    if (passEncodesSrgb != 0)
         linear = mix(12.92 * linear, 1.055 * pow(max(linear, 0.0), vec3(1.0 / 2.4)) - 0.055, step(0.0031308, linear));
     return vec4(linear, 1.0);
 }

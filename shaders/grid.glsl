@@ -1,9 +1,9 @@
 // The camera-following LOD grid, generated from the vertex index.
 //
 // Grid line i of n (i = 0..n) sits at offset s(i) from the grid centre, with
-// u = (i - n/2) / (n/2) in -1..1. Two layouts (gridLayout.x):
+// u = (i - n/2) / (n/2) in -1..1. Two layouts (the variant SWELL_GRID_LAYOUT):
 //
-// paper (1): the paper's quadratic division points, p = 1/2 + (2/n^2)|i - n/2|(i - n/2), scaled:
+// paper (SWELL_GRID_PAPER): the paper's quadratic division points, p = 1/2 + (2/n^2)|i - n/2|(i - n/2), scaled:
 //
 //     s(i) = radius * u * |u|                    spacing grows with sqrt(distance)
 //
@@ -11,7 +11,7 @@
 //     |    |   |  | | ||||||| | |  |   |    |
 //
 // Its lines run the whole grid, so the fine lines near the centre make slivers
-// far out. geometric (0, the default) uses concentric square rings instead:
+// far out. geometric (SWELL_GRID_GEOMETRIC, the default) uses concentric square rings instead:
 // ring r = max(|i - n/2|, |j - n/2|) lies at Chebyshev radius
 //
 //     f(r) = scale * r0 * (exp(k * r / (n/2)) - 1),   k = ln(1 + radius / r0)
@@ -37,7 +37,7 @@
 // moves, the centre snaps to the finest step, and each vertex snaps to a
 // world-fixed lattice whose step is a power-of-two multiple of the finest
 // step: not above the line's spacing (paper), or half the ring's spacing
-// (geometric; its level comes from a per-ring table, snapOffsets[l].z, so
+// (geometric; its level comes from a per-ring table, gridLevels[l].firstRing, so
 // the CPU twin agrees). A vertex only ever sits on world-fixed points of its
 // level. The finest step of scale 2^m is 2^m times that of scale 1, so every
 // scale's lattices are lattices of scale 1.
@@ -58,64 +58,66 @@ float snapToLattice(float s, float step, float offset)
 // The paper's layout: offset of line i (scale is 1).
 float paperLineOffset(float i)
 {
-    float half_n = 0.5 * gridShape.y;
+    float half_n = 0.5 * gridCells;
     float u = (i - half_n) / half_n;
-    return gridShape.x * u * abs(u);
+    return gridRadius_m * u * abs(u);
 }
 
 // Offset of line i after snapping to its level's lattice; spacing returns the
 // line's spacing (the smaller gap to its neighbours), m.
 float paperLine(int i, int axis, out float spacing)
 {
-    float n = gridShape.y;
+    float n = gridCells;
     if (i == 0 || i == int(n)) {
-        spacing = gridShape.z;
-        return (i == 0 ? -1.0 : 1.0) * gridShape.z;
+        spacing = gridSkirt_m;
+        return (i == 0 ? -1.0 : 1.0) * gridSkirt_m;
     }
     float s = paperLineOffset(float(i));
     spacing = min(paperLineOffset(float(i + 1)) - s, s - paperLineOffset(float(i - 1)));
-    float step0 = gridShape.w;
+    float step0 = gridFinestStep_m;
     int level = clamp(int(floor(log2(max(spacing, step0) / step0))), 0, SWELL_GRID_LEVELS - 1);
-    return snapToLattice(s, step0 * exp2(float(level)), snapOffsets[level][axis]);
+    return snapToLattice(s, step0 * exp2(float(level)), gridLevels[level].snapOffset_m[axis]);
 }
 
 GridVertex geometricVertex(int i, int j)
 {
-    int half_n = int(gridShape.y) / 2;
+    int half_n = int(gridCells) / 2;
     ivec2 d = ivec2(i, j) - half_n;
     int ring = max(abs(d.x), abs(d.y));
     if (ring == half_n)
-        return GridVertex(vec2(d) * (gridShape.z / float(half_n)), gridShape.z);
-    float r0 = gridLayout.y, k = gridLayout.z;
+        return GridVertex(vec2(d) * (gridSkirt_m / float(half_n)), gridSkirt_m);
+    float r0 = gridInnerScale_m, k = gridGrowth;
     float u = float(ring) / float(half_n);
     float radius = r0 * (exp(k * u) - 1.0);
     float radial = r0 * k * exp(k * u) / float(half_n);
     float tangential = ring == 0 ? radial : radius / float(ring);
     int level = 0;
     for (int l = 1; l < SWELL_GRID_LEVELS; ++l)
-        level = ring >= int(snapOffsets[l].z) ? l : level;
-    float step = gridShape.w * exp2(float(level));
+        level = ring >= int(gridLevels[l].firstRing) ? l : level;
+    float step = gridFinestStep_m * exp2(float(level));
     vec2 nominal = vec2(d) * tangential;
-    vec2 offset = vec2(snapToLattice(nominal.x, step, snapOffsets[level].x),
-                       snapToLattice(nominal.y, step, snapOffsets[level].y));
+    vec2 offset = vec2(snapToLattice(nominal.x, step, gridLevels[level].snapOffset_m.x),
+                       snapToLattice(nominal.y, step, gridLevels[level].snapOffset_m.y));
     return GridVertex(offset, max(radial, tangential));
 }
 
 GridVertex gridVertex(int vertexId)
 {
-    int lines = int(gridShape.y) + 1;
+    int lines = int(gridCells) + 1;
     int i = vertexId % lines;
     int j = vertexId / lines;
-    if (gridLayout.x < 0.5)
-        return geometricVertex(i, j);
+#if SWELL_GRID_LAYOUT == SWELL_GRID_GEOMETRIC
+    return geometricVertex(i, j);
+#else
     float sx, sz;
     vec2 offset = vec2(paperLine(i, 0, sx), paperLine(j, 1, sz));
     return GridVertex(offset, max(sx, sz));
+#endif
 }
 
-// Wave height fades to 0 between gridFade.x and gridFade.y metres (Earth curvature).
+// Wave height fades to 0 between gridFadeStart_m and gridFadeEnd_m metres (Earth curvature).
 float horizonFade(float distance_m)
 {
-    return 1.0 - smoothstep(gridFade.x, gridFade.y, distance_m);
+    return 1.0 - smoothstep(gridFadeStart_m, gridFadeEnd_m, distance_m);
 }
 #endif

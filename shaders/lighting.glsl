@@ -10,7 +10,7 @@ float fresnelSchlick(float cosTheta, float f0)
 
 float phongDiffuse(vec3 normal)
 {
-    return max(dot(normal, sunDirection.xyz), 0.0);
+    return max(dot(normal, sunDirection), 0.0);
 }
 
 // Specular lobe of the sun reflected about normal, seen along toEye:
@@ -19,8 +19,8 @@ float phongDiffuse(vec3 normal)
 // reflects the sun only as much as it reflects anything at that angle.
 float phongSpecular(vec3 normal, vec3 toEye, float shininess, float f0)
 {
-    vec3 r = reflect(-sunDirection.xyz, normal);
-    vec3 h = normalize(sunDirection.xyz + toEye);
+    vec3 r = reflect(-sunDirection, normal);
+    vec3 h = normalize(sunDirection + toEye);
     const float pi = 3.14159265;
     return fresnelSchlick(dot(h, toEye), f0) * pow(max(dot(r, toEye), 0.0), shininess) * (shininess + 2.0) / (8.0 * pi);
 }

@@ -13,13 +13,13 @@ void main()
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing)
         n = -n;
-    vec3 ambient = mix(skyHorizon.rgb, skyZenith.rgb, n.y * 0.5 + 0.5) * 0.45;
-    vec3 light = ambient + sunColor.rgb * sunDirection.w * phongDiffuse(n);
+    vec3 ambient = mix(skyHorizon, skyZenith, n.y * 0.5 + 0.5) * 0.45;
+    vec3 light = ambient + sunColor * sunIntensity * phongDiffuse(n);
     vec3 color = vColor * light;
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS
     color = n * 0.5 + 0.5;
 #endif
     // Fog measured from the real eye, also in the mirrored pass (where the
     // mirrored point is as far from the eye as the real one's reflection).
-    fragColor = passOutput(applyFog(color, distance(vPosition, eyePosition.xyz)));
+    fragColor = passOutput(applyFog(color, distance(vPosition, eyePosition)));
 }

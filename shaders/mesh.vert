@@ -5,7 +5,7 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 color;
 
-layout(location = 0) uniform mat4 model; // object to render-origin-relative world, m
+uniform mat4 model; // object to render-origin-relative world, m
 
 out vec3 vPosition;
 out vec3 vNormal;

@@ -35,7 +35,7 @@ vec3 lookupWithFallback(vec2 uv, vec3 direction)
 // The paper's lookup: step a fixed distance along the reflected ray.
 vec3 reflectFixedDistance(vec3 surface, vec3 direction)
 {
-    vec3 p = projectMirrored(surface + direction * reflectionParams.x);
+    vec3 p = projectMirrored(surface + direction * reflectionFixedDistance_m);
     return lookupWithFallback(p.xy, direction);
 }
 
@@ -54,14 +54,14 @@ float behindScene(vec3 surface, vec3 direction, float t, out vec2 uv)
     if (sceneDepth >= 1.0)
         return -1e9;
     vec3 mirroredRay = vec3(ray.x, -ray.y, ray.z);
-    return distance(eyePosition.xyz, mirroredRay) - distance(eyePosition.xyz, worldFromScreen(p.xy, sceneDepth));
+    return distance(eyePosition, mirroredRay) - distance(eyePosition, worldFromScreen(p.xy, sceneDepth));
 }
 
 // The distances along the ray from surface where it is inside any world box
 // (x: first entry, y: last exit; x > y when it misses them all).
 vec2 worldSpan(vec3 surface, vec3 direction)
 {
-    int boxes = int(reflectionParams.w);
+    int boxes = worldBoxCount;
     if (boxes < 0)
         return vec2(0.0, 1e30);
     // Axis-parallel components would divide by zero: nudge them.
@@ -69,8 +69,8 @@ vec2 worldSpan(vec3 surface, vec3 direction)
     vec3 inverse = 1.0 / d;
     vec2 span = vec2(1e30, -1e30);
     for (int b = 0; b < boxes; ++b) {
-        vec3 t0 = (worldBoxes[2 * b].xyz - surface) * inverse;
-        vec3 t1 = (worldBoxes[2 * b + 1].xyz - surface) * inverse;
+        vec3 t0 = (worldBoxes[b].min_m - surface) * inverse;
+        vec3 t1 = (worldBoxes[b].max_m - surface) * inverse;
         vec3 near = min(t0, t1), far = max(t0, t1);
         float enter = max(max(near.x, near.y), max(near.z, 0.0));
         float exit = min(min(far.x, far.y), far.z);
@@ -132,8 +132,10 @@ vec3 reflectedRadiance(vec3 surface, vec3 direction)
     // bend it to the horizon instead of looking under the surface.
     direction.y = max(direction.y, 0.002);
     direction = normalize(direction);
-    if (reflectionParams.z < 0.5)
-        return reflectFixedDistance(surface, direction);
+#if SWELL_REFLECTION_MODE == SWELL_REFLECTION_FIXED
+    return reflectFixedDistance(surface, direction);
+#else
     return reflectRayMarch(surface, direction);
+#endif
 }
 #endif

@@ -11,7 +11,7 @@ layout(binding = SWELL_UNIT_REFRACTION_DEPTH) uniform sampler2D refractionDepth;
 // Deep water where no geometry lies below gives the water's own colour.
 vec3 refractedRadiance(vec3 surface, vec3 normal, vec2 screenUv, out float pathLength_m)
 {
-    vec2 uv = clamp(screenUv + normal.xz * waterOptics.w, vec2(0.001), vec2(0.999));
+    vec2 uv = clamp(screenUv + normal.xz * refractionDistortion, vec2(0.001), vec2(0.999));
     float depth = texture(refractionDepth, uv).r;
     // The bent lookup must land on something under the water, not in front of it.
     vec3 below = worldFromScreen(uv, depth);
@@ -21,8 +21,8 @@ vec3 refractedRadiance(vec3 surface, vec3 normal, vec2 screenUv, out float pathL
         below = worldFromScreen(uv, depth);
     }
     pathLength_m = depth >= 1.0 ? 1e6 : max(distance(surface, below), 0.0);
-    vec3 transmitted = exp(-waterAbsorption.rgb * pathLength_m);
+    vec3 transmitted = exp(-waterAbsorption * pathLength_m);
     vec3 seen = depth >= 1.0 ? vec3(0.0) : texture(refractionColor, uv).rgb;
-    return seen * transmitted + waterDeep.rgb * (1.0 - transmitted);
+    return seen * transmitted + waterDeep * (1.0 - transmitted);
 }
 #endif

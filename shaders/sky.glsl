@@ -12,8 +12,8 @@ layout(binding = SWELL_UNIT_SKY) uniform samplerCube skyCube;
 // degree, so a baked disc would be a blurred blob two or three texels wide.
 vec3 sunDisc(vec3 d)
 {
-    float disk = smoothstep(0.99996, 0.99999, dot(d, sunDirection.xyz));
-    return sunColor.rgb * sunDirection.w * disk * 20.0;
+    float disk = smoothstep(0.99996, 0.99999, dot(d, sunDirection));
+    return sunColor * sunIntensity * disk * 20.0;
 }
 
 // Linear sky radiance along a direction, from mip level 0. For callers in

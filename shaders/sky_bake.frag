@@ -3,7 +3,7 @@
 #include "frame.glsl"
 #include "sky_procedural.glsl"
 
-layout(location = 0) uniform int face; // 0..5: +x, -x, +y, -y, +z, -z
+uniform int face; // 0..5: +x, -x, +y, -y, +z, -z
 
 in vec2 vNdc;
 out vec4 fragColor;

@@ -11,15 +11,15 @@
 vec3 proceduralSky(vec3 d)
 {
     float elevation = clamp(d.y, 0.0, 1.0);
-    vec3 color = mix(skyHorizon.rgb, skyZenith.rgb, pow(elevation, 0.45));
+    vec3 color = mix(skyHorizon, skyZenith, pow(elevation, 0.45));
     // Below the horizon the sky shows the horizon colour (the reflection
     // pass can look there through wave slopes).
     if (d.y < 0.0)
-        color = skyHorizon.rgb;
+        color = skyHorizon;
     // The glow around the sun: lobes 5 and 30 degrees wide, smooth enough for
     // the cubemap's texels (the narrow one spans about ten of them).
-    float cosToSun = dot(d, sunDirection.xyz);
+    float cosToSun = dot(d, sunDirection);
     float glow = pow(max(cosToSun, 0.0), 200.0) * 0.35 + pow(max(cosToSun, 0.0), 8.0) * 0.12;
-    return color + sunColor.rgb * sunDirection.w * glow;
+    return color + sunColor * sunIntensity * glow;
 }
 #endif

@@ -5,7 +5,7 @@
 #include "lighting.glsl"
 #include "reflection.glsl"
 #include "refraction.glsl"
-#include "waves.glsl"
+#include "ocean.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -16,20 +16,20 @@ out vec4 fragColor;
 
 void main()
 {
-    // The grid carries only the waves it can sample; the shading normal sums
+    // The grid carries only the waves it can sample; the shading normal takes
     // every wave this pixel can resolve, filtered by the pixel's footprint on
-    // the water instead of the grid spacing (the same wave function).
+    // the water instead of the grid spacing (the same surface function).
     vec2 footprint = fwidth(vRestPoint);
     float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
-    vec3 n = gerstnerSum(vRestPoint - gridCenter.xz, pixelSize_m, vHeightScale).normal;
-    vec3 toEye = eyePosition.xyz - vPosition;
+    vec3 n = oceanSurface(vRestPoint - gridCenter, pixelSize_m, vHeightScale).normal;
+    vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);
     vec3 v = toEye / distance_m;
     // Seen from a grazing angle, an interpolated normal can face away.
     if (dot(n, v) < 0.0)
         n = normalize(n - v * dot(n, v) * 1.01);
 
-    vec2 screenUv = gl_FragCoord.xy * viewport.zw;
+    vec2 screenUv = gl_FragCoord.xy * viewportInvSize;
     vec3 reflected = reflectedRadiance(vPosition, reflect(-v, n));
     float path_m;
     vec3 refracted = refractedRadiance(vPosition, n, screenUv, path_m);
@@ -37,9 +37,9 @@ void main()
     float lit = 0.35 + 0.65 * phongDiffuse(n);
     refracted *= mix(1.0, lit, 1.0 - exp(-0.2 * min(path_m, 100.0)));
 
-    float fresnel = fresnelSchlick(dot(n, v), waterOptics.x);
+    float fresnel = fresnelSchlick(dot(n, v), fresnelF0);
     vec3 color = mix(refracted, reflected, fresnel);
-    color += sunColor.rgb * sunDirection.w * waterOptics.z * phongSpecular(n, v, waterOptics.y, waterOptics.x) * step(0.0, sunDirection.y);
+    color += sunColor * sunIntensity * specularStrength * phongSpecular(n, v, shininess, fresnelF0) * step(0.0, sunDirection.y);
 
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS
     color = n * 0.5 + 0.5;

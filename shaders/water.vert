@@ -1,7 +1,7 @@
-// Water surface: grid vertex from gl_VertexID, Gerstner waves in world space.
+// Water surface: grid vertex from gl_VertexID, displaced by the ocean surface in world space.
 #include "frame.glsl"
 #include "grid.glsl"
-#include "waves.glsl"
+#include "ocean.glsl"
 
 out vec3 vPosition;    // displaced position relative to the render origin, m
 out vec3 vNormal;
@@ -12,10 +12,10 @@ out float vHeightScale; // horizon fade, 0..1
 void main()
 {
     GridVertex g = gridVertex(gl_VertexID);
-    vec2 rest = gridCenter.xz + g.offset;
+    vec2 rest = gridCenter + g.offset;
     float distance_m = length(rest - eyePosition.xz);
     float fade = horizonFade(distance_m);
-    SurfacePoint p = gerstnerSum(g.offset, g.cellSize, fade);
+    SurfacePoint p = oceanSurface(g.offset, g.cellSize, fade);
     vPosition = vec3(rest.x, 0.0, rest.y) + p.displacement;
     vNormal = p.normal;
     vRestPoint = rest;

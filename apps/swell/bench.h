@@ -183,7 +183,8 @@ Machine describeMachine();
 struct Results {
     Machine machine;
     glm::ivec2 size{0}, passSize{0};
-    int waveCount = 0, gridCells = 0, frames = 0, warmup = 0;
+    std::string surface; // the wave model's summary()
+    int gridCells = 0, frames = 0, warmup = 0;
     double frameStep_s = 0.0;
     bool pipelineStatistics = false, gpuTimers = false;
     std::vector<FrameSample> real, floor;

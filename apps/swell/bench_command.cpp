@@ -132,7 +132,7 @@ int runBench(const BenchOptions& options)
     r.machine = describeMachine();
     r.size = {options.width, options.height};
     r.passSize = glm::max(glm::ivec2(glm::dvec2(r.size) * scene.reflection.resolutionScale), glm::ivec2(1));
-    r.waveCount = std::min<int>(int(renderer.waves().waves.size()), SWELL_MAX_WAVES);
+    r.surface = renderer.waveModel().summary();
     r.gridCells = int(std::lround(std::sqrt(double(renderer.waterVertexCount())))) - 1;
     r.frames = options.frames;
     r.warmup = options.warmup;

@@ -41,11 +41,9 @@ struct SWELL_API HorizonFade {
 };
 SWELL_API HorizonFade horizonFadeFor(const GridSettings& grid, const GridShape& shape);
 
-// CPU twins of horizonFade() and waveLodWeight() in the shaders: the factor
-// wave heights are scaled by at distance_m from the camera (1 near, 0 beyond
-// end), and the weight of a wave of wavelength_m on cells cellSize_m wide.
+// CPU twin of horizonFade() in the shaders: the factor wave heights are
+// scaled by at distance_m from the camera (1 near, 0 beyond end).
 SWELL_API double horizonFadeAt(const HorizonFade& fade, double distance_m);
-SWELL_API double waveLodWeight(double wavelength_m, double cellSize_m);
 
 // Offset of grid line i (0..cells) from the centre at scale 1, before
 // snapping: the paper's line, or the geometric layout's ring radius f.

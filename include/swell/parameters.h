@@ -60,12 +60,28 @@ enum class ParameterList {
     CameraPath, // [[camera.path]] -> Scene::camera.path[item]
 };
 
-// What a change to the parameter asks of a renderer that is already running.
-enum class ParameterEffect {
-    Frame,   // picked up by the next frame (colours, camera, fog)
-    Waves,   // the wave set must be resolved again (resolveWaves)
-    Rebuild, // GPU resources are recreated (grid index buffer, render targets)
+// What a change to the parameter asks of a renderer that is already running:
+// a set of flags, since one parameter may ask for several things. The table
+// is the only place that says it: Renderer::setScene and the viewer act on
+// sceneChanges() (swell/scene_changes.h), which reads these.
+enum class ParameterEffect : unsigned {
+    Frame = 0,          // picked up by the next frame (colours, camera, fog, poses)
+    Waves = 1u << 0,    // the wave model is built again from the scene's waves
+    Grid = 1u << 1,     // the water grid's index buffer is rebuilt
+    Programs = 1u << 2, // the shader programs are rebuilt (a #define variant)
+    World = 1u << 3,    // meshes and the sky are built again (asset files are read)
 };
+
+constexpr ParameterEffect operator|(ParameterEffect a, ParameterEffect b)
+{
+    return ParameterEffect(unsigned(a) | unsigned(b));
+}
+constexpr ParameterEffect& operator|=(ParameterEffect& a, ParameterEffect b) { return a = a | b; }
+// Whether `effects` includes every flag of `flag`, and it is not Frame.
+constexpr bool hasEffect(ParameterEffect effects, ParameterEffect flag)
+{
+    return unsigned(flag) != 0 && (unsigned(effects) & unsigned(flag)) == unsigned(flag);
+}
 
 struct SWELL_API Parameter {
     // Full dotted TOML key. Inside an array of tables it starts with the

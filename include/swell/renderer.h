@@ -12,6 +12,7 @@
 #include "swell/gl/shader_sources.h"
 #include "swell/image.h"
 #include "swell/scene.h"
+#include "swell/wave_model.h"
 
 #include <glm/vec2.hpp>
 
@@ -51,11 +52,19 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Switches to another scene; rebuilds only what its changes require.
+    // Switches to another scene; rebuilds only what its changes require, as
+    // the parameter table declares (swell/scene_changes.h). On failure it
+    // throws swell::InputError and keeps the scene it had.
     void setScene(const Scene& scene);
     const Scene& scene() const;
-    // The waves being rendered (generated from the wind or listed).
-    const WaveSet& waves() const;
+
+    // The ocean surface being drawn: the scene's wave model, or the one given
+    // to setWaveModel(). Query it for heights and normals of what is drawn.
+    const WaveModel& waveModel() const;
+    // Draws `model` instead of the scene's waves until called with nullptr
+    // (then the scene's waves again). Throws swell::InputError, keeping the
+    // model it had, when the model's shaders do not build.
+    void setWaveModel(std::shared_ptr<const WaveModel> model);
 
     // Recompiles every shader from options.shaders (for hot reload). On failure
     // the old programs stay in use and the error is thrown.

@@ -16,7 +16,8 @@
 
 // Uniform block binding points, fixed so every program agrees without queries.
 #define SWELL_BINDING_FRAME 0
-#define SWELL_BINDING_WAVES 1
+// The wave model's first uniform block (each model documents its own).
+#define SWELL_BINDING_OCEAN 1
 
 // Texture units, fixed for the same reason.
 #define SWELL_UNIT_SKY 0
@@ -39,5 +40,13 @@
 #define SWELL_VIEW_REFRACTION 3
 #define SWELL_VIEW_LOD 4
 #define SWELL_VIEW_WIREFRAME 5
+
+// Reflection lookups (prepended as SWELL_REFLECTION_MODE).
+#define SWELL_REFLECTION_FIXED 0
+#define SWELL_REFLECTION_RAYMARCH 1
+
+// Grid layouts (prepended as SWELL_GRID_LAYOUT; see shaders/grid.glsl).
+#define SWELL_GRID_GEOMETRIC 0
+#define SWELL_GRID_PAPER 1
 
 #endif

@@ -1,5 +1,7 @@
-// Gerstner waves on the CPU: the one C++ definition of the wave function.
-// Its GLSL twin is shaders/waves.glsl; tests/gl/test_wave_agreement.cpp
+// Gerstner waves on the CPU: the one C++ definition of the wave function,
+// the first wave model (src/ocean/gerstner/; the model class that puts it
+// behind swell::WaveModel is swell/gerstner_model.h). Its GLSL twin is
+// shaders/ocean/gerstner.glsl; tests/gl/test_wave_agreement.cpp
 // proves the two agree within 1 mm.
 //
 // A wave i displaces the rest point x0 (world xz, metres) at time t (s) by
@@ -11,7 +13,9 @@
 
 #include "swell/export.h"
 
+#include "swell/constants.h"
 #include "swell/shader_constants.h"
+#include "swell/wave_model.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -22,9 +26,6 @@
 #include <vector>
 
 namespace swell {
-
-// Standard gravity, m/s^2.
-inline constexpr double kGravity = 9.80665;
 
 // One wave as a user writes it.
 struct SWELL_API Wave {
@@ -56,9 +57,6 @@ SWELL_API double foldMeasure(const WaveSet& set);
 
 // How far a wave set can move the surface from its rest plane, m: up or down
 // (the sum of amplitudes) and sideways (the sum of Q * amplitude).
-struct SWELL_API WaveReach {
-    double vertical_m = 0.0, horizontal_m = 0.0;
-};
 SWELL_API WaveReach waveReach(const WaveSet& set);
 
 // Why a wave set is not usable, or an empty string. Checks finiteness,
@@ -86,6 +84,21 @@ SWELL_API SurfacePartials partialsAt(const WaveSet& set, glm::dvec2 restPoint_m,
 // Unit surface normal at the displaced image of rest point x0, from the
 // analytic partial derivatives of the sum.
 SWELL_API glm::dvec3 normalAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s);
+
+// The weight of a wave of wavelength_m where the surface is carried by
+// samples footprint_m apart (the grid's cells, a pixel's footprint): 0 below
+// SWELL_MIN_CELLS_PER_WAVELENGTH samples per wavelength, where it would
+// alias, 1 from SWELL_FULL_CELLS_PER_WAVELENGTH on, smooth between. 1 for a
+// footprint of 0. The GPU's twin is waveLodWeight() in shaders/ocean/gerstner.glsl.
+SWELL_API double waveLodWeight(double wavelength_m, double footprint_m);
+
+// The set as a filter sees it: every amplitude times the horizon fade and
+// its wave's waveLodWeight().
+SWELL_API WaveSet filteredWaves(const WaveSet& set, const SurfaceFilter& filter);
+
+// Displacement and unit normal at rest point x0 and time t, of the filtered
+// set: what the GPU's oceanSurface() computes for the same filter.
+SWELL_API SurfacePoint surfaceAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter);
 
 // Surface height, m, at world (x, z) = worldPoint_m: solves for the rest
 // point whose horizontal image is worldPoint_m, then returns its dy. Accurate

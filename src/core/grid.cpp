@@ -98,12 +98,6 @@ double horizonFadeAt(const HorizonFade& fade, double distance_m)
     return 1.0 - smoothstep(fade.start_m, fade.end_m, distance_m);
 }
 
-double waveLodWeight(double wavelength_m, double cellSize_m)
-{
-    return smoothstep(SWELL_MIN_CELLS_PER_WAVELENGTH * cellSize_m, SWELL_FULL_CELLS_PER_WAVELENGTH * cellSize_m,
-                      wavelength_m);
-}
-
 double gridLineOffset(const GridShape& shape, int i)
 {
     const double half = 0.5 * shape.cells;

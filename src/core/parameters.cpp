@@ -20,7 +20,6 @@ namespace swell {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 
 // World coordinates beyond this lose too much precision in the GPU's floats
 // (1 mm steps at 1e4 m, 10 cm at 1e6 m), so positions stop here, m.
@@ -165,22 +164,22 @@ std::vector<Parameter> buildTable()
             .max = 1000.0, .sliderMin = -kPi, .sliderMax = kPi, .description = "phase offset"}),
         // [grid]
         at([](auto& s, std::size_t) -> auto& { return s.grid.layout; },
-           {.key = "grid.layout", .kind = K::Choice, .effect = E::Rebuild, .min = 0.0, .max = kGridLayouts.size() - 1.0,
+           {.key = "grid.layout", .kind = K::Choice, .effect = E::Grid | E::Programs, .min = 0.0, .max = kGridLayouts.size() - 1.0,
             .sliderMin = 0.0, .sliderMax = kGridLayouts.size() - 1.0,
             .description = "geometric: spacing in proportion to distance, scaled with camera height; paper: the "
                            "paper's quadratic division points",
             .choices = kGridLayouts}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.resolution; },
-           {.key = "grid.resolution", .kind = K::Integer, .effect = E::Rebuild, .min = 16.0, .max = 2048.0,
+           {.key = "grid.resolution", .kind = K::Integer, .effect = E::Grid, .min = 16.0, .max = 2048.0,
             .sliderMin = 16.0, .sliderMax = 2048.0, .logarithmic = true, .description = "grid vertices along each side"}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.radius_m; },
-           {.key = "grid.radius_m", .effect = E::Rebuild, .unit = "m", .min = 10.0, .max = 100000.0, .sliderMin = 100.0,
+           {.key = "grid.radius_m", .effect = E::Grid, .unit = "m", .min = 10.0, .max = 100000.0, .sliderMin = 100.0,
             .sliderMax = 20000.0, .logarithmic = true, .description = "half-size of the detailed grid around the camera"}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.fadeStart_m; },
-           {.key = "grid.fade_start_m", .effect = E::Rebuild, .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
+           {.key = "grid.fade_start_m", .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
             .sliderMax = 20000.0, .description = "distance from the camera where wave height starts to fade"}),
         at([](auto& s, std::size_t) -> auto& { return s.grid.fadeEnd_m; },
-           {.key = "grid.fade_end_m", .effect = E::Rebuild, .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
+           {.key = "grid.fade_end_m", .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
             .sliderMax = 20000.0,
             .description = "distance where the water is flat; > fade_start_m, <= radius_m"}),
         // [sun]
@@ -231,7 +230,7 @@ std::vector<Parameter> buildTable()
             .description = "how far the normal bends the refraction lookup"}),
         // [reflection]
         at([](auto& s, std::size_t) -> auto& { return s.reflection.mode; },
-           {.key = "reflection.mode", .kind = K::Choice, .min = 0.0, .max = kReflectionModes.size() - 1.0,
+           {.key = "reflection.mode", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kReflectionModes.size() - 1.0,
             .sliderMin = 0.0, .sliderMax = kReflectionModes.size() - 1.0,
             .description = "raymarch: march the reflected ray; fixed: step a fixed distance along it",
             .choices = kReflectionModes}),
@@ -240,7 +239,7 @@ std::vector<Parameter> buildTable()
             .sliderMin = 0.5, .sliderMax = 50.0, .logarithmic = true,
             .description = "step along the reflected ray in fixed mode"}),
         at([](auto& s, std::size_t) -> auto& { return s.reflection.resolutionScale; },
-           {.key = "reflection.resolution_scale", .effect = E::Rebuild, .min = 0.1, .max = 1.0, .sliderMin = 0.1,
+           {.key = "reflection.resolution_scale", .min = 0.1, .max = 1.0, .sliderMin = 0.1,
             .sliderMax = 1.0, .description = "reflection and refraction target size relative to the output"}),
         at([](auto& s, std::size_t) -> auto& { return s.reflection.clipOffset_m; },
            {.key = "reflection.clip_offset_m", .unit = "m", .min = 0.0, .max = 10.0, .sliderMin = 0.0, .sliderMax = 2.0,
@@ -275,7 +274,7 @@ std::vector<Parameter> buildTable()
            {.key = "camera.near_m", .unit = "m", .min = 0.0, .max = 1000.0, .minExclusive = true, .sliderMin = 0.01,
             .sliderMax = 10.0, .logarithmic = true, .description = "near clip plane"}),
         at([](auto& s, std::size_t) -> auto& { return s.camera.far_m; },
-           {.key = "camera.far_m", .unit = "m", .min = 0.0, .max = 1.0e7, .minExclusive = true, .sliderMin = 100.0,
+           {.key = "camera.far_m", .effect = E::Grid, .unit = "m", .min = 0.0, .max = 1.0e7, .minExclusive = true, .sliderMin = 100.0,
             .sliderMax = 100000.0, .logarithmic = true, .description = "far clip plane; > near_m"}),
         // [[camera.path]]
         at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].time_s; },
@@ -293,11 +292,11 @@ std::vector<Parameter> buildTable()
             .sliderMin = -89.0, .sliderMax = 89.0, .description = "up (+) or down (-) from the horizon"}),
         // top level
         at([](auto& s, std::size_t) -> auto& { return s.debugView; },
-           {.key = "debug_view", .kind = K::Choice, .min = 0.0, .max = kDebugViews.size() - 1.0, .sliderMin = 0.0,
+           {.key = "debug_view", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kDebugViews.size() - 1.0, .sliderMin = 0.0,
             .sliderMax = kDebugViews.size() - 1.0, .description = "what the water shows: the shaded ocean or one ingredient",
             .choices = kDebugViews}),
         at([](auto& s, std::size_t) -> auto& { return s.showTerrain; },
-           {.key = "terrain", .kind = K::Flag, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+           {.key = "terrain", .kind = K::Flag, .effect = E::World, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "draw the built-in island"}),
     };
 

@@ -36,6 +36,14 @@ ShaderSources ShaderSources::fromMap(std::map<std::string, std::string> files)
     return s;
 }
 
+std::vector<std::string> ShaderSources::fileNames() const
+{
+    std::vector<std::string> names;
+    for (const auto& [name, text] : loaded_)
+        names.push_back(name);
+    return names;
+}
+
 const std::string& ShaderSources::file(const std::string& name) const
 {
     if (auto it = loaded_.find(name); it != loaded_.end())
@@ -57,8 +65,22 @@ const std::string& ShaderSources::file(const std::string& name) const
 
 namespace {
 
-void expandInto(const ShaderSources& sources, const std::string& name, std::vector<std::string>& fileNames,
-                std::set<std::string>& included, std::string& out, const SourcePlace& from)
+// The value of a define of the form NAME "file" among a program's defines,
+// for a computed #include NAME, or "" when there is none.
+std::string quotedDefine(const std::vector<std::string>& defines, const std::string& macro)
+{
+    static const std::regex quoted(R"(^(\w+)\s+"([^"]+)\"\s*$)");
+    for (const std::string& d : defines) {
+        std::smatch m;
+        if (std::regex_match(d, m, quoted) && m[1].str() == macro)
+            return m[2].str();
+    }
+    return {};
+}
+
+void expandInto(const ShaderSources& sources, const std::string& name, const std::vector<std::string>& defines,
+                std::vector<std::string>& fileNames, std::set<std::string>& included, std::string& out,
+                const SourcePlace& from)
 {
     if (!included.insert(name).second)
         return; // each file once per program, like #pragma once
@@ -77,11 +99,22 @@ void expandInto(const ShaderSources& sources, const std::string& name, std::vect
     std::string line;
     int lineNumber = 0;
     static const std::regex includeLine(R"(^\s*#\s*include\s*"([^"]+)\"\s*$)");
+    // A computed include names a define that holds the file: #include SWELL_OCEAN_FILE.
+    static const std::regex computedIncludeLine(R"(^\s*#\s*include\s+(\w+)\s*$)");
     while (std::getline(lines, line)) {
         ++lineNumber;
         std::smatch m;
-        if (line.find("#") != std::string::npos && std::regex_match(line, m, includeLine)) {
-            expandInto(sources, m[1].str(), fileNames, included, out,
+        const bool directive = line.find("#") != std::string::npos;
+        if (directive && std::regex_match(line, m, includeLine)) {
+            expandInto(sources, m[1].str(), defines, fileNames, included, out,
+                       SourcePlace{name, lineNumber, int(m.position(1))});
+            out += fmt::format("#line {} {}\n", lineNumber + 1, index);
+        } else if (directive && std::regex_match(line, m, computedIncludeLine)) {
+            const std::string file = quotedDefine(defines, m[1].str());
+            if (file.empty())
+                throw InputError(SourcePlace{name, lineNumber, int(m.position(1)) + 1},
+                                 fmt::format("#include {}: no define gives {} a quoted file name", m[1].str(), m[1].str()));
+            expandInto(sources, file, defines, fileNames, included, out,
                        SourcePlace{name, lineNumber, int(m.position(1))});
             out += fmt::format("#line {} {}\n", lineNumber + 1, index);
         } else {
@@ -101,7 +134,7 @@ std::string ShaderSources::expand(const std::string& name, const std::vector<std
         out += "#define " + d + "\n";
     std::set<std::string> included;
     fileNames.clear();
-    expandInto(*this, name, fileNames, included, out, {});
+    expandInto(*this, name, defines, fileNames, included, out, {});
     return out;
 }
 

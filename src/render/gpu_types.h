@@ -1,14 +1,29 @@
-// C++ mirrors of the std140 uniform blocks in shaders/frame.glsl and
-// shaders/waves.glsl, field by field. tests/gl/test_uniform_layout.cpp asks
-// the driver for each field's offset and compares with offsetof.
+// C++ mirror of the std140 uniform block Frame in shaders/frame.glsl, field
+// by field (a float after a vec3 fills its fourth lane in both).
+// tests/gl/test_uniform_layout.cpp asks the driver for each field's offset
+// and compares with offsetof.
 #pragma once
 
 #include "swell/shader_constants.h"
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 namespace swell::detail {
+
+struct alignas(16) WorldBoxUniform {
+    glm::vec3 min_m;
+    float unused0;
+    glm::vec3 max_m;
+    float unused1;
+};
+
+struct alignas(16) GridLevelUniform {
+    glm::vec2 snapOffset_m;
+    float firstRing;
+};
 
 struct alignas(16) FrameUniforms {
     glm::mat4 passViewProj;
@@ -16,31 +31,38 @@ struct alignas(16) FrameUniforms {
     glm::mat4 cameraViewProj;
     glm::mat4 cameraInvViewProj;
     glm::vec4 clipPlane;
-    glm::vec4 eyePosition;
-    glm::vec4 sunDirection;
-    glm::vec4 sunColor;
-    glm::vec4 fogColor;
-    glm::vec4 fogRange;
-    glm::vec4 skyZenith;
-    glm::vec4 skyHorizon;
-    glm::vec4 waterDeep;
-    glm::vec4 waterAbsorption;
-    glm::vec4 waterOptics;
-    glm::vec4 gridShape;
-    glm::vec4 gridFade;
-    glm::vec4 gridCenter;
-    glm::vec4 gridLayout;
-    glm::vec4 snapOffsets[SWELL_GRID_LEVELS];
-    glm::vec4 reflectionParams;
-    glm::vec4 worldBoxes[2 * SWELL_MAX_WORLD_BOXES];
-    glm::vec4 viewport;
-    glm::vec4 passFlags;
-};
-
-struct alignas(16) WaveUniforms {
-    glm::vec4 waveShape[SWELL_MAX_WAVES];
-    glm::vec4 wavePhase[SWELL_MAX_WAVES];
-    glm::ivec4 waveCount;
+    glm::vec3 eyePosition;
+    float fresnelF0;
+    glm::vec3 sunDirection;
+    float sunIntensity;
+    glm::vec3 sunColor;
+    float fogSkyLayer_m;
+    glm::vec3 fogColor;
+    float fogStart_m;
+    glm::vec3 skyZenith;
+    float fogEnd_m;
+    glm::vec3 skyHorizon;
+    float shininess;
+    glm::vec3 waterDeep;
+    float specularStrength;
+    glm::vec3 waterAbsorption;
+    float refractionDistortion;
+    glm::vec2 gridCenter;
+    float gridRadius_m;
+    float gridCells;
+    float gridSkirt_m;
+    float gridFinestStep_m;
+    float gridFadeStart_m;
+    float gridFadeEnd_m;
+    float gridInnerScale_m;
+    float gridGrowth;
+    float reflectionFixedDistance_m;
+    int worldBoxCount;
+    glm::vec2 viewportSize;
+    glm::vec2 viewportInvSize;
+    int passEncodesSrgb;
+    GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
+    WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
 };
 
 } // namespace swell::detail

@@ -11,7 +11,7 @@ SkyBakeKey skyBakeKeyOf(const Scene& scene)
     return {scene.sky.zenithColor, scene.sky.horizonColor, scene.sun.direction, scene.sun.color, scene.sun.intensity};
 }
 
-void bakeProceduralSky(const gl::Program& program, gl::Texture& cube, GLuint emptyVao)
+void bakeProceduralSky(const SkyBakeProgram& program, gl::Texture& cube, GLuint emptyVao)
 {
     if (!cube) {
         cube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
@@ -32,13 +32,13 @@ void bakeProceduralSky(const gl::Program& program, gl::Texture& cube, GLuint emp
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     // Nothing may sample the cubemap while it is drawn into.
     glBindTextureUnit(SWELL_UNIT_SKY, 0);
-    glUseProgram(program.id());
+    program.use();
     glBindVertexArray(emptyVao);
     for (int face = 0; face < 6; ++face) {
         glNamedFramebufferTextureLayer(framebuffer.id(), GL_COLOR_ATTACHMENT0, cube.id(), 0, face);
         if (glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw Error("swell::detail::bakeProceduralSky(): framebuffer incomplete");
-        glUniform1i(0, face);
+        program.setFace(face);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glEnable(GL_DEPTH_TEST);

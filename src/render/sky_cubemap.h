@@ -4,6 +4,7 @@
 // exactly as a user's six images.
 #pragma once
 
+#include "render/programs.h"
 #include "swell/gl/handle.h"
 #include "swell/scene.h"
 
@@ -31,6 +32,6 @@ SkyBakeKey skyBakeKeyOf(const Scene& scene);
 // (fullscreen.vert + sky_bake.frag), one draw per face. The frame uniform
 // block must be bound with the scene's sun and sky. Leaves the framebuffer
 // binding and viewport changed; every pass sets its own.
-void bakeProceduralSky(const gl::Program& program, gl::Texture& cube, GLuint emptyVao);
+void bakeProceduralSky(const SkyBakeProgram& program, gl::Texture& cube, GLuint emptyVao);
 
 } // namespace swell::detail

@@ -31,7 +31,7 @@ def deterministic(results):
     return {
         "size": results["size"],
         "pass_size": results["pass_size"],
-        "wave_count": results["wave_count"],
+        "surface": results["surface"],
         "grid_cells": results["grid_cells"],
         "frames": results["frames"],
         "totals": {name: (p["counters_total"], p["floor_counters_total"]) for name, p in results["passes"].items()},

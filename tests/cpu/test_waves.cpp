@@ -20,7 +20,7 @@ namespace {
 using swell::Wave;
 using swell::WaveSet;
 
-constexpr double kPi = std::numbers::pi;
+using swell::kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A small hand-made set: four waves in different directions, with un-normalised

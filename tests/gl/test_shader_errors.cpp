@@ -67,14 +67,6 @@ TEST_F(ShaderErrors, AMissingIncludeNamesTheIncludingLine)
     EXPECT_NE(std::string(e.what()).find("nowhere.glsl"), std::string::npos);
 }
 
-TEST_F(ShaderErrors, EmbeddedShadersAllCompile)
-{
-    // The shipped shaders, with the shared constants header, build cleanly.
-    const ShaderSources s = ShaderSources::embedded();
-    EXPECT_NO_THROW(swell::gl::buildProgram(s, {{GL_VERTEX_SHADER, "water.vert"}, {GL_FRAGMENT_SHADER, "water.frag"}},
-                                            {"SWELL_DEBUG_VIEW 0", "SWELL_SKY_CUBEMAP 0"}));
-}
-
 TEST(ShaderLog, MapsMesaAndNvidiaStylePlaces)
 {
     const std::vector<std::string> files{"a.frag", "b.glsl"};

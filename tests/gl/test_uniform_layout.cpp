@@ -1,4 +1,5 @@
 // The C++ mirrors of the std140 blocks must match what the driver lays out.
+#include "ocean/gerstner/gerstner_uniforms.h"
 #include "render/gpu_types.h"
 #include "support/gl_test.h"
 #include "swell/gl/shader.h"
@@ -32,28 +33,35 @@ GLint blockSize(GLuint program, const char* block)
 
 // A vertex shader that uses every field, so none is optimised out.
 const char* kProbe = R"(#include "frame.glsl"
-#include "waves.glsl"
+#include "ocean.glsl"
 void main() {
     vec4 s = passViewProj[0] + passInvViewProj[0] + cameraViewProj[0] + cameraInvViewProj[0] + clipPlane
-           + eyePosition + sunDirection + sunColor + fogColor + fogRange + skyZenith + skyHorizon + waterDeep
-           + waterAbsorption + waterOptics + gridShape + gridFade + gridCenter + gridLayout + snapOffsets[gl_VertexID]
-           + reflectionParams + worldBoxes[gl_VertexID] + viewport + passFlags + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
+           + vec4(eyePosition, fresnelF0) + vec4(sunDirection, sunIntensity) + vec4(sunColor, fogSkyLayer_m)
+           + vec4(fogColor, fogStart_m) + vec4(skyZenith, fogEnd_m) + vec4(skyHorizon, shininess)
+           + vec4(waterDeep, specularStrength) + vec4(waterAbsorption, refractionDistortion)
+           + vec4(gridCenter, gridRadius_m, gridCells) + vec4(gridSkirt_m, gridFinestStep_m, gridFadeStart_m, gridFadeEnd_m)
+           + vec4(gridInnerScale_m, gridGrowth, reflectionFixedDistance_m, float(worldBoxCount))
+           + vec4(viewportSize, viewportInvSize) + vec4(float(passEncodesSrgb))
+           + vec4(gridLevels[gl_VertexID].snapOffset_m, gridLevels[gl_VertexID].firstRing, 0.0)
+           + vec4(worldBoxes[gl_VertexID].min_m, 0.0) + vec4(worldBoxes[gl_VertexID].max_m, 0.0)
+           + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
     gl_Position = s;
 }
 )";
 
-TEST_F(UniformLayout, FrameAndWaveBlocksMatchTheirCppMirrors)
+TEST_F(UniformLayout, FrameAndGerstnerBlocksMatchTheirCppMirrors)
 {
     auto files = std::map<std::string, std::string>();
     const swell::gl::ShaderSources embedded = swell::gl::ShaderSources::embedded();
-    for (const char* f : {"frame.glsl", "waves.glsl", "swell/shader_constants.h"})
+    for (const char* f : {"frame.glsl", "ocean.glsl", "ocean/gerstner.glsl", "swell/shader_constants.h"})
         files[f] = embedded.file(f);
     files["probe.vert"] = kProbe;
     files["probe.frag"] = "out vec4 c; void main() { c = vec4(1.0); }\n";
     swell::gl::Program p = swell::gl::buildProgram(swell::gl::ShaderSources::fromMap(files),
-                                                   {{GL_VERTEX_SHADER, "probe.vert"}, {GL_FRAGMENT_SHADER, "probe.frag"}});
+                                                   {{GL_VERTEX_SHADER, "probe.vert"}, {GL_FRAGMENT_SHADER, "probe.frag"}},
+                                                   {"SWELL_OCEAN_FILE \"ocean/gerstner.glsl\""});
     using F = swell::detail::FrameUniforms;
-    using W = swell::detail::WaveUniforms;
+    using W = swell::detail::GerstnerUniforms;
 #define SWELL_EXPECT_OFFSET(T, field) EXPECT_EQ(offsetOf(p.id(), #field), GLint(offsetof(T, field))) << #field
     SWELL_EXPECT_OFFSET(F, passViewProj);
     SWELL_EXPECT_OFFSET(F, passInvViewProj);
@@ -61,30 +69,49 @@ TEST_F(UniformLayout, FrameAndWaveBlocksMatchTheirCppMirrors)
     SWELL_EXPECT_OFFSET(F, cameraInvViewProj);
     SWELL_EXPECT_OFFSET(F, clipPlane);
     SWELL_EXPECT_OFFSET(F, eyePosition);
+    SWELL_EXPECT_OFFSET(F, fresnelF0);
     SWELL_EXPECT_OFFSET(F, sunDirection);
+    SWELL_EXPECT_OFFSET(F, sunIntensity);
     SWELL_EXPECT_OFFSET(F, sunColor);
+    SWELL_EXPECT_OFFSET(F, fogSkyLayer_m);
     SWELL_EXPECT_OFFSET(F, fogColor);
-    SWELL_EXPECT_OFFSET(F, fogRange);
+    SWELL_EXPECT_OFFSET(F, fogStart_m);
     SWELL_EXPECT_OFFSET(F, skyZenith);
+    SWELL_EXPECT_OFFSET(F, fogEnd_m);
     SWELL_EXPECT_OFFSET(F, skyHorizon);
+    SWELL_EXPECT_OFFSET(F, shininess);
     SWELL_EXPECT_OFFSET(F, waterDeep);
+    SWELL_EXPECT_OFFSET(F, specularStrength);
     SWELL_EXPECT_OFFSET(F, waterAbsorption);
-    SWELL_EXPECT_OFFSET(F, waterOptics);
-    SWELL_EXPECT_OFFSET(F, gridShape);
-    SWELL_EXPECT_OFFSET(F, gridFade);
+    SWELL_EXPECT_OFFSET(F, refractionDistortion);
     SWELL_EXPECT_OFFSET(F, gridCenter);
-    SWELL_EXPECT_OFFSET(F, gridLayout);
-    EXPECT_EQ(offsetOf(p.id(), "snapOffsets[0]"), GLint(offsetof(F, snapOffsets)));
-    SWELL_EXPECT_OFFSET(F, reflectionParams);
-    SWELL_EXPECT_OFFSET(F, worldBoxes);
-    SWELL_EXPECT_OFFSET(F, viewport);
-    SWELL_EXPECT_OFFSET(F, passFlags);
+    SWELL_EXPECT_OFFSET(F, gridRadius_m);
+    SWELL_EXPECT_OFFSET(F, gridCells);
+    SWELL_EXPECT_OFFSET(F, gridSkirt_m);
+    SWELL_EXPECT_OFFSET(F, gridFinestStep_m);
+    SWELL_EXPECT_OFFSET(F, gridFadeStart_m);
+    SWELL_EXPECT_OFFSET(F, gridFadeEnd_m);
+    SWELL_EXPECT_OFFSET(F, gridInnerScale_m);
+    SWELL_EXPECT_OFFSET(F, gridGrowth);
+    SWELL_EXPECT_OFFSET(F, reflectionFixedDistance_m);
+    SWELL_EXPECT_OFFSET(F, worldBoxCount);
+    SWELL_EXPECT_OFFSET(F, viewportSize);
+    SWELL_EXPECT_OFFSET(F, viewportInvSize);
+    SWELL_EXPECT_OFFSET(F, passEncodesSrgb);
+    EXPECT_EQ(offsetOf(p.id(), "gridLevels[0].snapOffset_m"), GLint(offsetof(F, gridLevels)));
+    EXPECT_EQ(offsetOf(p.id(), "gridLevels[1].firstRing"),
+              GLint(offsetof(F, gridLevels) + sizeof(swell::detail::GridLevelUniform) +
+                    offsetof(swell::detail::GridLevelUniform, firstRing)));
+    EXPECT_EQ(offsetOf(p.id(), "worldBoxes[0].min_m"), GLint(offsetof(F, worldBoxes)));
+    EXPECT_EQ(offsetOf(p.id(), "worldBoxes[1].max_m"),
+              GLint(offsetof(F, worldBoxes) + sizeof(swell::detail::WorldBoxUniform) +
+                    offsetof(swell::detail::WorldBoxUniform, max_m)));
     EXPECT_EQ(offsetOf(p.id(), "waveShape[0]"), GLint(offsetof(W, waveShape)));
     EXPECT_EQ(offsetOf(p.id(), "wavePhase[0]"), GLint(offsetof(W, wavePhase)));
     SWELL_EXPECT_OFFSET(W, waveCount);
 #undef SWELL_EXPECT_OFFSET
     EXPECT_EQ(blockSize(p.id(), "Frame"), GLint(sizeof(F)));
-    EXPECT_EQ(blockSize(p.id(), "Waves"), GLint(sizeof(W)));
+    EXPECT_EQ(blockSize(p.id(), "GerstnerWaves"), GLint(sizeof(W)));
 }
 
 } // namespace

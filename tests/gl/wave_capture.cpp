@@ -51,12 +51,10 @@ std::vector<WaterVertex> computeCpu(const Renderer& renderer, const Camera& came
             w.latticeStep_m = std::max(point.latticeStep_m.x, point.latticeStep_m.y);
             w.rest_m = placement.center_m + point.offset_m;
             const double distance = glm::length(w.rest_m - glm::dvec2(camera.position_m.x, camera.position_m.z));
-            WaveSet weighted = renderer.waves();
-            for (Wave& wave : weighted.waves)
-                wave.amplitude_m *= horizonFadeAt(fade, distance) * waveLodWeight(wave.wavelength_m, point.cellSize_m);
-            const glm::dvec3 d = displacementAt(weighted, w.rest_m, time_s);
-            w.position_m = glm::dvec3(w.rest_m.x, 0.0, w.rest_m.y) + d;
-            w.normal = normalAt(weighted, w.rest_m, time_s);
+            const SurfacePoint p = renderer.waveModel().surfaceAt(
+                w.rest_m, time_s, SurfaceFilter{point.cellSize_m, horizonFadeAt(fade, distance)});
+            w.position_m = glm::dvec3(w.rest_m.x, 0.0, w.rest_m.y) + p.displacement_m;
+            w.normal = p.normal;
             out.push_back(w);
         }
     return out;

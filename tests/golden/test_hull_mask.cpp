@@ -53,7 +53,7 @@ struct Count {
 // the 25% margin is over 25 cm across.
 Count waterInsideHull(const swell::Renderer& renderer, const swell::Camera& camera, const swell::Image& image)
 {
-    const double gunwaleY = swell::heightAt(renderer.waves(), {0.0, 0.0}, kTime_s) + kGunwaleHeight_m;
+    const double gunwaleY = renderer.waveModel().heightAt({0.0, 0.0}, kTime_s) + kGunwaleHeight_m;
     Count count;
     for (int y = 0; y < kSize.y; ++y)
         for (int x = 0; x < kSize.x; ++x) {

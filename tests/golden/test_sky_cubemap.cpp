@@ -14,7 +14,6 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -113,21 +112,6 @@ TEST_F(SkyCubemap, FollowsSunAndSkyChanges)
     scene.sky.horizonColor = {0.90, 0.60, 0.40};
     renderer.setScene(scene);
     EXPECT_LE(worstSkyError(renderer, scene, "sky_changed"), 2) << "the cubemap was not baked again";
-
-    // The bake's cost, for docs/RENDERING.md: a frame that bakes against one that does not.
-    auto frame_ms = [&] {
-        const auto start = std::chrono::steady_clock::now();
-        renderer.renderImage(camera, 0.0, kSize);
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    };
-    double plain = 1e9, baking = 1e9;
-    for (int i = 0; i < 3; ++i) {
-        plain = std::min(plain, frame_ms());
-        scene.sun.intensity = 2.0 + 0.1 * (i + 1);
-        renderer.setScene(scene);
-        baking = std::min(baking, frame_ms());
-    }
-    std::printf("frame %.1f ms; frame with sky bake %.1f ms\n", plain, baking);
 }
 
 } // namespace

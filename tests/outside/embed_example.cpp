@@ -17,6 +17,6 @@ int main(int argc, char** argv)
     swell::writePng(image, output);
     // A buoyancy query: the exact surface height under a point, m.
     std::printf("%s\nheight at (10, -20): %.3f m\n", output,
-                swell::heightAt(renderer.waves(), {10.0, -20.0}, time_s));
+                renderer.waveModel().heightAt({10.0, -20.0}, time_s));
     return 0;
 }

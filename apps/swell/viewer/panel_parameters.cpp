@@ -28,7 +28,7 @@ bool Panel::editParameter(Session& session, const Parameter& p, std::size_t item
     ImGui::PopID();
 
     bool commit = r.changed;
-    if (p.effect == ParameterEffect::Rebuild) {
+    if (appliedOnRelease(p)) {
         if (r.changed && r.active) {
             staged_ = Staged{p.key, item, value};
             commit = false;
@@ -117,7 +117,7 @@ void Panel::drawParameters(Session& session, Scene& edited, bool& changed)
                     // Keep the sea as it looks: the generated waves become the list.
                     std::vector<Wave>& listed = edited.waves.listed.waves;
                     if (listed.empty()) {
-                        listed = session.renderer().waves().waves;
+                        listed = resolveWaves(edited.waves).waves;
                         if (listed.size() > SWELL_MAX_WAVES)
                             listed.resize(SWELL_MAX_WAVES);
                     }

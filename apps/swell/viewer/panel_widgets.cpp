@@ -51,11 +51,10 @@ void tooltip(const Parameter& p)
     if (!p.description.empty())
         ImGui::TextUnformatted(p.description.data(), p.description.data() + p.description.size());
     ImGui::TextDisabled("allowed: %s", rangeText(p).c_str());
-    switch (p.effect) {
-    case ParameterEffect::Frame: break;
-    case ParameterEffect::Waves: ImGui::TextDisabled("changes the wave set"); break;
-    case ParameterEffect::Rebuild: ImGui::TextDisabled("rebuilds GPU resources: applied when the slider is let go"); break;
-    }
+    if (hasEffect(p.effect, ParameterEffect::Waves))
+        ImGui::TextDisabled("changes the wave set");
+    if (appliedOnRelease(p))
+        ImGui::TextDisabled("rebuilds GPU resources: applied when the slider is let go");
     ImGui::TextDisabled("Ctrl+click to type a value outside the slider");
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
@@ -68,6 +67,12 @@ void noteItemState(WidgetResult& r)
 }
 
 } // namespace
+
+bool appliedOnRelease(const Parameter& p)
+{
+    return hasEffect(p.effect, ParameterEffect::Grid) || hasEffect(p.effect, ParameterEffect::Programs) ||
+           hasEffect(p.effect, ParameterEffect::World);
+}
 
 void errorText(const std::string& text)
 {

@@ -15,6 +15,10 @@
 
 namespace swell::app::viewer {
 
+// Parameters whose change rebuilds GPU resources are applied once, when the
+// slider is let go, not at every step of a drag.
+bool appliedOnRelease(const Parameter& p);
+
 // Wrapped text in the panel's error colour.
 void errorText(const std::string& text);
 // A message: in the error colour when it is one; nothing when empty.

@@ -28,6 +28,10 @@ public:
     // so the next build reads them again (hot reload).
     void forgetCachedFiles() { cache_.clear(); }
 
+    // The names of the files held in memory (embedded or given), sorted;
+    // empty for sources read from a folder.
+    std::vector<std::string> fileNames() const;
+
     // The text of one file. Throws swell::InputError when it does not exist.
     const std::string& file(const std::string& name) const;
 

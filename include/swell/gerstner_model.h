@@ -1,0 +1,33 @@
+// The Gerstner sum (swell/waves.h) as a wave model: CPU queries in double,
+// and on the GPU a uniform block of up to SWELL_MAX_WAVES waves summed by
+// shaders/ocean/gerstner.glsl.
+#pragma once
+
+#include "swell/export.h"
+
+#include "swell/wave_model.h"
+#include "swell/waves.h"
+
+namespace swell {
+
+class SWELL_API GerstnerModel final : public WaveModel {
+public:
+    // Throws swell::InputError naming the problem when validate(waves) fails.
+    explicit GerstnerModel(WaveSet waves);
+
+    const WaveSet& waves() const { return waves_; }
+
+    std::string_view name() const override;
+    std::string summary() const override;
+    WaveReach reach() const override { return reach_; }
+    SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
+    // Newton's method with the analytic Jacobian (swell::restPointUnder).
+    glm::dvec2 restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
+    std::unique_ptr<detail::WaveModelGpu> createGpu() const override;
+
+private:
+    WaveSet waves_;
+    WaveReach reach_;
+};
+
+} // namespace swell

@@ -1,0 +1,19 @@
+// The ocean surface, whatever model draws it: the water shaders call
+//   SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
+// and the renderer builds them with SWELL_OCEAN_FILE naming the model's GLSL
+// file (src/render/wave_model_gpu.h), so no water shader names a model.
+#ifndef SWELL_OCEAN_GLSL
+#define SWELL_OCEAN_GLSL
+#include "swell/shader_constants.h"
+
+// Mirrors swell::SurfacePoint (swell/wave_model.h).
+struct SurfacePoint {
+    vec3 displacement; // from the rest point, m
+    vec3 normal;       // unit, pointing up
+};
+
+#ifndef SWELL_OCEAN_FILE
+#error SWELL_OCEAN_FILE must name the wave model's GLSL file
+#endif
+#include SWELL_OCEAN_FILE
+#endif

@@ -1,0 +1,10 @@
+// Flat water: the surface at rest, a perfect mirror. The GLSL twin of
+// swell::FlatModel (src/ocean/flat/flat_model.cpp).
+#ifndef SWELL_OCEAN_FLAT_GLSL
+#define SWELL_OCEAN_FLAT_GLSL
+
+SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
+{
+    return SurfacePoint(vec3(0.0), vec3(0.0, 1.0, 0.0));
+}
+#endif

@@ -1,0 +1,29 @@
+// FlatModel: no displacement anywhere, normal straight up; its GPU half
+// uploads nothing.
+#include "swell/flat_model.h"
+
+#include "render/wave_model_gpu.h"
+
+namespace swell {
+
+namespace {
+
+class FlatGpu final : public detail::WaveModelGpu {
+public:
+    std::string shaderFile() const override { return "ocean/flat.glsl"; }
+    void prepareFrame(glm::dvec2, double) override {}
+    void bind() const override {}
+};
+
+} // namespace
+
+std::string_view FlatModel::name() const { return "flat"; }
+std::string FlatModel::summary() const { return "flat water"; }
+
+SurfacePoint FlatModel::surfaceAt(glm::dvec2, double, const SurfaceFilter&) const { return {}; }
+
+glm::dvec2 FlatModel::restPointUnder(glm::dvec2 worldPoint_m, double, const SurfaceFilter&) const { return worldPoint_m; }
+
+std::unique_ptr<detail::WaveModelGpu> FlatModel::createGpu() const { return std::make_unique<FlatGpu>(); }
+
+} // namespace swell

@@ -1,0 +1,99 @@
+// GerstnerModel: the Gerstner sum behind swell::WaveModel, and its GPU half,
+// which uploads the waves longest first with their phases at the grid centre.
+#include "swell/gerstner_model.h"
+
+#include "ocean/gerstner/gerstner_uniforms.h"
+#include "render/wave_model_gpu.h"
+#include "swell/error.h"
+#include "swell/gl/handle.h"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <vector>
+
+namespace swell {
+
+namespace {
+
+class GerstnerGpu final : public detail::WaveModelGpu {
+public:
+    explicit GerstnerGpu(const WaveSet& waves) : waves_(waves)
+    {
+        buffer_ = gl::Buffer::create();
+        glNamedBufferStorage(buffer_.id(), sizeof(detail::GerstnerUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        // Longest first: the shaders stop at the first wave their cells or
+        // pixels cannot resolve, since every later one is shorter still.
+        const int count = std::min<int>(int(waves_.waves.size()), SWELL_MAX_WAVES);
+        for (int i = 0; i < count; ++i)
+            order_.push_back(&waves_.waves[size_t(i)]);
+        std::stable_sort(order_.begin(), order_.end(),
+                         [](const Wave* a, const Wave* b) { return a->wavelength_m > b->wavelength_m; });
+    }
+
+    std::string shaderFile() const override { return "ocean/gerstner.glsl"; }
+
+    void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override
+    {
+        detail::GerstnerUniforms u{};
+        const int count = int(order_.size());
+        for (int i = 0; i < count; ++i) {
+            const Wave& w = *order_[size_t(i)];
+            // Exactly the k*d the CPU wave functions use.
+            const glm::dvec2 kd = wavenumberVector(w);
+            const double k = glm::length(kd);
+            const glm::dvec2 d = kd / k;
+            u.waveShape[i] = glm::vec4(glm::dvec4(d.x, d.y, k, w.amplitude_m));
+            u.wavePhase[i] = glm::vec4(
+                glm::dvec4(w.steepness, wrappedPhase(w, waves_.depth_m, gridCenter_m, time_s), w.wavelength_m, 0.0));
+        }
+        u.waveCount = glm::ivec4(count, 0, 0, 0);
+        glNamedBufferSubData(buffer_.id(), 0, sizeof(u), &u);
+    }
+
+    void bind() const override { glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, buffer_.id()); }
+
+private:
+    WaveSet waves_;
+    std::vector<const Wave*> order_; // into waves_, longest first
+    gl::Buffer buffer_;
+};
+
+} // namespace
+
+GerstnerModel::GerstnerModel(WaveSet waves) : waves_(std::move(waves))
+{
+    if (const std::string problem = validate(waves_); !problem.empty())
+        throw InputError({}, "waves: " + problem);
+    reach_ = waveReach(waves_);
+}
+
+std::string_view GerstnerModel::name() const { return "gerstner"; }
+
+std::string GerstnerModel::summary() const
+{
+    if (waves_.waves.empty())
+        return "no waves";
+    double shortest = waves_.waves.front().wavelength_m, longest = shortest;
+    for (const Wave& w : waves_.waves) {
+        shortest = std::min(shortest, w.wavelength_m);
+        longest = std::max(longest, w.wavelength_m);
+    }
+    return fmt::format("{} Gerstner waves, {:.3g} .. {:.3g} m", waves_.waves.size(), shortest, longest);
+}
+
+SurfacePoint GerstnerModel::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    return swell::surfaceAt(waves_, restPoint_m, time_s, filter);
+}
+
+glm::dvec2 GerstnerModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    const bool exact = filter.footprint_m <= 0.0 && filter.heightScale == 1.0;
+    return swell::restPointUnder(exact ? waves_ : filteredWaves(waves_, filter), worldPoint_m, time_s);
+}
+
+std::unique_ptr<detail::WaveModelGpu> GerstnerModel::createGpu() const { return std::make_unique<GerstnerGpu>(waves_); }
+
+} // namespace swell

@@ -1,0 +1,33 @@
+// What every wave model shares: the rest-point inverse for models without
+// analytic derivatives, and the height query built on it.
+#include "swell/wave_model.h"
+
+#include <glm/geometric.hpp>
+
+namespace swell {
+
+WaveModel::~WaveModel() = default;
+
+glm::dvec2 WaveModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    // Fixed-point iteration x0 <- p - Dxz(x0): a contraction wherever the
+    // surface does not fold (|dDxz/dx0| < 1), converging linearly. Stops
+    // once a step moves the rest point less than 1e-7 m, or after 64 steps.
+    glm::dvec2 rest = worldPoint_m;
+    for (int i = 0; i < 64; ++i) {
+        const glm::dvec3 d = surfaceAt(rest, time_s, filter).displacement_m;
+        const glm::dvec2 next = worldPoint_m - glm::dvec2(d.x, d.z);
+        const double step = glm::length(next - rest);
+        rest = next;
+        if (step < 1e-7)
+            break;
+    }
+    return rest;
+}
+
+double WaveModel::heightAt(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    return surfaceAt(restPointUnder(worldPoint_m, time_s, filter), time_s, filter).displacement_m.y;
+}
+
+} // namespace swell

@@ -1,0 +1,58 @@
+#include "render/frame_uniforms.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+namespace swell::detail {
+
+FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, const GridPlacement& grid,
+                            const Camera& camera, const glm::dmat4& viewProj, glm::dvec3 origin, glm::ivec2 size)
+{
+    FrameUniforms f{};
+    f.cameraViewProj = glm::mat4(viewProj);
+    f.cameraInvViewProj = glm::mat4(glm::inverse(viewProj));
+    f.passViewProj = f.cameraViewProj;
+    f.passInvViewProj = f.cameraInvViewProj;
+    f.clipPlane = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    f.eyePosition = glm::vec3(camera.position_m - origin);
+    f.sunDirection = glm::vec3(glm::normalize(scene.sun.direction));
+    f.sunIntensity = float(scene.sun.intensity);
+    f.sunColor = glm::vec3(scene.sun.color);
+    // The sky's fog layer: the height at which a ray at the fog's end distance has
+    // risen by 2% of it, so the sky stays clear a few degrees above the horizon.
+    f.fogSkyLayer_m = float(0.02 * scene.fog.end_m);
+    f.fogColor = glm::vec3(scene.fog.color);
+    f.fogStart_m = float(scene.fog.start_m);
+    f.fogEnd_m = float(scene.fog.end_m);
+    f.skyZenith = glm::vec3(scene.sky.zenithColor);
+    f.skyHorizon = glm::vec3(scene.sky.horizonColor);
+    f.waterDeep = glm::vec3(scene.water.deepColor);
+    f.waterAbsorption = glm::vec3(scene.water.absorption_per_m);
+    f.fresnelF0 = float(scene.water.fresnelF0);
+    f.shininess = float(scene.water.shininess);
+    f.specularStrength = float(scene.water.specularStrength);
+    f.refractionDistortion = float(scene.water.refractionDistortion);
+    f.gridCenter = glm::vec2(grid.center_m - glm::dvec2(origin.x, origin.z));
+    f.gridRadius_m = float(gridShape.radius_m);
+    f.gridCells = float(gridShape.cells);
+    f.gridSkirt_m = float(gridShape.skirt_m);
+    f.gridFinestStep_m = float(grid.finestStep_m);
+    const HorizonFade fade = horizonFadeFor(scene.grid, gridShape);
+    f.gridFadeStart_m = float(fade.start_m);
+    f.gridFadeEnd_m = float(fade.end_m);
+    f.gridInnerScale_m = float(grid.scale * gridShape.innerScale_m);
+    f.gridGrowth = float(gridShape.growth);
+    for (int l = 0; l < SWELL_GRID_LEVELS; ++l)
+        f.gridLevels[l] = {glm::vec2(grid.snapOffsets[size_t(l)]), float(gridShape.levelFirstRing[size_t(l)])};
+    f.reflectionFixedDistance_m = float(scene.reflection.fixedDistance_m);
+    setViewport(f, size);
+    return f;
+}
+
+void setViewport(FrameUniforms& f, glm::ivec2 size)
+{
+    f.viewportSize = glm::vec2(size);
+    f.viewportInvSize = 1.0f / glm::vec2(size);
+}
+
+} // namespace swell::detail

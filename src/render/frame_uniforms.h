@@ -1,0 +1,23 @@
+// Filling the Frame uniform block (render/gpu_types.h) for a camera: what
+// every pass shares; each pass then sets its own camera, clip plane and
+// output encoding.
+#pragma once
+
+#include "render/gpu_types.h"
+#include "swell/camera.h"
+#include "swell/grid.h"
+#include "swell/scene.h"
+
+#include <glm/mat4x4.hpp>
+
+namespace swell::detail {
+
+// viewProj maps positions relative to `origin` (the render origin, absolute
+// m); size is the output in pixels. World boxes are left for the caller.
+FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, const GridPlacement& grid,
+                            const Camera& camera, const glm::dmat4& viewProj, glm::dvec3 origin, glm::ivec2 size);
+
+// Sets viewportSize and viewportInvSize for a target of `size` pixels.
+void setViewport(FrameUniforms& f, glm::ivec2 size);
+
+} // namespace swell::detail

@@ -1,0 +1,100 @@
+// Building the renderer's programs for a variant, and their typed setters.
+#include "render/programs.h"
+
+#include "swell/error.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace swell::detail {
+
+namespace {
+
+int debugViewDefine(DebugView v)
+{
+    switch (v) {
+    case DebugView::Shaded: return SWELL_VIEW_SHADED;
+    case DebugView::Normals: return SWELL_VIEW_NORMALS;
+    case DebugView::Reflection: return SWELL_VIEW_REFLECTION;
+    case DebugView::Refraction: return SWELL_VIEW_REFRACTION;
+    case DebugView::Lod: return SWELL_VIEW_LOD;
+    case DebugView::Wireframe: return SWELL_VIEW_WIREFRAME;
+    }
+    return SWELL_VIEW_SHADED;
+}
+
+// A uniform the program must have; a missing one is a shader bug, reported
+// like a compile error rather than left to fail silently at draw time.
+GLint requiredUniform(const gl::Program& program, const char* name, const char* file)
+{
+    const GLint location = glGetUniformLocation(program.id(), name);
+    if (location < 0)
+        throw InputError({file}, fmt::format("program has no uniform '{}'", name));
+    return location;
+}
+
+gl::Program build(const gl::ShaderSources& sources, const ShaderVariant& variant, const char* vertex,
+                  const char* fragment)
+{
+    std::vector<gl::ShaderStage> stages{{GL_VERTEX_SHADER, vertex}};
+    if (fragment)
+        stages.push_back({GL_FRAGMENT_SHADER, fragment});
+    return gl::buildProgram(sources, stages, definesOf(variant));
+}
+
+} // namespace
+
+ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile)
+{
+    return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile)};
+}
+
+std::vector<std::string> definesOf(const ShaderVariant& v)
+{
+    return {
+        fmt::format("SWELL_DEBUG_VIEW {}", debugViewDefine(v.debugView)),
+        fmt::format("SWELL_REFLECTION_MODE {}",
+                    v.reflection == ReflectionMode::FixedDistance ? "SWELL_REFLECTION_FIXED" : "SWELL_REFLECTION_RAYMARCH"),
+        fmt::format("SWELL_GRID_LAYOUT {}", v.gridLayout == GridLayout::Paper ? "SWELL_GRID_PAPER" : "SWELL_GRID_GEOMETRIC"),
+        fmt::format("SWELL_OCEAN_FILE \"{}\"", v.oceanFile),
+    };
+}
+
+MeshProgram::MeshProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
+    : program_(build(sources, variant, "mesh.vert", "mesh.frag")),
+      model_(requiredUniform(program_, "model", "mesh.vert"))
+{
+}
+
+void MeshProgram::use() const { glUseProgram(program_.id()); }
+
+void MeshProgram::setModel(const glm::mat4& model) const
+{
+    glProgramUniformMatrix4fv(program_.id(), model_, 1, GL_FALSE, glm::value_ptr(model));
+}
+
+SkyBakeProgram::SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
+    : program_(build(sources, variant, "fullscreen.vert", "sky_bake.frag")),
+      face_(requiredUniform(program_, "face", "sky_bake.frag"))
+{
+}
+
+void SkyBakeProgram::use() const { glUseProgram(program_.id()); }
+
+void SkyBakeProgram::setFace(int face) const { glProgramUniform1i(program_.id(), face_, face); }
+
+void BlockProgram::use() const { glUseProgram(program_.id()); }
+
+Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant)
+{
+    Programs p;
+    p.water = BlockProgram(build(sources, variant, "water.vert", "water.frag"));
+    p.sky = BlockProgram(build(sources, variant, "fullscreen.vert", "sky.frag"));
+    p.mesh = MeshProgram(sources, variant);
+    p.skyBake = SkyBakeProgram(sources, variant);
+    p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),
+                                              {"vRestPoint", "vPosition", "vNormal"}));
+    return p;
+}
+
+} // namespace swell::detail

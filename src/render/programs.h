@@ -1,0 +1,87 @@
+// The renderer's shader programs, one typed class each: uniform locations are
+// looked up once, by name, when the program is built, and set through typed
+// setters. Everything else a program reads comes from the Frame uniform block
+// and the wave model's own bindings. Variants are #defines prepended from a
+// ShaderVariant, never uniforms used as switches.
+#pragma once
+
+#include "swell/gl/shader.h"
+#include "swell/scene.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <string>
+#include <vector>
+
+namespace swell::detail {
+
+// What the programs are compiled for. Each field is one #define.
+struct ShaderVariant {
+    DebugView debugView = DebugView::Shaded;           // SWELL_DEBUG_VIEW
+    ReflectionMode reflection = ReflectionMode::RayMarch; // SWELL_REFLECTION_MODE
+    GridLayout gridLayout = GridLayout::Geometric;     // SWELL_GRID_LAYOUT
+    std::string oceanFile = "ocean/gerstner.glsl";     // SWELL_OCEAN_FILE: the wave model's GLSL
+    bool operator==(const ShaderVariant&) const = default;
+};
+
+// The variant a scene asks for, with the wave model's GLSL file.
+ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile);
+
+// The #define lines (without "#define ") for a variant.
+std::vector<std::string> definesOf(const ShaderVariant& variant);
+
+// World geometry: mesh.vert + mesh.frag.
+class MeshProgram {
+public:
+    MeshProgram() = default;
+    MeshProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
+    void use() const;
+    // Object to render-origin-relative world transform, m.
+    void setModel(const glm::mat4& model) const;
+    GLuint id() const { return program_.id(); }
+
+private:
+    gl::Program program_;
+    GLint model_ = -1;
+};
+
+// One face of the procedural sky cubemap: fullscreen.vert + sky_bake.frag.
+class SkyBakeProgram {
+public:
+    SkyBakeProgram() = default;
+    SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
+    void use() const;
+    // 0..5: +x, -x, +y, -y, +z, -z.
+    void setFace(int face) const;
+
+private:
+    gl::Program program_;
+    GLint face_ = -1;
+};
+
+// Programs with no uniforms of their own (all from the Frame block): the sky
+// (fullscreen.vert + sky.frag), the water (water.vert + water.frag) and the
+// water's vertex capture for tests (water.vert with transform feedback).
+class BlockProgram {
+public:
+    BlockProgram() = default;
+    explicit BlockProgram(gl::Program program) : program_(std::move(program)) {}
+    void use() const;
+    GLuint id() const { return program_.id(); }
+    explicit operator bool() const { return bool(program_); }
+
+private:
+    gl::Program program_;
+};
+
+struct Programs {
+    BlockProgram water, sky, capture;
+    MeshProgram mesh;
+    SkyBakeProgram skyBake;
+};
+
+// Compiles and links every program for a variant. Throws swell::InputError
+// naming the shader file and line when one fails.
+Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant);
+
+} // namespace swell::detail

@@ -1,0 +1,37 @@
+// The GPU half of a wave model (swell/wave_model.h). The water shaders call
+// one function, oceanSurface(), defined by the model's GLSL file; the
+// renderer builds the water programs with that file as SWELL_OCEAN_FILE
+// (shaders/ocean.glsl includes it), so no shader names a model.
+//
+// A model's GLSL file defines, under an include guard:
+//   SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
+// where restOffset_m is the rest point relative to the grid centre (m),
+// footprint_m and heightScale mean what swell::SurfaceFilter's fields mean,
+// and SurfacePoint (shaders/ocean.glsl) holds the displacement and the unit
+// normal. It reads only what prepareFrame() uploaded and bind() bound, at
+// binding points of its own from swell/shader_constants.h.
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include <string>
+
+namespace swell::detail {
+
+class WaveModelGpu {
+public:
+    virtual ~WaveModelGpu() = default;
+
+    // The GLSL file under shaders/ that defines oceanSurface(), e.g. "ocean/gerstner.glsl".
+    virtual std::string shaderFile() const = 0;
+
+    // Uploads what this frame's shaders read: phases are referenced to
+    // gridCenter_m (absolute world x,z, m), so float precision is spent near
+    // the camera; time_s is the simulation time, s.
+    virtual void prepareFrame(glm::dvec2 gridCenter_m, double time_s) = 0;
+
+    // Binds the buffers and textures prepareFrame() filled.
+    virtual void bind() const = 0;
+};
+
+} // namespace swell::detail

@@ -1,0 +1,128 @@
+// The world's GPU assets, object poses and reflection bounds.
+#include "render/world.h"
+
+#include "core/mesh_data.h"
+#include "swell/error.h"
+#include "swell/image.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace swell::detail {
+
+World buildWorld(const Scene& from)
+{
+    // A path from the scene, found relative to the scene file's folder.
+    auto assetPath = [&from](const std::string& path) {
+        const std::filesystem::path p(path);
+        return p.is_absolute() || from.assetFolder.empty() ? p : std::filesystem::path(from.assetFolder) / p;
+    };
+    World world;
+    if (from.showTerrain)
+        world.island = GpuMesh(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution));
+    for (const SceneObject& o : from.objects) {
+        const bool builtin = o.path.starts_with("builtin:");
+        const MeshData data = builtin ? makeBuiltinModel(o.path.substr(8)) : loadGltf(assetPath(o.path));
+        if (data.vertices.empty())
+            throw InputError({o.path}, "model has no triangles");
+        world.meshes.push_back(std::make_unique<GpuMesh>(data));
+        double reach = 0.0;
+        for (const MeshVertex& v : data.vertices)
+            reach = std::max(reach, double(glm::length(v.position)));
+        world.meshReach_m.push_back(reach);
+        // User models have no hull volume: a glTF file cannot say which
+        // part of a model is an open hull (docs/RENDERING.md).
+        const MeshData volume = builtin ? makeBuiltinHullVolume(o.path.substr(8)) : MeshData{};
+        world.hullVolumes.push_back(volume.indices.empty() ? nullptr : std::make_unique<GpuMesh>(volume));
+    }
+    if (!from.sky.cubemapFaces.empty()) {
+        std::vector<Image> faces;
+        for (const std::string& f : from.sky.cubemapFaces) {
+            faces.push_back(readImage(assetPath(f)));
+            const Image& face = faces.back();
+            if (face.width != face.height || face.width != faces.front().width)
+                throw InputError({assetPath(f).string()},
+                                 "sky cubemap face is " + std::to_string(face.width) + "x" + std::to_string(face.height) +
+                                     "; faces must be square and all the size of the first (" +
+                                     std::to_string(faces.front().width) + "x" + std::to_string(faces.front().width) + ")");
+        }
+        world.skyCube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
+        const int n = faces.front().width;
+        // A full mip chain: user photos may be far more detailed than the
+        // pixels the sky pass samples them with.
+        const int levels = 1 + int(std::floor(std::log2(double(n))));
+        glTextureStorage2D(world.skyCube.id(), levels, GL_SRGB8_ALPHA8, n, n);
+        for (int face = 0; face < 6; ++face)
+            glTextureSubImage3D(world.skyCube.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                                faces[size_t(face)].rgba.data());
+        glGenerateTextureMipmap(world.skyCube.id());
+        glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
+    return world;
+}
+
+namespace {
+
+glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, glm::dvec3 origin, double time_s)
+{
+    glm::dvec3 position = o.position_m;
+    glm::dmat4 tilt(1.0);
+    if (o.floats) {
+        // One inverse solve serves both the height and the tilt.
+        const glm::dvec2 rest = surface.restPointUnder({o.position_m.x, o.position_m.z}, time_s);
+        const SurfacePoint p = surface.surfaceAt(rest, time_s);
+        position.y += p.displacement_m.y;
+        // A body larger than the short waves does not follow every ripple:
+        // tilt half way towards the surface normal.
+        const glm::dvec3 up = glm::normalize(glm::mix(glm::dvec3(0, 1, 0), p.normal, 0.5));
+        const glm::dvec3 axis = glm::cross(glm::dvec3(0, 1, 0), up);
+        const double s = glm::length(axis);
+        if (s > 1e-9)
+            tilt = glm::rotate(glm::dmat4(1.0), std::asin(std::min(s, 1.0)), axis / s);
+    }
+    return glm::translate(glm::dmat4(1.0), position - origin) * tilt *
+           glm::rotate(glm::dmat4(1.0), glm::radians(o.yaw_deg), glm::dvec3(0, 1, 0)) *
+           glm::scale(glm::dmat4(1.0), glm::dvec3(o.scale));
+}
+
+} // namespace
+
+std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, glm::dvec3 origin, double time_s)
+{
+    std::vector<glm::mat4> poses;
+    poses.reserve(scene.objects.size());
+    for (const SceneObject& o : scene.objects)
+        poses.emplace_back(objectPose(o, surface, origin, time_s));
+    return poses;
+}
+
+int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,
+               WorldBoxUniform* boxes)
+{
+    int count = 0;
+    auto add = [&](glm::dvec3 lo, glm::dvec3 hi) {
+        if (count < SWELL_MAX_WORLD_BOXES)
+            boxes[count] = {glm::vec3(lo - origin), 0.0f, glm::vec3(hi - origin), 0.0f};
+        ++count;
+    };
+    if (world.island.indexCount() > 0) {
+        const glm::dvec3 half(0.5 * kIslandSize_m, 0.0, 0.5 * kIslandSize_m);
+        add(kIslandPosition_m - half - glm::dvec3(0.0, 1.0, 0.0),
+            kIslandPosition_m + half + glm::dvec3(0.0, kIslandPeak_m + 1.0, 0.0));
+    }
+    // Objects may turn and tilt, so each is boxed as a sphere round its
+    // origin; floating ones also rise and fall with the surface.
+    for (size_t i = 0; i < world.meshes.size() && i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        const double r = world.meshReach_m[i] * o.scale;
+        const glm::dvec3 pad(r, r + (o.floats ? reach.vertical_m : 0.0), r);
+        add(o.position_m - pad, o.position_m + pad);
+    }
+    return count <= SWELL_MAX_WORLD_BOXES ? count : -1;
+}
+
+} // namespace swell::detail

@@ -1,0 +1,51 @@
+// What the world draws besides the water: the island, one mesh per scene
+// object (and the closed volume of each open hull), and the sky cubemap;
+// where each object stands this frame; and the boxes that bound them all for
+// the reflection march.
+#pragma once
+
+#include "render/gpu_types.h"
+#include "render/mesh.h"
+#include "swell/scene.h"
+#include "swell/wave_model.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace swell::detail {
+
+// The built-in island: size, peak and where it stands (ahead-left of the default camera).
+inline constexpr double kIslandSize_m = 1400.0;
+inline constexpr double kIslandPeak_m = 70.0;
+inline constexpr int kIslandResolution = 192;
+inline constexpr glm::dvec3 kIslandPosition_m{-700.0, 0.0, -1700.0};
+
+struct World {
+    GpuMesh island;
+    std::vector<std::unique_ptr<GpuMesh>> meshes;
+    // Per scene object, the farthest any vertex lies from the model's origin, m (unscaled).
+    std::vector<double> meshReach_m;
+    // Per scene object, the closed volume of its open hull, or null (see Renderer's drawHullVolumes).
+    std::vector<std::unique_ptr<GpuMesh>> hullVolumes;
+    gl::Texture skyCube;
+};
+
+// Builds the meshes and sky of `scene` without touching any current world,
+// so a bad asset leaves the renderer as it was. Throws swell::InputError.
+World buildWorld(const Scene& scene);
+
+// Each object's transform for this frame, relative to the render origin:
+// floating objects sit on the surface as drawn at their position and tilt
+// with it. Computed once a frame; every pass draws with the same poses.
+std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, glm::dvec3 origin, double time_s);
+
+// Fills boxes holding all world geometry, relative to the render origin: a
+// reflected ray that misses them all can only meet the sky. Returns the
+// count, or -1 when there are more than SWELL_MAX_WORLD_BOXES (every ray is
+// then marched).
+int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,
+               WorldBoxUniform* boxes);
+
+} // namespace swell::detail

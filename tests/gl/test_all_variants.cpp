@@ -1,0 +1,53 @@
+// Every program the renderer builds, in every variant: each debug view, each
+// reflection mode, each grid layout, and each wave model's GLSL file (every
+// embedded file under ocean/, so a new model is covered by adding its file).
+// A variant the scenes of the other tests never select still has to compile.
+#include "render/programs.h"
+#include "support/gl_test.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace {
+
+using swell::DebugView;
+using swell::GridLayout;
+using swell::ReflectionMode;
+
+class AllVariants : public swell::test::GlTest {};
+
+std::vector<std::string> oceanFiles(const swell::gl::ShaderSources& sources)
+{
+    std::vector<std::string> files;
+    for (const std::string& name : sources.fileNames())
+        if (name.starts_with("ocean/"))
+            files.push_back(name);
+    return files;
+}
+
+TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
+{
+    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
+    const std::vector<std::string> models = oceanFiles(sources);
+    // Gerstner and flat water at least: a glob that found nothing would pass vacuously.
+    ASSERT_GE(models.size(), 2u);
+    constexpr std::array views{DebugView::Shaded,     DebugView::Normals, DebugView::Reflection,
+                               DebugView::Refraction, DebugView::Lod,     DebugView::Wireframe};
+    int built = 0;
+    for (const std::string& model : models)
+        for (const DebugView view : views)
+            for (const ReflectionMode reflection : {ReflectionMode::FixedDistance, ReflectionMode::RayMarch})
+                for (const GridLayout layout : {GridLayout::Geometric, GridLayout::Paper}) {
+                    const swell::detail::ShaderVariant variant{view, reflection, layout, model};
+                    SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", reflection " +
+                                 std::to_string(int(reflection)) + ", layout " + std::to_string(int(layout)));
+                    swell::detail::Programs programs;
+                    EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
+                    EXPECT_TRUE(programs.water && programs.sky && programs.capture);
+                    ++built;
+                }
+    EXPECT_EQ(built, int(models.size()) * 6 * 2 * 2);
+}
+
+} // namespace

@@ -1,0 +1,140 @@
+// The parameter table is the renderer's only change detector: for every
+// parameter, a renderer that was drawing one scene and is switched to a scene
+// with that parameter changed must draw exactly what a renderer built afresh
+// for the changed scene draws. A parameter declared cheaper than it is (say
+// Frame where the grid must be rebuilt) leaves stale state and fails here.
+#include "support/gl_test.h"
+#include "swell/error.h"
+#include "swell/flat_model.h"
+#include "swell/gl/handle.h"
+#include "swell/parameters.h"
+#include "swell/renderer.h"
+#include "swell/scene_changes.h"
+#include "swell/scene_file.h"
+
+#include <epoxy/gl.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace swell;
+
+class SceneChanges : public test::GlTest {};
+
+// Small and early in time: enough pixels to show the sky, the island, an
+// object and the waves, cheap enough for a renderer per parameter.
+constexpr glm::ivec2 kSize{96, 54};
+constexpr double kTime_s = 3.0;
+
+Scene baseScene()
+{
+    Scene scene = defaultScene();
+    scene.objects = {SceneObject{.path = "builtin:buoy", .position_m = {8.0, 0.0, -30.0}, .floats = true}};
+    scene.camera.path = {CameraKey{0.0, {0.0, 6.0, 0.0}, 0.0, -5.0}, CameraKey{10.0, {5.0, 8.0, -5.0}, 10.0, -8.0}};
+    return scene;
+}
+
+// A value different from `value` that the parameter allows, picked inside
+// its slider span; `attempt` gives other candidates when one is refused by
+// a rule between parameters (fog end after start, say).
+ParameterValue otherValue(const Parameter& p, const ParameterValue& value, int attempt)
+{
+    const double fractions[] = {0.37, 0.81, 0.13, 0.07, 0.013, 0.004};
+    const double f = fractions[attempt % 6];
+    const double x = p.sliderMin + f * (p.sliderMax - p.sliderMin);
+    switch (p.kind) {
+    case ParameterKind::Real: return x;
+    case ParameterKind::Integer: {
+        const auto i = std::int64_t(std::llround(x));
+        return i == std::get<std::int64_t>(value) ? i + 1 : i;
+    }
+    case ParameterKind::Flag: return !std::get<bool>(value);
+    case ParameterKind::Choice:
+        return (std::get<std::int64_t>(value) + 1 + attempt) % std::int64_t(p.choices.size());
+    case ParameterKind::Colour:
+    case ParameterKind::Vector3: return glm::dvec3(x, p.sliderMin + (1.0 - f) * (p.sliderMax - p.sliderMin), x);
+    case ParameterKind::Direction3: return glm::dvec3(0.3 + f, 0.4, -0.7);
+    case ParameterKind::Direction2: return glm::dvec2(0.3 + f, -0.7);
+    }
+    return value;
+}
+
+// What the renderer draws: the image, and the water's vertices (which show
+// a stale grid even where fog hides it in the image).
+struct Drawn {
+    Image image;
+    std::vector<float> vertices;
+};
+
+Drawn draw(Renderer& renderer, const Scene& scene)
+{
+    const Camera camera = cameraAt(scene.camera, kTime_s);
+    Drawn d;
+    d.image = renderer.renderImage(camera, kTime_s, kSize);
+    const int count = renderer.waterVertexCount();
+    gl::Buffer buffer = gl::Buffer::create();
+    glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
+    renderer.captureWaterVertices(camera, kTime_s, buffer.id(), kSize);
+    d.vertices.resize(size_t(count) * 8);
+    glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(d.vertices.size() * 4), d.vertices.data());
+    return d;
+}
+
+TEST_F(SceneChanges, EveryParameterChangeDrawsWhatAFreshRendererDraws)
+{
+    const Scene base = baseScene();
+    Renderer running(base);
+    draw(running, base);
+    int checked = 0;
+    for (const Parameter& p : parameters()) {
+        Scene changed = base;
+        if (!isPresent(p, changed) || listSize(changed, p.list) == 0)
+            continue;
+        const ParameterValue before = p.get(changed, 0);
+        bool valid = false;
+        for (int attempt = 0; attempt < 6 && !valid; ++attempt) {
+            changed = base;
+            p.set(changed, 0, otherValue(p, before, attempt));
+            try {
+                validateScene(changed, "changes.toml");
+                valid = p.get(changed, 0) != before;
+            } catch (const InputError&) {
+            }
+        }
+        if (!valid) {
+            ADD_FAILURE() << std::string(p.key) << ": found no other valid value to try";
+            continue;
+        }
+        SCOPED_TRACE(std::string(p.key) + " = " + formatValue(p, p.get(changed, 0)));
+        running.setScene(changed);
+        const Drawn incremental = draw(running, changed);
+        Renderer fresh(changed);
+        const Drawn expected = draw(fresh, changed);
+        EXPECT_TRUE(incremental.image.rgba == expected.image.rgba) << "a change of " << p.key << " left a stale image";
+        EXPECT_TRUE(incremental.vertices == expected.vertices) << "a change of " << p.key << " left a stale grid";
+        running.setScene(base);
+        ++checked;
+    }
+    // Every parameter with an item in the base scene was tried.
+    EXPECT_GE(checked, 45);
+}
+
+TEST_F(SceneChanges, AReplacedWaveModelIsDrawnAndTheScenesComesBack)
+{
+    const Scene scene = baseScene();
+    Renderer renderer(scene);
+    const Image waves = draw(renderer, scene).image;
+    renderer.setWaveModel(std::make_shared<FlatModel>());
+    EXPECT_EQ(renderer.waveModel().name(), "flat");
+    EXPECT_EQ(renderer.waveModel().heightAt({3.0, 4.0}, kTime_s), 0.0);
+    const Image flat = draw(renderer, scene).image;
+    EXPECT_FALSE(flat.rgba == waves.rgba);
+    renderer.setWaveModel(nullptr);
+    EXPECT_EQ(renderer.waveModel().name(), "gerstner");
+    EXPECT_TRUE(draw(renderer, scene).image.rgba == waves.rgba);
+}
+
+} // namespace
