@@ -16,7 +16,7 @@ public:
     WaveReach reach() const override { return {}; }
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     glm::dvec2 restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
-    std::unique_ptr<detail::WaveModelGpu> createGpu() const override;
+    std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
 };
 
 } // namespace swell

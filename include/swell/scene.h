@@ -29,8 +29,16 @@ enum class ReflectionMode {
 // What the water pass shows: the shaded ocean or one of its ingredients.
 enum class DebugView { Shaded, Normals, Reflection, Refraction, Lod, Wireframe };
 
+// Which wave model draws the sea (swell/wave_model.h).
+enum class WaveModelKind {
+    Gerstner, // a sum of up to SWELL_MAX_WAVES Gerstner waves: listed, or drawn from the wind's spectrum
+    Spectral, // the wind's spectrum on FFT cascades (swell/spectral_model.h); needs the wind
+};
+
 // Where the waves come from: listed by hand, or generated from the wind.
 struct SWELL_API WaveSource {
+    WaveModelKind model = WaveModelKind::Gerstner;
+    double choppiness = 1.0; // spectral model: lambda, 0..2 (SpectralSettings::choppiness)
     std::optional<WindSettings> wind; // when set, waves are generated and `listed` is ignored
     WaveSet listed;                   // hand-listed waves (and the water depth for both)
 };

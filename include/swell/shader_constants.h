@@ -19,6 +19,14 @@
 // The wave model's first uniform block (each model documents its own).
 #define SWELL_BINDING_OCEAN 1
 
+// The spectral model (src/ocean/spectral/): cascades of SWELL_FFT_SIZE^2
+// samples, each a periodic patch of its own size. 256 resolves a patch's
+// waves down to 4 texels per wavelength with a 256-thread workgroup per row
+// of the FFT; 4 cascades span 1 km down to about 5 cm.
+#define SWELL_FFT_SIZE 256
+#define SWELL_FFT_LOG2_SIZE 8
+#define SWELL_FFT_CASCADES 4
+
 // Texture units, fixed for the same reason.
 #define SWELL_UNIT_SKY 0
 #define SWELL_UNIT_REFLECTION_COLOR 1
@@ -26,6 +34,9 @@
 #define SWELL_UNIT_REFRACTION_COLOR 3
 #define SWELL_UNIT_REFRACTION_DEPTH 4
 #define SWELL_UNIT_BASE_COLOR 5
+// The wave model's textures (each model documents its own).
+#define SWELL_UNIT_OCEAN0 6
+#define SWELL_UNIT_OCEAN1 7
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).

@@ -25,6 +25,9 @@ namespace swell {
 namespace detail {
 class WaveModelGpu;
 }
+namespace gl {
+class ShaderSources;
+}
 
 // How far a model can move the surface from its rest plane, m: up or down,
 // and sideways. Culling pads the grid's tiles by it, and the reflection's
@@ -75,8 +78,9 @@ public:
 
     // The GPU half: what the model uploads each frame and the GLSL file that
     // defines oceanSurface() for the water shaders (see shaders/ocean.glsl).
-    // Needs a current GL context. Library-internal type.
-    virtual std::unique_ptr<detail::WaveModelGpu> createGpu() const = 0;
+    // Needs a current GL context; programs of its own (compute shaders) are
+    // built from `shaders`. Library-internal type.
+    virtual std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const = 0;
 };
 
 struct Scene;

@@ -34,6 +34,7 @@ constexpr std::array<std::string_view, 2> kReflectionModes{"fixed", "raymarch"};
 static_assert(static_cast<int>(ReflectionMode::FixedDistance) == 0 && static_cast<int>(ReflectionMode::RayMarch) == 1);
 
 constexpr std::array<std::string_view, 2> kGridLayouts{"geometric", "paper"};
+constexpr std::array<std::string_view, 2> kWaveModels{"gerstner", "spectral"};
 static_assert(static_cast<int>(GridLayout::Geometric) == 0 && static_cast<int>(GridLayout::Paper) == 1);
 
 constexpr std::array<std::string_view, 6> kDebugViews{"shaded", "normals", "reflection", "refraction", "lod", "wireframe"};
@@ -41,6 +42,9 @@ static_assert(static_cast<int>(DebugView::Shaded) == SWELL_VIEW_SHADED && static
               && static_cast<int>(DebugView::Reflection) == SWELL_VIEW_REFLECTION
               && static_cast<int>(DebugView::Refraction) == SWELL_VIEW_REFRACTION
               && static_cast<int>(DebugView::Lod) == SWELL_VIEW_LOD && static_cast<int>(DebugView::Wireframe) == SWELL_VIEW_WIREFRAME);
+
+constexpr std::array<std::string_view, 2> kSpreadings{"mitsuyasu", "donelan-banner"};
+static_assert(static_cast<int>(SpreadingModel::Mitsuyasu) == 0 && static_cast<int>(SpreadingModel::DonelanBanner) == 1);
 
 // The wind settings, for reading (defaults when the wind is not set) and for
 // writing (setting a wind parameter turns the wind on).
@@ -54,6 +58,20 @@ WindSettings& wind(Scene& s)
     if (!s.waves.wind)
         s.waves.wind.emplace();
     return *s.waves.wind;
+}
+
+// The swell, likewise: setting a swell parameter turns the wind and the swell on.
+const SwellSettings& swellOf(const Scene& s)
+{
+    static const SwellSettings none;
+    return s.waves.wind && s.waves.wind->swell ? *s.waves.wind->swell : none;
+}
+SwellSettings& swellOf(Scene& s)
+{
+    WindSettings& w = wind(s);
+    if (!w.swell)
+        w.swell.emplace();
+    return *w.swell;
 }
 
 template <class T>
@@ -99,6 +117,8 @@ Parameter at(Ref, Parameter p)
 }
 
 bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
+bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
+bool swellIsSet(const Scene& s) { return s.waves.wind && s.waves.wind->swell; }
 
 using K = ParameterKind;
 using L = ParameterList;
@@ -109,6 +129,14 @@ std::vector<Parameter> buildTable()
     // Keep in the order of scene.h; scene files and docs list them so.
     std::vector<Parameter> t{
         // [waves]
+        at([](auto& s, std::size_t) -> auto& { return s.waves.model; },
+           {.key = "waves.model", .kind = K::Choice, .effect = E::Waves, .min = 0.0, .max = kWaveModels.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kWaveModels.size() - 1.0,
+            .description = "gerstner: a sum of waves, listed or from the wind; spectral: the wind's spectrum on FFT cascades",
+            .choices = kWaveModels}),
+        at([](auto& s, std::size_t) -> auto& { return s.waves.choppiness; },
+           {.key = "waves.choppiness", .effect = E::Waves, .min = 0.0, .max = 2.0, .sliderMin = 0.0, .sliderMax = 2.0,
+            .description = "spectral model: how far crests lean and troughs widen (0: linear sea)", .present = isSpectral}),
         at([](auto& s, std::size_t) -> auto& { return s.waves.listed.depth_m; },
            {.key = "waves.depth_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
             .sliderMin = 1.0, .sliderMax = 500.0, .logarithmic = true,
@@ -144,6 +172,34 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return wind(s).steepness; },
            {.key = "waves.wind.steepness", .effect = E::Waves, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "overall choppiness, scaled down to stay fold-free", .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).spreading; },
+           {.key = "waves.wind.spreading", .kind = K::Choice, .effect = E::Waves, .min = 0.0,
+            .max = kSpreadings.size() - 1.0, .sliderMin = 0.0, .sliderMax = kSpreadings.size() - 1.0,
+            .description = "how wave energy spreads over directions: cos^2s (Mitsuyasu/Hasselmann) or sech^2 (Donelan-Banner)",
+            .choices = kSpreadings, .present = windIsSet}),
+        // [waves.swell]
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).height_m; },
+           {.key = "waves.swell.height_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = 15.0, .sliderMin = 0.0,
+            .sliderMax = 8.0, .description = "significant wave height of the swell alone", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).period_s; },
+           {.key = "waves.swell.period_s", .effect = E::Waves, .unit = "s", .min = 3.0, .max = 25.0, .sliderMin = 3.0,
+            .sliderMax = 25.0, .description = "peak period; long swell from afar is 10-20 s", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).direction_deg; },
+           {.key = "waves.swell.direction_deg", .effect = E::Waves, .unit = "deg", .min = -360.0, .max = 360.0,
+            .sliderMin = 0.0, .sliderMax = 360.0, .description = "direction the swell travels towards, from +x towards +z",
+            .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).gamma; },
+           {.key = "waves.swell.gamma", .effect = E::Waves, .min = 1.0, .max = 10.0, .sliderMin = 1.0, .sliderMax = 10.0,
+            .description = "JONSWAP peak enhancement: higher is a narrower band of periods", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).sMax; },
+           {.key = "waves.swell.spreading_s", .effect = E::Waves, .min = 1.0, .max = 200.0, .sliderMin = 1.0,
+            .sliderMax = 200.0, .logarithmic = true,
+            .description = "cos^2s spreading exponent at the peak: 25 young swell, 75 from afar (Goda 1985)",
+            .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).waveCount; },
+           {.key = "waves.swell.count", .kind = K::Integer, .effect = E::Waves, .min = 1.0, .max = SWELL_MAX_WAVES - 1.0,
+            .sliderMin = 1.0, .sliderMax = SWELL_MAX_WAVES - 1.0,
+            .description = "how many swell waves, on top of waves.wind.count (together at most 64)", .present = swellIsSet}),
         // [[waves.list]]
         at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].direction; },
            {.key = "waves.list.direction", .kind = K::Direction2, .list = L::Waves, .effect = E::Waves,

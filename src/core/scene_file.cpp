@@ -374,6 +374,7 @@ struct StructuralKey {
 constexpr StructuralKey kStructure[] = {
     {"waves", Shape::Table, ParameterList::None},
     {"waves.wind", Shape::Table, ParameterList::None},
+    {"waves.swell", Shape::Table, ParameterList::None},
     {"waves.list", Shape::TableList, ParameterList::None},
     {"grid", Shape::Table, ParameterList::None},
     {"sun", Shape::Table, ParameterList::None},
@@ -499,6 +500,16 @@ public:
         if (places_.has("waves.wind") && places_.has("waves.list"))
             fail(places_.at("waves.list"),
                  "waves.list and waves.wind exclude each other: list the waves, or let the wind generate them");
+        if (places_.has("waves.swell") && !places_.has("waves.wind"))
+            fail(places_.at("waves.swell"),
+                 "waves.swell adds a swell to the waves generated from waves.wind; add a [waves.wind] table");
+        if (scene_.waves.wind && scene_.waves.wind->swell) {
+            const int total = scene_.waves.wind->waveCount + scene_.waves.wind->swell->waveCount;
+            if (total > SWELL_MAX_WAVES)
+                fail(places_.at("waves.swell"),
+                     fmt::format("waves.wind.count + waves.swell.count = {}; at most {} waves in all (SWELL_MAX_WAVES)",
+                                 total, SWELL_MAX_WAVES));
+        }
         // One depth for both wave sources (see WaveSource).
         if (scene_.waves.wind)
             scene_.waves.wind->depth_m = scene_.waves.listed.depth_m;
@@ -541,8 +552,16 @@ private:
                 if (!node->is_table())
                     fail(places_.of(node->source()), fmt::format("{} must be a table, not {}", childShown, typeName(*node)));
                 places_.add(childShown, node->source());
-                if (childSchema == "waves.wind")
-                    scene_.waves.wind.emplace(); // present, even when empty, means "generate from the wind"
+                // Present, even when empty, means "generate from the wind" (or
+                // "add a swell"); a swell read first has already set the wind up.
+                if (childSchema == "waves.wind" && !scene_.waves.wind)
+                    scene_.waves.wind.emplace();
+                if (childSchema == "waves.swell") {
+                    if (!scene_.waves.wind)
+                        scene_.waves.wind.emplace();
+                    if (!scene_.waves.wind->swell)
+                        scene_.waves.wind->swell.emplace();
+                }
                 readTable(*node->as_table(), childSchema, childShown, list, item);
                 break;
             case Shape::TableList: readTableList(*node, childSchema, childShown); break;
@@ -1112,6 +1131,10 @@ std::string saveScene(const Scene& scene)
     if (scene.waves.wind) {
         out += "\n[waves.wind]\n";
         writeParameters(out, scene, "waves.wind", ParameterList::None, 0);
+        if (scene.waves.wind->swell) {
+            out += "\n[waves.swell]\n";
+            writeParameters(out, scene, "waves.swell", ParameterList::None, 0);
+        }
     } else {
         for (std::size_t i = 0; i < scene.waves.listed.waves.size(); ++i) {
             out += "\n[[waves.list]]\n";

@@ -1,11 +1,24 @@
 // The wave model a scene asks for.
+#include "swell/error.h"
 #include "swell/gerstner_model.h"
 #include "swell/scene.h"
+#include "swell/spectral_model.h"
 
 namespace swell {
 
 std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene)
 {
+    if (scene.waves.model == WaveModelKind::Spectral) {
+        if (!scene.waves.wind)
+            throw InputError({}, "waves.model = \"spectral\" needs the wind: add a [waves.wind] table");
+        SpectralSettings settings;
+        settings.wind = *scene.waves.wind;
+        // The water depth is the scene's, as for generated Gerstner waves.
+        settings.wind.depth_m = scene.waves.listed.depth_m;
+        settings.choppiness = scene.waves.choppiness;
+        settings.seed = scene.waves.wind->seed;
+        return std::make_unique<SpectralModel>(settings);
+    }
     WaveSet waves = resolveWaves(scene.waves);
     limitSteepness(waves);
     return std::make_unique<GerstnerModel>(std::move(waves));

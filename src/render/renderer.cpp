@@ -252,7 +252,7 @@ struct Renderer::Impl {
     {
         const WaveModel& nextModel = nextOverride ? *nextOverride : *nextSceneModel;
         const bool modelChanged = first || &nextModel != &model();
-        std::unique_ptr<WaveModelGpu> gpu = modelChanged ? nextModel.createGpu() : nullptr;
+        std::unique_ptr<WaveModelGpu> gpu = modelChanged ? nextModel.createGpu(sources) : nullptr;
         const ShaderVariant nextVariant = shaderVariantOf(next, gpu ? gpu->shaderFile() : variant.oceanFile);
         const bool programsChanged = first || nextVariant != variant;
         Programs nextPrograms;

@@ -21,7 +21,7 @@ std::vector<std::string> oceanFiles(const swell::gl::ShaderSources& sources)
 {
     std::vector<std::string> files;
     for (const std::string& name : sources.fileNames())
-        if (name.starts_with("ocean/"))
+        if (name.starts_with("ocean/") && name.ends_with(".glsl"))
             files.push_back(name);
     return files;
 }

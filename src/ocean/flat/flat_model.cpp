@@ -24,6 +24,9 @@ SurfacePoint FlatModel::surfaceAt(glm::dvec2, double, const SurfaceFilter&) cons
 
 glm::dvec2 FlatModel::restPointUnder(glm::dvec2 worldPoint_m, double, const SurfaceFilter&) const { return worldPoint_m; }
 
-std::unique_ptr<detail::WaveModelGpu> FlatModel::createGpu() const { return std::make_unique<FlatGpu>(); }
+std::unique_ptr<detail::WaveModelGpu> FlatModel::createGpu(const gl::ShaderSources&) const
+{
+    return std::make_unique<FlatGpu>();
+}
 
 } // namespace swell

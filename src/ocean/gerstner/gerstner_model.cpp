@@ -94,6 +94,9 @@ glm::dvec2 GerstnerModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s,
     return swell::restPointUnder(exact ? waves_ : filteredWaves(waves_, filter), worldPoint_m, time_s);
 }
 
-std::unique_ptr<detail::WaveModelGpu> GerstnerModel::createGpu() const { return std::make_unique<GerstnerGpu>(waves_); }
+std::unique_ptr<detail::WaveModelGpu> GerstnerModel::createGpu(const gl::ShaderSources&) const
+{
+    return std::make_unique<GerstnerGpu>(waves_);
+}
 
 } // namespace swell

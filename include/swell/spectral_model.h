@@ -1,0 +1,53 @@
+// The spectral ocean: the sea's wave-number spectrum (swell/spectrum.h)
+// sampled on SWELL_FFT_CASCADES periodic patches of incommensurate sizes,
+// evolved with the dispersion relation and inverse transformed each frame,
+// on the GPU with compute shaders and, for CPU queries of the same frame,
+// with kissfft (src/ocean/spectral/). Choppy: the horizontal displacement is
+// choppiness times the spectrum's own (Tessendorf 2001).
+#pragma once
+
+#include "swell/export.h"
+
+#include "swell/spectrum.h"
+#include "swell/wave_model.h"
+
+#include <cstdint>
+
+namespace swell {
+
+namespace spectral {
+struct SpectralField;
+class CpuSurface;
+} // namespace spectral
+
+struct SWELL_API SpectralSettings {
+    WindSettings wind;       // the sea: wind, fetch, depth, spreading, swell
+    // lambda, dimensionless, 0..2: how far crests lean and troughs widen; 0
+    // is the linear (Airy) sea, 1 Tessendorf's choppy waves.
+    double choppiness = 1.0;
+    std::uint32_t seed = 1;  // the random field's seed
+};
+
+class SWELL_API SpectralModel final : public WaveModel {
+public:
+    // Throws std::invalid_argument as SeaSpectrum does for bad settings.
+    explicit SpectralModel(const SpectralSettings& settings);
+    ~SpectralModel() override;
+
+    std::string_view name() const override;
+    std::string summary() const override;
+    WaveReach reach() const override;
+    SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
+    std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
+
+    // For tests and tools: the field both halves evolve, and the CPU twin.
+    const spectral::SpectralField& field() const { return *field_; }
+    const spectral::CpuSurface& cpu() const { return *cpu_; }
+
+private:
+    SpectralSettings settings_;
+    std::shared_ptr<const spectral::SpectralField> field_;
+    std::unique_ptr<spectral::CpuSurface> cpu_;
+};
+
+} // namespace swell

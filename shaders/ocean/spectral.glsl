@@ -1,0 +1,70 @@
+// The spectral ocean on the GPU: the GLSL twin of
+// swell::spectral::CpuSurface::surfaceAt (src/ocean/spectral/spectral_cpu.cpp).
+// The displacement is the sum over cascades of exact bilinear samples at
+// level 0 (texelFetch with weights computed here: the hardware's filter
+// weights have too few bits to match the CPU), each cascade weighed by
+// whether the samples resolve its shortest wave; the normal comes from the
+// slopes, filtered by the footprint through their mipmaps.
+#ifndef SWELL_OCEAN_SPECTRAL_GLSL
+#define SWELL_OCEAN_SPECTRAL_GLSL
+#include "swell/shader_constants.h"
+
+struct SpectralCascade {
+    vec2 originTexels;          // the grid centre modulo the patch, texels
+    float texelsPerMetre;       // N / L
+    float shortestWavelength_m; // the shortest wave the cascade holds, m
+};
+
+layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
+    SpectralCascade cascades[SWELL_FFT_CASCADES];
+};
+
+layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
+layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;  // dDy/dx, dDy/dz, dDx/dx, dDz/dz
+
+// swell::spectral::cascadeWeight.
+float cascadeWeight(float shortestWavelength_m, float footprint_m)
+{
+    return smoothstep(SWELL_MIN_CELLS_PER_WAVELENGTH * footprint_m,
+                      SWELL_FULL_CELLS_PER_WAVELENGTH * footprint_m, shortestWavelength_m);
+}
+
+vec4 bilinearDisplacement(vec2 s, int cascade)
+{
+    vec2 cell = floor(s);
+    vec2 f = s - cell;
+    ivec2 i0 = ivec2(cell) & (SWELL_FFT_SIZE - 1);
+    ivec2 i1 = (i0 + 1) & (SWELL_FFT_SIZE - 1);
+    vec4 top = mix(texelFetch(oceanDisplacement, ivec3(i0.x, i0.y, cascade), 0),
+                   texelFetch(oceanDisplacement, ivec3(i1.x, i0.y, cascade), 0), f.x);
+    vec4 bottom = mix(texelFetch(oceanDisplacement, ivec3(i0.x, i1.y, cascade), 0),
+                      texelFetch(oceanDisplacement, ivec3(i1.x, i1.y, cascade), 0), f.x);
+    return mix(top, bottom, f.y);
+}
+
+SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
+{
+    vec4 displacement = vec4(0.0); // Dx, Dy, Dz, dDx/dz
+    vec4 slopes = vec4(0.0);       // dDy/dx, dDy/dz, dDx/dx, dDz/dz
+    float crossSlope = 0.0;        // dDx/dz from the filtered fields
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
+        SpectralCascade cascade = cascades[c];
+        vec2 s = cascade.originTexels + restOffset_m * cascade.texelsPerMetre;
+        float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
+        if (weight > 0.0)
+            displacement += weight * bilinearDisplacement(s, c);
+        // Sample centres sit at integer texels: shift by half a texel for the
+        // hardware's filter, and pick the mip the footprint covers.
+        vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
+        float lod = log2(max(footprint_m * cascade.texelsPerMetre, 1.0));
+        slopes += textureLod(oceanDerivatives, uvw, lod);
+        crossSlope += textureLod(oceanDisplacement, uvw, 0.0).w * weight;
+    }
+    displacement *= heightScale;
+    slopes *= heightScale;
+    crossSlope *= heightScale;
+    vec3 alongX = vec3(1.0 + slopes.z, slopes.x, crossSlope);
+    vec3 alongZ = vec3(crossSlope, slopes.y, 1.0 + slopes.w);
+    return SurfacePoint(displacement.xyz, normalize(cross(alongZ, alongX)));
+}
+#endif

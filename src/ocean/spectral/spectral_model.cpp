@@ -1,0 +1,179 @@
+// SpectralModel: the spectral field behind swell::WaveModel, with its CPU
+// twin for queries and its GPU half: each frame at a new time, compute
+// shaders evolve the spectra (shaders/ocean/spectral_evolve.comp), transform
+// rows then columns (spectral_fft.comp), and mipmap the slopes.
+#include "swell/spectral_model.h"
+
+#include "ocean/spectral/spectral_cpu.h"
+#include "render/wave_model_gpu.h"
+#include "swell/constants.h"
+#include "swell/gl/shader.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/packing.hpp>
+
+#include <cmath>
+#include <cstring>
+
+namespace swell {
+
+using namespace spectral;
+
+namespace {
+
+// Mirrors the std140 block SpectralCascades in shaders/ocean/spectral.glsl.
+struct alignas(16) CascadeUniform {
+    glm::vec2 originTexels;     // the grid centre modulo the patch, in texels
+    float texelsPerMetre;       // N / L
+    float shortestWavelength_m; // what the LOD weight tests
+};
+struct alignas(16) SpectralUniforms {
+    CascadeUniform cascades[kCascades];
+};
+
+class SpectralGpu final : public detail::WaveModelGpu {
+public:
+    SpectralGpu(std::shared_ptr<const SpectralField> field, const gl::ShaderSources& shaders) : field_(std::move(field))
+    {
+        evolve_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_evolve.comp"}});
+        fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
+        fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
+        timeLocation_ = glGetUniformLocation(evolve_.id(), "time_s");
+        choppinessLocation_ = glGetUniformLocation(evolve_.id(), "choppiness");
+        patchLocation_ = glGetUniformLocation(evolve_.id(), "patchSize_m");
+
+        const int n = kSize;
+        auto array = [n](GLenum format, int levels) {
+            gl::Texture t = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
+            glTextureStorage3D(t.id(), levels, format, n, n, kCascades);
+            return t;
+        };
+        initial_ = array(GL_RGBA32F, 1);
+        omega_ = array(GL_RG32UI, 1);
+        displacement_ = array(GL_RGBA32F, 1);
+        const int levels = SWELL_FFT_LOG2_SIZE + 1;
+        derivatives_ = array(GL_RGBA32F, levels);
+        glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(displacement_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        for (const gl::Texture* t : {&displacement_, &derivatives_}) {
+            glTextureParameteri(t->id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+            glTextureParameteri(t->id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+        }
+        std::vector<float> h0(size_t(n) * n * 4);
+        std::vector<std::uint32_t> omegaBits(size_t(n) * n * 2);
+        for (int c = 0; c < kCascades; ++c) {
+            for (size_t i = 0; i < size_t(n) * n; ++i) {
+                h0[4 * i + 0] = field_->h0[size_t(c)][i].real();
+                h0[4 * i + 1] = field_->h0[size_t(c)][i].imag();
+                h0[4 * i + 2] = field_->h0MinusConj[size_t(c)][i].real();
+                h0[4 * i + 3] = field_->h0MinusConj[size_t(c)][i].imag();
+                // The double's bits, low word first, as unpackDouble2x32 reads them.
+                std::memcpy(&omegaBits[2 * i], &field_->omega_radps[size_t(c)][i], sizeof(double));
+            }
+            glTextureSubImage3D(initial_.id(), 0, 0, 0, c, n, n, 1, GL_RGBA, GL_FLOAT, h0.data());
+            glTextureSubImage3D(omega_.id(), 0, 0, 0, c, n, n, 1, GL_RG_INTEGER, GL_UNSIGNED_INT, omegaBits.data());
+        }
+        uniforms_ = gl::Buffer::create();
+        glNamedBufferStorage(uniforms_.id(), sizeof(SpectralUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+
+    std::string shaderFile() const override { return "ocean/spectral.glsl"; }
+
+    void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override
+    {
+        if (!transformed_ || time_s != time_s_)
+            transform(time_s);
+        SpectralUniforms u{};
+        for (int c = 0; c < kCascades; ++c) {
+            const Cascade& cascade = field_->cascades[size_t(c)];
+            const double scale = kSize / cascade.patch_m;
+            // In double: the centre may be far from the origin.
+            const glm::dvec2 origin = gridCenter_m - cascade.patch_m * glm::floor(gridCenter_m / cascade.patch_m);
+            u.cascades[c] = {glm::vec2(origin * scale), float(scale), float(cascade.shortestWavelength_m())};
+        }
+        glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
+    }
+
+    void bind() const override
+    {
+        glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, uniforms_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN0, displacement_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN1, derivatives_.id());
+    }
+
+private:
+    void transform(double time_s)
+    {
+        glUseProgram(evolve_.id());
+        glUniform1d(timeLocation_, time_s);
+        glUniform1f(choppinessLocation_, float(field_->choppiness));
+        float patches[kCascades];
+        for (int c = 0; c < kCascades; ++c)
+            patches[c] = float(field_->cascades[size_t(c)].patch_m);
+        glUniform1fv(patchLocation_, kCascades, patches);
+        glBindImageTexture(0, initial_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(1, omega_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RG32UI);
+        glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glDispatchCompute(kSize / 16, kSize / 16, kCascades);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        // One workgroup per row (then column) of every cascade.
+        glUseProgram(fftRows_.id());
+        glDispatchCompute(kSize, kCascades, 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glUseProgram(fftColumns_.id());
+        glDispatchCompute(kSize, kCascades, 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glGenerateTextureMipmap(derivatives_.id());
+        for (GLuint unit = 0; unit < 4; ++unit)
+            glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glUseProgram(0);
+        transformed_ = true;
+        time_s_ = time_s;
+    }
+
+    std::shared_ptr<const SpectralField> field_;
+    gl::Program evolve_, fftRows_, fftColumns_;
+    GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
+    gl::Texture initial_, omega_, displacement_, derivatives_;
+    gl::Buffer uniforms_;
+    bool transformed_ = false;
+    double time_s_ = 0.0;
+};
+
+} // namespace
+
+SpectralModel::SpectralModel(const SpectralSettings& settings)
+    : settings_(settings),
+      field_(std::make_shared<const SpectralField>(
+          makeSpectralField(SeaSpectrum(settings.wind), settings.choppiness, settings.seed))),
+      cpu_(std::make_unique<CpuSurface>(field_))
+{
+}
+
+SpectralModel::~SpectralModel() = default;
+
+std::string_view SpectralModel::name() const { return "spectral"; }
+
+std::string SpectralModel::summary() const
+{
+    return fmt::format("spectral ocean, {} cascades of {}^2, {:.3g} m .. {:.2g} m, wind {:.3g} m/s", kCascades, kSize,
+                       field_->cascades.front().patch_m, field_->cascades.back().shortestWavelength_m(),
+                       settings_.wind.windSpeed_mps);
+}
+
+WaveReach SpectralModel::reach() const { return {field_->verticalReach_m, field_->horizontalReach_m}; }
+
+SurfacePoint SpectralModel::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    return cpu_->surfaceAt(restPoint_m, time_s, filter);
+}
+
+std::unique_ptr<detail::WaveModelGpu> SpectralModel::createGpu(const gl::ShaderSources& shaders) const
+{
+    return std::make_unique<SpectralGpu>(field_, shaders);
+}
+
+} // namespace swell
