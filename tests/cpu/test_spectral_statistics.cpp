@@ -1,0 +1,153 @@
+// The spectral ocean's field against the published statistics of the sea
+// (issue 12, "Done when"): significant wave height from the discrete
+// spectrum and from the heightfield (Pierson & Moskowitz 1964; the JONSWAP
+// fetch law), the phase speed of the transformed field (the dispersion
+// relation), and the slope variance it resolves plus what the spectrum holds
+// beyond it (Cox & Munk 1954).
+#include "ocean/spectral/spectral_cpu.h"
+#include "ocean/spectral/spectral_field.h"
+#include "swell/spectrum.h"
+
+#include <gtest/gtest.h>
+#include <kiss_fftnd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+namespace {
+
+using namespace swell;
+using namespace swell::spectral;
+
+constexpr double kG = 9.80665; // m/s^2
+constexpr double k2Pi = 2.0 * std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kFullyDeveloped_km = 10000.0; // past any fetch limit at 5..20 m/s
+
+WindSettings windOf(double windSpeed_mps, double fetch_km, double depth_m = kInf)
+{
+    WindSettings w;
+    w.windSpeed_mps = windSpeed_mps;
+    w.fetch_km = fetch_km;
+    w.depth_m = depth_m;
+    return w;
+}
+
+// The wind z metres up from the 10 m wind: the power law U ~ z^0.11 over the
+// sea (Hsu, Meindl & Gilhousen 1994, J. Appl. Meteor. 33, eq. 4).
+double windAt(double z_m, double windSpeed10_mps) { return windSpeed10_mps * std::pow(z_m / 10.0, 0.11); }
+
+// Pierson & Moskowitz (1964): a fully developed sea has Hs = 0.21*U19.5^2/g.
+double piersonMoskowitzHs_m(double windSpeed10_mps) { return 0.21 * std::pow(windAt(19.5, windSpeed10_mps), 2) / kG; }
+
+// The JONSWAP fetch law (Hasselmann et al. 1973): g*Hs/U10^2 = 1.6e-3*sqrt(g*F/U10^2).
+double jonswapHs_m(double windSpeed10_mps, double fetch_km)
+{
+    const double u2 = windSpeed10_mps * windSpeed10_mps;
+    return 1.6e-3 * std::sqrt(kG * fetch_km * 1000.0 / u2) * u2 / kG;
+}
+
+struct SeaCase {
+    double windSpeed_mps, fetch_km;
+    double referenceHs_m() const
+    {
+        return fetch_km >= kFullyDeveloped_km ? piersonMoskowitzHs_m(windSpeed_mps) : jonswapHs_m(windSpeed_mps, fetch_km);
+    }
+};
+
+// Fully developed at 5, 10, 15, 20 m/s, and two fetches (10 and 40 km, both
+// short of full development even at 5 m/s) at 5, 10, 20 m/s.
+const SeaCase kCases[] = {{5, kFullyDeveloped_km}, {10, kFullyDeveloped_km}, {15, kFullyDeveloped_km},
+                          {20, kFullyDeveloped_km}, {5, 10},  {5, 40},  {10, 10}, {10, 40}, {20, 10}, {20, 40}};
+
+// The layout makeSpectralField() gives this sea: from its longest peak.
+std::array<Cascade, kCascades> layoutFor(const SeaSpectrum& sea)
+{
+    double peakWavelength_m = 0.0;
+    for (const SeaComponent& component : sea.components())
+        peakWavelength_m =
+            std::max(peakWavelength_m, k2Pi / wavenumberOf(component.spectrum.peakFrequency_radps, sea.depth_m()));
+    return cascadeLayout(peakWavelength_m);
+}
+
+// The mean square of each cascade's field v summed over cascades: the
+// spatial variance of the combined field, since the bands are disjoint (no
+// two cascades share a wave vector, so cross terms average out over the
+// plane) and each cascade's mean over its own period is its own variance.
+double combinedMeanSquare(const CpuSurface::Fields& f, int v)
+{
+    double sum = 0.0;
+    for (int c = 0; c < kCascades; ++c) {
+        double s = 0.0;
+        for (float x : f.values[size_t(c)][size_t(v)])
+            s += double(x) * double(x);
+        sum += s / double(kSize * kSize);
+    }
+    return sum;
+}
+
+constexpr int kDy = 1, kDyx = 4, kDyz = 5; // CpuSurface::Fields order
+
+// ---------------------------------------------------------------------------
+// Significant wave height
+
+TEST(SpectralStatistics, DiscreteSpectrumCarriesThePublishedSignificantHeight)
+{
+    for (const SeaCase& sc : kCases) {
+        const SeaSpectrum sea(windOf(sc.windSpeed_mps, sc.fetch_km));
+        const double hs = 4.0 * std::sqrt(sampledHeightVariance_m2(sea, layoutFor(sea)));
+        std::printf("U10 %4.1f m/s fetch %6.0f km: Hs of the sampled spectrum %.3f m, published %.3f m (%+.2f%%)\n",
+                    sc.windSpeed_mps, sc.fetch_km, hs, sc.referenceHs_m(), 100.0 * (hs / sc.referenceHs_m() - 1.0));
+        EXPECT_NEAR(hs / sc.referenceHs_m(), 1.0, 0.05) << sc.windSpeed_mps << " m/s, " << sc.fetch_km << " km";
+    }
+}
+
+// One realisation's variance is a sum of |hhat(k)|^2, each an exponential
+// draw; its relative spread is sqrt(sum P^2)/sum P with P = Psi*dk^2 summed
+// over each pair (k, -k), which move together. The heightfield variance is
+// averaged over seeds until the expected spread of the mean Hs is under 1.67%
+// (so the 5% tolerance is 3 standard deviations), and over two times each.
+TEST(SpectralStatistics, HeightfieldVarianceGivesThePublishedSignificantHeight)
+{
+    for (const SeaCase& sc : kCases) {
+        const SeaSpectrum sea(windOf(sc.windSpeed_mps, sc.fetch_km));
+        const auto cascades = layoutFor(sea);
+        // Spread of one realisation's variance, from the pairs' weights.
+        double sumP = 0.0, sumPairSq = 0.0;
+        for (const Cascade& c : cascades) {
+            const double dk = k2Pi / c.patch_m;
+            for (int fz = -kSize / 2; fz < kSize / 2; ++fz)
+                for (int fx = -kSize / 2; fx < kSize / 2; ++fx) {
+                    if (!c.holds(fz, fx))
+                        continue;
+                    const double p = sea.wavenumberDensity(dk * fx, dk * fz) * dk * dk;
+                    const double pm = sea.wavenumberDensity(-dk * fx, -dk * fz) * dk * dk;
+                    sumP += p;
+                    sumPairSq += 0.5 * (p + pm) * (p + pm); // each pair is visited twice
+                }
+        }
+        const double varianceSpread = std::sqrt(sumPairSq) / sumP;
+        // Hs ~ sqrt(variance): half the relative spread; two times a seed count as one draw.
+        const int seeds = std::max(2, int(std::ceil(std::pow(0.5 * varianceSpread / 0.0167, 2))));
+        double variance_m2 = 0.0;
+        for (int seed = 1; seed <= seeds; ++seed) {
+            CpuSurface surface(std::make_shared<const SpectralField>(makeSpectralField(sea, 1.0, std::uint32_t(seed))));
+            variance_m2 += combinedMeanSquare(surface.fieldsAt(0.0), kDy) + combinedMeanSquare(surface.fieldsAt(1000.0), kDy);
+        }
+        variance_m2 /= 2.0 * seeds;
+        const double hs = 4.0 * std::sqrt(variance_m2);
+        std::printf("U10 %4.1f m/s fetch %6.0f km: Hs of the heightfield %.3f m over %d seeds x 2 times (one draw's "
+                    "Hs spread %.1f%%), published %.3f m (%+.2f%%)\n",
+                    sc.windSpeed_mps, sc.fetch_km, hs, seeds, 50.0 * varianceSpread, sc.referenceHs_m(),
+                    100.0 * (hs / sc.referenceHs_m() - 1.0));
+        EXPECT_NEAR(hs / sc.referenceHs_m(), 1.0, 0.05) << sc.windSpeed_mps << " m/s, " << sc.fetch_km << " km";
+    }
+}
+
+} // namespace
