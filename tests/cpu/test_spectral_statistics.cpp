@@ -150,4 +150,85 @@ TEST(SpectralStatistics, HeightfieldVarianceGivesThePublishedSignificantHeight)
     }
 }
 
+// ---------------------------------------------------------------------------
+// Phase speed
+
+// The forward 2D transform of a real N*N field (row = z), in FFT order.
+std::vector<std::complex<float>> forwardTransform(const std::vector<float>& field)
+{
+    const int dims[2] = {kSize, kSize};
+    kiss_fftnd_cfg cfg = kiss_fftnd_alloc(dims, 2, 0, nullptr, nullptr);
+    std::vector<std::complex<float>> in(field.begin(), field.end()), out(in.size());
+    kiss_fftnd(cfg, reinterpret_cast<const kiss_fft_cpx*>(in.data()), reinterpret_cast<kiss_fft_cpx*>(out.data()));
+    kiss_fft_free(cfg);
+    return out;
+}
+
+// The phase speed of linear waves, m/s: c = sqrt(g/k * tanh(k*d)), from
+// omega^2 = g*k*tanh(k*d) (Airy 1845; Lamb 1932, "Hydrodynamics", art. 228).
+double phaseSpeed_mps(double k_radpm, double depth_m)
+{
+    return std::sqrt(kG / k_radpm * (std::isinf(depth_m) ? 1.0 : std::tanh(k_radpm * depth_m)));
+}
+
+// Transforms the CPU twin's height field of each cascade forward at t0 and
+// t0 + dt and reads the phase advance of its strongest components: a
+// component travelling along +k turns by -omega*dt. Only components whose
+// opposite partner (the wave running the other way at the same |k|, which
+// shares the Fourier coefficient) is under 1e-3 of their amplitude are read,
+// so the phase is one wave's. dt keeps every band's omega*dt under 2.5 rad
+// (no wrap). Returns the worst relative error of omega/k over 20 components a
+// cascade.
+double worstPhaseSpeedError(double depth_m, double t0_s)
+{
+    const SeaSpectrum sea(windOf(10.0, kFullyDeveloped_km, depth_m));
+    auto field = std::make_shared<const SpectralField>(makeSpectralField(sea, 1.0, 5));
+    CpuSurface surface(field);
+    double worst = 0.0;
+    for (int c = 0; c < kCascades; ++c) {
+        const Cascade& cascade = field->cascades[size_t(c)];
+        const double dt_s = 2.5 / std::sqrt(kG * cascade.maxWavenumber_radpm);
+        const auto before = forwardTransform(surface.fieldsAt(t0_s).values[size_t(c)][kDy]);
+        const auto after = forwardTransform(surface.fieldsAt(t0_s + dt_s).values[size_t(c)][kDy]);
+        std::vector<size_t> candidates;
+        for (size_t i = 0; i < before.size(); ++i)
+            if (std::abs(field->h0MinusConj[size_t(c)][i]) < 1e-3f * std::abs(field->h0[size_t(c)][i]))
+                candidates.push_back(i);
+        const size_t count = std::min<size_t>(20, candidates.size());
+        EXPECT_GE(count, 20u) << "cascade " << c;
+        std::partial_sort(candidates.begin(), candidates.begin() + std::ptrdiff_t(count), candidates.end(),
+                          [&](size_t a, size_t b) { return std::abs(before[a]) > std::abs(before[b]); });
+        const double dk = k2Pi / cascade.patch_m;
+        for (size_t n = 0; n < count; ++n) {
+            const size_t i = candidates[n];
+            const int fz = frequencyOf(int(i) / kSize), fx = frequencyOf(int(i) % kSize);
+            const double k = dk * std::hypot(double(fx), double(fz));
+            const double turn = std::arg(std::complex<double>(after[i]) / std::complex<double>(before[i]));
+            const double measured_mps = -turn / dt_s / k;
+            worst = std::max(worst, std::abs(measured_mps / phaseSpeed_mps(k, depth_m) - 1.0));
+        }
+    }
+    return worst;
+}
+
+TEST(SpectralStatistics, FieldTravelsAtThePhaseSpeedInDeepWater)
+{
+    for (double t0_s : {0.0, 1.0e3, 1.0e6}) {
+        const double worst = worstPhaseSpeedError(kInf, t0_s);
+        std::printf("deep water, t0 = %g s: worst phase-speed error %.2e\n", t0_s, worst);
+        EXPECT_LT(worst, 0.01) << "t0 = " << t0_s << " s";
+    }
+}
+
+// 12 m deep: k_p*d is about 1 at 10 m/s, where the peak travels 24% slower
+// than in deep water.
+TEST(SpectralStatistics, FieldTravelsAtThePhaseSpeedInFiniteDepth)
+{
+    for (double t0_s : {0.0, 1.0e3, 1.0e6}) {
+        const double worst = worstPhaseSpeedError(12.0, t0_s);
+        std::printf("12 m deep, t0 = %g s: worst phase-speed error %.2e\n", t0_s, worst);
+        EXPECT_LT(worst, 0.01) << "t0 = " << t0_s << " s";
+    }
+}
+
 } // namespace
