@@ -5,6 +5,7 @@
 // swell/parameters.h; the comments below only summarise them.
 #pragma once
 
+#include "swell/error.h"
 #include "swell/spectrum.h"
 #include "swell/waves.h"
 
@@ -126,6 +127,15 @@ struct CameraSettings {
     std::vector<CameraKey> path;           // optional: keys sorted by time, interpolated linearly
 };
 
+// Where a scene file named a file the renderer reads (a model or a sky
+// face), so that a problem found while loading it is reported at the key
+// that named it: "scene.toml:12:8: objects[2].path: /scenes/boat.glb: ...".
+struct AssetReference {
+    std::string key;   // "objects[2].path", "sky.faces[3]"
+    std::string path;  // the path as written, to tell whether the scene still names it
+    SourcePlace place; // where it was written
+};
+
 struct Scene {
     WaveSource waves;
     GridSettings grid;
@@ -140,6 +150,9 @@ struct Scene {
     // Where relative object and sky paths are found: the scene file's folder
     // (set by loadScene/parseScene); empty means the working directory.
     std::string assetFolder;
+    // Where each model and sky face path was written (set by loadScene/
+    // parseScene; empty for scenes built in code, whose errors name the file).
+    std::vector<AssetReference> assetReferences;
     bool showTerrain = true; // the built-in island
 };
 
