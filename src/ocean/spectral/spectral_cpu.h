@@ -36,7 +36,9 @@ public:
     glm::dvec3 displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const;
 
     // The 8 spatial fields of every cascade at time_s (Dx, Dy, Dz, dDx/dz,
-    // dDy/dx, dDy/dz, dDx/dx, dDz/dz), N*N each, row = z: for tests.
+    // dDy/dx, dDy/dz, dDx/dx, dDz/dz), N*N each, row = z: for tests and the
+    // model's constructor. Not thread-safe, unlike the queries: the
+    // reference holds until the next call for another time.
     struct Fields {
         double time_s = 0.0;
         bool hasDerivatives = false; // fields 4..7 (and their spectra transformed)
