@@ -4,7 +4,7 @@
 // bad input; a crash, a sanitizer report or any other exception is a bug.
 // The folder also holds buffer.bin (64 bytes: a triangle's positions and u16
 // indices, then zeros), so inputs can reach external buffers.
-#include "core/mesh_data.h"
+#include "assets/mesh_data.h"
 
 #include "swell/error.h"
 

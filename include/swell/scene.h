@@ -5,6 +5,7 @@
 // swell/parameters.h; the comments below only summarise them.
 #pragma once
 
+#include "swell/error.h"
 #include "swell/export.h"
 
 #include "swell/spectrum.h"
@@ -128,6 +129,15 @@ struct SWELL_API CameraSettings {
     std::vector<CameraKey> path;           // optional: keys sorted by time, interpolated linearly
 };
 
+// Where a scene file named a file the renderer reads (a model or a sky
+// face), so that a problem found while loading it is reported at the key
+// that named it: "scene.toml:12:8: objects[2].path: /scenes/boat.glb: ...".
+struct SWELL_API AssetReference {
+    std::string key;   // "objects[2].path", "sky.faces[3]"
+    std::string path;  // the path as written, to tell whether the scene still names it
+    SourcePlace place; // where it was written
+};
+
 struct SWELL_API Scene {
     WaveSource waves;
     GridSettings grid;
@@ -142,6 +152,9 @@ struct SWELL_API Scene {
     // Where relative object and sky paths are found: the scene file's folder
     // (set by loadScene/parseScene); empty means the working directory.
     std::string assetFolder;
+    // Where each model and sky face path was written (set by loadScene/
+    // parseScene; empty for scenes built in code, whose errors name the file).
+    std::vector<AssetReference> assetReferences;
     bool showTerrain = true; // the built-in island
 };
 

@@ -28,6 +28,38 @@ constexpr double kWorldLimit_m = 1.0e6;
 constexpr double kAngleLimit_deg = 3600.0;
 // Direction components are normalised on use; this only keeps them finite.
 constexpr double kDirectionLimit = 1.0e3;
+// Shortest direction accepted. Directions are normalised on use, some of them
+// in the shaders' 32-bit floats, where the squared length of anything far
+// shorter underflows to zero (1e-300 does so even in doubles) and the
+// normalised result is NaN. At this length the squared length, 1e-24, is far
+// above float's smallest normal number (1.2e-38).
+constexpr double kMinDirectionLength = 1.0e-12;
+
+// Length of v without underflow or overflow: scaled by its largest component first.
+template <class V>
+double robustLength(const V& v)
+{
+    double largest = 0.0;
+    for (int c = 0; c < V::length(); ++c)
+        largest = std::max(largest, std::abs(v[c]));
+    return largest == 0.0 ? 0.0 : largest * glm::length(v / largest);
+}
+
+// The problem with direction v (written as `name`), or "" when it is long enough.
+template <class V>
+std::string directionProblem(const V& v, std::string_view name)
+{
+    const double length = robustLength(v);
+    if (length >= kMinDirectionLength)
+        return "";
+    std::string written;
+    for (int c = 0; c < V::length(); ++c)
+        written += fmt::format("{}{}", c > 0 ? ", " : "", v[c]);
+    if (length == 0.0)
+        return fmt::format("{} is [{}]; a direction must not be zero", name, written);
+    return fmt::format("{} is [{}], of length {}; a direction must be at least {} long (it is normalised on use)", name,
+                       written, length, kMinDirectionLength);
+}
 
 // The TOML names of the enums, indexed by the enum's value.
 constexpr std::array<std::string_view, 2> kReflectionModes{"fixed", "raymarch"};
@@ -502,7 +534,7 @@ std::string rangeText(const Parameter& p)
     case K::Colour: return "each channel " + span;
     case K::Vector3: return "each component " + span;
     case K::Direction3:
-    case K::Direction2: return "non-zero, each component " + span;
+    case K::Direction2: return fmt::format("length >= {}, each component {}", kMinDirectionLength, span);
     default: return span;
     }
 }
@@ -543,18 +575,14 @@ std::string valueProblem(const Parameter& p, const ParameterValue& value, std::s
         for (int c = 0; c < 3; ++c)
             if (!inRange(p, v[c]))
                 return rangeMessage(p, fmt::format("{}[{}]", name, c), v[c]);
-        if (p.kind == K::Direction3 && glm::dot(v, v) == 0.0)
-            return fmt::format("{} is [0, 0, 0]; a direction must not be zero", name);
-        return "";
+        return p.kind == K::Direction3 ? directionProblem(v, name) : "";
     }
     case K::Direction2: {
         glm::dvec2 v = std::get<glm::dvec2>(value);
         for (int c = 0; c < 2; ++c)
             if (!inRange(p, v[c]))
                 return rangeMessage(p, fmt::format("{}[{}]", name, c), v[c]);
-        if (glm::dot(v, v) == 0.0)
-            return fmt::format("{} is [0, 0]; a direction must not be zero", name);
-        return "";
+        return directionProblem(v, name);
     }
     }
     return "";

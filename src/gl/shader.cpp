@@ -1,5 +1,6 @@
 #include "swell/gl/shader.h"
 
+#include "core/input_file.h"
 #include "embedded_files.h"
 #include "swell/error.h"
 
@@ -11,6 +12,11 @@
 #include <sstream>
 
 namespace swell::gl {
+
+namespace {
+// Largest shader source read from disk: ours are a few KiB each.
+constexpr std::uintmax_t kMaxShaderFileBytes = std::uintmax_t(1) << 20;
+} // namespace
 
 ShaderSources ShaderSources::embedded()
 {
@@ -53,12 +59,10 @@ const std::string& ShaderSources::file(const std::string& name) const
             return it->second;
         // The shared constants header lives with the C++ headers.
         const std::filesystem::path path = name.starts_with("swell/") ? includeDir_ / name : shaderDir_ / name;
-        std::ifstream in(path, std::ios::binary);
-        if (in) {
-            std::ostringstream text;
-            text << in.rdbuf();
-            return cache_.emplace(name, text.str()).first->second;
-        }
+        // Read as any other input: regular files only, never blocking, bounded (core/input_file.h).
+        std::error_code ec;
+        if (std::filesystem::exists(std::filesystem::symlink_status(path, ec)))
+            return cache_.emplace(name, detail::readInputFile(path, kMaxShaderFileBytes, "shader file")).first->second;
     }
     throw InputError({name}, "shader file not found");
 }

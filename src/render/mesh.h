@@ -1,7 +1,7 @@
-// GPU copies of world meshes (see core/mesh_data.h for the CPU side).
+// GPU copies of world meshes (see assets/mesh_data.h for the CPU side).
 #pragma once
 
-#include "core/mesh_data.h"
+#include "assets/mesh_data.h"
 #include "swell/gl/handle.h"
 
 namespace swell::detail {

@@ -1,7 +1,7 @@
 // The world's GPU assets, object poses and reflection bounds.
 #include "render/world.h"
 
-#include "core/mesh_data.h"
+#include "assets/scene_assets.h"
 #include "swell/error.h"
 #include "swell/image.h"
 
@@ -15,40 +15,18 @@ namespace swell::detail {
 
 World buildWorld(const Scene& from)
 {
-    // A path from the scene, found relative to the scene file's folder.
-    auto assetPath = [&from](const std::string& path) {
-        const std::filesystem::path p(path);
-        return p.is_absolute() || from.assetFolder.empty() ? p : std::filesystem::path(from.assetFolder) / p;
-    };
+    // Every file is read and checked on the CPU first (assets/scene_assets.h); only uploads here.
+    const SceneAssets assets = loadSceneAssets(from);
     World world;
     if (from.showTerrain)
         world.island = GpuMesh(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution));
-    for (const SceneObject& o : from.objects) {
-        const bool builtin = o.path.starts_with("builtin:");
-        const MeshData data = builtin ? makeBuiltinModel(o.path.substr(8)) : loadGltf(assetPath(o.path));
-        if (data.vertices.empty())
-            throw InputError({o.path}, "model has no triangles");
-        world.meshes.push_back(std::make_unique<GpuMesh>(data));
-        double reach = 0.0;
-        for (const MeshVertex& v : data.vertices)
-            reach = std::max(reach, double(glm::length(v.position)));
-        world.meshReach_m.push_back(reach);
-        // User models have no hull volume: a glTF file cannot say which
-        // part of a model is an open hull (docs/RENDERING.md).
-        const MeshData volume = builtin ? makeBuiltinHullVolume(o.path.substr(8)) : MeshData{};
-        world.hullVolumes.push_back(volume.indices.empty() ? nullptr : std::make_unique<GpuMesh>(volume));
+    for (const ObjectAssets& o : assets.objects) {
+        world.meshes.push_back(std::make_unique<GpuMesh>(*o.mesh));
+        world.meshReach_m.push_back(o.reach_m);
+        world.hullVolumes.push_back(o.hullVolume->indices.empty() ? nullptr : std::make_unique<GpuMesh>(*o.hullVolume));
     }
-    if (!from.sky.cubemapFaces.empty()) {
-        std::vector<Image> faces;
-        for (const std::string& f : from.sky.cubemapFaces) {
-            faces.push_back(readImage(assetPath(f)));
-            const Image& face = faces.back();
-            if (face.width != face.height || face.width != faces.front().width)
-                throw InputError({assetPath(f).string()},
-                                 "sky cubemap face is " + std::to_string(face.width) + "x" + std::to_string(face.height) +
-                                     "; faces must be square and all the size of the first (" +
-                                     std::to_string(faces.front().width) + "x" + std::to_string(faces.front().width) + ")");
-        }
+    if (!assets.skyFaces.empty()) {
+        const std::vector<Image>& faces = assets.skyFaces;
         world.skyCube = gl::Texture::create(GLenum(GL_TEXTURE_CUBE_MAP));
         const int n = faces.front().width;
         // A full mip chain: user photos may be far more detailed than the

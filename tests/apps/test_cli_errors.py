@@ -6,6 +6,7 @@ where the problem is; none may crash (a signal, or exit codes other than 0/1/2).
 usage: test_cli_errors.py SWELL_EXECUTABLE WORK_DIR
 """
 import os
+import shutil
 import subprocess
 import sys
 
@@ -61,10 +62,24 @@ ARGUMENTS = [
 failures = []
 count = 0
 
+# Reports of AddressSanitizer and UndefinedBehaviorSanitizer, when swell is
+# such a build (.ci/sanitize): a hostile input that corrupts memory without
+# crashing must still fail its case.
+SANITIZER_REPORTS = ("ERROR: AddressSanitizer", "runtime error:", "ERROR: LeakSanitizer")
+
 
 def run(args):
-    return subprocess.run([swell] + args, cwd=work, capture_output=True, text=True, timeout=300,
-                          env=dict(os.environ, DISPLAY=""))
+    # A hang (a FIFO opened the blocking way) fails as a timeout, far past
+    # the second or so any case takes.
+    try:
+        r = subprocess.run([swell] + args, cwd=work, capture_output=True, text=True, timeout=300,
+                           env=dict(os.environ, DISPLAY=""), errors="replace")
+    except subprocess.TimeoutExpired:
+        return subprocess.CompletedProcess(args, -1, "", "timed out: swell hung")
+    for report in SANITIZER_REPORTS:
+        if report in r.stderr:
+            failures.append(f"{args}: sanitizer report: {r.stderr.strip()[:600]!r}")
+    return r
 
 
 for name, text, place, needle in SCENES:
@@ -109,11 +124,46 @@ for name, model, data in MODELS:
         f.write(data)
     scene = os.path.join(work, name + ".toml")
     with open(scene, "w") as f:
-        f.write(f'[[objects]]\npath = "{model}"\n')
+        f.write(f'[[objects]]\npath = "builtin:buoy"\n[[objects]]\n  path = "{model}"\n')
     r = run(["render", scene, "-o", os.path.join(work, name + ".png"), "--size", "32x32"])
-    if r.returncode != 2 or os.path.join(work, model) not in r.stderr:
+    # The scene key that named the model, at its place, then the model's file.
+    wanted = f"{scene}:4:10: objects[1].path: {os.path.join(work, model)}"
+    if r.returncode != 2 or wanted not in r.stderr:
         failures.append(f"model {name}: exit {r.returncode}, stderr: {r.stderr.strip()[:300]!r} "
-                        f"(wanted exit 2 naming {model})")
+                        f"(wanted exit 2 with {wanted!r})")
+
+# Special files where a file is read: the scene itself, a model, a sky face.
+# Each must be refused naming the file (exit 2), never opened the blocking
+# way: a FIFO would hang, /dev/zero never end.
+special = os.path.join(work, "special")
+shutil.rmtree(special, ignore_errors=True)
+os.makedirs(special)
+os.mkfifo(os.path.join(special, "fifo.toml"))
+os.mkfifo(os.path.join(special, "fifo.glb"))
+os.mkfifo(os.path.join(special, "fifo.png"))
+os.symlink("/dev/zero", os.path.join(special, "zero.toml"))
+os.symlink(os.path.join(special, "missing.toml"), os.path.join(special, "dangling.toml"))
+os.symlink(os.path.join(special, "loop2.toml"), os.path.join(special, "loop.toml"))
+os.symlink(os.path.join(special, "loop.toml"), os.path.join(special, "loop2.toml"))
+with open(os.path.join(special, "fifo_model.toml"), "w") as f:
+    f.write('[[objects]]\npath = "fifo.glb"\n')
+with open(os.path.join(special, "fifo_face.toml"), "w") as f:
+    f.write('[sky]\nfaces = ["fifo.png", "fifo.png", "fifo.png", "fifo.png", "fifo.png", "fifo.png"]\n')
+SPECIAL = [
+    ("fifo.toml", "", "FIFO"),
+    ("zero.toml", "", "character device"),
+    ("dangling.toml", "", "symbolic link to a file that does not exist"),
+    ("loop.toml", "", "loop"),
+    ("fifo_model.toml", ":2:8: objects[0].path", "FIFO"),
+    ("fifo_face.toml", ":2:10: sky.faces[0]", "FIFO"),
+]
+for scene, place, needle in SPECIAL:
+    count += 1
+    path = os.path.join(special, scene)
+    r = run(["render", path, "-o", os.path.join(special, "out.png"), "--size", "32x32"])
+    if r.returncode != 2 or path + place not in r.stderr or needle not in r.stderr:
+        failures.append(f"special {scene}: exit {r.returncode}, stderr: {r.stderr.strip()[:300]!r} "
+                        f"(wanted exit 2 with {path + place!r} and {needle!r})")
 
 # And a good one, so the cases above fail for their own reasons.
 count += 1

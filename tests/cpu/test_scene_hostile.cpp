@@ -171,3 +171,60 @@ TEST(SceneHostile, SocketInsteadOfFile)
     ::close(fd);
     fs::remove(path);
 }
+
+// (Issue #14, class 4) A quoted key is one name, dots included: at the top
+// level "fog.start_m" = 10.0 is a key named fog.start_m, not start_m in
+// [fog], and must not pass for it, alone or beside the real one.
+TEST(SceneHostile, QuotedDottedKeysAreUnknownKeys)
+{
+    struct Case {
+        std::string toml;
+        int line, column;
+        std::string message;
+    };
+    for (const Case& c : {Case{"\"fog.start_m\" = 10.0\n", 1, 1, "unknown key '\"fog.start_m\"'"},
+                          Case{"'fog.start_m' = 10.0\n", 1, 1, "to set fog.start_m, write the key without quotes"},
+                          Case{"[fog]\nstart_m = 20.0\n[water]\n\"fog.start_m\" = 10.0\n", 4, 1,
+                               "unknown key 'water.\"fog.start_m\"'"},
+                          Case{"\"fog.start_m\" = 10.0\n[fog]\nstart_m = 20.0\n", 1, 1, "a quoted key is one name"},
+                          Case{"[fog]\n\"start_m.x\" = 1.0\n", 2, 1, "unknown key 'fog.\"start_m.x\"'"},
+                          Case{"[\"waves.wind\"]\nspeed_mps = 3.0\n", 1, 2, "unknown key '\"waves.wind\"'"}}) {
+        const InputError e = parseError(c.toml);
+        EXPECT_EQ(e.place().line, c.line) << c.toml;
+        EXPECT_EQ(e.place().column, c.column) << c.toml;
+        EXPECT_NE(e.message().find(c.message), std::string::npos) << c.toml << e.message();
+    }
+    // Quotes around a name without dots change nothing in TOML, and are fine.
+    EXPECT_EQ(parseScene("[fog]\n\"start_m\" = 10.0\n", "quoted.toml").fog.start_m, 10.0);
+}
+
+// (Issue #14, class 5) Directions are normalised on use, in floats too, so
+// a length is required (1e-12; docs/SCENE.md), and the message quotes the
+// components as written, not as a rounded [0, 0, 0].
+TEST(SceneHostile, TinyDirectionsAreRefusedQuotingThem)
+{
+    struct Case {
+        std::string toml;
+        std::string message;
+    };
+    for (const Case& c :
+         {Case{"[sun]\ndirection = [1e-300, 1e-300, 0]\n", "sun.direction is [1e-300, 1e-300, 0], of length 1.4142135623730952e-300"},
+          Case{"[sun]\ndirection = [0, -1e-13, 0]\n", "sun.direction is [0, -1e-13, 0], of length 1e-13; a direction must be at least 1e-12 long"},
+          Case{"[[waves.list]]\ndirection = [5e-324, 0.0]\n", "waves.list[0].direction is [5e-324, 0]"},
+          Case{"[sun]\ndirection = [0, 0, 0]\n", "sun.direction is [0, 0, 0]; a direction must not be zero"}}) {
+        const InputError e = parseError(c.toml);
+        EXPECT_EQ(e.place().line, 2) << c.toml;
+        EXPECT_NE(e.message().find(c.message), std::string::npos) << c.toml << e.message();
+    }
+    // The shortest accepted, and a long one, are fine; both in files and in code.
+    EXPECT_EQ(parseScene("[sun]\ndirection = [0, 1e-12, 0]\n", "short.toml").sun.direction.y, 1e-12);
+    EXPECT_EQ(parseScene("[sun]\ndirection = [1e3, 1e3, 1e3]\n", "long.toml").sun.direction.x, 1e3);
+    Scene scene;
+    scene.sun.direction = {1e-200, 0.0, 0.0};
+    try {
+        validateScene(scene, "code.toml");
+        ADD_FAILURE() << "a tiny direction built in code was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(e.message().find("sun.direction is [1e-200, 0, 0]"), std::string::npos) << e.message();
+    }
+}

@@ -3,7 +3,7 @@
 // depth before the water. The control is the same hull loaded as a user glTF
 // model, which has no hull volume: there the water does show, so the check
 // finds water where there is some.
-#include "core/mesh_data.h"
+#include "assets/mesh_data.h"
 #include "support/camera_rays.h"
 #include "support/gl_test.h"
 #include "support/gltf_writer.h"
@@ -18,7 +18,7 @@ class HullMask : public swell::test::GlTest {};
 
 constexpr glm::ivec2 kSize{320, 240};
 constexpr double kTime_s = 7.0;
-// The built-in boat's gunwale (src/core/mesh_data.cpp): 0.6 m above its
+// The built-in boat's gunwale (src/assets/mesh_data.cpp): 0.6 m above its
 // origin, an ellipse of semi-axes 0.98 * 3.5 m along x and 0.98 * 1.1 m along z.
 constexpr double kGunwaleHeight_m = 0.6;
 constexpr double kGunwaleHalfLength_m = 0.98 * 3.5, kGunwaleHalfWidth_m = 0.98 * 1.1;

@@ -3,7 +3,7 @@
 // a model of known shape and colour through a scene file.
 #pragma once
 
-#include "core/mesh_data.h"
+#include "assets/mesh_data.h"
 
 #include <filesystem>
 

@@ -1,5 +1,5 @@
 // Procedural built-in models and the island heightfield.
-#include "core/mesh_data.h"
+#include "assets/mesh_data.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

@@ -1,6 +1,9 @@
 #include "swell/image.h"
 
+#include "core/input_file.h"
 #include "swell/error.h"
+
+#include <fmt/format.h>
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
@@ -10,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 
 namespace swell {
 
@@ -25,12 +29,24 @@ void writePng(const Image& image, const std::filesystem::path& path)
 
 Image readImage(const std::filesystem::path& path)
 {
+    const std::string bytes = detail::readInputFile(path, kMaxImageFileBytes, "image");
+    if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
+        throw InputError({path.string()}, "the image is too large to decode");
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = int(bytes.size());
+    // The header first: a small file may declare a huge picture, and
+    // decoding allocates for what it declares.
     int w = 0, h = 0, channels = 0;
-    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
-    if (!data)
+    if (!stbi_info_from_memory(data, size, &w, &h, &channels))
         throw InputError({path.string()}, std::string("cannot read image: ") + stbi_failure_reason());
-    Image image{w, h, std::vector<std::uint8_t>(data, data + size_t(w) * size_t(h) * 4)};
-    stbi_image_free(data);
+    if (w > kMaxImageSide || h > kMaxImageSide)
+        throw InputError({path.string()}, fmt::format("the image is {}x{} pixels; images are at most {}x{}", w, h,
+                                                      kMaxImageSide, kMaxImageSide));
+    stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &channels, 4);
+    if (!pixels)
+        throw InputError({path.string()}, std::string("cannot read image: ") + stbi_failure_reason());
+    Image image{w, h, std::vector<std::uint8_t>(pixels, pixels + size_t(w) * size_t(h) * 4)};
+    stbi_image_free(pixels);
     return image;
 }
 

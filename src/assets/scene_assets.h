@@ -1,0 +1,40 @@
+// Every file a Scene names, read and checked on the CPU: its models (glTF
+// files and the built-ins) and its sky faces. The renderer uploads what this
+// returns and reads no file itself.
+#pragma once
+
+#include "assets/mesh_data.h"
+#include "swell/image.h"
+#include "swell/scene.h"
+
+#include <memory>
+#include <vector>
+
+namespace swell::detail {
+
+struct ObjectAssets {
+    // The model, shared by every object that names the same file (read once).
+    std::shared_ptr<const MeshData> mesh;
+    // The closed volume of a built-in's open hull (makeBuiltinHullVolume);
+    // empty for models without one, which includes every glTF file: a glTF
+    // file cannot say which part of a model is an open hull (docs/RENDERING.md).
+    std::shared_ptr<const MeshData> hullVolume;
+    // The farthest any vertex lies from the model's origin, m (unscaled).
+    double reach_m = 0.0;
+};
+
+struct SceneAssets {
+    std::vector<ObjectAssets> objects; // one per Scene::objects entry, in order
+    std::vector<Image> skyFaces;       // none, or six square images of one size (+x, -x, +y, -y, +z, -z)
+};
+
+// Reads the models and sky faces `scene` names. Relative paths start at
+// Scene::assetFolder (the working directory when it is empty); when the
+// folder is set, every path must lie inside it, links included, as the scene
+// file's own checks require. Throws InputError at the scene key that named
+// the broken file, "scene.toml:LINE:COL: objects[2].path: FILE: problem",
+// when the scene records where the key was (Scene::assetReferences); else at
+// the file itself, "FILE: objects[2].path: problem".
+SceneAssets loadSceneAssets(const Scene& scene);
+
+} // namespace swell::detail

@@ -1,0 +1,189 @@
+// The scene as a whole (checks.h).
+#include "scene/checks.h"
+
+#include "core/asset_path.h"
+#include "core/input_file.h"
+#include "swell/parameters.h"
+#include "swell/scene_file.h"
+#include "swell/shader_constants.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <stdexcept>
+
+namespace swell::detail::scenefile {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Step 4: the scene as a whole.
+
+// The key of parameter p for one item, as the user sees it: "objects[2].scale".
+std::string shownKey(const Parameter& p, std::size_t item)
+{
+    if (p.list == ParameterList::None)
+        return std::string(p.key);
+    std::string_view list = listKey(p.list);
+    return fmt::format("{}[{}]{}", list, item, p.key.substr(list.size()));
+}
+
+std::string lowercase(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+// A file the scene refers to must lie in the scene's folder (or below it),
+// exist, and be a regular file that can be read now, so that the renderer
+// does not find out halfway through loading. `base` is the folder as given,
+// `resolved` the same with links followed (resolvedFolder).
+void checkFile(const fs::path& base, const fs::path& resolved, const std::string& relative, const std::string& name,
+               const SourcePlace& place)
+{
+    const std::optional<fs::path> inside = resolveInside(resolved, relative);
+    if (!inside)
+        fail(place, fmt::format("{}: '{}' lies outside the scene's folder '{}'; a scene may name only files in its "
+                                "folder or below it, links included",
+                                name, shortText(relative), base.string()));
+    const fs::path file = fs::path(relative).is_absolute() ? fs::path(relative) : base / relative;
+    std::error_code ec;
+    fs::file_status status = fs::status(file, ec);
+    if (fs::is_directory(status))
+        fail(place, fmt::format("{}: '{}' is a folder, not a file", name, shortText(file.string())));
+    if (!fs::exists(status) && !fs::is_symlink(fs::symlink_status(file, ec)))
+        fail(place, fmt::format("{}: file '{}' not found (relative paths start at the scene file's folder)", name,
+                                shortText(file.string())));
+    try {
+        checkInputFile(file, "file");
+    } catch (const InputError& e) {
+        fail(place, fmt::format("{}: '{}': {}", name, shortText(file.string()), e.message()));
+    }
+}
+
+void checkObjectPath(const fs::path& base, const fs::path& resolved, const std::string& path, const std::string& name,
+                     const SourcePlace& place)
+{
+    if (path.empty())
+        fail(place, fmt::format("{} is empty; it must name a file", name));
+    if (path.starts_with(kBuiltinObjectPrefix)) {
+        std::string_view builtin = std::string_view(path).substr(kBuiltinObjectPrefix.size());
+        if (std::find(kBuiltinObjects.begin(), kBuiltinObjects.end(), builtin) != kBuiltinObjects.end())
+            return;
+        std::string known;
+        for (std::string_view b : kBuiltinObjects)
+            known += fmt::format("{}\"{}{}\"", known.empty() ? "" : ", ", kBuiltinObjectPrefix, b);
+        fail(place, fmt::format("{} = \"{}\" is not a built-in object; the built-ins are {}", name, shortText(path), known));
+    }
+    std::string extension = lowercase(fs::path(path).extension().string());
+    if (extension != ".gltf" && extension != ".glb")
+        fail(place, fmt::format("{} = \"{}\" is not a glTF model; use a .gltf or .glb file, or \"builtin:NAME\"", name,
+                                shortText(path)));
+    checkFile(base, resolved, path, name, place);
+}
+
+void checkWaves(const Scene& scene, const Places& places)
+{
+    if (scene.waves.listed.waves.size() > SWELL_MAX_WAVES)
+        fail(places.first({"waves.list", "waves"}),
+             fmt::format("waves.list has {} waves; at most {} are allowed", scene.waves.listed.waves.size(), SWELL_MAX_WAVES));
+    SourcePlace place = scene.waves.wind ? places.first({"waves.wind", "waves"}) : places.first({"waves.list", "waves"});
+    const char* source = scene.waves.wind ? "the waves generated from waves.wind" : "waves.list";
+    WaveSet waves;
+    try {
+        waves = resolveWaves(scene.waves);
+    } catch (const InputError& e) {
+        fail(place, fmt::format("{}: {}", source, e.message()));
+    } catch (const std::invalid_argument& e) {
+        fail(place, fmt::format("{}: {}", source, e.what()));
+    }
+    if (std::string problem = validate(waves); !problem.empty())
+        fail(place, fmt::format("{} are not usable: {}", source, problem));
+}
+
+} // namespace
+
+void checkScene(const Scene& scene, const Places& places, const fs::path& base)
+{
+    // Every parameter in range (the reader checked values as it read them;
+    // this is for scenes built in code).
+    for (const Parameter& p : parameters()) {
+        if (!isPresent(p, scene))
+            continue;
+        std::size_t count = listSize(scene, p.list);
+        for (std::size_t i = 0; i < count; ++i) {
+            std::string name = shownKey(p, i);
+            if (std::string problem = valueProblem(p, p.get(scene, i), name); !problem.empty())
+                fail(places.at(name), problem);
+        }
+    }
+
+    if (scene.objects.size() > kMaxSceneObjects)
+        fail(places.at("objects"),
+             fmt::format("objects has {} entries; at most {} are allowed", scene.objects.size(), kMaxSceneObjects));
+    if (scene.camera.path.size() > kMaxCameraKeys)
+        fail(places.at("camera.path"),
+             fmt::format("camera.path has {} keys; at most {} are allowed", scene.camera.path.size(), kMaxCameraKeys));
+
+    // Cross-field rules: reported at the second key when the file has it,
+    // since that is usually the one to change.
+    if (!(scene.grid.fadeEnd_m > scene.grid.fadeStart_m))
+        fail(places.first({"grid.fade_end_m", "grid.fade_start_m", "grid"}),
+             fmt::format("grid.fade_end_m ({} m) must be greater than grid.fade_start_m ({} m)", scene.grid.fadeEnd_m,
+                         scene.grid.fadeStart_m));
+    if (scene.grid.fadeEnd_m > scene.grid.radius_m)
+        fail(places.first({"grid.fade_end_m", "grid.radius_m", "grid"}),
+             fmt::format("grid.fade_end_m ({} m) must not exceed grid.radius_m ({} m): the waves would stop at the "
+                         "grid's edge instead of fading out",
+                         scene.grid.fadeEnd_m, scene.grid.radius_m));
+    if (!(scene.fog.end_m > scene.fog.start_m))
+        fail(places.first({"fog.end_m", "fog.start_m", "fog"}),
+             fmt::format("fog.end_m ({} m) must be greater than fog.start_m ({} m)", scene.fog.end_m, scene.fog.start_m));
+    if (!(scene.camera.far_m > scene.camera.near_m))
+        fail(places.first({"camera.far_m", "camera.near_m", "camera"}),
+             fmt::format("camera.far_m ({} m) must be greater than camera.near_m ({} m)", scene.camera.far_m,
+                         scene.camera.near_m));
+    for (std::size_t i = 1; i < scene.camera.path.size(); ++i)
+        if (!(scene.camera.path[i].time_s > scene.camera.path[i - 1].time_s)) {
+            std::string name = fmt::format("camera.path[{}].time_s", i);
+            fail(places.at(name), fmt::format("{} ({} s) must be later than camera.path[{}].time_s ({} s): keys are "
+                                              "sorted by time",
+                                              name, scene.camera.path[i].time_s, i - 1, scene.camera.path[i - 1].time_s));
+        }
+
+    // Referenced files.
+    const bool namesFiles = !scene.sky.cubemapFaces.empty() ||
+                            std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
+                                return !o.path.starts_with(kBuiltinObjectPrefix);
+                            });
+    const fs::path resolved = namesFiles ? resolvedFolder(base) : fs::path();
+    const auto& faces = scene.sky.cubemapFaces;
+    if (!faces.empty() && faces.size() != 6)
+        fail(places.at("sky.faces"), fmt::format("sky.faces must list 6 image paths, or none; it lists {}", faces.size()));
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        std::string name = fmt::format("sky.faces[{}]", i);
+        if (faces[i].empty() || hasControlCharacter(faces[i]))
+            fail(places.at(name), fmt::format("{} must name a file", name));
+        checkFile(base, resolved, faces[i], name, places.at(name));
+    }
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        std::string name = fmt::format("objects[{}].path", i);
+        if (hasControlCharacter(scene.objects[i].path))
+            fail(places.at(name), fmt::format("{} contains a control character", name));
+        checkObjectPath(base, resolved, scene.objects[i].path, name, places.at(name));
+    }
+
+    checkWaves(scene, places);
+}
+
+fs::path baseFolder(const fs::path& sceneFile)
+{
+    fs::path base = sceneFile.parent_path();
+    return base.empty() ? fs::path(".") : base;
+}
+
+} // namespace swell::detail::scenefile

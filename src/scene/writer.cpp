@@ -1,0 +1,116 @@
+// Scenes as TOML text (saveScene in swell/scene_file.h), written by hand
+// section by section so the file reads like the docs: one key per line with
+// its range in a comment.
+#include "swell/scene_file.h"
+
+#include "swell/parameters.h"
+
+#include <fmt/format.h>
+
+#include <string_view>
+
+namespace swell {
+namespace {
+
+
+std::string tomlString(std::string_view s)
+{
+    std::string out = "\"";
+    for (char c : s) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\b': out += "\\b"; break;
+        case '\t': out += "\\t"; break;
+        case '\n': out += "\\n"; break;
+        case '\f': out += "\\f"; break;
+        case '\r': out += "\\r"; break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+                out += fmt::format("\\u{:04X}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+            else
+                out += c;
+        }
+    }
+    return out + "\"";
+}
+
+// The table a single-valued parameter sits in: "waves.wind" for "waves.wind.speed_mps".
+std::string_view tableOf(std::string_view key)
+{
+    auto dot = key.rfind('.');
+    return dot == std::string_view::npos ? std::string_view() : key.substr(0, dot);
+}
+
+void writeLine(std::string& out, std::string_view name, const std::string& value, const std::string& comment)
+{
+    std::string line = fmt::format("{} = {}", name, value);
+    if (!comment.empty())
+        line = fmt::format("{:<40} # {}", line, comment);
+    out += line;
+    out += '\n';
+}
+
+void writeParameters(std::string& out, const Scene& scene, std::string_view table, ParameterList list, std::size_t item)
+{
+    for (const Parameter& p : parameters()) {
+        if (p.list != list || !isPresent(p, scene))
+            continue;
+        std::string_view owner = list == ParameterList::None ? tableOf(p.key) : listKey(list);
+        if (owner != table)
+            continue;
+        std::string_view name = table.empty() ? p.key : p.key.substr(table.size() + 1);
+        writeLine(out, name, formatValue(p, p.get(scene, item)), rangeText(p));
+    }
+}
+
+} // namespace
+
+std::string saveScene(const Scene& scene)
+{
+    std::string out = "# Swell scene. Every key is described in docs/SCENE.md; the comments give each range.\n\n";
+    writeParameters(out, scene, "", ParameterList::None, 0);
+
+    out += "\n[waves]\n";
+    writeParameters(out, scene, "waves", ParameterList::None, 0);
+    if (scene.waves.wind) {
+        out += "\n[waves.wind]\n";
+        writeParameters(out, scene, "waves.wind", ParameterList::None, 0);
+        if (scene.waves.wind->swell) {
+            out += "\n[waves.swell]\n";
+            writeParameters(out, scene, "waves.swell", ParameterList::None, 0);
+        }
+    } else {
+        for (std::size_t i = 0; i < scene.waves.listed.waves.size(); ++i) {
+            out += "\n[[waves.list]]\n";
+            writeParameters(out, scene, "waves.list", ParameterList::Waves, i);
+        }
+    }
+
+    for (std::string_view table : {"grid", "sun", "sky", "fog", "water", "reflection"}) {
+        out += fmt::format("\n[{}]\n", table);
+        if (table == "sky" && !scene.sky.cubemapFaces.empty()) {
+            std::string faces = "[";
+            for (std::size_t i = 0; i < scene.sky.cubemapFaces.size(); ++i)
+                faces += (i > 0 ? ", " : "") + tomlString(scene.sky.cubemapFaces[i]);
+            writeLine(out, "faces", faces + "]", "+x, -x, +y, -y, +z, -z");
+        }
+        writeParameters(out, scene, table, ParameterList::None, 0);
+    }
+
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        out += "\n[[objects]]\n";
+        writeLine(out, "path", tomlString(scene.objects[i].path), "");
+        writeParameters(out, scene, "objects", ParameterList::Objects, i);
+    }
+
+    out += "\n[camera]\n";
+    writeParameters(out, scene, "camera", ParameterList::None, 0);
+    for (std::size_t i = 0; i < scene.camera.path.size(); ++i) {
+        out += "\n[[camera.path]]\n";
+        writeParameters(out, scene, "camera.path", ParameterList::CameraPath, i);
+    }
+    return out;
+}
+
+} // namespace swell
