@@ -26,8 +26,8 @@ if (( ${#presets[@]} < 5 )); then
   echo "only ${#presets[@]} presets installed in $data/scenes" >&2
   exit 1
 fi
-# A scene of our own that places the installed example models (copied
-# beside it: a scene may name only files in its folder or below).
+# A scene of our own that places the installed example models, copied
+# beside it: a scene may name only files in its own folder or below it.
 cp -r "$data/models" models
 cat > models.toml <<TOML
 [[objects]]
