@@ -1,0 +1,393 @@
+// The scene parameter table (swell/parameters.h): every parameter, where its
+// value lives in Scene (a small generic lambda that Field<> turns into the
+// get/set pair), its unit, range, default and what a change to it costs.
+// The checks and formatting built on it are parameters.cpp.
+#include "swell/parameters.h"
+
+#include "swell/shader_constants.h"
+
+#include <fmt/format.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace swell {
+namespace {
+
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// World coordinates beyond this lose too much precision in the GPU's floats
+// (1 mm steps at 1e4 m, 10 cm at 1e6 m), so positions stop here, m.
+constexpr double kWorldLimit_m = 1.0e6;
+// Angles may wind round several times (a camera path that turns twice), deg.
+constexpr double kAngleLimit_deg = 3600.0;
+// Direction components are normalised on use; this only keeps them finite.
+constexpr double kDirectionLimit = 1.0e3;
+
+// The TOML names of the enums, indexed by the enum's value.
+constexpr std::array<std::string_view, 2> kReflectionModes{"fixed", "raymarch"};
+static_assert(static_cast<int>(ReflectionMode::FixedDistance) == 0 && static_cast<int>(ReflectionMode::RayMarch) == 1);
+
+constexpr std::array<std::string_view, 2> kGridLayouts{"geometric", "paper"};
+constexpr std::array<std::string_view, 2> kWaveModels{"gerstner", "spectral"};
+static_assert(static_cast<int>(GridLayout::Geometric) == 0 && static_cast<int>(GridLayout::Paper) == 1);
+
+constexpr std::array<std::string_view, 7> kDebugViews{"shaded", "normals", "reflection", "refraction", "lod", "wireframe", "foam"};
+static_assert(static_cast<int>(DebugView::Shaded) == SWELL_VIEW_SHADED && static_cast<int>(DebugView::Normals) == SWELL_VIEW_NORMALS
+              && static_cast<int>(DebugView::Reflection) == SWELL_VIEW_REFLECTION
+              && static_cast<int>(DebugView::Refraction) == SWELL_VIEW_REFRACTION
+              && static_cast<int>(DebugView::Lod) == SWELL_VIEW_LOD && static_cast<int>(DebugView::Wireframe) == SWELL_VIEW_WIREFRAME);
+
+constexpr std::array<std::string_view, 2> kSpreadings{"mitsuyasu", "donelan-banner"};
+static_assert(static_cast<int>(SpreadingModel::Mitsuyasu) == 0 && static_cast<int>(SpreadingModel::DonelanBanner) == 1);
+
+// The wind settings, for reading (defaults when the wind is not set) and for
+// writing (setting a wind parameter turns the wind on).
+const WindSettings& wind(const Scene& s)
+{
+    static const WindSettings none;
+    return s.waves.wind ? *s.waves.wind : none;
+}
+WindSettings& wind(Scene& s)
+{
+    if (!s.waves.wind)
+        s.waves.wind.emplace();
+    return *s.waves.wind;
+}
+
+// The swell, likewise: setting a swell parameter turns the wind and the swell on.
+const SwellSettings& swellOf(const Scene& s)
+{
+    static const SwellSettings none;
+    return s.waves.wind && s.waves.wind->swell ? *s.waves.wind->swell : none;
+}
+SwellSettings& swellOf(Scene& s)
+{
+    WindSettings& w = wind(s);
+    if (!w.swell)
+        w.swell.emplace();
+    return *w.swell;
+}
+
+template <class T>
+ParameterValue toValue(const T& x)
+{
+    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, double>)
+        return x;
+    else if constexpr (std::is_enum_v<T> || std::is_integral_v<T>)
+        return static_cast<std::int64_t>(x);
+    else
+        return x; // glm::dvec2, glm::dvec3
+}
+
+template <class T>
+T fromValue(const ParameterValue& v)
+{
+    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, double>)
+        return std::get<T>(v);
+    else if constexpr (std::is_enum_v<T> || std::is_integral_v<T>)
+        return static_cast<T>(std::get<std::int64_t>(v));
+    else
+        return std::get<T>(v);
+}
+
+// Ref is a capture-less generic lambda (auto& scene, size_t item) -> auto&
+// naming the field, so one lambda serves both the const get and the set.
+template <class Ref>
+struct Field {
+    static ParameterValue get(const Scene& s, std::size_t i) { return toValue(Ref{}(s, i)); }
+    static void set(Scene& s, std::size_t i, const ParameterValue& v)
+    {
+        auto& ref = Ref{}(s, i);
+        ref = fromValue<std::remove_cvref_t<decltype(ref)>>(v);
+    }
+};
+
+template <class Ref>
+Parameter at(Ref, Parameter p)
+{
+    p.get = &Field<Ref>::get;
+    p.set = &Field<Ref>::set;
+    return p;
+}
+
+bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
+bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
+bool swellIsSet(const Scene& s) { return s.waves.wind && s.waves.wind->swell; }
+
+using K = ParameterKind;
+using L = ParameterList;
+using E = ParameterEffect;
+
+std::vector<Parameter> buildTable()
+{
+    // Keep in the order of scene.h; scene files and docs list them so.
+    std::vector<Parameter> t{
+        // [waves]
+        at([](auto& s, std::size_t) -> auto& { return s.waves.model; },
+           {.key = "waves.model", .kind = K::Choice, .effect = E::Waves, .min = 0.0, .max = kWaveModels.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kWaveModels.size() - 1.0,
+            .description = "gerstner: a sum of waves, listed or from the wind; spectral: the wind's spectrum on FFT cascades",
+            .choices = kWaveModels}),
+        at([](auto& s, std::size_t) -> auto& { return s.waves.choppiness; },
+           {.key = "waves.choppiness", .effect = E::Waves, .min = 0.0, .max = 2.0, .sliderMin = 0.0, .sliderMax = 2.0,
+            .description = "spectral model: how far crests lean and troughs widen (0: linear sea)", .present = isSpectral}),
+        at([](auto& s, std::size_t) -> auto& { return s.waves.foamLifetime_s; },
+           {.key = "waves.foam_lifetime_s", .effect = E::Waves, .unit = "s", .min = 0.0, .max = 60.0, .sliderMin = 0.0,
+            .sliderMax = 20.0, .description = "spectral model: e-folding time of whitecap foam (salt water: 3.85); 0: no foam",
+            .present = isSpectral}),
+        at([](auto& s, std::size_t) -> auto& { return s.waves.listed.depth_m; },
+           {.key = "waves.depth_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
+            .sliderMin = 1.0, .sliderMax = 500.0, .logarithmic = true,
+            .description = "water depth for listed and wind waves; inf is deep water"}),
+        // [waves.wind]
+        at([](auto& s, std::size_t) -> auto& { return wind(s).windSpeed_mps; },
+           {.key = "waves.wind.speed_mps", .effect = E::Waves, .unit = "m/s", .min = 0.5, .max = 40.0,
+            .sliderMin = 0.5, .sliderMax = 40.0, .description = "wind speed 10 m above the sea", .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).windDirection_deg; },
+           {.key = "waves.wind.direction_deg", .effect = E::Waves, .unit = "deg", .min = -360.0, .max = 360.0,
+            .sliderMin = 0.0, .sliderMax = 360.0, .description = "direction the wind blows towards, from +x towards +z",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).spread_deg; },
+           {.key = "waves.wind.spread_deg", .effect = E::Waves, .unit = "deg", .min = 0.0, .max = 180.0,
+            .sliderMin = 0.0, .sliderMax = 180.0, .description = "half-width of the spread of wave directions around the wind",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).fetch_km; },
+           {.key = "waves.wind.fetch_km", .effect = E::Waves, .unit = "km", .min = 1.0, .max = 10000.0,
+            .sliderMin = 1.0, .sliderMax = 10000.0, .logarithmic = true,
+            .description = "distance over which the wind has blown; short fetch, young short waves", .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).waveCount; },
+           {.key = "waves.wind.count", .kind = K::Integer, .effect = E::Waves, .min = 1.0, .max = SWELL_MAX_WAVES,
+            .sliderMin = 1.0, .sliderMax = SWELL_MAX_WAVES, .description = "how many waves to generate",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).minWavelength_m; },
+           {.key = "waves.wind.min_wavelength_m", .effect = E::Waves, .unit = "m", .min = 0.01, .max = 1000.0,
+            .sliderMin = 0.1, .sliderMax = 50.0, .logarithmic = true, .description = "shortest wave generated",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).seed; },
+           {.key = "waves.wind.seed", .kind = K::Integer, .effect = E::Waves, .min = 0.0, .max = 4294967295.0,
+            .sliderMin = 0.0, .sliderMax = 1000.0, .description = "random seed; the same seed gives the same waves",
+            .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).steepness; },
+           {.key = "waves.wind.steepness", .effect = E::Waves, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "overall choppiness, scaled down to stay fold-free", .present = windIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return wind(s).spreading; },
+           {.key = "waves.wind.spreading", .kind = K::Choice, .effect = E::Waves, .min = 0.0,
+            .max = kSpreadings.size() - 1.0, .sliderMin = 0.0, .sliderMax = kSpreadings.size() - 1.0,
+            .description = "how wave energy spreads over directions: cos^2s (Mitsuyasu/Hasselmann) or sech^2 (Donelan-Banner)",
+            .choices = kSpreadings, .present = windIsSet}),
+        // [waves.swell]
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).height_m; },
+           {.key = "waves.swell.height_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = 15.0, .sliderMin = 0.0,
+            .sliderMax = 8.0, .description = "significant wave height of the swell alone", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).period_s; },
+           {.key = "waves.swell.period_s", .effect = E::Waves, .unit = "s", .min = 3.0, .max = 25.0, .sliderMin = 3.0,
+            .sliderMax = 25.0, .description = "peak period; long swell from afar is 10-20 s", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).direction_deg; },
+           {.key = "waves.swell.direction_deg", .effect = E::Waves, .unit = "deg", .min = -360.0, .max = 360.0,
+            .sliderMin = 0.0, .sliderMax = 360.0, .description = "direction the swell travels towards, from +x towards +z",
+            .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).gamma; },
+           {.key = "waves.swell.gamma", .effect = E::Waves, .min = 1.0, .max = 10.0, .sliderMin = 1.0, .sliderMax = 10.0,
+            .description = "JONSWAP peak enhancement: higher is a narrower band of periods", .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).sMax; },
+           {.key = "waves.swell.spreading_s", .effect = E::Waves, .min = 1.0, .max = 200.0, .sliderMin = 1.0,
+            .sliderMax = 200.0, .logarithmic = true,
+            .description = "cos^2s spreading exponent at the peak: 25 young swell, 75 from afar (Goda 1985)",
+            .present = swellIsSet}),
+        at([](auto& s, std::size_t) -> auto& { return swellOf(s).waveCount; },
+           {.key = "waves.swell.count", .kind = K::Integer, .effect = E::Waves, .min = 1.0, .max = SWELL_MAX_WAVES - 1.0,
+            .sliderMin = 1.0, .sliderMax = SWELL_MAX_WAVES - 1.0,
+            .description = "how many swell waves, on top of waves.wind.count (together at most 64)", .present = swellIsSet}),
+        // [[waves.list]]
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].direction; },
+           {.key = "waves.list.direction", .kind = K::Direction2, .list = L::Waves, .effect = E::Waves,
+            .min = -kDirectionLimit, .max = kDirectionLimit, .sliderMin = -1.0, .sliderMax = 1.0,
+            .description = "direction of travel [x, z]"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].wavelength_m; },
+           {.key = "waves.list.wavelength_m", .list = L::Waves, .effect = E::Waves, .unit = "m", .min = 0.0,
+            .max = 10000.0, .minExclusive = true, .sliderMin = 0.1, .sliderMax = 500.0, .logarithmic = true,
+            .description = "crest to crest"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].amplitude_m; },
+           {.key = "waves.list.amplitude_m", .list = L::Waves, .effect = E::Waves, .unit = "m", .min = 0.0,
+            .max = 100.0, .sliderMin = 0.0, .sliderMax = 5.0, .description = "crest height above rest"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].steepness; },
+           {.key = "waves.list.steepness", .list = L::Waves, .effect = E::Waves, .min = 0.0, .max = 1.0,
+            .sliderMin = 0.0, .sliderMax = 1.0, .description = "Gerstner Q: 0 is a sine wave, 1 the sharpest crest"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].phase_rad; },
+           {.key = "waves.list.phase_rad", .list = L::Waves, .effect = E::Waves, .unit = "rad", .min = -1000.0,
+            .max = 1000.0, .sliderMin = -kPi, .sliderMax = kPi, .description = "phase offset"}),
+        // [grid]
+        at([](auto& s, std::size_t) -> auto& { return s.grid.layout; },
+           {.key = "grid.layout", .kind = K::Choice, .effect = E::Grid | E::Programs, .min = 0.0, .max = kGridLayouts.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kGridLayouts.size() - 1.0,
+            .description = "geometric: spacing in proportion to distance, scaled with camera height; paper: the "
+                           "paper's quadratic division points",
+            .choices = kGridLayouts}),
+        at([](auto& s, std::size_t) -> auto& { return s.grid.resolution; },
+           {.key = "grid.resolution", .kind = K::Integer, .effect = E::Grid, .min = 16.0, .max = 2048.0,
+            .sliderMin = 16.0, .sliderMax = 2048.0, .logarithmic = true, .description = "grid vertices along each side"}),
+        at([](auto& s, std::size_t) -> auto& { return s.grid.radius_m; },
+           {.key = "grid.radius_m", .effect = E::Grid, .unit = "m", .min = 10.0, .max = 100000.0, .sliderMin = 100.0,
+            .sliderMax = 20000.0, .logarithmic = true, .description = "half-size of the detailed grid around the camera"}),
+        at([](auto& s, std::size_t) -> auto& { return s.grid.fadeStart_m; },
+           {.key = "grid.fade_start_m", .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
+            .sliderMax = 20000.0, .description = "distance from the camera where wave height starts to fade"}),
+        at([](auto& s, std::size_t) -> auto& { return s.grid.fadeEnd_m; },
+           {.key = "grid.fade_end_m", .unit = "m", .min = 0.0, .max = 100000.0, .sliderMin = 0.0,
+            .sliderMax = 20000.0,
+            .description = "distance where the water is flat; > fade_start_m, <= radius_m"}),
+        // [sun]
+        at([](auto& s, std::size_t) -> auto& { return s.sun.direction; },
+           {.key = "sun.direction", .kind = K::Direction3, .min = -kDirectionLimit, .max = kDirectionLimit,
+            .sliderMin = -1.0, .sliderMax = 1.0, .description = "towards the sun [x, y, z], world space"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sun.color; },
+           {.key = "sun.color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "sunlight colour, linear RGB"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sun.intensity; },
+           {.key = "sun.intensity", .min = 0.0, .max = 20.0, .sliderMin = 0.0, .sliderMax = 20.0,
+            .description = "sunlight multiplier"}),
+        // [sky]
+        at([](auto& s, std::size_t) -> auto& { return s.sky.zenithColor; },
+           {.key = "sky.zenith_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "procedural sky straight up, linear RGB"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.horizonColor; },
+           {.key = "sky.horizon_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "procedural sky at the horizon, linear RGB"}),
+        // [fog]
+        at([](auto& s, std::size_t) -> auto& { return s.fog.start_m; },
+           {.key = "fog.start_m", .unit = "m", .min = 0.0, .max = kWorldLimit_m, .sliderMin = 0.0, .sliderMax = 20000.0,
+            .description = "distance from the camera where fog begins"}),
+        at([](auto& s, std::size_t) -> auto& { return s.fog.end_m; },
+           {.key = "fog.end_m", .unit = "m", .min = 0.0, .max = kWorldLimit_m, .sliderMin = 0.0, .sliderMax = 20000.0,
+            .description = "distance where fog is complete; > start_m"}),
+        at([](auto& s, std::size_t) -> auto& { return s.fog.color; },
+           {.key = "fog.color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "fog colour, linear RGB"}),
+        // [water]
+        at([](auto& s, std::size_t) -> auto& { return s.water.deepColor; },
+           {.key = "water.deep_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "light scattered back from deep water, linear RGB"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.absorption_per_m; },
+           {.key = "water.absorption_per_m", .kind = K::Vector3, .unit = "1/m", .min = 0.0, .max = 100.0,
+            .sliderMin = 0.0, .sliderMax = 2.0, .description = "Beer-Lambert absorption per channel [r, g, b]"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.fresnelF0; },
+           {.key = "water.fresnel_f0", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.2,
+            .description = "reflectance looking straight down (water: 0.02)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.shininess; },
+           {.key = "water.shininess", .min = 1.0, .max = 10000.0, .sliderMin = 1.0, .sliderMax = 10000.0,
+            .logarithmic = true, .description = "Phong specular exponent of the sun glint"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.specularStrength; },
+           {.key = "water.specular_strength", .min = 0.0, .max = 10.0, .sliderMin = 0.0, .sliderMax = 10.0,
+            .description = "sun glint multiplier"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.refractionDistortion; },
+           {.key = "water.refraction_distortion", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.3,
+            .description = "how far the normal bends the refraction lookup"}),
+        // [reflection]
+        at([](auto& s, std::size_t) -> auto& { return s.reflection.mode; },
+           {.key = "reflection.mode", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kReflectionModes.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kReflectionModes.size() - 1.0,
+            .description = "raymarch: march the reflected ray; fixed: step a fixed distance along it",
+            .choices = kReflectionModes}),
+        at([](auto& s, std::size_t) -> auto& { return s.reflection.fixedDistance_m; },
+           {.key = "reflection.fixed_distance_m", .unit = "m", .min = 0.0, .max = 1000.0, .minExclusive = true,
+            .sliderMin = 0.5, .sliderMax = 50.0, .logarithmic = true,
+            .description = "step along the reflected ray in fixed mode"}),
+        at([](auto& s, std::size_t) -> auto& { return s.reflection.resolutionScale; },
+           {.key = "reflection.resolution_scale", .min = 0.1, .max = 1.0, .sliderMin = 0.1,
+            .sliderMax = 1.0, .description = "reflection and refraction target size relative to the output"}),
+        at([](auto& s, std::size_t) -> auto& { return s.reflection.clipOffset_m; },
+           {.key = "reflection.clip_offset_m", .unit = "m", .min = 0.0, .max = 10.0, .sliderMin = 0.0, .sliderMax = 2.0,
+            .description = "the mirrored world is clipped this far below the water plane"}),
+        // [[objects]]
+        at([](auto& s, std::size_t i) -> auto& { return s.objects[i].position_m; },
+           {.key = "objects.position_m", .kind = K::Vector3, .list = L::Objects, .unit = "m", .min = -kWorldLimit_m,
+            .max = kWorldLimit_m, .sliderMin = -1000.0, .sliderMax = 1000.0, .description = "world position [x, y, z]"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.objects[i].yaw_deg; },
+           {.key = "objects.yaw_deg", .list = L::Objects, .unit = "deg", .min = -kAngleLimit_deg, .max = kAngleLimit_deg,
+            .sliderMin = -180.0, .sliderMax = 180.0, .description = "rotation about +y"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.objects[i].scale; },
+           {.key = "objects.scale", .list = L::Objects, .min = 0.0, .max = 10000.0, .minExclusive = true,
+            .sliderMin = 0.01, .sliderMax = 100.0, .logarithmic = true, .description = "uniform scale"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.objects[i].floats; },
+           {.key = "objects.floats", .kind = K::Flag, .list = L::Objects, .min = 0.0, .max = 1.0, .sliderMin = 0.0,
+            .sliderMax = 1.0, .description = "ride the waves: height and tilt follow the surface"}),
+        // [camera]
+        at([](auto& s, std::size_t) -> auto& { return s.camera.position_m; },
+           {.key = "camera.position_m", .kind = K::Vector3, .unit = "m", .min = -kWorldLimit_m, .max = kWorldLimit_m,
+            .sliderMin = -1000.0, .sliderMax = 1000.0, .description = "world position [x, y, z]; y is up"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.yaw_deg; },
+           {.key = "camera.yaw_deg", .unit = "deg", .min = -kAngleLimit_deg, .max = kAngleLimit_deg, .sliderMin = -180.0,
+            .sliderMax = 180.0, .description = "heading, from -z towards +x"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.pitch_deg; },
+           {.key = "camera.pitch_deg", .unit = "deg", .min = -89.0, .max = 89.0, .sliderMin = -89.0, .sliderMax = 89.0,
+            .description = "up (+) or down (-) from the horizon"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.fovY_deg; },
+           {.key = "camera.fov_y_deg", .unit = "deg", .min = 10.0, .max = 150.0, .sliderMin = 10.0, .sliderMax = 150.0,
+            .description = "vertical field of view"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.near_m; },
+           {.key = "camera.near_m", .unit = "m", .min = 0.0, .max = 1000.0, .minExclusive = true, .sliderMin = 0.01,
+            .sliderMax = 10.0, .logarithmic = true, .description = "near clip plane"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.far_m; },
+           {.key = "camera.far_m", .effect = E::Grid, .unit = "m", .min = 0.0, .max = 1.0e7, .minExclusive = true, .sliderMin = 100.0,
+            .sliderMax = 100000.0, .logarithmic = true, .description = "far clip plane; > near_m"}),
+        // [[camera.path]]
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].time_s; },
+           {.key = "camera.path.time_s", .list = L::CameraPath, .unit = "s", .min = 0.0, .max = 1.0e6, .sliderMin = 0.0,
+            .sliderMax = 600.0, .description = "when the camera is here; keys strictly increase"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].position_m; },
+           {.key = "camera.path.position_m", .kind = K::Vector3, .list = L::CameraPath, .unit = "m",
+            .min = -kWorldLimit_m, .max = kWorldLimit_m, .sliderMin = -1000.0, .sliderMax = 1000.0,
+            .description = "world position [x, y, z]"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].yaw_deg; },
+           {.key = "camera.path.yaw_deg", .list = L::CameraPath, .unit = "deg", .min = -kAngleLimit_deg,
+            .max = kAngleLimit_deg, .sliderMin = -180.0, .sliderMax = 180.0, .description = "heading, from -z towards +x"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].pitch_deg; },
+           {.key = "camera.path.pitch_deg", .list = L::CameraPath, .unit = "deg", .min = -89.0, .max = 89.0,
+            .sliderMin = -89.0, .sliderMax = 89.0, .description = "up (+) or down (-) from the horizon"}),
+        // top level
+        at([](auto& s, std::size_t) -> auto& { return s.debugView; },
+           {.key = "debug_view", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kDebugViews.size() - 1.0, .sliderMin = 0.0,
+            .sliderMax = kDebugViews.size() - 1.0, .description = "what the water shows: the shaded ocean or one ingredient",
+            .choices = kDebugViews}),
+        at([](auto& s, std::size_t) -> auto& { return s.showTerrain; },
+           {.key = "terrain", .kind = K::Flag, .effect = E::World, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "draw the built-in island"}),
+    };
+
+    // Defaults come from the member initialisers: a default Scene with one
+    // item in every list and the wind switched on.
+    Scene prototype;
+    prototype.waves.wind.emplace();
+    prototype.waves.listed.waves.emplace_back();
+    prototype.objects.emplace_back();
+    prototype.camera.path.emplace_back();
+    for (Parameter& p : t)
+        p.defaultValue = p.get(prototype, 0);
+    return t;
+}
+
+} // namespace
+
+std::span<const Parameter> parameters()
+{
+    static const std::vector<Parameter> table = buildTable();
+    return table;
+}
+
+const Parameter* findParameter(std::string_view key)
+{
+    for (const Parameter& p : parameters())
+        if (p.key == key)
+            return &p;
+    return nullptr;
+}
+
+} // namespace swell
