@@ -20,7 +20,6 @@
 namespace swell {
 namespace {
 
-
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // World coordinates beyond this lose too much precision in the GPU's floats
