@@ -64,6 +64,13 @@ SWELL_API Scene parseScene(std::string_view toml, const std::filesystem::path& v
 // InputError whose place is `sceneFile` with no line, naming the key.
 SWELL_API void validateScene(const Scene& scene, const std::filesystem::path& sceneFile);
 
+// validateScene() for an edit of `before` (already valid) into `after`, as a
+// viewer's slider makes: values and rules always, but the files the scene
+// names only when sceneChanges() says the world changed, and the wave set only
+// when the waves did, so a slider tick neither touches the disk nor
+// generates waves.
+SWELL_API void validateSceneChange(const Scene& before, const Scene& after, const std::filesystem::path& sceneFile);
+
 // The scene as TOML that parseScene reads back to an equal scene. Every
 // parameter is written, with its unit and range in a comment. When the wind
 // is set the listed waves are not written (the wind replaces them).

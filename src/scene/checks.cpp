@@ -107,7 +107,7 @@ void checkWaves(const Scene& scene, const Places& places)
 
 } // namespace
 
-void checkScene(const Scene& scene, const Places& places, const fs::path& base)
+void checkScene(const Scene& scene, const Places& places, const fs::path& base, ParameterEffect scope)
 {
     // Every parameter in range (the reader checked values as it read them;
     // this is for scenes built in code).
@@ -155,6 +155,11 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base)
                                               name, scene.camera.path[i].time_s, i - 1, scene.camera.path[i - 1].time_s));
         }
 
+    if (hasEffect(scope, ParameterEffect::Waves))
+        checkWaves(scene, places);
+    if (!hasEffect(scope, ParameterEffect::World))
+        return;
+
     // Referenced files.
     const bool namesFiles = !scene.sky.cubemapFaces.empty() ||
                             std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
@@ -177,7 +182,6 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base)
         checkObjectPath(base, resolved, scene.objects[i].path, name, places.at(name));
     }
 
-    checkWaves(scene, places);
 }
 
 fs::path baseFolder(const fs::path& sceneFile)

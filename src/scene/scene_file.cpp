@@ -20,6 +20,7 @@
 #include "scene/reader.h"
 #include "scene/text_scan.h"
 #include "swell/error.h"
+#include "swell/scene_changes.h"
 
 #include <fmt/format.h>
 
@@ -86,6 +87,11 @@ Scene loadScene(const fs::path& path)
 void validateScene(const Scene& scene, const fs::path& sceneFile)
 {
     checkScene(scene, Places(sceneFile.string()), baseFolder(sceneFile));
+}
+
+void validateSceneChange(const Scene& before, const Scene& after, const fs::path& sceneFile)
+{
+    checkScene(after, Places(sceneFile.string()), baseFolder(sceneFile), sceneChanges(before, after));
 }
 
 } // namespace swell

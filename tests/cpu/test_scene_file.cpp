@@ -319,6 +319,30 @@ TEST(SceneFile, RelativePathsStartAtTheSceneFolder)
     EXPECT_THROW(parseScene(scene, "/nonexistent-folder/scene.toml"), InputError);
 }
 
+TEST(SceneFile, AnEditIsCheckedOnlyWhereItCanMatter)
+{
+    // A scene whose model file then disappears: an edit of the fog, as a
+    // viewer's slider makes, must not look at the disk again; an edit of the
+    // objects must.
+    fs::create_directories(workFolder() / "edit" / "models");
+    writeFile(workFolder() / "edit" / "models" / "box.glb", "not read before it is loaded");
+    writeFile(workFolder() / "edit" / "scene.toml", "[[objects]]\npath = \"models/box.glb\"\n");
+    const fs::path file = workFolder() / "edit" / "scene.toml";
+    const Scene before = loadScene(file);
+    fs::remove(workFolder() / "edit" / "models" / "box.glb");
+    Scene fogged = before;
+    fogged.fog.start_m += 100.0;
+    EXPECT_NO_THROW(validateSceneChange(before, fogged, file)) << "a fog edit read the scene's files again";
+    EXPECT_THROW(validateScene(fogged, file), InputError) << "the whole check still finds the missing file";
+    Scene moved = before;
+    moved.objects[0].path = "models/other.glb";
+    EXPECT_THROW(validateSceneChange(before, moved, file), InputError);
+    // Values are always checked.
+    Scene broken = before;
+    broken.fog.end_m = broken.fog.start_m - 1.0;
+    EXPECT_THROW(validateSceneChange(before, broken, file), InputError);
+}
+
 TEST(SceneFile, InlineTablesAndArraysWork)
 {
     Scene s = parseScene("waves = { depth_m = 50.0, list = [ { wavelength_m = 8, direction = [0, 1] } ] }\n"

@@ -42,7 +42,8 @@ void Session::restoreRenderer()
 bool Session::apply(const Scene& edited)
 {
     try {
-        validateScene(edited, validationPath(sceneFile_));
+        // Only what the edit can affect: a slider tick reads no files.
+        validateSceneChange(scene_, edited, validationPath(sceneFile_));
         renderer_->setScene(edited);
     } catch (const InputError& e) {
         // The place is the scene file with no line; the message names the key.
