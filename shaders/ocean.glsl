@@ -6,10 +6,12 @@
 #define SWELL_OCEAN_GLSL
 #include "swell/shader_constants.h"
 
-// Mirrors swell::SurfacePoint (swell/wave_model.h).
+// Mirrors swell::SurfacePoint (swell/wave_model.h), plus the whitecap
+// foam, which only the GPU tracks.
 struct SurfacePoint {
     vec3 displacement; // from the rest point, m
     vec3 normal;       // unit, pointing up
+    float foam;        // whitecap cover, 0..1 (0 for models without foam)
 };
 
 #ifndef SWELL_OCEAN_FILE

@@ -3,6 +3,10 @@
 #include "fog.glsl"
 #include "sky.glsl"
 
+// Depth-tested before shading: drawn last, the sky is shaded only where
+// nothing else was drawn (software rasterisers otherwise test after shading).
+layout(early_fragment_tests) in;
+
 in vec2 vNdc;
 out vec4 fragColor;
 

@@ -21,7 +21,8 @@ void main()
     // the water instead of the grid spacing (the same surface function).
     vec2 footprint = fwidth(vRestPoint);
     float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
-    vec3 n = oceanSurface(vRestPoint - gridCenter, pixelSize_m, vHeightScale).normal;
+    SurfacePoint surface = oceanSurface(vRestPoint - gridCenter, pixelSize_m, vHeightScale);
+    vec3 n = surface.normal;
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);
     vec3 v = toEye / distance_m;
@@ -41,12 +42,22 @@ void main()
     vec3 color = mix(refracted, reflected, fresnel);
     color += sunColor * sunIntensity * specularStrength * phongSpecular(n, v, shininess, fresnelF0) * step(0.0, sunDirection.y);
 
+    // Whitecaps: a layer of bubbles that scatters nearly all light back,
+    // lit by the sun and the sky (Lambertian, as foam is close to; Koepke
+    // 1984 measured its effective reflectance at about 0.55 in the visible).
+    float foamCover = smoothstep(0.35, 0.65, surface.foam);
+    vec3 foamLight = sunColor * sunIntensity * max(sunDirection.y, 0.0) * (0.6 + 0.4 * phongDiffuse(n)) + skyHorizon * 0.5;
+    color = mix(color, 0.55 * foamLight, foamCover);
+
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS
     color = n * 0.5 + 0.5;
 #elif SWELL_DEBUG_VIEW == SWELL_VIEW_REFLECTION
     color = reflected;
 #elif SWELL_DEBUG_VIEW == SWELL_VIEW_REFRACTION
     color = refracted;
+#elif SWELL_DEBUG_VIEW == SWELL_VIEW_FOAM
+    // White where the shading counts a whitecap (cover above one half).
+    color = vec3(step(0.5, foamCover));
 #elif SWELL_DEBUG_VIEW == SWELL_VIEW_LOD
     // Cell size on a log scale: 0.25 m red ... 256 m blue, with stripes per level.
     float level = log2(max(vCellSize, 0.01) / 0.25) / 10.0;

@@ -2,8 +2,8 @@
 // framebuffer of the current OpenGL 4.5 context. Passes:
 //   1  reflection: sky and world mirrored about the water plane (colour + depth)
 //   1b refraction: the world below the water plane (colour + depth)
-//   2  main: sky and world, the closed volumes of open hulls into depth
-//      only, then the water, depth-tested against both
+//   2  main: the world, the closed volumes of open hulls into depth only,
+//      the water depth-tested against both, then the sky where nothing is
 #pragma once
 
 #include "swell/camera.h"
@@ -33,7 +33,8 @@ struct FrameCounters {
 };
 
 // Told when each pass of a frame begins and ends (for timing and counters).
-// Passes: "reflection", "refraction", "main"; within "main", "water" for the water draw.
+// Passes: "ocean" (the wave model's simulation for the frame), "reflection",
+// "refraction", "main"; within "main", "water" for the water draw.
 class PassObserver {
 public:
     virtual ~PassObserver() = default;

@@ -26,7 +26,7 @@ enum class ReflectionMode {
 };
 
 // What the water pass shows: the shaded ocean or one of its ingredients.
-enum class DebugView { Shaded, Normals, Reflection, Refraction, Lod, Wireframe };
+enum class DebugView { Shaded, Normals, Reflection, Refraction, Lod, Wireframe, Foam };
 
 // Which wave model draws the sea (swell/wave_model.h).
 enum class WaveModelKind {
@@ -38,6 +38,7 @@ enum class WaveModelKind {
 struct WaveSource {
     WaveModelKind model = WaveModelKind::Gerstner;
     double choppiness = 1.0; // spectral model: lambda, 0..2 (SpectralSettings::choppiness)
+    double foamLifetime_s = 3.85; // spectral model: whitecap foam's e-folding time, s, 0..60; 0: no foam
     std::optional<WindSettings> wind; // when set, waves are generated and `listed` is ignored
     WaveSet listed;                   // hand-listed waves (and the water depth for both)
 };

@@ -37,6 +37,7 @@
 // The wave model's textures (each model documents its own).
 #define SWELL_UNIT_OCEAN0 6
 #define SWELL_UNIT_OCEAN1 7
+#define SWELL_UNIT_OCEAN2 8
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).
@@ -51,6 +52,7 @@
 #define SWELL_VIEW_REFRACTION 3
 #define SWELL_VIEW_LOD 4
 #define SWELL_VIEW_WIREFRAME 5
+#define SWELL_VIEW_FOAM 6
 
 // Reflection lookups (prepended as SWELL_REFLECTION_MODE).
 #define SWELL_REFLECTION_FIXED 0

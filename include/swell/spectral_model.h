@@ -9,6 +9,7 @@
 #include "swell/spectrum.h"
 #include "swell/wave_model.h"
 
+#include <array>
 #include <cstdint>
 
 namespace swell {
@@ -24,6 +25,12 @@ struct SpectralSettings {
     // is the linear (Airy) sea, 1 Tessendorf's choppy waves.
     double choppiness = 1.0;
     std::uint32_t seed = 1;  // the random field's seed
+    // Whitecaps: foam is made where the surface folds most (the Jacobian of
+    // the horizontal displacement, src/ocean/spectral/whitecaps.h), as much
+    // as the wind's whitecap climatology says, and fades as
+    // exp(-t/foamLifetime_s) (3.85 s: salt-water foam, Monahan &
+    // O'Muircheartaigh 1986). 0: no foam.
+    double foamLifetime_s = 3.85; // s, 0..60
 };
 
 class SpectralModel final : public WaveModel {
@@ -42,8 +49,12 @@ public:
     const spectral::SpectralField& field() const { return *field_; }
     const spectral::CpuSurface& cpu() const { return *cpu_; }
 
+    // The Jacobian below which each cascade makes foam (whitecaps.h).
+    const std::array<float, SWELL_FFT_CASCADES>& foldThresholds() const { return foldThresholds_; }
+
 private:
     SpectralSettings settings_;
+    std::array<float, SWELL_FFT_CASCADES> foldThresholds_{};
     std::shared_ptr<const spectral::SpectralField> field_;
     std::unique_ptr<spectral::CpuSurface> cpu_;
 };

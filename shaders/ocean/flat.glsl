@@ -5,6 +5,6 @@
 
 SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
 {
-    return SurfacePoint(vec3(0.0), vec3(0.0, 1.0, 0.0));
+    return SurfacePoint(vec3(0.0), vec3(0.0, 1.0, 0.0), 0.0);
 }
 #endif

@@ -46,6 +46,6 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
         tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
         binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
     }
-    return SurfacePoint(displacement, normalize(cross(binormal, tangent)));
+    return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0);
 }
 #endif

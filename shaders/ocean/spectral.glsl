@@ -17,10 +17,40 @@ struct SpectralCascade {
 
 layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
     SpectralCascade cascades[SWELL_FFT_CASCADES];
+    vec2 windDirection;     // unit, x,z: foam is drawn out into streaks along it
+    float foamStreak;       // how far foam streaks are drawn out along the wind, 1 = not at all
 };
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
 layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;  // dDy/dx, dDy/dz, dDx/dx, dDz/dz
+layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1
+
+// Value noise on a lattice of 1 m cells: the bubbly texture inside foam.
+float foamHash(vec2 cell) { return fract(sin(dot(cell, vec2(127.1, 311.7))) * 43758.5453); }
+float foamNoise(vec2 p)
+{
+    vec2 cell = floor(p), f = fract(p);
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(foamHash(cell), foamHash(cell + vec2(1.0, 0.0)), u.x),
+               mix(foamHash(cell + vec2(0.0, 1.0)), foamHash(cell + vec2(1.0, 1.0)), u.x), u.y);
+}
+
+// Texture of a foam patch at a point of the world plane (relative to the grid
+// centre; the phase of the noise does not matter), fading to its mean (1)
+// where the footprint is wider than its finest octave, so it never aliases.
+float foamDetail(vec2 p_m, float footprint_m)
+{
+    vec2 along = windDirection, across = vec2(-windDirection.y, windDirection.x);
+    // Streaks: the noise stretched along the wind.
+    vec2 q = vec2(dot(p_m, along) / foamStreak, dot(p_m, across));
+    float detail = 0.0, weight = 0.0, scale = 1.5;
+    for (int octave = 0; octave < 3; ++octave, scale *= 2.7) {
+        float resolved = 1.0 - smoothstep(0.25, 0.5, footprint_m * scale);
+        detail += resolved * (foamNoise(q * scale) - 0.5);
+        weight += 0.5;
+    }
+    return 1.0 + 1.2 * detail / weight;
+}
 
 // swell::spectral::cascadeWeight.
 float cascadeWeight(float shortestWavelength_m, float footprint_m)
@@ -47,6 +77,7 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
     vec4 displacement = vec4(0.0); // Dx, Dy, Dz, dDx/dz
     vec4 slopes = vec4(0.0);       // dDy/dx, dDy/dz, dDx/dx, dDz/dz
     float crossSlope = 0.0;        // dDx/dz from the filtered fields
+    float foam = 0.0;
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         SpectralCascade cascade = cascades[c];
         vec2 s = cascade.originTexels + restOffset_m * cascade.texelsPerMetre;
@@ -59,12 +90,14 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
         float lod = log2(max(footprint_m * cascade.texelsPerMetre, 1.0));
         slopes += textureLod(oceanDerivatives, uvw, lod);
         crossSlope += textureLod(oceanDisplacement, uvw, 0.0).w * weight;
+        foam = max(foam, textureLod(oceanFoam, uvw, lod).r);
     }
     displacement *= heightScale;
     slopes *= heightScale;
     crossSlope *= heightScale;
     vec3 alongX = vec3(1.0 + slopes.z, slopes.x, crossSlope);
     vec3 alongZ = vec3(crossSlope, slopes.y, 1.0 + slopes.w);
-    return SurfacePoint(displacement.xyz, normalize(cross(alongZ, alongX)));
+    foam *= heightScale * foamDetail(restOffset_m, footprint_m);
+    return SurfacePoint(displacement.xyz, normalize(cross(alongZ, alongX)), foam);
 }
 #endif

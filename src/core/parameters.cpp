@@ -69,7 +69,7 @@ constexpr std::array<std::string_view, 2> kGridLayouts{"geometric", "paper"};
 constexpr std::array<std::string_view, 2> kWaveModels{"gerstner", "spectral"};
 static_assert(static_cast<int>(GridLayout::Geometric) == 0 && static_cast<int>(GridLayout::Paper) == 1);
 
-constexpr std::array<std::string_view, 6> kDebugViews{"shaded", "normals", "reflection", "refraction", "lod", "wireframe"};
+constexpr std::array<std::string_view, 7> kDebugViews{"shaded", "normals", "reflection", "refraction", "lod", "wireframe", "foam"};
 static_assert(static_cast<int>(DebugView::Shaded) == SWELL_VIEW_SHADED && static_cast<int>(DebugView::Normals) == SWELL_VIEW_NORMALS
               && static_cast<int>(DebugView::Reflection) == SWELL_VIEW_REFLECTION
               && static_cast<int>(DebugView::Refraction) == SWELL_VIEW_REFRACTION
@@ -169,6 +169,10 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.waves.choppiness; },
            {.key = "waves.choppiness", .effect = E::Waves, .min = 0.0, .max = 2.0, .sliderMin = 0.0, .sliderMax = 2.0,
             .description = "spectral model: how far crests lean and troughs widen (0: linear sea)", .present = isSpectral}),
+        at([](auto& s, std::size_t) -> auto& { return s.waves.foamLifetime_s; },
+           {.key = "waves.foam_lifetime_s", .effect = E::Waves, .unit = "s", .min = 0.0, .max = 60.0, .sliderMin = 0.0,
+            .sliderMax = 20.0, .description = "spectral model: e-folding time of whitecap foam (salt water: 3.85); 0: no foam",
+            .present = isSpectral}),
         at([](auto& s, std::size_t) -> auto& { return s.waves.listed.depth_m; },
            {.key = "waves.depth_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
             .sliderMin = 1.0, .sliderMax = 500.0, .logarithmic = true,

@@ -19,6 +19,7 @@ int debugViewDefine(DebugView v)
     case DebugView::Refraction: return SWELL_VIEW_REFRACTION;
     case DebugView::Lod: return SWELL_VIEW_LOD;
     case DebugView::Wireframe: return SWELL_VIEW_WIREFRAME;
+    case DebugView::Foam: return SWELL_VIEW_FOAM;
     }
     return SWELL_VIEW_SHADED;
 }

@@ -75,8 +75,11 @@ struct Renderer::Impl {
     {
         origin = glm::dvec3(camera.position_m.x, 0.0, camera.position_m.z);
         const GridPlacement grid = placeGrid(gridShape, camera.position_m);
+        // The wave model's own work for the frame (the spectral model's FFTs).
+        notify(true, "ocean");
         modelGpu->prepareFrame(grid.center_m, time_s);
         modelGpu->bind();
+        notify(false, "ocean");
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         const WaveReach reach = model().reach();
@@ -222,19 +225,21 @@ struct Renderer::Impl {
         glDisable(GL_CLIP_DISTANCE0);
         notify(false, "refraction");
 
-        // Pass 2: world, sky, then the water depth-tested against the world, so
-        // objects crossing the surface meet it cleanly.
+        // Pass 2: world, then the water depth-tested against it, so objects
+        // crossing the surface meet it cleanly; the sky last, only where
+        // nothing else was drawn (its depth test passes at the far plane
+        // alone), so its shader runs on the visible sky's pixels only.
         f = base;
         f.passEncodesSrgb = 1;
         notify(true, "main");
         bindFrame(PassMain, f);
         beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin);
-        drawSky();
         drawHullVolumes();
         notify(true, "water");
         drawWater();
         notify(false, "water");
+        drawSky();
         notify(false, "main");
         glBindVertexArray(0);
         glUseProgram(0);

@@ -5,6 +5,7 @@
 #include "swell/spectral_model.h"
 
 #include "ocean/spectral/spectral_cpu.h"
+#include "ocean/spectral/whitecaps.h"
 #include "render/wave_model_gpu.h"
 #include "swell/constants.h"
 #include "swell/gl/shader.h"
@@ -12,6 +13,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -29,15 +31,33 @@ struct alignas(16) CascadeUniform {
 };
 struct alignas(16) SpectralUniforms {
     CascadeUniform cascades[kCascades];
+    glm::vec2 windDirection;
+    float foamStreak;
 };
+
+// Foam needs the history of the breaking: a frame that follows the last by
+// more than this, or goes back in time, first replays kWarmUpLifetimes foam
+// lifetimes at kWarmUpStep_s steps, so a still at any time shows the foam a
+// sequence arriving there would (the same for every still at that time).
+constexpr double kLongestStep_s = 1.0;
+constexpr double kWarmUpStep_s = 0.5;
+constexpr double kWarmUpLifetimes = 2.5;
+// Foam fades out over this much J above the threshold: a tenth of a
+// cascade's spread of J (whose lowest percent lies about 0.13 below its
+// median), so the edge of a breaking is soft but its area is the threshold's.
+constexpr float kFoldSoftness = 0.004f;
+
 
 class SpectralGpu final : public detail::WaveModelGpu {
 public:
-    SpectralGpu(std::shared_ptr<const SpectralField> field, const gl::ShaderSources& shaders) : field_(std::move(field))
+    SpectralGpu(std::shared_ptr<const SpectralField> field, const SpectralSettings& settings,
+                std::array<float, kCascades> foldThresholds, const gl::ShaderSources& shaders)
+        : field_(std::move(field)), settings_(settings), foldThresholds_(foldThresholds)
     {
         evolve_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_evolve.comp"}});
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
+        foamStep_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_foam.comp"}});
         timeLocation_ = glGetUniformLocation(evolve_.id(), "time_s");
         choppinessLocation_ = glGetUniformLocation(evolve_.id(), "choppiness");
         patchLocation_ = glGetUniformLocation(evolve_.id(), "patchSize_m");
@@ -53,11 +73,16 @@ public:
         displacement_ = array(GL_RGBA32F, 1);
         const int levels = SWELL_FFT_LOG2_SIZE + 1;
         derivatives_ = array(GL_RGBA32F, levels);
+        foam_ = array(GL_R16F, levels);
+        glTextureParameteri(foam_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(foam_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        const float zero = 0.0f;
+        glClearTexImage(foam_.id(), 0, GL_RED, GL_FLOAT, &zero);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glTextureParameteri(derivatives_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(derivatives_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        for (const gl::Texture* t : {&displacement_, &derivatives_}) {
+        for (const gl::Texture* t : {&displacement_, &derivatives_, &foam_}) {
             glTextureParameteri(t->id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
             glTextureParameteri(t->id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
         }
@@ -84,7 +109,7 @@ public:
     void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override
     {
         if (!transformed_ || time_s != time_s_)
-            transform(time_s);
+            advance(time_s);
         SpectralUniforms u{};
         for (int c = 0; c < kCascades; ++c) {
             const Cascade& cascade = field_->cascades[size_t(c)];
@@ -93,6 +118,13 @@ public:
             const glm::dvec2 origin = gridCenter_m - cascade.patch_m * glm::floor(gridCenter_m / cascade.patch_m);
             u.cascades[c] = {glm::vec2(origin * scale), float(scale), float(cascade.shortestWavelength_m())};
         }
+        const double wind_rad = settings_.wind.windDirection_deg * kPi / 180.0;
+        u.windDirection = glm::vec2(std::cos(wind_rad), std::sin(wind_rad));
+        // Wind-driven streaks of foam appear from about Beaufort 6 and are
+        // marked from Beaufort 8 (10.8 and 17.2 m/s; WMO Beaufort scale).
+        const double u10 = settings_.wind.windSpeed_mps;
+        const double streak = std::clamp((u10 - 10.8) / (17.2 - 10.8), 0.0, 1.0);
+        u.foamStreak = float(1.0 + 3.0 * streak * streak * (3.0 - 2.0 * streak));
         glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
     }
 
@@ -101,9 +133,49 @@ public:
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, uniforms_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN0, displacement_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN1, derivatives_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN2, foam_.id());
     }
 
 private:
+    // Moves the fields to time_s and the foam with them.
+    void advance(double time_s)
+    {
+        const double lifetime = settings_.foamLifetime_s;
+        const bool foam = lifetime > 0.0;
+        const bool continues = transformed_ && time_s >= time_s_ && time_s - time_s_ <= kLongestStep_s;
+        if (foam && !continues) {
+            // Replay the foam's recent history on a fixed lattice of steps
+            // ending at time_s, starting from none.
+            const int steps = int(std::ceil(kWarmUpLifetimes * lifetime / kWarmUpStep_s));
+            for (int i = steps; i > 0; --i) {
+                transform(time_s - i * kWarmUpStep_s);
+                stepFoam(i == steps ? 0.0f : float(std::exp(-kWarmUpStep_s / lifetime)));
+            }
+        }
+        const double dt = continues ? time_s - time_s_ : kWarmUpStep_s;
+        transform(time_s);
+        stepFoam(foam ? float(std::exp(-dt / lifetime)) : 0.0f);
+    }
+
+    void stepFoam(float decay)
+    {
+        glUseProgram(foamStep_.id());
+        glUniform1f(glGetUniformLocation(foamStep_.id(), "decay"), decay);
+        const bool foam = settings_.foamLifetime_s > 0.0;
+        glUniform1fv(glGetUniformLocation(foamStep_.id(), "foldThreshold"), kCascades, foldThresholds_.data());
+        glUniform1f(glGetUniformLocation(foamStep_.id(), "foldSoftness"), kFoldSoftness);
+        glUniform1i(glGetUniformLocation(foamStep_.id(), "foamCascades"), foam ? kFoamCascades : 0);
+        glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R16F);
+        glDispatchCompute(kSize / 16, kSize / 16, kCascades);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glGenerateTextureMipmap(foam_.id());
+        for (GLuint unit = 2; unit < 5; ++unit)
+            glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glUseProgram(0);
+    }
+
     void transform(double time_s)
     {
         glUseProgram(evolve_.id());
@@ -135,9 +207,11 @@ private:
     }
 
     std::shared_ptr<const SpectralField> field_;
-    gl::Program evolve_, fftRows_, fftColumns_;
+    SpectralSettings settings_;
+    std::array<float, kCascades> foldThresholds_;
+    gl::Program evolve_, fftRows_, fftColumns_, foamStep_;
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
-    gl::Texture initial_, omega_, displacement_, derivatives_;
+    gl::Texture initial_, omega_, displacement_, derivatives_, foam_;
     gl::Buffer uniforms_;
     bool transformed_ = false;
     double time_s_ = 0.0;
@@ -151,6 +225,14 @@ SpectralModel::SpectralModel(const SpectralSettings& settings)
           makeSpectralField(SeaSpectrum(settings.wind), settings.choppiness, settings.seed))),
       cpu_(std::make_unique<CpuSurface>(field_))
 {
+    // The fold thresholds from the field itself, at t = 0: its J
+    // distribution is stationary, so any time would do.
+    const CpuSurface::Fields& fields = cpu_->fieldsAt(0.0);
+    const double fraction = breakingFraction(settings.wind.windSpeed_mps);
+    for (int c = 0; c < kFoamCascades; ++c) {
+        const auto& v = fields.values[size_t(c)];
+        foldThresholds_[size_t(c)] = quantile(jacobians(v[6], v[7], v[3]), fraction);
+    }
 }
 
 SpectralModel::~SpectralModel() = default;
@@ -173,7 +255,7 @@ SurfacePoint SpectralModel::surfaceAt(glm::dvec2 restPoint_m, double time_s, con
 
 std::unique_ptr<detail::WaveModelGpu> SpectralModel::createGpu(const gl::ShaderSources& shaders) const
 {
-    return std::make_unique<SpectralGpu>(field_, shaders);
+    return std::make_unique<SpectralGpu>(field_, settings_, foldThresholds_, shaders);
 }
 
 } // namespace swell
