@@ -8,7 +8,7 @@ packages=(
   libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libglfw3-dev
   libglm-dev libimgui-dev libstb-dev libtomlplusplus-dev libcli11-dev libfmt-dev
   libtinygltf-dev libkissfft-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth python3
+  xvfb xauth xdotool python3
 )
 # Extra packages for `scripts/test.sh --sanitize` and the fuzzers.
 if [[ "${SWELL_WITH_CLANG:-0}" == 1 ]]; then

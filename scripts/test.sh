@@ -9,9 +9,9 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 if [[ "${1:-}" == "--sanitize" ]]; then
   export SWELL_BUILD_DIR=${SWELL_BUILD_DIR:-$root/build-asan} SWELL_BUILD_TYPE=Debug
-  "$root/scripts/build.sh" -DSWELL_SANITIZE=ON -DSWELL_BUILD_BENCHMARKS=OFF
+  "$root/scripts/build.sh" -DSWELL_SANITIZE=ON
 else
-  "$root/scripts/build.sh" -DSWELL_BUILD_TESTS=ON
+  "$root/scripts/build.sh"
 fi
 cd "${SWELL_BUILD_DIR:-$root/build}"
 exec ctest --output-on-failure --parallel "$(nproc)" --timeout 600

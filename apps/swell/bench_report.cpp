@@ -5,6 +5,7 @@
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -164,98 +165,31 @@ bool areaGoalMet(const LodSample& s)
     return s.areaMedian_px2 >= kGoalMedianArea_px2[0] && s.areaMedian_px2 <= kGoalMedianArea_px2[1];
 }
 
-// A minimal JSON writer: objects and arrays with commas and indentation.
-class Json {
-public:
-    void open(char bracket, const std::string& key = {})
-    {
-        prefix(key);
-        out_ += bracket;
-        first_.push_back(true);
-    }
-    void close(char bracket)
-    {
-        first_.pop_back();
-        out_ += '\n' + std::string(first_.size() * 2, ' ') + bracket;
-    }
-    void field(const std::string& key, const std::string& value) { prefix(key); out_ += quoted(value); }
-    void field(const std::string& key, const char* value) { field(key, std::string(value)); }
-    void field(const std::string& key, double value)
-    {
-        prefix(key);
-        out_ += std::isfinite(value) ? fmt::format("{}", value) : "null";
-    }
-    void field(const std::string& key, int value) { prefix(key); out_ += fmt::format("{}", value); }
-    void field(const std::string& key, long long value) { prefix(key); out_ += fmt::format("{}", value); }
-    void field(const std::string& key, std::uint64_t value) { prefix(key); out_ += fmt::format("{}", value); }
-    void field(const std::string& key, bool value) { prefix(key); out_ += value ? "true" : "false"; }
-    void null(const std::string& key) { prefix(key); out_ += "null"; }
-    const std::string& text() const { return out_; }
+// nlohmann's ordered_json keeps the keys in the order written, so the file
+// reads like the table. Non-finite numbers become null.
+using Json = nlohmann::ordered_json;
 
-private:
-    void prefix(const std::string& key)
-    {
-        if (!first_.empty()) {
-            if (!first_.back())
-                out_ += ',';
-            first_.back() = false;
-            out_ += '\n' + std::string(first_.size() * 2, ' ');
-        }
-        if (!key.empty())
-            out_ += quoted(key) + ": ";
-    }
-    static std::string quoted(const std::string& s)
-    {
-        std::string q = "\"";
-        for (const char c : s) {
-            if (c == '"' || c == '\\')
-                q += {'\\', c};
-            else if (static_cast<unsigned char>(c) < 0x20)
-                q += fmt::format("\\u{:04x}", int(c));
-            else
-                q += c;
-        }
-        return q + '"';
-    }
-    std::string out_;
-    std::vector<bool> first_;
-};
+Json summaryJson(const Summary& s) { return {{"min", s.min}, {"median", s.median}, {"p95", s.p95}, {"max", s.max}}; }
 
-void writeSummary(Json& j, const std::string& key, const Summary& s)
+Json countersJson(const PassCounters& c, bool statistics)
 {
-    j.open('{', key);
-    j.field("min", s.min);
-    j.field("median", s.median);
-    j.field("p95", s.p95);
-    j.field("max", s.max);
-    j.close('}');
-}
-
-void writeCounters(Json& j, const std::string& key, const PassCounters& c, bool statistics)
-{
-    j.open('{', key);
+    Json j = Json::object();
     if (statistics) {
-        j.field("vertex_shader_invocations", c.vertexShaderInvocations);
-        j.field("fragment_shader_invocations", c.fragmentShaderInvocations);
-        j.field("primitives_submitted", c.primitivesSubmitted);
-        j.field("clipping_input_primitives", c.clippingInputPrimitives);
-        j.field("clipping_output_primitives", c.clippingOutputPrimitives);
+        j["vertex_shader_invocations"] = c.vertexShaderInvocations;
+        j["fragment_shader_invocations"] = c.fragmentShaderInvocations;
+        j["primitives_submitted"] = c.primitivesSubmitted;
+        j["clipping_input_primitives"] = c.clippingInputPrimitives;
+        j["clipping_output_primitives"] = c.clippingOutputPrimitives;
     }
-    j.field("samples_passed", c.samplesPassed);
-    j.close('}');
+    j["samples_passed"] = c.samplesPassed;
+    return j;
 }
 
-void writeCamera(Json& j, const Camera& c)
+Json cameraJson(const Camera& c)
 {
-    j.open('{', "camera");
-    j.open('[', "position_m");
-    j.field("", c.position_m.x);
-    j.field("", c.position_m.y);
-    j.field("", c.position_m.z);
-    j.close(']');
-    j.field("yaw_deg", c.yaw_deg);
-    j.field("pitch_deg", c.pitch_deg);
-    j.close('}');
+    return {{"position_m", {c.position_m.x, c.position_m.y, c.position_m.z}},
+            {"yaw_deg", c.yaw_deg},
+            {"pitch_deg", c.pitch_deg}};
 }
 
 } // namespace
@@ -363,138 +297,104 @@ void printReport(const Results& r)
 void writeJson(const Results& r, const std::string& path)
 {
     Json j;
-    j.open('{');
-    j.open('{', "machine");
-    j.field("cpu", r.machine.cpu);
-    j.field("cores", r.machine.cores);
-    j.field("gl_renderer", r.machine.glRenderer);
-    j.field("gl_version", r.machine.glVersion);
-    j.close('}');
-    j.field("commit", r.machine.commit);
-    j.open('[', "size");
-    j.field("", r.size.x);
-    j.field("", r.size.y);
-    j.close(']');
-    j.open('[', "pass_size");
-    j.field("", r.passSize.x);
-    j.field("", r.passSize.y);
-    j.close(']');
-    j.field("surface", r.surface);
-    j.field("grid_cells", r.gridCells);
-    j.field("frames", r.frames);
-    j.field("warmup", r.warmup);
-    j.field("frame_step_s", r.frameStep_s);
-    j.field("pipeline_statistics", r.pipelineStatistics);
-    j.field("gpu_timers", r.gpuTimers);
+    j["machine"] = {{"cpu", r.machine.cpu},
+                    {"cores", r.machine.cores},
+                    {"gl_renderer", r.machine.glRenderer},
+                    {"gl_version", r.machine.glVersion}};
+    j["commit"] = r.machine.commit;
+    j["size"] = {r.size.x, r.size.y};
+    j["pass_size"] = {r.passSize.x, r.passSize.y};
+    j["surface"] = r.surface;
+    j["grid_cells"] = r.gridCells;
+    j["frames"] = r.frames;
+    j["warmup"] = r.warmup;
+    j["frame_step_s"] = r.frameStep_s;
+    j["pipeline_statistics"] = r.pipelineStatistics;
+    j["gpu_timers"] = r.gpuTimers;
 
-    const std::vector<std::string> names = passNames(r.real);
-    j.open('{', "passes");
-    for (const std::string& name : names) {
-        j.open('{', name);
-        if (const std::string parent = passParent(r.real, name); !parent.empty())
-            j.field("inside", parent);
-        else
-            j.null("inside");
+    Json passes = Json::object();
+    for (const std::string& name : passNames(r.real)) {
         const Summary realWall = summarize(passSeries(r.real, name, &PassSample::wall_ms));
         const Summary floorWall = summarize(passSeries(r.floor, name, &PassSample::wall_ms));
         const Summary realCpu = summarize(passSeries(r.real, name, &PassSample::cpu_ms));
         const Summary floorCpu = summarize(passSeries(r.floor, name, &PassSample::cpu_ms));
-        writeSummary(j, "wall_ms", realWall);
-        writeSummary(j, "cpu_ms", realCpu);
         const std::vector<double> gpu = passGpu(r.real, name);
-        if (gpu.empty())
-            j.null("gpu_ms");
-        else
-            writeSummary(j, "gpu_ms", summarize(gpu));
-        writeSummary(j, "floor_wall_ms", floorWall);
-        writeSummary(j, "floor_cpu_ms", floorCpu);
-        j.field("real_over_floor", ratio(realWall.median, floorCost(floorWall)));
-        j.field("real_over_floor_cpu", ratio(realCpu.median, floorCost(floorCpu)));
-        writeCounters(j, "counters_total", passTotal(r.real, name), r.pipelineStatistics);
-        writeCounters(j, "floor_counters_total", passTotal(r.floor, name), r.pipelineStatistics);
-        j.close('}');
+        const std::string parent = passParent(r.real, name);
+        Json& pass = passes[name];
+        pass["inside"] = parent.empty() ? Json(nullptr) : Json(parent);
+        pass["wall_ms"] = summaryJson(realWall);
+        pass["cpu_ms"] = summaryJson(realCpu);
+        pass["gpu_ms"] = gpu.empty() ? Json(nullptr) : summaryJson(summarize(gpu));
+        pass["floor_wall_ms"] = summaryJson(floorWall);
+        pass["floor_cpu_ms"] = summaryJson(floorCpu);
+        pass["real_over_floor"] = ratio(realWall.median, floorCost(floorWall));
+        pass["real_over_floor_cpu"] = ratio(realCpu.median, floorCost(floorCpu));
+        pass["counters_total"] = countersJson(passTotal(r.real, name), r.pipelineStatistics);
+        pass["floor_counters_total"] = countersJson(passTotal(r.floor, name), r.pipelineStatistics);
     }
-    j.close('}');
+    j["passes"] = std::move(passes);
 
     const Summary frameReal = summarize(frameSeries(r.real, &FrameSample::wall_ms));
     const Summary frameFloor = summarize(frameSeries(r.floor, &FrameSample::wall_ms));
     const Summary frameRealCpu = summarize(frameSeries(r.real, &FrameSample::cpu_ms));
     const Summary frameFloorCpu = summarize(frameSeries(r.floor, &FrameSample::cpu_ms));
-    j.open('{', "frame");
-    writeSummary(j, "wall_ms", frameReal);
-    writeSummary(j, "cpu_ms", frameRealCpu);
-    writeSummary(j, "floor_wall_ms", frameFloor);
-    writeSummary(j, "floor_cpu_ms", frameFloorCpu);
-    j.field("real_over_floor", ratio(frameReal.median, floorCost(frameFloor)));
-    j.field("real_over_floor_cpu", ratio(frameRealCpu.median, floorCost(frameFloorCpu)));
-    j.close('}');
+    j["frame"] = {{"wall_ms", summaryJson(frameReal)},
+                  {"cpu_ms", summaryJson(frameRealCpu)},
+                  {"floor_wall_ms", summaryJson(frameFloor)},
+                  {"floor_cpu_ms", summaryJson(frameFloorCpu)},
+                  {"real_over_floor", ratio(frameReal.median, floorCost(frameFloor))},
+                  {"real_over_floor_cpu", ratio(frameRealCpu.median, floorCost(frameFloorCpu))}};
 
-    j.open('[', "lod");
+    Json lod = Json::array();
     for (const LodSample& s : r.lod) {
-        j.open('{');
-        j.field("frame", s.frame);
-        writeCamera(j, s.camera);
-        j.field("triangles", s.triangles);
-        j.field("in_frustum", s.inFrustum);
-        j.field("in_frustum_share", s.inFrustumShare);
+        Json sample;
+        sample["frame"] = s.frame;
+        sample["camera"] = cameraJson(s.camera);
+        sample["triangles"] = s.triangles;
+        sample["in_frustum"] = s.inFrustum;
+        sample["in_frustum_share"] = s.inFrustumShare;
         if (s.clipShare) {
-            j.field("clip_input", s.clipInput);
-            j.field("clip_output", s.clipOutput);
-            j.field("clip_output_over_input", *s.clipShare);
+            sample["clip_input"] = s.clipInput;
+            sample["clip_output"] = s.clipOutput;
+            sample["clip_output_over_input"] = *s.clipShare;
         } else {
-            j.null("clip_output_over_input");
+            sample["clip_output_over_input"] = nullptr;
         }
-        j.open('{', "area_px2");
-        j.field("p10", s.areaP10_px2);
-        j.field("median", s.areaMedian_px2);
-        j.field("p90", s.areaP90_px2);
-        j.close('}');
-        j.field("longest_edge_median_px", s.edgeMedian_px);
-        j.field("sub_pixel_share", s.subPixelShare);
-        j.close('}');
+        sample["area_px2"] = {{"p10", s.areaP10_px2}, {"median", s.areaMedian_px2}, {"p90", s.areaP90_px2}};
+        sample["longest_edge_median_px"] = s.edgeMedian_px;
+        sample["sub_pixel_share"] = s.subPixelShare;
+        lod.push_back(std::move(sample));
     }
-    j.close(']');
+    j["lod"] = std::move(lod);
 
-    j.open('{', "goals");
-    j.field("frame_real_over_floor_max", kGoalFrameRatio);
-    j.field("in_frustum_share_min", kGoalInFrustum);
-    j.open('[', "median_area_px2");
-    j.field("", kGoalMedianArea_px2[0]);
-    j.field("", kGoalMedianArea_px2[1]);
-    j.close(']');
-    j.close('}');
+    j["goals"] = {{"frame_real_over_floor_max", kGoalFrameRatio},
+                  {"in_frustum_share_min", kGoalInFrustum},
+                  {"median_area_px2", {kGoalMedianArea_px2[0], kGoalMedianArea_px2[1]}}};
 
-    j.open('[', "measured_frames");
+    Json measured = Json::array();
     for (size_t i = 0; i < r.real.size(); ++i) {
         const FrameSample& f = r.real[i];
-        j.open('{');
-        j.field("index", int(i));
+        Json frame;
+        frame["index"] = int(i);
         if (i < r.realTimes_s.size())
-            j.field("time_s", r.realTimes_s[i]);
+            frame["time_s"] = r.realTimes_s[i];
         if (i < r.realCameras.size())
-            writeCamera(j, r.realCameras[i]);
-        j.field("wall_ms", f.wall_ms);
-        j.field("cpu_ms", f.cpu_ms);
-        j.open('{', "passes");
-        for (const PassSample& p : f.passes) {
-            j.open('{', p.name);
-            j.field("wall_ms", p.wall_ms);
-            j.field("cpu_ms", p.cpu_ms);
-            if (p.gpu_ms)
-                j.field("gpu_ms", *p.gpu_ms);
-            else
-                j.null("gpu_ms");
-            writeCounters(j, "counters", p.counters, r.pipelineStatistics);
-            j.close('}');
-        }
-        j.close('}');
-        j.close('}');
+            frame["camera"] = cameraJson(r.realCameras[i]);
+        frame["wall_ms"] = f.wall_ms;
+        frame["cpu_ms"] = f.cpu_ms;
+        Json framePasses = Json::object();
+        for (const PassSample& p : f.passes)
+            framePasses[p.name] = {{"wall_ms", p.wall_ms},
+                                   {"cpu_ms", p.cpu_ms},
+                                   {"gpu_ms", p.gpu_ms ? Json(*p.gpu_ms) : Json(nullptr)},
+                                   {"counters", countersJson(p.counters, r.pipelineStatistics)}};
+        frame["passes"] = std::move(framePasses);
+        measured.push_back(std::move(frame));
     }
-    j.close(']');
-    j.close('}');
+    j["measured_frames"] = std::move(measured);
 
     std::ofstream out(path, std::ios::binary);
-    out << j.text() << '\n';
+    out << j.dump(2) << '\n';
     if (!out)
         throw Error(fmt::format("swell bench: cannot write '{}'", path));
 }

@@ -2,6 +2,7 @@
 // With no subcommand it shows the default scene in a window when a display is
 // usable, and otherwise renders it to a PNG whose path it prints.
 #include "commands.h"
+#include "data_folders.h"
 
 #include "swell/error.h"
 
@@ -45,7 +46,11 @@ int main(int argc, char** argv)
     CLI::App app{"Swell: a real-time ocean renderer.\n"
                  "With no subcommand: a window on the default scene when a display is usable,\n"
                  "otherwise a headless render of it to swell-default.png."};
-    app.set_version_flag("--version", std::string("swell ") + SWELL_VERSION);
+    // The version, and where this swell finds its presets and shaders.
+    app.set_version_flag("--version", [] {
+        const swell::app::DataFolders data = swell::app::dataFolders();
+        return fmt::format("swell {}\npresets: {}\nshaders: {}", SWELL_VERSION, data.scenes.string(), data.shaders.string());
+    });
     app.require_subcommand(0, 1);
 
     swell::app::ViewOptions view;
@@ -65,7 +70,8 @@ int main(int argc, char** argv)
     renderCommand->add_option("scene", render.scenePath, "Scene file (TOML); the built-in default when omitted");
     renderCommand->add_option("-o,--output", render.output,
                               "Output: NAME.png for one frame; with --duration, NAME.png becomes NAME_00000.png, "
-                              "NAME_00001.png, ... or NAME.mp4 a video (needs the ffmpeg program)")->required();
+                              "NAME_00001.png, ... or NAME.mp4 a video (needs the ffmpeg program). "
+                              "Missing parent folders are created")->required();
     renderCommand->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->capture_default_str();
     renderCommand->add_option("--time", render.time_s, "Simulation time of the first frame, seconds")
         ->check(finiteNumber & CLI::Range(0.0, 1.0e9))->capture_default_str();

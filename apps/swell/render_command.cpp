@@ -81,6 +81,33 @@ private:
     FILE* pipe_ = nullptr;
 };
 
+// Creates the output's missing parent folders (as --help says), or says in
+// plain words why it cannot: a part of the path that is a file, no permission.
+void createOutputFolder(const fs::path& output)
+{
+    const fs::path folder = output.parent_path();
+    if (folder.empty())
+        return;
+    // The deepest part of the path that exists must be a folder.
+    for (fs::path part = folder; !part.empty(); part = part.parent_path()) {
+        std::error_code error;
+        const fs::file_status status = fs::status(part, error);
+        if (fs::exists(status)) {
+            if (!fs::is_directory(status))
+                throw InputError({"--output"}, fmt::format("cannot write '{}': '{}' is a file, not a folder",
+                                                           output.string(), part.string()));
+            break;
+        }
+        if (part == part.parent_path())
+            break;
+    }
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error)
+        throw InputError({"--output"}, fmt::format("cannot create the folder '{}' for '{}': {}", folder.string(),
+                                                   output.string(), error.message()));
+}
+
 } // namespace
 
 int runRender(const RenderOptions& options)
@@ -95,8 +122,7 @@ int runRender(const RenderOptions& options)
     if (video && !programOnPath("ffmpeg"))
         throw InputError({"--output"}, "writing .mp4 needs the ffmpeg program, which is not installed "
                                        "(apt-get install ffmpeg), or write a PNG sequence instead");
-    if (output.has_parent_path())
-        fs::create_directories(output.parent_path());
+    createOutputFolder(output);
 
     const Scene scene = loadSceneOrDefault(options.scenePath);
     gl::HeadlessContext context(true);

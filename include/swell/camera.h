@@ -2,6 +2,8 @@
 // draws relative to its x,z so precision does not depend on where it is.
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/scene.h"
 
 #include <glm/mat4x4.hpp>
@@ -9,7 +11,7 @@
 
 namespace swell {
 
-struct Camera {
+struct SWELL_API Camera {
     glm::dvec3 position_m{0.0, 6.0, 0.0}; // world position, m
     double yaw_deg = 0.0;                  // heading, degrees from -z towards +x
     double pitch_deg = 0.0;                // degrees, -89..89
@@ -23,6 +25,6 @@ struct Camera {
 };
 
 // The scene's camera at time t: its fixed pose, or its path interpolated.
-Camera cameraAt(const CameraSettings& settings, double time_s);
+SWELL_API Camera cameraAt(const CameraSettings& settings, double time_s);
 
 } // namespace swell

@@ -3,13 +3,15 @@
 // into exit code 2. Anything else (no GL context, out of memory) is Error, 1.
 #pragma once
 
+#include "swell/export.h"
+
 #include <stdexcept>
 #include <string>
 
 namespace swell {
 
 // A place in a file: path and 1-based line and column (0 when unknown).
-struct SourcePlace {
+struct SWELL_API SourcePlace {
     std::string path;
     int line = 0;
     int column = 0;
@@ -17,13 +19,13 @@ struct SourcePlace {
     std::string str() const;
 };
 
-class Error : public std::runtime_error {
+class SWELL_API Error : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
 // Something the user gave us is wrong. what() reads "path:line:column: message".
-class InputError : public Error {
+class SWELL_API InputError : public Error {
 public:
     InputError(SourcePlace place, const std::string& message);
     const SourcePlace& place() const { return place_; }

@@ -3,11 +3,13 @@
 // (this header, src/ocean/flat/flat_model.cpp and shaders/ocean/flat.glsl).
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/wave_model.h"
 
 namespace swell {
 
-class FlatModel final : public WaveModel {
+class SWELL_API FlatModel final : public WaveModel {
 public:
     std::string_view name() const override;
     std::string summary() const override;

@@ -3,12 +3,14 @@
 // shaders/ocean/gerstner.glsl.
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/wave_model.h"
 #include "swell/waves.h"
 
 namespace swell {
 
-class GerstnerModel final : public WaveModel {
+class SWELL_API GerstnerModel final : public WaveModel {
 public:
     // Throws swell::InputError naming the problem when validate(waves) fails.
     explicit GerstnerModel(WaveSet waves);

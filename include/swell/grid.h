@@ -3,6 +3,8 @@
 // shader uses (shaders/grid.glsl holds the diagram and the GPU twin).
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/scene.h"
 #include "swell/shader_constants.h"
 
@@ -13,7 +15,7 @@
 
 namespace swell {
 
-struct GridShape {
+struct SWELL_API GridShape {
     GridLayout layout = GridLayout::Geometric;
     int cells = 254;          // cells per side, even, >= 4
     double radius_m = 2000.0; // reach of the detailed grid at scale 1, m
@@ -31,46 +33,46 @@ struct GridShape {
 };
 
 // The grid a scene's settings ask for: cells even, the skirt beyond the fog.
-GridShape gridShapeFor(const GridSettings& grid, const CameraSettings& camera);
+SWELL_API GridShape gridShapeFor(const GridSettings& grid, const CameraSettings& camera);
 
 // Fade distances the renderer uses: the scene's, kept inside the detailed grid.
-struct HorizonFade {
+struct SWELL_API HorizonFade {
     double start_m = 0.0, end_m = 0.0;
 };
-HorizonFade horizonFadeFor(const GridSettings& grid, const GridShape& shape);
+SWELL_API HorizonFade horizonFadeFor(const GridSettings& grid, const GridShape& shape);
 
 // CPU twin of horizonFade() in the shaders: the factor wave heights are
 // scaled by at distance_m from the camera (1 near, 0 beyond end).
-double horizonFadeAt(const HorizonFade& fade, double distance_m);
+SWELL_API double horizonFadeAt(const HorizonFade& fade, double distance_m);
 
 // Offset of grid line i (0..cells) from the centre at scale 1, before
 // snapping: the paper's line, or the geometric layout's ring radius f.
-double gridLineOffset(const GridShape& shape, int i);
+SWELL_API double gridLineOffset(const GridShape& shape, int i);
 
 // The finest lattice step at scale 1, m: the innermost cell's spacing for the
 // paper's layout, half of it for the geometric one (whose vertices do not lie
 // on straight lines, so they snap to a lattice finer than their spacing).
-double finestGridStep(const GridShape& shape);
+SWELL_API double finestGridStep(const GridShape& shape);
 
 // The geometric grid's scale for a camera this high above the water: 1, 2,
 // 4, ... (a power of two, so every scale's lattices are lattices of scale 1),
 // keeping triangles a similar size on screen from any height. Always 1 for
 // the paper's layout.
-double gridScaleFor(const GridShape& shape, double cameraHeight_m);
+SWELL_API double gridScaleFor(const GridShape& shape, double cameraHeight_m);
 
 // Where the grid sits this frame: its scale, its centre snapped to the finest
 // step, and the centre modulo each level's step (so the GPU can snap in small
 // numbers).
-struct GridPlacement {
+struct SWELL_API GridPlacement {
     double scale = 1.0;
     glm::dvec2 center_m{0.0}; // absolute world x,z
     double finestStep_m = 0.0; // scale * finestGridStep(shape)
     std::array<glm::dvec2, SWELL_GRID_LEVELS> snapOffsets{};
 };
-GridPlacement placeGrid(const GridShape& shape, glm::dvec3 camera_m);
+SWELL_API GridPlacement placeGrid(const GridShape& shape, glm::dvec3 camera_m);
 
 // CPU twin of gridVertex() in grid.glsl: where grid vertex (i, j) sits.
-struct GridPoint {
+struct SWELL_API GridPoint {
     glm::dvec2 offset_m{0.0};      // rest position relative to the grid centre after snapping, m
     double cellSize_m = 0.0;       // the coarser spacing there, m (drives the wave filter)
     glm::dvec2 latticeStep_m{0.0}; // the world-fixed lattice step it snapped to, per axis, m; 0 on the skirt
@@ -80,6 +82,6 @@ struct GridPoint {
     double snapMargin = 0.5;
     bool skirt = false;            // on the outermost ring, out beyond the fog
 };
-GridPoint gridPoint(const GridShape& shape, const GridPlacement& placement, int i, int j);
+SWELL_API GridPoint gridPoint(const GridShape& shape, const GridPlacement& placement, int i, int j);
 
 } // namespace swell

@@ -2,13 +2,15 @@
 // comparison the golden-image tests use.
 #pragma once
 
+#include "swell/export.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <vector>
 
 namespace swell {
 
-struct Image {
+struct SWELL_API Image {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba; // row 0 is the top row
 
@@ -26,19 +28,19 @@ inline constexpr int kMaxImageSide = 4096;
 inline constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t(64) << 20;
 
 // Writes a PNG. Throws swell::Error when the file cannot be written.
-void writePng(const Image& image, const std::filesystem::path& path);
+SWELL_API void writePng(const Image& image, const std::filesystem::path& path);
 // Reads a PNG (or any format stb_image knows) as RGBA. Throws swell::InputError
 // naming the file when it is not a regular file, is larger than
 // kMaxImageFileBytes, declares more than kMaxImageSide pixels a side, or
 // cannot be decoded.
-Image readImage(const std::filesystem::path& path);
+SWELL_API Image readImage(const std::filesystem::path& path);
 
-struct ImageDifference {
+struct SWELL_API ImageDifference {
     int maxChannel = 0;          // largest absolute difference of any channel, 0..255
     double meanChannel = 0.0;    // mean absolute difference over all RGB channels, 0..255
     bool sameSize = true;
     Image diff;                  // |a - b| per channel, amplified 4x for visibility, alpha 255
 };
-ImageDifference compareImages(const Image& a, const Image& b);
+SWELL_API ImageDifference compareImages(const Image& a, const Image& b);
 
 } // namespace swell

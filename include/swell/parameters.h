@@ -18,6 +18,8 @@
 //   }
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/scene.h"
 
 #include <glm/vec2.hpp>
@@ -81,7 +83,7 @@ constexpr bool hasEffect(ParameterEffect effects, ParameterEffect flag)
     return unsigned(flag) != 0 && (unsigned(effects) & unsigned(flag)) == unsigned(flag);
 }
 
-struct Parameter {
+struct SWELL_API Parameter {
     // Full dotted TOML key. Inside an array of tables it starts with the
     // array's key: "objects.scale" is `scale` inside an [[objects]] item.
     std::string_view key{};
@@ -121,45 +123,45 @@ struct Parameter {
 };
 
 // Every parameter, in the order scene files and docs list them.
-std::span<const Parameter> parameters();
+SWELL_API std::span<const Parameter> parameters();
 
 // The parameter with this full key ("fog.start_m", "objects.scale"), or nullptr.
-const Parameter* findParameter(std::string_view key);
+SWELL_API const Parameter* findParameter(std::string_view key);
 
 // The TOML key of an array of tables: "waves.list", "objects", "camera.path";
 // "" for ParameterList::None.
-std::string_view listKey(ParameterList list);
+SWELL_API std::string_view listKey(ParameterList list);
 
 // How many items the scene has in that list (1 for ParameterList::None).
-std::size_t listSize(const Scene& scene, ParameterList list);
+SWELL_API std::size_t listSize(const Scene& scene, ParameterList list);
 
 // p.present is null or says yes.
-bool isPresent(const Parameter& p, const Scene& scene);
+SWELL_API bool isPresent(const Parameter& p, const Scene& scene);
 
 // How many numbers the kind holds: 3 for Colour/Direction3/Vector3, 2 for
 // Direction2, 1 otherwise.
-int componentCount(ParameterKind kind);
+SWELL_API int componentCount(ParameterKind kind);
 
 // Whether one number (a scalar, or one component of a vector) is allowed:
 // NaN never is, infinity only when max is +infinity.
-bool inRange(const Parameter& p, double x);
+SWELL_API bool inRange(const Parameter& p, double x);
 
 // The allowed values in words, with the unit: "0..1000000 m",
 // "> 0 and <= 10000 m", "\"raymarch\" or \"fixed\"", "true or false".
-std::string rangeText(const Parameter& p);
+SWELL_API std::string rangeText(const Parameter& p);
 
 // The message for a number outside p's range, naming it as `name` (the key
 // as the user wrote it: "fog.start_m", "objects[2].scale", "sun.color[1]"):
 // "fog.start_m = -5 is out of range; allowed 0..1000000 m".
-std::string rangeMessage(const Parameter& p, std::string_view name, double x);
+SWELL_API std::string rangeMessage(const Parameter& p, std::string_view name, double x);
 
 // Why the value is not allowed for p, or "" when it is: the wrong variant
 // alternative, a number or component out of range, a zero-length direction,
 // a choice index past the end. The message names the value as `name`, or as
 // p.key when `name` is empty.
-std::string valueProblem(const Parameter& p, const ParameterValue& value, std::string_view name = {});
+SWELL_API std::string valueProblem(const Parameter& p, const ParameterValue& value, std::string_view name = {});
 
 // The value as a TOML literal: 1200.0, 256, true, "raymarch", [0.7, 0.8, 0.9], inf.
-std::string formatValue(const Parameter& p, const ParameterValue& value);
+SWELL_API std::string formatValue(const Parameter& p, const ParameterValue& value);
 
 } // namespace swell

@@ -6,8 +6,10 @@
 //      the water depth-tested against both, then the sky where nothing is
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/camera.h"
-#include "swell/gl/shader.h"
+#include "swell/gl/shader_sources.h"
 #include "swell/image.h"
 #include "swell/scene.h"
 #include "swell/wave_model.h"
@@ -20,13 +22,13 @@
 
 namespace swell {
 
-struct RendererOptions {
+struct SWELL_API RendererOptions {
     // Where shaders come from: the embedded copies, or a folder for hot reload.
     gl::ShaderSources shaders = gl::ShaderSources::embedded();
 };
 
 // Triangles and draw calls of the last frame, for the benchmark and tests.
-struct FrameCounters {
+struct SWELL_API FrameCounters {
     long long waterTriangles = 0;
     long long worldTriangles = 0;
     int drawCalls = 0;
@@ -35,14 +37,14 @@ struct FrameCounters {
 // Told when each pass of a frame begins and ends (for timing and counters).
 // Passes: "ocean" (the wave model's simulation for the frame), "reflection",
 // "refraction", "main"; within "main", "water" for the water draw.
-class PassObserver {
+class SWELL_API PassObserver {
 public:
     virtual ~PassObserver() = default;
     virtual void beginPass(const char* name) = 0;
     virtual void endPass(const char* name) = 0;
 };
 
-class Renderer {
+class SWELL_API Renderer {
 public:
     // Needs a current OpenGL 4.5 core context. Throws swell::InputError when a
     // shader does not compile (naming the file and line) or an asset is bad.

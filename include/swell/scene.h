@@ -6,6 +6,8 @@
 #pragma once
 
 #include "swell/error.h"
+#include "swell/export.h"
+
 #include "swell/spectrum.h"
 #include "swell/waves.h"
 
@@ -35,7 +37,7 @@ enum class WaveModelKind {
 };
 
 // Where the waves come from: listed by hand, or generated from the wind.
-struct WaveSource {
+struct SWELL_API WaveSource {
     WaveModelKind model = WaveModelKind::Gerstner;
     double choppiness = 1.0; // spectral model: lambda, 0..2 (SpectralSettings::choppiness)
     double foamLifetime_s = 3.85; // spectral model: whitecap foam's e-folding time, s, 0..60; 0: no foam
@@ -51,7 +53,7 @@ enum class GridLayout {
 
 // The camera-following LOD grid of the paper. Rebuild settings: a change
 // recreates the grid's index buffer.
-struct GridSettings {
+struct SWELL_API GridSettings {
     GridLayout layout = GridLayout::Geometric;
     int resolution = 121;       // vertices along each side, 16..2048
     double radius_m = 2000.0;   // half-size of the detailed grid around the camera, m, 10..100000
@@ -60,13 +62,13 @@ struct GridSettings {
     double fadeEnd_m = 1900.0;
 };
 
-struct SunSettings {
+struct SWELL_API SunSettings {
     glm::dvec3 direction{-0.4, 0.35, -0.85}; // towards the sun, world space; normalised on use
     glm::dvec3 color{1.0, 0.95, 0.85};        // linear RGB, 0..1
     double intensity = 1.0;                   // multiplier, 0..20
 };
 
-struct SkySettings {
+struct SWELL_API SkySettings {
     // Six images (+x, -x, +y, -y, +z, -z), paths relative to the scene file.
     // Empty: the built-in procedural sky, coloured from the values below.
     std::vector<std::string> cubemapFaces;
@@ -74,13 +76,13 @@ struct SkySettings {
     glm::dvec3 horizonColor{0.70, 0.80, 0.90}; // linear RGB, 0..1
 };
 
-struct FogSettings {
+struct SWELL_API FogSettings {
     double start_m = 1200.0;               // fog begins, m from the camera, >= 0
     double end_m = 6000.0;                 // fog is complete, m, > start
     glm::dvec3 color{0.70, 0.80, 0.90};    // linear RGB, 0..1
 };
 
-struct WaterSettings {
+struct SWELL_API WaterSettings {
     glm::dvec3 deepColor{0.01, 0.06, 0.10};       // colour of light scattered back from deep water, linear RGB
     glm::dvec3 absorption_per_m{0.45, 0.09, 0.06}; // Beer-Lambert absorption coefficient per channel, 1/m, >= 0
     double fresnelF0 = 0.02;                      // reflectance looking straight down, 0..1 (water: 0.02)
@@ -89,7 +91,7 @@ struct WaterSettings {
     double refractionDistortion = 0.05;           // how much the normal bends the refraction lookup, 0..1
 };
 
-struct ReflectionSettings {
+struct SWELL_API ReflectionSettings {
     ReflectionMode mode = ReflectionMode::RayMarch;
     double fixedDistance_m = 5.0;  // step along the reflected ray in FixedDistance mode, m (the paper: 5)
     double resolutionScale = 0.5;  // reflection/refraction target size relative to the output, 0.1..1
@@ -102,7 +104,7 @@ inline constexpr std::string_view kBuiltinObjectPrefix = "builtin:";
 inline constexpr std::array<std::string_view, 3> kBuiltinObjects{"buoy", "boat", "rock"};
 
 // A glTF model placed in the world.
-struct SceneObject {
+struct SWELL_API SceneObject {
     std::string path;                 // .gltf or .glb, relative to the scene file; "builtin:NAME" for a built-in
     glm::dvec3 position_m{0.0};       // world position, m
     double yaw_deg = 0.0;             // rotation about +y, degrees
@@ -110,14 +112,14 @@ struct SceneObject {
     bool floats = false;              // ride the waves (height and tilt from the CPU wave query)
 };
 
-struct CameraKey {
+struct SWELL_API CameraKey {
     double time_s = 0.0;          // when the camera is here, s
     glm::dvec3 position_m{0.0};   // world position, m
     double yaw_deg = 0.0;         // heading, degrees from -z towards +x
     double pitch_deg = 0.0;       // up/down, degrees, -89..89
 };
 
-struct CameraSettings {
+struct SWELL_API CameraSettings {
     glm::dvec3 position_m{0.0, 6.0, 0.0}; // world position, m
     double yaw_deg = 0.0;                  // heading, degrees from -z towards +x
     double pitch_deg = -5.0;               // degrees, -89..89
@@ -130,13 +132,13 @@ struct CameraSettings {
 // Where a scene file named a file the renderer reads (a model or a sky
 // face), so that a problem found while loading it is reported at the key
 // that named it: "scene.toml:12:8: objects[2].path: /scenes/boat.glb: ...".
-struct AssetReference {
+struct SWELL_API AssetReference {
     std::string key;   // "objects[2].path", "sky.faces[3]"
     std::string path;  // the path as written, to tell whether the scene still names it
     SourcePlace place; // where it was written
 };
 
-struct Scene {
+struct SWELL_API Scene {
     WaveSource waves;
     GridSettings grid;
     SunSettings sun;
@@ -157,11 +159,11 @@ struct Scene {
 };
 
 // The built-in default scene: an open ocean under a trade wind, with an island.
-Scene defaultScene();
+SWELL_API Scene defaultScene();
 
 // The wave set the scene describes at load time: generateWaves(*source.wind)
 // when the wind is set, else source.listed. Either way the water depth is
 // source.listed.depth_m (the wind's own depth_m is overridden by it).
-WaveSet resolveWaves(const WaveSource& source);
+SWELL_API WaveSet resolveWaves(const WaveSource& source);
 
 } // namespace swell

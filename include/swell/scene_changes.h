@@ -6,10 +6,12 @@
 // viewer decide what a change costs from this alone.
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/parameters.h"
 
 namespace swell {
 
-ParameterEffect sceneChanges(const Scene& before, const Scene& after);
+SWELL_API ParameterEffect sceneChanges(const Scene& before, const Scene& after);
 
 } // namespace swell

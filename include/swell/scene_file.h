@@ -8,6 +8,8 @@
 // whose place is the file, line and column of the offending key or value.
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/scene.h"
 #include "swell/shader_constants.h"
 
@@ -44,7 +46,7 @@ inline constexpr int kMaxSceneTableArrayHeaders = int(kMaxCameraKeys + kMaxScene
 // sky cubemap faces are resolved against the file's folder.
 // Throws InputError: missing, unreadable, too large, not UTF-8 TOML, or any
 // invalid content (see parseScene).
-Scene loadScene(const std::filesystem::path& path);
+SWELL_API Scene loadScene(const std::filesystem::path& path);
 
 // Parses and validates scene TOML held in memory. `virtualPath` is used for
 // error places and as the base for relative paths in the file (its folder;
@@ -54,24 +56,24 @@ Scene loadScene(const std::filesystem::path& path);
 // cross-field rules, referenced files that are missing or unreadable, unknown
 // built-in objects, arrays over their limits, and wave sets that fail
 // validate().
-Scene parseScene(std::string_view toml, const std::filesystem::path& virtualPath);
+SWELL_API Scene parseScene(std::string_view toml, const std::filesystem::path& virtualPath);
 
 // The checks parseScene makes after reading, for a scene built in code (the
 // viewer's edits): every parameter in range, the cross-field rules, the
 // referenced files relative to `sceneFile`'s folder, the wave set. Throws
 // InputError whose place is `sceneFile` with no line, naming the key.
-void validateScene(const Scene& scene, const std::filesystem::path& sceneFile);
+SWELL_API void validateScene(const Scene& scene, const std::filesystem::path& sceneFile);
 
 // The scene as TOML that parseScene reads back to an equal scene. Every
 // parameter is written, with its unit and range in a comment. When the wind
 // is set the listed waves are not written (the wind replaces them).
-std::string saveScene(const Scene& scene);
+SWELL_API std::string saveScene(const Scene& scene);
 
 // Writes saveScene(scene) to `path` atomically: to a temporary file in the
 // same folder, flushed to disk, then renamed over `path`, so a failure leaves
 // any existing file untouched. Relative paths inside the scene are written
 // as they are, so save next to the original to keep them valid.
 // Throws InputError naming `path` when it cannot be written.
-void saveSceneFile(const Scene& scene, const std::filesystem::path& path);
+SWELL_API void saveSceneFile(const Scene& scene, const std::filesystem::path& path);
 
 } // namespace swell

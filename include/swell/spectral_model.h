@@ -6,6 +6,8 @@
 // choppiness times the spectrum's own (Tessendorf 2001).
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/spectrum.h"
 #include "swell/wave_model.h"
 
@@ -19,7 +21,7 @@ struct SpectralField;
 class CpuSurface;
 } // namespace spectral
 
-struct SpectralSettings {
+struct SWELL_API SpectralSettings {
     WindSettings wind;       // the sea: wind, fetch, depth, spreading, swell
     // lambda, dimensionless, 0..2: how far crests lean and troughs widen; 0
     // is the linear (Airy) sea, 1 Tessendorf's choppy waves.
@@ -33,7 +35,7 @@ struct SpectralSettings {
     double foamLifetime_s = 3.85; // s, 0..60
 };
 
-class SpectralModel final : public WaveModel {
+class SWELL_API SpectralModel final : public WaveModel {
 public:
     // Throws std::invalid_argument as SeaSpectrum does for bad settings.
     explicit SpectralModel(const SpectralSettings& settings);

@@ -11,6 +11,8 @@
 //   sech^2(beta*theta) spreading      Donelan et al. 1985, Banner 1990
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/waves.h"
 
 #include <cstdint>
@@ -31,7 +33,7 @@ enum class SpreadingModel {
 // A swell from a distant storm, added to the wind sea: a narrow JONSWAP
 // spectrum of its own height and period, travelling its own way, spread
 // narrowly in direction.
-struct SwellSettings {
+struct SWELL_API SwellSettings {
     double height_m = 1.0;       // significant wave height of the swell alone, m, 0..15
     double period_s = 12.0;      // peak period, s, 3..25
     double direction_deg = 0.0;  // direction the swell travels towards, degrees from +x towards +z
@@ -40,7 +42,7 @@ struct SwellSettings {
     int waveCount = 8;           // Gerstner waves for the swell, 1..SWELL_MAX_WAVES - 1
 };
 
-struct WindSettings {
+struct SWELL_API WindSettings {
     double windSpeed_mps = 8.0;       // wind speed 10 m above the sea (U10), m/s, 0.5..40
     double windDirection_deg = 0.0;   // direction the wind blows towards, degrees from +x towards +z
     double spread_deg = 35.0;         // widest angle from the wind a wave travels at, degrees, 0..180 (spreading cut there)
@@ -56,7 +58,7 @@ struct WindSettings {
 
 // A JONSWAP frequency spectrum (Hasselmann et al. 1973), in finite depth with
 // the TMA factor (Bouws et al. 1985). gamma = 1 is Pierson-Moskowitz.
-struct SpectrumParameters {
+struct SWELL_API SpectrumParameters {
     double alpha = 0.0081;            // Phillips constant, dimensionless
     double peakFrequency_radps = 1.0; // omega_p, rad/s
     double gamma = 3.3;               // peak enhancement, dimensionless
@@ -68,11 +70,11 @@ struct SpectrumParameters {
 
 // The wind speed 19.5 m above the sea, which Pierson & Moskowitz used, from
 // the 10 m wind: the power law U(z) ~ z^0.11 over the sea (about 1.076*U10).
-double windSpeedAt19_5m(double windSpeed10_mps);
+SWELL_API double windSpeedAt19_5m(double windSpeed10_mps);
 
 // The fully developed sea (Pierson & Moskowitz 1964): alpha = 0.0081,
 // omega_p = 0.877*g/U19.5, gamma = 1; Hs = 0.21*U19.5^2/g.
-SpectrumParameters piersonMoskowitzParameters(double windSpeed10_mps);
+SWELL_API SpectrumParameters piersonMoskowitzParameters(double windSpeed10_mps);
 
 // The wind sea for a wind, after the clamping generateWaves() applies.
 // Fetch-limited (chi = g*F/U10^2): Hs and omega_p follow the JONSWAP growth
@@ -81,36 +83,36 @@ SpectrumParameters piersonMoskowitzParameters(double windSpeed10_mps);
 // whatever makes the spectrum carry exactly that Hs. Each law stops at the
 // Pierson-Moskowitz value; once both have, the sea is fully developed and the
 // spectrum is Pierson-Moskowitz's.
-SpectrumParameters jonswapParameters(const WindSettings& wind);
+SWELL_API SpectrumParameters jonswapParameters(const WindSettings& wind);
 
 // The swell's spectrum: peak at 2*pi/period_s, the given gamma, alpha that
 // gives height_m in deep water. Throws std::invalid_argument on non-finite input.
-SpectrumParameters swellParameters(const SwellSettings& swell, double depth_m);
+SWELL_API SpectrumParameters swellParameters(const SwellSettings& swell, double depth_m);
 
 // The JONSWAP peak enhancement DNV-RP-C205 (2010, sec. 3.5.5.5) recommends
 // for a sea of significant height Hs and peak period Tp: 5 up to
 // Tp/sqrt(Hs) = 3.6 s/sqrt(m), exp(5.75 - 1.15*Tp/sqrt(Hs)) between, 1 from 5 on.
-double dnvPeakEnhancement(double peakPeriod_s, double significantHeight_m);
+SWELL_API double dnvPeakEnhancement(double peakPeriod_s, double significantHeight_m);
 
 // The alpha that makes a deep-water JONSWAP spectrum of this peak and gamma
 // carry significant wave height Hs (4*sqrt(m0) = Hs), from the integral of its shape.
-double jonswapAlphaFor(double significantHeight_m, double peakFrequency_radps, double gamma);
+SWELL_API double jonswapAlphaFor(double significantHeight_m, double peakFrequency_radps, double gamma);
 
 // Energy density S(omega), m^2*s/rad, at angular frequency omega_radps > 0
 // (0 elsewhere), TMA factor included.
-double spectralDensity(const SpectrumParameters& spectrum, double omega_radps);
+SWELL_API double spectralDensity(const SpectrumParameters& spectrum, double omega_radps);
 
 // The TMA factor Phi(omega, h) (Kitaigorodskii et al. 1975, used by Bouws et
 // al. 1985): how much of the deep-water spectrum depth h leaves at omega.
 // 1 in deep water, omega^2*h/(2g) in very shallow water.
-double tmaFactor(double omega_radps, double depth_m);
+SWELL_API double tmaFactor(double omega_radps, double depth_m);
 
 // Wavenumber, rad/m, of angular frequency omega in water of depth h: the
 // root of omega^2 = g*k*tanh(k*h). Inverse of angularFrequency().
-double wavenumberOf(double omega_radps, double depth_m);
+SWELL_API double wavenumberOf(double omega_radps, double depth_m);
 
 // Group velocity d(omega)/dk, m/s, of wavenumber k in depth h.
-double groupVelocity(double wavenumber_radpm, double depth_m);
+SWELL_API double groupVelocity(double wavenumber_radpm, double depth_m);
 
 // ---------------------------------------------------------------------------
 // Directional spreading
@@ -119,7 +121,7 @@ double groupVelocity(double wavenumber_radpm, double depth_m);
 // 1/rad and integrates to 1 over theta in (-pi, pi]; theta is measured from
 // the component's mean direction. Outside |theta| <= cut_rad it is 0, and
 // inside it is scaled up so that it still integrates to 1.
-struct Spreading {
+struct SWELL_API Spreading {
     SpreadingModel model = SpreadingModel::Mitsuyasu;
     double peakFrequency_radps = 1.0;
     // U10/c_p, the inverse wave age at the peak; sets how fast a wind sea's
@@ -132,19 +134,19 @@ struct Spreading {
 };
 
 // The exponent s of cos^2s(theta/2) at omega (Mitsuyasu spreading or a swell).
-double spreadingExponent(const Spreading& spreading, double omega_radps);
+SWELL_API double spreadingExponent(const Spreading& spreading, double omega_radps);
 
 // beta of the sech^2(beta*theta) spreading at omega (Donelan et al. 1985; Banner 1990).
-double donelanBannerBeta(double omegaOverPeak);
+SWELL_API double donelanBannerBeta(double omegaOverPeak);
 
 // D(theta; omega), 1/rad.
-double spreadingDensity(const Spreading& spreading, double omega_radps, double theta_rad);
+SWELL_API double spreadingDensity(const Spreading& spreading, double omega_radps, double theta_rad);
 
 // ---------------------------------------------------------------------------
 // The sea: wind sea plus swell
 
 // One part of the sea: a frequency spectrum travelling around a mean direction.
-struct SeaComponent {
+struct SWELL_API SeaComponent {
     SpectrumParameters spectrum;
     double direction_rad = 0.0; // mean direction of travel, from +x towards +z
     Spreading spreading;
@@ -153,7 +155,7 @@ struct SeaComponent {
 // The directional spectrum of the sea a WindSettings describes, for samplers
 // such as an FFT ocean. Directions are angles from +x towards +z (the
 // direction a wave travels); a wave vector (k_x, k_z) travels at atan2(k_z, k_x).
-class SeaSpectrum {
+class SWELL_API SeaSpectrum {
 public:
     // Clamps and checks the wind as generateWaves() does (throws
     // std::invalid_argument on NaN or infinite input, and on depth <= 0).
@@ -188,7 +190,7 @@ private:
 
 // Significant wave height 4*sqrt(m0), m, of a wave set, where m0 = sum(A^2/2)
 // is the variance of the surface height.
-double significantWaveHeight(const WaveSet& set);
+SWELL_API double significantWaveHeight(const WaveSet& set);
 
 // Draws a wave set whose energy follows the sea's spectrum (SeaSpectrum of
 // the wind), waveCount waves for the wind sea and, with a swell,
@@ -219,6 +221,6 @@ double significantWaveHeight(const WaveSet& set);
 // The same settings give bit-identical waves: the random numbers come from
 // std::mt19937, whose sequence the C++ standard fixes, through distributions
 // written here, not the standard library's implementation-defined ones.
-WaveSet generateWaves(const WindSettings& wind);
+SWELL_API WaveSet generateWaves(const WindSettings& wind);
 
 } // namespace swell

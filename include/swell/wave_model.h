@@ -11,6 +11,8 @@
 // wave heights fade towards the horizon.
 #pragma once
 
+#include "swell/export.h"
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -30,12 +32,12 @@ class ShaderSources;
 // How far a model can move the surface from its rest plane, m: up or down,
 // and sideways. Culling pads the grid's tiles by it, and the reflection's
 // bounds pad floating objects by it.
-struct WaveReach {
+struct SWELL_API WaveReach {
     double vertical_m = 0.0, horizontal_m = 0.0;
 };
 
 // Which surface a query evaluates. The default is the exact surface.
-struct SurfaceFilter {
+struct SWELL_API SurfaceFilter {
     // The spacing of the samples that carry the surface, m: components that
     // such samples cannot resolve are faded out exactly as the GPU fades them
     // (for the grid's vertices, their cell size; for a pixel's normal, its
@@ -46,12 +48,12 @@ struct SurfaceFilter {
 };
 
 // The displaced surface at one rest point.
-struct SurfacePoint {
+struct SWELL_API SurfacePoint {
     glm::dvec3 displacement_m{0.0}; // from the rest point (x0.x, 0, x0.z)
     glm::dvec3 normal{0.0, 1.0, 0.0}; // unit, pointing up
 };
 
-class WaveModel {
+class SWELL_API WaveModel {
 public:
     virtual ~WaveModel();
 
@@ -86,6 +88,6 @@ struct Scene;
 // The model a scene describes: the Gerstner sum of its waves (resolveWaves()
 // with limitSteepness() applied). Throws swell::InputError when the waves are
 // not usable.
-std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene);
+SWELL_API std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene);
 
 } // namespace swell

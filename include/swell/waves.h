@@ -11,6 +11,8 @@
 // with wavenumber k = 2*pi/wavelength and omega from the dispersion relation.
 #pragma once
 
+#include "swell/export.h"
+
 #include "swell/constants.h"
 #include "swell/shader_constants.h"
 #include "swell/wave_model.h"
@@ -26,7 +28,7 @@
 namespace swell {
 
 // One wave as a user writes it.
-struct Wave {
+struct SWELL_API Wave {
     glm::dvec2 direction{1.0, 0.0}; // direction of travel in the xz plane; normalised on use
     double wavelength_m = 10.0;     // crest to crest, m, > 0
     double amplitude_m = 0.1;       // crest height above rest, m, >= 0
@@ -35,7 +37,7 @@ struct Wave {
 };
 
 // The set of waves summed over the ocean, with the water depth they travel in.
-struct WaveSet {
+struct SWELL_API WaveSet {
     std::vector<Wave> waves;
     // Water depth, m, > 0; infinity means deep water (omega^2 = g*k).
     double depth_m = std::numeric_limits<double>::infinity();
@@ -44,64 +46,64 @@ struct WaveSet {
 // The wavenumber vector k*d, rad/m: the normalised direction times
 // 2*pi/wavelength. Every function here uses exactly this value, so a caller
 // that evaluates theta itself (the GPU upload, tests) should too.
-glm::dvec2 wavenumberVector(const Wave& wave);
+SWELL_API glm::dvec2 wavenumberVector(const Wave& wave);
 
 // Angular frequency, rad/s, of a wave of wavenumber k (rad/m) in water of
 // depth depth_m: omega^2 = g*k*tanh(k*depth), or g*k in deep water.
-double angularFrequency(double wavenumber_radpm, double depth_m);
+SWELL_API double angularFrequency(double wavenumber_radpm, double depth_m);
 
 // The fold-free measure sum(Q_i * k_i * A_i). Above 1 the surface loops over itself.
-double foldMeasure(const WaveSet& set);
+SWELL_API double foldMeasure(const WaveSet& set);
 
 // How far a wave set can move the surface from its rest plane, m: up or down
 // (the sum of amplitudes) and sideways (the sum of Q * amplitude).
-WaveReach waveReach(const WaveSet& set);
+SWELL_API WaveReach waveReach(const WaveSet& set);
 
 // Why a wave set is not usable, or an empty string. Checks finiteness,
 // wavelength > 0, amplitude >= 0, steepness in 0..1, depth > 0, a non-zero
 // direction, and at most SWELL_MAX_WAVES waves.
-std::string validate(const WaveSet& set);
+SWELL_API std::string validate(const WaveSet& set);
 
 // Scales every steepness so that foldMeasure(set) <= 1. Returns a warning that
 // names the waves that contributed most when it had to scale, else "".
-std::string limitSteepness(WaveSet& set);
+SWELL_API std::string limitSteepness(WaveSet& set);
 
 // Displacement (dx, dy, dz), m, of the rest point x0 = (x, z) at time t, s.
-glm::dvec3 displacementAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s);
+SWELL_API glm::dvec3 displacementAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s);
 
 // Partial derivatives of the displaced position P(x0) = (x0.x, 0, x0.z) + D(x0)
 // with respect to the rest coordinates, dimensionless.
-struct SurfacePartials {
+struct SWELL_API SurfacePartials {
     glm::dvec3 alongX{1.0, 0.0, 0.0}; // dP/dx0, the tangent
     glm::dvec3 alongZ{0.0, 0.0, 1.0}; // dP/dz0, the binormal
 };
 
 // Analytic partial derivatives of the sum at rest point x0 and time t, s.
-SurfacePartials partialsAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s);
+SWELL_API SurfacePartials partialsAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s);
 
 // Unit surface normal at the displaced image of rest point x0, from the
 // analytic partial derivatives of the sum.
-glm::dvec3 normalAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s);
+SWELL_API glm::dvec3 normalAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s);
 
 // The weight of a wave of wavelength_m where the surface is carried by
 // samples footprint_m apart (the grid's cells, a pixel's footprint): 0 below
 // SWELL_MIN_CELLS_PER_WAVELENGTH samples per wavelength, where it would
 // alias, 1 from SWELL_FULL_CELLS_PER_WAVELENGTH on, smooth between. 1 for a
 // footprint of 0. The GPU's twin is waveLodWeight() in shaders/ocean/gerstner.glsl.
-double waveLodWeight(double wavelength_m, double footprint_m);
+SWELL_API double waveLodWeight(double wavelength_m, double footprint_m);
 
 // The set as a filter sees it: every amplitude times the horizon fade and
 // its wave's waveLodWeight().
-WaveSet filteredWaves(const WaveSet& set, const SurfaceFilter& filter);
+SWELL_API WaveSet filteredWaves(const WaveSet& set, const SurfaceFilter& filter);
 
 // Displacement and unit normal at rest point x0 and time t, of the filtered
 // set: what the GPU's oceanSurface() computes for the same filter.
-SurfacePoint surfaceAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter);
+SWELL_API SurfacePoint surfaceAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter);
 
 // Surface height, m, at world (x, z) = worldPoint_m: solves for the rest
 // point whose horizontal image is worldPoint_m, then returns its dy. Accurate
 // to well under 1 mm for fold-free sets.
-double heightAt(const WaveSet& set, glm::dvec2 worldPoint_m, double time_s);
+SWELL_API double heightAt(const WaveSet& set, glm::dvec2 worldPoint_m, double time_s);
 
 // The rest point x0 whose displaced horizontal position is worldPoint_m.
 // Newton's method on x0 + Dxz(x0) = worldPoint_m with the analytic 2x2
@@ -110,12 +112,12 @@ double heightAt(const WaveSet& set, glm::dvec2 worldPoint_m, double time_s);
 // the fixed-point step. It stops once the residual is below 1e-10 m (or 1e-15
 // of the summed amplitudes, for sets too big for that), when no step helps any
 // more, or after 100 steps. Fold-free sets typically need 2 to 5 steps.
-glm::dvec2 restPointUnder(const WaveSet& set, glm::dvec2 worldPoint_m, double time_s);
+SWELL_API glm::dvec2 restPointUnder(const WaveSet& set, glm::dvec2 worldPoint_m, double time_s);
 
 // Phase of wave i at rest point origin_m and time t, wrapped to [-pi, pi) in
 // double precision. The GPU evaluates theta = k*dot(d, x0 - origin) + this,
 // so that float precision is spent only near the camera.
-double wrappedPhase(const Wave& wave, double depth_m, glm::dvec2 origin_m, double time_s);
+SWELL_API double wrappedPhase(const Wave& wave, double depth_m, glm::dvec2 origin_m, double time_s);
 
 // Many height queries at one time, for buoyancy and picking. The constructor
 // does the per-wave work once (wavenumber vectors, amplitude terms, the phase
@@ -132,7 +134,7 @@ double wrappedPhase(const Wave& wave, double depth_m, glm::dvec2 origin_m, doubl
 // evaluations of the waves, stopping once a step is under kStepTolerance_m;
 // that last step is then applied to the height to first order. Typical
 // queries take 2 or 3 evaluations.
-class WaveSampler {
+class SWELL_API WaveSampler {
 public:
     // Which instructions the queries use. Auto picks AVX2 with FMA where the
     // CPU has them (x86-64 built with GCC or Clang), else Baseline: SSE2 on

@@ -13,9 +13,9 @@
 namespace swell::detail {
 
 struct MeshVertex {
-    glm::vec3 position; // object space, m
-    glm::vec3 normal;
-    glm::vec3 color;    // linear RGB albedo
+    glm::vec3 position{}; // object space, m
+    glm::vec3 normal{};
+    glm::vec3 color{};    // linear RGB albedo
 };
 
 struct MeshData {

@@ -64,8 +64,14 @@ DebugHandler logOnceDebugHandler()
 {
     auto seen = std::make_shared<std::set<std::string>>();
     return [seen](const DebugMessage& m) {
+        // A shader that does not compile or link is reported by buildProgram
+        // as an error naming the file and line; the driver's copy of the same
+        // log ("GL error 1: 0:12(5): ...") would only repeat it unmapped.
+        if (m.source == GL_DEBUG_SOURCE_SHADER_COMPILER)
+            return;
         if (seen->insert(m.text).second)
-            std::fprintf(stderr, "swell: %s\n", m.str().c_str());
+            std::fprintf(stderr, "swell: OpenGL driver %s: %s\n",
+                         m.type == GL_DEBUG_TYPE_ERROR ? "error" : "message", m.text.c_str());
     };
 }
 

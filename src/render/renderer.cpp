@@ -12,6 +12,7 @@
 #include "render/wave_model_gpu.h"
 #include "render/world.h"
 #include "swell/error.h"
+#include "swell/gl/shader.h"
 #include "swell/grid.h"
 #include "swell/scene_changes.h"
 
@@ -173,6 +174,9 @@ struct Renderer::Impl {
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        // The shaders write display-ready (sRGB-encoded) colour: a host that
+        // enabled sRGB writes would have it encoded twice.
+        glDisable(GL_FRAMEBUFFER_SRGB);
         // Filter across cubemap face edges (off by default even in core profiles).
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
         glClearColor(clear.r, clear.g, clear.b, clear.a);

@@ -206,6 +206,14 @@ private:
                          shown, hint));
     }
 
+    static bool isTopLevelKey(std::string_view name)
+    {
+        for (const Parameter& p : parameters())
+            if (p.list == ParameterList::None && p.key == name)
+                return true;
+        return false;
+    }
+
     [[noreturn]] void unknownKey(const toml::key& key, const std::string& schema, const std::string& shownPrefix,
                                  ParameterList list)
     {
@@ -241,6 +249,12 @@ private:
         if (guess) {
             auto at = std::find(schemaNames.begin(), schemaNames.end(), *guess) - schemaNames.begin();
             message += fmt::format("; did you mean '{}'?", shownNames[static_cast<std::size_t>(at)]);
+        } else if (const std::size_t dot = shown.rfind('.'); dot != std::string::npos && isTopLevelKey(key.str())) {
+            // In TOML a key belongs to the last [table] above it, so a
+            // top-level key written after one lands in that table.
+            message += fmt::format("; '{}' is a top-level key: write it above the first [table] header, "
+                                   "since every key after [{}] belongs to that table",
+                                   key.str(), shown.substr(0, dot));
         }
         fail(places_.of(key.source()), message);
     }

@@ -43,6 +43,14 @@ Scene parseScene(std::string_view text, const fs::path& virtualPath)
     try {
         root = toml::parse(text, std::string_view(places.path()));
     } catch (const toml::parse_error& e) {
+        const bool arrayOpen = e.description().find("closing ']'") != std::string_view::npos;
+        if (const std::optional<SourcePlace> open =
+                arrayOpen ? detail::scenefile::unclosedArrayBefore(text, int(e.source().begin.line),
+                                                                  int(e.source().begin.column), places.path())
+                          : std::nullopt)
+            fail(*open, fmt::format("TOML syntax: this array has no closing ']' (the parser read on into line {} "
+                                    "and stopped there: {})",
+                                    e.source().begin.line, e.description()));
         fail(places.of(e.source()), fmt::format("TOML syntax: {}", e.description()));
     }
 

@@ -278,4 +278,58 @@ void scanSceneText(std::string_view text, const std::string& path)
     StructureScan(text, path).run();
 }
 
+std::optional<SourcePlace> unclosedArrayBefore(std::string_view text, int errorLine, int errorColumn,
+                                               const std::string& path)
+{
+    std::vector<std::pair<int, std::size_t>> open; // line and offset of each '[' still open
+    int line = 1;
+    std::size_t lineStart = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (line > errorLine || (line == errorLine && i - lineStart + 1 >= std::size_t(errorColumn)))
+            break;
+        const char c = text[i];
+        if (c == '\n') {
+            ++line;
+            lineStart = i + 1;
+        } else if (c == '#') {
+            while (i + 1 < text.size() && text[i + 1] != '\n')
+                ++i;
+        } else if (c == '"' || c == '\'') {
+            // A basic or literal string on one line; multi-line strings are not
+            // looked into (an error inside one is reported where the parser says).
+            while (i + 1 < text.size() && text[i + 1] != c && text[i + 1] != '\n')
+                i += text[i + 1] == '\\' && c == '"' ? 2 : 1;
+            ++i;
+        } else if (c == '[') {
+            open.emplace_back(line, i);
+        } else if (c == ']' && !open.empty()) {
+            open.pop_back();
+        }
+    }
+    if (open.empty() || open.back().first >= errorLine)
+        return std::nullopt;
+    // Only where the parser stopped at the first thing on its line, and the
+    // array's line goes on after its '[' (an array written one element a line
+    // has its '[' last: there the missing piece is more likely a comma).
+    const std::size_t errorLineStart = lineStart;
+    const std::size_t firstToken = text.find_first_not_of(" \t", errorLineStart);
+    if (firstToken == std::string_view::npos || firstToken - errorLineStart + 1 != std::size_t(errorColumn))
+        return std::nullopt;
+    // The end of the opening line, comments and trailing blanks left out.
+    const std::size_t from = open.back().second;
+    std::size_t end = text.find('\n', from);
+    if (end == std::string_view::npos)
+        end = text.size();
+    std::string_view rest = text.substr(from, end - from);
+    if (const std::size_t hash = rest.find('#'); hash != std::string_view::npos)
+        rest = rest.substr(0, hash);
+    while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t' || rest.back() == '\r'))
+        rest.remove_suffix(1);
+    if (rest.size() <= 1)
+        return std::nullopt;
+    const std::size_t start = text.rfind('\n', from) == std::string_view::npos ? 0 : text.rfind('\n', from) + 1;
+    return SourcePlace{path, open.back().first, int(from - start + rest.size()) + 1};
+}
+
+
 } // namespace swell::detail::scenefile

@@ -1,6 +1,9 @@
 // Step 1 of reading a scene: the text before the TOML parser sees it.
 #pragma once
 
+#include "swell/error.h"
+
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -12,5 +15,14 @@ namespace swell::detail::scenefile {
 // at `path`, line and column of the first problem; broken TOML syntax is left
 // for the parser.
 void scanSceneText(std::string_view text, const std::string& path);
+
+// A missing ']' at the end of an array's line is found by the TOML parser
+// only on the next line, which it reads as more of the array. When the
+// parser's error at `errorLine`:`errorColumn` lies on a later line than the
+// innermost array still open there, this is the place to report instead:
+// the end of the line that opened that array. Strings and comments are
+// skipped; nullopt when no array is open.
+std::optional<SourcePlace> unclosedArrayBefore(std::string_view text, int errorLine, int errorColumn,
+                                               const std::string& path);
 
 } // namespace swell::detail::scenefile

@@ -77,8 +77,9 @@ void expectAgreement(const swell::Scene& scene, glm::dvec3 cameraPosition, doubl
     EXPECT_LT(worstRest, 1e-3) << "grid rest points differ";
     EXPECT_LT(worstPosition, 1e-3) << "displaced positions differ at t=" << time_s;
     // Normals: float sin/cos of phases up to ~10^4 rad carry ~10^-3 rad.
-    if (normals == Normals::Compared)
+    if (normals == Normals::Compared) {
         EXPECT_LT(worstNormal, 2e-3) << "normals differ at t=" << time_s;
+    }
 }
 
 TEST_F(WaveAgreement, NearTheOriginAtSeveralTimes)

@@ -13,9 +13,9 @@
 namespace swell::test {
 
 struct WaterVertex {
-    glm::dvec2 rest_m;      // absolute world x,z of the rest point
-    glm::dvec3 position_m;  // absolute world position after displacement
-    glm::dvec3 normal;
+    glm::dvec2 rest_m{};     // absolute world x,z of the rest point
+    glm::dvec3 position_m{}; // absolute world position after displacement
+    glm::dvec3 normal{};
     int i = 0, j = 0;       // grid line indices
     double snapMargin = 0.5;    // CPU only: how near its snap was to a tie, lattice steps (swell::GridPoint)
     double latticeStep_m = 0.0; // CPU only: the coarser lattice step it snapped to

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Installs the Swell build at $1 into a fresh prefix, builds the outside
-# project against it with find_package(Swell), runs it, and checks the PNG.
+# The embedding example of docs/LIBRARY.md as an outside project: installs the
+# Swell build at $1 into a fresh prefix, builds this folder against it with
+# find_package(Swell), runs it, and checks the PNG. CMakeLists.txt and
+# embed_example.cpp here must be exactly what docs/LIBRARY.md shows, so the
+# documented example is the one that is built (no C++ standard or anything
+# else set by the test).
 set -euo pipefail
 build=$1
 work=$2
 here=$(cd "$(dirname "$0")" && pwd)
+python3 "$here/check_docs_example.py" "$here/../../docs/LIBRARY.md" "$here/CMakeLists.txt" "$here/embed_example.cpp"
 rm -rf "$work"
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 cmake -S "$here" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null

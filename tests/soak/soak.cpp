@@ -23,7 +23,10 @@
 // one fixed state before the run and again after it.
 //
 // Usage: swell_soak [--frames N] [--warmup N] [--cycle N] [--max-slope B] [--size WxH]
-// (--max-slope: the growth limit in bytes per frame; the default is below)
+//                   [--no-memory-verdict]
+// (--max-slope: the growth limit in bytes per frame; the default is below.
+// --no-memory-verdict: report the memory slope but judge only GL objects and
+// errors, which do not depend on how busy the machine is)
 // Exit: 0 passed; 2 bad arguments; 3 GL objects not back to baseline;
 // 4 memory grows faster than the threshold; 5 a GL error or high-severity
 // debug message; 1 anything else (no context, a bad preset).
@@ -70,6 +73,10 @@ constexpr int kExitGlError = 5;
 constexpr double kMaxSlope_bytesPerFrame = 512.0;
 
 struct Options {
+    // Whether the run fails on memory growth. Resident memory is a reading of
+    // the whole machine's weather as much as of Swell (see TESTING.md): CTest's
+    // run leaves the verdict to GL objects and errors, which are exact.
+    bool memoryVerdict = true;
     int frames = 10000;
     int warmup = 1000;
     int cycle = 200;
@@ -91,6 +98,10 @@ bool parseArguments(int argc, char** argv, Options& o)
 {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
+        if (arg == "--no-memory-verdict") {
+            o.memoryVerdict = false;
+            continue;
+        }
         if (i + 1 >= argc)
             return false;
         const char* value = argv[++i];
@@ -287,7 +298,9 @@ int soak(const Options& o)
             std::printf("swell_soak: FAILED: GL objects did not return to the baseline\n");
             return kExitGlObjects;
         }
-        if (!(growth <= o.maxSlope_bytesPerFrame)) {
+        if (!o.memoryVerdict)
+            std::printf("swell_soak: memory not judged (--no-memory-verdict): the slope above is for information\n");
+        else if (!(growth <= o.maxSlope_bytesPerFrame)) {
             std::printf("swell_soak: FAILED: resident memory grows %.1f B/frame, over the limit of %.0f\n", growth,
                         o.maxSlope_bytesPerFrame);
             return kExitMemoryGrowth;
@@ -313,6 +326,7 @@ int main(int argc, char** argv)
     Options options;
     if (!parseArguments(argc, argv, options)) {
         std::fprintf(stderr, "usage: swell_soak [--frames N] [--warmup N] [--cycle N] [--max-slope B] [--size WxH]\n"
+                             "                  [--no-memory-verdict]\n"
                              "  (cycle >= 50; frames - warmup must span at least 3 cycles)\n");
         return kExitBadArguments;
     }

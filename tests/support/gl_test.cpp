@@ -38,6 +38,8 @@ void GlTest::SetUpTestSuite()
 
 void GlTest::SetUp() { messages().clear(); }
 
+void GlTest::restoreDebugHandler() { gl::installDebugHandler(&handler()); }
+
 void GlTest::TearDown()
 {
     glFinish();

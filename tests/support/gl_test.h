@@ -15,6 +15,8 @@ class GlTest : public ::testing::Test {
 public:
     // Messages seen since the test began (errors fail it on tear-down).
     static std::vector<gl::DebugMessage>& messages();
+    // Installs the fixture's handler again, after a test installed its own.
+    static void restoreDebugHandler();
 
 protected:
     static void SetUpTestSuite();

@@ -22,13 +22,13 @@ Gui::Gui(GLFWwindow* window)
     style.Colors[ImGuiCol_WindowBg].w = 0.88f;
     if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) {
         ImGui::DestroyContext();
-        throw Error("swell::app::viewer::Gui: the ImGui GLFW backend did not start");
+        throw Error("cannot start the viewer's panel: Dear ImGui's GLFW backend did not start");
     }
     // GLSL 4.10+ shaders with explicit locations; the context is 4.5 core.
     if (!ImGui_ImplOpenGL3_Init("#version 450 core")) {
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
-        throw Error("swell::app::viewer::Gui: the ImGui OpenGL backend did not start");
+        throw Error("cannot start the viewer's panel: Dear ImGui's OpenGL backend did not start");
     }
 }
 

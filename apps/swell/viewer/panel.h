@@ -10,6 +10,7 @@
 #pragma once
 
 #include "viewer/fly_camera.h"
+#include "viewer/frame_times.h"
 #include "viewer/session.h"
 
 #include "swell/parameters.h"
@@ -17,7 +18,6 @@
 
 #include <glm/vec2.hpp>
 
-#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -26,34 +26,36 @@
 
 namespace swell::app::viewer {
 
+// How much of the panel shows; F1 goes through them in this order.
+enum class PanelMode {
+    Full,    // the sidebar with every section
+    Overlay, // a small box in a corner: frame time, time and the keys
+    Hidden,  // nothing over the ocean
+};
+PanelMode nextPanelMode(PanelMode mode);
+
 // What the viewer loop and the panel share about the view (not the scene).
 struct ViewState {
     double time_s = 0.0;           // simulation time, s
     bool paused = false;
-    double timeRate = 1.0;         // simulated seconds per real second
+    double timeRate = 1.0;         // simulated seconds per real second, as asked for
+    // Simulated seconds per real second as they really went over the last
+    // second: lower than timeRate when frames are slow (the clock advances
+    // at most 0.25 s per frame), 0 while paused.
+    double actualTimeRate = 1.0;
     bool followSceneCamera = true; // the scene's camera (and its path); false: free flight
     FlyCamera fly;
-    bool showPanel = true;
+    PanelMode panel = PanelMode::Full;
 };
 
-// The last kCount frame times, for the plot.
-class FrameTimes {
-public:
-    static constexpr int kCount = 240;
-    void add(float ms);
-    // Oldest first from offset(), wrapping, as ImGui::PlotLines takes them.
-    const float* values() const { return values_.data(); }
-    int offset() const { return next_; }
-    int count() const { return kCount; }
-    float average() const;
-    float maximum() const;
-    float latest() const;
-
-private:
-    std::array<float, kCount> values_{};
-    int next_ = 0;
-    int filled_ = 0;
+// The keys, as the panel's help lines and docs/VIEWER.md list them.
+inline constexpr const char* kKeyHelp[] = {
+    "Right drag: look   WASD: move   Q/E: down/up",
+    "Shift: faster   wheel: fly speed   Space: pause",
+    "F1: panel/overlay/none   F5: reload shaders",
+    "F12: screenshot   Esc: quit",
 };
+
 
 // What the panel shows about the last frame.
 struct FrameStats {
@@ -75,7 +77,10 @@ public:
     // presetFolder: the repository's scenes/, listed for loading.
     explicit Panel(std::filesystem::path presetFolder);
 
+    // The full sidebar.
     PanelRequests draw(Session& session, ViewState& view, const FrameStats& stats);
+    // The small overlay: frame time, simulation time and its real rate, the keys.
+    PanelRequests drawOverlay(ViewState& view, const FrameStats& stats);
 
     // The outcome of the last screenshot, shown under the view section.
     void setScreenshotMessage(Message message) { screenshot_ = std::move(message); }

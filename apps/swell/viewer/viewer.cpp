@@ -7,6 +7,7 @@
 // --screenshot of the last) do not depend on how fast the machine is.
 #include "viewer/viewer.h"
 
+#include "data_folders.h"
 #include "scene_loading.h"
 #include "viewer/gui.h"
 #include "viewer/panel.h"
@@ -74,6 +75,29 @@ public:
 private:
     GLFWwindow* window_;
     std::set<int> pressed_;
+};
+
+// The rate simulation time really advances at, simulated seconds per real
+// second, over about the last second. It differs from the rate asked for
+// when frames take longer than kMaxFrameStep_s (software GL at a large
+// window) or time is paused.
+class TimeRateMeter {
+public:
+    void add(double simulated_s, double real_s)
+    {
+        simulated_s_ += simulated_s;
+        real_s_ += real_s;
+        if (real_s_ >= kWindow_s) {
+            rate_ = simulated_s_ / real_s_;
+            simulated_s_ = real_s_ = 0.0;
+        }
+    }
+    double rate() const { return rate_; }
+
+private:
+    static constexpr double kWindow_s = 1.0;
+    double simulated_s_ = 0.0, real_s_ = 0.0;
+    double rate_ = 1.0;
 };
 
 // Turns the mouse and keyboard into fly-camera input, leaving to ImGui what
@@ -159,11 +183,11 @@ int run(const ViewOptions& options)
     Window window(title, {options.width, options.height}, !scripted);
     gl::DebugHandler debug = gl::logOnceDebugHandler();
     gl::installDebugHandler(&debug);
-    Session session(std::move(scene), options.scenePath,
-                    ShaderFolders{fs::path(SWELL_SOURCE_DIR) / "shaders", fs::path(SWELL_SOURCE_DIR) / "include"});
+    const DataFolders data = dataFolders();
+    Session session(std::move(scene), options.scenePath, ShaderFolders{data.shaders, data.include});
     KeyPresses keys(window.handle());
     Gui gui(window.handle());
-    Panel panel(fs::path(SWELL_SOURCE_DIR) / "scenes");
+    Panel panel(data.scenes);
     panel.sceneLoaded(options.scenePath);
 
     ViewState view;
@@ -171,6 +195,7 @@ int run(const ViewOptions& options)
     FlyControls controls(window.handle());
     FrameStats stats;
     stats.context = window.description();
+    TimeRateMeter rate;
 
     double last = glfwGetTime();
     for (int frame = 0; !window.shouldClose(); ++frame) {
@@ -193,8 +218,12 @@ int run(const ViewOptions& options)
             view.time_s = frame * kScriptedFrame_s;
         } else {
             const ImGuiIO& io = ImGui::GetIO();
+            // Esc quits, unless it is ending an edit in the panel (ImGui
+            // takes it to leave a text field or an open list).
+            if (keys.take(GLFW_KEY_ESCAPE) && !ImGui::IsAnyItemActive() && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopup))
+                window.requestClose();
             if (keys.take(GLFW_KEY_F1))
-                view.showPanel = !view.showPanel;
+                view.panel = nextPanelMode(view.panel);
             reloadShaders = keys.take(GLFW_KEY_F5);
             screenshot = keys.take(GLFW_KEY_F12);
             if (keys.take(GLFW_KEY_SPACE) && !io.WantCaptureKeyboard)
@@ -210,12 +239,15 @@ int run(const ViewOptions& options)
                 view.fly.update(input, std::min(frame_s, kMaxFlyStep_s));
             else if (input.wheel != 0.0)
                 view.fly.update(FlyInput{.wheel = input.wheel}, 0.0);
-            if (!view.paused)
-                view.time_s += std::min(frame_s, kMaxFrameStep_s) * view.timeRate;
+            const double step_s = view.paused ? 0.0 : std::min(frame_s, kMaxFrameStep_s) * view.timeRate;
+            view.time_s += step_s;
+            rate.add(step_s, frame_s);
+            view.actualTimeRate = rate.rate();
         }
 
-        if (view.showPanel) {
-            const PanelRequests requests = panel.draw(session, view, stats);
+        if (view.panel != PanelMode::Hidden) {
+            const PanelRequests requests = view.panel == PanelMode::Full ? panel.draw(session, view, stats)
+                                                                         : panel.drawOverlay(view, stats);
             reloadShaders |= requests.reloadShaders;
             screenshot |= requests.screenshot;
         }

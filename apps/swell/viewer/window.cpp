@@ -66,10 +66,10 @@ Window::Window(const std::string& title, glm::ivec2 size, bool vsync)
 {
     glfwSetErrorCallback(keepGlfwError);
     if (!environmentHasDisplay())
-        throw Error("swell::app::viewer::Window: no display (neither DISPLAY nor WAYLAND_DISPLAY is set); "
+        throw Error("no display for the viewer window (neither DISPLAY nor WAYLAND_DISPLAY is set); "
                     "use `swell render` to render without one");
     if (glfwInit() != GLFW_TRUE)
-        throw Error("swell::app::viewer::Window: cannot start GLFW: " + takeGlfwError());
+        throw Error("cannot open the viewer window: GLFW did not start: " + takeGlfwError());
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -80,7 +80,7 @@ Window::Window(const std::string& title, glm::ivec2 size, bool vsync)
     if (!window_) {
         const std::string reason = takeGlfwError();
         glfwTerminate();
-        throw Error("swell::app::viewer::Window: cannot open a window with an OpenGL 4.5 core context: " + reason);
+        throw Error("cannot open the viewer window with an OpenGL 4.5 core context: " + reason);
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(vsync ? 1 : 0);
@@ -93,6 +93,8 @@ Window::~Window()
 }
 
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+
+void Window::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 
 glm::ivec2 Window::framebufferSize() const
 {

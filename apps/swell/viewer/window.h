@@ -27,7 +27,9 @@ public:
     Window& operator=(const Window&) = delete;
 
     GLFWwindow* handle() const { return window_; }
+    // True once the window's close button was pressed or requestClose() called.
     bool shouldClose() const;
+    void requestClose();
     // In pixels; 0x0 while the window is minimised.
     glm::ivec2 framebufferSize() const;
     void swapBuffers();

@@ -3,6 +3,8 @@
 // windows come from GLFW in the viewer. Both load functions through libepoxy.
 #pragma once
 
+#include "swell/export.h"
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -10,7 +12,7 @@
 namespace swell::gl {
 
 // One message from the driver's KHR_debug output.
-struct DebugMessage {
+struct SWELL_API DebugMessage {
     unsigned source = 0, type = 0, id = 0, severity = 0;
     std::string text;
     // An error, or a high-severity message: tests fail on these.
@@ -24,12 +26,12 @@ using DebugHandler = std::function<void(const DebugMessage&)>;
 // message to handler (synchronously, so the GL call is still on the stack).
 // The handler must outlive the context's use. Returns false when the context
 // has no debug output.
-bool installDebugHandler(DebugHandler* handler);
+SWELL_API bool installDebugHandler(DebugHandler* handler);
 
 // A handler for the apps: logs each distinct message once to stderr.
-DebugHandler logOnceDebugHandler();
+SWELL_API DebugHandler logOnceDebugHandler();
 
-class HeadlessContext {
+class SWELL_API HeadlessContext {
 public:
     // Creates and makes current a 4.5 core context; debug adds KHR_debug output.
     // Throws swell::Error naming what failed when no context can be had.

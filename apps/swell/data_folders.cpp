@@ -1,0 +1,33 @@
+#include "data_folders.h"
+
+#include <system_error>
+
+namespace swell::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The running executable's folder ("" when /proc is not mounted).
+fs::path executableFolder()
+{
+    std::error_code error;
+    const fs::path self = fs::read_symlink("/proc/self/exe", error);
+    return error ? fs::path() : self.parent_path();
+}
+
+} // namespace
+
+DataFolders dataFolders()
+{
+    const fs::path bin = executableFolder();
+    // bin/../share/swell, as install(DIRECTORY ... DESTINATION share/swell) lays it out.
+    const fs::path share = bin.empty() ? fs::path() : bin.parent_path() / "share" / "swell";
+    std::error_code error;
+    if (!share.empty() && fs::is_directory(share / "scenes", error))
+        return {share / "scenes", share / "models", share / "shaders", share / "include", true};
+    const fs::path source = SWELL_SOURCE_DIR;
+    return {source / "scenes", source / "assets" / "models", source / "shaders", source / "include", false};
+}
+
+} // namespace swell::app

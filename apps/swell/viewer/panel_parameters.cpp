@@ -1,0 +1,148 @@
+// The panel's parameter sections: every parameter of the table, grouped by
+// the first part of its key, one widget each; the lists (waves, objects,
+// camera keys) as trees; the switch between wind and listed waves. Rebuild
+// parameters are staged while their slider is held and applied on release.
+#include "viewer/panel.h"
+
+#include "viewer/panel_widgets.h"
+
+#include "swell/shader_constants.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace swell::app::viewer {
+
+bool Panel::editParameter(Session& session, const Parameter& p, std::size_t item, Scene& edited)
+{
+    ImGui::PushID(p.key.data(), p.key.data() + p.key.size());
+    ImGui::PushID(int(item));
+    ParameterValue value = p.get(edited, item);
+    const bool staged = staged_ && staged_->key == p.key && staged_->item == item;
+    if (staged)
+        value = staged_->value;
+    const std::string label = shortName(p.key);
+    const WidgetResult r = editValue(p, label.c_str(), value);
+    ImGui::PopID();
+    ImGui::PopID();
+
+    bool commit = r.changed;
+    if (appliedOnRelease(p)) {
+        if (r.changed && r.active) {
+            staged_ = Staged{p.key, item, value};
+            commit = false;
+        } else if (r.deactivated && staged) {
+            // Let go: `value` holds the staged value, or the last step's.
+            staged_.reset();
+            commit = true;
+        }
+    }
+    if (!commit)
+        return false;
+    if (std::string problem = valueProblem(p, value, valueName(p, item)); !problem.empty()) {
+        session.refuseEdit(std::move(problem));
+        return false;
+    }
+    p.set(edited, item, value);
+    return true;
+}
+
+void Panel::drawList(Session& session, ParameterList list, Scene& edited, bool& changed)
+{
+    const std::size_t count = listSize(edited, list);
+    if (count == 0 && list != ParameterList::Waves)
+        ImGui::TextDisabled("none in this scene");
+    std::optional<std::size_t> remove;
+    for (std::size_t i = 0; i < count; ++i) {
+        ImGui::PushID(int(i));
+        const std::string label = itemLabel(list, edited, i);
+        const bool open = ImGui::TreeNode("##item", "%s", label.c_str());
+        if (list == ParameterList::Waves) {
+            ImGui::SameLine();
+            if (ImGui::SmallButton("remove"))
+                remove = i;
+        }
+        if (open) {
+            for (const Parameter& p : parameters())
+                if (p.list == list && isPresent(p, edited))
+                    changed |= editParameter(session, p, i, edited);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    if (list != ParameterList::Waves)
+        return;
+    std::vector<Wave>& waves = edited.waves.listed.waves;
+    if (remove) {
+        waves.erase(waves.begin() + std::ptrdiff_t(*remove));
+        staged_.reset();
+        changed = true;
+    }
+    ImGui::BeginDisabled(waves.size() >= SWELL_MAX_WAVES);
+    if (ImGui::Button("add wave")) {
+        waves.push_back(Wave{});
+        changed = true;
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu of %d", waves.size(), SWELL_MAX_WAVES);
+}
+
+void Panel::drawParameters(Session& session, Scene& edited, bool& changed)
+{
+    std::vector<std::string_view> sections;
+    for (const Parameter& p : parameters())
+        if (std::find(sections.begin(), sections.end(), sectionOf(p)) == sections.end())
+            sections.push_back(sectionOf(p));
+
+    for (std::string_view section : sections) {
+        const std::string title = sectionTitle(section);
+        if (!ImGui::CollapsingHeader(title.c_str()))
+            continue;
+        ImGui::PushID(title.c_str());
+        for (const Parameter& p : parameters())
+            if (sectionOf(p) == section && p.list == ParameterList::None && !isWindParameter(p) &&
+                p.key != "debug_view" && isPresent(p, edited))
+                changed |= editParameter(session, p, 0, edited);
+
+        if (section == "waves") {
+            bool wind = edited.waves.wind.has_value();
+            if (ImGui::Checkbox("waves from the wind", &wind)) {
+                if (wind) {
+                    edited.waves.wind = lastWind_.value_or(WindSettings{});
+                } else {
+                    lastWind_ = edited.waves.wind;
+                    edited.waves.wind.reset();
+                    // Keep the sea as it looks: the generated waves become the list.
+                    std::vector<Wave>& listed = edited.waves.listed.waves;
+                    if (listed.empty()) {
+                        listed = resolveWaves(edited.waves).waves;
+                        if (listed.size() > SWELL_MAX_WAVES)
+                            listed.resize(SWELL_MAX_WAVES);
+                    }
+                }
+                staged_.reset();
+                changed = true;
+            }
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("On: waves generated from the wind settings.\n"
+                                  "Off: the hand-listed waves (the generated ones are copied in when the list is empty).");
+            for (const Parameter& p : parameters())
+                if (isWindParameter(p) && isPresent(p, edited))
+                    changed |= editParameter(session, p, 0, edited);
+        }
+
+        for (ParameterList list : {ParameterList::Waves, ParameterList::Objects, ParameterList::CameraPath}) {
+            const std::string_view key = listKey(list);
+            if (key.substr(0, key.find('.')) != section)
+                continue;
+            if (list == ParameterList::Waves && edited.waves.wind)
+                continue;
+            drawList(session, list, edited, changed);
+        }
+        ImGui::PopID();
+    }
+}
+
+} // namespace swell::app::viewer

@@ -1,0 +1,64 @@
+// Messages for two mistakes that TOML makes easy, pointing where the fix goes:
+// a top-level key written after a [table] (TOML puts it in that table), and
+// an array whose closing ']' is missing (the parser only notices on the next
+// line, which it reads as more of the array).
+#include "swell/error.h"
+#include "swell/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace {
+
+swell::InputError errorOf(const std::string& toml)
+{
+    try {
+        swell::parseScene(toml, "mistake.toml");
+    } catch (const swell::InputError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for:\n" << toml;
+    return swell::InputError({}, "");
+}
+
+TEST(TomlMessages, TopLevelKeyAfterATableSaysTopLevelKeysComeFirst)
+{
+    const swell::InputError e = errorOf("terrain = true\n[camera]\nposition_m = [0.0, 6.0, 0.0]\ndebug_view = \"normals\"\n");
+    EXPECT_EQ(e.place().line, 4);
+    EXPECT_NE(e.message().find("unknown key 'camera.debug_view'"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("'debug_view' is a top-level key"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("above the first [table]"), std::string::npos) << e.message();
+}
+
+TEST(TomlMessages, AnUnknownKeyInATableDoesNotClaimToBeTopLevel)
+{
+    const swell::InputError e = errorOf("[camera]\nheight_m = 3.0\n");
+    EXPECT_EQ(e.message().find("top-level"), std::string::npos) << e.message();
+}
+
+TEST(TomlMessages, MissingClosingBracketIsReportedOnTheArraysLine)
+{
+    //                                  column 28: just after "0.0"
+    const swell::InputError e = errorOf("[camera]\nposition_m = [0.0, 6.0, 0.0\npitch_deg = -5.0\n");
+    EXPECT_EQ(e.place().line, 2) << e.what();
+    EXPECT_EQ(e.place().column, 28) << e.what();
+    EXPECT_NE(e.message().find("no closing ']'"), std::string::npos) << e.message();
+}
+
+TEST(TomlMessages, MissingBracketBeforeATableHeaderIsReportedOnTheArraysLine)
+{
+    const swell::InputError e = errorOf("[sun]\ncolor = [1.0, 0.9, 0.8   # warm\n\n[fog]\nstart_m = 10.0\n");
+    EXPECT_EQ(e.place().line, 2) << e.what();
+    EXPECT_EQ(e.place().column, 23) << e.what();
+}
+
+TEST(TomlMessages, MissingCommaInAOneElementALineArrayStaysWhereTheParserStopped)
+{
+    // The '[' ends its line: the fault is the missing comma after 6.0, not a bracket.
+    const swell::InputError e = errorOf("[camera]\nposition_m = [\n  0.0,\n  6.0\n  0.0\n]\n");
+    EXPECT_EQ(e.place().line, 5) << e.what();
+    EXPECT_EQ(e.message().find("no closing"), std::string::npos) << e.message();
+}
+
+} // namespace

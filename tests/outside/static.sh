@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# A static Swell (BUILD_SHARED_LIBS=OFF) installs a package that an outside
+# project can use: builds the library alone from the source tree at $1 into
+# $2/swell-build, then runs the same outside-project check as run.sh on it.
+set -euo pipefail
+source=$1
+work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$work"
+cmake -S "$source" -B "$work/swell-build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF \
+  -DSWELL_BUILD_APPS=OFF -DSWELL_BUILD_TESTS=OFF -DSWELL_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build "$work/swell-build" --target swell >/dev/null
+"$here/run.sh" "$work/swell-build" "$work/outside"
+# It was the static library that got linked: no libswell.so was installed.
+if find "$work/outside/prefix" -name 'libswell.so*' | grep -q .; then
+  echo "a static build installed a shared libswell" >&2
+  exit 1
+fi
+test -n "$(find "$work/outside/prefix" -name 'libswell.a')"
+echo "static package: libswell.a found and linked by the outside project"
