@@ -57,7 +57,7 @@ public:
         if (scene_.assetFolder.empty())
             return p;
         const fs::path file = p.is_absolute() ? p : fs::path(scene_.assetFolder) / p;
-        if (p.is_relative() && !resolveInside(resolvedFolder_, p))
+        if (!resolveInside(resolvedFolder_, p))
             fail(key, path, {file.string()},
                  fmt::format("lies outside the scene's folder '{}'; a scene may name only files in its folder or "
                              "below it, links included",

@@ -30,8 +30,8 @@ struct SceneAssets {
 
 // Reads the models and sky faces `scene` names. Relative paths start at
 // Scene::assetFolder (the working directory when it is empty); when the
-// folder is set, every relative path must lie inside it, links included, as
-// the scene file's own checks require; absolute paths are taken as written. Throws InputError at the scene key that named
+// folder is set, every path must lie inside it, links included, as the scene
+// file's own checks require. Throws InputError at the scene key that named
 // the broken file, "scene.toml:LINE:COL: objects[2].path: FILE: problem",
 // when the scene records where the key was (Scene::assetReferences); else at
 // the file itself, "FILE: objects[2].path: problem".

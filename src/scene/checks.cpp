@@ -45,9 +45,8 @@ std::string lowercase(std::string s)
 void checkFile(const fs::path& base, const fs::path& resolved, const std::string& relative, const std::string& name,
                const SourcePlace& place)
 {
-    // Relative paths stay in the scene's folder; an absolute one is taken as
-    // written (the installed example models are named that way).
-    if (fs::path(relative).is_relative() && !resolveInside(resolved, relative))
+    const std::optional<fs::path> inside = resolveInside(resolved, relative);
+    if (!inside)
         fail(place, fmt::format("{}: '{}' lies outside the scene's folder '{}'; a scene may name only files in its "
                                 "folder or below it, links included",
                                 name, shortText(relative), base.string()));
