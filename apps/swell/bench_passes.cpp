@@ -265,6 +265,10 @@ FloorFrame::~FloorFrame() = default;
 void FloorFrame::render(PassObserver& observer)
 {
     const State& s = *state_;
+    // The wave model's own work for the frame: at the least, none.
+    observer.beginPass("ocean");
+    observer.endPass("ocean");
+
     observer.beginPass("reflection");
     s.bind(s.reflection);
     s.triangle(0.5f);

@@ -68,6 +68,10 @@ public:
     // The displacement and unit normal at a rest point and time.
     virtual SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const = 0;
 
+    // The displacement alone: surfaceAt()'s, for models that can find it
+    // without the normal more cheaply (the spectral model's CPU twin).
+    virtual glm::dvec3 displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const;
+
     // The rest point whose displaced horizontal position is worldPoint_m.
     // The default solves x0 + Dxz(x0) = worldPoint_m by fixed-point steps;
     // models with analytic derivatives override it with Newton's method.

@@ -8,6 +8,11 @@ namespace swell {
 
 WaveModel::~WaveModel() = default;
 
+glm::dvec3 WaveModel::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    return surfaceAt(restPoint_m, time_s, filter).displacement_m;
+}
+
 glm::dvec2 WaveModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     // Fixed-point iteration x0 <- p - Dxz(x0): a contraction wherever the
@@ -15,7 +20,7 @@ glm::dvec2 WaveModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s, con
     // once a step moves the rest point less than 1e-7 m, or after 64 steps.
     glm::dvec2 rest = worldPoint_m;
     for (int i = 0; i < 64; ++i) {
-        const glm::dvec3 d = surfaceAt(rest, time_s, filter).displacement_m;
+        const glm::dvec3 d = displacementAt(rest, time_s, filter);
         const glm::dvec2 next = worldPoint_m - glm::dvec2(d.x, d.z);
         const double step = glm::length(next - rest);
         rest = next;
@@ -27,7 +32,7 @@ glm::dvec2 WaveModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s, con
 
 double WaveModel::heightAt(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
 {
-    return surfaceAt(restPointUnder(worldPoint_m, time_s, filter), time_s, filter).displacement_m.y;
+    return displacementAt(restPointUnder(worldPoint_m, time_s, filter), time_s, filter).y;
 }
 
 } // namespace swell

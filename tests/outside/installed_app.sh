@@ -26,15 +26,17 @@ if (( ${#presets[@]} < 5 )); then
   echo "only ${#presets[@]} presets installed in $data/scenes" >&2
   exit 1
 fi
-# A scene of our own that places the installed example models.
+# A scene of our own that places the installed example models, copied
+# beside it: a scene may name only files in its own folder or below it.
+cp -r "$data/models" models
 cat > models.toml <<TOML
 [[objects]]
-path = "$data/models/crate.glb"
+path = "models/crate.glb"
 position_m = [0.0, 0.0, -12.0]
 floats = true
 
 [[objects]]
-path = "$data/models/lighthouse.gltf"
+path = "models/lighthouse.gltf"
 position_m = [30.0, 0.0, -200.0]
 TOML
 for scene in "${presets[@]}" models.toml; do

@@ -2,7 +2,8 @@
 // transformed with kissfft, sampled with the same bilinear weights and the
 // same per-cascade LOD weights as shaders/ocean/spectral.glsl. The fields
 // for one time are computed when first asked for and kept until another
-// time is asked for.
+// time is asked for; the derivative fields (for normals) only when a query
+// needs them, which halves the cost of a frame whose queries are heights.
 #pragma once
 
 #include "ocean/spectral/spectral_field.h"
@@ -28,18 +29,37 @@ public:
     // Thread-safe; transforms the fields when `time_s` differs from the last.
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const;
 
+    // The displacement alone, m: the same as surfaceAt().displacement_m, but
+    // transforms only the displacement fields (2 of the 4 transforms a
+    // cascade) when `time_s` is new. What height queries and
+    // restPointUnder() need.
+    glm::dvec3 displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const;
+
     // The 8 spatial fields of every cascade at time_s (Dx, Dy, Dz, dDx/dz,
-    // dDy/dx, dDy/dz, dDx/dx, dDz/dz), N*N each, row = z: for tests.
+    // dDy/dx, dDy/dz, dDx/dx, dDz/dz), N*N each, row = z: for tests and the
+    // model's constructor. Not thread-safe, unlike the queries: the
+    // reference holds until the next call for another time.
     struct Fields {
         double time_s = 0.0;
+        bool hasDerivatives = false; // fields 4..7 (and their spectra transformed)
         std::array<std::array<std::vector<float>, 8>, kCascades> values;
     };
     const Fields& fieldsAt(double time_s) const;
+    // Only fields 0..3 (Dx, Dy, Dz, dDx/dz) are sure to be there.
+    const Fields& displacementFieldsAt(double time_s) const;
 
 private:
     std::shared_ptr<const SpectralField> field_;
     mutable std::mutex mutex_;
     mutable std::unique_ptr<Fields> fields_;
+    // The frame's spectra, kept so the derivative fields can be transformed
+    // later in the frame without evolving again.
+    mutable std::array<Spectra, kCascades> spectra_;
+    const Fields& fieldsFor(double time_s, bool derivatives) const;
+    // Inverse-transforms packed spectra [first, last) of every cascade into fields_.
+    void transform(int firstPacked, int lastPacked) const;
+    // Sums the first fieldCount fields at a rest point, LOD weights and bilinear weights applied.
+    void sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, int fieldCount, double* sum) const;
     void* fft_ = nullptr; // kiss_fftnd_cfg
 };
 

@@ -29,6 +29,70 @@ NormalPair normalPair(std::mt19937& rng)
 
 double Cascade::shortestWavelength_m() const { return kTwoPi / maxWavenumber_radpm; }
 
+bool Cascade::holds(int fz, int fx) const
+{
+    if (fz == -kSize / 2 || fx == -kSize / 2 || (fz == 0 && fx == 0))
+        return false;
+    const double dk = kTwoPi / patch_m;
+    const double k = std::hypot(dk * fx, dk * fz);
+    return k >= minWavenumber_radpm && k < maxWavenumber_radpm;
+}
+
+namespace {
+
+// Calls f(kx, kz, dk) for every sample that carries a wave, in every cascade.
+template <class F>
+void forEachWave(const std::array<Cascade, kCascades>& cascades, F f)
+{
+    for (const Cascade& cascade : cascades) {
+        const double dk = kTwoPi / cascade.patch_m;
+        for (int fz = -kSize / 2; fz < kSize / 2; ++fz)
+            for (int fx = -kSize / 2; fx < kSize / 2; ++fx)
+                if (cascade.holds(fz, fx))
+                    f(dk * fx, dk * fz, dk);
+    }
+}
+
+} // namespace
+
+double sampledHeightVariance_m2(const SeaSpectrum& sea, const std::array<Cascade, kCascades>& cascades)
+{
+    double sum = 0.0;
+    forEachWave(cascades, [&](double kx, double kz, double dk) { sum += sea.wavenumberDensity(kx, kz) * dk * dk; });
+    return sum;
+}
+
+double sampledSlopeVariance(const SeaSpectrum& sea, const std::array<Cascade, kCascades>& cascades)
+{
+    double sum = 0.0;
+    forEachWave(cascades, [&](double kx, double kz, double dk) {
+        sum += (kx * kx + kz * kz) * sea.wavenumberDensity(kx, kz) * dk * dk;
+    });
+    return sum;
+}
+
+double unresolvedSlopeVariance(const SeaSpectrum& sea, double shortestResolvedWavelength_m, double cutoffWavenumber_radpm)
+{
+    const double k1 = kTwoPi / shortestResolvedWavelength_m;
+    if (!(k1 < cutoffWavenumber_radpm))
+        return 0.0;
+    // Simpson's rule in u = ln k, where the integrand k^3*S*(d(omega)/dk)
+    // of the saturation range (~k^0) is smooth: 512 intervals over at most a
+    // few e-folds.
+    const double d = sea.depth_m();
+    auto integrand = [&](double u) {
+        const double k = std::exp(u);
+        return k * k * k * sea.frequencyDensity(angularFrequency(k, d)) * groupVelocity(k, d);
+    };
+    const double a = std::log(k1), b = std::log(cutoffWavenumber_radpm);
+    constexpr int n = 512;
+    const double h = (b - a) / n;
+    double sum = integrand(a) + integrand(b);
+    for (int i = 1; i < n; ++i)
+        sum += (i % 2 == 1 ? 4.0 : 2.0) * integrand(a + i * h);
+    return sum * h / 3.0;
+}
+
 std::array<Cascade, kCascades> cascadeLayout(double peakWavelength_m)
 {
     std::array<Cascade, kCascades> c{};
@@ -69,10 +133,7 @@ SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::
                 const NormalPair xi = normalPair(rng);
                 const double kx = dk * fx, kz = dk * fz;
                 const double k = std::hypot(kx, kz);
-                // The Nyquist row and column have no partner of opposite
-                // frequency on the grid: leave them empty.
-                if (fz == -kSize / 2 || fx == -kSize / 2 || k == 0.0 || k < cascade.minWavenumber_radpm ||
-                    k >= cascade.maxWavenumber_radpm)
+                if (!cascade.holds(fz, fx))
                     continue;
                 const size_t i = size_t(row) * kSize + size_t(col);
                 h0[i] = 0.5 * std::complex<double>(xi.a, xi.b) * std::sqrt(sea.wavenumberDensity(kx, kz)) * dk;

@@ -37,6 +37,10 @@ struct Cascade {
     double maxWavenumber_radpm = 0.0; // |k| < this, rad/m
     // The shortest wavelength it holds, m: what the LOD filter weighs it by.
     double shortestWavelength_m() const;
+    // Whether its sample of frequency (f_z, f_x), f in -N/2..N/2-1, carries
+    // a wave: |k| in the band, and neither on the Nyquist row or column (no
+    // partner of opposite frequency there) nor k = 0.
+    bool holds(int fz, int fx) const;
 };
 
 // Patch sizes L_0 / 6.65^c, L_0 ten peak wavelengths (at least 100 m): a
@@ -84,5 +88,34 @@ struct Spectra {
     std::array<std::vector<std::complex<float>>, 4> packed;
 };
 void evolve(const SpectralField& field, int cascade, double time_s, Spectra& out);
+
+// ---------------------------------------------------------------------------
+// What the discrete field holds, from the spectrum alone (no random draws)
+
+// The expected height variance of the field, m^2: the sum over every
+// cascade's band of Psi(k)*dk^2 (each sample stands for a dk^2 cell of the k
+// plane). 16 times it is the square of the significant wave height it gives.
+double sampledHeightVariance_m2(const SeaSpectrum& sea, const std::array<Cascade, kCascades>& cascades);
+
+// The expected mean square slope of the resolved surface, dimensionless:
+// the sum over every band of |k|^2*Psi(k)*dk^2 (the variance of dy/dx plus
+// that of dy/dz).
+double sampledSlopeVariance(const SeaSpectrum& sea, const std::array<Cascade, kCascades>& cascades);
+
+// The end of the gravity range, rad/m: the wavenumber of the slowest wave on
+// clean water, k_m = sqrt(rho*g/sigma) = 363 rad/m (1.73 cm; rho = 1025
+// kg/m^3, sigma = 0.073 N/m; Kinsman 1965, "Wind Waves", sec. 3.3; Elfouhaily
+// et al. 1997 put the gravity-capillary peak at 370 rad/m). Beyond it surface
+// tension, not gravity, sets the waves, and a gravity-wave spectrum such as
+// JONSWAP says nothing about them.
+inline constexpr double kGravityCapillaryWavenumber_radpm = 363.0;
+
+// The slope variance the spectrum holds beyond the field's shortest wave,
+// dimensionless: the integral of k^2*Psi over the annulus shortestResolved
+// < |k| < cutoff, i.e. of k^2*S(omega(k))*d(omega)/dk over k (the spreading
+// integrates to 1 over directions). 0 when the field already reaches the
+// cutoff. What shading must add for the slopes the geometry lacks.
+double unresolvedSlopeVariance(const SeaSpectrum& sea, double shortestResolvedWavelength_m,
+                               double cutoffWavenumber_radpm = kGravityCapillaryWavenumber_radpm);
 
 } // namespace swell::spectral

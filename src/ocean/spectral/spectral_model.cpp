@@ -226,7 +226,8 @@ SpectralModel::SpectralModel(const SpectralSettings& settings)
       cpu_(std::make_unique<CpuSurface>(field_))
 {
     // The fold thresholds from the field itself, at t = 0: its J
-    // distribution is stationary, so any time would do.
+    // distribution is stationary, so any time would do. (fieldsAt is not
+    // thread-safe; nothing else can reach cpu_ while it is being built.)
     const CpuSurface::Fields& fields = cpu_->fieldsAt(0.0);
     const double fraction = breakingFraction(settings.wind.windSpeed_mps);
     for (int c = 0; c < kFoamCascades; ++c) {
@@ -251,6 +252,11 @@ WaveReach SpectralModel::reach() const { return {field_->verticalReach_m, field_
 SurfacePoint SpectralModel::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     return cpu_->surfaceAt(restPoint_m, time_s, filter);
+}
+
+glm::dvec3 SpectralModel::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    return cpu_->displacementAt(restPoint_m, time_s, filter);
 }
 
 std::unique_ptr<detail::WaveModelGpu> SpectralModel::createGpu(const gl::ShaderSources& shaders) const
