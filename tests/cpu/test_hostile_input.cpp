@@ -5,6 +5,7 @@
 // docs/TESTING.md ("Hostile input").
 #include "assets/mesh_data.h"
 #include "assets/scene_assets.h"
+#include "support/expect_input_error.h"
 #include "support/bounded_run.h"
 
 #include "swell/error.h"
@@ -47,18 +48,7 @@ void writeFile(const fs::path& path, const std::string& bytes)
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-// The InputError `load` throws, or a failure.
-template <class F>
-InputError inputError(F load)
-{
-    try {
-        load();
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "no InputError";
-    return InputError({}, "");
-}
+using test::expectInputError;
 
 // A one-triangle model whose only buffer is the file `uri` (44 bytes:
 // three float positions and three u16 indices, padded).
@@ -207,12 +197,12 @@ TEST_F(SpecialFiles, AsTheSceneFileAreRefusedNamingTheFile)
 {
     const fs::path folder = freshFolder("special_scene");
     for (const auto& [path, kind] : specialFiles(folder, ".toml")) {
-        const InputError e = inputError([&] { (void)loadScene(path); });
+        const InputError e = expectInputError([&] { (void)loadScene(path); });
         EXPECT_EQ(e.place().path, path.string());
         EXPECT_NE(e.message().find(kind), std::string::npos) << e.message();
     }
     const int fd = makeSocket(folder / "socket.toml");
-    const InputError e = inputError([&] { (void)loadScene(folder / "socket.toml"); });
+    const InputError e = expectInputError([&] { (void)loadScene(folder / "socket.toml"); });
     EXPECT_NE(e.message().find("socket"), std::string::npos) << e.message();
     ::close(fd);
 }
@@ -229,7 +219,7 @@ TEST_F(SpecialFiles, AsModelsAndSkyFacesAreRefusedAtTheSceneKey)
         if (kind == "character device")
             kind = "lies outside the scene's folder";
         const std::string scene = fmt::format("[[objects]]\npath = \"{}\"\n", path.filename().string());
-        const InputError e = inputError([&] { (void)parseScene(scene, folder / "scene.toml"); });
+        const InputError e = expectInputError([&] { (void)parseScene(scene, folder / "scene.toml"); });
         EXPECT_EQ(e.place().line, 2) << e.what();
         EXPECT_EQ(e.place().column, 8) << e.what();
         EXPECT_NE(e.message().find("objects[0].path"), std::string::npos) << e.message();
@@ -240,7 +230,7 @@ TEST_F(SpecialFiles, AsModelsAndSkyFacesAreRefusedAtTheSceneKey)
     for (const char* face : {"a.png", "b.png", "c.png", "e.png", "f.png"})
         writeFile(folder / face, blackPng(4, 4));
     ASSERT_EQ(::mkfifo((folder / "fifo.png").c_str(), 0600), 0);
-    const InputError e = inputError([&] { (void)parseScene(faces, folder / "scene.toml"); });
+    const InputError e = expectInputError([&] { (void)parseScene(faces, folder / "scene.toml"); });
     EXPECT_NE(e.message().find("sky.faces[3]"), std::string::npos) << e.message();
     EXPECT_NE(e.message().find("FIFO"), std::string::npos) << e.message();
 }
@@ -252,18 +242,18 @@ TEST_F(SpecialFiles, ReachingTheLoadersAreRefused)
 {
     const fs::path folder = freshFolder("special_loaders");
     for (const auto& [path, kind] : specialFiles(folder, ".gltf")) {
-        const InputError e = inputError([&] { (void)detail::loadGltf(path); });
+        const InputError e = expectInputError([&] { (void)detail::loadGltf(path); });
         EXPECT_EQ(e.place().path, path.string());
         EXPECT_NE(e.message().find(kind), std::string::npos) << e.message();
     }
     for (const auto& [path, kind] : specialFiles(folder, ".bin")) {
         const fs::path model = folder / ("uses_" + path.stem().string() + ".gltf");
         writeFile(model, triangleGltf(path.filename().string()));
-        const InputError e = inputError([&] { (void)detail::loadGltf(model); });
+        const InputError e = expectInputError([&] { (void)detail::loadGltf(model); });
         EXPECT_NE(e.message().find("buffer 0"), std::string::npos) << e.message();
     }
     for (const auto& [path, kind] : specialFiles(folder, ".png")) {
-        const InputError e = inputError([&] { (void)readImage(path); });
+        const InputError e = expectInputError([&] { (void)readImage(path); });
         EXPECT_EQ(e.place().path, path.string());
         EXPECT_NE(e.message().find(kind), std::string::npos) << e.message();
     }
@@ -271,7 +261,7 @@ TEST_F(SpecialFiles, ReachingTheLoadersAreRefused)
     Scene scene;
     scene.assetFolder = folder.string();
     scene.objects.push_back({"fifo.gltf", {}, 0.0, 1.0, false});
-    const InputError e = inputError([&] { (void)detail::loadSceneAssets(scene); });
+    const InputError e = expectInputError([&] { (void)detail::loadSceneAssets(scene); });
     EXPECT_NE(e.message().find("FIFO"), std::string::npos) << e.message();
 }
 
@@ -291,14 +281,14 @@ TEST(Confinement, BufferUrisStayInTheModelsFolder)
                                   "sub/../../../outside.bin", "%2Fetc%2Fpasswd", "link.bin"}) {
         const fs::path model = models / "escape.gltf";
         writeFile(model, triangleGltf(uri));
-        const InputError e = inputError([&] { (void)detail::loadGltf(model); });
+        const InputError e = expectInputError([&] { (void)detail::loadGltf(model); });
         EXPECT_NE(e.message().find("lies outside the model's folder"), std::string::npos) << uri << ": " << e.message();
         EXPECT_EQ(e.message().find("4321"), std::string::npos) << e.message();
         EXPECT_EQ(e.message().find("bytes"), std::string::npos) << e.message();
     }
     // /etc/passwd's size must not show either.
     writeFile(models / "passwd.gltf", triangleGltf("../../../../../../../../../../../../etc/passwd"));
-    const InputError e = inputError([&] { (void)detail::loadGltf(models / "passwd.gltf"); });
+    const InputError e = expectInputError([&] { (void)detail::loadGltf(models / "passwd.gltf"); });
     EXPECT_EQ(e.message().find(std::to_string(fs::file_size("/etc/passwd"))), std::string::npos) << e.message();
     // Paths that wander but end inside are fine.
     for (const std::string uri : {"inside.bin", "./inside.bin", "sub/../inside.bin", "..%2Fdeep%2Finside.bin"}) {
@@ -318,14 +308,14 @@ TEST(Confinement, SceneAssetsStayInTheScenesFolder)
     fs::create_symlink(root / "outside.gltf", root / "scene" / "link.gltf");
     for (const std::string& path : {std::string("../outside.gltf"), (root / "outside.gltf").string(), std::string("link.gltf")}) {
         const std::string text = fmt::format("[[objects]]\npath = \"{}\"\n", path);
-        const InputError e = inputError([&] { (void)parseScene(text, root / "scene" / "scene.toml"); });
+        const InputError e = expectInputError([&] { (void)parseScene(text, root / "scene" / "scene.toml"); });
         EXPECT_EQ(e.place().line, 2) << e.what();
         EXPECT_NE(e.message().find("lies outside the scene's folder"), std::string::npos) << e.message();
 
         Scene scene;
         scene.assetFolder = (root / "scene").string();
         scene.objects.push_back({path, {}, 0.0, 1.0, false});
-        const InputError r = inputError([&] { (void)detail::loadSceneAssets(scene); });
+        const InputError r = expectInputError([&] { (void)detail::loadSceneAssets(scene); });
         EXPECT_NE(r.message().find("lies outside the scene's folder"), std::string::npos) << r.message();
     }
     fs::create_directories(root / "scene" / "sub");
@@ -346,7 +336,7 @@ TEST(AssetErrors, NameTheSceneKeyAndItsPlace)
                          "[[objects]]\npath = \"builtin:buoy\"\n"
                          "[[objects]]\n  path = \"broken.gltf\"\n");
     const Scene scene = loadScene(sceneFile); // the files exist: the scene is fine
-    const InputError e = inputError([&] { (void)detail::loadSceneAssets(scene); });
+    const InputError e = expectInputError([&] { (void)detail::loadSceneAssets(scene); });
     EXPECT_EQ(e.place().path, sceneFile.string());
     EXPECT_EQ(e.place().line, 6);
     EXPECT_EQ(e.place().column, 10);
@@ -361,7 +351,7 @@ TEST(AssetErrors, NameTheSceneKeyAndItsPlace)
     writeFile(folder / "nz.png", blackPng(16384, 16384));
     writeFile(sceneFile, "[sky]\nfaces = [\"px.png\", \"nx.png\", \"py.png\", \"ny.png\", \"pz.png\", \"nz.png\"]\n");
     const Scene sky = loadScene(sceneFile);
-    const InputError f = inputError([&] { (void)detail::loadSceneAssets(sky); });
+    const InputError f = expectInputError([&] { (void)detail::loadSceneAssets(sky); });
     const std::string face = fmt::format("{}:2:60: sky.faces[5]: {}: ", sceneFile.string(), (folder / "nz.png").string());
     EXPECT_EQ(std::string(f.what()).substr(0, face.size()), face) << f.what();
 }

@@ -9,6 +9,8 @@
 #include "swell/shader_constants.h"
 
 #include <fmt/format.h>
+#include "support/expect_input_error.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -571,18 +573,7 @@ INSTANTIATE_TEST_SUITE_P(SceneFile, MalformedScene, testing::ValuesIn(malformedC
 
 namespace {
 
-// Runs `load` and returns its InputError, or fails the test.
-template <class F>
-InputError expectInputError(F load)
-{
-    try {
-        load();
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "no InputError";
-    return InputError({}, "");
-}
+using test::expectInputError;
 
 } // namespace
 
