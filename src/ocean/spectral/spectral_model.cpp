@@ -61,6 +61,10 @@ public:
         timeLocation_ = glGetUniformLocation(evolve_.id(), "time_s");
         choppinessLocation_ = glGetUniformLocation(evolve_.id(), "choppiness");
         patchLocation_ = glGetUniformLocation(evolve_.id(), "patchSize_m");
+        decayLocation_ = glGetUniformLocation(foamStep_.id(), "decay");
+        thresholdLocation_ = glGetUniformLocation(foamStep_.id(), "foldThreshold");
+        softnessLocation_ = glGetUniformLocation(foamStep_.id(), "foldSoftness");
+        foamCascadesLocation_ = glGetUniformLocation(foamStep_.id(), "foamCascades");
 
         const int n = kSize;
         auto array = [n](GLenum format, int levels) {
@@ -160,11 +164,11 @@ private:
     void stepFoam(float decay)
     {
         glUseProgram(foamStep_.id());
-        glUniform1f(glGetUniformLocation(foamStep_.id(), "decay"), decay);
+        glUniform1f(decayLocation_, decay);
         const bool foam = settings_.foamLifetime_s > 0.0;
-        glUniform1fv(glGetUniformLocation(foamStep_.id(), "foldThreshold"), kCascades, foldThresholds_.data());
-        glUniform1f(glGetUniformLocation(foamStep_.id(), "foldSoftness"), kFoldSoftness);
-        glUniform1i(glGetUniformLocation(foamStep_.id(), "foamCascades"), foam ? kFoamCascades : 0);
+        glUniform1fv(thresholdLocation_, kCascades, foldThresholds_.data());
+        glUniform1f(softnessLocation_, kFoldSoftness);
+        glUniform1i(foamCascadesLocation_, foam ? kFoamCascades : 0);
         glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
         glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
         glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R16F);
@@ -210,7 +214,9 @@ private:
     SpectralSettings settings_;
     std::array<float, kCascades> foldThresholds_;
     gl::Program evolve_, fftRows_, fftColumns_, foamStep_;
+    // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
+    GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
     gl::Texture initial_, omega_, displacement_, derivatives_, foam_;
     gl::Buffer uniforms_;
     bool transformed_ = false;
