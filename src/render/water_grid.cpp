@@ -13,23 +13,40 @@ void WaterGrid::build(const GridShape& shape)
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
     counts_.clear();
     offsets_.clear();
+    boundsValid_ = false;
 }
 
 void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, const WaveReach& reach,
                      const glm::dmat4& viewProj, glm::dvec2 gridCenter_m)
 {
+    // The bounds, relative to the grid centre, change only when the grid
+    // snaps to another centre or scale, or the surface's reach changes: a
+    // camera that turns, or moves within a snap step, reuses them.
+    if (!boundsValid_ || placement.center_m != boundsCenter_m_ || placement.scale != boundsScale_ ||
+        reach.vertical_m != boundsReach_.vertical_m || reach.horizontal_m != boundsReach_.horizontal_m) {
+        blockBounds_.clear();
+        tileBounds_.clear();
+        for (const GridTile& block : grid_.blocks)
+            blockBounds_.push_back(tileBounds(shape, placement, block, reach));
+        for (const GridTile& tile : grid_.tiles)
+            tileBounds_.push_back(tileBounds(shape, placement, tile, reach));
+        boundsValid_ = true;
+        boundsCenter_m_ = placement.center_m;
+        boundsScale_ = placement.scale;
+        boundsReach_ = reach;
+    }
     const Frustum frustum = frustumPlanes(viewProj);
     const glm::dvec3 centre(gridCenter_m.x, 0.0, gridCenter_m.y);
     counts_.clear();
     offsets_.clear();
-    auto bounds = [&](const GridTile& t) {
-        Bounds box = tileBounds(shape, placement, t, reach);
+    auto moved = [&](Bounds box) {
         box.lo += centre;
         box.hi += centre;
         return box;
     };
-    for (const GridTile& block : grid_.blocks) {
-        const Containment c = frustumContains(frustum, bounds(block));
+    for (size_t b = 0; b < grid_.blocks.size(); ++b) {
+        const GridTile& block = grid_.blocks[b];
+        const Containment c = frustumContains(frustum, moved(blockBounds_[b]));
         if (c == Containment::Outside)
             continue;
         if (c == Containment::Inside) {
@@ -38,7 +55,7 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
         }
         for (int t = block.firstTile; t < block.firstTile + block.tileCount; ++t) {
             const GridTile& tile = grid_.tiles[size_t(t)];
-            if (frustumContains(frustum, bounds(tile)) != Containment::Outside)
+            if (frustumContains(frustum, moved(tileBounds_[size_t(t)])) != Containment::Outside)
                 choose(tile.firstIndex, tile.indexCount);
         }
     }

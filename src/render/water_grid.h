@@ -41,6 +41,13 @@ private:
     void choose(std::uint32_t firstIndex, std::uint32_t indexCount);
 
     TiledGrid grid_;
+    // Each block's and tile's bounds relative to the grid centre, for the
+    // placement and reach they were computed for.
+    std::vector<Bounds> blockBounds_, tileBounds_;
+    bool boundsValid_ = false;
+    glm::dvec2 boundsCenter_m_{0.0};
+    double boundsScale_ = 0.0;
+    WaveReach boundsReach_;
     gl::Buffer indices_;
     gl::VertexArray vao_;
     // glMultiDrawElements' arguments for the chosen tiles.

@@ -53,6 +53,13 @@ TEST_P(GridCulling, EveryTriangleThatReachesTheViewIsDrawn)
     swell::gl::Buffer buffer = swell::gl::Buffer::create();
     glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
     std::vector<std::uint32_t> drawn;
+    // The renderer first culls for a camera elsewhere, 2 m above the water
+    // (another grid centre, and the smallest grid scale): bounds kept from
+    // that frame must not be reused for the higher cameras' larger grids.
+    swell::Camera elsewhere = camera;
+    elsewhere.position_m += glm::dvec3(317.0, 0.0, -733.0);
+    elsewhere.position_m.y = 2.0;
+    renderer.captureWaterVertices(elsewhere, 12.0, buffer.id(), size, &drawn);
     renderer.captureWaterVertices(camera, 12.0, buffer.id(), size, &drawn);
     std::vector<float> data(size_t(count) * 8);
     glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
