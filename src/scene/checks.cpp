@@ -88,6 +88,9 @@ void checkObjectPath(const fs::path& base, const fs::path& resolved, const std::
 
 void checkWaves(const Scene& scene, const Places& places)
 {
+    if (scene.waves.model == WaveModelKind::Spectral && !scene.waves.wind)
+        fail(places.first({"waves.model", "waves"}),
+             "waves.model = \"spectral\" samples the wind's spectrum: add a [waves.wind] table");
     if (scene.waves.listed.waves.size() > SWELL_MAX_WAVES)
         fail(places.first({"waves.list", "waves"}),
              fmt::format("waves.list has {} waves; at most {} are allowed", scene.waves.listed.waves.size(), SWELL_MAX_WAVES));

@@ -345,6 +345,16 @@ TEST(SceneFile, AnEditIsCheckedOnlyWhereItCanMatter)
     EXPECT_THROW(validateSceneChange(before, broken, file), InputError);
 }
 
+TEST(SceneFile, TheSpectralModelNeedsTheWind)
+{
+    const InputError e = test::expectInputError([] {
+        parseScene("[waves]\nmodel = \"spectral\"\n[[waves.list]]\nwavelength_m = 8.0\n", inlinePath());
+    });
+    EXPECT_EQ(e.place().line, 2);
+    EXPECT_NE(std::string(e.what()).find("[waves.wind]"), std::string::npos) << e.what();
+    EXPECT_NO_THROW(parseScene("[waves]\nmodel = \"spectral\"\n[waves.wind]\nspeed_mps = 12.0\n", inlinePath()));
+}
+
 TEST(SceneFile, InlineTablesAndArraysWork)
 {
     Scene s = parseScene("waves = { depth_m = 50.0, list = [ { wavelength_m = 8, direction = [0, 1] } ] }\n"
