@@ -49,13 +49,6 @@ public:
     glm::dvec3 displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
 
-    // For tests and tools: the field both halves evolve, and the CPU twin.
-    const spectral::SpectralField& field() const { return *field_; }
-    const spectral::CpuSurface& cpu() const { return *cpu_; }
-
-    // The Jacobian below which each cascade makes foam (whitecaps.h).
-    const std::array<float, SWELL_FFT_CASCADES>& foldThresholds() const { return foldThresholds_; }
-
 private:
     SpectralSettings settings_;
     std::array<float, SWELL_FFT_CASCADES> foldThresholds_{};

@@ -38,7 +38,6 @@ public:
     void use() const;
     // Object to render-origin-relative world transform, m.
     void setModel(const glm::mat4& model) const;
-    GLuint id() const { return program_.id(); }
 
 private:
     gl::Program program_;
@@ -67,7 +66,6 @@ public:
     BlockProgram() = default;
     explicit BlockProgram(gl::Program program) : program_(std::move(program)) {}
     void use() const;
-    GLuint id() const { return program_.id(); }
     explicit operator bool() const { return bool(program_); }
 
 private:
