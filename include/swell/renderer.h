@@ -25,6 +25,10 @@ namespace swell {
 struct SWELL_API RendererOptions {
     // Where shaders come from: the embedded copies, or a folder for hot reload.
     gl::ShaderSources shaders = gl::ShaderSources::embedded();
+    // For measuring what each term of the water shading costs (swell bench):
+    // the terms left out, a bitwise or of SWELL_TERM_* (swell/shader_constants.h),
+    // each replaced by its cheapest stand-in. 0 draws the water in full.
+    unsigned omittedWaterTerms = 0;
 };
 
 // Triangles and draw calls of the last frame, for the benchmark and tests.

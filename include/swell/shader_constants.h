@@ -58,6 +58,21 @@
 #define SWELL_REFLECTION_FIXED 0
 #define SWELL_REFLECTION_RAYMARCH 1
 
+// Terms of the water shading (bit flags). The benchmark leaves one out at a
+// time to measure what each costs (prepended as SWELL_OMITTED_TERMS, 0 in
+// every normal build). Left out, a term becomes its cheapest stand-in:
+// wave normals -> the interpolated vertex normal (and no foam, which the same
+// per-pixel evaluation returns); reflection -> the sky's horizon colour;
+// refraction -> the deep water colour; lighting -> no sun diffuse or
+// specular; foam -> none; fog -> none.
+#define SWELL_TERM_WAVE_NORMALS 1
+#define SWELL_TERM_REFLECTION 2
+#define SWELL_TERM_REFRACTION 4
+#define SWELL_TERM_LIGHTING 8
+#define SWELL_TERM_FOAM 16
+#define SWELL_TERM_FOG 32
+#define SWELL_TERM_ALL 63
+
 // Grid layouts (prepended as SWELL_GRID_LAYOUT; see shaders/grid.glsl).
 #define SWELL_GRID_GEOMETRIC 0
 #define SWELL_GRID_PAPER 1

@@ -39,6 +39,8 @@ struct Renderer::Impl {
     std::unique_ptr<WaveModelGpu> modelGpu;
     GridShape gridShape;
     gl::ShaderSources sources;
+    // Water shading terms left out, for the benchmark (RendererOptions).
+    unsigned omittedWaterTerms = 0;
     ShaderVariant variant;
     Programs programs;
     gl::Buffer frameUbo[PassCount];
@@ -53,7 +55,10 @@ struct Renderer::Impl {
     // This frame's object transforms, one per scene object (see world.h).
     std::vector<glm::mat4> poses;
 
-    explicit Impl(RendererOptions options) : sources(std::move(options.shaders)) {}
+    explicit Impl(RendererOptions options)
+        : sources(std::move(options.shaders)), omittedWaterTerms(options.omittedWaterTerms)
+    {
+    }
 
     const WaveModel& model() const { return overrideModel ? *overrideModel : *sceneModel; }
 
@@ -258,7 +263,7 @@ struct Renderer::Impl {
         const WaveModel& nextModel = nextOverride ? *nextOverride : *nextSceneModel;
         const bool modelChanged = first || &nextModel != &model();
         std::unique_ptr<WaveModelGpu> gpu = modelChanged ? nextModel.createGpu(sources) : nullptr;
-        const ShaderVariant nextVariant = shaderVariantOf(next, gpu ? gpu->shaderFile() : variant.oceanFile);
+        const ShaderVariant nextVariant = shaderVariantOf(next, gpu ? gpu->shaderFile() : variant.oceanFile, omittedWaterTerms);
         const bool programsChanged = first || nextVariant != variant;
         Programs nextPrograms;
         if (programsChanged)
