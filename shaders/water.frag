@@ -9,6 +9,8 @@
 
 in vec3 vPosition;
 in vec3 vNormal;
+in vec3 vAlongX;
+in vec3 vAlongZ;
 in vec2 vRestPoint;
 in float vCellSize;
 in float vHeightScale;
@@ -22,10 +24,11 @@ void main()
 #if SWELL_HAS_TERM(SWELL_TERM_WAVE_NORMALS)
     // The grid carries only the waves it can sample; the shading normal takes
     // every wave this pixel can resolve, filtered by the pixel's footprint on
-    // the water instead of the grid spacing (the same surface function).
+    // the water instead of the grid spacing: the model adds to the grid's
+    // interpolated derivatives what the two footprints see differently.
     vec2 footprint = fwidth(vRestPoint);
     float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
-    SurfacePoint surface = oceanSurface(vRestPoint - gridCenter, pixelSize_m, vHeightScale);
+    SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ, vHeightScale);
     vec3 n = surface.normal;
     float foam = surface.foam;
 #else

@@ -72,9 +72,10 @@ vec4 bilinearDisplacement(vec2 s, int cascade)
     return mix(top, bottom, f.y);
 }
 
-SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
+// The normal and the foam at a footprint (the displacement left zero): the
+// slopes and the foam through their mipmaps.
+SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightScale)
 {
-    vec4 displacement = vec4(0.0); // Dx, Dy, Dz, dDx/dz
     vec4 slopes = vec4(0.0);       // dDy/dx, dDy/dz, dDx/dx, dDz/dz
     float crossSlope = 0.0;        // dDx/dz from the filtered fields
     float foam = 0.0;
@@ -82,8 +83,6 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
         SpectralCascade cascade = cascades[c];
         vec2 s = cascade.originTexels + restOffset_m * cascade.texelsPerMetre;
         float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
-        if (weight > 0.0)
-            displacement += weight * bilinearDisplacement(s, c);
         // Sample centres sit at integer texels: shift by half a texel for the
         // hardware's filter, and pick the mip the footprint covers.
         vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
@@ -92,12 +91,34 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
         crossSlope += textureLod(oceanDisplacement, uvw, 0.0).w * weight;
         foam = max(foam, textureLod(oceanFoam, uvw, lod).r);
     }
-    displacement *= heightScale;
     slopes *= heightScale;
     crossSlope *= heightScale;
     vec3 alongX = vec3(1.0 + slopes.z, slopes.x, crossSlope);
     vec3 alongZ = vec3(crossSlope, slopes.y, 1.0 + slopes.w);
     foam *= heightScale * foamDetail(restOffset_m, footprint_m);
-    return SurfacePoint(displacement.xyz, normalize(cross(alongZ, alongX)), foam);
+    return SurfacePoint(vec3(0.0), normalize(cross(alongZ, alongX)), foam, alongX, alongZ);
+}
+
+SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
+{
+    vec4 displacement = vec4(0.0); // Dx, Dy, Dz, dDx/dz
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
+        SpectralCascade cascade = cascades[c];
+        vec2 s = cascade.originTexels + restOffset_m * cascade.texelsPerMetre;
+        float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
+        if (weight > 0.0)
+            displacement += weight * bilinearDisplacement(s, c);
+    }
+    SurfacePoint p = spectralSlopes(restOffset_m, footprint_m, heightScale);
+    p.displacement = displacement.xyz * heightScale;
+    return p;
+}
+
+// The slope textures hold every wave the pixel resolves, at the cost of one
+// filtered fetch per cascade: the grid's normal adds nothing.
+SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m, vec3 gridAlongX,
+                          vec3 gridAlongZ, float heightScale)
+{
+    return spectralSlopes(restOffset_m, pixelFootprint_m, heightScale);
 }
 #endif
