@@ -54,6 +54,7 @@ struct Renderer::Impl {
     std::optional<SkyBakeKey> bakedSky;
     // This frame's object transforms, one per scene object (see world.h).
     std::vector<glm::mat4> poses;
+    glm::dvec3 posesOrigin{0.0}; // the render origin poses are relative to
 
     explicit Impl(RendererOptions options)
         : sources(std::move(options.shaders)), omittedWaterTerms(options.omittedWaterTerms)
@@ -90,7 +91,9 @@ struct Renderer::Impl {
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         const WaveReach reach = model().reach();
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, f.worldBoxes);
-        poses = objectPoses(scene, model(), origin, time_s);
+        const DrawnSurface drawn(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
+        poses = objectPoses(scene, model(), drawn, origin, time_s);
+        posesOrigin = origin;
         waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
         return f;
     }
@@ -355,6 +358,20 @@ Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size
     for (int y = 0; y < size.y; ++y)
         std::copy_n(&bottomUp[size_t(size.y - 1 - y) * row], row, &image.rgba[size_t(y) * row]);
     return image;
+}
+
+std::vector<glm::dmat4> Renderer::objectTransforms() const
+{
+    std::vector<glm::dmat4> out;
+    for (const glm::mat4& pose : impl_->poses)
+        out.push_back(glm::translate(glm::dmat4(1.0), impl_->posesOrigin) * glm::dmat4(pose));
+    return out;
+}
+
+DrawnSurface Renderer::drawnSurface(const Camera& camera, double time_s) const
+{
+    const Impl& s = *impl_;
+    return DrawnSurface(s.model(), s.gridShape, horizonFadeFor(s.scene.grid, s.gridShape), camera.position_m, time_s);
 }
 
 int Renderer::waterVertexCount() const { return (impl_->gridShape.cells + 1) * (impl_->gridShape.cells + 1); }

@@ -6,6 +6,7 @@
 
 #include "render/gpu_types.h"
 #include "render/mesh.h"
+#include "swell/drawn_surface.h"
 #include "swell/scene.h"
 #include "swell/wave_model.h"
 
@@ -37,9 +38,11 @@ struct World {
 World buildWorld(const Scene& scene);
 
 // Each object's transform for this frame, relative to the render origin:
-// floating objects sit on the surface as drawn at their position and tilt
-// with it. Computed once a frame; every pass draws with the same poses.
-std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, glm::dvec3 origin, double time_s);
+// floating objects sit on the water as drawn (`drawn`, the grid's triangles)
+// at their position, and tilt with the surface's normal. Computed once a
+// frame; every pass draws with the same poses.
+std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
+                                   glm::dvec3 origin, double time_s);
 
 // Fills boxes holding all world geometry, relative to the render origin: a
 // reflected ray that misses them all can only meet the sky. Returns the
