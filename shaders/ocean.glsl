@@ -20,6 +20,8 @@ struct SurfacePoint {
     float foam;        // whitecap cover, 0..1 (0 for models without foam)
     vec3 alongX;       // partial derivative of the displaced point along rest x
     vec3 alongZ;       // ... and along rest z
+    float slopeVariance; // mean square slope (x plus z) of the waves the normal leaves
+                         // out: what shading spreads the highlight by (oceanShading only)
 };
 
 #ifndef SWELL_OCEAN_FILE

@@ -31,9 +31,11 @@ void main()
     SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ, vHeightScale);
     vec3 n = surface.normal;
     float foam = surface.foam;
+    float slopeVariance = surface.slopeVariance;
 #else
     vec3 n = normalize(vNormal);
     float foam = 0.0;
+    float slopeVariance = 0.0;
 #endif
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);
@@ -63,7 +65,14 @@ void main()
 #endif
     vec3 color = mix(refracted, reflected, fresnel);
 #if SWELL_HAS_TERM(SWELL_TERM_LIGHTING)
-    color += sunColor * sunIntensity * specularStrength * phongSpecular(n, v, shininess, fresnelF0) * step(0.0, sunDirection.y);
+    // The slopes the normal leaves out spread the sun's highlight: the Phong
+    // lobe is about a Gaussian of variance 1/shininess in the reflected
+    // direction, and a slope variance s2 (x plus z) tilts the reflection by
+    // twice the slope, adding 2*s2 (Toksvig 2005's widening of filtered
+    // normals; Bruneton et al. 2010, sec. 4.2, for waves). The lobe's
+    // normalisation keeps its energy.
+    float spreadShininess = shininess / (1.0 + 2.0 * shininess * slopeVariance);
+    color += sunColor * sunIntensity * specularStrength * phongSpecular(n, v, spreadShininess, fresnelF0) * step(0.0, sunDirection.y);
 #endif
 
 #if SWELL_HAS_TERM(SWELL_TERM_FOAM)

@@ -8,7 +8,8 @@
 // Mirrored by swell::detail::GerstnerUniforms. Sorted longest wave first.
 layout(std140, binding = SWELL_BINDING_OCEAN) uniform GerstnerWaves {
     vec4 waveShape[SWELL_MAX_WAVES]; // xy: direction of travel (unit), z: wavenumber k, rad/m, w: amplitude, m
-    vec4 wavePhase[SWELL_MAX_WAVES]; // x: steepness Q, y: phase at the grid centre and this time, rad, z: wavelength, m
+    vec4 wavePhase[SWELL_MAX_WAVES]; // x: steepness Q, y: phase at the grid centre and this time, rad, z: wavelength, m,
+                                     // w: mean square slope of this wave and every shorter one
     ivec4 waveCount;                 // x: number of waves in use
 };
 
@@ -46,7 +47,7 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
         tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
         binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
     }
-    return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0, tangent, binormal);
+    return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0, tangent, binormal, 0.0);
 }
 
 // The grid's vertices summed each wave at weight waveLodWeight(wavelength,
@@ -67,7 +68,13 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
     // most this long zero weight in both: neither adds anything here.
     float bothFull_m = SWELL_FULL_CELLS_PER_WAVELENGTH * max(gridFootprint_m, pixelFootprint_m);
     float neither_m = SWELL_MIN_CELLS_PER_WAVELENGTH * min(gridFootprint_m, pixelFootprint_m);
-    for (int i = 0; i < waveCount.x; ++i) {
+    // The slopes of the waves the pixel resolves only in part, or not at all,
+    // go to the highlight's spread (Bruneton et al. 2010, sec. 4.2: the
+    // filtered-out part of the slope variance becomes BRDF roughness).
+    float slopeVariance = 0.0;
+    float fade2 = heightScale * heightScale;
+    int i = 0;
+    for (; i < waveCount.x; ++i) {
         float wavelength = wavePhase[i].z;
         if (wavelength >= bothFull_m)
             continue;
@@ -86,7 +93,13 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
         float ka = k * waveShape[i].w * heightScale * weight;
         tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
         binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
+        float resolved = waveLodWeight(wavelength, pixelFootprint_m);
+        float kaFull = k * waveShape[i].w;
+        slopeVariance += 0.5 * kaFull * kaFull * fade2 * (1.0 - resolved * resolved);
     }
-    return SurfacePoint(vec3(0.0), normalize(cross(binormal, tangent)), 0.0, tangent, binormal);
+    // Every shorter wave is wholly unresolved.
+    if (i < waveCount.x)
+        slopeVariance += wavePhase[i].w * fade2;
+    return SurfacePoint(vec3(0.0), normalize(cross(binormal, tangent)), 0.0, tangent, binormal, slopeVariance);
 }
 #endif

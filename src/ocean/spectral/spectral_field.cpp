@@ -144,6 +144,7 @@ SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::
     }
     f.verticalReach_m = sumAbs;
     f.horizontalReach_m = choppiness * sumAbs;
+    f.unresolvedSlopeVariance = unresolvedSlopeVariance(sea, f.cascades.back().shortestWavelength_m());
     return f;
 }
 

@@ -73,6 +73,9 @@ struct SpectralField {
     // or down) and lambda times it (sideways), m. Rigorous: no sum of these
     // components can exceed them.
     double verticalReach_m = 0.0, horizontalReach_m = 0.0;
+    // Mean square slope of the waves shorter than the last cascade holds
+    // (unresolvedSlopeVariance()), dimensionless: shading adds it as roughness.
+    double unresolvedSlopeVariance = 0.0;
 };
 
 // Draws the field of a sea. The same spectrum, choppiness and seed give
