@@ -6,6 +6,7 @@
 #include "reflection.glsl"
 #include "refraction.glsl"
 #include "ocean.glsl"
+#include "underwater_surface.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -26,11 +27,19 @@ void main()
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);
     vec3 v = toEye / distance_m;
+    vec2 screenUv = gl_FragCoord.xy * viewportInvSize;
+    // Underwater hook: the surface seen from below is Snell's window and the
+    // water's own colour, shaded in underwater_surface.glsl.
+#if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
+    if (facetSeenFromBelow(vPosition)) {
+        fragColor = passOutput(surfaceFromBelow(vPosition, n, screenUv));
+        return;
+    }
+#endif
     // Seen from a grazing angle, an interpolated normal can face away.
     if (dot(n, v) < 0.0)
         n = normalize(n - v * dot(n, v) * 1.01);
 
-    vec2 screenUv = gl_FragCoord.xy * viewportInvSize;
     vec3 reflected = reflectedRadiance(vPosition, reflect(-v, n));
     float path_m;
     vec3 refracted = refractedRadiance(vPosition, n, screenUv, path_m);
