@@ -1,6 +1,7 @@
 // The water-to-air optics of shaders/water_optics.glsl (Snell's window), run on the GPU
 // through a compute shader and checked against published figures and
 // Fresnel's own reciprocity, not against the code's earlier output.
+#include "render/waterline.h"
 #include "support/gl_test.h"
 #include "swell/gl/shader.h"
 
@@ -90,6 +91,37 @@ TEST_F(UnderwaterOptics, FresnelAndSnellFromWaterIntoAirMatchPublishedFigures)
     // Reflectance rises monotonically towards the critical angle.
     for (int i : {1, 2, 3, 4})
         EXPECT_GT(p[size_t(i)].waterToAir, p[size_t(i) - 1].waterToAir);
+}
+
+// Which side of the water the near plane lies on: per pixel whenever any of
+// its rectangle may be within the waves' reach, never a single switch there.
+TEST(WaterlineMedium, NearPlaneWithinTheWavesReachIsDecidedPerPixel)
+{
+    using swell::detail::NearPlaneMedium;
+    using swell::detail::nearPlaneMedium;
+    swell::Camera camera;
+    camera.near_m = 0.1;
+    camera.fovY_deg = 60.0;
+    const double aspect = 16.0 / 9.0;
+    // The near plane's corners lie 0.1 * sqrt(1 + tan^2(30 deg) * (1 + aspect^2)) = 0.154 m from the eye.
+    const swell::WaveReach calm{0.0, 0.0}, swell1m{1.0, 0.5};
+    camera.position_m.y = 0.15;
+    EXPECT_EQ(nearPlaneMedium(camera, aspect, calm), NearPlaneMedium::Both) << "a corner dips under still water";
+    camera.position_m.y = 0.16;
+    EXPECT_EQ(nearPlaneMedium(camera, aspect, calm), NearPlaneMedium::Air);
+    camera.position_m.y = -0.15;
+    EXPECT_EQ(nearPlaneMedium(camera, aspect, calm), NearPlaneMedium::Both);
+    camera.position_m.y = -0.16;
+    EXPECT_EQ(nearPlaneMedium(camera, aspect, calm), NearPlaneMedium::Water);
+    // Waves 1 m high: anywhere within 1.154 m of the mean level is decided per pixel.
+    for (double y : {-1.15, -0.5, 0.0, 0.5, 1.15}) {
+        camera.position_m.y = y;
+        EXPECT_EQ(nearPlaneMedium(camera, aspect, swell1m), NearPlaneMedium::Both) << "eye at " << y << " m";
+    }
+    camera.position_m.y = 1.16;
+    EXPECT_EQ(nearPlaneMedium(camera, aspect, swell1m), NearPlaneMedium::Air);
+    camera.position_m.y = -1.16;
+    EXPECT_EQ(nearPlaneMedium(camera, aspect, swell1m), NearPlaneMedium::Water);
 }
 
 } // namespace
