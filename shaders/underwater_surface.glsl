@@ -14,19 +14,20 @@
 
 // What comes through the surface at p along the refracted ray t (into the
 // air): the world above the water, which the refraction pass renders when
-// the eye is under the water, or else the sky, fogged as the sky pass fogs it.
+// the eye is under the water, over the sky, fogged as the sky pass fogs it.
+// The pass is cleared to alpha 0 and geometry writes alpha 1, so the
+// filtered alpha is the geometry's coverage and its edges stay smooth when
+// the half-size texture is magnified.
 vec3 lightFromAbove(vec3 p, vec3 normalUp, vec3 t, vec2 screenUv)
 {
     vec2 uv = clamp(screenUv - normalUp.xz * refractionDistortion, vec2(0.001), vec2(0.999));
+    vec4 world = texture(refractionColor, uv);
     float depth = texture(refractionDepth, uv).r;
-    if (depth < 1.0) {
-        vec3 above = worldFromScreen(uv, depth);
-        // Only what really lies above this point of the surface (the pass
-        // holds the world below instead when the eye is above the water).
-        if (above.y > p.y)
-            return texture(refractionColor, uv).rgb;
-    }
-    return applyFog(skyRadiance(t), skyDistance(t));
+    // Only what really lies above this point of the surface (the pass holds
+    // the world below instead while the eye is above the water).
+    if (depth < 1.0 && worldFromScreen(uv, depth).y <= p.y)
+        world = vec4(0.0);
+    return world.rgb + applyFog(skyRadiance(t), skyDistance(t)) * (1.0 - world.a);
 }
 
 // The colour of the surface at p, seen from the eye below it; normalUp is
