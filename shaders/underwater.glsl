@@ -90,9 +90,12 @@ vec3 underwaterFog(vec3 seen, vec3 d, float depth_m, float path_m)
 }
 
 // The background below the surface: the water's depths, no end to the path.
+// Only downward and level rays have none; an upward one (a ray between the
+// water's triangles, or reflected up by a steep facet) is given a level
+// one's colour rather than a path through the surface.
 vec3 underwaterBackground(vec3 d, float depth_m)
 {
-    return underwaterInscatter(d, depth_m, 1e6);
+    return underwaterInscatter(vec3(d.x, min(d.y, 0.0), d.z), depth_m, 1e6);
 }
 
 // World geometry at p seen from under the water: the light that reaches p is
