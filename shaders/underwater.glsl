@@ -41,8 +41,8 @@ bool pixelUnderwater()
     return pixelViewDirection().y < 0.0;
 }
 
-// Whether a water fragment at p is seen from below: the eye lies under the
-// plane of the facet drawn there. The facet's normal comes from the
+// Whether a water fragment at p is seen from below (for the mask,
+// waterline.frag): the eye lies under the plane of the facet drawn there. The facet's normal comes from the
 // position's screen derivatives (what the rasteriser drew, not the shading
 // normal), turned to point up; call in uniform control flow.
 bool facetSeenFromBelow(vec3 p)

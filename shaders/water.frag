@@ -29,9 +29,13 @@ void main()
     vec3 v = toEye / distance_m;
     vec2 screenUv = gl_FragCoord.xy * viewportInvSize;
     // Underwater hook: the surface seen from below is Snell's window and the
-    // water's own colour, shaded in underwater_surface.glsl.
+    // water's own colour, shaded in underwater_surface.glsl. The waterline
+    // mask says so: it holds the side this very fragment is seen from when
+    // the eye is near the surface, and the eye's side elsewhere (so a
+    // folded facet of a choppy sea never turns a view from the air to one
+    // from below).
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
-    if (facetSeenFromBelow(vPosition)) {
+    if (pixelUnderwater()) {
         fragColor = passOutput(surfaceFromBelow(vPosition, n, screenUv));
         return;
     }
