@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -111,6 +112,7 @@ TEST_F(Underwater, SnellsWindowHasTheCriticalAngleAndWaterColourOutside)
             edge_deg = (double(b) + 0.5) * kBin_deg;
             break;
         }
+    std::printf("Snell's window: edge at %.2f deg (sky %.0f, water %.0f luminance)\n", edge_deg, skyLevel, waterLevel);
     // +-1 degree: the tolerance; a bin is 0.25 degree and a pixel here 0.2 to 0.5.
     EXPECT_NEAR(edge_deg, kCriticalAngle_deg, 1.0) << "sky " << skyLevel << ", water " << waterLevel << ": "
                                                    << swell::test::saveTestImage(image, "snell.actual");
@@ -181,6 +183,8 @@ TEST_F(Underwater, WaterAbsorbsEachChannelAsBeerLambertSays)
         ASSERT_GT(nearContrast, 0.01) << "channel " << c << ": the rock does not stand out at all: "
                                       << swell::test::saveTestImage(nearRock, "absorption_near.actual");
         const double expected = std::exp(-scene.water.absorption_per_m[c] * 2.0);
+        std::printf("channel %d: contrast through 2 m more water x%.3f, Beer-Lambert x%.3f\n", c,
+                    farContrast / nearContrast, expected);
         // 0.04: 8-bit rounding of the far red contrast (about 0.03 linear)
         // is up to 3% of it; red 0.41, green 0.84, blue 0.89 are far apart.
         EXPECT_NEAR(farContrast / nearContrast, expected, 0.04) << "channel " << c;
