@@ -6,6 +6,7 @@
 #include "reflection.glsl"
 #include "refraction.glsl"
 #include "ocean.glsl"
+#include "underwater_surface.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -40,6 +41,18 @@ void main()
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);
     vec3 v = toEye / distance_m;
+    // Underwater hook: the surface seen from below is Snell's window and the
+    // water's own colour, shaded in underwater_surface.glsl. The waterline
+    // mask says so: it holds the side this very fragment is seen from when
+    // the eye is near the surface, and the eye's side elsewhere (so a
+    // folded facet of a choppy sea never turns a view from the air to one
+    // from below).
+#if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
+    if (pixelUnderwater()) {
+        fragColor = passOutput(surfaceFromBelow(vPosition, n, gl_FragCoord.xy * viewportInvSize));
+        return;
+    }
+#endif
     // Seen from a grazing angle, an interpolated normal can face away.
     if (dot(n, v) < 0.0)
         n = normalize(n - v * dot(n, v) * 1.01);

@@ -39,6 +39,19 @@
 #define SWELL_UNIT_OCEAN1 7
 #define SWELL_UNIT_OCEAN2 8
 #define SWELL_UNIT_OCEAN3 9
+// The waterline mask: which pixels look out from below the water (underwater.glsl).
+#define SWELL_UNIT_WATERLINE 10
+
+// Values of the waterline mask (an R8 texture): the pixel's ray meets no
+// water, meets it first from above, or first from below.
+#define SWELL_WATERLINE_NO_HIT 0.0
+#define SWELL_WATERLINE_ABOVE 0.5
+#define SWELL_WATERLINE_BELOW 1.0
+
+// Refractive index of sea water for visible light (air: 1). 1.333 is pure
+// water's at 589 nm and 20 C; sea water's is about 1.34 (Quan and Fry 1995).
+// Snell's window's half-angle is asin(1 / n): 48.6 degrees.
+#define SWELL_WATER_IOR 1.333
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).

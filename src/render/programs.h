@@ -61,8 +61,9 @@ private:
 };
 
 // Programs with no uniforms of their own (all from the Frame block): the sky
-// (fullscreen.vert + sky.frag), the water (water.vert + water.frag) and the
-// water's vertex capture for tests (water.vert with transform feedback).
+// (fullscreen.vert + sky.frag), the water (water.vert + water.frag), the
+// waterline mask (water.vert + waterline.frag) and the water's vertex
+// capture for tests (water.vert with transform feedback).
 class BlockProgram {
 public:
     BlockProgram() = default;
@@ -75,7 +76,7 @@ private:
 };
 
 struct Programs {
-    BlockProgram water, sky, capture;
+    BlockProgram water, sky, waterline, capture;
     MeshProgram mesh;
     SkyBakeProgram skyBake;
 };

@@ -9,6 +9,7 @@
 #include "render/render_target.h"
 #include "render/sky_cubemap.h"
 #include "render/water_grid.h"
+#include "render/waterline.h"
 #include "render/wave_model_gpu.h"
 #include "render/world.h"
 #include "swell/error.h"
@@ -48,6 +49,7 @@ struct Renderer::Impl {
     WaterGrid waterGrid;
     World world;
     RenderTarget reflection, refraction, output;
+    WaterlineMask waterline;
     FrameCounters counters;
     PassObserver* observer = nullptr;
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
@@ -170,6 +172,27 @@ struct Renderer::Impl {
         ++counters.drawCalls;
     }
 
+    // The waterline mask for the main pass (render/waterline.h): drawn from
+    // the water grid when the near plane can lie on either side of the
+    // waves, else cleared to the side it lies on. Expects the main pass's
+    // frame uniforms bound.
+    void drawWaterline(NearPlaneMedium medium, glm::ivec2 size)
+    {
+        waterline.resize(size);
+        if (medium != NearPlaneMedium::Both) {
+            waterline.fill(medium);
+            return;
+        }
+        notify(true, "waterline");
+        beginPass(waterline.framebuffer(), size, glm::vec4(SWELL_WATERLINE_NO_HIT));
+        glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.allAbove()); // never the target itself
+        programs.waterline.use();
+        glBindVertexArray(waterGrid.vertexArray());
+        waterGrid.draw();
+        ++counters.drawCalls;
+        notify(false, "waterline");
+    }
+
     // Every pass sets all the state it depends on, so passes can be reordered.
     void beginPass(GLuint framebuffer, glm::ivec2 size, glm::vec4 clear)
     {
@@ -209,6 +232,9 @@ struct Renderer::Impl {
         const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
         reflection.resize(scaled);
         refraction.resize(scaled);
+        // Passes before the main one see nothing from below the water.
+        waterline.resize(size);
+        glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.allAbove());
 
         // Pass 1: the world mirrored about the water plane, clipped just below it.
         FrameUniforms f = base;
@@ -229,6 +255,10 @@ struct Renderer::Impl {
         // Pass 1b: the world below the water, for refraction.
         f = base;
         f.clipPlane = glm::vec4(0.0f, -1.0f, 0.0f, float(scene.reflection.clipOffset_m));
+        // Underwater hook: an eye below the surface looks up through it, so
+        // this pass holds the world above the water instead.
+        if (eyeUnderwater(camera, model(), time_s))
+            f.clipPlane = glm::vec4(0.0f, 1.0f, 0.0f, float(scene.reflection.clipOffset_m));
         setViewport(f, scaled);
         notify(true, "refraction");
         bindFrame(PassRefraction, f);
@@ -243,8 +273,10 @@ struct Renderer::Impl {
         // alone), so its shader runs on the visible sky's pixels only.
         f = base;
         f.passEncodesSrgb = 1;
-        notify(true, "main");
         bindFrame(PassMain, f);
+        drawWaterline(nearPlaneMedium(camera, double(size.x) / double(size.y), model().reach()), size);
+        glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.texture());
+        notify(true, "main");
         beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin);
         drawHullVolumes();
