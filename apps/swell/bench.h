@@ -126,7 +126,11 @@ public:
     ~FloorFrame();
     FloorFrame(const FloorFrame&) = delete;
     FloorFrame& operator=(const FloorFrame&) = delete;
-    void render(PassObserver& observer);
+    // waterline: also the waterline mask's pass, which real frames draw
+    // only with the camera in the waves. The benchmark alternates: the
+    // frame's floor (the least) is then one without it, the pass's own floor
+    // comes from the frames with it.
+    void render(PassObserver& observer, bool waterline);
 
 private:
     struct State;

@@ -191,7 +191,7 @@ int runBench(const BenchOptions& options)
     // The floor: the same passes at the same sizes with trivial shading.
     FloorFrame floorFrame(r.passSize, r.size);
     for (int i = 0; i < floorWarmup + options.frames; ++i) {
-        FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder); });
+        FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder, i % 2 == 0); });
         checkGl("rendering the floor");
         if (i >= floorWarmup)
             r.floor.push_back(std::move(frame));
