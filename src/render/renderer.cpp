@@ -91,6 +91,7 @@ struct Renderer::Impl {
         notify(false, "ocean");
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
+        f.waveHeightDeviation_m = float(model().heightDeviation_m());
         const WaveReach reach = model().reach();
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, f.worldBoxes);
         const DrawnSurface drawn(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
