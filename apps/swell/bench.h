@@ -184,6 +184,7 @@ struct Results {
     Machine machine;
     glm::ivec2 size{0}, passSize{0};
     std::string surface; // the wave model's summary()
+    std::string output;  // how frames reach the output: "antialiasing fxaa, render scale 1"
     int gridCells = 0, frames = 0, warmup = 0;
     double frameStep_s = 0.0;
     bool pipelineStatistics = false, gpuTimers = false;

@@ -5,12 +5,14 @@
 #include "data_folders.h"
 
 #include "swell/error.h"
+#include "swell/renderer.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <regex>
 
 namespace {
@@ -39,6 +41,22 @@ const CLI::Validator finiteNumber(
     },
     "FINITE");
 
+// --antialiasing and --scale on a subcommand, into `settings`.
+void addOutputOptions(CLI::App& command, swell::app::OutputSettings& settings)
+{
+    const std::map<std::string, swell::Antialiasing> modes{
+        {"off", swell::Antialiasing::Off}, {"msaa4", swell::Antialiasing::Msaa4}, {"fxaa", swell::Antialiasing::Fxaa}};
+    command.add_option_function<swell::Antialiasing>(
+               "--antialiasing", [&settings](const swell::Antialiasing& mode) { settings.antialiasing = mode; },
+               "Edge smoothing: fxaa, msaa4 or off; overrides the scene's antialiasing key (default fxaa)")
+        ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
+    command.add_option("--scale", settings.renderScale,
+                       fmt::format("Render the frame at this fraction of the output size and scale it up (filtered), "
+                                   "{}..{}", swell::kMinRenderScale, swell::kMaxRenderScale))
+        ->check(finiteNumber & CLI::Range(swell::kMinRenderScale, swell::kMaxRenderScale))
+        ->capture_default_str();
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -62,6 +80,7 @@ int main(int argc, char** argv)
                             "Quit after this many frames (for tests and scripts)")->check(CLI::Range(0, 1000000));
     viewCommand->add_option("--screenshot", view.screenshotPath,
                             "With --exit-after-frames: write the last frame to this PNG first");
+    addOutputOptions(*viewCommand, view.outputSettings);
 
     swell::app::RenderOptions render;
     std::string renderSize = "1280x720";
@@ -79,6 +98,7 @@ int main(int argc, char** argv)
         ->check(finiteNumber & CLI::Range(0.0, 3600.0));
     renderCommand->add_option("--fps", render.fps, "Frames per second of a sequence")
         ->check(finiteNumber & CLI::Range(1.0, 240.0))->capture_default_str();
+    addOutputOptions(*renderCommand, render.outputSettings);
 
     swell::app::BenchOptions bench;
     std::string benchSize = "1280x720";
@@ -88,6 +108,9 @@ int main(int argc, char** argv)
     benchCommand->add_option("--warmup", bench.warmup, "Frames rendered first and not measured")
         ->check(CLI::Range(0, 100000))->capture_default_str();
     benchCommand->add_option("--json", bench.jsonPath, "Also write the results as JSON to this file");
+    addOutputOptions(*benchCommand, bench.outputSettings);
+    benchCommand->add_flag("--still", bench.still,
+                           "Every frame from the scene's own camera (the view `swell view` opens on), not the path");
 
     try {
         app.parse(argc, argv);

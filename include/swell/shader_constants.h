@@ -38,6 +38,8 @@
 #define SWELL_UNIT_OCEAN0 6
 #define SWELL_UNIT_OCEAN1 7
 #define SWELL_UNIT_OCEAN2 8
+// The image a post-process (FXAA) reads.
+#define SWELL_UNIT_POST_SOURCE 9
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).

@@ -91,6 +91,7 @@ Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& va
     Programs p;
     p.water = BlockProgram(build(sources, variant, "water.vert", "water.frag"));
     p.sky = BlockProgram(build(sources, variant, "fullscreen.vert", "sky.frag"));
+    p.fxaa = BlockProgram(build(sources, variant, "fullscreen.vert", "fxaa.frag"));
     p.mesh = MeshProgram(sources, variant);
     p.skyBake = SkyBakeProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),

@@ -59,8 +59,9 @@ private:
 };
 
 // Programs with no uniforms of their own (all from the Frame block): the sky
-// (fullscreen.vert + sky.frag), the water (water.vert + water.frag) and the
-// water's vertex capture for tests (water.vert with transform feedback).
+// (fullscreen.vert + sky.frag), the water (water.vert + water.frag), the
+// FXAA filter (fullscreen.vert + fxaa.frag) and the water's vertex capture
+// for tests (water.vert with transform feedback).
 class BlockProgram {
 public:
     BlockProgram() = default;
@@ -73,7 +74,7 @@ private:
 };
 
 struct Programs {
-    BlockProgram water, sky, capture;
+    BlockProgram water, sky, fxaa, capture;
     MeshProgram mesh;
     SkyBakeProgram skyBake;
 };

@@ -16,6 +16,7 @@
 #include "swell/grid.h"
 #include "swell/scene_changes.h"
 
+#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -46,6 +47,9 @@ struct Renderer::Impl {
     WaterGrid waterGrid;
     World world;
     RenderTarget reflection, refraction, output;
+    // Where the main pass draws when anti-aliased or scaled (render_target.h).
+    MainTarget mainTarget;
+    double renderScale = 1.0;
     FrameCounters counters;
     PassObserver* observer = nullptr;
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
@@ -184,11 +188,14 @@ struct Renderer::Impl {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
 
-    void render(const Camera& camera, double time_s, glm::ivec2 size, GLuint framebuffer)
+    void render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer)
     {
         counters = {};
-        if (size.x <= 0 || size.y <= 0)
+        if (outputSize.x <= 0 || outputSize.y <= 0)
             return;
+        // Every pass works at the render scale; present() brings the main
+        // pass's image to the output's size.
+        const glm::ivec2 size = scaledFrameSize(outputSize, renderScale);
         glm::dvec3 origin;
         const FrameUniforms base = prepareFrame(camera, time_s, size, origin);
         // The procedural sky is baked into the cubemap when first needed and
@@ -237,7 +244,8 @@ struct Renderer::Impl {
         f.passEncodesSrgb = 1;
         notify(true, "main");
         bindFrame(PassMain, f);
-        beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        const GLuint mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
+        beginPass(mainFramebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin);
         drawHullVolumes();
         notify(true, "water");
@@ -245,6 +253,13 @@ struct Renderer::Impl {
         notify(false, "water");
         drawSky();
         notify(false, "main");
+
+        // The MSAA resolve, the FXAA filter and the render scale's filtering.
+        if (mainTarget.presents()) {
+            notify(true, "present");
+            mainTarget.present(programs.fxaa, emptyVao.id());
+            notify(false, "present");
+        }
         glBindVertexArray(0);
         glUseProgram(0);
     }
@@ -316,6 +331,15 @@ void Renderer::setWaveModel(std::shared_ptr<const WaveModel> model)
     Impl& s = *impl_;
     s.apply(s.scene, ParameterEffect::Frame, s.sceneModel, std::move(model), false);
 }
+
+void Renderer::setRenderScale(double scale)
+{
+    if (!(scale >= kMinRenderScale && scale <= kMaxRenderScale))
+        throw InputError({"render scale"}, fmt::format("{} is outside {}..{}", scale, kMinRenderScale, kMaxRenderScale));
+    impl_->renderScale = scale;
+}
+
+double Renderer::renderScale() const { return impl_->renderScale; }
 
 const FrameCounters& Renderer::counters() const { return impl_->counters; }
 void Renderer::setPassObserver(PassObserver* observer) { impl_->observer = observer; }

@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
+#include <vector>
 
 namespace swell::app::viewer {
 
@@ -37,9 +38,6 @@ namespace fs = std::filesystem;
 
 // Simulation time per frame of a scripted run, s.
 constexpr double kScriptedFrame_s = 1.0 / 60.0;
-// The clock advances at most this much per frame, s, so a stall (a window
-// being dragged, a slow shader rebuild) does not jump the sea ahead.
-constexpr double kMaxFrameStep_s = 0.25;
 // The fly camera moves for at most this long per frame, s: long enough to
 // keep its speed at the few frames per second of software GL, short enough
 // that a stall does not throw the camera far away.
@@ -79,8 +77,7 @@ private:
 
 // The rate simulation time really advances at, simulated seconds per real
 // second, over about the last second. It differs from the rate asked for
-// when frames take longer than kMaxFrameStep_s (software GL at a large
-// window) or time is paused.
+// when frames take longer than kMaxFrameStep_s or time is paused.
 class TimeRateMeter {
 public:
     void add(double simulated_s, double real_s)
@@ -177,6 +174,7 @@ int run(const ViewOptions& options)
     if (!options.screenshotPath.empty() && fs::path(options.screenshotPath).extension() != ".png")
         throw InputError({"--screenshot"}, fmt::format("'{}': a screenshot is a .png file", options.screenshotPath));
     Scene scene = loadSceneOrDefault(options.scenePath);
+    options.outputSettings.applyTo(scene);
 
     const std::string title =
         options.scenePath.empty() ? std::string("Swell") : "Swell - " + fs::path(options.scenePath).filename().string();
@@ -191,12 +189,16 @@ int run(const ViewOptions& options)
     panel.sceneLoaded(options.scenePath);
 
     ViewState view;
+    view.renderScale = options.outputSettings.renderScale;
     view.fly.setPose(cameraAt(session.scene().camera, 0.0));
     FlyControls controls(window.handle());
     FrameStats stats;
     stats.context = window.description();
     TimeRateMeter rate;
 
+    // A scripted run's frame times, s: from each frame's start to the next's
+    // (input, panel, drawing, swap), reported when it ends.
+    std::vector<double> scriptedFrames_s;
     double last = glfwGetTime();
     for (int frame = 0; !window.shouldClose(); ++frame) {
         if (!scripted && window.framebufferSize() == glm::ivec2(0)) {
@@ -210,6 +212,8 @@ int run(const ViewOptions& options)
         const double frame_s = now - last;
         last = now;
         stats.times.add(float(frame_s * 1000.0));
+        if (scripted && frame > 0)
+            scriptedFrames_s.push_back(frame_s);
 
         gui.beginFrame();
         bool reloadShaders = false, screenshot = false;
@@ -258,6 +262,7 @@ int run(const ViewOptions& options)
         // The panel may have changed the scene or the camera: draw with what it left.
         const Camera camera = frameCamera(view, session.scene());
         const glm::ivec2 size = window.framebufferSize();
+        session.renderer().setRenderScale(view.renderScale);
         session.renderer().render(camera, view.time_s, size);
         stats.counters = session.renderer().counters();
         stats.size = size;
@@ -282,6 +287,14 @@ int run(const ViewOptions& options)
         window.swapBuffers();
         if (lastFrame)
             break;
+    }
+    if (!scriptedFrames_s.empty()) {
+        // On stderr, so that stdout keeps only the screenshot's path.
+        std::vector<double> sorted = scriptedFrames_s;
+        std::sort(sorted.begin(), sorted.end());
+        std::fprintf(stderr, "swell view: %zu frames timed, median %.1f ms a frame (min %.1f, max %.1f), %dx%d\n",
+                     sorted.size(), 1000.0 * sorted[sorted.size() / 2], 1000.0 * sorted.front(),
+                     1000.0 * sorted.back(), window.framebufferSize().x, window.framebufferSize().y);
     }
     return kExitOk;
 }
