@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <ctime>
 #include <set>
 #include <vector>
 
@@ -144,6 +145,23 @@ Camera frameCamera(ViewState& view, const Scene& scene)
     return view.fly.camera();
 }
 
+// This process's CPU time, all threads (llvmpipe's rasteriser threads
+// included), ms: the clock `swell bench` reports, which varies much less
+// than wall time on a machine shared with other work.
+double processCpu_ms()
+{
+    timespec t{};
+    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1.0e3 + double(t.tv_nsec) * 1.0e-6;
+}
+
+// The median of `values` (not empty).
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
 fs::path absolutePath(const fs::path& path)
 {
     std::error_code ec;
@@ -196,10 +214,11 @@ int run(const ViewOptions& options)
     stats.context = window.description();
     TimeRateMeter rate;
 
-    // A scripted run's frame times, s: from each frame's start to the next's
-    // (input, panel, drawing, swap), reported when it ends.
-    std::vector<double> scriptedFrames_s;
+    // A scripted run's frame times, from each frame's start to the next's
+    // (input, panel, drawing, swap), reported when it ends: wall s, CPU ms.
+    std::vector<double> scriptedFrames_s, scriptedFramesCpu_ms;
     double last = glfwGetTime();
+    double lastCpu_ms = processCpu_ms();
     for (int frame = 0; !window.shouldClose(); ++frame) {
         if (!scripted && window.framebufferSize() == glm::ivec2(0)) {
             // Minimised: nothing to draw; wait for the window to come back.
@@ -212,8 +231,12 @@ int run(const ViewOptions& options)
         const double frame_s = now - last;
         last = now;
         stats.times.add(float(frame_s * 1000.0));
-        if (scripted && frame > 0)
+        const double cpu_ms = processCpu_ms();
+        if (scripted && frame > 0) {
             scriptedFrames_s.push_back(frame_s);
+            scriptedFramesCpu_ms.push_back(cpu_ms - lastCpu_ms);
+        }
+        lastCpu_ms = cpu_ms;
 
         gui.beginFrame();
         bool reloadShaders = false, screenshot = false;
@@ -290,11 +313,11 @@ int run(const ViewOptions& options)
     }
     if (!scriptedFrames_s.empty()) {
         // On stderr, so that stdout keeps only the screenshot's path.
-        std::vector<double> sorted = scriptedFrames_s;
-        std::sort(sorted.begin(), sorted.end());
-        std::fprintf(stderr, "swell view: %zu frames timed, median %.1f ms a frame (min %.1f, max %.1f), %dx%d\n",
-                     sorted.size(), 1000.0 * sorted[sorted.size() / 2], 1000.0 * sorted.front(),
-                     1000.0 * sorted.back(), window.framebufferSize().x, window.framebufferSize().y);
+        const glm::ivec2 size = window.framebufferSize();
+        std::fprintf(stderr,
+                     "swell view: %zu frames timed at %dx%d, render scale %.2f: median %.1f ms wall, %.1f ms CPU a frame\n",
+                     scriptedFrames_s.size(), size.x, size.y, view.renderScale, 1000.0 * median(scriptedFrames_s),
+                     median(scriptedFramesCpu_ms));
     }
     return kExitOk;
 }
