@@ -174,7 +174,8 @@ int runBench(const BenchOptions& options)
     renderer.setPassObserver(nullptr);
 
     // The floor: the same passes at the same sizes with trivial shading.
-    FloorFrame floorFrame(r.passSize, drawSize);
+    const bool presents = scene.antialiasing != Antialiasing::Off || drawSize != r.size;
+    FloorFrame floorFrame(r.passSize, drawSize, r.size, presents);
     for (int i = 0; i < floorWarmup + options.frames; ++i) {
         FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder); });
         checkGl("rendering the floor");

@@ -5,15 +5,17 @@
 #include "data_folders.h"
 
 #include "swell/error.h"
+#include "swell/parameters.h"
 #include "swell/renderer.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <regex>
+#include <vector>
 
 namespace {
 
@@ -44,12 +46,17 @@ const CLI::Validator finiteNumber(
 // --antialiasing and --scale on a subcommand, into `settings`.
 void addOutputOptions(CLI::App& command, swell::app::OutputSettings& settings)
 {
-    const std::map<std::string, swell::Antialiasing> modes{
-        {"off", swell::Antialiasing::Off}, {"msaa4", swell::Antialiasing::Msaa4}, {"fxaa", swell::Antialiasing::Fxaa}};
-    command.add_option_function<swell::Antialiasing>(
-               "--antialiasing", [&settings](const swell::Antialiasing& mode) { settings.antialiasing = mode; },
+    // The scene file's names for the modes, from the parameter table.
+    const swell::Parameter& key = *swell::findParameter("antialiasing");
+    const std::vector<std::string> names(key.choices.begin(), key.choices.end());
+    command.add_option_function<std::string>(
+               "--antialiasing",
+               [&settings, names](const std::string& name) {
+                   const auto at = std::find(names.begin(), names.end(), name);
+                   settings.antialiasing = swell::Antialiasing(at - names.begin());
+               },
                "Edge smoothing: fxaa, msaa4 or off; overrides the scene's antialiasing key (default fxaa)")
-        ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
+        ->check(CLI::IsMember(names));
     command.add_option("--scale", settings.renderScale,
                        fmt::format("Render the frame at this fraction of the output size and scale it up (filtered), "
                                    "{}..{}", swell::kMinRenderScale, swell::kMaxRenderScale))
