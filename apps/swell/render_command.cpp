@@ -124,11 +124,13 @@ int runRender(const RenderOptions& options)
                                        "(apt-get install ffmpeg), or write a PNG sequence instead");
     createOutputFolder(output);
 
-    const Scene scene = loadSceneOrDefault(options.scenePath);
+    Scene scene = loadSceneOrDefault(options.scenePath);
+    options.outputSettings.applyTo(scene);
     gl::HeadlessContext context(true);
     gl::DebugHandler debug = gl::logOnceDebugHandler();
     gl::installDebugHandler(&debug);
     Renderer renderer(scene);
+    renderer.setRenderScale(options.outputSettings.renderScale);
     const glm::ivec2 size(options.width, options.height);
 
     const int frames = options.duration_s ? std::max(1, int(std::lround(*options.duration_s * options.fps))) : 1;

@@ -52,6 +52,8 @@
 // water's at 589 nm and 20 C; sea water's is about 1.34 (Quan and Fry 1995).
 // Snell's window's half-angle is asin(1 / n): 48.6 degrees.
 #define SWELL_WATER_IOR 1.333
+// The image a post-process (FXAA) reads.
+#define SWELL_UNIT_POST_SOURCE 11
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).
