@@ -8,6 +8,7 @@
 #include "render/programs.h"
 #include "render/render_target.h"
 #include "render/sky_cubemap.h"
+#include "render/slope_statistics.h"
 #include "render/water_grid.h"
 #include "render/waterline.h"
 #include "render/wave_model_gpu.h"
@@ -38,6 +39,7 @@ struct Renderer::Impl {
     // The scene's wave model, and the one setWaveModel() put in its place.
     std::shared_ptr<const WaveModel> sceneModel, overrideModel;
     std::unique_ptr<WaveModelGpu> modelGpu;
+    double seaMeanSquareSlope = 0.0; // of model(), for the reflection's masking (slope_statistics.h)
     GridShape gridShape;
     gl::ShaderSources sources;
     // Water shading terms left out, for the benchmark (RendererOptions).
@@ -93,6 +95,7 @@ struct Renderer::Impl {
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         const WaveReach reach = model().reach();
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, f.worldBoxes);
+        f.waveMeanSquareSlope = float(seaMeanSquareSlope);
         const DrawnSurface drawn(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
         poses = objectPoses(scene, model(), drawn, origin, time_s);
         posesOrigin = origin;
@@ -311,8 +314,10 @@ struct Renderer::Impl {
         scene = next;
         sceneModel = std::move(nextSceneModel);
         overrideModel = std::move(nextOverride);
-        if (gpu)
+        if (gpu) {
             modelGpu = std::move(gpu);
+            seaMeanSquareSlope = meanSquareSlope(model());
+        }
         if (programsChanged) {
             variant = nextVariant;
             programs = std::move(nextPrograms);
