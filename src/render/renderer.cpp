@@ -251,7 +251,13 @@ struct Renderer::Impl {
         bindFrame(PassReflection, f);
         beginPass(reflection.framebuffer(), scaled, glm::vec4(0.0f));
         glEnable(GL_CLIP_DISTANCE0);
+        // The mirror turns every triangle's winding around on screen: without
+        // this the faces seen would count as back faces, and mesh.frag, which
+        // turns a back face's normal round, would light each object's
+        // reflection from the wrong side (a dark rock mirrored pale).
+        glFrontFace(GL_CW);
         drawWorld(origin);
+        glFrontFace(GL_CCW);
         drawSky();
         notify(false, "reflection");
 

@@ -201,6 +201,30 @@ TEST_P(Reflection, CalmWaterMirrorsTheBoxIntoItsMirrorFootprintAndFillsIt)
     EXPECT_EQ(t.unfilled, 0) << "holes in the mirror image: " << swell::test::saveTestImage(with, name);
 }
 
+TEST_F(ReflectionRayMarch, AFaceSeenInTheMirrorHasTheColourItHasSeenDirectly)
+{
+    // The box's face towards the camera (normal +z) is seen both directly and
+    // in flat water; lit by the same sun and sky it has one colour, and the
+    // reflection alone (debug view) shows it unchanged. The sun is behind the
+    // box, so that face gets only sky light: lit as if it faced the other
+    // way, its mirror image would be several times brighter.
+    swell::Scene scene = stage(swell::ReflectionMode::RayMarch, true);
+    scene.debugView = swell::DebugView::Reflection;
+    swell::Renderer renderer(scene);
+    renderer.setWaveModel(std::make_shared<swell::FlatModel>());
+    const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
+    const glm::dvec3 faceCentre = kCentre_m + glm::dvec3(0.0, 0.0, kHalf_m);
+    const glm::dvec2 direct = projectToPixel(camera, kSize, faceCentre);
+    const glm::dvec2 mirrored = projectToPixel(camera, kSize, faceCentre * glm::dvec3(1.0, -1.0, 1.0));
+    const std::uint8_t* a = image.pixel(int(direct.x), int(direct.y));
+    const std::uint8_t* b = image.pixel(int(mirrored.x), int(mirrored.y));
+    // 3 levels: the face is one flat colour; its texel is sampled between
+    // texels and stored as half floats before the output's 8 bits.
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(int(b[c]), int(a[c]), 3) << "channel " << c << ": " << swell::test::saveTestImage(image, "reflection_face_colour");
+}
+
 // Small sine ripples (steepness 0: no horizontal motion), their slopes summed.
 swell::WaveSet ripples()
 {
