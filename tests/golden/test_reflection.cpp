@@ -386,7 +386,7 @@ TEST_F(ReflectionRayMarch, EveryReflectedPixelHasAFacetThatSendsItsRayToTheBox)
     // 1 px: the CPU takes the facet at the pixel's centre, the GPU at the
     // fragment's (the same point) but from a rest point interpolated over a
     // grid triangle and derivatives shared by a 2x2 quad; a facet's edge may
-    // sit a pixel off. (With 0 px the correct march shows 2 stray pixels.)
+    // sit a pixel off. (With 0 px the correct lookup shows 2 stray pixels.)
     auto within1px = [&](const std::vector<char>& map, int x, int y, bool all) {
         bool any = false, every = true;
         for (int dy = -1; dy <= 1; ++dy)
@@ -418,7 +418,8 @@ TEST_F(ReflectionRayMarch, EveryReflectedPixelHasAFacetThatSendsItsRayToTheBox)
     EXPECT_EQ(falseHits, 0) << "box colour where no facet sends the ray to the box, first at " << firstFalse.x << ","
                             << firstFalse.y << ": " << path;
     EXPECT_EQ(missed, 0) << "no box where every facet around sends the ray to it, first at " << firstMissed.x << ","
-                         << firstMissed.y << ": " << path;    // 48 / 0.6, as for the other effects: llvmpipe repeats its pixels on one
+                         << firstMissed.y << ": " << path;
+    // 48 / 0.6, as for the other effects: llvmpipe repeats its pixels on one
     // machine, and another CPU's math library moves a few pixels on the
     // ripples' and the box's edges by a few levels; a reflection that lost
     // its ripples or smeared the box moves hundreds of pixels by tens.
