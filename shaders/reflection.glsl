@@ -81,7 +81,9 @@ vec4 mirroredSceneAt(vec3 surface, vec3 direction, float t, out vec2 uv, out boo
 }
 
 // The reflected ray's hit, found from the planar reflection with a bounded
-// refinement (kRefineTaps depth taps and one colour tap at most):
+// refinement: at most kRefineTaps + 2 depth taps (the first guess, the
+// refinement, the fallback's check) and one colour tap per pixel, none at all
+// for a ray that misses every world box:
 //
 // The reflection texture holds, along each of the camera's lines of sight,
 // the nearest point of the mirrored world. Start from the distance t of what
