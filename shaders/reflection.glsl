@@ -111,8 +111,10 @@ float erfcPositive(float x)
 // wave stops: Smith's masking function G1 = 1 / (1 + Lambda) for a Gaussian
 // sea of mean square slope s2 (both directions; s2 / 2 along the ray's
 // azimuth), Lambda(nu) = (exp(-nu^2) / (nu sqrt(pi)) - erfc(nu)) / 2 with
-// nu = tan(elevation) / sqrt(s2) (Smith 1967, IEEE Trans. Antennas Propag.
-// 15(5), eq. 24; in this form Bruneton, Neyret & Holzschuch 2010, eq. 5).
+// nu = tan(elevation) / sqrt(s2): Smith's shadowing function for a Gaussian
+// surface (Smith 1967, "Geometrical shadowing of a random rough surface",
+// IEEE Trans. Antennas Propag. 15(5)), as Bruneton, Neyret & Holzschuch 2010
+// ("Real-time realistic ocean lighting") use it for the sea.
 // From a sea of s2 = 0.05 (about a 9 m/s wind) a ray 0.3 degrees up escapes
 // 8 times in 100, 2 degrees up 43, 10 degrees up 94: a grazing facet's
 // reflection of a distant shore is mostly the next wave's face instead.

@@ -240,7 +240,7 @@ TEST_P(Reflection, RippledWaterKeepsTheBoxWithinWhatTheSlopesAllow)
     // sum A_i k_i d_i cos(...), so its slope is at most sum A_i k_i (triangle
     // inequality), and the normal tilts at most atan of that from vertical.
     // Tilting a mirror by theta turns the reflected ray by at most 2 theta
-    // (the law of reflection; Hecht, Optics, 5th ed., sec. 4.4), and a point
+    // (the law of reflection: the ray turns twice as far as the normal), and a point
     // met along a ray turned by 2 theta is seen from the eye at most 2 theta
     // from where the untilted ray's point is (the exterior angle of the
     // triangle eye, surface, point). The surface also stands up to sum A_i
