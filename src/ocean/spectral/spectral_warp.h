@@ -5,9 +5,10 @@
 // lattice). One patch L apart, the lookups differ by w_c(x + L) - w_c(x),
 // which turns a wave k by k.(w_c(x + L) - w_c(x)): with that spread over a
 // radian or more, the field no longer correlates with itself at its period.
-// This is domain warping (Perlin 1985, "An Image Synthesizer", SIGGRAPH,
-// sec. "Turbulence": texture looked up at a perturbed point; Quilez 2002,
-// "Domain warping"), the usual cure for a repeating texture; here it is
+// This is domain warping (Perlin 1985, "An Image Synthesizer", SIGGRAPH:
+// the marble texture sin(x + turbulence(x)) looks a function up at a
+// perturbed point; Quilez 2002, "Domain warping"), the usual cure for a
+// repeating texture; here it is
 // sized to the cascade's energetic waves and kept to a few percent of local
 // strain (waves locally a few percent longer or shorter, or turned by a few
 // degrees), measured in tests/cpu/test_spectral_tiling.cpp.
