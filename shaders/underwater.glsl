@@ -26,10 +26,14 @@ vec3 pixelViewDirection()
 
 // Whether this pixel's ray starts (at the near plane) below the water.
 // Mask values: SWELL_WATERLINE_ABOVE or _BELOW where the ray meets the
-// surface; SWELL_WATERLINE_NO_HIT where it never does, so its whole length
-// lies in one medium: under the water when it points down (a downward ray
-// from the air would meet the water). Passes other than the main one bind a
-// 1x1 mask cleared to "above", so the coordinate is clamped into the texture.
+// surface; SWELL_WATERLINE_NO_HIT where it never does within the far plane,
+// so its whole drawn length lies in one medium: under the water when its
+// far end lies below the mean level (a ray from the air that far down would
+// have met the water). Not merely when it points down: a ray from the air
+// just below the horizon meets the water only beyond the far plane, and was
+// drawn as a dark line along the horizon. Passes other than the main one
+// bind a 1x1 mask cleared to "above", so the coordinate is clamped into the
+// texture.
 bool pixelUnderwater()
 {
     ivec2 texel = min(ivec2(gl_FragCoord.xy), textureSize(waterlineMask, 0) - 1);
@@ -38,7 +42,9 @@ bool pixelUnderwater()
         return true;
     if (m > 0.25)
         return false;
-    return pixelViewDirection().y < 0.0;
+    vec2 ndc = gl_FragCoord.xy * viewportInvSize * 2.0 - 1.0;
+    vec4 end = passInvViewProj * vec4(ndc, 1.0, 1.0);
+    return end.y / end.w < 0.0;
 }
 
 // Whether a water fragment at p is seen from below (for the mask,

@@ -8,6 +8,7 @@
 #include "swell/flat_model.h"
 #include "swell/grid.h"
 #include "swell/renderer.h"
+#include "swell/scene_file.h"
 #include "swell/wave_model.h"
 
 #include <glm/mat4x4.hpp>
@@ -261,6 +262,44 @@ TEST_F(Underwater, CameraInTheWavesSplitsTheViewAtTheWaterline)
     // 48 / 0.6: as for the other goldens; the split moved by one pixel row
     // along the width is a few hundred pixels by a hundred levels, over the mean.
     swell::test::expectMatchesGolden(image, "underwater_waterline", 48, 0.6);
+}
+
+} // namespace
+
+namespace {
+
+// A camera in the air among storm waves (so the waterline mask is drawn)
+// sees no dark line along the horizon: a ray just below the horizon meets
+// the water only beyond the far plane, and is in the air all the way. When
+// the mask's rays that meet no water were taken as under water whenever
+// they pointed down, the horizon's row showed the depths' colour.
+TEST_F(Underwater, AboveTheWavesTheHorizonHasNoUnderwaterLine)
+{
+    // The storm preset: waves high enough to reach the camera's near plane
+    // from 10 m up, and a far plane (5 km) nearer than the water seen just
+    // below the horizon.
+    swell::Scene scene = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/storm.toml");
+    scene.antialiasing = swell::Antialiasing::Off;
+    const glm::ivec2 size{480, 270};
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, 20.0);
+    const swell::Image image = renderer.renderImage(camera, 20.0, size);
+    // The horizon's row: the camera looks pitch_deg below it.
+    const double half = 0.5 * size.y;
+    const int horizon = int(std::lround(
+        half - std::tan(glm::radians(-camera.pitch_deg)) / std::tan(glm::radians(0.5 * scene.camera.fovY_deg)) * half));
+    auto luma = [&](int x, int y) {
+        const std::uint8_t* p = image.pixel(x, y);
+        return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    };
+    // Sky above and fogged far water below are within a few levels of each
+    // other there; the line was a third as bright as either.
+    int dark = 0;
+    for (int y = horizon - 4; y <= horizon + 4; ++y)
+        for (int x = 0; x < size.x; ++x)
+            if (luma(x, y) < 0.6 * std::min(luma(x, y - 5), luma(x, y + 5)))
+                ++dark;
+    EXPECT_LT(dark, size.x / 20) << swell::test::saveTestImage(image, "underwater_horizon_line");
 }
 
 } // namespace
