@@ -52,6 +52,8 @@ struct Renderer::Impl {
     std::optional<SkyBakeKey> bakedSky;
     // This frame's object transforms, one per scene object (see world.h).
     std::vector<glm::mat4> poses;
+    // The floating rigid bodies, stepped to each frame's time (objects/scene_bodies.h).
+    SceneBodies bodies;
 
     explicit Impl(RendererOptions options) : sources(std::move(options.shaders)) {}
 
@@ -84,8 +86,12 @@ struct Renderer::Impl {
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         const WaveReach reach = model().reach();
-        f.worldBoxCount = worldBoxes(world, scene, reach, origin, f.worldBoxes);
-        poses = objectPoses(scene, model(), origin, time_s);
+        // Bodies step on the CPU to this frame's time: fixed steps, so the
+        // poses depend on time_s alone, never on the frames before.
+        notify(true, "bodies");
+        poses = objectPoses(scene, model(), bodies, origin, time_s);
+        notify(false, "bodies");
+        f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
         waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
         return f;
     }
@@ -267,6 +273,11 @@ struct Renderer::Impl {
         World nextWorld;
         if (worldChanged)
             nextWorld = buildWorld(next);
+        // Bodies start again from t = 0 when what moves them changed.
+        const bool bodiesChanged = worldChanged || modelChanged || !sameBodies(scene, next);
+        SceneBodies nextBodies;
+        if (bodiesChanged)
+            nextBodies = buildBodies(worldChanged ? nextWorld : world, next, nextModel);
 
         scene = next;
         sceneModel = std::move(nextSceneModel);
@@ -281,6 +292,8 @@ struct Renderer::Impl {
             world = std::move(nextWorld);
             bakedSky.reset();
         }
+        if (bodiesChanged)
+            bodies = std::move(nextBodies);
         if (first || hasEffect(effects, ParameterEffect::Grid))
             buildGrid();
     }

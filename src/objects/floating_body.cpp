@@ -1,0 +1,206 @@
+// A rigid body on the water, stepped at a fixed rate (swell/floating_body.h).
+//
+// Each step is semi-implicit (symplectic) Euler: velocities from the forces
+// at the start of the step, then positions from the new velocities; it keeps
+// an undamped oscillator's energy bounded, where explicit Euler would pump it
+// up (Hairer, Lubich & Wanner 2006, Geometric Numerical Integration, sec. I.1.2).
+// Rotation follows Euler's equations, I dw/dt = tau - w x I w, in the world
+// frame, and dq/dt = 1/2 (0, w) q for the orientation.
+//
+// Damping is linear in the velocity relative to the water, b = 2 kappa
+// sqrt(m c) for each degree of freedom with restoring stiffness c: the
+// mass-spring-damper model of a floating body's heave, roll and pitch
+// (Journee & Massie 2001, Offshore Hydromechanics, sec. 6.3, eqs. 6.20-6.24),
+// with kappa the dimensionless damping ratio. The added mass a of that model
+// is left out (m + a becomes m): the water a body drags along makes its real
+// heave and roll periods longer than these (Newman 1977, Marine
+// Hydrodynamics, sec. 4.13).
+#include "swell/floating_body.h"
+
+#include "objects/hydrostatics.h"
+#include "swell/constants.h"
+#include "swell/error.h"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swell {
+
+using detail::hydrostaticLoad;
+using detail::sampleWater;
+
+namespace {
+
+// Tilt used to measure roll and pitch stiffness at rest, rad: small enough
+// to stay in the linear range of any body that floats upright.
+constexpr double kStiffnessTilt_rad = 0.01;
+
+} // namespace
+
+FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings, const BodyStart& start,
+                           const WaveModel& surface, const SurfaceFilter& filter)
+    : start_(start), surface_(&surface), filter_(filter)
+{
+    const MassProperties props = massPropertiesOf(shape);
+    if (!(settings.mass_kg > 0.0) || !std::isfinite(settings.mass_kg))
+        throw InputError({}, fmt::format("a floating body needs a mass > 0 kg (got {})", settings.mass_kg));
+    if (start.velocity_m_per_s.y != 0.0)
+        throw InputError({}, "a floating body is carried horizontally: its velocity's y must be 0");
+    mass_kg_ = settings.mass_kg;
+    volume_m3_ = props.volume_m3;
+    waterDensity_ = settings.waterDensity_kg_per_m3;
+    if (mass_kg_ >= waterDensity_ * volume_m3_)
+        throw InputError({}, fmt::format("a body of {:.6g} kg and {:.6g} m^3 sinks: the water it can displace "
+                                         "weighs {:.6g} kg",
+                                         mass_kg_, volume_m3_, waterDensity_ * volume_m3_));
+    centerOfMassInShape_m_ = props.centroid_m + settings.centerOfMassOffset_m;
+
+    // The inertia: given principal moments, or the mesh's at this mass
+    // (moved to the centre of mass by the parallel-axis theorem).
+    const glm::dvec3 given = settings.principalInertia_kg_m2;
+    if (given.x > 0.0 && given.y > 0.0 && given.z > 0.0) {
+        inertiaBody_ = glm::dmat3(given.x, 0, 0, 0, given.y, 0, 0, 0, given.z);
+    } else {
+        const double density = mass_kg_ / volume_m3_;
+        const glm::dvec3 o = settings.centerOfMassOffset_m;
+        inertiaBody_ = density * props.inertiaAboutCentroid_kg_m2 +
+                       mass_kg_ * (glm::dot(o, o) * glm::dmat3(1.0) - glm::outerProduct(o, o));
+    }
+    inverseInertiaBody_ = glm::inverse(inertiaBody_);
+
+    // The shape about its centre of mass, wound outwards.
+    points_m_.reserve(shape.positions_m.size());
+    for (const glm::dvec3& p : shape.positions_m) {
+        points_m_.push_back(p - centerOfMassInShape_m_);
+        reach_m_ = std::max(reach_m_, glm::length(points_m_.back()));
+    }
+    indices_ = shape.indices;
+    double signedVolume = 0.0;
+    for (std::size_t t = 0; t < indices_.size(); t += 3)
+        signedVolume += glm::dot(shape.positions_m[indices_[t]],
+                                 glm::cross(shape.positions_m[indices_[t + 1]], shape.positions_m[indices_[t + 2]]));
+    if (signedVolume < 0.0)
+        for (std::size_t t = 0; t < indices_.size(); t += 3)
+            std::swap(indices_[t + 1], indices_[t + 2]);
+
+    // At rest at t = 0: the heave that balances the weight, found by
+    // bisection (the buoyancy only grows as the body goes down).
+    const glm::dquat q0 = glm::angleAxis(glm::radians(start.yaw_deg), glm::dvec3(0.0, 1.0, 0.0));
+    const glm::dvec3 com0 = start.origin_m + q0 * centerOfMassInShape_m_;
+    const glm::dvec2 xz(com0.x, com0.z);
+    const detail::WaterPatch water0 = sampleWater(surface, xz, reach_m_, 0.0, filter);
+    const double weight_N = mass_kg_ * kGravity;
+    auto loadAt = [&](double y, const glm::dquat& q) {
+        std::vector<glm::dvec3> world(points_m_.size());
+        const glm::dvec3 com(com0.x, y, com0.z);
+        for (std::size_t i = 0; i < world.size(); ++i)
+            world[i] = com + q * points_m_[i];
+        return hydrostaticLoad(world, indices_, com, water0, waterDensity_);
+    };
+    const double waterHere = water0.heightAt(xz);
+    double lo = waterHere - 2.0 * reach_m_ - 1.0, hi = waterHere + 2.0 * reach_m_ + 1.0;
+    for (int i = 0; i < 200 && hi - lo > 1e-12 * (1.0 + std::abs(hi)); ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (loadAt(mid, q0).force_N.y > weight_N ? lo : hi) = mid;
+    }
+    const double restY = 0.5 * (lo + hi);
+
+    // Stiffnesses at rest, for the damping: heave (rho g A_waterplane for a
+    // wall-sided body) and roll and pitch about the body's x and z axes.
+    const double dy = 1e-3 * reach_m_;
+    const double heaveStiffness = (loadAt(restY - dy, q0).force_N.y - loadAt(restY + dy, q0).force_N.y) / (2.0 * dy);
+    heaveDamping_ = 2.0 * settings.dampingRatio * std::sqrt(mass_kg_ * std::max(heaveStiffness, 0.0));
+    for (int axis : {0, 2}) {
+        glm::dvec3 bodyAxis(0.0);
+        bodyAxis[axis] = 1.0;
+        const glm::dvec3 worldAxis = q0 * bodyAxis;
+        const glm::dquat tilt = glm::angleAxis(kStiffnessTilt_rad, worldAxis);
+        const double plus = glm::dot(loadAt(restY, tilt * q0).torque_N_m, worldAxis);
+        const double minus = glm::dot(loadAt(restY, glm::inverse(tilt) * q0).torque_N_m, worldAxis);
+        // An unstable body (c < 0) is still damped as if it were stable.
+        const double stiffness = std::abs(minus - plus) / (2.0 * kStiffnessTilt_rad);
+        rotationDamping_[axis] = 2.0 * settings.dampingRatio * std::sqrt(inertiaBody_[axis][axis] * stiffness);
+    }
+    // Yaw has no hydrostatic stiffness; it is damped like roll and pitch on average.
+    rotationDamping_.y = 0.5 * (rotationDamping_.x + rotationDamping_.z);
+
+    initial_.step = 0;
+    initial_.centerOfMass_m = {com0.x, restY + start.origin_m.y, com0.z};
+    initial_.orientation = q0;
+    restart();
+}
+
+void FloatingBody::restart()
+{
+    previous_ = next_ = initial_;
+    const glm::dvec2 xz(initial_.centerOfMass_m.x, initial_.centerOfMass_m.z);
+    previousWaterHeight_m_ = surface_->heightAt(xz, -kBodyStep_s, filter_);
+}
+
+void FloatingBody::step()
+{
+    const BodyState& s = next_;
+    const double t = double(s.step) * kBodyStep_s;
+    const glm::dmat3 R = glm::mat3_cast(s.orientation);
+    const glm::dvec2 xz(s.centerOfMass_m.x, s.centerOfMass_m.z);
+    const detail::WaterPatch water = sampleWater(*surface_, xz, reach_m_, t, filter_);
+    std::vector<glm::dvec3> world(points_m_.size());
+    for (std::size_t i = 0; i < world.size(); ++i)
+        world[i] = s.centerOfMass_m + R * points_m_[i];
+    const detail::HydrostaticLoad load = hydrostaticLoad(world, indices_, s.centerOfMass_m, water, waterDensity_);
+
+    // Damping acts only on the wetted body: scaled by how much of its rest
+    // displacement is under water, and relative to the water's own heave.
+    const double wetted = std::clamp(load.submergedVolume_m3 * waterDensity_ / mass_kg_, 0.0, 1.0);
+    const double waterHeight = water.heightAt(xz);
+    const double waterHeave_m_per_s = (waterHeight - previousWaterHeight_m_) / kBodyStep_s;
+    previousWaterHeight_m_ = waterHeight;
+
+    BodyState n = s;
+    n.step = s.step + 1;
+    const double heaveForce_N = load.force_N.y - mass_kg_ * kGravity -
+                                wetted * heaveDamping_ * (s.heaveVelocity_m_per_s - waterHeave_m_per_s);
+    n.heaveVelocity_m_per_s = s.heaveVelocity_m_per_s + heaveForce_N / mass_kg_ * kBodyStep_s;
+    n.centerOfMass_m.y = s.centerOfMass_m.y + n.heaveVelocity_m_per_s * kBodyStep_s;
+    // Carried horizontally: from the start, never accumulated, so a long run does not drift.
+    const glm::dvec3 carried = initial_.centerOfMass_m + double(n.step) * kBodyStep_s * start_.velocity_m_per_s;
+    n.centerOfMass_m.x = carried.x;
+    n.centerOfMass_m.z = carried.z;
+
+    const glm::dvec3 w = s.angularVelocity_rad_per_s;
+    const glm::dvec3 dampingTorque = R * (rotationDamping_ * (glm::transpose(R) * w));
+    const glm::dvec3 torque = load.torque_N_m - wetted * dampingTorque;
+    const glm::dmat3 inertia = R * inertiaBody_ * glm::transpose(R);
+    const glm::dmat3 inverseInertia = R * inverseInertiaBody_ * glm::transpose(R);
+    n.angularVelocity_rad_per_s = w + inverseInertia * (torque - glm::cross(w, inertia * w)) * kBodyStep_s;
+    const glm::dvec3 w1 = n.angularVelocity_rad_per_s;
+    n.orientation = glm::normalize(s.orientation + 0.5 * kBodyStep_s * (glm::dquat(0.0, w1) * s.orientation));
+
+    previous_ = s;
+    next_ = n;
+    ++stepsTaken_;
+}
+
+glm::dmat4 FloatingBody::poseAt(double time_s)
+{
+    // The step whose end is the first at or after time_s: state k covers
+    // [(k - 1) dt, k dt]. Computed from time_s alone, never from earlier calls.
+    const double steps = std::max(time_s, 0.0) * kBodyStepsPerSecond;
+    const std::int64_t last = std::int64_t(std::floor(steps)) + 1;
+    if (last < next_.step)
+        restart();
+    while (next_.step < last)
+        step();
+    const double f = steps - double(last - 1);
+    const glm::dvec3 com = glm::mix(previous_.centerOfMass_m, next_.centerOfMass_m, f);
+    const glm::dquat q = glm::slerp(previous_.orientation, next_.orientation, f);
+    return glm::translate(glm::dmat4(1.0), com) * glm::mat4_cast(q) *
+           glm::translate(glm::dmat4(1.0), -centerOfMassInShape_m_);
+}
+
+} // namespace swell

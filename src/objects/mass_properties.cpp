@@ -1,0 +1,99 @@
+// Volume, centroid and inertia of a closed triangle mesh (swell/floating_body.h).
+//
+// Each triangle (a, b, c) and the origin span a tetrahedron of signed volume
+// det[a b c] / 6; summed over a closed surface they give the enclosed volume
+// whatever the origin. The covariance integral C = int x x^T dV of each
+// tetrahedron is det[a b c] * A C0 A^T, A = [a b c], with C0 the canonical
+// tetrahedron's (Blow & Binstock 2004, "How to find the inertia tensor (or
+// other mass properties) of a 3D solid body represented by a triangle mesh",
+// eq. for C_canonical = [[1/60, 1/120, 1/120], ...]); moved to the centroid,
+// C' = C - V c c^T, and the inertia is trace(C') I - C'.
+#include "swell/floating_body.h"
+
+#include "swell/error.h"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace swell {
+
+namespace {
+
+// Every edge of a closed, consistently wound surface is walked once each way.
+// Vertices are compared by position, so a model whose faces have their own
+// vertices (for flat normals) still counts as closed.
+void checkClosed(const BodyShape& shape)
+{
+    std::map<std::tuple<double, double, double>, std::uint32_t> ids;
+    auto id = [&](std::uint32_t index) {
+        const glm::dvec3& p = shape.positions_m[index];
+        return ids.emplace(std::tuple(p.x, p.y, p.z), std::uint32_t(ids.size())).first->second;
+    };
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (std::size_t t = 0; t + 2 < shape.indices.size(); t += 3) {
+        const std::uint32_t v[3] = {id(shape.indices[t]), id(shape.indices[t + 1]), id(shape.indices[t + 2])};
+        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
+            continue; // degenerate: adds no area
+        for (int e = 0; e < 3; ++e)
+            ++directed[{v[e], v[(e + 1) % 3]}];
+    }
+    for (const auto& [edge, count] : directed) {
+        const auto back = directed.find({edge.second, edge.first});
+        if (count != 1 || back == directed.end() || back->second != 1)
+            throw InputError({}, fmt::format("the body's mesh is not closed: an edge is used by {} triangle(s) one "
+                                             "way and {} the other (a closed, consistently wound surface uses each "
+                                             "edge once each way)",
+                                             count, back == directed.end() ? 0 : back->second));
+    }
+}
+
+} // namespace
+
+MassProperties massPropertiesOf(const BodyShape& shape)
+{
+    if (shape.indices.size() < 12 || shape.indices.size() % 3 != 0)
+        throw InputError({}, fmt::format("the body's mesh has {} indices; a closed surface needs at least 4 "
+                                         "triangles",
+                                         shape.indices.size()));
+    for (std::uint32_t i : shape.indices)
+        if (i >= shape.positions_m.size())
+            throw InputError({}, fmt::format("the body's mesh names vertex {} of {}", i, shape.positions_m.size()));
+    checkClosed(shape);
+
+    // Blow & Binstock (2004): the canonical tetrahedron's covariance.
+    const glm::dmat3 canonical = glm::dmat3(2.0, 1.0, 1.0, 1.0, 2.0, 1.0, 1.0, 1.0, 2.0) / 120.0;
+    double volume = 0.0;
+    glm::dvec3 moment(0.0);
+    glm::dmat3 covariance(0.0);
+    for (std::size_t t = 0; t < shape.indices.size(); t += 3) {
+        const glm::dvec3 a = shape.positions_m[shape.indices[t]];
+        const glm::dvec3 b = shape.positions_m[shape.indices[t + 1]];
+        const glm::dvec3 c = shape.positions_m[shape.indices[t + 2]];
+        const glm::dmat3 A(a, b, c); // columns
+        const double det = glm::dot(a, glm::cross(b, c));
+        volume += det / 6.0;
+        moment += det / 6.0 * (a + b + c) / 4.0;
+        covariance += det * A * canonical * glm::transpose(A);
+    }
+    // A surface wound inside out encloses a negative volume: the same body.
+    if (volume < 0.0) {
+        volume = -volume;
+        moment = -moment;
+        covariance = -covariance;
+    }
+    if (!(volume > 1e-12) || !std::isfinite(volume))
+        throw InputError({}, fmt::format("the body's mesh encloses no volume ({} m^3)", volume));
+    MassProperties m;
+    m.volume_m3 = volume;
+    m.centroid_m = moment / volume;
+    const glm::dmat3 about = covariance - volume * glm::outerProduct(m.centroid_m, m.centroid_m);
+    m.inertiaAboutCentroid_kg_m2 = (about[0][0] + about[1][1] + about[2][2]) * glm::dmat3(1.0) - about;
+    return m;
+}
+
+} // namespace swell
