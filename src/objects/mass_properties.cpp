@@ -13,10 +13,13 @@
 #include "swell/error.h"
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -24,15 +27,27 @@ namespace swell {
 
 namespace {
 
+// Vertices closer than this fraction of the mesh's extent are one: seams of
+// float meshes (a lathe's last column at 2 pi, 1e-7 off its first) close.
+constexpr double kWeldFraction = 1e-5;
+
 // Every edge of a closed, consistently wound surface is walked once each way.
-// Vertices are compared by position, so a model whose faces have their own
-// vertices (for flat normals) still counts as closed.
+// Vertices are compared by position (welded on a lattice of kWeldFraction of
+// the extent), so a model whose faces have their own vertices (for flat
+// normals) still counts as closed.
 void checkClosed(const BodyShape& shape)
 {
-    std::map<std::tuple<double, double, double>, std::uint32_t> ids;
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const glm::dvec3& p : shape.positions_m) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const double weld_m = kWeldFraction * std::max(glm::length(hi - lo), 1e-9);
+    std::map<std::tuple<std::int64_t, std::int64_t, std::int64_t>, std::uint32_t> ids;
     auto id = [&](std::uint32_t index) {
-        const glm::dvec3& p = shape.positions_m[index];
-        return ids.emplace(std::tuple(p.x, p.y, p.z), std::uint32_t(ids.size())).first->second;
+        const glm::dvec3 q = glm::round((shape.positions_m[index] - lo) / weld_m);
+        return ids.emplace(std::tuple(std::int64_t(q.x), std::int64_t(q.y), std::int64_t(q.z)), std::uint32_t(ids.size()))
+            .first->second;
     };
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
     for (std::size_t t = 0; t + 2 < shape.indices.size(); t += 3) {
