@@ -191,6 +191,8 @@ struct Results {
     std::vector<double> realTimes_s;     // simulation time of each measured frame
     std::vector<Camera> realCameras;     // camera of each measured frame
     std::vector<LodSample> lod;
+    int floatingBodies = 0;
+    std::vector<long long> bodySteps; // per measured frame, all bodies (Renderer::counters())
 };
 
 void printReport(const Results& results);

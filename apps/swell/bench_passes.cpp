@@ -268,6 +268,8 @@ void FloorFrame::render(PassObserver& observer)
     // The wave model's own work for the frame: at the least, none.
     observer.beginPass("ocean");
     observer.endPass("ocean");
+    observer.beginPass("bodies");
+    observer.endPass("bodies");
 
     observer.beginPass("reflection");
     s.bind(s.reflection);

@@ -82,12 +82,14 @@ int main(int argc, char** argv)
 
     swell::app::BenchOptions bench;
     std::string benchSize = "1280x720";
-    CLI::App* benchCommand = app.add_subcommand("bench", "Benchmark the default scene headless along a fixed camera path");
+    CLI::App* benchCommand = app.add_subcommand("bench", "Benchmark a scene (the default one unless named) headless along a fixed camera path");
     benchCommand->add_option("--size", benchSize, "Frame size, WIDTHxHEIGHT")->capture_default_str();
     benchCommand->add_option("--frames", bench.frames, "Measured frames")->check(CLI::Range(1, 100000))->capture_default_str();
     benchCommand->add_option("--warmup", bench.warmup, "Frames rendered first and not measured")
         ->check(CLI::Range(0, 100000))->capture_default_str();
     benchCommand->add_option("--json", bench.jsonPath, "Also write the results as JSON to this file");
+    benchCommand->add_option("scene", bench.scenePath,
+                             "Scene file (TOML) to benchmark along the same camera path; the built-in default when omitted");
 
     try {
         app.parse(argc, argv);

@@ -36,6 +36,7 @@ public:
     SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& surface);
 
     bool empty() const { return count_ == 0; }
+    std::size_t count() const { return count_; }
     // Object i's transform from model space (scale included) to the world at
     // time_s, stepping its body there; nothing when it is not a rigid body.
     std::optional<glm::dmat4> poseAt(std::size_t i, double time_s);

@@ -89,7 +89,10 @@ struct Renderer::Impl {
         // Bodies step on the CPU to this frame's time: fixed steps, so the
         // poses depend on time_s alone, never on the frames before.
         notify(true, "bodies");
+        const std::int64_t stepsBefore = bodies.stepsTaken();
         poses = objectPoses(scene, model(), bodies, origin, time_s);
+        counters.floatingBodies = int(bodies.count());
+        counters.bodySteps = bodies.stepsTaken() - stepsBefore;
         notify(false, "bodies");
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
         waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
