@@ -21,14 +21,24 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace swell {
+
+namespace detail {
+struct BodyWater;
+}
 
 // The fixed integration step, s: 1/120 s resolves the heave and roll periods
 // of bodies down to about 0.3 m across (about 0.5 s; 60 steps a period).
 inline constexpr int kBodyStepsPerSecond = 120;
 inline constexpr double kBodyStep_s = 1.0 / kBodyStepsPerSecond;
+// The water under a body is sampled every this many steps (1/30 s) and
+// interpolated linearly in time between: the shortest waves drawn (0.4 m,
+// 0.5 s) change little in 1/30 s, and a query of the spectral model's CPU
+// twin at a new time costs a transform of its fields.
+inline constexpr int kBodyStepsPerWaterSample = 4;
 
 // Sea water's density, kg/m^3 (a typical surface value; UNESCO 1981 gives
 // 1020..1030 at 35 PSU and 0..25 degC).
@@ -87,12 +97,23 @@ public:
     // swell::InputError when the shape is not closed, or the body would sink.
     FloatingBody(const BodyShape& shape, const BodySettings& settings, const BodyStart& start,
                  const WaveModel& surface, const SurfaceFilter& filter = {});
+    ~FloatingBody();
+    FloatingBody(FloatingBody&&) noexcept;
+    FloatingBody& operator=(FloatingBody&&) noexcept;
 
     // Steps from the current state (or from t = 0, when time_s is earlier
     // than it) until time_s lies in the last step, then returns the
     // transform from the shape's frame to the world, interpolated between
     // the two states that bracket time_s. Negative times are t = 0.
     glm::dmat4 poseAt(double time_s);
+
+    // The step whose state poseAt(time_s) needs last: floor(t / step) + 1.
+    static std::int64_t lastStepFor(double time_s);
+    // Steps (or starts again from t = 0 and steps) until state().step is
+    // `step`. Bodies advanced in lockstep query the surface at the same
+    // times one after another, which a model that caches a time's fields
+    // answers once.
+    void advanceToStep(std::int64_t step);
 
     // The state after the steps taken so far, and the one before it.
     const BodyState& state() const { return next_; }
@@ -108,6 +129,9 @@ public:
 private:
     void restart();
     void step();
+    // The water patches that bracket step n (sampled at multiples of kBodyStepsPerWaterSample).
+    void sampleWaterFor(std::int64_t n);
+    glm::dvec2 carriedAt(std::int64_t step) const; // the centre of mass's x, z at a step
 
     std::vector<glm::dvec3> points_m_; // the shape relative to its centre of mass
     std::vector<std::uint32_t> indices_;
@@ -121,7 +145,8 @@ private:
     const WaveModel* surface_ = nullptr;
     SurfaceFilter filter_;
     BodyState initial_, previous_, next_;
-    double previousWaterHeight_m_ = 0.0; // under the centre of mass, one step ago
+    // The water sampled round the body at the two sample times that bracket the step.
+    std::unique_ptr<detail::BodyWater> water_;
     std::int64_t stepsTaken_ = 0;
 
 };

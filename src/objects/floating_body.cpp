@@ -34,7 +34,21 @@ namespace swell {
 using detail::hydrostaticLoad;
 using detail::sampleWater;
 
+namespace detail {
+
+struct BodyWater {
+    std::int64_t firstStep = -1; // `from` is the water at this step, `to` kBodyStepsPerWaterSample later
+    WaterPatch from, to;
+};
+
+} // namespace detail
+
 namespace {
+
+// Past its reach, the water patch round a body extends this much further
+// (at least 0.5 m), so a body under way stays inside it for a while and
+// each new sample time needs one sampling, not two.
+constexpr double kPatchMarginOfReach = 0.25;
 
 // Tilt used to measure roll and pitch stiffness at rest, rad: small enough
 // to stay in the linear range of any body that floats upright.
@@ -132,23 +146,59 @@ FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings,
     initial_.step = 0;
     initial_.centerOfMass_m = {com0.x, restY + start.origin_m.y, com0.z};
     initial_.orientation = q0;
+    water_ = std::make_unique<detail::BodyWater>();
     restart();
 }
+
+FloatingBody::~FloatingBody() = default;
+FloatingBody::FloatingBody(FloatingBody&&) noexcept = default;
+FloatingBody& FloatingBody::operator=(FloatingBody&&) noexcept = default;
 
 void FloatingBody::restart()
 {
     previous_ = next_ = initial_;
-    const glm::dvec2 xz(initial_.centerOfMass_m.x, initial_.centerOfMass_m.z);
-    previousWaterHeight_m_ = surface_->heightAt(xz, -kBodyStep_s, filter_);
+    water_->firstStep = -1;
+}
+
+glm::dvec2 FloatingBody::carriedAt(std::int64_t n) const
+{
+    // From the start, never accumulated, so a long run does not drift.
+    const glm::dvec3 p = initial_.centerOfMass_m + double(n) * kBodyStep_s * start_.velocity_m_per_s;
+    return {p.x, p.z};
+}
+
+void FloatingBody::sampleWaterFor(std::int64_t n)
+{
+    const std::int64_t first = n / kBodyStepsPerWaterSample * kBodyStepsPerWaterSample;
+    detail::BodyWater& w = *water_;
+    if (w.firstStep == first)
+        return;
+    const std::int64_t last = first + kBodyStepsPerWaterSample;
+    const glm::dvec2 a = carriedAt(first), b = carriedAt(last);
+    const double t1 = double(last) * kBodyStep_s;
+    // The last sampling carries on when the body stays inside its square;
+    // else both ends are sampled again round the middle of the interval.
+    if (w.firstStep == first - kBodyStepsPerWaterSample && w.to.covers(a, reach_m_) && w.to.covers(b, reach_m_)) {
+        w.from = w.to;
+        w.to = sampleWater(*surface_, w.from.centre_m, w.from.halfSize_m, t1, filter_);
+    } else {
+        const double half = reach_m_ + std::max(0.5, kPatchMarginOfReach * reach_m_) + 0.5 * glm::length(b - a);
+        const glm::dvec2 centre = 0.5 * (a + b);
+        w.from = sampleWater(*surface_, centre, half, double(first) * kBodyStep_s, filter_);
+        w.to = sampleWater(*surface_, centre, half, t1, filter_);
+    }
+    w.firstStep = first;
 }
 
 void FloatingBody::step()
 {
     const BodyState& s = next_;
-    const double t = double(s.step) * kBodyStep_s;
     const glm::dmat3 R = glm::mat3_cast(s.orientation);
     const glm::dvec2 xz(s.centerOfMass_m.x, s.centerOfMass_m.z);
-    const detail::WaterPatch water = sampleWater(*surface_, xz, reach_m_, t, filter_);
+    sampleWaterFor(s.step);
+    const detail::BodyWater& sampled = *water_;
+    const double within = double(s.step - sampled.firstStep) / kBodyStepsPerWaterSample;
+    const detail::WaterPatch water = detail::blend(sampled.from, sampled.to, within);
     std::vector<glm::dvec3> world(points_m_.size());
     for (std::size_t i = 0; i < world.size(); ++i)
         world[i] = s.centerOfMass_m + R * points_m_[i];
@@ -157,9 +207,8 @@ void FloatingBody::step()
     // Damping acts only on the wetted body: scaled by how much of its rest
     // displacement is under water, and relative to the water's own heave.
     const double wetted = std::clamp(load.submergedVolume_m3 * waterDensity_ / mass_kg_, 0.0, 1.0);
-    const double waterHeight = water.heightAt(xz);
-    const double waterHeave_m_per_s = (waterHeight - previousWaterHeight_m_) / kBodyStep_s;
-    previousWaterHeight_m_ = waterHeight;
+    const double waterHeave_m_per_s =
+        (sampled.to.heightAt(xz) - sampled.from.heightAt(xz)) / (kBodyStepsPerWaterSample * kBodyStep_s);
 
     BodyState n = s;
     n.step = s.step + 1;
@@ -167,10 +216,9 @@ void FloatingBody::step()
                                 wetted * heaveDamping_ * (s.heaveVelocity_m_per_s - waterHeave_m_per_s);
     n.heaveVelocity_m_per_s = s.heaveVelocity_m_per_s + heaveForce_N / mass_kg_ * kBodyStep_s;
     n.centerOfMass_m.y = s.centerOfMass_m.y + n.heaveVelocity_m_per_s * kBodyStep_s;
-    // Carried horizontally: from the start, never accumulated, so a long run does not drift.
-    const glm::dvec3 carried = initial_.centerOfMass_m + double(n.step) * kBodyStep_s * start_.velocity_m_per_s;
+    const glm::dvec2 carried = carriedAt(n.step);
     n.centerOfMass_m.x = carried.x;
-    n.centerOfMass_m.z = carried.z;
+    n.centerOfMass_m.z = carried.y;
 
     const glm::dvec3 w = s.angularVelocity_rad_per_s;
     const glm::dvec3 dampingTorque = R * (rotationDamping_ * (glm::transpose(R) * w));
@@ -186,17 +234,26 @@ void FloatingBody::step()
     ++stepsTaken_;
 }
 
-glm::dmat4 FloatingBody::poseAt(double time_s)
+std::int64_t FloatingBody::lastStepFor(double time_s)
 {
-    // The step whose end is the first at or after time_s: state k covers
-    // [(k - 1) dt, k dt]. Computed from time_s alone, never from earlier calls.
-    const double steps = std::max(time_s, 0.0) * kBodyStepsPerSecond;
-    const std::int64_t last = std::int64_t(std::floor(steps)) + 1;
+    // The step whose end is the first after time_s: state k covers
+    // [(k - 1) dt, k dt). Computed from time_s alone, never from earlier calls.
+    return std::int64_t(std::floor(std::max(time_s, 0.0) * kBodyStepsPerSecond)) + 1;
+}
+
+void FloatingBody::advanceToStep(std::int64_t last)
+{
     if (last < next_.step)
         restart();
     while (next_.step < last)
         step();
-    const double f = steps - double(last - 1);
+}
+
+glm::dmat4 FloatingBody::poseAt(double time_s)
+{
+    const std::int64_t last = lastStepFor(time_s);
+    advanceToStep(last);
+    const double f = std::max(time_s, 0.0) * kBodyStepsPerSecond - double(last - 1);
     const glm::dvec3 com = glm::mix(previous_.centerOfMass_m, next_.centerOfMass_m, f);
     const glm::dquat q = glm::slerp(previous_.orientation, next_.orientation, f);
     return glm::translate(glm::dmat4(1.0), com) * glm::mat4_cast(q) *

@@ -19,10 +19,20 @@ double WaterPatch::heightAt(glm::dvec2 world_m) const
     return (1.0 - fz) * ((1.0 - fx) * h(i, j) + fx * h(i + 1, j)) + fz * ((1.0 - fx) * h(i, j + 1) + fx * h(i + 1, j + 1));
 }
 
+WaterPatch blend(const WaterPatch& from, const WaterPatch& to, double f)
+{
+    WaterPatch patch = from;
+    for (std::size_t i = 0; i < patch.height_m.size(); ++i)
+        patch.height_m[i] = from.height_m[i] + f * (to.height_m[i] - from.height_m[i]);
+    return patch;
+}
+
 WaterPatch sampleWater(const WaveModel& surface, glm::dvec2 centre_m, double halfSize_m, double time_s,
                        const SurfaceFilter& filter)
 {
     WaterPatch patch;
+    patch.centre_m = centre_m;
+    patch.halfSize_m = halfSize_m;
     patch.spacing_m = 2.0 * halfSize_m / (kPatchSamples - 1);
     patch.corner_m = centre_m - glm::dvec2(halfSize_m);
     for (int j = 0; j < kPatchSamples; ++j)

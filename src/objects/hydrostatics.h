@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -23,16 +24,29 @@ namespace swell::detail {
 // step instead of one per vertex; the lattice spacing (a fraction of the
 // body's size) also smooths ripples far shorter than the body, which a
 // rigid body does not follow.
-inline constexpr int kPatchSamples = 5;
+inline constexpr int kPatchSamples = 6;
 
 struct WaterPatch {
+    glm::dvec2 centre_m{0.0}; // world x, z of the square's centre
+    double halfSize_m = 0.0;
     glm::dvec2 corner_m{0.0}; // world x, z of sample (0, 0)
     double spacing_m = 1.0;
     std::array<double, kPatchSamples * kPatchSamples> height_m{};
 
     // Bilinear height at world (x, z), m; clamped to the patch's edge outside it.
     double heightAt(glm::dvec2 world_m) const;
+
+
+// Whether the square holds every point within reach_m of world_m.
+    bool covers(glm::dvec2 world_m, double reach_m) const
+    {
+        return std::abs(world_m.x - centre_m.x) + reach_m <= halfSize_m &&
+               std::abs(world_m.y - centre_m.y) + reach_m <= halfSize_m;
+    }
 };
+
+// The patch between two samplings of the same lattice, a fraction f (0..1) of the way from `from` to `to`.
+WaterPatch blend(const WaterPatch& from, const WaterPatch& to, double f);
 
 // Samples `surface` at time_s over the square of half-size halfSize_m round centre_m.
 WaterPatch sampleWater(const WaveModel& surface, glm::dvec2 centre_m, double halfSize_m, double time_s,

@@ -5,6 +5,7 @@
 #include "swell/grid.h"
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace swell::detail {
@@ -67,6 +68,24 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
             throw InputError({o.path}, fmt::format("objects[{}]: {}", i, e.message()));
         }
     }
+}
+
+void SceneBodies::advanceTo(double time_s)
+{
+    // In lockstep, step by step: every body asks for the water at the same
+    // sample times one after another (see FloatingBody::advanceToStep).
+    const std::int64_t last = FloatingBody::lastStepFor(time_s);
+    std::int64_t from = last;
+    for (const auto& b : bodies_)
+        if (b) {
+            if (b->state().step > last)
+                b->advanceToStep(0); // time went back: start again from t = 0
+            from = std::min(from, b->state().step);
+        }
+    for (std::int64_t n = from + 1; n <= last; ++n)
+        for (const auto& b : bodies_)
+            if (b && b->state().step < n)
+                b->advanceToStep(n);
 }
 
 std::optional<glm::dmat4> SceneBodies::poseAt(std::size_t i, double time_s)

@@ -37,6 +37,8 @@ public:
 
     bool empty() const { return count_ == 0; }
     std::size_t count() const { return count_; }
+    // Steps every body to time_s together (see FloatingBody::advanceToStep).
+    void advanceTo(double time_s);
     // Object i's transform from model space (scale included) to the world at
     // time_s, stepping its body there; nothing when it is not a rigid body.
     std::optional<glm::dmat4> poseAt(std::size_t i, double time_s);

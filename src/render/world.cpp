@@ -83,6 +83,7 @@ std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface,
 {
     std::vector<glm::mat4> poses;
     poses.reserve(scene.objects.size());
+    bodies.advanceTo(time_s);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         if (const std::optional<glm::dmat4> body = bodies.poseAt(i, time_s))
             poses.emplace_back(glm::translate(glm::dmat4(1.0), -origin) * *body);

@@ -2,6 +2,7 @@
 // the mass properties of a box, Archimedes' draft, the heave period of a
 // linear spring of stiffness rho g A_waterplane, damped motion, and poses
 // that do not depend on how often they were asked for.
+#include "objects/scene_bodies.h"
 #include "render/wave_model_gpu.h" // only to return no GPU half from the test water
 #include "swell/constants.h"
 #include "swell/error.h"
@@ -197,6 +198,38 @@ TEST(FloatingBody, RidesTheWavesAndIsCarriedAlong)
     EXPECT_GT(high - low, 0.8);
     EXPECT_LT(high - low, 1.2);
     EXPECT_NEAR(body.poseAt(30.0)[3].x, 60.0, 1e-9);
+}
+
+// A scene's bodies step in lockstep (so they share the surface's sample
+// times); each still moves exactly as it would alone.
+TEST(FloatingBody, SceneBodiesInLockstepMoveAsEachAlone)
+{
+    const TestWater waves(0.4, 30.0);
+    const swell::BodyShape shape = box(kBox);
+    swell::detail::MeshData mesh;
+    for (const glm::dvec3& p : shape.positions_m)
+        mesh.vertices.push_back({glm::vec3(p), {}, {}});
+    mesh.indices = shape.indices;
+    swell::Scene scene;
+    scene.objects.resize(3);
+    scene.objects[0] = {.path = "a", .position_m = {0.0, 0.2, 0.0}, .floats = true, .density_kg_per_m3 = 500.0};
+    scene.objects[1] = {.path = "b", .position_m = {9.0, 0.0, 2.0}, .floats = true}; // a rider, not a body
+    scene.objects[2] = {.path = "c", .position_m = {-7.0, 0.0, 5.0}, .yaw_deg = 40.0, .floats = true,
+                        .density_kg_per_m3 = 300.0, .velocity_m_per_s = {0.0, 0.0, 3.0}};
+    swell::detail::SceneBodies bodies(scene, {&mesh, &mesh, &mesh}, waves);
+    EXPECT_EQ(bodies.count(), 2u);
+    EXPECT_FALSE(bodies.poseAt(1, 1.0).has_value());
+    const swell::SurfaceFilter filter = swell::detail::bodySurfaceFilter(scene);
+    for (std::size_t i : {0u, 2u}) {
+        const swell::SceneObject& o = scene.objects[i];
+        swell::BodySettings settings;
+        settings.mass_kg = o.density_kg_per_m3 * kBox.x * kBox.y * kBox.z;
+        swell::FloatingBody alone(shape, settings, {o.position_m, o.yaw_deg, o.velocity_m_per_s}, waves, filter);
+        for (double t : {0.7, 3.3, 2.0, 9.1}) {
+            bodies.advanceTo(t);
+            EXPECT_EQ(*bodies.poseAt(i, t), alone.poseAt(t)) << "object " << i << " at " << t << " s";
+        }
+    }
 }
 
 } // namespace
