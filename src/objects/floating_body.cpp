@@ -3,18 +3,18 @@
 // Each step is semi-implicit (symplectic) Euler: velocities from the forces
 // at the start of the step, then positions from the new velocities; it keeps
 // an undamped oscillator's energy bounded, where explicit Euler would pump it
-// up (Hairer, Lubich & Wanner 2006, Geometric Numerical Integration, sec. I.1.2).
+// up (Hairer, Lubich & Wanner 2006, Geometric Numerical Integration, ch. I.1).
 // Rotation follows Euler's equations, I dw/dt = tau - w x I w, in the world
 // frame, and dq/dt = 1/2 (0, w) q for the orientation.
 //
 // Damping is linear in the velocity relative to the water, b = 2 kappa
 // sqrt(m c) for each degree of freedom with restoring stiffness c: the
 // mass-spring-damper model of a floating body's heave, roll and pitch
-// (Journee & Massie 2001, Offshore Hydromechanics, sec. 6.3, eqs. 6.20-6.24),
+// (Journee & Massie 2001, Offshore Hydromechanics, TU Delft, sec. 6.3),
 // with kappa the dimensionless damping ratio. The added mass a of that model
 // is left out (m + a becomes m): the water a body drags along makes its real
 // heave and roll periods longer than these (Newman 1977, Marine
-// Hydrodynamics, sec. 4.13).
+// Hydrodynamics, MIT Press, ch. 4).
 #include "swell/floating_body.h"
 
 #include "objects/hydrostatics.h"

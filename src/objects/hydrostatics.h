@@ -4,7 +4,7 @@
 // (rho g V, up, through the centre of buoyancy); on waves it is the
 // hydrostatic part of the Froude-Krylov force, the usual approximation for
 // bodies small against the wavelength (Journee & Massie 2001, Offshore
-// Hydromechanics, sec. 6.3.2).
+// Hydromechanics, TU Delft, ch. 6).
 #pragma once
 
 #include "swell/wave_model.h"

@@ -17,11 +17,13 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <utility>
+#include <vector>
 
 namespace swell {
 
@@ -43,27 +45,44 @@ void checkClosed(const BodyShape& shape)
         hi = glm::max(hi, p);
     }
     const double weld_m = kWeldFraction * std::max(glm::length(hi - lo), 1e-9);
-    std::map<std::tuple<std::int64_t, std::int64_t, std::int64_t>, std::uint32_t> ids;
-    auto id = [&](std::uint32_t index) {
-        const glm::dvec3 q = glm::round((shape.positions_m[index] - lo) / weld_m);
-        return ids.emplace(std::tuple(std::int64_t(q.x), std::int64_t(q.y), std::int64_t(q.z)), std::uint32_t(ids.size()))
-            .first->second;
-    };
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    // Welded ids by sorting the lattice points (flat arrays: a model at the
+    // loader's vertex cap stays within tens of MB here).
+    using Key = std::array<std::int64_t, 3>;
+    std::vector<std::pair<Key, std::uint32_t>> keyed(shape.positions_m.size());
+    for (std::size_t i = 0; i < keyed.size(); ++i) {
+        const glm::dvec3 q = glm::round((shape.positions_m[i] - lo) / weld_m);
+        keyed[i] = {Key{std::int64_t(q.x), std::int64_t(q.y), std::int64_t(q.z)}, std::uint32_t(i)};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<std::uint32_t> id(keyed.size());
+    std::uint32_t next = 0;
+    for (std::size_t i = 0; i < keyed.size(); ++i) {
+        if (i > 0 && keyed[i].first != keyed[i - 1].first)
+            ++next;
+        id[keyed[i].second] = next;
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> directed;
+    directed.reserve(shape.indices.size());
     for (std::size_t t = 0; t + 2 < shape.indices.size(); t += 3) {
-        const std::uint32_t v[3] = {id(shape.indices[t]), id(shape.indices[t + 1]), id(shape.indices[t + 2])};
+        const std::uint32_t v[3] = {id[shape.indices[t]], id[shape.indices[t + 1]], id[shape.indices[t + 2]]};
         if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
             continue; // degenerate: adds no area
         for (int e = 0; e < 3; ++e)
-            ++directed[{v[e], v[(e + 1) % 3]}];
+            directed.emplace_back(v[e], v[(e + 1) % 3]);
     }
-    for (const auto& [edge, count] : directed) {
-        const auto back = directed.find({edge.second, edge.first});
-        if (count != 1 || back == directed.end() || back->second != 1)
+    std::sort(directed.begin(), directed.end());
+    auto count = [&](std::pair<std::uint32_t, std::uint32_t> edge) {
+        const auto range = std::equal_range(directed.begin(), directed.end(), edge);
+        return int(range.second - range.first);
+    };
+    for (std::size_t i = 0; i < directed.size(); ++i) {
+        const int forth = (i + 1 < directed.size() && directed[i + 1] == directed[i]) ? 2 : 1;
+        const int back = count({directed[i].second, directed[i].first});
+        if (forth != 1 || back != 1)
             throw InputError({}, fmt::format("the body's mesh is not closed: an edge is used by {} triangle(s) one "
                                              "way and {} the other (a closed, consistently wound surface uses each "
                                              "edge once each way)",
-                                             count, back == directed.end() ? 0 : back->second));
+                                             forth == 1 ? 1 : count(directed[i]), back));
     }
 }
 

@@ -104,6 +104,18 @@ TEST(BodyMass, OpenMeshIsRefused)
     } catch (const swell::InputError& e) {
         EXPECT_NE(e.message().find("not closed"), std::string::npos) << e.message();
     }
+    // A triangle wound the wrong way: its edges run twice one way, none the other.
+    swell::BodyShape flipped = box({1.0, 1.0, 1.0});
+    std::swap(flipped.indices[1], flipped.indices[2]);
+    EXPECT_THROW((void)swell::massPropertiesOf(flipped), swell::InputError);
+    // Faces with their own vertices (flat normals) are closed all the same.
+    swell::BodyShape split = box({1.0, 1.0, 1.0});
+    swell::BodyShape separate;
+    for (std::uint32_t i : split.indices) {
+        separate.indices.push_back(std::uint32_t(separate.positions_m.size()));
+        separate.positions_m.push_back(split.positions_m[i]);
+    }
+    EXPECT_NEAR(swell::massPropertiesOf(separate).volume_m3, 1.0, 1e-12);
 }
 
 TEST(BodyMass, BodyHeavierThanItsDisplacementIsRefused)
