@@ -77,7 +77,7 @@ struct SWELL_API BodySettings {
 struct SWELL_API BodyStart {
     glm::dvec3 origin_m{0.0};     // where the shape's origin is at t = 0: x, z; y is the height above rest
     double yaw_deg = 0.0;         // heading about +y at t = 0
-    glm::dvec3 velocity_m_per_s{0.0}; // horizontal velocity the body is carried at (y must be 0)
+    glm::dvec3 velocity_m_per_s{0.0}; // x, z: the horizontal velocity it is carried at; y: its heave velocity at t = 0
 };
 
 // The state at one step: the centre of mass and the orientation, world frame.

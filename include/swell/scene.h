@@ -117,7 +117,7 @@ struct SWELL_API SceneObject {
     double density_kg_per_m3 = 0.0;     // mean density of its closed volume, kg/m^3, 0..1e5
     glm::dvec3 centerOfMassOffset_m{0.0}; // from the volume's centroid, model frame (unscaled), m
     glm::dvec3 inertia_kg_m2{0.0};      // principal moments about the centre of mass, model axes; 0: from the mesh
-    glm::dvec3 velocity_m_per_s{0.0};   // carried at this horizontal velocity [x, 0, z] (a boat under way), m/s
+    glm::dvec3 velocity_m_per_s{0.0};   // m/s: carried at x, z (a boat under way); y: heave velocity at t = 0
     double dampingRatio = 0.1;          // fraction of critical damping in heave, roll and pitch, 0..2
     // The glTF node whose mesh is the model's closed hull volume: left out of
     // the drawn model, drawn into depth only so no water shows inside an open

@@ -63,8 +63,6 @@ FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings,
     const MassProperties props = massPropertiesOf(shape);
     if (!(settings.mass_kg > 0.0) || !std::isfinite(settings.mass_kg))
         throw InputError({}, fmt::format("a floating body needs a mass > 0 kg (got {})", settings.mass_kg));
-    if (start.velocity_m_per_s.y != 0.0)
-        throw InputError({}, "a floating body is carried horizontally: its velocity's y must be 0");
     mass_kg_ = settings.mass_kg;
     volume_m3_ = props.volume_m3;
     waterDensity_ = settings.waterDensity_kg_per_m3;
@@ -146,6 +144,7 @@ FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings,
     initial_.step = 0;
     initial_.centerOfMass_m = {com0.x, restY + start.origin_m.y, com0.z};
     initial_.orientation = q0;
+    initial_.heaveVelocity_m_per_s = start.velocity_m_per_s.y;
     water_ = std::make_unique<detail::BodyWater>();
     restart();
 }
@@ -163,8 +162,8 @@ void FloatingBody::restart()
 glm::dvec2 FloatingBody::carriedAt(std::int64_t n) const
 {
     // From the start, never accumulated, so a long run does not drift.
-    const glm::dvec3 p = initial_.centerOfMass_m + double(n) * kBodyStep_s * start_.velocity_m_per_s;
-    return {p.x, p.z};
+    const glm::dvec2 v(start_.velocity_m_per_s.x, start_.velocity_m_per_s.z);
+    return glm::dvec2(initial_.centerOfMass_m.x, initial_.centerOfMass_m.z) + double(n) * kBodyStep_s * v;
 }
 
 void FloatingBody::sampleWaterFor(std::int64_t n)

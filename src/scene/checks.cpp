@@ -66,7 +66,8 @@ void checkFile(const fs::path& base, const fs::path& resolved, const std::string
 }
 
 // A floating rigid body's keys agree: it floats, gives its mass one way, and
-// is carried horizontally.
+// its inertia is a solid's. (Its other keys mean nothing for other objects
+// and are left as they are, like every key a scene does not use.)
 void checkBody(const SceneObject& o, std::size_t i, const Places& places)
 {
     const std::string item = fmt::format("objects[{}]", i);
@@ -78,16 +79,6 @@ void checkBody(const SceneObject& o, std::size_t i, const Places& places)
     if ((o.mass_kg > 0.0 || o.density_kg_per_m3 > 0.0) && !o.floats)
         fail(places.first({item + ".floats", item + ".mass_kg", item + ".density_kg_per_m3", item}),
              fmt::format("{} has a mass but does not float; set floats = true to make it a floating rigid body", item));
-    if (o.velocity_m_per_s.y != 0.0)
-        fail(places.first({item + ".velocity_m_per_s", item}),
-             fmt::format("{}.velocity_m_per_s[1] is {} m/s; a body is carried horizontally, [x, 0, z], and heaves "
-                         "by itself",
-                         item, o.velocity_m_per_s.y));
-    if (!o.isRigidBody() && (o.velocity_m_per_s != glm::dvec3(0.0)))
-        fail(places.first({item + ".velocity_m_per_s", item}),
-             fmt::format("{}.velocity_m_per_s moves only floating rigid bodies: give mass_kg or density_kg_per_m3, "
-                         "and floats = true",
-                         item));
     const glm::dvec3 I = o.inertia_kg_m2;
     const bool given = I.x > 0.0 || I.y > 0.0 || I.z > 0.0;
     if (given && !(I.x > 0.0 && I.y > 0.0 && I.z > 0.0))

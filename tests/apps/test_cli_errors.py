@@ -61,6 +61,8 @@ ARGUMENTS = [
     ("unknown_subcommand", ["paint"], 2, "paint"),
     ("unknown_option", ["render", "-o", "x.png", "--colour", "red"], 2, "--colour"),
     ("bench_bad_frames", ["bench", "--frames", "0"], 2, "--frames"),
+    ("bodies_far_in_time", ["render", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes",
+                                                   "under-way.toml"), "-o", "x.png", "--time", "5000"], 2, "--time"),
 ]
 
 failures = []

@@ -174,6 +174,17 @@ TEST(FloatingBody, HeavesWithTheLinearSpringPeriodAndDecays)
     RecordProperty("peaks_m", std::to_string(peaks[0]) + " " + std::to_string(peaks[1]) + " .. " + std::to_string(peaks.back()));
 }
 
+TEST(FloatingBody, ReleasedWithAHeaveVelocity)
+{
+    // velocity_m_per_s's y is the heave velocity at t = 0: 1 m/s up from
+    // rest rises about 1 m/s * 0.05 s in the first 0.05 s (gravity and
+    // buoyancy balance at rest, so only the spring slows it, by under 10%).
+    const TestWater flat;
+    swell::FloatingBody body(box(kBox), halfDensityBox(), {.velocity_m_per_s = {0.0, 1.0, 0.0}}, flat);
+    EXPECT_NEAR(centreHeight(body, 0.05), 0.05, 0.005);
+    EXPECT_EQ(body.poseAt(0.05)[3].x, 0.0) << "carried only at x and z";
+}
+
 TEST(FloatingBody, PosesDoNotDependOnHowOftenTheyWereAsked)
 {
     const TestWater waves(0.6, 25.0);
