@@ -255,4 +255,28 @@ TEST(FloatingBody, SceneBodiesInLockstepMoveAsEachAlone)
     }
 }
 
+// A scaled model is a bigger body: its draft scales with it, and the pose
+// maps model space (scale included) to the world.
+TEST(FloatingBody, AScaledObjectFloatsAsTheBiggerBody)
+{
+    const TestWater flat;
+    const swell::BodyShape shape = box(kBox);
+    swell::detail::MeshData mesh;
+    for (const glm::dvec3& p : shape.positions_m)
+        mesh.vertices.push_back({glm::vec3(p), {}, {}});
+    mesh.indices = shape.indices;
+    swell::Scene scene;
+    scene.objects = {{.path = "a", .position_m = {2.0, 0.0, 3.0}, .scale = 2.0, .floats = true,
+                      .density_kg_per_m3 = 0.25 * kRho}};
+    swell::detail::SceneBodies bodies(scene, {&mesh}, flat);
+    bodies.advanceTo(1.0);
+    const glm::dmat4 pose = *bodies.poseAt(0, 1.0);
+    // At a quarter of the water's density it draws a quarter of its scaled
+    // height: the model's bottom, 0.75 m below its origin, lies 0.75 m deep.
+    const glm::dvec4 bottom = pose * glm::dvec4(0.0, -0.5 * kBox.y, 0.0, 1.0);
+    EXPECT_NEAR(bottom.y, -0.25 * 2.0 * kBox.y, 0.02 * 0.25 * 2.0 * kBox.y);
+    EXPECT_NEAR(bottom.x, 2.0, 1e-9);
+    EXPECT_NEAR(glm::length(glm::dvec3(pose[0])), 2.0, 1e-9) << "the scale is in the pose";
+}
+
 } // namespace
