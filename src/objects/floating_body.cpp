@@ -237,7 +237,9 @@ std::int64_t FloatingBody::lastStepFor(double time_s)
 {
     // The step whose end is the first after time_s: state k covers
     // [(k - 1) dt, k dt). Computed from time_s alone, never from earlier calls.
-    return std::int64_t(std::floor(std::max(time_s, 0.0) * kBodyStepsPerSecond)) + 1;
+    // Negative, NaN and infinite times (no frame asks for them) are t = 0 rather than undefined.
+    const double t = std::isfinite(time_s) && time_s > 0.0 ? time_s : 0.0;
+    return std::int64_t(std::floor(t * kBodyStepsPerSecond)) + 1;
 }
 
 void FloatingBody::advanceToStep(std::int64_t last)
@@ -252,7 +254,8 @@ glm::dmat4 FloatingBody::poseAt(double time_s)
 {
     const std::int64_t last = lastStepFor(time_s);
     advanceToStep(last);
-    const double f = std::max(time_s, 0.0) * kBodyStepsPerSecond - double(last - 1);
+    const double t = std::isfinite(time_s) && time_s > 0.0 ? time_s : 0.0;
+    const double f = t * kBodyStepsPerSecond - double(last - 1);
     const glm::dvec3 com = glm::mix(previous_.centerOfMass_m, next_.centerOfMass_m, f);
     const glm::dquat q = glm::slerp(previous_.orientation, next_.orientation, f);
     return glm::translate(glm::dmat4(1.0), com) * glm::mat4_cast(q) *
