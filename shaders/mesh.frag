@@ -2,6 +2,7 @@
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"
+#include "underwater.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -21,5 +22,12 @@ void main()
 #endif
     // Fog measured from the real eye, also in the mirrored pass (where the
     // mirrored point is as far from the eye as the real one's reflection).
-    fragColor = passOutput(applyFog(color, distance(vPosition, eyePosition)));
+    color = applyFog(color, distance(vPosition, eyePosition));
+#if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
+    // Underwater hook: seen from below the surface, the water's absorption
+    // and in-scattering replace the air's fog (underwater.glsl).
+    if (pixelUnderwater())
+        color = underwaterGeometry(vColor * light, vPosition);
+#endif
+    fragColor = passOutput(color);
 }

@@ -1,6 +1,12 @@
 // The ocean surface, whatever model draws it: the water shaders call
 //   SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
-// and the renderer builds them with SWELL_OCEAN_FILE naming the model's GLSL
+// for the displaced grid vertex, and the water's fragment shader calls
+//   SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m,
+//                             vec3 gridAlongX, vec3 gridAlongZ, float heightScale)
+// for the normal and foam one pixel sees (displacement left zero), given the
+// partial derivatives the grid's vertices carry, interpolated, having summed
+// the surface at gridFootprint_m: a model may add only what the grid filtered out.
+// The renderer builds them with SWELL_OCEAN_FILE naming the model's GLSL
 // file (src/render/wave_model_gpu.h), so no water shader names a model.
 #ifndef SWELL_OCEAN_GLSL
 #define SWELL_OCEAN_GLSL
@@ -10,8 +16,12 @@
 // foam, which only the GPU tracks.
 struct SurfacePoint {
     vec3 displacement; // from the rest point, m
-    vec3 normal;       // unit, pointing up
+    vec3 normal;       // unit, pointing up: normalize(cross(alongZ, alongX))
     float foam;        // whitecap cover, 0..1 (0 for models without foam)
+    vec3 alongX;       // partial derivative of the displaced point along rest x
+    vec3 alongZ;       // ... and along rest z
+    float slopeVariance; // mean square slope (x plus z) of the waves the normal leaves
+                         // out: what shading spreads the highlight by (oceanShading only)
 };
 
 #ifndef SWELL_OCEAN_FILE

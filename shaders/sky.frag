@@ -2,6 +2,7 @@
 #include "frame.glsl"
 #include "fog.glsl"
 #include "sky.glsl"
+#include "underwater.glsl"
 
 // Depth-tested before shading: drawn last, the sky is shaded only where
 // nothing else was drawn (software rasterisers otherwise test after shading).
@@ -15,5 +16,10 @@ void main()
     vec4 far = passInvViewProj * vec4(vNdc, 1.0, 1.0);
     vec4 near = passInvViewProj * vec4(vNdc, -1.0, 1.0);
     vec3 direction = normalize(far.xyz / far.w - near.xyz / near.w);
-    fragColor = passOutput(applyFog(skyRadianceFiltered(direction), skyDistance(direction)));
+    vec3 color = applyFog(skyRadianceFiltered(direction), skyDistance(direction));
+    // Underwater hook: below the surface, what no geometry covers is the
+    // water's depths (underwater.glsl).
+    if (pixelUnderwater())
+        color = underwaterBackground(direction, -eyePosition.y);
+    fragColor = passOutput(color);
 }

@@ -6,48 +6,98 @@
 #include "reflection.glsl"
 #include "refraction.glsl"
 #include "ocean.glsl"
+#include "underwater_surface.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
+in vec3 vAlongX;
+in vec3 vAlongZ;
 in vec2 vRestPoint;
 in float vCellSize;
 in float vHeightScale;
 out vec4 fragColor;
 
+// A term of the shading is in unless the benchmark left it out.
+#define SWELL_HAS_TERM(term) ((SWELL_OMITTED_TERMS & (term)) == 0)
+
 void main()
 {
+#if SWELL_HAS_TERM(SWELL_TERM_WAVE_NORMALS)
     // The grid carries only the waves it can sample; the shading normal takes
     // every wave this pixel can resolve, filtered by the pixel's footprint on
-    // the water instead of the grid spacing (the same surface function).
+    // the water instead of the grid spacing: the model adds to the grid's
+    // interpolated derivatives what the two footprints see differently.
     vec2 footprint = fwidth(vRestPoint);
     float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
-    SurfacePoint surface = oceanSurface(vRestPoint - gridCenter, pixelSize_m, vHeightScale);
+    SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ, vHeightScale);
     vec3 n = surface.normal;
+    float foam = surface.foam;
+    float slopeVariance = surface.slopeVariance;
+#else
+    vec3 n = normalize(vNormal);
+    float foam = 0.0;
+    float slopeVariance = 0.0;
+#endif
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);
     vec3 v = toEye / distance_m;
+    // Underwater hook: the surface seen from below is Snell's window and the
+    // water's own colour, shaded in underwater_surface.glsl. The waterline
+    // mask says so: it holds the side this very fragment is seen from when
+    // the eye is near the surface, and the eye's side elsewhere (so a
+    // folded facet of a choppy sea never turns a view from the air to one
+    // from below).
+#if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
+    if (pixelUnderwater()) {
+        fragColor = passOutput(surfaceFromBelow(vPosition, n, gl_FragCoord.xy * viewportInvSize));
+        return;
+    }
+#endif
     // Seen from a grazing angle, an interpolated normal can face away.
     if (dot(n, v) < 0.0)
         n = normalize(n - v * dot(n, v) * 1.01);
 
-    vec2 screenUv = gl_FragCoord.xy * viewportInvSize;
+#if SWELL_HAS_TERM(SWELL_TERM_REFLECTION)
     vec3 reflected = reflectedRadiance(vPosition, reflect(-v, n));
+#else
+    vec3 reflected = skyHorizon;
+#endif
+#if SWELL_HAS_TERM(SWELL_TERM_REFRACTION)
+    vec2 screenUv = gl_FragCoord.xy * viewportInvSize;
     float path_m;
     vec3 refracted = refractedRadiance(vPosition, n, screenUv, path_m);
+#else
+    float path_m = 100.0;
+    vec3 refracted = waterDeep;
+#endif
+    float fresnel = fresnelSchlick(dot(n, v), fresnelF0);
+#if SWELL_HAS_TERM(SWELL_TERM_LIGHTING)
     // Phong diffuse lights the light scattered inside the water.
     float lit = 0.35 + 0.65 * phongDiffuse(n);
     refracted *= mix(1.0, lit, 1.0 - exp(-0.2 * min(path_m, 100.0)));
-
-    float fresnel = fresnelSchlick(dot(n, v), fresnelF0);
+#endif
     vec3 color = mix(refracted, reflected, fresnel);
-    color += sunColor * sunIntensity * specularStrength * phongSpecular(n, v, shininess, fresnelF0) * step(0.0, sunDirection.y);
+#if SWELL_HAS_TERM(SWELL_TERM_LIGHTING)
+    // The slopes the normal leaves out spread the sun's highlight: the Phong
+    // lobe is about a Gaussian of variance 1/shininess in the reflected
+    // direction, and a slope variance s2 (x plus z) tilts the reflection by
+    // twice the slope, adding 2*s2 (Toksvig 2005's widening of filtered
+    // normals; Bruneton et al. 2010, sec. 4.2, for waves). The lobe's
+    // normalisation keeps its energy.
+    float spreadShininess = shininess / (1.0 + 2.0 * shininess * slopeVariance);
+    color += sunColor * sunIntensity * specularStrength * phongSpecular(n, v, spreadShininess, fresnelF0) * step(0.0, sunDirection.y);
+#endif
 
+#if SWELL_HAS_TERM(SWELL_TERM_FOAM)
     // Whitecaps: a layer of bubbles that scatters nearly all light back,
     // lit by the sun and the sky (Lambertian, as foam is close to; Koepke
     // 1984 measured its effective reflectance at about 0.55 in the visible).
-    float foamCover = smoothstep(0.35, 0.65, surface.foam);
+    float foamCover = smoothstep(0.35, 0.65, foam);
     vec3 foamLight = sunColor * sunIntensity * max(sunDirection.y, 0.0) * (0.6 + 0.4 * phongDiffuse(n)) + skyHorizon * 0.5;
     color = mix(color, 0.55 * foamLight, foamCover);
+#else
+    float foamCover = 0.0;
+#endif
 
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS
     color = n * 0.5 + 0.5;
@@ -63,7 +113,7 @@ void main()
     float level = log2(max(vCellSize, 0.01) / 0.25) / 10.0;
     color = mix(vec3(1.0, 0.2, 0.1), vec3(0.1, 0.3, 1.0), clamp(level, 0.0, 1.0)) * (0.75 + 0.25 * fract(level * 10.0));
 #endif
-#if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED || SWELL_DEBUG_VIEW == SWELL_VIEW_REFLECTION || SWELL_DEBUG_VIEW == SWELL_VIEW_REFRACTION
+#if (SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED || SWELL_DEBUG_VIEW == SWELL_VIEW_REFLECTION || SWELL_DEBUG_VIEW == SWELL_VIEW_REFRACTION) && SWELL_HAS_TERM(SWELL_TERM_FOG)
     color = applyFog(color, distance_m);
 #endif
     fragColor = passOutput(color);

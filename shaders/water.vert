@@ -5,6 +5,8 @@
 
 out vec3 vPosition;    // displaced position relative to the render origin, m
 out vec3 vNormal;
+out vec3 vAlongX;      // the surface's partial derivatives at the grid's footprint (for the shading)
+out vec3 vAlongZ;
 out vec2 vRestPoint;   // rest position relative to the render origin, m (captured by tests)
 out float vCellSize;   // grid spacing, m (for the LOD view)
 out float vHeightScale; // horizon fade, 0..1
@@ -18,6 +20,8 @@ void main()
     SurfacePoint p = oceanSurface(g.offset, g.cellSize, fade);
     vPosition = vec3(rest.x, 0.0, rest.y) + p.displacement;
     vNormal = p.normal;
+    vAlongX = p.alongX;
+    vAlongZ = p.alongZ;
     vRestPoint = rest;
     vCellSize = g.cellSize;
     vHeightScale = fade;

@@ -4,6 +4,7 @@
 //                      counters; the floor (the same passes, trivial shading)
 //   bench_lod.cpp      the water grid's triangles seen from the camera
 //   bench_report.cpp   the machine, the text table and the JSON file
+//   bench_terms.cpp    what each term of the water shading costs
 #pragma once
 
 #include "swell/camera.h"
@@ -12,6 +13,7 @@
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <chrono>
 #include <cstdint>
@@ -124,7 +126,11 @@ public:
     ~FloorFrame();
     FloorFrame(const FloorFrame&) = delete;
     FloorFrame& operator=(const FloorFrame&) = delete;
-    void render(PassObserver& observer);
+    // waterline: also the waterline mask's pass, which real frames draw
+    // only with the camera in the waves. The benchmark alternates: the
+    // frame's floor (the least) is then one without it, the pass's own floor
+    // comes from the frames with it.
+    void render(PassObserver& observer, bool waterline);
 
 private:
     struct State;
@@ -180,6 +186,17 @@ struct Machine {
 };
 Machine describeMachine();
 
+// The water shading with terms left out (RendererOptions::omittedWaterTerms),
+// rendered along the same path, each frame right after the full frame of the
+// same camera and time so that both see the same load on the machine.
+struct TermVariant {
+    std::string name;        // "wave normals", ...; "every term" when all are left out
+    unsigned omitted = 0;    // SWELL_TERM_* bits
+    std::vector<FrameSample> frames; // the measured frames, in path order
+};
+// Each term alone, then all of them (what the water costs shaded by nothing).
+std::vector<TermVariant> termVariants();
+
 struct Results {
     Machine machine;
     glm::ivec2 size{0}, passSize{0};
@@ -191,11 +208,15 @@ struct Results {
     std::vector<double> realTimes_s;     // simulation time of each measured frame
     std::vector<Camera> realCameras;     // camera of each measured frame
     std::vector<LodSample> lod;
+    std::vector<TermVariant> terms;      // empty when not measured (--no-terms)
     int floatingBodies = 0;
     std::vector<long long> bodySteps; // per measured frame, all bodies (Renderer::counters())
 };
 
 void printReport(const Results& results);
+// The terms' table (nothing when they were not measured), and its JSON.
+void printTermReport(const Results& results);
+nlohmann::ordered_json termsJson(const Results& results);
 // Throws swell::Error when the file cannot be written.
 void writeJson(const Results& results, const std::string& path);
 

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <unistd.h>
 
 namespace swell::app {
@@ -146,8 +147,22 @@ int runBench(const BenchOptions& options)
     renderer.setPassObserver(&recorder);
     checkGl("creating the benchmark's targets and queries");
 
+    // The same scene with water shading terms left out, one renderer each,
+    // each frame drawn right after the full frame of the same camera and time.
+    if (options.terms)
+        r.terms = termVariants();
+    std::vector<std::unique_ptr<Renderer>> termRenderers;
+    for (const TermVariant& t : r.terms) {
+        RendererOptions termOptions;
+        termOptions.omittedWaterTerms = t.omitted;
+        termRenderers.push_back(std::make_unique<Renderer>(scene, termOptions));
+        termRenderers.back()->setPassObserver(&recorder);
+    }
+    checkGl("creating the water term variants");
+
     const int floorWarmup = std::min(options.warmup, kFloorWarmup);
-    Progress progress("benchmarking", options.warmup + options.frames + floorWarmup + options.frames);
+    const int perFrame = 1 + int(r.terms.size());
+    Progress progress("benchmarking", (options.warmup + options.frames) * perFrame + floorWarmup + options.frames);
     // The real frames: warm-up at the path's start, then the measured ones.
     for (int i = 0; i < options.warmup + options.frames; ++i) {
         const bool measured = i >= options.warmup;
@@ -164,13 +179,22 @@ int runBench(const BenchOptions& options)
             r.realCameras.push_back(camera);
         }
         progress.advance();
+        for (size_t v = 0; v < termRenderers.size(); ++v) {
+            FrameSample variant = recorder.recordFrame(
+                [&] { termRenderers[v]->render(camera, t, r.size, output.framebuffer.id()); });
+            checkGl("rendering a frame with a water term left out");
+            if (measured)
+                r.terms[v].frames.push_back(std::move(variant));
+            progress.advance();
+        }
     }
+    termRenderers.clear();
     renderer.setPassObserver(nullptr);
 
     // The floor: the same passes at the same sizes with trivial shading.
     FloorFrame floorFrame(r.passSize, r.size);
     for (int i = 0; i < floorWarmup + options.frames; ++i) {
-        FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder); });
+        FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder, i % 2 == 0); });
         checkGl("rendering the floor");
         if (i >= floorWarmup)
             r.floor.push_back(std::move(frame));
@@ -212,6 +236,7 @@ int runBench(const BenchOptions& options)
     }
 
     printReport(r);
+    printTermReport(r);
     if (!options.jsonPath.empty()) {
         writeJson(r, options.jsonPath);
         std::fprintf(stderr, "swell bench: results written to %s\n", options.jsonPath.c_str());

@@ -222,7 +222,7 @@ OffscreenTarget makeOffscreenTarget(glm::ivec2 size, GLenum colorFormat)
 struct FloorFrame::State {
     gl::Program program;
     gl::VertexArray vao;
-    OffscreenTarget reflection, refraction, output;
+    OffscreenTarget reflection, refraction, waterline, output;
 
     // The state the renderer's passes set, then a clear.
     void bind(const OffscreenTarget& t) const
@@ -257,12 +257,13 @@ FloorFrame::FloorFrame(glm::ivec2 passSize, glm::ivec2 outputSize) : state_(std:
     state_->vao = gl::VertexArray::create();
     state_->reflection = makeOffscreenTarget(passSize, GL_RGBA16F);
     state_->refraction = makeOffscreenTarget(passSize, GL_RGBA16F);
+    state_->waterline = makeOffscreenTarget(outputSize, GL_R8);
     state_->output = makeOffscreenTarget(outputSize, GL_RGBA8);
 }
 
 FloorFrame::~FloorFrame() = default;
 
-void FloorFrame::render(PassObserver& observer)
+void FloorFrame::render(PassObserver& observer, bool waterline)
 {
     const State& s = *state_;
     // The wave model's own work for the frame: at the least, none.
@@ -280,6 +281,15 @@ void FloorFrame::render(PassObserver& observer)
     s.bind(s.refraction);
     s.triangle(0.5f);
     observer.endPass("refraction");
+
+    // The waterline mask, drawn only when the camera is in the waves: its
+    // full-size R8 target.
+    if (waterline) {
+        observer.beginPass("waterline");
+        s.bind(s.waterline);
+        s.triangle(0.5f);
+        observer.endPass("waterline");
+    }
 
     // The water's stand-in lies in front of the first triangle, so it passes
     // the depth test like the visible water does.

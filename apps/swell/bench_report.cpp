@@ -399,6 +399,7 @@ void writeJson(const Results& r, const std::string& path)
         measured.push_back(std::move(frame));
     }
     j["measured_frames"] = std::move(measured);
+    j["water_terms"] = termsJson(r);
 
     std::ofstream out(path, std::ios::binary);
     out << j.dump(2) << '\n';

@@ -36,6 +36,7 @@ struct BenchOptions {
     int frames = 60;       // measured frames along the camera path
     int warmup = 10;       // frames rendered and discarded first
     std::string jsonPath;  // also write the results as JSON here
+    bool terms = true;     // also measure the water with each shading term left out
     std::string scenePath; // the scene benchmarked; empty: the built-in default
 };
 int runBench(const BenchOptions& options);

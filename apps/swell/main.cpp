@@ -88,6 +88,9 @@ int main(int argc, char** argv)
     benchCommand->add_option("--warmup", bench.warmup, "Frames rendered first and not measured")
         ->check(CLI::Range(0, 100000))->capture_default_str();
     benchCommand->add_option("--json", bench.jsonPath, "Also write the results as JSON to this file");
+    bool noTerms = false;
+    benchCommand->add_flag("--no-terms", noTerms,
+                           "Skip the water shading terms' costs (each term left out in turn: 8 renders a frame instead of 1)");
     benchCommand->add_option("scene", bench.scenePath,
                              "Scene file (TOML) to benchmark along the same camera path; the built-in default when omitted");
 
@@ -116,6 +119,7 @@ int main(int argc, char** argv)
         }
         if (*benchCommand) {
             parseSize(benchSize, bench.width, bench.height);
+            bench.terms = !noTerms;
             return swell::app::runBench(bench);
         }
         // No subcommand: the main job.

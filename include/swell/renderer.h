@@ -9,11 +9,13 @@
 #include "swell/export.h"
 
 #include "swell/camera.h"
+#include "swell/drawn_surface.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/image.h"
 #include "swell/scene.h"
 #include "swell/wave_model.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
 #include <cstdint>
@@ -25,6 +27,10 @@ namespace swell {
 struct SWELL_API RendererOptions {
     // Where shaders come from: the embedded copies, or a folder for hot reload.
     gl::ShaderSources shaders = gl::ShaderSources::embedded();
+    // For measuring what each term of the water shading costs (swell bench):
+    // the terms left out, a bitwise or of SWELL_TERM_* (swell/shader_constants.h),
+    // each replaced by its cheapest stand-in. 0 draws the water in full.
+    unsigned omittedWaterTerms = 0;
 };
 
 // Triangles and draw calls of the last frame, for the benchmark and tests.
@@ -69,6 +75,14 @@ public:
     // (then the scene's waves again). Throws swell::InputError, keeping the
     // model it had, when the model's shaders do not build.
     void setWaveModel(std::shared_ptr<const WaveModel> model);
+
+    // The water exactly as render() draws it for this camera and time: the
+    // grid's triangles (swell/drawn_surface.h). Put things on the water the
+    // user sees with it. Valid until the next setScene() or setWaveModel().
+    DrawnSurface drawnSurface(const Camera& camera, double time_s) const;
+    // Each scene object's transform (object to absolute world, m) in the last
+    // frame drawn or captured: floating objects sit on drawnSurface().
+    std::vector<glm::dmat4> objectTransforms() const;
 
     // Recompiles every shader from options.shaders (for hot reload). On failure
     // the old programs stay in use and the error is thrown.

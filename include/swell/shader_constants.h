@@ -38,6 +38,20 @@
 #define SWELL_UNIT_OCEAN0 6
 #define SWELL_UNIT_OCEAN1 7
 #define SWELL_UNIT_OCEAN2 8
+#define SWELL_UNIT_OCEAN3 9
+// The waterline mask: which pixels look out from below the water (underwater.glsl).
+#define SWELL_UNIT_WATERLINE 10
+
+// Values of the waterline mask (an R8 texture): the pixel's ray meets no
+// water, meets it first from above, or first from below.
+#define SWELL_WATERLINE_NO_HIT 0.0
+#define SWELL_WATERLINE_ABOVE 0.5
+#define SWELL_WATERLINE_BELOW 1.0
+
+// Refractive index of sea water for visible light (air: 1). 1.333 is pure
+// water's at 589 nm and 20 C; sea water's is about 1.34 (Quan and Fry 1995).
+// Snell's window's half-angle is asin(1 / n): 48.6 degrees.
+#define SWELL_WATER_IOR 1.333
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).
@@ -57,6 +71,21 @@
 // Reflection lookups (prepended as SWELL_REFLECTION_MODE).
 #define SWELL_REFLECTION_FIXED 0
 #define SWELL_REFLECTION_RAYMARCH 1
+
+// Terms of the water shading (bit flags). The benchmark leaves one out at a
+// time to measure what each costs (prepended as SWELL_OMITTED_TERMS, 0 in
+// every normal build). Left out, a term becomes its cheapest stand-in:
+// wave normals -> the interpolated vertex normal (and no foam, which the same
+// per-pixel evaluation returns); reflection -> the sky's horizon colour;
+// refraction -> the deep water colour; lighting -> no sun diffuse or
+// specular; foam -> none; fog -> none.
+#define SWELL_TERM_WAVE_NORMALS 1
+#define SWELL_TERM_REFLECTION 2
+#define SWELL_TERM_REFRACTION 4
+#define SWELL_TERM_LIGHTING 8
+#define SWELL_TERM_FOAM 16
+#define SWELL_TERM_FOG 32
+#define SWELL_TERM_ALL 63
 
 // Grid layouts (prepended as SWELL_GRID_LAYOUT; see shaders/grid.glsl).
 #define SWELL_GRID_GEOMETRIC 0

@@ -8,7 +8,8 @@
 // Mirrored by swell::detail::GerstnerUniforms. Sorted longest wave first.
 layout(std140, binding = SWELL_BINDING_OCEAN) uniform GerstnerWaves {
     vec4 waveShape[SWELL_MAX_WAVES]; // xy: direction of travel (unit), z: wavenumber k, rad/m, w: amplitude, m
-    vec4 wavePhase[SWELL_MAX_WAVES]; // x: steepness Q, y: phase at the grid centre and this time, rad, z: wavelength, m
+    vec4 wavePhase[SWELL_MAX_WAVES]; // x: steepness Q, y: phase at the grid centre and this time, rad, z: wavelength, m,
+                                     // w: mean square slope of this wave and every shorter one
     ivec4 waveCount;                 // x: number of waves in use
 };
 
@@ -46,6 +47,59 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
         tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
         binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
     }
-    return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0);
+    return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0, tangent, binormal, 0.0);
+}
+
+// The grid's vertices summed each wave at weight waveLodWeight(wavelength,
+// gridFootprint_m) and the pixel resolves it at waveLodWeight(wavelength,
+// pixelFootprint_m): only the difference is summed here, its partial
+// derivatives added to the grid's (Bruneton et al. 2010, "Real-time realistic ocean
+// lighting using seamless transitions from geometry to BRDF", sec. 4: the
+// geometry carries the waves the grid resolves, the normals those a pixel
+// resolves). Waves the grid holds at full weight that the pixel resolves
+// fully too cost nothing here, so a pixel sums only the short ones.
+SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m, vec3 gridAlongX,
+                          vec3 gridAlongZ, float heightScale)
+{
+    // The sums are linear in the partial derivatives: the band's add to the grid's.
+    vec3 tangent = gridAlongX;
+    vec3 binormal = gridAlongZ;
+    // Waves at least this long have full weight in both sums, and waves at
+    // most this long zero weight in both: neither adds anything here.
+    float bothFull_m = SWELL_FULL_CELLS_PER_WAVELENGTH * max(gridFootprint_m, pixelFootprint_m);
+    float neither_m = SWELL_MIN_CELLS_PER_WAVELENGTH * min(gridFootprint_m, pixelFootprint_m);
+    // The slopes of the waves the pixel resolves only in part, or not at all,
+    // go to the highlight's spread (Bruneton et al. 2010, sec. 4.2: the
+    // filtered-out part of the slope variance becomes BRDF roughness).
+    float slopeVariance = 0.0;
+    float fade2 = heightScale * heightScale;
+    int i = 0;
+    for (; i < waveCount.x; ++i) {
+        float wavelength = wavePhase[i].z;
+        if (wavelength >= bothFull_m)
+            continue;
+        // The waves come longest first: none after this one adds anything either.
+        if (wavelength <= neither_m)
+            break;
+        // Negative where the pixel is wider than the grid's cells (far away):
+        // the pixel then takes out what it cannot resolve.
+        float weight = waveLodWeight(wavelength, pixelFootprint_m) - waveLodWeight(wavelength, gridFootprint_m);
+        vec2 d = waveShape[i].xy;
+        float k = waveShape[i].z;
+        float q = wavePhase[i].x;
+        float theta = k * dot(d, restOffset_m) + wavePhase[i].y;
+        float s = sin(theta);
+        float c = cos(theta);
+        float ka = k * waveShape[i].w * heightScale * weight;
+        tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
+        binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
+        float resolved = waveLodWeight(wavelength, pixelFootprint_m);
+        float kaFull = k * waveShape[i].w;
+        slopeVariance += 0.5 * kaFull * kaFull * fade2 * (1.0 - resolved * resolved);
+    }
+    // Every shorter wave is wholly unresolved.
+    if (i < waveCount.x)
+        slopeVariance += wavePhase[i].w * fade2;
+    return SurfacePoint(vec3(0.0), normalize(cross(binormal, tangent)), 0.0, tangent, binormal, slopeVariance);
 }
 #endif

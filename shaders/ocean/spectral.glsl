@@ -19,11 +19,13 @@ layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
     SpectralCascade cascades[SWELL_FFT_CASCADES];
     vec2 windDirection;     // unit, x,z: foam is drawn out into streaks along it
     float foamStreak;       // how far foam streaks are drawn out along the wind, 1 = not at all
+    float unresolvedSlopeVariance; // mean square slope of the waves shorter than the last cascade's
 };
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
 layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;  // dDy/dx, dDy/dz, dDx/dx, dDz/dz
 layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1
+layout(binding = SWELL_UNIT_OCEAN3) uniform sampler2DArray oceanSlopeMoments; // (dDy/dx)^2, (dDy/dz)^2, their product
 
 // Value noise on a lattice of 1 m cells: the bubbly texture inside foam.
 float foamHash(vec2 cell) { return fract(sin(dot(cell, vec2(127.1, 311.7))) * 43758.5453); }
@@ -72,32 +74,61 @@ vec4 bilinearDisplacement(vec2 s, int cascade)
     return mix(top, bottom, f.y);
 }
 
-SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
+// The normal and the foam at a footprint (the displacement left zero): the
+// slopes and the foam through their mipmaps. The slope variance the mipmaps
+// average away comes back from the second moments (LEAN mapping, Olano &
+// Baker 2010: E[s^2] - E[s]^2 over the footprint), with that of the waves no
+// cascade holds (Elfouhaily et al. 1997), as the highlight's spread.
+SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightScale)
 {
-    vec4 displacement = vec4(0.0); // Dx, Dy, Dz, dDx/dz
     vec4 slopes = vec4(0.0);       // dDy/dx, dDy/dz, dDx/dx, dDz/dz
     float crossSlope = 0.0;        // dDx/dz from the filtered fields
     float foam = 0.0;
+    float slopeVariance = unresolvedSlopeVariance;
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
+        SpectralCascade cascade = cascades[c];
+        vec2 s = cascade.originTexels + restOffset_m * cascade.texelsPerMetre;
+        float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
+        // Sample centres sit at integer texels: shift by half a texel for the
+        // hardware's filter, and pick the mip the footprint covers.
+        vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
+        float lod = log2(max(footprint_m * cascade.texelsPerMetre, 1.0));
+        vec4 d = textureLod(oceanDerivatives, uvw, lod);
+        vec2 meanSquare = textureLod(oceanSlopeMoments, uvw, lod).xy;
+        slopeVariance += max(meanSquare.x - d.x * d.x, 0.0) + max(meanSquare.y - d.y * d.y, 0.0);
+        slopes += d;
+        crossSlope += textureLod(oceanDisplacement, uvw, 0.0).w * weight;
+        foam = max(foam, textureLod(oceanFoam, uvw, lod).r);
+    }
+    slopes *= heightScale;
+    slopeVariance *= heightScale * heightScale;
+    crossSlope *= heightScale;
+    vec3 alongX = vec3(1.0 + slopes.z, slopes.x, crossSlope);
+    vec3 alongZ = vec3(crossSlope, slopes.y, 1.0 + slopes.w);
+    foam *= heightScale * foamDetail(restOffset_m, footprint_m);
+    return SurfacePoint(vec3(0.0), normalize(cross(alongZ, alongX)), foam, alongX, alongZ, slopeVariance);
+}
+
+SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
+{
+    vec4 displacement = vec4(0.0); // Dx, Dy, Dz, dDx/dz
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         SpectralCascade cascade = cascades[c];
         vec2 s = cascade.originTexels + restOffset_m * cascade.texelsPerMetre;
         float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
         if (weight > 0.0)
             displacement += weight * bilinearDisplacement(s, c);
-        // Sample centres sit at integer texels: shift by half a texel for the
-        // hardware's filter, and pick the mip the footprint covers.
-        vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
-        float lod = log2(max(footprint_m * cascade.texelsPerMetre, 1.0));
-        slopes += textureLod(oceanDerivatives, uvw, lod);
-        crossSlope += textureLod(oceanDisplacement, uvw, 0.0).w * weight;
-        foam = max(foam, textureLod(oceanFoam, uvw, lod).r);
     }
-    displacement *= heightScale;
-    slopes *= heightScale;
-    crossSlope *= heightScale;
-    vec3 alongX = vec3(1.0 + slopes.z, slopes.x, crossSlope);
-    vec3 alongZ = vec3(crossSlope, slopes.y, 1.0 + slopes.w);
-    foam *= heightScale * foamDetail(restOffset_m, footprint_m);
-    return SurfacePoint(displacement.xyz, normalize(cross(alongZ, alongX)), foam);
+    SurfacePoint p = spectralSlopes(restOffset_m, footprint_m, heightScale);
+    p.displacement = displacement.xyz * heightScale;
+    return p;
+}
+
+// The slope textures hold every wave the pixel resolves, at the cost of one
+// filtered fetch per cascade: the grid's normal adds nothing.
+SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m, vec3 gridAlongX,
+                          vec3 gridAlongZ, float heightScale)
+{
+    return spectralSlopes(restOffset_m, pixelFootprint_m, heightScale);
 }
 #endif

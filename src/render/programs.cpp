@@ -45,9 +45,9 @@ gl::Program build(const gl::ShaderSources& sources, const ShaderVariant& variant
 
 } // namespace
 
-ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile)
+ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms)
 {
-    return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile)};
+    return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile), omittedWaterTerms};
 }
 
 std::vector<std::string> definesOf(const ShaderVariant& v)
@@ -58,6 +58,7 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
                     v.reflection == ReflectionMode::FixedDistance ? "SWELL_REFLECTION_FIXED" : "SWELL_REFLECTION_RAYMARCH"),
         fmt::format("SWELL_GRID_LAYOUT {}", v.gridLayout == GridLayout::Paper ? "SWELL_GRID_PAPER" : "SWELL_GRID_GEOMETRIC"),
         fmt::format("SWELL_OCEAN_FILE \"{}\"", v.oceanFile),
+        fmt::format("SWELL_OMITTED_TERMS {}", v.omittedWaterTerms),
     };
 }
 
@@ -91,6 +92,7 @@ Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& va
     Programs p;
     p.water = BlockProgram(build(sources, variant, "water.vert", "water.frag"));
     p.sky = BlockProgram(build(sources, variant, "fullscreen.vert", "sky.frag"));
+    p.waterline = BlockProgram(build(sources, variant, "water.vert", "waterline.frag"));
     p.mesh = MeshProgram(sources, variant);
     p.skyBake = SkyBakeProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),

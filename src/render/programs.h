@@ -21,11 +21,13 @@ struct ShaderVariant {
     ReflectionMode reflection = ReflectionMode::RayMarch; // SWELL_REFLECTION_MODE
     GridLayout gridLayout = GridLayout::Geometric;     // SWELL_GRID_LAYOUT
     std::string oceanFile = "ocean/gerstner.glsl";     // SWELL_OCEAN_FILE: the wave model's GLSL
+    unsigned omittedWaterTerms = 0;                    // SWELL_OMITTED_TERMS: SWELL_TERM_* bits (benchmark)
     bool operator==(const ShaderVariant&) const = default;
 };
 
-// The variant a scene asks for, with the wave model's GLSL file.
-ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile);
+// The variant a scene asks for, with the wave model's GLSL file and the
+// water shading terms left out (RendererOptions::omittedWaterTerms).
+ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms);
 
 // The #define lines (without "#define ") for a variant.
 std::vector<std::string> definesOf(const ShaderVariant& variant);
@@ -59,8 +61,9 @@ private:
 };
 
 // Programs with no uniforms of their own (all from the Frame block): the sky
-// (fullscreen.vert + sky.frag), the water (water.vert + water.frag) and the
-// water's vertex capture for tests (water.vert with transform feedback).
+// (fullscreen.vert + sky.frag), the water (water.vert + water.frag), the
+// waterline mask (water.vert + waterline.frag) and the water's vertex
+// capture for tests (water.vert with transform feedback).
 class BlockProgram {
 public:
     BlockProgram() = default;
@@ -73,7 +76,7 @@ private:
 };
 
 struct Programs {
-    BlockProgram water, sky, capture;
+    BlockProgram water, sky, waterline, capture;
     MeshProgram mesh;
     SkyBakeProgram skyBake;
 };

@@ -9,6 +9,7 @@
 #include "render/render_target.h"
 #include "render/sky_cubemap.h"
 #include "render/water_grid.h"
+#include "render/waterline.h"
 #include "render/wave_model_gpu.h"
 #include "render/world.h"
 #include "swell/error.h"
@@ -39,6 +40,8 @@ struct Renderer::Impl {
     std::unique_ptr<WaveModelGpu> modelGpu;
     GridShape gridShape;
     gl::ShaderSources sources;
+    // Water shading terms left out, for the benchmark (RendererOptions).
+    unsigned omittedWaterTerms = 0;
     ShaderVariant variant;
     Programs programs;
     gl::Buffer frameUbo[PassCount];
@@ -46,6 +49,7 @@ struct Renderer::Impl {
     WaterGrid waterGrid;
     World world;
     RenderTarget reflection, refraction, output;
+    WaterlineMask waterline;
     FrameCounters counters;
     PassObserver* observer = nullptr;
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
@@ -54,8 +58,12 @@ struct Renderer::Impl {
     std::vector<glm::mat4> poses;
     // The floating rigid bodies, stepped to each frame's time (objects/scene_bodies.h).
     SceneBodies bodies;
+    glm::dvec3 posesOrigin{0.0}; // the render origin poses are relative to
 
-    explicit Impl(RendererOptions options) : sources(std::move(options.shaders)) {}
+    explicit Impl(RendererOptions options)
+        : sources(std::move(options.shaders)), omittedWaterTerms(options.omittedWaterTerms)
+    {
+    }
 
     const WaveModel& model() const { return overrideModel ? *overrideModel : *sceneModel; }
 
@@ -86,14 +94,16 @@ struct Renderer::Impl {
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         const WaveReach reach = model().reach();
+        const DrawnSurface drawn(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
         // Bodies step on the CPU to this frame's time: fixed steps, so the
         // poses depend on time_s alone, never on the frames before.
         notify(true, "bodies");
         const std::int64_t stepsBefore = bodies.stepsTaken();
-        poses = objectPoses(scene, model(), bodies, origin, time_s);
+        poses = objectPoses(scene, model(), drawn, bodies, origin, time_s);
         counters.floatingBodies = int(bodies.count());
         counters.bodySteps = bodies.stepsTaken() - stepsBefore;
         notify(false, "bodies");
+        posesOrigin = origin;
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
         waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
         return f;
@@ -171,6 +181,27 @@ struct Renderer::Impl {
         ++counters.drawCalls;
     }
 
+    // The waterline mask for the main pass (render/waterline.h): drawn from
+    // the water grid when the near plane can lie on either side of the
+    // waves, else cleared to the side it lies on. Expects the main pass's
+    // frame uniforms bound.
+    void drawWaterline(NearPlaneMedium medium, glm::ivec2 size)
+    {
+        waterline.resize(size);
+        if (medium != NearPlaneMedium::Both) {
+            waterline.fill(medium);
+            return;
+        }
+        notify(true, "waterline");
+        beginPass(waterline.framebuffer(), size, glm::vec4(SWELL_WATERLINE_NO_HIT));
+        glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.allAbove()); // never the target itself
+        programs.waterline.use();
+        glBindVertexArray(waterGrid.vertexArray());
+        waterGrid.draw();
+        ++counters.drawCalls;
+        notify(false, "waterline");
+    }
+
     // Every pass sets all the state it depends on, so passes can be reordered.
     void beginPass(GLuint framebuffer, glm::ivec2 size, glm::vec4 clear)
     {
@@ -210,6 +241,9 @@ struct Renderer::Impl {
         const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
         reflection.resize(scaled);
         refraction.resize(scaled);
+        // Passes before the main one see nothing from below the water.
+        waterline.resize(size);
+        glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.allAbove());
 
         // Pass 1: the world mirrored about the water plane, clipped just below it.
         FrameUniforms f = base;
@@ -230,6 +264,10 @@ struct Renderer::Impl {
         // Pass 1b: the world below the water, for refraction.
         f = base;
         f.clipPlane = glm::vec4(0.0f, -1.0f, 0.0f, float(scene.reflection.clipOffset_m));
+        // Underwater hook: an eye below the surface looks up through it, so
+        // this pass holds the world above the water instead.
+        if (eyeUnderwater(camera, model(), time_s))
+            f.clipPlane = glm::vec4(0.0f, 1.0f, 0.0f, float(scene.reflection.clipOffset_m));
         setViewport(f, scaled);
         notify(true, "refraction");
         bindFrame(PassRefraction, f);
@@ -244,8 +282,10 @@ struct Renderer::Impl {
         // alone), so its shader runs on the visible sky's pixels only.
         f = base;
         f.passEncodesSrgb = 1;
-        notify(true, "main");
         bindFrame(PassMain, f);
+        drawWaterline(nearPlaneMedium(camera, double(size.x) / double(size.y), model().reach()), size);
+        glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.texture());
+        notify(true, "main");
         beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin);
         drawHullVolumes();
@@ -267,7 +307,7 @@ struct Renderer::Impl {
         const WaveModel& nextModel = nextOverride ? *nextOverride : *nextSceneModel;
         const bool modelChanged = first || &nextModel != &model();
         std::unique_ptr<WaveModelGpu> gpu = modelChanged ? nextModel.createGpu(sources) : nullptr;
-        const ShaderVariant nextVariant = shaderVariantOf(next, gpu ? gpu->shaderFile() : variant.oceanFile);
+        const ShaderVariant nextVariant = shaderVariantOf(next, gpu ? gpu->shaderFile() : variant.oceanFile, omittedWaterTerms);
         const bool programsChanged = first || nextVariant != variant;
         Programs nextPrograms;
         if (programsChanged)
@@ -366,6 +406,20 @@ Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size
     for (int y = 0; y < size.y; ++y)
         std::copy_n(&bottomUp[size_t(size.y - 1 - y) * row], row, &image.rgba[size_t(y) * row]);
     return image;
+}
+
+std::vector<glm::dmat4> Renderer::objectTransforms() const
+{
+    std::vector<glm::dmat4> out;
+    for (const glm::mat4& pose : impl_->poses)
+        out.push_back(glm::translate(glm::dmat4(1.0), impl_->posesOrigin) * glm::dmat4(pose));
+    return out;
+}
+
+DrawnSurface Renderer::drawnSurface(const Camera& camera, double time_s) const
+{
+    const Impl& s = *impl_;
+    return DrawnSurface(s.model(), s.gridShape, horizonFadeFor(s.scene.grid, s.gridShape), camera.position_m, time_s);
 }
 
 int Renderer::waterVertexCount() const { return (impl_->gridShape.cells + 1) * (impl_->gridShape.cells + 1); }

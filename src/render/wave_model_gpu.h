@@ -1,5 +1,5 @@
 // The GPU half of a wave model (swell/wave_model.h). The water shaders call
-// one function, oceanSurface(), defined by the model's GLSL file; the
+// oceanSurface() and oceanShading(), defined by the model's GLSL file; the
 // renderer builds the water programs with that file as SWELL_OCEAN_FILE
 // (shaders/ocean.glsl includes it), so no shader names a model.
 //
@@ -8,8 +8,9 @@
 // where restOffset_m is the rest point relative to the grid centre (m),
 // footprint_m and heightScale mean what swell::SurfaceFilter's fields mean,
 // and SurfacePoint (shaders/ocean.glsl) holds the displacement and the unit
-// normal. It reads only what prepareFrame() uploaded and bind() bound, at
-// binding points of its own from swell/shader_constants.h.
+// normal (with the partial derivatives it came from), and oceanShading() as
+// shaders/ocean.glsl describes. It reads only what prepareFrame() uploaded
+// and bind() bound, at binding points of its own from swell/shader_constants.h.
 #pragma once
 
 #include <glm/vec2.hpp>

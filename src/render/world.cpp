@@ -46,15 +46,20 @@ World buildWorld(const Scene& from)
 
 namespace {
 
-glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, glm::dvec3 origin, double time_s)
+glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, const DrawnSurface& drawn, glm::dvec3 origin,
+                      double time_s)
 {
     glm::dvec3 position = o.position_m;
     glm::dmat4 tilt(1.0);
     if (o.floats) {
-        // One inverse solve serves both the height and the tilt.
-        const glm::dvec2 rest = surface.restPointUnder({o.position_m.x, o.position_m.z}, time_s);
+        const glm::dvec2 at(o.position_m.x, o.position_m.z);
+        const glm::dvec2 rest = surface.restPointUnder(at, time_s);
         const SurfacePoint p = surface.surfaceAt(rest, time_s);
-        position.y += p.displacement_m.y;
+        // On the water the user sees: the grid's triangles, which leave out
+        // the waves their cells cannot carry (the exact surface only where
+        // no triangle is found).
+        const std::optional<DrawnPoint> water = drawn.at(at);
+        position.y += water ? water->position_m.y : p.displacement_m.y;
         // A body larger than the short waves does not follow every ripple:
         // tilt half way towards the surface normal.
         const glm::dvec3 up = glm::normalize(glm::mix(glm::dvec3(0, 1, 0), p.normal, 0.5));
@@ -78,8 +83,8 @@ SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel&
     return SceneBodies(scene, shapes, surface);
 }
 
-std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, SceneBodies& bodies, glm::dvec3 origin,
-                                   double time_s)
+std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
+                                   SceneBodies& bodies, glm::dvec3 origin, double time_s)
 {
     std::vector<glm::mat4> poses;
     poses.reserve(scene.objects.size());
@@ -88,7 +93,7 @@ std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface,
         if (const std::optional<glm::dmat4> body = bodies.poseAt(i, time_s))
             poses.emplace_back(glm::translate(glm::dmat4(1.0), -origin) * *body);
         else
-            poses.emplace_back(objectPose(scene.objects[i], surface, origin, time_s));
+            poses.emplace_back(objectPose(scene.objects[i], surface, drawn, origin, time_s));
     }
     return poses;
 }

@@ -8,6 +8,7 @@
 #include "render/mesh.h"
 #include "assets/mesh_data.h"
 #include "objects/scene_bodies.h"
+#include "swell/drawn_surface.h"
 #include "swell/scene.h"
 #include "swell/wave_model.h"
 
@@ -45,11 +46,14 @@ SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel&
 World buildWorld(const Scene& scene);
 
 // Each object's transform for this frame, relative to the render origin:
-// rigid bodies where `bodies` has stepped them to time_s; other floating
-// objects sit on the surface at their position and tilt with it. Computed
-// once a frame; every pass draws with the same poses.
-std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, SceneBodies& bodies, glm::dvec3 origin,
-                                   double time_s);
+// Each object's transform for this frame, relative to the render origin:
+// rigid bodies where `bodies` has stepped them to time_s (on the surface
+// their own filter gives, from the scene alone: swell/floating_body.h);
+// other floating objects sit on the water as drawn (`drawn`, the grid's
+// triangles) at their position, and tilt with the surface's normal.
+// Computed once a frame; every pass draws with the same poses.
+std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
+                                   SceneBodies& bodies, glm::dvec3 origin, double time_s);
 
 // Fills boxes holding all world geometry, relative to the render origin: a
 // reflected ray that misses them all can only meet the sky. Returns the

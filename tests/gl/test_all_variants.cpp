@@ -50,4 +50,28 @@ TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
     EXPECT_EQ(built, int(models.size()) * int(views.size()) * 2 * 2);
 }
 
+// The benchmark's variants: each water shading term left out alone, and all
+// of them, with every model and both reflection modes.
+TEST_F(AllVariants, EveryWaterTermCanBeLeftOut)
+{
+    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
+    const std::vector<std::string> models = oceanFiles(sources);
+    ASSERT_GE(models.size(), 2u);
+    int built = 0;
+    for (const std::string& model : models)
+        for (const ReflectionMode reflection : {ReflectionMode::FixedDistance, ReflectionMode::RayMarch})
+            for (unsigned term = 1; term <= SWELL_TERM_ALL; term = term == SWELL_TERM_FOG ? SWELL_TERM_ALL : term * 2) {
+                swell::detail::ShaderVariant variant{DebugView::Shaded, reflection, GridLayout::Geometric, model};
+                variant.omittedWaterTerms = term;
+                SCOPED_TRACE(model + ", reflection " + std::to_string(int(reflection)) + ", terms left out " +
+                             std::to_string(term));
+                swell::detail::Programs programs;
+                EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
+                EXPECT_TRUE(programs.water);
+                ++built;
+            }
+    // Six single terms and all of them together.
+    EXPECT_EQ(built, int(models.size()) * 2 * 7);
+}
+
 } // namespace

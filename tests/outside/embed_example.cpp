@@ -15,8 +15,10 @@ int main(int argc, char** argv)
     const double time_s = 3.0;
     const swell::Image image = renderer.renderImage(swell::cameraAt(scene.camera, time_s), time_s, {320, 180});
     swell::writePng(image, output);
-    // A buoyancy query: the exact surface height under a point, m.
-    std::printf("%s\nheight at (10, -20): %.3f m\n", output,
-                renderer.waveModel().heightAt({10.0, -20.0}, time_s));
+    // The height of the water drawn in that frame under a point, m: what
+    // to put a floating thing on. (waveModel().heightAt() gives the exact
+    // surface, with the waves the grid leaves out.)
+    const swell::DrawnSurface drawn = renderer.drawnSurface(swell::cameraAt(scene.camera, time_s), time_s);
+    std::printf("%s\nheight at (10, -20): %.3f m\n", output, drawn.at({10.0, -20.0}).value().position_m.y);
     return 0;
 }

@@ -38,6 +38,16 @@ public:
     {
         detail::GerstnerUniforms u{};
         const int count = int(order_.size());
+        // Mean square slope of each wave and every shorter one: what a pixel
+        // that resolves none of them must add as roughness. A wave of slope
+        // amplitude k*a has slope variance (k*a)^2/2.
+        double tailSlopeVariance = 0.0;
+        std::vector<double> tail(size_t(count), 0.0);
+        for (int i = count - 1; i >= 0; --i) {
+            const double ka = glm::length(wavenumberVector(*order_[size_t(i)])) * order_[size_t(i)]->amplitude_m;
+            tailSlopeVariance += 0.5 * ka * ka;
+            tail[size_t(i)] = tailSlopeVariance;
+        }
         for (int i = 0; i < count; ++i) {
             const Wave& w = *order_[size_t(i)];
             // Exactly the k*d the CPU wave functions use.
@@ -46,7 +56,7 @@ public:
             const glm::dvec2 d = kd / k;
             u.waveShape[i] = glm::vec4(glm::dvec4(d.x, d.y, k, w.amplitude_m));
             u.wavePhase[i] = glm::vec4(
-                glm::dvec4(w.steepness, wrappedPhase(w, waves_.depth_m, gridCenter_m, time_s), w.wavelength_m, 0.0));
+                glm::dvec4(w.steepness, wrappedPhase(w, waves_.depth_m, gridCenter_m, time_s), w.wavelength_m, tail[size_t(i)]));
         }
         u.waveCount = glm::ivec4(count, 0, 0, 0);
         glNamedBufferSubData(buffer_.id(), 0, sizeof(u), &u);

@@ -10,7 +10,8 @@ namespace swell::detail {
 
 struct alignas(16) GerstnerUniforms {
     glm::vec4 waveShape[SWELL_MAX_WAVES]; // xy: unit direction, z: k, rad/m, w: amplitude, m
-    glm::vec4 wavePhase[SWELL_MAX_WAVES]; // x: steepness Q, y: phase at the grid centre, rad, z: wavelength, m
+    glm::vec4 wavePhase[SWELL_MAX_WAVES]; // x: steepness Q, y: phase at the grid centre, rad, z: wavelength, m,
+                                          // w: mean square slope of this wave and every shorter one
     glm::ivec4 waveCount;                 // x: waves in use
 };
 

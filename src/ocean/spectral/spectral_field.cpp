@@ -1,6 +1,8 @@
 // The spectral ocean's seeded initial field and its evolution in time.
 #include "ocean/spectral/spectral_field.h"
 
+#include "ocean/short_waves.h"
+
 #include "swell/constants.h"
 #include "swell/waves.h"
 
@@ -71,26 +73,16 @@ double sampledSlopeVariance(const SeaSpectrum& sea, const std::array<Cascade, kC
     return sum;
 }
 
-double unresolvedSlopeVariance(const SeaSpectrum& sea, double shortestResolvedWavelength_m, double cutoffWavenumber_radpm)
+double unresolvedSlopeVariance(const SeaSpectrum& sea, double shortestResolvedWavelength_m)
 {
-    const double k1 = kTwoPi / shortestResolvedWavelength_m;
-    if (!(k1 < cutoffWavenumber_radpm))
-        return 0.0;
-    // Simpson's rule in u = ln k, where the integrand k^3*S*(d(omega)/dk)
-    // of the saturation range (~k^0) is smooth: 512 intervals over at most a
-    // few e-folds.
-    const double d = sea.depth_m();
-    auto integrand = [&](double u) {
-        const double k = std::exp(u);
-        return k * k * k * sea.frequencyDensity(angularFrequency(k, d)) * groupVelocity(k, d);
-    };
-    const double a = std::log(k1), b = std::log(cutoffWavenumber_radpm);
-    constexpr int n = 512;
-    const double h = (b - a) / n;
-    double sum = integrand(a) + integrand(b);
-    for (int i = 1; i < n; ++i)
-        sum += (i % 2 == 1 ? 4.0 : 2.0) * integrand(a + i * h);
-    return sum * h / 3.0;
+    const SeaComponent& windSea = sea.components().front();
+    const double peak_radps = windSea.spectrum.peakFrequency_radps;
+    const double inverseWaveAge = windSea.spreading.windOverPeakSpeed;
+    const double windSpeed10_mps = inverseWaveAge * kGravity / peak_radps;
+    const detail::ShortWaveSpectrum shortWaves(windSpeed10_mps, inverseWaveAge);
+    // Up to 10 k_m (1.7 mm), where the short-wave part has fallen by e^-20.
+    const double end_radpm = 10.0 * detail::ShortWaveSpectrum::minimumPhaseSpeedWavenumber_radpm();
+    return shortWaves.slopeVariance(kTwoPi / shortestResolvedWavelength_m, end_radpm);
 }
 
 std::array<Cascade, kCascades> cascadeLayout(double peakWavelength_m)
@@ -152,6 +144,7 @@ SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::
     }
     f.verticalReach_m = sumAbs;
     f.horizontalReach_m = choppiness * sumAbs;
+    f.unresolvedSlopeVariance = unresolvedSlopeVariance(sea, f.cascades.back().shortestWavelength_m());
     return f;
 }
 

@@ -73,6 +73,9 @@ struct SpectralField {
     // or down) and lambda times it (sideways), m. Rigorous: no sum of these
     // components can exceed them.
     double verticalReach_m = 0.0, horizontalReach_m = 0.0;
+    // Mean square slope of the waves shorter than the last cascade holds
+    // (unresolvedSlopeVariance()), dimensionless: shading adds it as roughness.
+    double unresolvedSlopeVariance = 0.0;
 };
 
 // Draws the field of a sea. The same spectrum, choppiness and seed give
@@ -102,20 +105,12 @@ double sampledHeightVariance_m2(const SeaSpectrum& sea, const std::array<Cascade
 // that of dy/dz).
 double sampledSlopeVariance(const SeaSpectrum& sea, const std::array<Cascade, kCascades>& cascades);
 
-// The end of the gravity range, rad/m: the wavenumber of the slowest wave on
-// clean water, k_m = sqrt(rho*g/sigma) = 363 rad/m (1.73 cm; rho = 1025
-// kg/m^3, sigma = 0.073 N/m; Kinsman 1965, "Wind Waves", sec. 3.3; Elfouhaily
-// et al. 1997 put the gravity-capillary peak at 370 rad/m). Beyond it surface
-// tension, not gravity, sets the waves, and a gravity-wave spectrum such as
-// JONSWAP says nothing about them.
-inline constexpr double kGravityCapillaryWavenumber_radpm = 363.0;
-
-// The slope variance the spectrum holds beyond the field's shortest wave,
-// dimensionless: the integral of k^2*Psi over the annulus shortestResolved
-// < |k| < cutoff, i.e. of k^2*S(omega(k))*d(omega)/dk over k (the spreading
-// integrates to 1 over directions). 0 when the field already reaches the
-// cutoff. What shading must add for the slopes the geometry lacks.
-double unresolvedSlopeVariance(const SeaSpectrum& sea, double shortestResolvedWavelength_m,
-                               double cutoffWavenumber_radpm = kGravityCapillaryWavenumber_radpm);
+// The mean square slope of the waves shorter than the field's shortest,
+// dimensionless: that of Elfouhaily et al. 1997's spectrum beyond
+// k1 = 2*pi/shortestResolvedWavelength_m (ocean/short_waves.h), for the wind
+// sea's U10 and inverse wave age. JONSWAP's gravity range holds far too little
+// there (Cox & Munk's slopes grow with the wind through the capillary-gravity
+// waves). What shading must add for the slopes the geometry lacks.
+double unresolvedSlopeVariance(const SeaSpectrum& sea, double shortestResolvedWavelength_m);
 
 } // namespace swell::spectral

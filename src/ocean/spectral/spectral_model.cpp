@@ -1,7 +1,8 @@
 // SpectralModel: the spectral field behind swell::WaveModel, with its CPU
 // twin for queries and its GPU half: each frame at a new time, compute
 // shaders evolve the spectra (shaders/ocean/spectral_evolve.comp), transform
-// rows then columns (spectral_fft.comp), and mipmap the slopes.
+// rows then columns (spectral_fft.comp), and mipmap the slopes and their
+// second moments (spectral_moments.comp).
 #include "swell/spectral_model.h"
 
 #include "ocean/spectral/spectral_cpu.h"
@@ -33,6 +34,7 @@ struct alignas(16) SpectralUniforms {
     CascadeUniform cascades[kCascades];
     glm::vec2 windDirection;
     float foamStreak;
+    float unresolvedSlopeVariance; // of the waves shorter than the last cascade's
 };
 
 // Foam needs the history of the breaking: a frame that follows the last by
@@ -58,6 +60,7 @@ public:
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
         foamStep_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_foam.comp"}});
+        moments_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_moments.comp"}});
         timeLocation_ = glGetUniformLocation(evolve_.id(), "time_s");
         choppinessLocation_ = glGetUniformLocation(evolve_.id(), "choppiness");
         patchLocation_ = glGetUniformLocation(evolve_.id(), "patchSize_m");
@@ -78,15 +81,18 @@ public:
         const int levels = SWELL_FFT_LOG2_SIZE + 1;
         derivatives_ = array(GL_RGBA32F, levels);
         foam_ = array(GL_R16F, levels);
+        slopeMoments_ = array(GL_RGBA32F, levels);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         const float zero = 0.0f;
         glClearTexImage(foam_.id(), 0, GL_RED, GL_FLOAT, &zero);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        for (const gl::Texture* t : {&displacement_, &derivatives_, &foam_}) {
+        for (const gl::Texture* t : {&derivatives_, &slopeMoments_}) {
+            glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+            glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        }
+        for (const gl::Texture* t : {&displacement_, &derivatives_, &foam_, &slopeMoments_}) {
             glTextureParameteri(t->id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
             glTextureParameteri(t->id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
         }
@@ -129,6 +135,7 @@ public:
         const double u10 = settings_.wind.windSpeed_mps;
         const double streak = std::clamp((u10 - 10.8) / (17.2 - 10.8), 0.0, 1.0);
         u.foamStreak = float(1.0 + 3.0 * streak * streak * (3.0 - 2.0 * streak));
+        u.unresolvedSlopeVariance = float(field_->unresolvedSlopeVariance);
         glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
     }
 
@@ -138,6 +145,7 @@ public:
         glBindTextureUnit(SWELL_UNIT_OCEAN0, displacement_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN1, derivatives_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN2, foam_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN3, slopeMoments_.id());
     }
 
 private:
@@ -159,6 +167,20 @@ private:
         const double dt = continues ? time_s - time_s_ : kWarmUpStep_s;
         transform(time_s);
         stepFoam(foam ? float(std::exp(-dt / lifetime)) : 0.0f);
+        updateSlopeMoments();
+    }
+
+    void updateSlopeMoments()
+    {
+        glUseProgram(moments_.id());
+        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(5, slopeMoments_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glDispatchCompute(kSize / 16, kSize / 16, kCascades);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glGenerateTextureMipmap(slopeMoments_.id());
+        for (const GLuint unit : {3u, 5u})
+            glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glUseProgram(0);
     }
 
     void stepFoam(float decay)
@@ -213,11 +235,11 @@ private:
     std::shared_ptr<const SpectralField> field_;
     SpectralSettings settings_;
     std::array<float, kCascades> foldThresholds_;
-    gl::Program evolve_, fftRows_, fftColumns_, foamStep_;
+    gl::Program evolve_, fftRows_, fftColumns_, foamStep_, moments_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
     GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
-    gl::Texture initial_, omega_, displacement_, derivatives_, foam_;
+    gl::Texture initial_, omega_, displacement_, derivatives_, foam_, slopeMoments_;
     gl::Buffer uniforms_;
     bool transformed_ = false;
     double time_s_ = 0.0;

@@ -1,0 +1,60 @@
+// The water surface exactly as the renderer draws it for one camera and time:
+// the grid's vertices, each displaced by the waves its cell can carry and
+// faded toward the horizon, joined by flat triangles. The exact surface
+// (WaveModel::surfaceAt) differs from it by the waves the grid filters out
+// and by the triangles' chords: centimetres near the camera, decimetres far
+// away. Query this one to put things on the water the user sees.
+#pragma once
+
+#include "swell/export.h"
+#include "swell/grid.h"
+#include "swell/wave_model.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <optional>
+
+namespace swell {
+
+// Where a vertical line through a world point meets the drawn water.
+struct SWELL_API DrawnPoint {
+    glm::dvec3 position_m{0.0}; // absolute world position on the triangle, m
+    glm::dvec3 normal{0.0, 1.0, 0.0}; // the triangle's unit normal, pointing up
+    int cellI = 0, cellJ = 0;   // the grid cell whose triangle it is
+};
+
+class SWELL_API DrawnSurface {
+public:
+    // The surface `model` draws on the grid `shape` for a camera at eye_m
+    // (absolute world, m) at time_s. Keeps a reference to `model`: it must
+    // outlive this object.
+    DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
+                 double time_s);
+
+    // The drawn water under world point (x, z). Empty only where no triangle
+    // covers the point, which happens nowhere on the unbounded grid except
+    // under extreme horizontal displacement beyond the search.
+    std::optional<DrawnPoint> at(glm::dvec2 worldPoint_m) const;
+
+    // Grid vertex (i, j) (0..cells each) as the vertex shader places it:
+    // absolute world position, m.
+    glm::dvec3 vertex(int i, int j) const;
+
+    const GridPlacement& placement() const { return placement_; }
+
+private:
+    // The cell whose rest-space square holds rest offset r (from the grid
+    // centre), before the waves move it.
+    glm::ivec2 restCellOf(glm::dvec2 restOffset_m) const;
+    std::optional<DrawnPoint> inCell(int i, int j, glm::dvec2 worldPoint_m) const;
+
+    const WaveModel& model_;
+    GridShape shape_;
+    HorizonFade fade_;
+    GridPlacement placement_;
+    glm::dvec3 eye_m_;
+    double time_s_;
+};
+
+} // namespace swell

@@ -1,0 +1,111 @@
+// The view from under the water: which pixels look out from below the
+// surface, and the water's absorption and in-scattering along a path through
+// it. Used by mesh.frag, sky.frag and water.frag (through underwater_surface.glsl).
+//
+// Above or below, per pixel: the renderer draws the water surface alone into
+// the waterline mask before the main pass (waterline.cpp), each pixel keeping
+// the side from which its nearest water fragment beyond the near plane is
+// seen. Seen from below means the near plane there is under the water. A
+// camera in the waves at the waterline so gets a split that follows the
+// surface exactly, pixel by pixel, instead of one switch that flips for the
+// whole frame. Far from the surface the mask is cleared to the eye's side.
+#ifndef SWELL_UNDERWATER_GLSL
+#define SWELL_UNDERWATER_GLSL
+#include "frame.glsl"
+
+layout(binding = SWELL_UNIT_WATERLINE) uniform sampler2D waterlineMask;
+
+// The unit direction this pixel looks along, in this pass's camera.
+vec3 pixelViewDirection()
+{
+    vec2 ndc = gl_FragCoord.xy * viewportInvSize * 2.0 - 1.0;
+    vec4 far = passInvViewProj * vec4(ndc, 1.0, 1.0);
+    vec4 near = passInvViewProj * vec4(ndc, -1.0, 1.0);
+    return normalize(far.xyz / far.w - near.xyz / near.w);
+}
+
+// Whether this pixel's ray starts (at the near plane) below the water.
+// Mask values: SWELL_WATERLINE_ABOVE or _BELOW where the ray meets the
+// surface; SWELL_WATERLINE_NO_HIT where it never does, so its whole length
+// lies in one medium: under the water when it points down (a downward ray
+// from the air would meet the water). Passes other than the main one bind a
+// 1x1 mask cleared to "above", so the coordinate is clamped into the texture.
+bool pixelUnderwater()
+{
+    ivec2 texel = min(ivec2(gl_FragCoord.xy), textureSize(waterlineMask, 0) - 1);
+    float m = texelFetch(waterlineMask, texel, 0).r;
+    if (m > 0.75)
+        return true;
+    if (m > 0.25)
+        return false;
+    return pixelViewDirection().y < 0.0;
+}
+
+// Whether a water fragment at p is seen from below (for the mask,
+// waterline.frag): the eye lies under the plane of the facet drawn there. The facet's normal comes from the
+// position's screen derivatives (what the rasteriser drew, not the shading
+// normal), turned to point up; call in uniform control flow.
+bool facetSeenFromBelow(vec3 p)
+{
+    vec3 facet = cross(dFdx(p), dFdy(p));
+    facet *= facet.y < 0.0 ? -1.0 : 1.0;
+    return dot(facet, eyePosition - p) < 0.0;
+}
+
+// Light the water itself scatters towards the eye along a path of length
+// path_m starting depth_m below the surface, in direction d.
+//
+// The model refraction.glsl uses seen from above: Beer-Lambert attenuation
+// exp(-a s) per channel with the scene's absorption a (water.absorption_per_m),
+// and in-scattered light that tends to the water's own colour W
+// (water.deep_color) over a long path. Below the surface the light that is
+// scattered is itself attenuated with depth z, as exp(-a z) (daylight decays
+// with depth at the diffuse attenuation coefficient K_d ~ (a + b_b) / mu_d,
+// Gordon 1989, which absorption dominates in clear water: K_d = a here), and the
+// path's depth changes as z(s) = z0 - s*d.y. Single scattering integrates
+//
+//     L(s) = W a ∫0^s exp(-a z(t)) exp(-a t) dt
+//          = W exp(-a z0) (1 - exp(-a (1 - d.y) s)) / (1 - d.y)
+//
+// which is W for a long level path at the surface (the colour seen from
+// above), half of it looking straight down, and W a z0 exp(-a z0) looking
+// straight up to the surface (d.y -> 1, the limit taken below).
+vec3 underwaterInscatter(vec3 d, float depth_m, float path_m)
+{
+    vec3 a = waterAbsorption;
+    float z0 = max(depth_m, 0.0);
+    float up = 1.0 - clamp(d.y, -1.0, 1.0);
+    vec3 light = waterDeep * exp(-a * z0);
+    if (up < 1e-4)
+        return light * a * path_m;
+    return light * (1.0 - exp(-a * up * path_m)) / up;
+}
+
+// Colour `seen` at the end of a path of path_m through the water from the eye
+// (depth_m below the surface), looking along d: attenuated and filled in by
+// the water's in-scattering. A path with no end (the depths) gives the water alone.
+vec3 underwaterFog(vec3 seen, vec3 d, float depth_m, float path_m)
+{
+    return seen * exp(-waterAbsorption * path_m) + underwaterInscatter(d, depth_m, path_m);
+}
+
+// The background below the surface: the water's depths, no end to the path.
+// Only downward and level rays have none; an upward one (a ray between the
+// water's triangles, or reflected up by a steep facet) is given a level
+// one's colour rather than a path through the surface.
+vec3 underwaterBackground(vec3 d, float depth_m)
+{
+    return underwaterInscatter(vec3(d.x, min(d.y, 0.0), d.z), depth_m, 1e6);
+}
+
+// World geometry at p seen from under the water: the light that reaches p is
+// attenuated by the water above it (exp(-a depth), as for the in-scattered
+// light), then the path from the eye to p fogs it.
+vec3 underwaterGeometry(vec3 lit, vec3 p)
+{
+    vec3 toPoint = p - eyePosition;
+    float path_m = length(toPoint);
+    vec3 shaded = lit * exp(-waterAbsorption * max(-p.y, 0.0));
+    return underwaterFog(shaded, toPoint / max(path_m, 1e-6), -eyePosition.y, path_m);
+}
+#endif

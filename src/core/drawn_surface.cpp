@@ -1,0 +1,121 @@
+#include "swell/drawn_surface.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swell {
+
+namespace {
+
+// Rings of cells searched around the first guess: the drawn surface's
+// vertices move sideways by up to the model's horizontal reach, which near
+// the camera can span several of its small cells.
+constexpr int kMaxSearch = 16;
+
+// Barycentric weights of p in the triangle (a, b, c) of the x,z plane;
+// empty when the triangle is degenerate.
+std::optional<glm::dvec3> barycentric(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c)
+{
+    const glm::dvec2 ab = b - a, ac = c - a, ap = p - a;
+    const double det = ab.x * ac.y - ab.y * ac.x;
+    if (std::abs(det) < 1e-18)
+        return std::nullopt;
+    const double v = (ap.x * ac.y - ap.y * ac.x) / det;
+    const double w = (ab.x * ap.y - ab.y * ap.x) / det;
+    return glm::dvec3(1.0 - v - w, v, w);
+}
+
+glm::dvec2 xz(glm::dvec3 p) { return {p.x, p.z}; }
+
+} // namespace
+
+DrawnSurface::DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
+                           double time_s)
+    : model_(model), shape_(shape), fade_(fade), placement_(placeGrid(shape, eye_m)), eye_m_(eye_m), time_s_(time_s)
+{
+}
+
+glm::dvec3 DrawnSurface::vertex(int i, int j) const
+{
+    // As wave_capture's CPU twin of water.vert: the rest point, the waves its
+    // cell size resolves, the horizon fade at its distance from the eye.
+    const GridPoint point = gridPoint(shape_, placement_, i, j);
+    const glm::dvec2 rest = placement_.center_m + point.offset_m;
+    const double distance_m = glm::length(rest - glm::dvec2(eye_m_.x, eye_m_.z));
+    const glm::dvec3 d =
+        model_.displacementAt(rest, time_s_, SurfaceFilter{point.cellSize_m, horizonFadeAt(fade_, distance_m)});
+    return glm::dvec3(rest.x, 0.0, rest.y) + d;
+}
+
+glm::ivec2 DrawnSurface::restCellOf(glm::dvec2 r) const
+{
+    const int half = shape_.cells / 2;
+    glm::dvec2 line; // continuous grid line index, relative to the centre
+    if (shape_.layout == GridLayout::Paper) {
+        // s = R u |u|  =>  u = sign(s) sqrt(|s| / R).
+        auto inverse = [&](double s) { return std::copysign(std::sqrt(std::abs(s) / shape_.radius_m), s) * half; };
+        line = {inverse(r.x), inverse(r.y)};
+    } else {
+        // Vertex (i, j) sits at d * f(ring) / ring with f(ring) the ring's
+        // Chebyshev radius, innerScale * expm1(growth * ring / half).
+        const glm::dvec2 q = r / placement_.scale;
+        const double chebyshev = std::max(std::abs(q.x), std::abs(q.y));
+        if (chebyshev <= 0.0)
+            return {half, half};
+        const double ring = half * std::log1p(chebyshev / shape_.innerScale_m) / shape_.growth;
+        line = q * (ring / chebyshev);
+    }
+    const glm::dvec2 cell = glm::floor(line) + double(half);
+    return glm::clamp(glm::ivec2(cell), glm::ivec2(0), glm::ivec2(shape_.cells - 1));
+}
+
+std::optional<DrawnPoint> DrawnSurface::inCell(int i, int j, glm::dvec2 p) const
+{
+    // The cell's two triangles, split along the diagonal facing the centre,
+    // as detail::tileGrid splits them.
+    const int half = shape_.cells / 2;
+    const glm::dvec3 a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i, j + 1), d = vertex(i + 1, j + 1);
+    const bool antiDiagonal = (i < half) != (j < half);
+    const glm::dvec3 triangles[2][3] = {{a, c, antiDiagonal ? b : d}, {antiDiagonal ? b : a, antiDiagonal ? c : d, antiDiagonal ? d : b}};
+    for (const auto& t : triangles) {
+        const std::optional<glm::dvec3> w = barycentric(p, xz(t[0]), xz(t[1]), xz(t[2]));
+        constexpr double kEdge = -1e-9; // a point on a shared edge belongs to either triangle
+        if (!w || w->x < kEdge || w->y < kEdge || w->z < kEdge)
+            continue;
+        DrawnPoint out;
+        out.position_m = glm::dvec3(p.x, t[0].y * w->x + t[1].y * w->y + t[2].y * w->z, p.y);
+        const glm::dvec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
+        out.normal = glm::normalize(n.y < 0.0 ? -n : n);
+        out.cellI = i;
+        out.cellJ = j;
+        return out;
+    }
+    return std::nullopt;
+}
+
+std::optional<DrawnPoint> DrawnSurface::at(glm::dvec2 p) const
+{
+    // Start from the cell over the rest point the exact surface puts under p
+    // (the drawn surface's differs from it by the filtered waves), then look
+    // in rings of cells around it.
+    const glm::dvec2 rest = model_.restPointUnder(p, time_s_);
+    const glm::ivec2 start = restCellOf(rest - placement_.center_m);
+    for (int radius = 0; radius <= kMaxSearch; ++radius) {
+        for (int dj = -radius; dj <= radius; ++dj)
+            for (int di = -radius; di <= radius; ++di) {
+                if (std::max(std::abs(di), std::abs(dj)) != radius)
+                    continue;
+                const glm::ivec2 cell = start + glm::ivec2(di, dj);
+                if (glm::any(glm::lessThan(cell, glm::ivec2(0))) || glm::any(glm::greaterThanEqual(cell, glm::ivec2(shape_.cells))))
+                    continue;
+                if (std::optional<DrawnPoint> hit = inCell(cell.x, cell.y, p))
+                    return hit;
+            }
+    }
+    return std::nullopt;
+}
+
+} // namespace swell

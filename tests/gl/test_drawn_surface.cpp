@@ -1,0 +1,179 @@
+// swell::DrawnSurface is the water the GPU draws: at the centroid of each
+// triangle a frame draws, its height equals the captured triangle's (the mean
+// of its three vertices' heights) within 1 mm, for the Gerstner and the
+// spectral model, near the origin and far from it, at t = 0, 10^3 and 10^6 s.
+#include "support/gl_test.h"
+#include "wave_capture.h"
+
+#include "swell/drawn_surface.h"
+#include "swell/gl/handle.h"
+#include "swell/renderer.h"
+#include "swell/scene.h"
+
+#include <epoxy/gl.h>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+class DrawnSurfaceTest : public swell::test::GlTest {};
+
+// Float positions carry ~1e-7 of up to ~100 lattice steps: far below this
+// (as in test_wave_agreement.cpp).
+constexpr double kTieMargin = 1e-4;
+
+struct Result {
+    int compared = 0, missed = 0;
+    double worst_m = 0.0;
+};
+
+Result compareAtCentroids(const swell::Scene& scene, glm::dvec3 eye_m, double time_s)
+{
+    swell::Renderer renderer(scene);
+    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    camera.position_m = eye_m;
+    const glm::ivec2 size(640, 360);
+    const int count = renderer.waterVertexCount();
+    swell::gl::Buffer buffer = swell::gl::Buffer::create();
+    glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
+    std::vector<std::uint32_t> triangles;
+    renderer.captureWaterVertices(camera, time_s, buffer.id(), size, &triangles);
+    std::vector<float> data(size_t(count) * 8);
+    glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
+    // Which vertices the CPU twin flags as near a snapping tie (either lattice
+    // point may be drawn) or on the skirt (float spacing ~1 mm there).
+    const std::vector<swell::test::WaterVertex> cpu = swell::test::computeCpu(renderer, camera, time_s);
+    const int last = int(std::lround(std::sqrt(double(count)))) - 1;
+    auto usable = [&](std::uint32_t v) {
+        const swell::test::WaterVertex& w = cpu[v];
+        return w.snapMargin >= kTieMargin && w.i > 0 && w.j > 0 && w.i < last && w.j < last;
+    };
+
+    const swell::DrawnSurface drawn = renderer.drawnSurface(camera, time_s);
+    const glm::dvec3 origin(eye_m.x, 0.0, eye_m.z);
+    Result r;
+    // Every 7th drawn triangle: thousands, spread over the whole view.
+    for (size_t t = 0; t + 2 < triangles.size(); t += 3 * 7) {
+        if (!usable(triangles[t]) || !usable(triangles[t + 1]) || !usable(triangles[t + 2]))
+            continue;
+        glm::dvec3 centroid(0.0);
+        for (int k = 0; k < 3; ++k) {
+            const float* v = &data[size_t(triangles[t + size_t(k)]) * 8 + 2];
+            centroid += origin + glm::dvec3(v[0], v[1], v[2]);
+        }
+        centroid /= 3.0;
+        const std::optional<swell::DrawnPoint> hit = drawn.at({centroid.x, centroid.z});
+        if (!hit) {
+            ++r.missed;
+            continue;
+        }
+        r.worst_m = std::max(r.worst_m, std::abs(hit->position_m.y - centroid.y));
+        ++r.compared;
+    }
+    return r;
+}
+
+void expectDrawnSurface(const swell::Scene& scene, glm::dvec3 eye_m, std::vector<double> times = {0.0, 1.0e3, 1.0e6})
+{
+    for (const double t : times) {
+        SCOPED_TRACE("t = " + std::to_string(t));
+        const Result r = compareAtCentroids(scene, eye_m, t);
+        EXPECT_GT(r.compared, 1000);
+        EXPECT_EQ(r.missed, 0);
+        // The bound; the vertices themselves agree to well under it
+        // (WaveAgreement.*), and interpolating adds nothing.
+        EXPECT_LT(r.worst_m, 1e-3);
+    }
+}
+
+swell::Scene plainScene()
+{
+    swell::Scene scene = swell::defaultScene();
+    scene.objects.clear();
+    scene.showTerrain = false;
+    return scene;
+}
+
+TEST_F(DrawnSurfaceTest, GerstnerEqualsTheDrawnTriangles)
+{
+    expectDrawnSurface(plainScene(), {3.7, 6.0, -12.2});
+}
+
+TEST_F(DrawnSurfaceTest, SpectralEqualsTheDrawnTriangles)
+{
+    swell::Scene scene = plainScene();
+    scene.waves.model = swell::WaveModelKind::Spectral;
+    scene.waves.wind->windSpeed_mps = 14.0;
+    expectDrawnSurface(scene, {3.7, 6.0, -12.2});
+}
+
+TEST_F(DrawnSurfaceTest, SpectralFarFromTheOriginAndHigh)
+{
+    swell::Scene scene = plainScene();
+    scene.waves.model = swell::WaveModelKind::Spectral;
+    scene.waves.wind->windSpeed_mps = 14.0;
+    expectDrawnSurface(scene, {1.0e5 + 0.37, 45.0, -1.0e5 - 0.81}, {1.0e6});
+}
+
+// The GPU's drawn water under world point p: the captured triangle whose
+// x,z projection holds it, interpolated. Empty when no drawn triangle does.
+std::optional<double> gpuWaterUnder(glm::dvec2 p, const std::vector<float>& data,
+                                    const std::vector<std::uint32_t>& triangles, glm::dvec3 origin)
+{
+    for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        glm::dvec3 v[3];
+        for (int k = 0; k < 3; ++k) {
+            const float* f = &data[size_t(triangles[t + size_t(k)]) * 8 + 2];
+            v[k] = origin + glm::dvec3(f[0], f[1], f[2]);
+        }
+        const glm::dvec2 a(v[0].x, v[0].z), b(v[1].x, v[1].z), c(v[2].x, v[2].z);
+        const glm::dvec2 ab = b - a, ac = c - a, ap = p - a;
+        const double det = ab.x * ac.y - ab.y * ac.x;
+        if (std::abs(det) < 1e-12)
+            continue;
+        const double wb = (ap.x * ac.y - ap.y * ac.x) / det, wc = (ab.x * ap.y - ab.y * ap.x) / det;
+        if (wb >= 0.0 && wc >= 0.0 && wb + wc <= 1.0)
+            return v[0].y * (1.0 - wb - wc) + v[1].y * wb + v[2].y * wc;
+    }
+    return std::nullopt;
+}
+
+// The default scene's floating buoy sits on the water the GPU draws, within
+// 1 cm (the bound), frame after frame. Placed on the exact surface
+// instead, it is off by 6 cm in one of these frames.
+TEST_F(DrawnSurfaceTest, FloatingObjectsSitOnTheDrawnWater)
+{
+    const swell::Scene scene = swell::defaultScene();
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    const int count = renderer.waterVertexCount();
+    swell::gl::Buffer buffer = swell::gl::Buffer::create();
+    glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
+    std::vector<float> data(size_t(count) * 8);
+    std::vector<std::uint32_t> triangles;
+    const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
+    int floating = 0;
+    for (const double t : {0.0, 0.7, 3.1, 12.9, 400.0}) {
+        SCOPED_TRACE("t = " + std::to_string(t));
+        renderer.captureWaterVertices(camera, t, buffer.id(), {1280, 720}, &triangles);
+        glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
+        const std::vector<glm::dmat4> transforms = renderer.objectTransforms();
+        ASSERT_EQ(transforms.size(), scene.objects.size());
+        for (size_t o = 0; o < scene.objects.size(); ++o) {
+            if (!scene.objects[o].floats)
+                continue;
+            const glm::dvec3 at(transforms[o][3]);
+            const std::optional<double> water = gpuWaterUnder({at.x, at.z}, data, triangles, origin);
+            ASSERT_TRUE(water) << "object " << o << " is not over drawn water";
+            EXPECT_NEAR(at.y - scene.objects[o].position_m.y, *water, 0.01) << "object " << o;
+            ++floating;
+        }
+    }
+    EXPECT_GE(floating, 5);
+}
+
+} // namespace
