@@ -7,6 +7,7 @@
 #include "refraction.glsl"
 #include "ocean.glsl"
 #include "underwater_surface.glsl"
+#include "subsurface.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -86,6 +87,12 @@ void main()
     // normalisation keeps its energy.
     float spreadShininess = shininess / (1.0 + 2.0 * shininess * slopeVariance);
     color += sunColor * sunIntensity * specularStrength * phongSpecular(n, v, spreadShininess, fresnelF0) * step(0.0, sunDirection.y);
+#endif
+
+#if SWELL_HAS_TERM(SWELL_TERM_SUBSURFACE)
+    // Thin, backlit crests glow blue-green (subsurface.glsl); the light
+    // leaves through the surface, so what Fresnel reflects does not.
+    color += (1.0 - fresnel) * crestGlow(vPosition.y, v);
 #endif
 
 #if SWELL_HAS_TERM(SWELL_TERM_FOAM)

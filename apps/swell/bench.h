@@ -118,11 +118,14 @@ OffscreenTarget makeOffscreenTarget(glm::ivec2 size, GLenum colorFormat);
 // The floor: for each pass of the real frame, a target of the same size
 // cleared and covered by one full-screen triangle with a constant colour;
 // "water" is one more such triangle inside "main". What a frame costs at
-// the least on this machine at this size, shading aside.
+// the least on this machine at this size, shading aside. When the real
+// frame has a "present" step (anti-aliasing, a render scale), the floor's is
+// a plain copy of its main target into the output.
 class FloorFrame {
 public:
-    // Sizes: the reflection and refraction targets, and the output.
-    FloorFrame(glm::ivec2 passSize, glm::ivec2 outputSize);
+    // Sizes: the reflection and refraction targets, the main pass (the
+    // output's at render scale 1), and the output when `present`.
+    FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outputSize, bool present);
     ~FloorFrame();
     FloorFrame(const FloorFrame&) = delete;
     FloorFrame& operator=(const FloorFrame&) = delete;
@@ -201,6 +204,7 @@ struct Results {
     Machine machine;
     glm::ivec2 size{0}, passSize{0};
     std::string surface; // the wave model's summary()
+    std::string output;  // how frames reach the output: "antialiasing fxaa, render scale 1"
     int gridCells = 0, frames = 0, warmup = 0;
     double frameStep_s = 0.0;
     bool pipelineStatistics = false, gpuTimers = false;

@@ -9,6 +9,7 @@
 
 #include "swell/error.h"
 #include "swell/gl/context.h"
+#include "swell/parameters.h"
 #include "swell/renderer.h"
 #include "swell/scene.h"
 #include "swell/shader_constants.h"
@@ -123,18 +124,25 @@ int runBench(const BenchOptions& options)
             throw InputError({"--json"}, fmt::format("cannot write '{}': '{}' is not a writable folder",
                                                      options.jsonPath, folder.string()));
     }
-    const Scene scene = loadSceneOrDefault(options.scenePath);
+    Scene scene = loadSceneOrDefault(options.scenePath);
+    options.outputSettings.applyTo(scene);
     // No debug context: its checks would be part of what is measured. GL
     // errors are polled after each stage instead.
     gl::HeadlessContext context(false);
     Renderer renderer(scene);
+    renderer.setRenderScale(options.outputSettings.renderScale);
     checkGl("creating the renderer");
 
     Results r;
     r.machine = describeMachine();
     r.size = {options.width, options.height};
-    r.passSize = glm::max(glm::ivec2(glm::dvec2(r.size) * scene.reflection.resolutionScale), glm::ivec2(1));
+    // The floor draws at the size the renderer's passes do.
+    const glm::ivec2 drawSize = scaledFrameSize(r.size, options.outputSettings.renderScale);
+    r.passSize = glm::max(glm::ivec2(glm::dvec2(drawSize) * scene.reflection.resolutionScale), glm::ivec2(1));
     r.surface = renderer.waveModel().summary();
+    r.output = fmt::format("antialiasing {}, render scale {}{}",
+                           findParameter("antialiasing")->choices[size_t(scene.antialiasing)],
+                           options.outputSettings.renderScale, options.still ? ", the scene's camera (--still)" : "");
     r.gridCells = int(std::lround(std::sqrt(double(renderer.waterVertexCount())))) - 1;
     r.frames = options.frames;
     r.warmup = options.warmup;
@@ -156,6 +164,7 @@ int runBench(const BenchOptions& options)
         RendererOptions termOptions;
         termOptions.omittedWaterTerms = t.omitted;
         termRenderers.push_back(std::make_unique<Renderer>(scene, termOptions));
+        termRenderers.back()->setRenderScale(options.outputSettings.renderScale);
         termRenderers.back()->setPassObserver(&recorder);
     }
     checkGl("creating the water term variants");
@@ -168,7 +177,8 @@ int runBench(const BenchOptions& options)
         const bool measured = i >= options.warmup;
         const int k = i - options.warmup;
         const double t = double(i) * kFrameStep_s;
-        const Camera camera = pathCamera(scene.camera, measured ? double(k) / double(options.frames) : 0.0);
+        const Camera camera = options.still ? cameraAt(scene.camera, t)
+                                            : pathCamera(scene.camera, measured ? double(k) / double(options.frames) : 0.0);
         FrameSample frame = recorder.recordFrame([&] { renderer.render(camera, t, r.size, output.framebuffer.id()); });
         checkGl("rendering a frame");
         if (measured) {
@@ -192,7 +202,8 @@ int runBench(const BenchOptions& options)
     renderer.setPassObserver(nullptr);
 
     // The floor: the same passes at the same sizes with trivial shading.
-    FloorFrame floorFrame(r.passSize, r.size);
+    const bool presents = scene.antialiasing != Antialiasing::Off || drawSize != r.size;
+    FloorFrame floorFrame(r.passSize, drawSize, r.size, presents);
     for (int i = 0; i < floorWarmup + options.frames; ++i) {
         FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder, i % 2 == 0); });
         checkGl("rendering the floor");

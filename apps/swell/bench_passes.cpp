@@ -222,7 +222,8 @@ OffscreenTarget makeOffscreenTarget(glm::ivec2 size, GLenum colorFormat)
 struct FloorFrame::State {
     gl::Program program;
     gl::VertexArray vao;
-    OffscreenTarget reflection, refraction, waterline, output;
+    OffscreenTarget reflection, refraction, waterline, output, presented;
+    bool present = false;
 
     // The state the renderer's passes set, then a clear.
     void bind(const OffscreenTarget& t) const
@@ -250,15 +251,19 @@ struct FloorFrame::State {
     }
 };
 
-FloorFrame::FloorFrame(glm::ivec2 passSize, glm::ivec2 outputSize) : state_(std::make_unique<State>())
+FloorFrame::FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outputSize, bool present)
+    : state_(std::make_unique<State>())
 {
     const gl::ShaderSources sources = gl::ShaderSources::fromMap({{"floor.vert", kFloorVertex}, {"floor.frag", kFloorFragment}});
     state_->program = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "floor.vert"}, {GL_FRAGMENT_SHADER, "floor.frag"}});
     state_->vao = gl::VertexArray::create();
     state_->reflection = makeOffscreenTarget(passSize, GL_RGBA16F);
     state_->refraction = makeOffscreenTarget(passSize, GL_RGBA16F);
-    state_->waterline = makeOffscreenTarget(outputSize, GL_R8);
-    state_->output = makeOffscreenTarget(outputSize, GL_RGBA8);
+    state_->waterline = makeOffscreenTarget(mainSize, GL_R8);
+    state_->output = makeOffscreenTarget(mainSize, GL_RGBA8);
+    state_->present = present;
+    if (present)
+        state_->presented = makeOffscreenTarget(outputSize, GL_RGBA8);
 }
 
 FloorFrame::~FloorFrame() = default;
@@ -300,6 +305,13 @@ void FloorFrame::render(PassObserver& observer, bool waterline)
     s.triangle(0.0f);
     observer.endPass("water");
     observer.endPass("main");
+    if (s.present) {
+        observer.beginPass("present");
+        const glm::ivec2 from = s.output.size, to = s.presented.size;
+        glBlitNamedFramebuffer(s.output.framebuffer.id(), s.presented.framebuffer.id(), 0, 0, from.x, from.y, 0, 0, to.x,
+                               to.y, GL_COLOR_BUFFER_BIT, from == to ? GL_NEAREST : GL_LINEAR);
+        observer.endPass("present");
+    }
     glBindVertexArray(0);
     glUseProgram(0);
 }

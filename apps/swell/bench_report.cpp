@@ -210,6 +210,7 @@ void printReport(const Results& r)
     const std::vector<std::string> names = passNames(r.real);
     std::printf("swell bench: %dx%d (reflection and refraction %dx%d), %s, %dx%d water cells\n", r.size.x,
                 r.size.y, r.passSize.x, r.passSize.y, r.surface.c_str(), r.gridCells, r.gridCells);
+    std::printf("output: %s\n", r.output.c_str());
     std::printf("  %d measured frames after %d warm-up, %.4g s of simulation apart; commit %s\n", r.frames, r.warmup,
                 r.frameStep_s, r.machine.commit.c_str());
     std::printf("  %s, %d cores; %s, %s\n\n", r.machine.cpu.c_str(), r.machine.cores, r.machine.glRenderer.c_str(),
@@ -309,6 +310,7 @@ void writeJson(const Results& r, const std::string& path)
     j["commit"] = r.machine.commit;
     j["size"] = {r.size.x, r.size.y};
     j["pass_size"] = {r.passSize.x, r.passSize.y};
+    j["output"] = r.output;
     j["surface"] = r.surface;
     j["grid_cells"] = r.gridCells;
     j["frames"] = r.frames;

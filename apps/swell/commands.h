@@ -3,10 +3,24 @@
 // main() turns into kExitBadInput and kExitFailure with one message format.
 #pragma once
 
+#include "swell/scene.h"
+
 #include <optional>
 #include <string>
 
 namespace swell::app {
+
+// How frames reach the output, shared by view, render and bench.
+struct OutputSettings {
+    std::optional<Antialiasing> antialiasing; // --antialiasing; unset: the scene's
+    double renderScale = 1.0;                 // --scale: frame size over output size
+    // Applies the antialiasing override to a scene.
+    void applyTo(Scene& scene) const
+    {
+        if (antialiasing)
+            scene.antialiasing = *antialiasing;
+    }
+};
 
 struct RenderOptions {
     std::string scenePath;          // empty: the built-in default scene
@@ -15,6 +29,7 @@ struct RenderOptions {
     double time_s = 0.0;            // simulation time of the (first) frame, s
     std::optional<double> duration_s; // render a sequence this long, s
     double fps = 30.0;              // frames per second of a sequence
+    OutputSettings outputSettings;
 };
 int runRender(const RenderOptions& options);
 
@@ -25,6 +40,7 @@ struct ViewOptions {
     int exitAfterFrames = 0;
     std::string screenshotPath;
     int width = 1280, height = 720;
+    OutputSettings outputSettings;
 };
 int runView(const ViewOptions& options);
 
@@ -37,6 +53,10 @@ struct BenchOptions {
     int warmup = 10;       // frames rendered and discarded first
     std::string jsonPath;  // also write the results as JSON here
     bool terms = true;     // also measure the water with each shading term left out
+    OutputSettings outputSettings;
+    // Every frame from the scene's own camera (the view `swell view` opens
+    // on) instead of the camera path, to compare with the viewer.
+    bool still = false;
     std::string scenePath; // the scene benchmarked; empty: the built-in default
 };
 int runBench(const BenchOptions& options);

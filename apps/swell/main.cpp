@@ -5,13 +5,17 @@
 #include "data_folders.h"
 
 #include "swell/error.h"
+#include "swell/parameters.h"
+#include "swell/renderer.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <regex>
+#include <vector>
 
 namespace {
 
@@ -39,6 +43,27 @@ const CLI::Validator finiteNumber(
     },
     "FINITE");
 
+// --antialiasing and --scale on a subcommand, into `settings`.
+void addOutputOptions(CLI::App& command, swell::app::OutputSettings& settings)
+{
+    // The scene file's names for the modes, from the parameter table.
+    const swell::Parameter& key = *swell::findParameter("antialiasing");
+    const std::vector<std::string> names(key.choices.begin(), key.choices.end());
+    command.add_option_function<std::string>(
+               "--antialiasing",
+               [&settings, names](const std::string& name) {
+                   const auto at = std::find(names.begin(), names.end(), name);
+                   settings.antialiasing = swell::Antialiasing(at - names.begin());
+               },
+               "Edge smoothing: fxaa, msaa4 or off; overrides the scene's antialiasing key (default fxaa)")
+        ->check(CLI::IsMember(names));
+    command.add_option("--scale", settings.renderScale,
+                       fmt::format("Render the frame at this fraction of the output size and scale it up (filtered), "
+                                   "{}..{}", swell::kMinRenderScale, swell::kMaxRenderScale))
+        ->check(finiteNumber & CLI::Range(swell::kMinRenderScale, swell::kMaxRenderScale))
+        ->capture_default_str();
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -62,6 +87,7 @@ int main(int argc, char** argv)
                             "Quit after this many frames (for tests and scripts)")->check(CLI::Range(0, 1000000));
     viewCommand->add_option("--screenshot", view.screenshotPath,
                             "With --exit-after-frames: write the last frame to this PNG first");
+    addOutputOptions(*viewCommand, view.outputSettings);
 
     swell::app::RenderOptions render;
     std::string renderSize = "1280x720";
@@ -79,6 +105,7 @@ int main(int argc, char** argv)
         ->check(finiteNumber & CLI::Range(0.0, 3600.0));
     renderCommand->add_option("--fps", render.fps, "Frames per second of a sequence")
         ->check(finiteNumber & CLI::Range(1.0, 240.0))->capture_default_str();
+    addOutputOptions(*renderCommand, render.outputSettings);
 
     swell::app::BenchOptions bench;
     std::string benchSize = "1280x720";
@@ -91,6 +118,9 @@ int main(int argc, char** argv)
     bool noTerms = false;
     benchCommand->add_flag("--no-terms", noTerms,
                            "Skip the water shading terms' costs (each term left out in turn: 8 renders a frame instead of 1)");
+    addOutputOptions(*benchCommand, bench.outputSettings);
+    benchCommand->add_flag("--still", bench.still,
+                           "Every frame from the scene's own camera (the view `swell view` opens on), not the path");
     benchCommand->add_option("scene", bench.scenePath,
                              "Scene file (TOML) to benchmark along the same camera path; the built-in default when omitted");
 

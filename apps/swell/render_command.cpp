@@ -125,7 +125,8 @@ int runRender(const RenderOptions& options)
                                        "(apt-get install ffmpeg), or write a PNG sequence instead");
     createOutputFolder(output);
 
-    const Scene scene = loadSceneOrDefault(options.scenePath);
+    Scene scene = loadSceneOrDefault(options.scenePath);
+    options.outputSettings.applyTo(scene);
     // Floating bodies are stepped from t = 0 at 1/120 s (docs/BODIES.md):
     // an hour of steps is about a minute of CPU per body, so a first frame
     // much later would look like a hang.
@@ -140,6 +141,7 @@ int runRender(const RenderOptions& options)
     gl::DebugHandler debug = gl::logOnceDebugHandler();
     gl::installDebugHandler(&debug);
     Renderer renderer(scene);
+    renderer.setRenderScale(options.outputSettings.renderScale);
     const glm::ivec2 size(options.width, options.height);
 
     const int frames = options.duration_s ? std::max(1, int(std::lround(*options.duration_s * options.fps))) : 1;

@@ -14,6 +14,7 @@ public:
     std::string_view name() const override;
     std::string summary() const override;
     WaveReach reach() const override { return {}; }
+    double heightDeviation_m() const override { return 0.0; }
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     glm::dvec2 restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;

@@ -20,6 +20,8 @@ public:
     std::string_view name() const override;
     std::string summary() const override;
     WaveReach reach() const override { return reach_; }
+    // sqrt(sum a^2 / 2): independent sinusoids' variances add.
+    double heightDeviation_m() const override { return heightDeviation_m_; }
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     // Newton's method with the analytic Jacobian (swell::restPointUnder).
     glm::dvec2 restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
@@ -28,6 +30,7 @@ public:
 private:
     WaveSet waves_;
     WaveReach reach_;
+    double heightDeviation_m_ = 0.0;
 };
 
 } // namespace swell

@@ -4,6 +4,9 @@
 //   1b refraction: the world below the water plane (colour + depth)
 //   2  main: the world, the closed volumes of open hulls into depth only,
 //      the water depth-tested against both, then the sky where nothing is
+//   present: when the scene's antialiasing is on or the render scale is not
+//      1, the main pass drew into its own target: resolved (MSAA), filtered
+//      (FXAA) and scaled (bilinear) into the output framebuffer
 #pragma once
 
 #include "swell/export.h"
@@ -23,6 +26,17 @@
 #include <vector>
 
 namespace swell {
+
+// The smallest and largest render scale: below 0.1 a 1280x720 frame is
+// 128x72, too coarse to see anything; 2 draws 4 pixels per output pixel
+// (supersampling), beyond it the linear filter that scales the image down
+// skips pixels and memory grows with the square.
+inline constexpr double kMinRenderScale = 0.1;
+inline constexpr double kMaxRenderScale = 2.0;
+
+// The size every pass draws at for an output of `outputSize` at
+// `renderScale` (each side rounded, at least 1 pixel).
+SWELL_API glm::ivec2 scaledFrameSize(glm::ivec2 outputSize, double renderScale);
 
 struct SWELL_API RendererOptions {
     // Where shaders come from: the embedded copies, or a folder for hot reload.
@@ -45,7 +59,8 @@ struct SWELL_API FrameCounters {
 // Told when each pass of a frame begins and ends (for timing and counters).
 // Passes: "ocean" (the wave model's simulation for the frame), "bodies" (the
 // floating bodies stepped on the CPU to the frame's time), "reflection",
-// "refraction", "main"; within "main", "water" for the water draw.
+// "refraction", "main"; within "main", "water" for the water draw; then
+// "present" when the main pass's image is resolved, filtered or scaled.
 class SWELL_API PassObserver {
 public:
     virtual ~PassObserver() = default;
@@ -83,6 +98,12 @@ public:
     // Each scene object's transform (object to absolute world, m) in the last
     // frame drawn or captured: floating objects sit on drawnSurface().
     std::vector<glm::dmat4> objectTransforms() const;
+    // Draws every pass at `scale` times the output's size (each side, rounded)
+    // and scales the image to the output with a bilinear filter: 0.5 costs
+    // about a quarter of the pixels, 2 supersamples. Throws
+    // swell::InputError outside 0.1..2. Default 1.
+    void setRenderScale(double scale);
+    double renderScale() const;
 
     // Recompiles every shader from options.shaders (for hot reload). On failure
     // the old programs stay in use and the error is thrown.

@@ -30,6 +30,14 @@ enum class ReflectionMode {
 // What the water pass shows: the shaded ocean or one of its ingredients.
 enum class DebugView { Shaded, Normals, Reflection, Refraction, Lod, Wireframe, Foam };
 
+// How the main pass's edges (objects, terrain, the horizon) are smoothed.
+enum class Antialiasing {
+    Off,   // one sample a pixel: hard steps
+    Msaa4, // 4 samples a pixel for coverage and depth, resolved after the pass
+    Fxaa,  // a post-process that blends along luminance edges (FXAA-style; default:
+           // on llvmpipe it costs a fifth of what MSAA does, docs/RENDERING.md)
+};
+
 // Which wave model draws the sea (swell/wave_model.h).
 enum class WaveModelKind {
     Gerstner, // a sum of up to SWELL_MAX_WAVES Gerstner waves: listed, or drawn from the wind's spectrum
@@ -172,6 +180,7 @@ struct SWELL_API Scene {
     // parseScene; empty for scenes built in code, whose errors name the file).
     std::vector<AssetReference> assetReferences;
     bool showTerrain = true; // the built-in island
+    Antialiasing antialiasing = Antialiasing::Fxaa;
 };
 
 // The built-in default scene: an open ocean under a trade wind, with an island.

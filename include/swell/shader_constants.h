@@ -52,6 +52,8 @@
 // water's at 589 nm and 20 C; sea water's is about 1.34 (Quan and Fry 1995).
 // Snell's window's half-angle is asin(1 / n): 48.6 degrees.
 #define SWELL_WATER_IOR 1.333
+// The image a post-process (FXAA) reads.
+#define SWELL_UNIT_POST_SOURCE 11
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).
@@ -78,14 +80,16 @@
 // wave normals -> the interpolated vertex normal (and no foam, which the same
 // per-pixel evaluation returns); reflection -> the sky's horizon colour;
 // refraction -> the deep water colour; lighting -> no sun diffuse or
-// specular; foam -> none; fog -> none.
+// specular; foam -> none; fog -> none; subsurface (light through the
+// crests) -> none.
 #define SWELL_TERM_WAVE_NORMALS 1
 #define SWELL_TERM_REFLECTION 2
 #define SWELL_TERM_REFRACTION 4
 #define SWELL_TERM_LIGHTING 8
 #define SWELL_TERM_FOAM 16
 #define SWELL_TERM_FOG 32
-#define SWELL_TERM_ALL 63
+#define SWELL_TERM_SUBSURFACE 64
+#define SWELL_TERM_ALL 127
 
 // Grid layouts (prepended as SWELL_GRID_LAYOUT; see shaders/grid.glsl).
 #define SWELL_GRID_GEOMETRIC 0

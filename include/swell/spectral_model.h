@@ -44,6 +44,8 @@ public:
     std::string_view name() const override;
     std::string summary() const override;
     WaveReach reach() const override;
+    // From the CPU twin's height fields at t = 0 (the sea is stationary).
+    double heightDeviation_m() const override { return heightDeviation_m_; }
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     // Transforms only the displacement fields for a new time: half the cost.
     glm::dvec3 displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
@@ -54,6 +56,7 @@ private:
     std::array<float, SWELL_FFT_CASCADES> foldThresholds_{};
     std::shared_ptr<const spectral::SpectralField> field_;
     std::unique_ptr<spectral::CpuSurface> cpu_;
+    double heightDeviation_m_ = 0.0;
 };
 
 } // namespace swell

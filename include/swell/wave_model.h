@@ -64,6 +64,10 @@ public:
 
     // The largest displacement any rest point can get, at any time.
     virtual WaveReach reach() const = 0;
+    // The standard deviation of the surface height over space and time, m
+    // (a quarter of the significant wave height): the scale shading uses to
+    // tell a crest. The default is a quarter of reach().vertical_m.
+    virtual double heightDeviation_m() const;
 
     // The displacement and unit normal at a rest point and time.
     virtual SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const = 0;

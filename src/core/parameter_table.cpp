@@ -44,6 +44,10 @@ static_assert(static_cast<int>(DebugView::Shaded) == SWELL_VIEW_SHADED && static
               && static_cast<int>(DebugView::Refraction) == SWELL_VIEW_REFRACTION
               && static_cast<int>(DebugView::Lod) == SWELL_VIEW_LOD && static_cast<int>(DebugView::Wireframe) == SWELL_VIEW_WIREFRAME);
 
+constexpr std::array<std::string_view, 3> kAntialiasing{"off", "msaa4", "fxaa"};
+static_assert(static_cast<int>(Antialiasing::Off) == 0 && static_cast<int>(Antialiasing::Msaa4) == 1
+              && static_cast<int>(Antialiasing::Fxaa) == 2);
+
 constexpr std::array<std::string_view, 2> kSpreadings{"mitsuyasu", "donelan-banner"};
 static_assert(static_cast<int>(SpreadingModel::Mitsuyasu) == 0 && static_cast<int>(SpreadingModel::DonelanBanner) == 1);
 
@@ -381,6 +385,11 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.showTerrain; },
            {.key = "terrain", .kind = K::Flag, .effect = E::World, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "draw the built-in island"}),
+        at([](auto& s, std::size_t) -> auto& { return s.antialiasing; },
+           {.key = "antialiasing", .kind = K::Choice, .min = 0.0, .max = kAntialiasing.size() - 1.0, .sliderMin = 0.0,
+            .sliderMax = kAntialiasing.size() - 1.0,
+            .description = "edge smoothing of the main pass: fxaa (a post-process), msaa4 (4 samples a pixel) or off",
+            .choices = kAntialiasing}),
     };
 
     // Defaults come from the member initialisers: a default Scene with one

@@ -8,6 +8,8 @@ namespace swell {
 
 WaveModel::~WaveModel() = default;
 
+double WaveModel::heightDeviation_m() const { return 0.25 * reach().vertical_m; }
+
 glm::dvec3 WaveModel::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     return surfaceAt(restPoint_m, time_s, filter).displacement_m;

@@ -93,6 +93,7 @@ Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& va
     p.water = BlockProgram(build(sources, variant, "water.vert", "water.frag"));
     p.sky = BlockProgram(build(sources, variant, "fullscreen.vert", "sky.frag"));
     p.waterline = BlockProgram(build(sources, variant, "water.vert", "waterline.frag"));
+    p.fxaa = BlockProgram(build(sources, variant, "fullscreen.vert", "fxaa.frag"));
     p.mesh = MeshProgram(sources, variant);
     p.skyBake = SkyBakeProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),

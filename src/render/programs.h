@@ -62,8 +62,9 @@ private:
 
 // Programs with no uniforms of their own (all from the Frame block): the sky
 // (fullscreen.vert + sky.frag), the water (water.vert + water.frag), the
-// waterline mask (water.vert + waterline.frag) and the water's vertex
-// capture for tests (water.vert with transform feedback).
+// waterline mask (water.vert + waterline.frag), the FXAA filter
+// (fullscreen.vert + fxaa.frag) and the water's vertex capture for tests
+// (water.vert with transform feedback).
 class BlockProgram {
 public:
     BlockProgram() = default;
@@ -76,7 +77,7 @@ private:
 };
 
 struct Programs {
-    BlockProgram water, sky, waterline, capture;
+    BlockProgram water, sky, waterline, fxaa, capture;
     MeshProgram mesh;
     SkyBakeProgram skyBake;
 };

@@ -1,14 +1,44 @@
 #include "render/render_target.h"
 
+#include "render/programs.h"
 #include "swell/error.h"
+#include "swell/renderer.h"
+#include "swell/shader_constants.h"
+
+#include <fmt/format.h>
+#include <glm/common.hpp>
+
+#include <cmath>
 
 namespace swell::detail {
 
-void RenderTarget::resize(glm::ivec2 size, GLenum colorFormat)
+namespace {
+
+gl::Texture makeTexture(glm::ivec2 size, GLenum format, int samples, GLenum filter)
 {
-    if (size == size_ && colorFormat == colorFormat_)
+    if (samples > 1) {
+        gl::Texture t = gl::Texture::create(GLenum(GL_TEXTURE_2D_MULTISAMPLE));
+        // Fixed sample locations: the same pattern in colour and depth.
+        glTextureStorage2DMultisample(t.id(), samples, format, size.x, size.y, GL_TRUE);
+        return t; // multisample textures have no sampler state
+    }
+    gl::Texture t = gl::Texture::create(GLenum(GL_TEXTURE_2D));
+    glTextureStorage2D(t.id(), 1, format, size.x, size.y);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, filter);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, filter);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+} // namespace
+
+void RenderTarget::resize(glm::ivec2 size, GLenum colorFormat, int samples)
+{
+    if (size == size_ && colorFormat == colorFormat_ && samples == samples_)
         return;
     colorFormat_ = colorFormat;
+    samples_ = samples;
     framebuffer_.reset();
     color_.reset();
     depth_.reset();
@@ -17,19 +47,16 @@ void RenderTarget::resize(glm::ivec2 size, GLenum colorFormat)
         size_ = {0, 0};
         return;
     }
-    color_ = gl::Texture::create(GLenum(GL_TEXTURE_2D));
+    if (samples > 1) {
+        GLint supported = 0;
+        glGetIntegerv(GL_MAX_SAMPLES, &supported);
+        if (samples > supported)
+            throw Error(fmt::format("swell::RenderTarget::resize(): {} samples asked, the GL supports {}", samples,
+                                    supported));
+    }
     // Half floats for intermediate images: the sun's highlight exceeds 1.
-    glTextureStorage2D(color_.id(), 1, colorFormat, size.x, size.y);
-    glTextureParameteri(color_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(color_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(color_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(color_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    depth_ = gl::Texture::create(GLenum(GL_TEXTURE_2D));
-    glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
-    glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    color_ = makeTexture(size, colorFormat, samples, GL_LINEAR);
+    depth_ = makeTexture(size, GL_DEPTH_COMPONENT32F, samples, GL_NEAREST);
     framebuffer_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
     glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
@@ -37,4 +64,78 @@ void RenderTarget::resize(glm::ivec2 size, GLenum colorFormat)
         throw Error("swell::RenderTarget::resize(): framebuffer incomplete");
 }
 
+GLuint MainTarget::begin(glm::ivec2 drawSize, glm::ivec2 outputSize, GLuint output, Antialiasing antialiasing)
+{
+    drawSize_ = drawSize;
+    outputSize_ = outputSize;
+    output_ = output;
+    antialiasing_ = antialiasing;
+    const bool scaled = drawSize != outputSize;
+    direct_ = antialiasing == Antialiasing::Off && !scaled;
+    // The main pass writes display-ready (sRGB-encoded) colour in 0..1, as
+    // the output holds it: 8 bits a channel lose nothing the output keeps.
+    const bool msaa = antialiasing == Antialiasing::Msaa4;
+    multisampled_.resize(msaa ? drawSize : glm::ivec2(0), GL_RGBA8, kMsaaSamples);
+    single_.resize(direct_ ? glm::ivec2(0) : drawSize, GL_RGBA8);
+    const bool fxaaThenScale = antialiasing == Antialiasing::Fxaa && scaled;
+    filtered_.resize(fxaaThenScale ? drawSize : glm::ivec2(0), GL_RGBA8);
+    if (direct_)
+        return output;
+    return msaa ? multisampled_.framebuffer() : single_.framebuffer();
+}
+
+void MainTarget::blitToOutput(const RenderTarget& from) const
+{
+    // Equal sizes copy pixel for pixel; a render scale is filtered
+    // bilinearly (at scale 2, exactly the mean of each 2x2 block).
+    const GLenum filter = drawSize_ == outputSize_ ? GL_NEAREST : GL_LINEAR;
+    glBlitNamedFramebuffer(from.framebuffer(), output_, 0, 0, drawSize_.x, drawSize_.y, 0, 0, outputSize_.x,
+                           outputSize_.y, GL_COLOR_BUFFER_BIT, filter);
+}
+
+void MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
+{
+    if (direct_)
+        return;
+    // Blits obey the scissor test and the colour mask: the passes leave the
+    // former off and the latter open, but say so here too.
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (antialiasing_ == Antialiasing::Msaa4) {
+        // The resolve averages each pixel's samples. It needs equal sizes and
+        // formats, so it goes through single_, never straight to a window.
+        glBlitNamedFramebuffer(multisampled_.framebuffer(), single_.framebuffer(), 0, 0, drawSize_.x, drawSize_.y, 0,
+                               0, drawSize_.x, drawSize_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    if (antialiasing_ == Antialiasing::Fxaa) {
+        const bool scaled = drawSize_ != outputSize_;
+        glBindFramebuffer(GL_FRAMEBUFFER, scaled ? filtered_.framebuffer() : output_);
+        glViewport(0, 0, drawSize_.x, drawSize_.y);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        glDisable(GL_FRAMEBUFFER_SRGB);
+        fxaa.use();
+        glBindTextureUnit(SWELL_UNIT_POST_SOURCE, single_.color());
+        glBindVertexArray(emptyVao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glEnable(GL_DEPTH_TEST);
+        if (scaled)
+            blitToOutput(filtered_);
+    } else {
+        blitToOutput(single_);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, output_);
+    glViewport(0, 0, outputSize_.x, outputSize_.y);
+}
+
 } // namespace swell::detail
+
+namespace swell {
+
+glm::ivec2 scaledFrameSize(glm::ivec2 outputSize, double renderScale)
+{
+    const glm::dvec2 scaled = glm::dvec2(outputSize) * renderScale;
+    return glm::max(glm::ivec2(int(std::lround(scaled.x)), int(std::lround(scaled.y))), glm::ivec2(1));
+}
+
+} // namespace swell

@@ -17,6 +17,7 @@
 #include "swell/grid.h"
 #include "swell/scene_changes.h"
 
+#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -50,6 +51,9 @@ struct Renderer::Impl {
     World world;
     RenderTarget reflection, refraction, output;
     WaterlineMask waterline;
+    // Where the main pass draws when anti-aliased or scaled (render_target.h).
+    MainTarget mainTarget;
+    double renderScale = 1.0;
     FrameCounters counters;
     PassObserver* observer = nullptr;
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
@@ -93,6 +97,7 @@ struct Renderer::Impl {
         notify(false, "ocean");
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
+        f.waveHeightDeviation_m = float(model().heightDeviation_m());
         const WaveReach reach = model().reach();
         const DrawnSurface drawn(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
         // Bodies step on the CPU to this frame's time: fixed steps, so the
@@ -224,11 +229,14 @@ struct Renderer::Impl {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
 
-    void render(const Camera& camera, double time_s, glm::ivec2 size, GLuint framebuffer)
+    void render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer)
     {
         counters = {};
-        if (size.x <= 0 || size.y <= 0)
+        if (outputSize.x <= 0 || outputSize.y <= 0)
             return;
+        // Every pass works at the render scale; present() brings the main
+        // pass's image to the output's size.
+        const glm::ivec2 size = scaledFrameSize(outputSize, renderScale);
         glm::dvec3 origin;
         const FrameUniforms base = prepareFrame(camera, time_s, size, origin);
         // The procedural sky is baked into the cubemap when first needed and
@@ -283,10 +291,13 @@ struct Renderer::Impl {
         f = base;
         f.passEncodesSrgb = 1;
         bindFrame(PassMain, f);
+        // The waterline mask is drawn at the main pass's size, so the main
+        // pass (multisampled or not) reads it on the same pixel grid.
         drawWaterline(nearPlaneMedium(camera, double(size.x) / double(size.y), model().reach()), size);
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.texture());
         notify(true, "main");
-        beginPass(framebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        const GLuint mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
+        beginPass(mainFramebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         drawWorld(origin);
         drawHullVolumes();
         notify(true, "water");
@@ -294,6 +305,13 @@ struct Renderer::Impl {
         notify(false, "water");
         drawSky();
         notify(false, "main");
+
+        // The MSAA resolve, the FXAA filter and the render scale's filtering.
+        if (mainTarget.presents()) {
+            notify(true, "present");
+            mainTarget.present(programs.fxaa, emptyVao.id());
+            notify(false, "present");
+        }
         glBindVertexArray(0);
         glUseProgram(0);
     }
@@ -372,6 +390,15 @@ void Renderer::setWaveModel(std::shared_ptr<const WaveModel> model)
     Impl& s = *impl_;
     s.apply(s.scene, ParameterEffect::Frame, s.sceneModel, std::move(model), false);
 }
+
+void Renderer::setRenderScale(double scale)
+{
+    if (!(scale >= kMinRenderScale && scale <= kMaxRenderScale))
+        throw InputError({"render scale"}, fmt::format("{} is outside {}..{}", scale, kMinRenderScale, kMaxRenderScale));
+    impl_->renderScale = scale;
+}
+
+double Renderer::renderScale() const { return impl_->renderScale; }
 
 const FrameCounters& Renderer::counters() const { return impl_->counters; }
 void Renderer::setPassObserver(PassObserver* observer) { impl_->observer = observer; }

@@ -32,6 +32,7 @@ SCENES = [
     ("too_many_waves", "".join("[[waves.list]]\ndirection = [1.0, 0.0]\nwavelength_m = 5.0\namplitude_m = 0.01\n" for _ in range(65)), "257:", "waves.list"),
     ("bad_reflection_mode", "[reflection]\nmode = \"mirror\"\n", "2:", "reflection.mode"),
     ("bad_debug_view", "debug_view = \"xray\"\n", "1:", "debug_view"),
+    ("bad_antialiasing", "antialiasing = \"8x\"\n", "1:", "antialiasing"),
     ("missing_model", "[[objects]]\npath = \"no/such/model.glb\"\n", "2:", "no/such/model.glb"),
     ("unknown_builtin", "[[objects]]\npath = \"builtin:submarine\"\n", "2:", "builtin:submarine"),
     ("camera_path_unsorted", "[[camera.path]]\ntime_s = 5.0\n[[camera.path]]\ntime_s = 1.0\n", "4:", "camera.path"),
@@ -61,6 +62,13 @@ ARGUMENTS = [
     ("unknown_subcommand", ["paint"], 2, "paint"),
     ("unknown_option", ["render", "-o", "x.png", "--colour", "red"], 2, "--colour"),
     ("bench_bad_frames", ["bench", "--frames", "0"], 2, "--frames"),
+    # The render scale: 0.1..2, a finite number, on every subcommand that draws.
+    *[(f"render_scale_{v}", ["render", "-o", "x.png", "--scale", v], 2, "--scale")
+      for v in ("0", "-1", "5", "abc", "nan", "0.05")],
+    *[(f"view_scale_{v}", ["view", "--scale", v], 2, "--scale") for v in ("0", "-1", "5", "abc")],
+    ("bench_scale_zero", ["bench", "--scale", "0"], 2, "--scale"),
+    ("bad_antialiasing", ["render", "-o", "x.png", "--antialiasing", "8x"], 2, "--antialiasing"),
+    ("view_bad_antialiasing", ["view", "--antialiasing", "on"], 2, "--antialiasing"),
     ("bodies_far_in_time", ["render", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes",
                                                    "under-way.toml"), "-o", "x.png", "--time", "5000"], 2, "--time"),
 ]
@@ -176,6 +184,21 @@ count += 1
 r = run(["render", "-o", "good.png", "--size", "48x27"])
 if r.returncode != 0 or not os.path.exists(os.path.join(work, "good.png")):
     failures.append(f"the default scene did not render: {r.returncode} {r.stderr[:300]!r}")
+
+# A render scale draws smaller (or larger) but writes the size asked for.
+def png_size(path):
+    with open(path, "rb") as f:
+        header = f.read(24)
+    return int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")
+
+
+for scale, antialiasing in (("0.5", "off"), ("0.1", "fxaa"), ("2", "msaa4")):
+    count += 1
+    out = os.path.join(work, f"scaled_{scale}.png")
+    r = run(["render", "-o", out, "--size", "48x27", "--scale", scale, "--antialiasing", antialiasing])
+    if r.returncode != 0 or not os.path.exists(out) or png_size(out) != (48, 27):
+        failures.append(f"--scale {scale} --antialiasing {antialiasing}: exit {r.returncode}, "
+                        f"size {png_size(out) if os.path.exists(out) else None}, {r.stderr[:300]!r}")
 
 for f in failures:
     print("FAIL", f)

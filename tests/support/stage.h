@@ -1,5 +1,7 @@
 // The empty stage the golden tests build on: the default scene without
-// waves, island or objects, and with fog pushed far out of view.
+// waves, island or objects, with fog pushed far out of view, and without
+// anti-aliasing, so that a test's pixels are those of the effect it checks
+// (tests/golden/test_antialiasing.cpp checks the anti-aliasing).
 #pragma once
 
 #include "swell/scene.h"
@@ -15,6 +17,7 @@ inline Scene emptyStage()
     scene.objects.clear();
     scene.fog.start_m = 1.0e5;
     scene.fog.end_m = 2.0e5;
+    scene.antialiasing = Antialiasing::Off;
     return scene;
 }
 

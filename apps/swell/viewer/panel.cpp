@@ -34,14 +34,15 @@ void keyHelp()
         ImGui::TextDisabled("%s", line);
 }
 
-// The rate time really runs at, beside the one asked for: on software GL a
-// frame often takes longer than the clock's largest step (0.25 s), and then
-// time runs slower than asked.
+// The rate time really runs at, beside the one asked for: time follows the
+// real clock, except that a frame slower than the clock's largest step
+// (a stall, or software GL at a large window) advances it by that step only.
 void actualRateText(const ViewState& view)
 {
     const bool slower = !view.paused && view.actualTimeRate < view.timeRate * 0.98;
     if (slower)
-        ImGui::TextWrapped("time runs at %.2fx: frames take longer than the clock's 0.25 s step", view.actualTimeRate);
+        ImGui::TextWrapped("time runs at %.2fx: frames take longer than the clock's %.0f s step", view.actualTimeRate,
+                           kMaxFrameStep_s);
     else
         ImGui::Text("time runs at %.2fx", view.actualTimeRate);
 }
@@ -100,6 +101,14 @@ void Panel::drawView(Session& session, ViewState& view, const FrameStats& stats,
         return;
     if (const Parameter* debugView = findParameter("debug_view"))
         changed |= editParameter(session, *debugView, 0, edited);
+    if (const Parameter* antialiasing = findParameter("antialiasing"))
+        changed |= editParameter(session, *antialiasing, 0, edited);
+    const double minScale = kMinRenderScale, maxScale = kMaxRenderScale;
+    ImGui::SliderScalar("render scale", ImGuiDataType_Double, &view.renderScale, &minScale, &maxScale, "%.2f");
+    view.renderScale = std::clamp(view.renderScale, minScale, maxScale); // Ctrl+click may type anything
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Draw the frame at this fraction of the window's size and scale it up: 0.5 draws a quarter "
+                          "of the pixels (--scale on the command line)");
 
     // Time.
     constexpr double kStep_s = 1.0 / 60.0;

@@ -34,15 +34,24 @@ enum class PanelMode {
 };
 PanelMode nextPanelMode(PanelMode mode);
 
+// The clock advances at most this much per frame, s: time follows the real
+// clock down to 0.5 frames a second (software GL at a large window), and a
+// longer gap (a stall: a slow shader rebuild, a scene load) does not jump the
+// sea ahead.
+inline constexpr double kMaxFrameStep_s = 2.0;
+
 // What the viewer loop and the panel share about the view (not the scene).
 struct ViewState {
     double time_s = 0.0;           // simulation time, s
     bool paused = false;
     double timeRate = 1.0;         // simulated seconds per real second, as asked for
     // Simulated seconds per real second as they really went over the last
-    // second: lower than timeRate when frames are slow (the clock advances
-    // at most 0.25 s per frame), 0 while paused.
+    // second: lower than timeRate only when frames are slower than the
+    // clock's largest step (kMaxFrameStep_s), 0 while paused.
     double actualTimeRate = 1.0;
+    // Every pass draws at this fraction of the window's size, scaled up
+    // (bilinear) to the window: swell::Renderer::setRenderScale().
+    double renderScale = 1.0;
     bool followSceneCamera = true; // the scene's camera (and its path); false: free flight
     FlyCamera fly;
     PanelMode panel = PanelMode::Full;

@@ -27,7 +27,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <ctime>
 #include <set>
+#include <vector>
 
 namespace swell::app::viewer {
 
@@ -37,9 +39,6 @@ namespace fs = std::filesystem;
 
 // Simulation time per frame of a scripted run, s.
 constexpr double kScriptedFrame_s = 1.0 / 60.0;
-// The clock advances at most this much per frame, s, so a stall (a window
-// being dragged, a slow shader rebuild) does not jump the sea ahead.
-constexpr double kMaxFrameStep_s = 0.25;
 // The fly camera moves for at most this long per frame, s: long enough to
 // keep its speed at the few frames per second of software GL, short enough
 // that a stall does not throw the camera far away.
@@ -79,8 +78,7 @@ private:
 
 // The rate simulation time really advances at, simulated seconds per real
 // second, over about the last second. It differs from the rate asked for
-// when frames take longer than kMaxFrameStep_s (software GL at a large
-// window) or time is paused.
+// when frames take longer than kMaxFrameStep_s or time is paused.
 class TimeRateMeter {
 public:
     void add(double simulated_s, double real_s)
@@ -147,6 +145,23 @@ Camera frameCamera(ViewState& view, const Scene& scene)
     return view.fly.camera();
 }
 
+// This process's CPU time, all threads (llvmpipe's rasteriser threads
+// included), ms: the clock `swell bench` reports, which varies much less
+// than wall time on a machine shared with other work.
+double processCpu_ms()
+{
+    timespec t{};
+    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1.0e3 + double(t.tv_nsec) * 1.0e-6;
+}
+
+// The median of `values` (not empty).
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
 fs::path absolutePath(const fs::path& path)
 {
     std::error_code ec;
@@ -177,6 +192,7 @@ int run(const ViewOptions& options)
     if (!options.screenshotPath.empty() && fs::path(options.screenshotPath).extension() != ".png")
         throw InputError({"--screenshot"}, fmt::format("'{}': a screenshot is a .png file", options.screenshotPath));
     Scene scene = loadSceneOrDefault(options.scenePath);
+    options.outputSettings.applyTo(scene);
 
     const std::string title =
         options.scenePath.empty() ? std::string("Swell") : "Swell - " + fs::path(options.scenePath).filename().string();
@@ -191,13 +207,18 @@ int run(const ViewOptions& options)
     panel.sceneLoaded(options.scenePath);
 
     ViewState view;
+    view.renderScale = options.outputSettings.renderScale;
     view.fly.setPose(cameraAt(session.scene().camera, 0.0));
     FlyControls controls(window.handle());
     FrameStats stats;
     stats.context = window.description();
     TimeRateMeter rate;
 
+    // A scripted run's frame times, from each frame's start to the next's
+    // (input, panel, drawing, swap), reported when it ends: wall s, CPU ms.
+    std::vector<double> scriptedFrames_s, scriptedFramesCpu_ms;
     double last = glfwGetTime();
+    double lastCpu_ms = processCpu_ms();
     for (int frame = 0; !window.shouldClose(); ++frame) {
         if (!scripted && window.framebufferSize() == glm::ivec2(0)) {
             // Minimised: nothing to draw; wait for the window to come back.
@@ -210,6 +231,12 @@ int run(const ViewOptions& options)
         const double frame_s = now - last;
         last = now;
         stats.times.add(float(frame_s * 1000.0));
+        const double cpu_ms = processCpu_ms();
+        if (scripted && frame > 0) {
+            scriptedFrames_s.push_back(frame_s);
+            scriptedFramesCpu_ms.push_back(cpu_ms - lastCpu_ms);
+        }
+        lastCpu_ms = cpu_ms;
 
         gui.beginFrame();
         bool reloadShaders = false, screenshot = false;
@@ -258,6 +285,7 @@ int run(const ViewOptions& options)
         // The panel may have changed the scene or the camera: draw with what it left.
         const Camera camera = frameCamera(view, session.scene());
         const glm::ivec2 size = window.framebufferSize();
+        session.renderer().setRenderScale(view.renderScale);
         session.renderer().render(camera, view.time_s, size);
         stats.counters = session.renderer().counters();
         stats.size = size;
@@ -282,6 +310,14 @@ int run(const ViewOptions& options)
         window.swapBuffers();
         if (lastFrame)
             break;
+    }
+    if (!scriptedFrames_s.empty()) {
+        // On stderr, so that stdout keeps only the screenshot's path.
+        const glm::ivec2 size = window.framebufferSize();
+        std::fprintf(stderr,
+                     "swell view: %zu frames timed at %dx%d, render scale %.2f: median %.1f ms wall, %.1f ms CPU a frame\n",
+                     scriptedFrames_s.size(), size.x, size.y, view.renderScale, 1000.0 * median(scriptedFrames_s),
+                     median(scriptedFramesCpu_ms));
     }
     return kExitOk;
 }

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace swell {
@@ -77,6 +78,10 @@ GerstnerModel::GerstnerModel(WaveSet waves) : waves_(std::move(waves))
     if (const std::string problem = validate(waves_); !problem.empty())
         throw InputError({}, "waves: " + problem);
     reach_ = waveReach(waves_);
+    double variance = 0.0;
+    for (const Wave& w : waves_.waves)
+        variance += 0.5 * w.amplitude_m * w.amplitude_m;
+    heightDeviation_m_ = std::sqrt(variance);
 }
 
 std::string_view GerstnerModel::name() const { return "gerstner"; }

@@ -257,6 +257,15 @@ SpectralModel::SpectralModel(const SpectralSettings& settings)
     // distribution is stationary, so any time would do. (fieldsAt is not
     // thread-safe; nothing else can reach cpu_ while it is being built.)
     const CpuSurface::Fields& fields = cpu_->fieldsAt(0.0);
+    // The cascades' bands are disjoint, so their height variances add.
+    double variance = 0.0;
+    for (int c = 0; c < kCascades; ++c) {
+        double sum = 0.0;
+        for (const float h : fields.values[size_t(c)][1])
+            sum += double(h) * double(h);
+        variance += sum / double(fields.values[size_t(c)][1].size());
+    }
+    heightDeviation_m_ = std::sqrt(variance);
     const double fraction = breakingFraction(settings.wind.windSpeed_mps);
     for (int c = 0; c < kFoamCascades; ++c) {
         const auto& v = fields.values[size_t(c)];
