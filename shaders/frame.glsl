@@ -55,6 +55,7 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     vec2 viewportInvSize;   // 1 / pixels
     int passEncodesSrgb;    // 1 when this pass writes display colours (sRGB), 0 for linear targets
     float waveHeightDeviation_m; // the wave model's height standard deviation, m
+    float waveMeanSquareSlope; // the sea's mean |grad eta|^2, for the reflection's masking
     GridLevel gridLevels[SWELL_GRID_LEVELS];
     WorldBox worldBoxes[SWELL_MAX_WORLD_BOXES];
 };

@@ -28,12 +28,20 @@ void main()
     // every wave this pixel can resolve, filtered by the pixel's footprint on
     // the water instead of the grid spacing: the model adds to the grid's
     // interpolated derivatives what the two footprints see differently.
+#if SWELL_HAS_TERM(SWELL_TERM_FILTERING)
     vec2 footprint = fwidth(vRestPoint);
     float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
+#else
+    float pixelSize_m = 1e-3; // every wave, however small the pixel sees it
+#endif
     SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ, vHeightScale);
     vec3 n = surface.normal;
     float foam = surface.foam;
+#if SWELL_HAS_TERM(SWELL_TERM_FILTERING)
     float slopeVariance = surface.slopeVariance;
+#else
+    float slopeVariance = 0.0;
+#endif
 #else
     vec3 n = normalize(vNormal);
     float foam = 0.0;

@@ -180,6 +180,19 @@ double percentile(std::vector<double>& values, double q);
 // The middle value (the mean of the two middle ones for an even count); 0 when empty.
 double median(std::vector<double>& values);
 
+// The water pass of the default scene with each reflection lookup
+// (scene.reflection.mode), measured frame for frame in turn on the same
+// cameras (bench_reflection.cpp).
+struct ReflectionModeCost {
+    std::string mode;                  // "fixed" or "raymarch", as scene files write it
+    std::vector<double> waterWall_ms;  // per frame
+    std::vector<double> waterCpu_ms;
+};
+std::vector<ReflectionModeCost> measureReflectionModes(const Scene& scene, PassRecorder& recorder, int frames,
+                                                       glm::ivec2 size, unsigned framebuffer,
+                                                       const std::vector<Camera>& cameras,
+                                                       const std::vector<double>& times_s);
+
 // Everything one run found, for the table and the JSON file.
 struct Machine {
     std::string cpu;       // "model name" of /proc/cpuinfo
@@ -213,6 +226,7 @@ struct Results {
     std::vector<Camera> realCameras;     // camera of each measured frame
     std::vector<LodSample> lod;
     std::vector<TermVariant> terms;      // empty when not measured (--no-terms)
+    std::vector<ReflectionModeCost> reflectionModes;
     int floatingBodies = 0;
     std::vector<long long> bodySteps; // per measured frame, all bodies (Renderer::counters())
 };

@@ -171,7 +171,7 @@ int runBench(const BenchOptions& options)
 
     const int floorWarmup = std::min(options.warmup, kFloorWarmup);
     const int perFrame = 1 + int(r.terms.size());
-    Progress progress("benchmarking", (options.warmup + options.frames) * perFrame + floorWarmup + options.frames);
+    Progress progress("benchmarking", (options.warmup + options.frames) * perFrame + floorWarmup + options.frames + 1);
     // The real frames: warm-up at the path's start, then the measured ones.
     for (int i = 0; i < options.warmup + options.frames; ++i) {
         const bool measured = i >= options.warmup;
@@ -211,6 +211,10 @@ int runBench(const BenchOptions& options)
             r.floor.push_back(std::move(frame));
         progress.advance();
     }
+    r.reflectionModes =
+        measureReflectionModes(scene, recorder, options.frames, r.size, output.framebuffer.id(), r.realCameras, r.realTimes_s);
+    checkGl("comparing the reflection lookups");
+    progress.advance();
     progress.finish();
 
     // The water grid's LOD at a few frames of the path, from the vertices

@@ -250,6 +250,15 @@ void printReport(const Results& r)
     std::printf("  bodies: %d floating rigid bodies, %lld integration steps of 1/120 s over the measured frames\n\n",
                 r.floatingBodies, steps);
 
+    if (!r.reflectionModes.empty()) {
+        std::printf("Reflection lookup: the water pass with each reflection.mode, frame for frame in turn\n");
+        std::printf("  %-14s %9s %9s\n", "mode", "wall med", "CPU med");
+        for (const ReflectionModeCost& c : r.reflectionModes)
+            std::printf("  %-14s %9.3f %9.3f\n", c.mode.c_str(), summarize(c.waterWall_ms).median,
+                        summarize(c.waterCpu_ms).median);
+        std::printf("\n");
+    }
+
     std::printf("Counters summed over the %d measured frames (exact: equal in every run)\n", r.frames);
     if (!r.pipelineStatistics)
         std::printf("  (no GL_ARB_pipeline_statistics_query: samples passed only)\n");
@@ -318,6 +327,12 @@ void writeJson(const Results& r, const std::string& path)
     j["frame_step_s"] = r.frameStep_s;
     j["pipeline_statistics"] = r.pipelineStatistics;
     j["gpu_timers"] = r.gpuTimers;
+
+    Json reflectionModes = Json::object();
+    for (const ReflectionModeCost& c : r.reflectionModes)
+        reflectionModes[c.mode] = {{"water_wall_ms", summaryJson(summarize(c.waterWall_ms))},
+                                   {"water_cpu_ms", summaryJson(summarize(c.waterCpu_ms))}};
+    j["reflection_modes"] = reflectionModes;
 
     Json passes = Json::object();
     for (const std::string& name : passNames(r.real)) {

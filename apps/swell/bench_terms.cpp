@@ -68,7 +68,8 @@ std::vector<TermVariant> termVariants()
     return {{"wave normals", SWELL_TERM_WAVE_NORMALS, {}}, {"reflection", SWELL_TERM_REFLECTION, {}},
             {"refraction", SWELL_TERM_REFRACTION, {}},     {"lighting", SWELL_TERM_LIGHTING, {}},
             {"foam", SWELL_TERM_FOAM, {}},                 {"fog", SWELL_TERM_FOG, {}},
-            {"subsurface", SWELL_TERM_SUBSURFACE, {}},     {"every term", SWELL_TERM_ALL, {}}};
+            {"subsurface", SWELL_TERM_SUBSURFACE, {}},     {"filtering", SWELL_TERM_FILTERING, {}},
+            {"every term", SWELL_TERM_ALL, {}}};
 }
 
 void printTermReport(const Results& r)

@@ -81,7 +81,9 @@
 // per-pixel evaluation returns); reflection -> the sky's horizon colour;
 // refraction -> the deep water colour; lighting -> no sun diffuse or
 // specular; foam -> none; fog -> none; subsurface (light through the
-// crests) -> none.
+// crests) -> none; filtering (normals filtered by the pixel's footprint,
+// the highlight spread by what they leave out) -> every wave in the normal,
+// unspread, as shading without horizon filtering would do.
 #define SWELL_TERM_WAVE_NORMALS 1
 #define SWELL_TERM_REFLECTION 2
 #define SWELL_TERM_REFRACTION 4
@@ -89,7 +91,8 @@
 #define SWELL_TERM_FOAM 16
 #define SWELL_TERM_FOG 32
 #define SWELL_TERM_SUBSURFACE 64
-#define SWELL_TERM_ALL 127
+#define SWELL_TERM_FILTERING 128
+#define SWELL_TERM_ALL 255
 
 // Grid layouts (prepended as SWELL_GRID_LAYOUT; see shaders/grid.glsl).
 #define SWELL_GRID_GEOMETRIC 0

@@ -297,7 +297,7 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.reflection.mode; },
            {.key = "reflection.mode", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kReflectionModes.size() - 1.0,
             .sliderMin = 0.0, .sliderMax = kReflectionModes.size() - 1.0,
-            .description = "raymarch: march the reflected ray; fixed: step a fixed distance along it",
+            .description = "raymarch: what the reflected ray really meets, else the sky; fixed: step a fixed distance along it",
             .choices = kReflectionModes}),
         at([](auto& s, std::size_t) -> auto& { return s.reflection.fixedDistance_m; },
            {.key = "reflection.fixed_distance_m", .unit = "m", .min = 0.0, .max = 1000.0, .minExclusive = true,

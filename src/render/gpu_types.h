@@ -62,6 +62,7 @@ struct alignas(16) FrameUniforms {
     glm::vec2 viewportInvSize;
     int passEncodesSrgb;
     float waveHeightDeviation_m;
+    float waveMeanSquareSlope;
     GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
     WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
 };

@@ -8,6 +8,7 @@
 #include "render/programs.h"
 #include "render/render_target.h"
 #include "render/sky_cubemap.h"
+#include "render/slope_statistics.h"
 #include "render/water_grid.h"
 #include "render/waterline.h"
 #include "render/wave_model_gpu.h"
@@ -39,6 +40,7 @@ struct Renderer::Impl {
     // The scene's wave model, and the one setWaveModel() put in its place.
     std::shared_ptr<const WaveModel> sceneModel, overrideModel;
     std::unique_ptr<WaveModelGpu> modelGpu;
+    double seaMeanSquareSlope = 0.0; // of model(), for the reflection's masking (slope_statistics.h)
     GridShape gridShape;
     gl::ShaderSources sources;
     // Water shading terms left out, for the benchmark (RendererOptions).
@@ -99,6 +101,7 @@ struct Renderer::Impl {
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         f.waveHeightDeviation_m = float(model().heightDeviation_m());
         const WaveReach reach = model().reach();
+        f.waveMeanSquareSlope = float(seaMeanSquareSlope);
         const DrawnSurface drawn(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
         // Bodies step on the CPU to this frame's time: fixed steps, so the
         // poses depend on time_s alone, never on the frames before.
@@ -265,7 +268,13 @@ struct Renderer::Impl {
         bindFrame(PassReflection, f);
         beginPass(reflection.framebuffer(), scaled, glm::vec4(0.0f));
         glEnable(GL_CLIP_DISTANCE0);
+        // The mirror turns every triangle's winding around on screen: without
+        // this the faces seen would count as back faces, and mesh.frag, which
+        // turns a back face's normal round, would light each object's
+        // reflection from the wrong side (a dark rock mirrored pale).
+        glFrontFace(GL_CW);
         drawWorld(origin);
+        glFrontFace(GL_CCW);
         drawSky();
         notify(false, "reflection");
 
@@ -343,8 +352,10 @@ struct Renderer::Impl {
         scene = next;
         sceneModel = std::move(nextSceneModel);
         overrideModel = std::move(nextOverride);
-        if (gpu)
+        if (gpu) {
             modelGpu = std::move(gpu);
+            seaMeanSquareSlope = meanSquareSlope(model());
+        }
         if (programsChanged) {
             variant = nextVariant;
             programs = std::move(nextPrograms);

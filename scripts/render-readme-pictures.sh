@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Renders the README's pictures into docs/images/ with the built swell, as the
+# README says: 960x540 at 20 s. Deliberate only: look at every picture zoomed
+# in (reflections, edges, the horizon) before committing them.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+swell=${SWELL_BUILD_DIR:-$root/build}/apps/swell/swell
+out=$root/docs/images
+size=(--size 960x540 --time 20)
+[[ -x $swell ]] || { echo "render-readme-pictures: no $swell; build first (scripts/build.sh)" >&2; exit 1; }
+
+"$swell" render -o "$out/default.png" "${size[@]}"
+"$swell" render "$root/scenes/sunset.toml" -o "$out/sunset.png" "${size[@]}"
+"$swell" render "$root/scenes/storm.toml" -o "$out/storm.png" "${size[@]}"
+"$swell" render "$out/calm-mirror.toml" -o "$out/calm-mirror.png" "${size[@]}"
+"$swell" render "$root/scenes/underwater.toml" -o "$out/underwater.png" "${size[@]}"
+
+# The low grazing camera: the trade wind preset with its camera at 1.2 m.
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+sed 's/^position_m = \[0\.0, 8\.0, 0\.0\]/position_m = [0.0, 1.2, 0.0]/' "$root/scenes/trade-wind.toml" >"$scratch/grazing.toml"
+grep -q '^position_m = \[0.0, 1.2, 0.0\]' "$scratch/grazing.toml" ||
+  { echo "render-readme-pictures: scenes/trade-wind.toml's camera line changed; update this script" >&2; exit 1; }
+"$swell" render "$scratch/grazing.toml" -o "$out/grazing.png" "${size[@]}"
+git -C "$root" status --short docs/images
