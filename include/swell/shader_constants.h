@@ -26,6 +26,10 @@
 #define SWELL_FFT_SIZE 256
 #define SWELL_FFT_LOG2_SIZE 8
 #define SWELL_FFT_CASCADES 4
+// Sinusoids in each cascade's anti-tiling warp (src/ocean/spectral/
+// spectral_warp.h): enough directions that every wave direction and every
+// shift is decorrelated, few enough to cost little per vertex and pixel.
+#define SWELL_FFT_WARP_WAVES 6
 
 // Texture units, fixed for the same reason.
 #define SWELL_UNIT_SKY 0

@@ -4,15 +4,26 @@
 // level 0 (texelFetch with weights computed here: the hardware's filter
 // weights have too few bits to match the CPU), each cascade weighed by
 // whether the samples resolve its shortest wave; the normal comes from the
-// slopes, filtered by the footprint through their mipmaps.
+// slopes, filtered by the footprint through their mipmaps. Each cascade is
+// looked up at its anti-tiling warp's point x + w_c(x)
+// (src/ocean/spectral/spectral_warp.h), its slopes carried to the rest point
+// through the warp's Jacobian.
 #ifndef SWELL_OCEAN_SPECTRAL_GLSL
 #define SWELL_OCEAN_SPECTRAL_GLSL
 #include "swell/shader_constants.h"
+
+// One sinusoid of a cascade's warp: w += amplitude_m * sin(wavevector_radpm . x + phase).
+struct SpectralWarpWave {
+    vec2 wavevector_radpm;
+    vec2 amplitude_m;
+    float phaseAtCentre_rad; // at the grid centre (reduced on the CPU in double)
+};
 
 struct SpectralCascade {
     vec2 originTexels;          // the grid centre modulo the patch, texels
     float texelsPerMetre;       // N / L
     float shortestWavelength_m; // the shortest wave the cascade holds, m
+    SpectralWarpWave warp[SWELL_FFT_WARP_WAVES];
 };
 
 layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
@@ -61,6 +72,21 @@ float cascadeWeight(float shortestWavelength_m, float footprint_m)
                       SWELL_FULL_CELLS_PER_WAVELENGTH * footprint_m, shortestWavelength_m);
 }
 
+// swell::spectral::warpAt: where cascade c is looked up for a rest point
+// (texels), and the Jacobian of the lookup point (column j: d(x + w)/dx_j).
+vec2 warpedTexels(int c, vec2 restOffset_m, out mat2 jacobian)
+{
+    vec2 offset = vec2(0.0);
+    jacobian = mat2(1.0);
+    for (int i = 0; i < SWELL_FFT_WARP_WAVES; ++i) {
+        SpectralWarpWave w = cascades[c].warp[i];
+        float phase = w.phaseAtCentre_rad + dot(w.wavevector_radpm, restOffset_m);
+        offset += w.amplitude_m * sin(phase);
+        jacobian += outerProduct(w.amplitude_m, w.wavevector_radpm) * cos(phase);
+    }
+    return cascades[c].originTexels + (restOffset_m + offset) * cascades[c].texelsPerMetre;
+}
+
 vec4 bilinearDisplacement(vec2 s, int cascade)
 {
     vec2 cell = floor(s);
@@ -81,30 +107,42 @@ vec4 bilinearDisplacement(vec2 s, int cascade)
 // cascade holds (Elfouhaily et al. 1997), as the highlight's spread.
 SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightScale)
 {
-    vec4 slopes = vec4(0.0);       // dDy/dx, dDy/dz, dDx/dx, dDz/dz
-    float crossSlope = 0.0;        // dDx/dz from the filtered fields
+    // Gradients along rest x and z, each (d/dx, d/dz).
+    vec2 gradDx = vec2(0.0), gradDy = vec2(0.0), gradDz = vec2(0.0);
     float foam = 0.0;
-    float slopeVariance = unresolvedSlopeVariance;
+    float slopeVariance = 0.0;
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         SpectralCascade cascade = cascades[c];
-        vec2 s = cascade.originTexels + restOffset_m * cascade.texelsPerMetre;
+        mat2 jacobian;
+        vec2 s = warpedTexels(c, restOffset_m, jacobian);
         float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
         // Sample centres sit at integer texels: shift by half a texel for the
         // hardware's filter, and pick the mip the footprint covers.
         vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
         float lod = log2(max(footprint_m * cascade.texelsPerMetre, 1.0));
-        vec4 d = textureLod(oceanDerivatives, uvw, lod);
-        vec2 meanSquare = textureLod(oceanSlopeMoments, uvw, lod).xy;
-        slopeVariance += max(meanSquare.x - d.x * d.x, 0.0) + max(meanSquare.y - d.y * d.y, 0.0);
-        slopes += d;
-        crossSlope += textureLod(oceanDisplacement, uvw, 0.0).w * weight;
+        vec4 d = textureLod(oceanDerivatives, uvw, lod); // dDy/dx, dDy/dz, dDx/dx, dDz/dz in the patch
+        vec3 moments = textureLod(oceanSlopeMoments, uvw, lod).xyz;
+        float crossSlope = textureLod(oceanDisplacement, uvw, 0.0).w * weight; // dDx/dz = dDz/dx
+        // The chain rule through the warp: d/dx_j = (d/ds) . jacobian[j].
+        vec2 slope = d.xy, alongDx = vec2(d.z, crossSlope), alongDz = vec2(crossSlope, d.w);
+        for (int j = 0; j < 2; ++j) {
+            gradDx[j] += dot(alongDx, jacobian[j]);
+            gradDy[j] += dot(slope, jacobian[j]);
+            gradDz[j] += dot(alongDz, jacobian[j]);
+        }
+        // The slopes' covariance over the footprint, carried the same way:
+        // the trace of J^T C J.
+        mat2 covariance = mat2(max(moments.x - d.x * d.x, 0.0), moments.z - d.x * d.y,
+                               moments.z - d.x * d.y, max(moments.y - d.y * d.y, 0.0));
+        slopeVariance += max(dot(jacobian[0], covariance * jacobian[0]) + dot(jacobian[1], covariance * jacobian[1]), 0.0);
         foam = max(foam, textureLod(oceanFoam, uvw, lod).r);
     }
-    slopes *= heightScale;
-    slopeVariance *= heightScale * heightScale;
-    crossSlope *= heightScale;
-    vec3 alongX = vec3(1.0 + slopes.z, slopes.x, crossSlope);
-    vec3 alongZ = vec3(crossSlope, slopes.y, 1.0 + slopes.w);
+    gradDx *= heightScale;
+    gradDy *= heightScale;
+    gradDz *= heightScale;
+    slopeVariance = (slopeVariance + unresolvedSlopeVariance) * heightScale * heightScale;
+    vec3 alongX = vec3(1.0 + gradDx.x, gradDy.x, gradDz.x);
+    vec3 alongZ = vec3(gradDx.y, gradDy.y, 1.0 + gradDz.y);
     foam *= heightScale * foamDetail(restOffset_m, footprint_m);
     return SurfacePoint(vec3(0.0), normalize(cross(alongZ, alongX)), foam, alongX, alongZ, slopeVariance);
 }
@@ -113,11 +151,11 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
 {
     vec4 displacement = vec4(0.0); // Dx, Dy, Dz, dDx/dz
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
-        SpectralCascade cascade = cascades[c];
-        vec2 s = cascade.originTexels + restOffset_m * cascade.texelsPerMetre;
-        float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
-        if (weight > 0.0)
-            displacement += weight * bilinearDisplacement(s, c);
+        float weight = cascadeWeight(cascades[c].shortestWavelength_m, footprint_m);
+        if (weight > 0.0) {
+            mat2 jacobian;
+            displacement += weight * bilinearDisplacement(warpedTexels(c, restOffset_m, jacobian), c);
+        }
     }
     SurfacePoint p = spectralSlopes(restOffset_m, footprint_m, heightScale);
     p.displacement = displacement.xyz * heightScale;

@@ -3,7 +3,7 @@
 // spectrum and from the heightfield (Pierson & Moskowitz 1964; the JONSWAP
 // fetch law), the phase speed of the transformed field (the dispersion
 // relation), and the slope variance it resolves plus what the spectrum holds
-// beyond it (Cox & Munk 1954).
+// beyond it (Cox & Munk 1954). Tiling: test_spectral_tiling.cpp.
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
 #include "published_sea_laws.h"
@@ -279,111 +279,7 @@ TEST(SpectralStatistics, ResolvedPlusUnresolvedSlopeIsCoxAndMunk)
     }
 }
 
-// ---------------------------------------------------------------------------
-// Tiling
-
-// The normalised autocorrelation of the combined heightfield at a shift:
-// over the whole plane, sum |hhat(k)|^2*cos(k.shift) / sum |hhat(k)|^2 over
-// every cascade's wave vectors (cross terms between cascades average out,
-// since their bands are disjoint and the patch ratios irrational-looking),
-// with hhat(k) read back from the CPU twin's height fields by a forward
-// transform. Only waves shorter than shortestFrom_m count (|k| >=
-// 2*pi/shortestFrom_m): two points one patch L apart are correlated by every
-// wave much longer than L whether or not anything repeats, so a patch's
-// repetition is judged on the waves that fit in it.
-struct Spectrum2 {
-    std::vector<double> kx, kz, power;
-};
-Spectrum2 powerOf(const CpuSurface::Fields& f, const std::array<Cascade, kCascades>& cascades, int onlyCascade = -1)
-{
-    Spectrum2 s;
-    for (int c = 0; c < kCascades; ++c) {
-        if (onlyCascade >= 0 && c != onlyCascade)
-            continue;
-        const auto x = forwardTransform(f.values[size_t(c)][kDy]);
-        const double dk = k2Pi / cascades[size_t(c)].patch_m;
-        for (size_t i = 0; i < x.size(); ++i) {
-            const double p = std::norm(std::complex<double>(x[i]));
-            if (p == 0.0)
-                continue;
-            s.kx.push_back(dk * frequencyOf(int(i) % kSize));
-            s.kz.push_back(dk * frequencyOf(int(i) / kSize));
-            s.power.push_back(p);
-        }
-    }
-    return s;
-}
-double autocorrelation(const Spectrum2& s, double shiftX_m, double shiftZ_m, double shortestFrom_m)
-{
-    const double kMin = k2Pi / shortestFrom_m;
-    double num = 0.0, den = 0.0;
-    for (size_t i = 0; i < s.power.size(); ++i) {
-        if (std::hypot(s.kx[i], s.kz[i]) < kMin * (1.0 - 1e-9))
-            continue;
-        num += s.power[i] * std::cos(s.kx[i] * shiftX_m + s.kz[i] * shiftZ_m);
-        den += s.power[i];
-    }
-    return num / den;
-}
-
-// The worst autocorrelation at a shift of cascade c's patch (along x, z and
-// the diagonal, all of them periods of that patch), for a sea.
-double worstAtPatch(const Spectrum2& s, double patch_m)
-{
-    return std::max({autocorrelation(s, patch_m, 0.0, patch_m), autocorrelation(s, 0.0, patch_m, patch_m),
-                     autocorrelation(s, patch_m, patch_m, patch_m)});
-}
-
-// The measure itself: one cascade alone repeats exactly at its patch (1.0)
-// and not at an irrational fraction of it.
-TEST(SpectralStatistics, AutocorrelationOfOnePatchIsOneAtItsPeriod)
-{
-    const SeaSpectrum sea(windOf(10.0, kFullyDeveloped_km));
-    auto field = std::make_shared<const SpectralField>(makeSpectralField(sea, 1.0, 1));
-    CpuSurface surface(field);
-    const double patch_m = field->cascades[0].patch_m;
-    const Spectrum2 one = powerOf(surface.fieldsAt(0.0), field->cascades, 0);
-    EXPECT_NEAR(autocorrelation(one, patch_m, 0.0, patch_m), 1.0, 1e-9);
-    EXPECT_NEAR(autocorrelation(one, patch_m, patch_m, patch_m), 1.0, 1e-9);
-    EXPECT_LT(autocorrelation(one, patch_m / std::numbers::sqrt2, 0.0, patch_m), 0.3);
-}
-
-void measureTiling(int firstCascade)
-{
-    for (const SeaCase& sc : kCases) {
-        const SeaSpectrum sea(windOf(sc.windSpeed_mps, sc.fetch_km));
-        auto field = std::make_shared<const SpectralField>(makeSpectralField(sea, 1.0, 1));
-        CpuSurface surface(field);
-        const Spectrum2 all = powerOf(surface.fieldsAt(0.0), field->cascades);
-        std::printf("U10 %4.1f m/s fetch %6.0f km: autocorrelation at each patch (x, z, diagonal):", sc.windSpeed_mps,
-                    sc.fetch_km);
-        for (int c = 0; c < kCascades; ++c) {
-            const double patch_m = field->cascades[size_t(c)].patch_m;
-            std::printf(" L%d %.1f m: %.2f %.2f %.2f;", c, patch_m, autocorrelation(all, patch_m, 0.0, patch_m),
-                        autocorrelation(all, 0.0, patch_m, patch_m), autocorrelation(all, patch_m, patch_m, patch_m));
-            if (c >= firstCascade) {
-                EXPECT_LE(worstAtPatch(all, patch_m), 0.3)
-                    << sc.windSpeed_mps << " m/s, " << sc.fetch_km << " km, cascade " << c;
-            }
-        }
-        std::printf("\n");
-    }
-}
-
-// Every cascade but the largest: the waves of each patch's scale mostly come
-// from the cascade above it, so its own repetition is a small part of them.
-TEST(SpectralStatistics, SmallerPatchesDoNotRepeatVisibly) { measureTiling(1); }
-
-// The criterion for every patch. DISABLED: it fails for the largest
-// patch (0.86 to 0.95 at these seas), which holds 86-94% of the variance. No
-// layout tried meets it for every sea while keeping centimetre waves (expected
-// values from the sampled spectrum, worst over these 10 seas): the energetic
-// waves split among 3 large cascades in interleaved rings of |k| give 0.37-0.45
-// but leave one cascade for the rest, which then stops at 0.26-4.2 m; 4 large
-// cascades plus 2 for the short waves (SWELL_FFT_CASCADES 6) give 0.26-0.59
-// and 5 plus 2 give 0.35-0.64 depending on the rings' widths (narrow rings
-// are coherent over long distances), and polar cells instead of rings
-// 0.35-0.48. Enable with a layout, or an anti-tiling scheme, that meets it.
-TEST(SpectralStatistics, DISABLED_NoPatchRepeatsVisibly) { measureTiling(0); }
+// Tiling: tests/cpu/test_spectral_tiling.cpp measures the autocorrelation on
+// the drawn surface itself, with the anti-tiling warp.
 
 } // namespace

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <memory>
 
 namespace {
@@ -43,6 +45,54 @@ TEST(SpectralTwin, DisplacementWithoutDerivativesEqualsTheFullQuery)
             for (int v = 0; v < 8; ++v)
                 EXPECT_EQ(lazy.fieldsAt(time_s).values[size_t(c)][size_t(v)], eager.fieldsAt(time_s).values[size_t(c)][size_t(v)]);
     }
+}
+
+} // namespace
+
+namespace {
+
+// The normal the twin gives is that of the surface its displacements draw:
+// the cross product of central differences of rest point + displacement along
+// rest x and z. The cascades are looked up at warped points, so the slopes
+// reach the rest point only through the warp's Jacobian (the chain rule):
+// with the warp made 4 times stronger than drawn, so that leaving the
+// Jacobian out would tilt the normals by about a quarter of their slope,
+// they must still agree. One wave alone, 181 texels long: the slope of a
+// bilinear displacement is constant across a texel, so it differs from the
+// interpolated slope by up to k*texel/2 = 1.7% of the wave's largest slope.
+TEST(SpectralTwin, NormalIsTheDrawnSurfacesThroughTheWarp)
+{
+    swell::WindSettings wind;
+    wind.windSpeed_mps = 11.0;
+    auto field = std::make_shared<SpectralField>(makeSpectralField(swell::SeaSpectrum(wind), 0.8, 3, 4.0));
+    for (int c = 0; c < kCascades; ++c) {
+        std::fill(field->h0[size_t(c)].begin(), field->h0[size_t(c)].end(), std::complex<float>(0.0f));
+        std::fill(field->h0MinusConj[size_t(c)].begin(), field->h0MinusConj[size_t(c)].end(), std::complex<float>(0.0f));
+    }
+    const double patch_m = field->cascades[0].patch_m;
+    // f = (1, 1): a wave along the diagonal, L0/sqrt(2) long, 2.2 m high.
+    // Its partner at -k carries conj(h0(k)), so the fields stay real.
+    field->h0[0][size_t(sampleIndex(1, 1))] = {1.0f, 0.5f};
+    field->h0MinusConj[0][size_t(sampleIndex(-1, -1))] = {1.0f, -0.5f};
+    const CpuSurface surface(field);
+    const double texel_m = patch_m / kSize;
+    const double h = 1e-3 * texel_m;
+    double worst = 0.0, steepest = 0.0;
+    constexpr int kPoints = 400;
+    for (int i = 0; i < kPoints; ++i) {
+        // Spread over ten patches, where the warp takes every value.
+        const glm::dvec2 p = glm::dvec2(std::fmod(37.31 * i, 10.0), std::fmod(53.77 * i, 10.0)) * patch_m;
+        auto at = [&](glm::dvec2 q) { return glm::dvec3(q.x, 0.0, q.y) + surface.displacementAt(q, 10.0, {}); };
+        const glm::dvec3 alongX = (at(p + glm::dvec2(h, 0.0)) - at(p - glm::dvec2(h, 0.0))) / (2.0 * h);
+        const glm::dvec3 alongZ = (at(p + glm::dvec2(0.0, h)) - at(p - glm::dvec2(0.0, h))) / (2.0 * h);
+        const glm::dvec3 expected = glm::normalize(glm::cross(alongZ, alongX));
+        const glm::dvec3 normal = surface.surfaceAt(p, 10.0, {}).normal;
+        steepest = std::max(steepest, std::hypot(expected.x, expected.z));
+        worst = std::max(worst, glm::length(normal - expected));
+    }
+    std::printf("one wave, warp x4: worst normal difference %.2e, %.3f of the steepest slope %.4f\n", worst,
+                worst / steepest, steepest);
+    EXPECT_LT(worst / steepest, 0.03);
 }
 
 } // namespace

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -233,6 +234,18 @@ swell::WaveSet ripples()
     return set;
 }
 
+// The scene with the box and without it, seen by one renderer from one
+// camera at t = 3 s: what the box adds is where the two differ.
+std::pair<swell::Image, swell::Image> renderWithAndWithout(const swell::Scene& withBox, const swell::Scene& without,
+                                                           const swell::Camera& camera)
+{
+    swell::Renderer renderer(withBox);
+    const double time_s = 3.0;
+    swell::Image with = renderer.renderImage(camera, time_s, kSize);
+    renderer.setScene(without);
+    return {std::move(with), renderer.renderImage(camera, time_s, kSize)};
+}
+
 TEST_P(Reflection, RippledWaterKeepsTheBoxWithinWhatTheSlopesAllow)
 {
     const swell::WaveSet set = ripples();
@@ -259,11 +272,7 @@ TEST_P(Reflection, RippledWaterKeepsTheBoxWithinWhatTheSlopesAllow)
     swell::Scene without = withBox;
     without.objects.clear();
     const swell::Camera camera = swell::cameraAt(withBox.camera, 0.0);
-    swell::Renderer renderer(withBox);
-    const double time_s = 3.0;
-    const swell::Image with = renderer.renderImage(camera, time_s, kSize);
-    renderer.setScene(without);
-    const swell::Image withoutImage = renderer.renderImage(camera, time_s, kSize);
+    const auto [with, withoutImage] = renderWithAndWithout(withBox, without, camera);
 
     // 2 px as on calm water, plus the angle the slopes allow in pixels.
     const Tally t = judge(
@@ -360,6 +369,7 @@ TEST_F(ReflectionRayMarch, EveryReflectedPixelHasAFacetThatSendsItsRayToTheBox)
     swell::Scene without = withBox;
     withBox.objects.push_back({boxModel().string(), centre_m, 0.0, 1.0, false});
     const swell::Camera camera = swell::cameraAt(withBox.camera, 0.0);
+    // One renderer for both images and the facets' waves.
     swell::Renderer renderer(withBox);
     const double time_s = 3.0;
     const swell::Image with = renderer.renderImage(camera, time_s, kSize);

@@ -65,45 +65,80 @@ void CpuSurface::transform(int firstPacked, int lastPacked) const
         }
 }
 
-void CpuSurface::sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, int fieldCount,
-                        double* sum) const
+namespace {
+
+// Field v of one cascade at texel position (sx, sz), bilinear, the patch
+// repeating every kSize texels.
+struct Bilinear {
+    size_t i00, i01, i10, i11; // (row, column) 00, 01, 10, 11
+    double fx, fz;
+    Bilinear(double sx, double sz)
+    {
+        const double x0 = std::floor(sx), z0 = std::floor(sz);
+        fx = sx - x0;
+        fz = sz - z0;
+        auto wrap = [](double v) { return int(v - kSize * std::floor(v / kSize)); };
+        const int c0 = wrap(x0), c1 = (c0 + 1) % kSize, r0 = wrap(z0), r1 = (r0 + 1) % kSize;
+        i00 = size_t(r0) * kSize + size_t(c0);
+        i01 = size_t(r0) * kSize + size_t(c1);
+        i10 = size_t(r1) * kSize + size_t(c0);
+        i11 = size_t(r1) * kSize + size_t(c1);
+    }
+    double operator()(const std::vector<float>& a) const
+    {
+        const double top = a[i00] * (1.0 - fx) + a[i01] * fx;
+        const double bottom = a[i10] * (1.0 - fx) + a[i11] * fx;
+        return top * (1.0 - fz) + bottom * fz;
+    }
+};
+
+} // namespace
+
+void CpuSurface::sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
+                        Sample& out) const
 {
-    for (int v = 0; v < fieldCount; ++v)
-        sum[v] = 0.0;
+    out = Sample{};
     for (int c = 0; c < kCascades; ++c) {
         const Cascade& cascade = field_->cascades[size_t(c)];
         const double weight = cascadeWeight(cascade, filter.footprint_m);
         if (weight <= 0.0)
             continue;
+        // The anti-tiling warp: the cascade is looked up at x + w_c(x).
+        const WarpSample warp = warpAt(field_->warps[size_t(c)], restPoint_m);
         // Sample (col, row) holds world (col, row) * L/N, repeating every L.
         const double scale = kSize / cascade.patch_m;
-        const double sx = restPoint_m.x * scale, sz = restPoint_m.y * scale;
-        const double x0 = std::floor(sx), z0 = std::floor(sz);
-        const double fx = sx - x0, fz = sz - z0;
-        auto wrap = [](double v) { return int(v - kSize * std::floor(v / kSize)); };
-        const int c0 = wrap(x0), c1 = (c0 + 1) % kSize, r0 = wrap(z0), r1 = (r0 + 1) % kSize;
-        for (int v = 0; v < fieldCount; ++v) {
-            const std::vector<float>& a = f.values[size_t(c)][size_t(v)];
-            const double top = a[size_t(r0) * kSize + size_t(c0)] * (1.0 - fx) + a[size_t(r0) * kSize + size_t(c1)] * fx;
-            const double bottom = a[size_t(r1) * kSize + size_t(c0)] * (1.0 - fx) + a[size_t(r1) * kSize + size_t(c1)] * fx;
-            sum[v] += weight * (top * (1.0 - fz) + bottom * fz);
+        const glm::dvec2 s = (restPoint_m + warp.offset_m) * scale;
+        const Bilinear at(s.x, s.y);
+        const auto& v = f.values[size_t(c)];
+        out.displacement_m += weight * glm::dvec3(at(v[0]), at(v[1]), at(v[2]));
+        if (!derivatives)
+            continue;
+        // Gradients in the patch (d/ds_x, d/ds_z) to gradients at the rest
+        // point through the warp's Jacobian (the chain rule): d/dx_j = grad_s . J[j].
+        const double dxz = at(v[3]);
+        const glm::dvec2 gradDx(at(v[6]), dxz), gradDy(at(v[4]), at(v[5])), gradDz(dxz, at(v[7]));
+        for (int j = 0; j < 2; ++j) {
+            out.gradDx[j] += weight * glm::dot(gradDx, warp.jacobian[j]);
+            out.gradDy[j] += weight * glm::dot(gradDy, warp.jacobian[j]);
+            out.gradDz[j] += weight * glm::dot(gradDz, warp.jacobian[j]);
         }
     }
-    for (int v = 0; v < fieldCount; ++v)
-        sum[v] *= filter.heightScale;
+    out.displacement_m *= filter.heightScale;
+    out.gradDx *= filter.heightScale;
+    out.gradDy *= filter.heightScale;
+    out.gradDz *= filter.heightScale;
 }
 
 SurfacePoint CpuSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     std::lock_guard lock(mutex_);
-    // Packed order -> field: 0 Dx, 1 Dy, 2 Dz, 3 Dxz, 4 Dyx, 5 Dyz, 6 Dxx, 7 Dzz.
-    double sum[8];
-    sample(fieldsFor(time_s, true), restPoint_m, filter, 8, sum);
+    Sample sum;
+    sample(fieldsFor(time_s, true), restPoint_m, filter, true, sum);
     SurfacePoint p;
-    p.displacement_m = {sum[0], sum[1], sum[2]};
+    p.displacement_m = sum.displacement_m;
     // The displaced surface's tangents along rest x and rest z.
-    const glm::dvec3 alongX(1.0 + sum[6], sum[4], sum[3]);
-    const glm::dvec3 alongZ(sum[3], sum[5], 1.0 + sum[7]);
+    const glm::dvec3 alongX(1.0 + sum.gradDx.x, sum.gradDy.x, sum.gradDz.x);
+    const glm::dvec3 alongZ(sum.gradDx.y, sum.gradDy.y, 1.0 + sum.gradDz.y);
     p.normal = glm::normalize(glm::cross(alongZ, alongX));
     return p;
 }
@@ -111,9 +146,9 @@ SurfacePoint CpuSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const 
 glm::dvec3 CpuSurface::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     std::lock_guard lock(mutex_);
-    double sum[3];
-    sample(fieldsFor(time_s, false), restPoint_m, filter, 3, sum);
-    return {sum[0], sum[1], sum[2]};
+    Sample sum;
+    sample(fieldsFor(time_s, false), restPoint_m, filter, false, sum);
+    return sum.displacement_m;
 }
 
 } // namespace swell::spectral

@@ -1,6 +1,7 @@
 // The spectral ocean's CPU twin: the same spectra the GPU evolves, inverse
 // transformed with kissfft, sampled with the same bilinear weights and the
-// same per-cascade LOD weights as shaders/ocean/spectral.glsl. The fields
+// same per-cascade LOD weights as shaders/ocean/spectral.glsl, each cascade
+// at its anti-tiling warp's point (spectral_warp.h). The fields
 // for one time are computed when first asked for and kept until another
 // time is asked for; the derivative fields (for normals) only when a query
 // needs them, which halves the cost of a frame whose queries are heights.
@@ -58,8 +59,15 @@ private:
     const Fields& fieldsFor(double time_s, bool derivatives) const;
     // Inverse-transforms packed spectra [first, last) of every cascade into fields_.
     void transform(int firstPacked, int lastPacked) const;
-    // Sums the first fieldCount fields at a rest point, LOD weights and bilinear weights applied.
-    void sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, int fieldCount, double* sum) const;
+    // The displacement at a rest point and, with derivatives, its gradients
+    // along rest x and z: every cascade's bilinear sample at its warped
+    // point, LOD weights applied, gradients through the warp's Jacobian.
+    struct Sample {
+        glm::dvec3 displacement_m{0.0};                       // Dx, Dy, Dz, m
+        glm::dvec2 gradDx{0.0}, gradDy{0.0}, gradDz{0.0}; // (d/dx, d/dz), dimensionless
+    };
+    void sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
+                Sample& out) const;
     void* fft_ = nullptr; // kiss_fftnd_cfg
 };
 

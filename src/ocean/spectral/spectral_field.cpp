@@ -100,7 +100,7 @@ std::array<Cascade, kCascades> cascadeLayout(double peakWavelength_m)
     return c;
 }
 
-SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::uint32_t seed)
+SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::uint32_t seed, double warpStrength)
 {
     SpectralField f;
     // The longest peak of the sea's components (the wind sea, a swell).
@@ -112,6 +112,8 @@ SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::
     f.choppiness = choppiness;
     std::mt19937 rng(seed);
     double sumAbs = 0.0;
+    // Per cascade: the variance-weighted mean wavelength, what its warp must turn.
+    std::array<double, kCascades> patches_m{}, meanWavelength_m{};
     for (int c = 0; c < kCascades; ++c) {
         const Cascade& cascade = f.cascades[size_t(c)];
         const double dk = kTwoPi / cascade.patch_m;
@@ -141,7 +143,19 @@ SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::
                 f.h0MinusConj[size_t(c)][i] = std::complex<float>(std::conj(h0[mirrored]));
                 sumAbs += std::abs(h0[i]) + std::abs(h0[mirrored]);
             }
+        double variance = 0.0, weighted_m = 0.0;
+        for (int row = 0; row < kSize; ++row)
+            for (int col = 0; col < kSize; ++col) {
+                const double p = std::norm(h0[size_t(row) * kSize + size_t(col)]);
+                if (p == 0.0)
+                    continue;
+                variance += p;
+                weighted_m += p * cascade.patch_m / std::hypot(double(frequencyOf(row)), double(frequencyOf(col)));
+            }
+        patches_m[size_t(c)] = cascade.patch_m;
+        meanWavelength_m[size_t(c)] = variance > 0.0 ? weighted_m / variance : cascade.shortestWavelength_m();
     }
+    f.warps = makeWarps(patches_m, meanWavelength_m, seed, warpStrength);
     f.verticalReach_m = sumAbs;
     f.horizontalReach_m = choppiness * sumAbs;
     f.unresolvedSlopeVariance = unresolvedSlopeVariance(sea, f.cascades.back().shortestWavelength_m());

@@ -17,6 +17,7 @@
 // with the sign that moves points towards the crests, as Gerstner waves do).
 #pragma once
 
+#include "ocean/spectral/spectral_warp.h"
 #include "swell/shader_constants.h"
 #include "swell/spectrum.h"
 
@@ -76,11 +77,17 @@ struct SpectralField {
     // Mean square slope of the waves shorter than the last cascade holds
     // (unresolvedSlopeVariance()), dimensionless: shading adds it as roughness.
     double unresolvedSlopeVariance = 0.0;
+    // Each cascade is looked up at x + w_c(x) (spectral_warp.h), so the sum
+    // does not repeat with any patch.
+    std::array<CascadeWarp, kCascades> warps{};
 };
 
 // Draws the field of a sea. The same spectrum, choppiness and seed give
 // bit-identical fields (std::mt19937 and a Box-Muller written here).
-SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::uint32_t seed);
+// warpStrength scales the anti-tiling warp (0: none, each cascade repeats
+// with its patch; tests compare the two).
+SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::uint32_t seed,
+                                double warpStrength = 1.0);
 
 // The complex spectra of one cascade at time t, packed two real fields to a
 // complex sample (the real part of the transform is the first field, the

@@ -25,11 +25,19 @@ using namespace spectral;
 namespace {
 
 // Mirrors the std140 block SpectralCascades in shaders/ocean/spectral.glsl.
+struct alignas(16) WarpWaveUniform {
+    glm::vec2 wavevector_radpm;
+    glm::vec2 amplitude_m;
+    float phaseAtCentre_rad; // at the grid centre, reduced modulo 2*pi in double
+};
+static_assert(sizeof(WarpWaveUniform) == 32);
 struct alignas(16) CascadeUniform {
     glm::vec2 originTexels;     // the grid centre modulo the patch, in texels
     float texelsPerMetre;       // N / L
     float shortestWavelength_m; // what the LOD weight tests
+    WarpWaveUniform warp[kWarpWaves];
 };
+static_assert(sizeof(CascadeUniform) == 16 + 32 * kWarpWaves);
 struct alignas(16) SpectralUniforms {
     CascadeUniform cascades[kCascades];
     glm::vec2 windDirection;
@@ -126,7 +134,14 @@ public:
             const double scale = kSize / cascade.patch_m;
             // In double: the centre may be far from the origin.
             const glm::dvec2 origin = gridCenter_m - cascade.patch_m * glm::floor(gridCenter_m / cascade.patch_m);
-            u.cascades[c] = {glm::vec2(origin * scale), float(scale), float(cascade.shortestWavelength_m())};
+            CascadeUniform& uc = u.cascades[c];
+            uc.originTexels = glm::vec2(origin * scale);
+            uc.texelsPerMetre = float(scale);
+            uc.shortestWavelength_m = float(cascade.shortestWavelength_m());
+            for (int i = 0; i < kWarpWaves; ++i) {
+                const WarpWave& w = field_->warps[size_t(c)][size_t(i)];
+                uc.warp[i] = {glm::vec2(w.wavevector_radpm), glm::vec2(w.amplitude_m), float(warpPhaseAt(w, gridCenter_m))};
+            }
         }
         const double wind_rad = settings_.wind.windDirection_deg * kPi / 180.0;
         u.windDirection = glm::vec2(std::cos(wind_rad), std::sin(wind_rad));
