@@ -227,6 +227,8 @@ struct Results {
     std::vector<LodSample> lod;
     std::vector<TermVariant> terms;      // empty when not measured (--no-terms)
     std::vector<ReflectionModeCost> reflectionModes;
+    int floatingBodies = 0;
+    std::vector<long long> bodySteps; // per measured frame, all bodies (Renderer::counters())
 };
 
 void printReport(const Results& results);

@@ -1,10 +1,11 @@
-// `swell bench`: renders the default scene headless along a fixed camera path
+// `swell bench`: renders a scene (the default one unless named) headless along a fixed camera path
 // and reports, for each pass, its wall time, what the driver counted, its cost
 // relative to a floor frame with trivial shading, and how well the water
 // grid's level of detail fits the view. docs/PERFORMANCE.md explains the figures.
 #include "bench.h"
 #include "commands.h"
 #include "progress.h"
+#include "scene_loading.h"
 
 #include "swell/error.h"
 #include "swell/gl/context.h"
@@ -123,7 +124,7 @@ int runBench(const BenchOptions& options)
             throw InputError({"--json"}, fmt::format("cannot write '{}': '{}' is not a writable folder",
                                                      options.jsonPath, folder.string()));
     }
-    Scene scene = defaultScene();
+    Scene scene = loadSceneOrDefault(options.scenePath);
     options.outputSettings.applyTo(scene);
     // No debug context: its checks would be part of what is measured. GL
     // errors are polled after each stage instead.
@@ -183,6 +184,8 @@ int runBench(const BenchOptions& options)
         if (measured) {
             r.real.push_back(std::move(frame));
             r.realTimes_s.push_back(t);
+            r.bodySteps.push_back(renderer.counters().bodySteps);
+            r.floatingBodies = renderer.counters().floatingBodies;
             r.realCameras.push_back(camera);
         }
         progress.advance();

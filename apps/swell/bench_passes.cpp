@@ -274,6 +274,8 @@ void FloorFrame::render(PassObserver& observer, bool waterline)
     // The wave model's own work for the frame: at the least, none.
     observer.beginPass("ocean");
     observer.endPass("ocean");
+    observer.beginPass("bodies");
+    observer.endPass("bodies");
 
     observer.beginPass("reflection");
     s.bind(s.reflection);

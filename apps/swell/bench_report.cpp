@@ -243,7 +243,12 @@ void printReport(const Results& r)
     row("frame", frameSeries(r.real, &FrameSample::wall_ms), frameSeries(r.real, &FrameSample::cpu_ms),
         frameSeries(r.floor, &FrameSample::wall_ms), frameSeries(r.floor, &FrameSample::cpu_ms), {});
     std::printf("  (an inner pass is part of the pass above it; the floor is each pass's target cleared and covered\n"
-                "   by one full-screen triangle of a constant colour)\n\n");
+                "   by one full-screen triangle of a constant colour)\n");
+    long long steps = 0;
+    for (long long s : r.bodySteps)
+        steps += s;
+    std::printf("  bodies: %d floating rigid bodies, %lld integration steps of 1/120 s over the measured frames\n\n",
+                r.floatingBodies, steps);
 
     if (!r.reflectionModes.empty()) {
         std::printf("Reflection lookup: the water pass with each reflection.mode, frame for frame in turn\n");
@@ -350,6 +355,8 @@ void writeJson(const Results& r, const std::string& path)
         pass["floor_counters_total"] = countersJson(passTotal(r.floor, name), r.pipelineStatistics);
     }
     j["passes"] = std::move(passes);
+    j["floating_bodies"] = r.floatingBodies;
+    j["body_steps_per_frame"] = r.bodySteps;
 
     const Summary frameReal = summarize(frameSeries(r.real, &FrameSample::wall_ms));
     const Summary frameFloor = summarize(frameSeries(r.floor, &FrameSample::wall_ms));

@@ -57,6 +57,7 @@ struct BenchOptions {
     // Every frame from the scene's own camera (the view `swell view` opens
     // on) instead of the camera path, to compare with the viewer.
     bool still = false;
+    std::string scenePath; // the scene benchmarked; empty: the built-in default
 };
 int runBench(const BenchOptions& options);
 

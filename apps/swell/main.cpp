@@ -109,7 +109,7 @@ int main(int argc, char** argv)
 
     swell::app::BenchOptions bench;
     std::string benchSize = "1280x720";
-    CLI::App* benchCommand = app.add_subcommand("bench", "Benchmark the default scene headless along a fixed camera path");
+    CLI::App* benchCommand = app.add_subcommand("bench", "Benchmark a scene (the default one unless named) headless along a fixed camera path");
     benchCommand->add_option("--size", benchSize, "Frame size, WIDTHxHEIGHT")->capture_default_str();
     benchCommand->add_option("--frames", bench.frames, "Measured frames")->check(CLI::Range(1, 100000))->capture_default_str();
     benchCommand->add_option("--warmup", bench.warmup, "Frames rendered first and not measured")
@@ -121,6 +121,8 @@ int main(int argc, char** argv)
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");
+    benchCommand->add_option("scene", bench.scenePath,
+                             "Scene file (TOML) to benchmark along the same camera path; the built-in default when omitted");
 
     try {
         app.parse(argc, argv);

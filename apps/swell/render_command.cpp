@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -126,6 +127,16 @@ int runRender(const RenderOptions& options)
 
     Scene scene = loadSceneOrDefault(options.scenePath);
     options.outputSettings.applyTo(scene);
+    // Floating bodies are stepped from t = 0 at 1/120 s (docs/BODIES.md):
+    // an hour of steps is about a minute of CPU per body, so a first frame
+    // much later would look like a hang.
+    constexpr double kLatestBodyStart_s = 3600.0;
+    const bool bodies = std::any_of(scene.objects.begin(), scene.objects.end(),
+                                    [](const SceneObject& o) { return o.isRigidBody(); });
+    if (bodies && options.time_s > kLatestBodyStart_s)
+        throw InputError({"--time"}, fmt::format("{} s: the scene's floating bodies are stepped from t = 0, so a first "
+                                                 "frame after {} s is refused",
+                                                 options.time_s, kLatestBodyStart_s));
     gl::HeadlessContext context(true);
     gl::DebugHandler debug = gl::logOnceDebugHandler();
     gl::installDebugHandler(&debug);

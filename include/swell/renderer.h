@@ -52,10 +52,13 @@ struct SWELL_API FrameCounters {
     long long waterTriangles = 0;
     long long worldTriangles = 0;
     int drawCalls = 0;
+    int floatingBodies = 0;  // rigid bodies in the scene (swell/floating_body.h)
+    long long bodySteps = 0; // their integration steps taken for this frame (1/120 s each, all bodies)
 };
 
 // Told when each pass of a frame begins and ends (for timing and counters).
-// Passes: "ocean" (the wave model's simulation for the frame), "reflection",
+// Passes: "ocean" (the wave model's simulation for the frame), "bodies" (the
+// floating bodies stepped on the CPU to the frame's time), "reflection",
 // "refraction", "main"; within "main", "water" for the water draw; then
 // "present" when the main pass's image is resolved, filtered or scaled.
 class SWELL_API PassObserver {

@@ -118,6 +118,22 @@ struct SWELL_API SceneObject {
     double yaw_deg = 0.0;             // rotation about +y, degrees
     double scale = 1.0;               // uniform scale, > 0
     bool floats = false;              // ride the waves (height and tilt from the CPU wave query)
+    // A floating rigid body (swell/floating_body.h, docs/BODIES.md) when
+    // floats is set and either of these is > 0: it heaves, rolls and pitches
+    // with inertia instead of sitting on the surface. Give one of the two.
+    double mass_kg = 0.0;               // kg, 0..1e9
+    double density_kg_per_m3 = 0.0;     // mean density of its closed volume, kg/m^3, 0..1e5
+    glm::dvec3 centerOfMassOffset_m{0.0}; // from the volume's centroid, model frame (unscaled), m
+    glm::dvec3 inertia_kg_m2{0.0};      // principal moments about the centre of mass, model axes; 0: from the mesh
+    glm::dvec3 velocity_m_per_s{0.0};   // m/s: carried at x, z (a boat under way); y: heave velocity at t = 0
+    double dampingRatio = 0.1;          // fraction of critical damping in heave, roll and pitch, 0..2
+    // The glTF node whose mesh is the model's closed hull volume: left out of
+    // the drawn model, drawn into depth only so no water shows inside an open
+    // hull, and the body's shape for buoyancy. Empty: none (built-ins bring their own).
+    std::string hullNode{};
+
+    // Whether this object is a floating rigid body.
+    bool isRigidBody() const { return floats && (mass_kg > 0.0 || density_kg_per_m3 > 0.0); }
 };
 
 struct SWELL_API CameraKey {

@@ -63,7 +63,7 @@ void GltfLoader::fail(const std::string& message, int line, int column) const
     throw InputError(SourcePlace{where_, line, column}, message);
 }
 
-MeshData GltfLoader::load()
+MeshData GltfLoader::load(std::string_view hullNode, MeshData* hull)
 {
     const std::string bytes = readFile();
     const bool binary = bytes.size() >= 4 && readU32(reinterpret_cast<const unsigned char*>(bytes.data())) == kGlbMagic;
@@ -87,7 +87,7 @@ MeshData GltfLoader::load()
 
     std::string cleaned = prepareJson(chunks, binary);
     parseWithTinygltf(std::move(cleaned), chunks, binary);
-    return assemble();
+    return assemble(hullNode, hull);
 }
 
 } // namespace gltf
@@ -95,6 +95,13 @@ MeshData GltfLoader::load()
 MeshData loadGltf(const std::filesystem::path& path)
 {
     return gltf::GltfLoader(path).load();
+}
+
+GltfModel loadGltf(const std::filesystem::path& path, std::string_view hullNode)
+{
+    GltfModel model;
+    model.mesh = gltf::GltfLoader(path).load(hullNode, &model.hull);
+    return model;
 }
 
 } // namespace swell::detail

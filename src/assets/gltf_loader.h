@@ -108,7 +108,7 @@ using ReadAheadFiles = std::map<std::string, ReadAhead>;
 class GltfLoader {
 public:
     explicit GltfLoader(const fs::path& path) : path_(path), where_(path.string()) {}
-    MeshData load();
+    MeshData load(std::string_view hullNode = {}, MeshData* hull = nullptr);
 
 private:
     [[noreturn]] void fail(const std::string& message, int line = 0, int column = 0) const;
@@ -170,7 +170,9 @@ private:
     };
     Shape shape(std::size_t m, std::size_t p) const;
     void addPrimitive(MeshData& out, std::size_t m, std::size_t p, const glm::dmat4& world, std::size_t node) const;
-    MeshData assemble() const;
+    // The drawn mesh; the primitives under the node named hullNode (when
+    // not empty) go to *hull instead.
+    MeshData assemble(std::string_view hullNode = {}, MeshData* hull = nullptr) const;
 
     fs::path path_;
     std::string where_;

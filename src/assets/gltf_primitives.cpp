@@ -174,36 +174,50 @@ void GltfLoader::addPrimitive(MeshData& out, std::size_t m, std::size_t p, const
         out.indices.push_back(base + i);
 }
 
-MeshData GltfLoader::assemble() const
+MeshData GltfLoader::assemble(std::string_view hullNode, MeshData* hull) const
 {
     // Pass 1: every primitive drawn, with its node's world transform.
     struct Instance {
         std::size_t node, mesh, primitive;
         glm::dmat4 world;
+        bool hull; // under the node named hullNode: the hull volume, not drawn
     };
     std::vector<Instance> instances;
     struct Item {
         std::size_t node;
         glm::dmat4 parent;
+        bool hull;
     };
+    bool hullFound = false;
     // Depth first in file order: roots and children go on in reverse.
     const std::vector<std::size_t> rootNodes = roots();
     std::vector<Item> stack;
     for (auto r = rootNodes.rbegin(); r != rootNodes.rend(); ++r)
-        stack.push_back({*r, glm::dmat4(1.0)});
+        stack.push_back({*r, glm::dmat4(1.0), false});
     while (!stack.empty()) {
         const Item item = stack.back();
         stack.pop_back();
         const tinygltf::Node& node = model_.nodes[item.node];
         const glm::dmat4 world = item.parent * localTransform(item.node);
+        const bool inHull = item.hull || (!hullNode.empty() && node.name == hullNode);
+        hullFound = hullFound || inHull;
         if (node.mesh >= 0)
             for (std::size_t p = 0; p < model_.meshes[std::size_t(node.mesh)].primitives.size(); ++p) {
                 if (instances.size() == kMaxPrimitiveInstances)
                     fail(fmt::format("model draws more than {} mesh primitives", kMaxPrimitiveInstances));
-                instances.push_back({item.node, std::size_t(node.mesh), p, world});
+                instances.push_back({item.node, std::size_t(node.mesh), p, world, inHull});
             }
         for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
-            stack.push_back({std::size_t(*c), world});
+            stack.push_back({std::size_t(*c), world, inHull});
+    }
+
+    if (!hullNode.empty() && !hullFound) {
+        std::string names;
+        for (const tinygltf::Node& n : model_.nodes)
+            if (!n.name.empty() && names.size() < 200)
+                names += (names.empty() ? "'" : ", '") + printable(n.name) + "'";
+        fail(fmt::format("hull_node: no node named '{}' in the scene drawn; its named nodes: {}", printable(hullNode),
+                         names.empty() ? "none" : names));
     }
 
     // The totals, checked against the limits before anything is read.
@@ -225,9 +239,11 @@ MeshData GltfLoader::assemble() const
     out.vertices.reserve(std::size_t(*vertices));
     out.indices.reserve(std::size_t(*indices));
     for (const Instance& i : instances)
-        addPrimitive(out, i.mesh, i.primitive, i.world, i.node);
+        addPrimitive(i.hull && hull ? *hull : out, i.mesh, i.primitive, i.world, i.node);
     if (out.indices.empty())
-        fail("model has no triangles to draw");
+        fail(hullNode.empty() ? "model has no triangles to draw" : "model has no triangles to draw besides its hull");
+    if (hull && !hullNode.empty() && hull->indices.empty())
+        fail(fmt::format("hull_node: node '{}' and its children have no triangles", printable(hullNode)));
     return out;
 }
 

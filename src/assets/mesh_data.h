@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace swell::detail {
@@ -38,5 +39,15 @@ MeshData makeBuiltinHullVolume(const std::string& name);
 // Loads every mesh of a glTF 2.0 file (.gltf or .glb) into one MeshData, with
 // node transforms applied. Throws swell::InputError naming the file and problem.
 MeshData loadGltf(const std::filesystem::path& path);
+
+// A glTF model with a declared hull (SceneObject::hullNode): the primitives
+// under the node named hullNode (it and its children), in model space, are
+// the closed hull volume and are left out of the drawn mesh. Throws
+// swell::InputError when no node has that name or it has no triangles.
+struct GltfModel {
+    MeshData mesh;
+    MeshData hull;
+};
+GltfModel loadGltf(const std::filesystem::path& path, std::string_view hullNode);
 
 } // namespace swell::detail

@@ -89,8 +89,10 @@ SceneAssets loadSceneAssets(const Scene& scene)
     std::map<std::string, ObjectAssets> byPath;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const std::string& path = scene.objects[i].path;
+        const std::string& hullNode = scene.objects[i].hullNode;
         const std::string key = fmt::format("objects[{}].path", i);
-        auto found = byPath.find(path);
+        // The same file with another hull node is another model.
+        auto found = byPath.find(path + '\0' + hullNode);
         if (found == byPath.end()) {
             ObjectAssets object;
             if (path.starts_with(kBuiltinObjectPrefix)) {
@@ -99,14 +101,18 @@ SceneAssets loadSceneAssets(const Scene& scene)
                 if (object.mesh->vertices.empty())
                     reader.fail(key, path, {path}, "not a built-in model");
                 object.hullVolume = std::make_shared<const MeshData>(makeBuiltinHullVolume(name));
-            } else {
+            } else if (hullNode.empty()) {
                 object.mesh = reader.read(key, path, [](const fs::path& file) {
                     return std::make_shared<const MeshData>(loadGltf(file));
                 });
                 object.hullVolume = std::make_shared<const MeshData>();
+            } else {
+                GltfModel model = reader.read(key, path, [&](const fs::path& file) { return loadGltf(file, hullNode); });
+                object.mesh = std::make_shared<const MeshData>(std::move(model.mesh));
+                object.hullVolume = std::make_shared<const MeshData>(std::move(model.hull));
             }
-            object.reach_m = reachOf(*object.mesh);
-            found = byPath.emplace(path, std::move(object)).first;
+            object.reach_m = std::max(reachOf(*object.mesh), reachOf(*object.hullVolume));
+            found = byPath.emplace(path + '\0' + hullNode, std::move(object)).first;
         }
         assets.objects.push_back(found->second);
     }

@@ -15,9 +15,9 @@ namespace swell::detail {
 struct ObjectAssets {
     // The model, shared by every object that names the same file (read once).
     std::shared_ptr<const MeshData> mesh;
-    // The closed volume of a built-in's open hull (makeBuiltinHullVolume);
-    // empty for models without one, which includes every glTF file: a glTF
-    // file cannot say which part of a model is an open hull (docs/RENDERING.md).
+    // The closed volume of an open hull: a built-in's (makeBuiltinHullVolume),
+    // or the glTF node the scene names in SceneObject::hullNode; empty for
+    // models without one.
     std::shared_ptr<const MeshData> hullVolume;
     // The farthest any vertex lies from the model's origin, m (unscaled).
     double reach_m = 0.0;

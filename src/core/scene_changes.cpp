@@ -15,7 +15,7 @@ ParameterEffect sceneChanges(const Scene& before, const Scene& after)
         effects |= ParameterEffect::Waves;
     const bool sameObjectFiles = std::equal(
         before.objects.begin(), before.objects.end(), after.objects.begin(), after.objects.end(),
-        [](const SceneObject& a, const SceneObject& b) { return a.path == b.path; });
+        [](const SceneObject& a, const SceneObject& b) { return a.path == b.path && a.hullNode == b.hullNode; });
     if (!sameObjectFiles || before.sky.cubemapFaces != after.sky.cubemapFaces ||
         before.assetFolder != after.assetFolder)
         effects |= ParameterEffect::World;

@@ -62,6 +62,8 @@ struct Renderer::Impl {
     std::optional<SkyBakeKey> bakedSky;
     // This frame's object transforms, one per scene object (see world.h).
     std::vector<glm::mat4> poses;
+    // The floating rigid bodies, stepped to each frame's time (objects/scene_bodies.h).
+    SceneBodies bodies;
     glm::dvec3 posesOrigin{0.0}; // the render origin poses are relative to
 
     explicit Impl(RendererOptions options)
@@ -99,11 +101,18 @@ struct Renderer::Impl {
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         f.waveHeightDeviation_m = float(model().heightDeviation_m());
         const WaveReach reach = model().reach();
-        f.worldBoxCount = worldBoxes(world, scene, reach, origin, f.worldBoxes);
         f.waveMeanSquareSlope = float(seaMeanSquareSlope);
         const DrawnSurface drawn(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
-        poses = objectPoses(scene, model(), drawn, origin, time_s);
+        // Bodies step on the CPU to this frame's time: fixed steps, so the
+        // poses depend on time_s alone, never on the frames before.
+        notify(true, "bodies");
+        const std::int64_t stepsBefore = bodies.stepsTaken();
+        poses = objectPoses(scene, model(), drawn, bodies, origin, time_s);
+        counters.floatingBodies = int(bodies.count());
+        counters.bodySteps = bodies.stepsTaken() - stepsBefore;
+        notify(false, "bodies");
         posesOrigin = origin;
+        f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
         waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
         return f;
     }
@@ -334,6 +343,11 @@ struct Renderer::Impl {
         World nextWorld;
         if (worldChanged)
             nextWorld = buildWorld(next);
+        // Bodies start again from t = 0 when what moves them changed.
+        const bool bodiesChanged = worldChanged || modelChanged || !sameBodies(scene, next);
+        SceneBodies nextBodies;
+        if (bodiesChanged)
+            nextBodies = buildBodies(worldChanged ? nextWorld : world, next, nextModel);
 
         scene = next;
         sceneModel = std::move(nextSceneModel);
@@ -350,6 +364,8 @@ struct Renderer::Impl {
             world = std::move(nextWorld);
             bakedSky.reset();
         }
+        if (bodiesChanged)
+            bodies = std::move(nextBodies);
         if (first || hasEffect(effects, ParameterEffect::Grid))
             buildGrid();
     }

@@ -24,6 +24,7 @@ World buildWorld(const Scene& from)
         world.meshes.push_back(std::make_unique<GpuMesh>(*o.mesh));
         world.meshReach_m.push_back(o.reach_m);
         world.hullVolumes.push_back(o.hullVolume->indices.empty() ? nullptr : std::make_unique<GpuMesh>(*o.hullVolume));
+        world.bodyShapes.push_back(o.hullVolume->indices.empty() ? o.mesh : o.hullVolume);
     }
     if (!assets.skyFaces.empty()) {
         const std::vector<Image>& faces = assets.skyFaces;
@@ -74,18 +75,31 @@ glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, const Draw
 
 } // namespace
 
+SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel& surface)
+{
+    std::vector<const MeshData*> shapes;
+    for (const auto& shape : world.bodyShapes)
+        shapes.push_back(shape.get());
+    return SceneBodies(scene, shapes, surface);
+}
+
 std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
-                                   glm::dvec3 origin, double time_s)
+                                   SceneBodies& bodies, glm::dvec3 origin, double time_s)
 {
     std::vector<glm::mat4> poses;
     poses.reserve(scene.objects.size());
-    for (const SceneObject& o : scene.objects)
-        poses.emplace_back(objectPose(o, surface, drawn, origin, time_s));
+    bodies.advanceTo(time_s);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        if (const std::optional<glm::dmat4> body = bodies.poseAt(i, time_s))
+            poses.emplace_back(glm::translate(glm::dmat4(1.0), -origin) * *body);
+        else
+            poses.emplace_back(objectPose(scene.objects[i], surface, drawn, origin, time_s));
+    }
     return poses;
 }
 
 int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,
-               WorldBoxUniform* boxes)
+               const std::vector<glm::mat4>& poses, WorldBoxUniform* boxes)
 {
     int count = 0;
     auto add = [&](glm::dvec3 lo, glm::dvec3 hi) {
@@ -103,6 +117,12 @@ int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, g
     for (size_t i = 0; i < world.meshes.size() && i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
         const double r = world.meshReach_m[i] * o.scale;
+        if (o.isRigidBody() && i < poses.size()) {
+            // Where it is this frame (a body under way leaves its start behind).
+            const glm::dvec3 at = glm::dvec3(poses[i][3]) + origin;
+            add(at - glm::dvec3(r), at + glm::dvec3(r));
+            continue;
+        }
         const glm::dvec3 pad(r, r + (o.floats ? reach.vertical_m : 0.0), r);
         add(o.position_m - pad, o.position_m + pad);
     }

@@ -6,6 +6,8 @@
 
 #include "render/gpu_types.h"
 #include "render/mesh.h"
+#include "assets/mesh_data.h"
+#include "objects/scene_bodies.h"
 #include "swell/drawn_surface.h"
 #include "swell/scene.h"
 #include "swell/wave_model.h"
@@ -30,25 +32,35 @@ struct World {
     std::vector<double> meshReach_m;
     // Per scene object, the closed volume of its open hull, or null (see Renderer's drawHullVolumes).
     std::vector<std::unique_ptr<GpuMesh>> hullVolumes;
+    // Per scene object, the closed shape a floating rigid body is built from:
+    // its hull volume when it has one, else its mesh (CPU data, model space).
+    std::vector<std::shared_ptr<const MeshData>> bodyShapes;
     gl::Texture skyCube;
 };
+
+// The floating bodies of `scene` on `surface`, from the world's shapes.
+SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel& surface);
 
 // Builds the meshes and sky of `scene` without touching any current world,
 // so a bad asset leaves the renderer as it was. Throws swell::InputError.
 World buildWorld(const Scene& scene);
 
 // Each object's transform for this frame, relative to the render origin:
-// floating objects sit on the water as drawn (`drawn`, the grid's triangles)
-// at their position, and tilt with the surface's normal. Computed once a
-// frame; every pass draws with the same poses.
+// Each object's transform for this frame, relative to the render origin:
+// rigid bodies where `bodies` has stepped them to time_s (on the surface
+// their own filter gives, from the scene alone: swell/floating_body.h);
+// other floating objects sit on the water as drawn (`drawn`, the grid's
+// triangles) at their position, and tilt with the surface's normal.
+// Computed once a frame; every pass draws with the same poses.
 std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
-                                   glm::dvec3 origin, double time_s);
+                                   SceneBodies& bodies, glm::dvec3 origin, double time_s);
 
 // Fills boxes holding all world geometry, relative to the render origin: a
 // reflected ray that misses them all can only meet the sky. Returns the
 // count, or -1 when there are more than SWELL_MAX_WORLD_BOXES (every ray is
 // then marched).
+// `poses` are this frame's objectPoses(): rigid bodies are boxed where they are.
 int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,
-               WorldBoxUniform* boxes);
+               const std::vector<glm::mat4>& poses, WorldBoxUniform* boxes);
 
 } // namespace swell::detail

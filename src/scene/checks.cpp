@@ -65,6 +65,38 @@ void checkFile(const fs::path& base, const fs::path& resolved, const std::string
     }
 }
 
+// A floating rigid body's keys agree: it floats, gives its mass one way, and
+// its inertia is a solid's. (Its other keys mean nothing for other objects
+// and are left as they are, like every key a scene does not use.)
+void checkBody(const SceneObject& o, std::size_t i, const Places& places)
+{
+    const std::string item = fmt::format("objects[{}]", i);
+    if (o.mass_kg > 0.0 && o.density_kg_per_m3 > 0.0)
+        fail(places.first({item + ".density_kg_per_m3", item + ".mass_kg", item}),
+             fmt::format("{} gives both mass_kg ({} kg) and density_kg_per_m3 ({} kg/m^3); give one, the other "
+                         "follows from the model's volume",
+                         item, o.mass_kg, o.density_kg_per_m3));
+    if ((o.mass_kg > 0.0 || o.density_kg_per_m3 > 0.0) && !o.floats)
+        fail(places.first({item + ".floats", item + ".mass_kg", item + ".density_kg_per_m3", item}),
+             fmt::format("{} has a mass but does not float; set floats = true to make it a floating rigid body", item));
+    const glm::dvec3 I = o.inertia_kg_m2;
+    const bool given = I.x > 0.0 || I.y > 0.0 || I.z > 0.0;
+    if (given && !(I.x > 0.0 && I.y > 0.0 && I.z > 0.0))
+        fail(places.first({item + ".inertia_kg_m2", item}),
+             fmt::format("{}.inertia_kg_m2 = [{}, {}, {}]: give all three principal moments > 0, or [0, 0, 0] to "
+                         "take them from the mesh",
+                         item, I.x, I.y, I.z));
+    if (given && (I.x + I.y < I.z || I.y + I.z < I.x || I.z + I.x < I.y))
+        fail(places.first({item + ".inertia_kg_m2", item}),
+             fmt::format("{}.inertia_kg_m2 = [{}, {}, {}] is no solid's: each principal moment must be at most the "
+                         "sum of the other two",
+                         item, I.x, I.y, I.z));
+    if (!o.hullNode.empty() && o.path.starts_with(kBuiltinObjectPrefix))
+        fail(places.first({item + ".hull_node", item}),
+             fmt::format("{}.hull_node names a node of a glTF file; the built-in '{}' brings its own hull", item,
+                         o.path));
+}
+
 void checkObjectPath(const fs::path& base, const fs::path& resolved, const std::string& path, const std::string& name,
                      const SourcePlace& place)
 {
@@ -157,6 +189,9 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base, 
                                               "sorted by time",
                                               name, scene.camera.path[i].time_s, i - 1, scene.camera.path[i - 1].time_s));
         }
+
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        checkBody(scene.objects[i], i, places);
 
     if (hasEffect(scope, ParameterEffect::Waves))
         checkWaves(scene, places);

@@ -21,7 +21,7 @@ namespace {
 // Step 3: reading the TOML tree into a Scene.
 
 // Keys that are not parameters: tables, arrays of tables and strings.
-enum class Shape { Table, TableList, Faces, ObjectPath };
+enum class Shape { Table, TableList, Faces, ObjectPath, HullNode };
 
 struct StructuralKey {
     std::string_view key;
@@ -43,6 +43,7 @@ constexpr StructuralKey kStructure[] = {
     {"reflection", Shape::Table, ParameterList::None},
     {"objects", Shape::TableList, ParameterList::None},
     {"objects.path", Shape::ObjectPath, ParameterList::Objects},
+    {"objects.hull_node", Shape::HullNode, ParameterList::Objects},
     {"camera", Shape::Table, ParameterList::None},
     {"camera.path", Shape::TableList, ParameterList::None},
 };
@@ -189,6 +190,10 @@ private:
                 scene_.objects[item].path = readPath(*node, childShown);
                 places_.add(childShown, node->source());
                 break;
+            case Shape::HullNode:
+                scene_.objects[item].hullNode = readName(*node, childShown);
+                places_.add(childShown, node->source());
+                break;
             }
         }
     }
@@ -317,6 +322,20 @@ private:
             fail(places_.of(node.source()), fmt::format("{} must be a string (a file path), not {}", shown, typeName(node)));
         if (s->get().empty())
             fail(places_.of(node.source()), fmt::format("{} is empty; it must name a file", shown));
+        if (hasControlCharacter(s->get()))
+            fail(places_.of(node.source()), fmt::format("{} contains a control character", shown));
+        return s->get();
+    }
+
+    // A glTF node name: any non-empty string without control characters.
+    std::string readName(const toml::node& node, const std::string& shown)
+    {
+        const auto* s = node.as_string();
+        if (s == nullptr)
+            fail(places_.of(node.source()), fmt::format("{} must be a string (a glTF node's name), not {}", shown,
+                                                        typeName(node)));
+        if (s->get().empty())
+            fail(places_.of(node.source()), fmt::format("{} is empty; it must name a node of the model", shown));
         if (hasControlCharacter(s->get()))
             fail(places_.of(node.source()), fmt::format("{} contains a control character", shown));
         return s->get();

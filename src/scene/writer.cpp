@@ -101,6 +101,8 @@ std::string saveScene(const Scene& scene)
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         out += "\n[[objects]]\n";
         writeLine(out, "path", tomlString(scene.objects[i].path), "");
+        if (!scene.objects[i].hullNode.empty())
+            writeLine(out, "hull_node", tomlString(scene.objects[i].hullNode), "the glTF node of the closed hull volume");
         writeParameters(out, scene, "objects", ParameterList::Objects, i);
     }
 

@@ -40,6 +40,10 @@ SCENES = [
     ("deep_nesting", "a = " + "[" * 200 + "]" * 200 + "\n", "1:", "nest"),
     ("binary_garbage", None, "", "UTF-8"),
     ("sky_faces_count", "[sky]\nfaces = [\"a.png\"]\n", "2:", "sky.faces"),
+    ("body_sinks", "[[objects]]\npath = \"builtin:boat\"\nfloats = true\ndensity_kg_per_m3 = 5000.0\n", "2:", "sinks"),
+    ("body_mass_twice", "[[objects]]\npath = \"builtin:boat\"\nfloats = true\nmass_kg = 900.0\ndensity_kg_per_m3 = 200.0\n",
+     "5:", "gives both mass_kg"),
+    ("hull_node_of_builtin", "[[objects]]\npath = \"builtin:boat\"\nhull_node = \"Hull\"\n", "3:", "hull_node"),
 ]
 
 # (name, arguments, expected exit code, substring of stderr)
@@ -65,6 +69,8 @@ ARGUMENTS = [
     ("bench_scale_zero", ["bench", "--scale", "0"], 2, "--scale"),
     ("bad_antialiasing", ["render", "-o", "x.png", "--antialiasing", "8x"], 2, "--antialiasing"),
     ("view_bad_antialiasing", ["view", "--antialiasing", "on"], 2, "--antialiasing"),
+    ("bodies_far_in_time", ["render", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes",
+                                                   "under-way.toml"), "-o", "x.png", "--time", "5000"], 2, "--time"),
 ]
 
 failures = []

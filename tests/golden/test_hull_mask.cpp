@@ -100,4 +100,34 @@ TEST_F(HullMask, WaterShowsInsideTheSameHullWithoutAVolume)
     EXPECT_GT(c.water, c.inside / 2) << "expected water inside an unmasked hull: " << path;
 }
 
+TEST_F(HullMask, NoWaterInsideAUserGltfBoatWithAHullNode)
+{
+    // The same open hull in a user's glTF file, with its closed volume as a
+    // node named "Hull" (docs/SCENE.md, hull_node): masked like the built-in.
+    const std::filesystem::path folder = std::filesystem::path(SWELL_TEST_OUTPUT_DIR) / "hull_mask";
+    std::filesystem::create_directories(folder);
+    // The volume is magenta, a colour nothing else has: it must never be seen.
+    swell::detail::MeshData hull = swell::detail::makeBuiltinHullVolume("boat");
+    for (swell::detail::MeshVertex& v : hull.vertices)
+        v.color = {1.0f, 0.0f, 1.0f};
+    swell::test::writeGltf({{"Boat", swell::detail::makeBuiltinModel("boat")}, {"Hull", hull}},
+                           folder / "boat_with_hull.gltf");
+    swell::Scene scene = boatFromAbove("boat_with_hull.gltf");
+    scene.objects[0].hullNode = "Hull";
+    scene.assetFolder = folder.string();
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
+    const swell::Image image = renderer.renderImage(camera, kTime_s, kSize);
+    const std::string path = swell::test::saveTestImage(image, "hull_mask_user_gltf_hull_node");
+    EXPECT_TRUE(isWaterGreen(image.pixel(8, 8))) << path;
+    const Count c = waterInsideHull(renderer, camera, image);
+    EXPECT_GT(c.inside, 1000) << "the hull opening is not where the test expects it: " << path;
+    EXPECT_EQ(c.water, 0) << "water shows inside the hull: " << path;
+    int magenta = 0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+        // Shaded without sun, magenta darkens to purple: red and blue well above green.
+        magenta += image.rgba[i] > image.rgba[i + 1] + 30 && image.rgba[i + 2] > image.rgba[i + 1] + 60;
+    EXPECT_EQ(magenta, 0) << "the hull node is drawn in colour: " << path;
+}
+
 } // namespace

@@ -27,42 +27,61 @@ void appendRaw(std::vector<std::uint8_t>& out, const T& value)
 
 void writeGltf(const detail::MeshData& mesh, const std::filesystem::path& path)
 {
+    writeGltf(std::vector<GltfNode>{{"", mesh}}, path);
+}
+
+void writeGltf(const std::vector<GltfNode>& nodes, const std::filesystem::path& path)
+{
     using nlohmann::json;
-    // Layout: positions, normals, colours (each n * 12 bytes), then indices.
+    // Per node: positions, normals, colours (each n * 12 bytes), then indices.
     std::vector<std::uint8_t> buffer;
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const detail::MeshVertex& v : mesh.vertices) {
-        appendRaw(buffer, v.position);
-        lo = glm::min(lo, v.position);
-        hi = glm::max(hi, v.position);
-    }
-    for (const detail::MeshVertex& v : mesh.vertices)
-        appendRaw(buffer, v.normal);
-    for (const detail::MeshVertex& v : mesh.vertices)
-        appendRaw(buffer, v.color);
-    for (std::uint32_t i : mesh.indices)
-        appendRaw(buffer, i);
-    const std::size_t n = mesh.vertices.size(), attribute = n * 12;
-    json views = json::array();
-    for (int a = 0; a < 3; ++a)
-        views.push_back({{"buffer", 0}, {"byteOffset", a * attribute}, {"byteLength", attribute}});
-    views.push_back({{"buffer", 0}, {"byteOffset", 3 * attribute}, {"byteLength", mesh.indices.size() * 4}});
-    json accessors = json::array();
-    for (int a = 0; a < 3; ++a) {
-        json accessor{{"bufferView", a}, {"componentType", 5126}, {"count", n}, {"type", "VEC3"}};
-        if (a == 0) {
-            accessor["min"] = {lo.x, lo.y, lo.z};
-            accessor["max"] = {hi.x, hi.y, hi.z};
+    json views = json::array(), accessors = json::array(), meshes = json::array(), nodeList = json::array(),
+         roots = json::array();
+    for (const GltfNode& node : nodes) {
+        const detail::MeshData& mesh = node.mesh;
+        const std::size_t start = buffer.size();
+        glm::vec3 lo(1e30f), hi(-1e30f);
+        for (const detail::MeshVertex& v : mesh.vertices) {
+            appendRaw(buffer, v.position);
+            lo = glm::min(lo, v.position);
+            hi = glm::max(hi, v.position);
         }
-        accessors.push_back(accessor);
+        for (const detail::MeshVertex& v : mesh.vertices)
+            appendRaw(buffer, v.normal);
+        for (const detail::MeshVertex& v : mesh.vertices)
+            appendRaw(buffer, v.color);
+        for (std::uint32_t i : mesh.indices)
+            appendRaw(buffer, i);
+        const std::size_t n = mesh.vertices.size(), attribute = n * 12;
+        const std::size_t view0 = views.size(), accessor0 = accessors.size();
+        for (std::size_t a = 0; a < 3; ++a)
+            views.push_back({{"buffer", 0}, {"byteOffset", start + a * attribute}, {"byteLength", attribute}});
+        views.push_back({{"buffer", 0}, {"byteOffset", start + 3 * attribute}, {"byteLength", mesh.indices.size() * 4}});
+        for (std::size_t a = 0; a < 3; ++a) {
+            json accessor{{"bufferView", view0 + a}, {"componentType", 5126}, {"count", n}, {"type", "VEC3"}};
+            if (a == 0) {
+                accessor["min"] = {lo.x, lo.y, lo.z};
+                accessor["max"] = {hi.x, hi.y, hi.z};
+            }
+            accessors.push_back(accessor);
+        }
+        accessors.push_back(
+            {{"bufferView", view0 + 3}, {"componentType", 5125}, {"count", mesh.indices.size()}, {"type", "SCALAR"}});
+        meshes.push_back({{"primitives",
+                           {{{"attributes", {{"POSITION", accessor0}, {"NORMAL", accessor0 + 1}, {"COLOR_0", accessor0 + 2}}},
+                             {"indices", accessor0 + 3}}}}});
+        json entry{{"mesh", meshes.size() - 1}};
+        if (!node.name.empty())
+            entry["name"] = node.name;
+        roots.push_back(nodeList.size());
+        nodeList.push_back(entry);
     }
-    accessors.push_back({{"bufferView", 3}, {"componentType", 5125}, {"count", mesh.indices.size()}, {"type", "SCALAR"}});
     const json gltf{
         {"asset", {{"version", "2.0"}}},
         {"scene", 0},
-        {"scenes", {{{"nodes", {0}}}}},
-        {"nodes", {{{"mesh", 0}}}},
-        {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"COLOR_0", 2}}}, {"indices", 3}}}}}}},
+        {"scenes", {{{"nodes", roots}}}},
+        {"nodes", nodeList},
+        {"meshes", meshes},
         {"buffers", {{{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}}}},
         {"bufferViews", views},
         {"accessors", accessors},

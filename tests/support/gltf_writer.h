@@ -6,10 +6,19 @@
 #include "assets/mesh_data.h"
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace swell::test {
 
 void writeGltf(const detail::MeshData& mesh, const std::filesystem::path& path);
+
+// Several meshes, each the mesh of one root node with this name (none when empty).
+struct GltfNode {
+    std::string name;
+    detail::MeshData mesh;
+};
+void writeGltf(const std::vector<GltfNode>& nodes, const std::filesystem::path& path);
 
 // An axis-aligned box centred on the origin, half-size halfSize_m, one flat
 // colour (linear RGB), with outward normals.

@@ -1,0 +1,154 @@
+// Rigid bodies floating on a swell::WaveModel: buoyancy from the hydrostatic
+// pressure over the submerged part of a closed mesh, gravity, and linear
+// hydrodynamic damping, integrated with semi-implicit Euler steps of a fixed
+// length (kBodyStep_s) from t = 0. A body's pose at a time depends only on the
+// body, the surface and that time, never on how often it was asked for: the
+// headless renderer and the viewer draw the same poses bit for bit.
+//
+// Heave, roll, pitch and yaw are free; the horizontal position is carried
+// along (at rest, or at a constant velocity for a boat under way), since
+// hydrostatic forces on a body are vertical on flat water and the waves'
+// horizontal forces are not modelled. docs/BODIES.md explains the model and
+// its limits.
+#pragma once
+
+#include "swell/export.h"
+#include "swell/wave_model.h"
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace swell {
+
+namespace detail {
+struct BodyWater;
+}
+
+// The fixed integration step, s: 1/120 s resolves the heave and roll periods
+// of bodies down to about 0.3 m across (about 0.5 s; 60 steps a period).
+inline constexpr int kBodyStepsPerSecond = 120;
+inline constexpr double kBodyStep_s = 1.0 / kBodyStepsPerSecond;
+// The water under a body is sampled every this many steps (1/30 s) and
+// interpolated linearly in time between: the shortest waves drawn (0.4 m,
+// 0.5 s) change little in 1/30 s, and a query of the spectral model's CPU
+// twin at a new time costs a transform of its fields.
+inline constexpr int kBodyStepsPerWaterSample = 4;
+
+// Sea water's density, kg/m^3 (a typical surface value; UNESCO 1981 gives
+// 1020..1030 at 35 PSU and 0..25 degC).
+inline constexpr double kSeaWaterDensity_kg_per_m3 = 1025.0;
+
+// A closed triangle mesh in the body's own frame, m, triangles wound
+// counter-clockwise seen from outside.
+struct SWELL_API BodyShape {
+    std::vector<glm::dvec3> positions_m;
+    std::vector<std::uint32_t> indices;
+};
+
+// What a closed mesh of uniform density 1 kg/m^3 weighs and how it turns.
+struct SWELL_API MassProperties {
+    double volume_m3 = 0.0;
+    glm::dvec3 centroid_m{0.0};
+    glm::dmat3 inertiaAboutCentroid_kg_m2{0.0}; // for density 1 kg/m^3; scale by the density
+};
+
+// Volume, centroid and inertia of a closed mesh (Blow & Binstock 2004).
+// Throws swell::InputError when the mesh is not closed (an edge not shared by
+// exactly two triangles, vertices compared by position) or encloses no volume.
+SWELL_API MassProperties massPropertiesOf(const BodyShape& shape);
+
+// How a body is built: its mass and how it turns. Zero inertia means the
+// mesh's, for its mass spread evenly through its volume.
+struct SWELL_API BodySettings {
+    double mass_kg = 0.0;                  // > 0
+    glm::dvec3 centerOfMassOffset_m{0.0};  // from the mesh's centroid, body frame
+    glm::dvec3 principalInertia_kg_m2{0.0}; // about the centre of mass, body axes; all 0: from the mesh
+    double dampingRatio = 0.1;             // fraction of critical damping in heave, roll and pitch, 0..2
+    double waterDensity_kg_per_m3 = kSeaWaterDensity_kg_per_m3;
+};
+
+// Where the body starts and how it is carried.
+struct SWELL_API BodyStart {
+    glm::dvec3 origin_m{0.0};     // where the shape's origin is at t = 0: x, z; y is the height above rest
+    double yaw_deg = 0.0;         // heading about +y at t = 0
+    glm::dvec3 velocity_m_per_s{0.0}; // x, z: the horizontal velocity it is carried at; y: its heave velocity at t = 0
+};
+
+// The state at one step: the centre of mass and the orientation, world frame.
+struct SWELL_API BodyState {
+    std::int64_t step = 0;               // time = step * kBodyStep_s
+    glm::dvec3 centerOfMass_m{0.0};
+    double heaveVelocity_m_per_s = 0.0;
+    glm::dquat orientation{1.0, 0.0, 0.0, 0.0}; // body to world
+    glm::dvec3 angularVelocity_rad_per_s{0.0};  // world frame
+};
+
+class SWELL_API FloatingBody {
+public:
+    // Builds the body at rest on `surface` at t = 0 (heave equilibrium with
+    // its yaw, then raised by start.origin_m.y). `surface` must outlive the
+    // body; `filter` picks the surface the water is drawn with. Throws
+    // swell::InputError when the shape is not closed, or the body would sink.
+    FloatingBody(const BodyShape& shape, const BodySettings& settings, const BodyStart& start,
+                 const WaveModel& surface, const SurfaceFilter& filter = {});
+    ~FloatingBody();
+    FloatingBody(FloatingBody&&) noexcept;
+    FloatingBody& operator=(FloatingBody&&) noexcept;
+
+    // Steps from the current state (or from t = 0, when time_s is earlier
+    // than it) until time_s lies in the last step, then returns the
+    // transform from the shape's frame to the world, interpolated between
+    // the two states that bracket time_s. Negative times are t = 0.
+    glm::dmat4 poseAt(double time_s);
+
+    // The step whose state poseAt(time_s) needs last: floor(t / step) + 1.
+    static std::int64_t lastStepFor(double time_s);
+    // Steps (or starts again from t = 0 and steps) until state().step is
+    // `step`. Bodies advanced in lockstep query the surface at the same
+    // times one after another, which a model that caches a time's fields
+    // answers once.
+    void advanceToStep(std::int64_t step);
+
+    // The state after the steps taken so far, and the one before it.
+    const BodyState& state() const { return next_; }
+    const BodyState& previousState() const { return previous_; }
+
+    double mass_kg() const { return mass_kg_; }
+    double volume_m3() const { return volume_m3_; }
+    // The linear damping coefficients used: heave, N s/m; roll and pitch (body x, z), N m s.
+    double heaveDamping_N_s_per_m() const { return heaveDamping_; }
+    // Steps taken since construction (restarts included), for the benchmark.
+    std::int64_t stepsTaken() const { return stepsTaken_; }
+
+private:
+    void restart();
+    void step();
+    // The water patches that bracket step n (sampled at multiples of kBodyStepsPerWaterSample).
+    void sampleWaterFor(std::int64_t n);
+    glm::dvec2 carriedAt(std::int64_t step) const; // the centre of mass's x, z at a step
+
+    std::vector<glm::dvec3> points_m_; // the shape relative to its centre of mass
+    std::vector<std::uint32_t> indices_;
+    double reach_m_ = 0.0;             // farthest point from the centre of mass
+    double mass_kg_ = 0.0, volume_m3_ = 0.0, waterDensity_ = 0.0;
+    glm::dmat3 inertiaBody_{1.0}, inverseInertiaBody_{1.0};
+    glm::dvec3 centerOfMassInShape_m_{0.0};
+    double heaveDamping_ = 0.0;
+    glm::dvec3 rotationDamping_{0.0}; // about body axes, N m s
+    BodyStart start_;
+    const WaveModel* surface_ = nullptr;
+    SurfaceFilter filter_;
+    BodyState initial_, previous_, next_;
+    // The water sampled round the body at the two sample times that bracket the step.
+    std::unique_ptr<detail::BodyWater> water_;
+    std::int64_t stepsTaken_ = 0;
+
+};
+
+} // namespace swell
