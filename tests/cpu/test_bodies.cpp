@@ -223,16 +223,23 @@ TEST(FloatingBody, RidesTheWavesAndIsCarriedAlong)
     EXPECT_NEAR(body.poseAt(30.0)[3].x, 60.0, 1e-9);
 }
 
+// The shape as a drawn mesh: what a scene object's model gives the bodies.
+swell::detail::MeshData meshOf(const swell::BodyShape& shape)
+{
+    swell::detail::MeshData mesh;
+    for (const glm::dvec3& p : shape.positions_m)
+        mesh.vertices.push_back({glm::vec3(p), {}, {}});
+    mesh.indices = shape.indices;
+    return mesh;
+}
+
 // A scene's bodies step in lockstep (so they share the surface's sample
 // times); each still moves exactly as it would alone.
 TEST(FloatingBody, SceneBodiesInLockstepMoveAsEachAlone)
 {
     const TestWater waves(0.4, 30.0);
     const swell::BodyShape shape = box(kBox);
-    swell::detail::MeshData mesh;
-    for (const glm::dvec3& p : shape.positions_m)
-        mesh.vertices.push_back({glm::vec3(p), {}, {}});
-    mesh.indices = shape.indices;
+    const swell::detail::MeshData mesh = meshOf(shape);
     swell::Scene scene;
     scene.objects.resize(3);
     scene.objects[0] = {.path = "a", .position_m = {0.0, 0.2, 0.0}, .floats = true, .density_kg_per_m3 = 500.0};
@@ -261,10 +268,7 @@ TEST(FloatingBody, AScaledObjectFloatsAsTheBiggerBody)
 {
     const TestWater flat;
     const swell::BodyShape shape = box(kBox);
-    swell::detail::MeshData mesh;
-    for (const glm::dvec3& p : shape.positions_m)
-        mesh.vertices.push_back({glm::vec3(p), {}, {}});
-    mesh.indices = shape.indices;
+    const swell::detail::MeshData mesh = meshOf(shape);
     swell::Scene scene;
     scene.objects = {{.path = "a", .position_m = {2.0, 0.0, 3.0}, .scale = 2.0, .floats = true,
                       .density_kg_per_m3 = 0.25 * kRho}};
