@@ -1,5 +1,8 @@
 // Water shading: reflection weighed against refraction by Fresnel, Phong
-// diffuse and specular from the sun, and fog.
+// diffuse and a specular lobe spread by the slopes the normal leaves out,
+// light through backlit crests, whitecap foam, and fog; seen from below,
+// Snell's window (underwater_surface.glsl). Each term can be left out for
+// the benchmark (SWELL_TERM_* in swell/shader_constants.h).
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"
