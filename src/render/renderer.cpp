@@ -73,6 +73,12 @@ struct Renderer::Impl {
 
     const WaveModel& model() const { return overrideModel ? *overrideModel : *sceneModel; }
 
+    // The water as the grid draws it for this camera (swell/drawn_surface.h).
+    DrawnSurface drawnSurface(const Camera& camera, double time_s) const
+    {
+        return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
+    }
+
     void notify(bool begin, const char* pass) const
     {
         if (observer)
@@ -102,7 +108,7 @@ struct Renderer::Impl {
         f.waveHeightDeviation_m = float(model().heightDeviation_m());
         const WaveReach reach = model().reach();
         f.waveMeanSquareSlope = float(seaMeanSquareSlope);
-        const DrawnSurface drawn(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
+        const DrawnSurface drawn = drawnSurface(camera, time_s);
         // Bodies step on the CPU to this frame's time: fixed steps, so the
         // poses depend on time_s alone, never on the frames before.
         notify(true, "bodies");
@@ -457,7 +463,7 @@ std::vector<glm::dmat4> Renderer::objectTransforms() const
 DrawnSurface Renderer::drawnSurface(const Camera& camera, double time_s) const
 {
     const Impl& s = *impl_;
-    return DrawnSurface(s.model(), s.gridShape, horizonFadeFor(s.scene.grid, s.gridShape), camera.position_m, time_s);
+    return s.drawnSurface(camera, time_s);
 }
 
 int Renderer::waterVertexCount() const { return (impl_->gridShape.cells + 1) * (impl_->gridShape.cells + 1); }
