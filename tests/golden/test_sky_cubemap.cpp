@@ -19,6 +19,9 @@
 
 namespace {
 
+using swell::test::srgbLevel;
+using swell::test::srgbToLinear;
+
 class SkyCubemap : public swell::test::GlTest {};
 
 constexpr glm::ivec2 kSize{320, 240};
@@ -41,12 +44,6 @@ glm::dvec3 expectedSky(const swell::Scene& scene, glm::dvec3 d)
     const double disk = t * t * (3.0 - 2.0 * t);
     const double glow = std::pow(c, 200.0) * 0.35 + std::pow(c, 8.0) * 0.12;
     return color + scene.sun.color * scene.sun.intensity * (disk * 20.0 + glow);
-}
-
-double srgbLevel(double linear)
-{
-    const double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-    return std::clamp(v, 0.0, 1.0) * 255.0;
 }
 
 // The largest difference (levels of 255) between the rendered sky and the

@@ -25,13 +25,10 @@
 
 namespace {
 
-class Underwater : public swell::test::GlTest {};
+using swell::test::srgbLevel;
+using swell::test::srgbToLinear;
 
-double srgbToLinear(std::uint8_t v)
-{
-    const double c = v / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
+class Underwater : public swell::test::GlTest {};
 
 double luminance(const std::uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
 

@@ -18,6 +18,9 @@
 
 namespace {
 
+using swell::test::srgbLevel;
+using swell::test::srgbToLinear;
+
 namespace fs = std::filesystem;
 
 class UserAssets : public swell::test::GlTest {};
@@ -132,12 +135,6 @@ TEST_F(UserAssets, AMissingFaceIsAnInputErrorNamingIt)
     } catch (const swell::InputError& e) {
         EXPECT_NE(std::string(e.what()).find((folder / "absent.png").string()), std::string::npos) << e.what();
     }
-}
-
-double srgbLevel(double linear)
-{
-    const double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-    return std::clamp(v, 0.0, 1.0) * 255.0;
 }
 
 bool near(const std::uint8_t* p, glm::dvec3 expected, double tolerance)

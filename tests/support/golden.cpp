@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include "support/golden.h"
 
 #include <gtest/gtest.h>
@@ -37,6 +39,18 @@ void expectMatchesGolden(const Image& actual, const std::string& name, int maxCh
                       << " (allowed " << maxChannel << "), mean " << d.meanChannel << " (allowed " << maxMean
                       << ")\n  actual: " << actualPath << "\n  diff:   " << diffPath << "\n  golden: " << golden;
     }
+}
+
+double srgbToLinear(std::uint8_t level)
+{
+    const double c = level / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+double srgbLevel(double linear)
+{
+    const double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+    return std::clamp(v, 0.0, 1.0) * 255.0;
 }
 
 } // namespace swell::test

@@ -6,6 +6,7 @@
 
 #include "swell/image.h"
 
+#include <cstdint>
 #include <string>
 
 namespace swell::test {
@@ -16,5 +17,10 @@ void expectMatchesGolden(const Image& actual, const std::string& name, int maxCh
 
 // Writes an image for a person to look at: <build>/test-output/NAME.png. Returns the path.
 std::string saveTestImage(const Image& image, const std::string& name);
+
+// The sRGB transfer function (IEC 61966-2-1) the renderer's output applies:
+// an 8-bit level to linear 0..1, and linear to a level 0..255 (unrounded).
+double srgbToLinear(std::uint8_t level);
+double srgbLevel(double linear);
 
 } // namespace swell::test
