@@ -110,7 +110,7 @@ void main()
     // Whitecaps: a layer of bubbles that scatters nearly all light back,
     // lit by the sun and the sky (Lambertian, as foam is close to; Koepke
     // 1984 measured its effective reflectance at about 0.55 in the visible).
-    float foamCover = smoothstep(0.35, 0.65, foam);
+    float foamCover = clamp(foam, 0.0, 1.0); // the share of the pixel foam covers
     vec3 foamLight = sunColor * sunIntensity * max(sunDirection.y, 0.0) * (0.6 + 0.4 * phongDiffuse(n)) + skyHorizon * 0.5;
     color = mix(color, 0.55 * foamLight, foamCover);
 #else
@@ -124,8 +124,9 @@ void main()
 #elif SWELL_DEBUG_VIEW == SWELL_VIEW_REFRACTION
     color = refracted;
 #elif SWELL_DEBUG_VIEW == SWELL_VIEW_FOAM
-    // White where the shading counts a whitecap (cover above one half).
-    color = vec3(step(0.5, foamCover));
+    // The share of the pixel the shading covers with foam, as a grey level
+    // (sRGB-encoded like every colour: tests decode it).
+    color = vec3(foamCover);
 #elif SWELL_DEBUG_VIEW == SWELL_VIEW_LOD
     // Cell size on a log scale: 0.25 m red ... 256 m blue, with stripes per level.
     float level = log2(max(vCellSize, 0.01) / 0.25) / 10.0;

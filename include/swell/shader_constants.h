@@ -30,6 +30,14 @@
 // spectral_warp.h): enough directions that every wave direction and every
 // shift is decorrelated, few enough to cost little per vertex and pixel.
 #define SWELL_FFT_WARP_WAVES 6
+// The spectral model's whitecap foam lives in the world, not in the periodic
+// cascades (whose foam would repeat with their patches): SWELL_FOAM_LEVELS
+// camera-following windows of SWELL_FOAM_SIZE^2 texels, each level's texels
+// SWELL_FOAM_LEVEL_RATIO times the last's (src/ocean/spectral/world_foam.h).
+#define SWELL_FOAM_SIZE 256
+#define SWELL_FOAM_LOG2_SIZE 8
+#define SWELL_FOAM_LEVELS 2
+#define SWELL_FOAM_LEVEL_RATIO 4.0
 
 // Texture units, fixed for the same reason.
 #define SWELL_UNIT_SKY 0

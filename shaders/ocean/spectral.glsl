@@ -31,15 +31,27 @@ layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
     vec2 windDirection;     // unit, x,z: foam is drawn out into streaks along it
     float foamStreak;       // how far foam streaks are drawn out along the wind, 1 = not at all
     float unresolvedSlopeVariance; // mean square slope of the waves shorter than the last cascade's
+    // Each foam level's window: x, y the grid centre in texels modulo the
+    // window (as the texture repeats), z texels per metre.
+    vec4 foamLevels[SWELL_FOAM_LEVELS];
 };
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
 layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;  // dDy/dx, dDy/dz, dDx/dx, dDz/dz
-layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1
+layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1, a layer a level
 layout(binding = SWELL_UNIT_OCEAN3) uniform sampler2DArray oceanSlopeMoments; // (dDy/dx)^2, (dDy/dz)^2, their product
 
 // Value noise on a lattice of 1 m cells: the bubbly texture inside foam.
-float foamHash(vec2 cell) { return fract(sin(dot(cell, vec2(127.1, 311.7))) * 43758.5453); }
+// An integer hash (multiply-xorshift): uniform on 0..1 for any cell, where
+// the usual fract(sin(x) * big) leans on sin's accuracy far from 0, which
+// software rasterisers do not keep.
+float foamHash(vec2 cell)
+{
+    uvec2 q = uvec2(ivec2(cell)) * uvec2(1597334673u, 3812015801u);
+    uint n = (q.x ^ q.y) * 1597334673u;
+    n ^= n >> 16;
+    return float(n) * (1.0 / 4294967295.0);
+}
 float foamNoise(vec2 p)
 {
     vec2 cell = floor(p), f = fract(p);
@@ -48,21 +60,40 @@ float foamNoise(vec2 p)
                mix(foamHash(cell + vec2(0.0, 1.0)), foamHash(cell + vec2(1.0, 1.0)), u.x), u.y);
 }
 
-// Texture of a foam patch at a point of the world plane (relative to the grid
-// centre; the phase of the noise does not matter), fading to its mean (1)
-// where the footprint is wider than its finest octave, so it never aliases.
-float foamDetail(vec2 p_m, float footprint_m)
+// How much of the water foam covers at a point of the world plane (relative
+// to the grid centre; the phase of the noise does not matter), given the
+// foam's amount there (1 where the wave breaks now, decaying as the foam
+// ages). Where the pixel resolves the foam's texture, fresh foam is a nearly
+// solid sheet and ageing foam thins into lace and streaks drawn out along
+// the wind: the texture is covered where it exceeds 1 - amount, so the
+// covered share of an area is about its amount. Where the pixel does not
+// resolve the texture, that share itself: the same mean, without aliasing.
+float foamCoverage(float amount, vec2 p_m, float footprint_m)
 {
     vec2 along = windDirection, across = vec2(-windDirection.y, windDirection.x);
     // Streaks: the noise stretched along the wind.
     vec2 q = vec2(dot(p_m, along) / foamStreak, dot(p_m, across));
-    float detail = 0.0, weight = 0.0, scale = 1.5;
-    for (int octave = 0; octave < 3; ++octave, scale *= 2.7) {
+    // Octaves of 3 m down to 3 cm cells, of equal weight so that even a
+    // small patch has gaps: the coarsest break up what the foam's coarser
+    // level blurs, the finest are the bubbles' lace.
+    float texture = 0.0, amplitude = 1.0, scale = 0.3, total = 0.0;
+    float resolvedShare = 0.0;
+    for (int octave = 0; octave < 6; ++octave, scale *= 2.5) {
         float resolved = 1.0 - smoothstep(0.25, 0.5, footprint_m * scale);
-        detail += resolved * (foamNoise(q * scale) - 0.5);
-        weight += 0.5;
+        texture += amplitude * resolved * (foamNoise(q * scale + float(octave) * 17.0) - 0.5);
+        resolvedShare += amplitude * resolved;
+        total += amplitude;
     }
-    return 1.0 + 1.2 * detail / weight;
+    // 0..1 with mean 1/2 and a spread of about 0.3 (6 octaves' mean has
+    // about 0.08), its contrast stretched
+    // back as octaves fade, kept within the threshold's soft edge of 0 and 1
+    // so that no foam covers nothing.
+    const float edge = 0.08;
+    texture = clamp(0.5 + 4.0 * texture / max(resolvedShare, 1e-3), edge, 1.0 - edge);
+    // Even where a wave breaks now, the foam is froth with gaps, not paint.
+    float share = 0.75 * amount;
+    float lace = smoothstep(1.0 - edge - share, 1.0 + edge - share, texture);
+    return mix(share, lace, resolvedShare / total);
 }
 
 // swell::spectral::cascadeWeight.
@@ -87,17 +118,63 @@ vec2 warpedTexels(int c, vec2 restOffset_m, out mat2 jacobian)
     return cascades[c].originTexels + (restOffset_m + offset) * cascades[c].texelsPerMetre;
 }
 
-vec4 bilinearDisplacement(vec2 s, int cascade)
+// A cascade's level-0 field at texel position s, bilinear with exact weights.
+vec4 bilinearFetch(sampler2DArray field, vec2 s, int cascade)
 {
     vec2 cell = floor(s);
     vec2 f = s - cell;
     ivec2 i0 = ivec2(cell) & (SWELL_FFT_SIZE - 1);
     ivec2 i1 = (i0 + 1) & (SWELL_FFT_SIZE - 1);
-    vec4 top = mix(texelFetch(oceanDisplacement, ivec3(i0.x, i0.y, cascade), 0),
-                   texelFetch(oceanDisplacement, ivec3(i1.x, i0.y, cascade), 0), f.x);
-    vec4 bottom = mix(texelFetch(oceanDisplacement, ivec3(i0.x, i1.y, cascade), 0),
-                      texelFetch(oceanDisplacement, ivec3(i1.x, i1.y, cascade), 0), f.x);
+    vec4 top = mix(texelFetch(field, ivec3(i0.x, i0.y, cascade), 0),
+                   texelFetch(field, ivec3(i1.x, i0.y, cascade), 0), f.x);
+    vec4 bottom = mix(texelFetch(field, ivec3(i0.x, i1.y, cascade), 0),
+                      texelFetch(field, ivec3(i1.x, i1.y, cascade), 0), f.x);
     return mix(top, bottom, f.y);
+}
+
+vec4 bilinearDisplacement(vec2 s, int cascade) { return bilinearFetch(oceanDisplacement, s, cascade); }
+
+// The Jacobian of the horizontal displacement at a rest point, each
+// cascade's gradients weighed: where it falls low, the surface folds and
+// breaks. The CPU twin is swell::spectral::CpuSurface::foldJacobianAt.
+float foldJacobian(vec2 restOffset_m, float weight[SWELL_FFT_CASCADES])
+{
+    vec2 gradDx = vec2(0.0), gradDz = vec2(0.0); // (d/dx, d/dz) at the rest point
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
+        if (weight[c] <= 0.0)
+            continue;
+        mat2 jacobian;
+        vec2 s = warpedTexels(c, restOffset_m, jacobian);
+        float dxz = bilinearDisplacement(s, c).w;
+        vec4 d = bilinearFetch(oceanDerivatives, s, c);
+        vec2 alongDx = vec2(d.z, dxz), alongDz = vec2(dxz, d.w);
+        for (int j = 0; j < 2; ++j) {
+            gradDx[j] += weight[c] * dot(alongDx, jacobian[j]);
+            gradDz[j] += weight[c] * dot(alongDz, jacobian[j]);
+        }
+    }
+    return (1.0 + gradDx.x) * (1.0 + gradDz.y) - gradDx.y * gradDz.x;
+}
+
+// The whitecap foam at a rest point, filtered over the footprint: from the
+// finest foam level whose window holds the point, cross-faded to the next
+// toward the window's edge (where texels are newest), and beyond the last,
+// that level's mean (its last mip), which is what distant foam averages to.
+float worldFoam(vec2 restOffset_m, float footprint_m)
+{
+    float foam = textureLod(oceanFoam, vec3(0.5, 0.5, float(SWELL_FOAM_LEVELS - 1)), float(SWELL_FOAM_LOG2_SIZE)).r;
+    for (int level = SWELL_FOAM_LEVELS - 1; level >= 0; --level) {
+        vec4 window = foamLevels[level];
+        vec2 texels = restOffset_m * window.z;
+        float fromCentre = max(abs(texels.x), abs(texels.y)) / float(SWELL_FOAM_SIZE / 2);
+        float inside = 1.0 - smoothstep(0.6, 0.9, fromCentre);
+        if (inside > 0.0) {
+            vec3 uvw = vec3((window.xy + texels) / float(SWELL_FOAM_SIZE), float(level));
+            float lod = log2(max(footprint_m * window.z, 1.0));
+            foam = mix(foam, textureLod(oceanFoam, uvw, lod).r, inside);
+        }
+    }
+    return foam;
 }
 
 // The normal and the foam at a footprint (the displacement left zero): the
@@ -109,7 +186,6 @@ SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightSc
 {
     // Gradients along rest x and z, each (d/dx, d/dz).
     vec2 gradDx = vec2(0.0), gradDy = vec2(0.0), gradDz = vec2(0.0);
-    float foam = 0.0;
     float slopeVariance = 0.0;
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         SpectralCascade cascade = cascades[c];
@@ -135,7 +211,6 @@ SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightSc
         mat2 covariance = mat2(max(moments.x - d.x * d.x, 0.0), moments.z - d.x * d.y,
                                moments.z - d.x * d.y, max(moments.y - d.y * d.y, 0.0));
         slopeVariance += max(dot(jacobian[0], covariance * jacobian[0]) + dot(jacobian[1], covariance * jacobian[1]), 0.0);
-        foam = max(foam, textureLod(oceanFoam, uvw, lod).r);
     }
     gradDx *= heightScale;
     gradDy *= heightScale;
@@ -143,7 +218,7 @@ SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightSc
     slopeVariance = (slopeVariance + unresolvedSlopeVariance) * heightScale * heightScale;
     vec3 alongX = vec3(1.0 + gradDx.x, gradDy.x, gradDz.x);
     vec3 alongZ = vec3(gradDx.y, gradDy.y, 1.0 + gradDz.y);
-    foam *= heightScale * foamDetail(restOffset_m, footprint_m);
+    float foam = foamCoverage(heightScale * worldFoam(restOffset_m, footprint_m), restOffset_m, footprint_m);
     return SurfacePoint(vec3(0.0), normalize(cross(alongZ, alongX)), foam, alongX, alongZ, slopeVariance);
 }
 

@@ -1,35 +1,65 @@
-// Whitecaps of the spectral ocean: where a cascade's surface folds (the
-// Jacobian of the horizontal displacement, J = (1 + dDx/dx)(1 + dDz/dz) -
-// (dDx/dz)^2, falls below a threshold; Tessendorf 2001, sec. 4.4; Dupuy &
-// Bruneton 2012), foam is made; everywhere, foam decays as exp(-dt/tau)
-// (tau the foam's e-folding time: 3.85 s on salt water, Monahan &
-// O'Muircheartaigh 1986). Foam stays where the wave broke: it lives in the
-// cascade's world-fixed patch, not on the moving crest.
+// Whitecaps of the spectral ocean, kept in the world: where the surface of
+// the breaking-scale cascades folds (the Jacobian of the horizontal
+// displacement, J = (1 + dDx/dx)(1 + dDz/dz) - (dDx/dz)(dDz/dx), falls below
+// a threshold; Tessendorf 2001, sec. 4.4; Dupuy & Bruneton 2012), foam is
+// made; everywhere, foam decays as exp(-dt/tau) (tau the foam's e-folding
+// time: 3.85 s on salt water, Monahan & O'Muircheartaigh 1986). Foam stays
+// where the wave broke, on texels fixed in the world: each level is a window
+// of SWELL_FOAM_SIZE^2 texels around the grid centre, stored toroidally
+// (world texel w at w mod N), so a moving camera only brings in the texels
+// along the window's edges, which start without history.
+// The Jacobian is the sum of the cascades' gradients at each one's warped
+// point, exactly as the CPU twin computes it for the threshold
+// (swell::spectral::CpuSurface::foldJacobianAt).
 #include "swell/shader_constants.h"
+// Built with SWELL_OCEAN_FILE naming ocean/spectral.glsl.
+#include "ocean.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(binding = 2, rgba32f) uniform readonly image2DArray displacement; // .w: dDx/dz
-layout(binding = 3, rgba32f) uniform readonly image2DArray derivatives;  // .z: dDx/dx, .w: dDz/dz
-layout(binding = 4, r16f) uniform image2DArray foam;                     // 0..1
+layout(binding = 4, r16f) uniform image2DArray foam; // 0..1, one layer a level
 
-uniform float decay;              // exp(-dt/tau) since the last step; 0 starts afresh
-uniform float foldThreshold[SWELL_FFT_CASCADES]; // J below which each cascade makes foam
-uniform float foldSoftness;       // foam fades out over this much J above the threshold
-uniform int foamCascades;         // cascades 0..foamCascades-1 make foam; the rest only decay
+uniform float decay;         // exp(-dt/tau) since the last step; 0 starts afresh
+uniform float foldThreshold[SWELL_FOAM_LEVELS]; // J below which each level makes foam
+uniform float foldSoftness;  // foam fades out over this much J above the threshold
+// How much each cascade adds to a level's J: the cascades its texels resolve.
+uniform float foldWeight[SWELL_FOAM_LEVELS * SWELL_FFT_CASCADES];
+uniform ivec2 windowOrigin[SWELL_FOAM_LEVELS];   // world texel index of each window's first texel (x, z)
+uniform ivec2 previousOrigin[SWELL_FOAM_LEVELS]; // ... at the last step
+uniform ivec2 centreIndex[SWELL_FOAM_LEVELS];    // world texel index holding the grid centre
+uniform vec2 centreFraction[SWELL_FOAM_LEVELS];  // the grid centre within that texel, 0..1
+uniform float texel_m[SWELL_FOAM_LEVELS];        // each level's texel size, m
+// Each level's texel makes the mean foam of this many^2 points spread over
+// it, so that every level sees the folds of the same waves unaliased.
+uniform int samplesPerSide[SWELL_FOAM_LEVELS];
 
 void main()
 {
     ivec3 p = ivec3(gl_GlobalInvocationID);
-    float old = imageLoad(foam, p).r * decay;
+    int level = p.z;
+    // The world texel this stored texel holds now, and whether it held it
+    // at the last step.
+    ivec2 origin = windowOrigin[level];
+    ivec2 world = origin + ((p.xy - origin) & (SWELL_FOAM_SIZE - 1));
+    ivec2 sinceLast = world - previousOrigin[level];
+    bool kept = all(greaterThanEqual(sinceLast, ivec2(0))) && all(lessThan(sinceLast, ivec2(SWELL_FOAM_SIZE)));
+    float old = kept ? imageLoad(foam, p).r * decay : 0.0;
+
+    float weights[SWELL_FFT_CASCADES];
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c)
+        weights[c] = foldWeight[level * SWELL_FFT_CASCADES + c];
+    // The texel's corner from the grid centre, m.
+    vec2 corner_m = (vec2(world - centreIndex[level]) - centreFraction[level]) * texel_m[level];
+    int side = samplesPerSide[level];
     float made = 0.0;
-    if (p.z < foamCascades) {
-        float dxz = imageLoad(displacement, p).w;
-        vec4 d = imageLoad(derivatives, p);
-        float jacobian = (1.0 + d.z) * (1.0 + d.w) - dxz * dxz;
-        // Full foam at the threshold, fading over foldSoftness above it: the
-        // cover the calibration counts is where J < threshold.
-        made = clamp(1.0 - (jacobian - foldThreshold[p.z]) / foldSoftness, 0.0, 1.0);
-    }
+    for (int i = 0; i < side; ++i)
+        for (int k = 0; k < side; ++k) {
+            vec2 restOffset_m = corner_m + (vec2(i, k) + 0.5) / float(side) * texel_m[level];
+            float jacobian = foldJacobian(restOffset_m, weights);
+            // Full foam at the threshold, fading over foldSoftness above it:
+            // the cover the calibration counts is where J < threshold.
+            made += clamp(1.0 - (jacobian - foldThreshold[level]) / foldSoftness, 0.0, 1.0);
+        }
+    made /= float(side * side);
     imageStore(foam, p, vec4(max(old, made)));
 }

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace swell::spectral {
@@ -95,10 +96,10 @@ struct Bilinear {
 } // namespace
 
 void CpuSurface::sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
-                        Sample& out) const
+                        Sample& out, int cascadeCount) const
 {
     out = Sample{};
-    for (int c = 0; c < kCascades; ++c) {
+    for (int c = 0; c < std::min(cascadeCount, kCascades); ++c) {
         const Cascade& cascade = field_->cascades[size_t(c)];
         const double weight = cascadeWeight(cascade, filter.footprint_m);
         if (weight <= 0.0)
@@ -149,6 +150,15 @@ glm::dvec3 CpuSurface::displacementAt(glm::dvec2 restPoint_m, double time_s, con
     Sample sum;
     sample(fieldsFor(time_s, false), restPoint_m, filter, false, sum);
     return sum.displacement_m;
+}
+
+double CpuSurface::foldJacobianAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter,
+                                  int cascadeCount) const
+{
+    std::lock_guard lock(mutex_);
+    Sample sum;
+    sample(fieldsFor(time_s, true), restPoint_m, filter, true, sum, cascadeCount);
+    return (1.0 + sum.gradDx.x) * (1.0 + sum.gradDz.y) - sum.gradDx.y * sum.gradDz.x;
 }
 
 } // namespace swell::spectral

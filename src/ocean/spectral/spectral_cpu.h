@@ -36,6 +36,13 @@ public:
     // restPointUnder() need.
     glm::dvec3 displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const;
 
+    // The Jacobian of the horizontal displacement of cascades
+    // 0..cascadeCount-1 at a rest point and time, each weighed for the
+    // filter's footprint as the surface is: where the surface folds, and
+    // foam is made. The GLSL twin is foldJacobian() in
+    // shaders/ocean/spectral.glsl. Thread-safe.
+    double foldJacobianAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter, int cascadeCount) const;
+
     // The 8 spatial fields of every cascade at time_s (Dx, Dy, Dz, dDx/dz,
     // dDy/dx, dDy/dz, dDx/dx, dDz/dz), N*N each, row = z: for tests and the
     // model's constructor. Not thread-safe, unlike the queries: the
@@ -67,7 +74,7 @@ private:
         glm::dvec2 gradDx{0.0}, gradDy{0.0}, gradDz{0.0}; // (d/dx, d/dz), dimensionless
     };
     void sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
-                Sample& out) const;
+                Sample& out, int cascadeCount = kCascades) const;
     void* fft_ = nullptr; // kiss_fftnd_cfg
 };
 

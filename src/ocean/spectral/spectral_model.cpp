@@ -7,6 +7,7 @@
 
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/whitecaps.h"
+#include "ocean/spectral/world_foam.h"
 #include "render/wave_model_gpu.h"
 #include "swell/constants.h"
 #include "swell/gl/shader.h"
@@ -43,6 +44,7 @@ struct alignas(16) SpectralUniforms {
     glm::vec2 windDirection;
     float foamStreak;
     float unresolvedSlopeVariance; // of the waves shorter than the last cascade's
+    glm::vec4 foamLevels[kFoamLevels]; // the grid centre in texels modulo N (x, y), texels per metre
 };
 
 // Foam needs the history of the breaking: a frame that follows the last by
@@ -52,22 +54,27 @@ struct alignas(16) SpectralUniforms {
 constexpr double kLongestStep_s = 1.0;
 constexpr double kWarmUpStep_s = 0.5;
 constexpr double kWarmUpLifetimes = 2.5;
-// Foam fades out over this much J above the threshold: a tenth of a
-// cascade's spread of J (whose lowest percent lies about 0.13 below its
-// median), so the edge of a breaking is soft but its area is the threshold's.
-constexpr float kFoldSoftness = 0.004f;
+// Foam fades out over this much J above the threshold, a fifth of the
+// spread of J's lowest percent below its median (about 0.15): the rim of a
+// breaking makes partial foam, which the shading draws as lace, so a
+// whitecap's edge is ragged rather than cut out along a contour of J.
+constexpr float kFoldSoftness = 0.03f;
+// A window that moves by more than this many texels since the foam's last
+// step (a camera cut) replays the foam's history, as a cut in time does.
+constexpr int kLongestFoamShift = kFoamSize / 4;
 
 
 class SpectralGpu final : public detail::WaveModelGpu {
 public:
     SpectralGpu(std::shared_ptr<const SpectralField> field, const SpectralSettings& settings,
-                std::array<float, kCascades> foldThresholds, const gl::ShaderSources& shaders)
+                std::array<float, kFoamLevels> foldThresholds, const gl::ShaderSources& shaders)
         : field_(std::move(field)), settings_(settings), foldThresholds_(foldThresholds)
     {
         evolve_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_evolve.comp"}});
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
-        foamStep_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_foam.comp"}});
+        foamStep_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_foam.comp"}},
+                                     {"SWELL_OCEAN_FILE \"ocean/spectral.glsl\""});
         moments_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_moments.comp"}});
         timeLocation_ = glGetUniformLocation(evolve_.id(), "time_s");
         choppinessLocation_ = glGetUniformLocation(evolve_.id(), "choppiness");
@@ -75,7 +82,13 @@ public:
         decayLocation_ = glGetUniformLocation(foamStep_.id(), "decay");
         thresholdLocation_ = glGetUniformLocation(foamStep_.id(), "foldThreshold");
         softnessLocation_ = glGetUniformLocation(foamStep_.id(), "foldSoftness");
-        foamCascadesLocation_ = glGetUniformLocation(foamStep_.id(), "foamCascades");
+        cascadeWeightLocation_ = glGetUniformLocation(foamStep_.id(), "foldWeight");
+        windowOriginLocation_ = glGetUniformLocation(foamStep_.id(), "windowOrigin");
+        previousOriginLocation_ = glGetUniformLocation(foamStep_.id(), "previousOrigin");
+        centreIndexLocation_ = glGetUniformLocation(foamStep_.id(), "centreIndex");
+        centreFractionLocation_ = glGetUniformLocation(foamStep_.id(), "centreFraction");
+        texelLocation_ = glGetUniformLocation(foamStep_.id(), "texel_m");
+        samplesLocation_ = glGetUniformLocation(foamStep_.id(), "samplesPerSide");
 
         const int n = kSize;
         auto array = [n](GLenum format, int levels) {
@@ -88,12 +101,14 @@ public:
         displacement_ = array(GL_RGBA32F, 1);
         const int levels = SWELL_FFT_LOG2_SIZE + 1;
         derivatives_ = array(GL_RGBA32F, levels);
-        foam_ = array(GL_R16F, levels);
+        foam_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
+        glTextureStorage3D(foam_.id(), SWELL_FOAM_LOG2_SIZE + 1, GL_R16F, kFoamSize, kFoamSize, kFoamLevels);
         slopeMoments_ = array(GL_RGBA32F, levels);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         const float zero = 0.0f;
-        glClearTexImage(foam_.id(), 0, GL_RED, GL_FLOAT, &zero);
+        for (int level = 0; level <= SWELL_FOAM_LOG2_SIZE; ++level)
+            glClearTexImage(foam_.id(), level, GL_RED, GL_FLOAT, &zero);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         for (const gl::Texture* t : {&derivatives_, &slopeMoments_}) {
@@ -126,8 +141,25 @@ public:
 
     void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override
     {
+        // The uniforms first: the foam step samples the cascades through them.
+        updateUniforms(gridCenter_m);
+        bool moved = false, cut = !foamStepped_;
+        for (int level = 0; level < kFoamLevels; ++level) {
+            windows_[size_t(level)] = foamWindowAt(gridCenter_m, foamTexel_m(*field_, level));
+            const glm::ivec2 shift = windows_[size_t(level)].origin - previousOrigin_[size_t(level)];
+            moved = moved || shift != glm::ivec2(0);
+            cut = cut || std::abs(shift.x) > kLongestFoamShift || std::abs(shift.y) > kLongestFoamShift;
+        }
         if (!transformed_ || time_s != time_s_)
-            advance(time_s);
+            advance(time_s, cut);
+        else if (cut && settings_.foamLifetime_s > 0.0)
+            replayFoam(time_s);
+        else if (moved && settings_.foamLifetime_s > 0.0)
+            stepFoam(1.0f); // the same time: only the texels entering the windows are new
+    }
+
+    void updateUniforms(glm::dvec2 gridCenter_m)
+    {
         SpectralUniforms u{};
         for (int c = 0; c < kCascades; ++c) {
             const Cascade& cascade = field_->cascades[size_t(c)];
@@ -151,6 +183,10 @@ public:
         const double streak = std::clamp((u10 - 10.8) / (17.2 - 10.8), 0.0, 1.0);
         u.foamStreak = float(1.0 + 3.0 * streak * streak * (3.0 - 2.0 * streak));
         u.unresolvedSlopeVariance = float(field_->unresolvedSlopeVariance);
+        for (int level = 0; level < kFoamLevels; ++level) {
+            const double texel_m = foamTexel_m(*field_, level);
+            u.foamLevels[level] = glm::vec4(foamWindowAt(gridCenter_m, texel_m).originTexels, float(1.0 / texel_m), 0.0f);
+        }
         glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
     }
 
@@ -164,25 +200,37 @@ public:
     }
 
 private:
-    // Moves the fields to time_s and the foam with them.
-    void advance(double time_s)
+    // Moves the fields to time_s and the foam with them; after a cut (in
+    // time, or of the camera), the foam's history is replayed first.
+    void advance(double time_s, bool cut)
     {
         const double lifetime = settings_.foamLifetime_s;
         const bool foam = lifetime > 0.0;
-        const bool continues = transformed_ && time_s >= time_s_ && time_s - time_s_ <= kLongestStep_s;
+        const bool continues = transformed_ && !cut && time_s >= time_s_ && time_s - time_s_ <= kLongestStep_s;
         if (foam && !continues) {
-            // Replay the foam's recent history on a fixed lattice of steps
-            // ending at time_s, starting from none.
-            const int steps = int(std::ceil(kWarmUpLifetimes * lifetime / kWarmUpStep_s));
-            for (int i = steps; i > 0; --i) {
-                transform(time_s - i * kWarmUpStep_s);
-                stepFoam(i == steps ? 0.0f : float(std::exp(-kWarmUpStep_s / lifetime)));
-            }
+            replayFoam(time_s);
+        } else {
+            const double dt = transformed_ ? time_s - time_s_ : 0.0;
+            transform(time_s);
+            if (foam)
+                stepFoam(float(std::exp(-dt / lifetime)));
         }
-        const double dt = continues ? time_s - time_s_ : kWarmUpStep_s;
-        transform(time_s);
-        stepFoam(foam ? float(std::exp(-dt / lifetime)) : 0.0f);
         updateSlopeMoments();
+    }
+
+    // The foam's recent history on a fixed lattice of steps ending at time_s,
+    // starting from none, so a still shows the foam a sequence arriving there
+    // would (the same for every still at that time and place); leaves the
+    // fields at time_s.
+    void replayFoam(double time_s)
+    {
+        const double lifetime = settings_.foamLifetime_s;
+        const int steps = int(std::ceil(kWarmUpLifetimes * lifetime / kWarmUpStep_s));
+        const float decay = float(std::exp(-kWarmUpStep_s / lifetime));
+        for (int i = steps; i >= 0; --i) {
+            transform(time_s - i * kWarmUpStep_s);
+            stepFoam(i == steps ? 0.0f : decay);
+        }
     }
 
     void updateSlopeMoments()
@@ -198,23 +246,47 @@ private:
         glUseProgram(0);
     }
 
+    // One step of the foam in every level's window: decay what was there
+    // (what the window still holds), make foam where the surface folds.
     void stepFoam(float decay)
     {
         glUseProgram(foamStep_.id());
         glUniform1f(decayLocation_, decay);
-        const bool foam = settings_.foamLifetime_s > 0.0;
-        glUniform1fv(thresholdLocation_, kCascades, foldThresholds_.data());
+        glUniform1fv(thresholdLocation_, kFoamLevels, foldThresholds_.data());
         glUniform1f(softnessLocation_, kFoldSoftness);
-        glUniform1i(foamCascadesLocation_, foam ? kFoamCascades : 0);
-        glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+        std::array<float, kFoamLevels * kCascades> weights{};
+        for (int level = 0; level < kFoamLevels; ++level)
+            for (int c = 0; c < kCascades; ++c)
+                weights[size_t(level * kCascades + c)] = float(foamCascadeWeight(c));
+        glUniform1fv(cascadeWeightLocation_, GLsizei(weights.size()), weights.data());
+        std::array<glm::ivec2, kFoamLevels> origin{}, centre{};
+        std::array<glm::vec2, kFoamLevels> fraction{};
+        std::array<float, kFoamLevels> texel_m{};
+        std::array<int, kFoamLevels> samples{};
+        for (int level = 0; level < kFoamLevels; ++level) {
+            const FoamWindow& w = windows_[size_t(level)];
+            origin[size_t(level)] = w.origin;
+            centre[size_t(level)] = w.centreIndex;
+            fraction[size_t(level)] = w.centreFraction;
+            texel_m[size_t(level)] = float(foamTexel_m(*field_, level));
+            samples[size_t(level)] = foamSamplesPerSide(level);
+        }
+        glUniform2iv(windowOriginLocation_, kFoamLevels, &origin[0].x);
+        glUniform2iv(previousOriginLocation_, kFoamLevels, &previousOrigin_[0].x);
+        glUniform2iv(centreIndexLocation_, kFoamLevels, &centre[0].x);
+        glUniform2fv(centreFractionLocation_, kFoamLevels, &fraction[0].x);
+        glUniform1fv(texelLocation_, kFoamLevels, texel_m.data());
+        glUniform1iv(samplesLocation_, kFoamLevels, samples.data());
+        // The cascades, read through the samplers spectral.glsl declares.
+        bind();
         glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R16F);
-        glDispatchCompute(kSize / 16, kSize / 16, kCascades);
+        glDispatchCompute(kFoamSize / 16, kFoamSize / 16, kFoamLevels);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         glGenerateTextureMipmap(foam_.id());
-        for (GLuint unit = 2; unit < 5; ++unit)
-            glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R16F);
         glUseProgram(0);
+        previousOrigin_ = origin;
+        foamStepped_ = true;
     }
 
     void transform(double time_s)
@@ -249,11 +321,17 @@ private:
 
     std::shared_ptr<const SpectralField> field_;
     SpectralSettings settings_;
-    std::array<float, kCascades> foldThresholds_;
+    std::array<float, kFoamLevels> foldThresholds_;
+    // Each foam level's window now, and where it was at the foam's last step.
+    std::array<FoamWindow, kFoamLevels> windows_{};
+    std::array<glm::ivec2, kFoamLevels> previousOrigin_{};
+    bool foamStepped_ = false;
     gl::Program evolve_, fftRows_, fftColumns_, foamStep_, moments_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
-    GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
+    GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, cascadeWeightLocation_ = -1;
+    GLint windowOriginLocation_ = -1, previousOriginLocation_ = -1, centreIndexLocation_ = -1;
+    GLint centreFractionLocation_ = -1, texelLocation_ = -1, samplesLocation_ = -1;
     gl::Texture initial_, omega_, displacement_, derivatives_, foam_, slopeMoments_;
     gl::Buffer uniforms_;
     bool transformed_ = false;
@@ -268,9 +346,8 @@ SpectralModel::SpectralModel(const SpectralSettings& settings)
           makeSpectralField(SeaSpectrum(settings.wind), settings.choppiness, settings.seed))),
       cpu_(std::make_unique<CpuSurface>(field_))
 {
-    // The fold thresholds from the field itself, at t = 0: its J
-    // distribution is stationary, so any time would do. (fieldsAt is not
-    // thread-safe; nothing else can reach cpu_ while it is being built.)
+    // (fieldsAt is not thread-safe; nothing else can reach cpu_ while it is
+    // being built.)
     const CpuSurface::Fields& fields = cpu_->fieldsAt(0.0);
     // The cascades' bands are disjoint, so their height variances add.
     double variance = 0.0;
@@ -281,11 +358,9 @@ SpectralModel::SpectralModel(const SpectralSettings& settings)
         variance += sum / double(fields.values[size_t(c)][1].size());
     }
     heightDeviation_m_ = std::sqrt(variance);
-    const double fraction = breakingFraction(settings.wind.windSpeed_mps);
-    for (int c = 0; c < kFoamCascades; ++c) {
-        const auto& v = fields.values[size_t(c)];
-        foldThresholds_[size_t(c)] = quantile(jacobians(v[6], v[7], v[3]), fraction);
-    }
+    // The fold threshold from the field itself, at t = 0: its J
+    // distribution is stationary, so any time would do.
+    foldThresholds_.fill(foldThresholdFor(*cpu_, *field_, breakingFraction(settings.wind.windSpeed_mps)));
 }
 
 SpectralModel::~SpectralModel() = default;

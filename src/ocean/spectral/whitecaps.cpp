@@ -9,12 +9,12 @@ double monahanWhitecapCover(double windSpeed10_mps) { return 3.84e-6 * std::pow(
 
 double foamPersistence(double windSpeed10_mps)
 {
-    return 2.35 * std::pow(20.0 / windSpeed10_mps, 1.2);
+    return 3.44 * std::pow(20.0 / windSpeed10_mps, 1.82);
 }
 
 double breakingFraction(double windSpeed10_mps)
 {
-    return monahanWhitecapCover(windSpeed10_mps) / (kFoamCascades * foamPersistence(windSpeed10_mps));
+    return monahanWhitecapCover(windSpeed10_mps) / foamPersistence(windSpeed10_mps);
 }
 
 std::vector<float> jacobians(const std::vector<float>& dxx, const std::vector<float>& dzz, const std::vector<float>& dxz)

@@ -20,8 +20,11 @@
 
 namespace swell::spectral {
 
-// Cascades 0 and 1 make foam: they hold the waves of metres and more that
-// break white; the finer ones ripple.
+// Cascades 0 and 1 fold into foam: they hold the waves of metres and more
+// that break white. The finer ones ripple: their folds come and go many
+// times within a foam lifetime, so foam made by them whitens a speckled
+// haze over every breaking region instead of patches (tried: calibrated to
+// Monahan's cover it reads as noise).
 inline constexpr int kFoamCascades = 2;
 
 // How many times its active area a breaking whitens once its foam has

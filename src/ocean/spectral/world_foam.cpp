@@ -1,0 +1,60 @@
+#include "ocean/spectral/world_foam.h"
+
+#include "ocean/spectral/whitecaps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace swell::spectral {
+
+double foamTexel_m(const SpectralField& field, int level)
+{
+    return field.cascades[kFoamCascades - 1].patch_m / kSize * std::pow(SWELL_FOAM_LEVEL_RATIO, level);
+}
+
+int foamSamplesPerSide(int level)
+{
+    // Level 0's texels sample cascade 1's shortest wave 8 times a
+    // wavelength; samples two of them apart still do 4 times, unaliased.
+    return std::max(1, int(std::lround(std::pow(SWELL_FOAM_LEVEL_RATIO, level) / 2.0)));
+}
+
+double foamCascadeWeight(int cascade) { return cascade < kFoamCascades ? 1.0 : 0.0; }
+
+namespace {
+
+// An index far beyond int's range still gives the right differences.
+int wrapped(double index) { return std::int32_t(std::uint32_t(std::int64_t(index))); }
+
+} // namespace
+
+FoamWindow foamWindowAt(glm::dvec2 gridCenter_m, double texel_m)
+{
+    const glm::dvec2 texels = gridCenter_m / texel_m;
+    const glm::dvec2 index = glm::floor(texels);
+    FoamWindow w;
+    w.centreIndex = {wrapped(index.x), wrapped(index.y)};
+    w.centreFraction = glm::vec2(texels - index);
+    w.origin = w.centreIndex - glm::ivec2(kFoamSize / 2);
+    w.originTexels = glm::vec2(texels - double(kFoamSize) * glm::floor(texels / double(kFoamSize)));
+    return w;
+}
+
+float foldThresholdFor(const CpuSurface& cpu, const SpectralField& field, double fraction)
+{
+    constexpr int kSamples = 256;
+    // A spacing incommensurate with every patch, so no two samples see the
+    // same place of a cascade.
+    const double spacing_m = 1.37 * field.cascades[0].patch_m / kSamples;
+    const SurfaceFilter filter{}; // every cascade at weight 1, as foamCascadeWeight
+    std::vector<float> j;
+    j.reserve(size_t(kSamples) * kSamples);
+    for (int row = 0; row < kSamples; ++row)
+        for (int col = 0; col < kSamples; ++col)
+            j.push_back(float(cpu.foldJacobianAt({col * spacing_m, row * spacing_m}, 0.0, filter, kFoamCascades)));
+    return quantile(std::move(j), fraction);
+}
+
+} // namespace swell::spectral

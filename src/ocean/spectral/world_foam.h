@@ -1,0 +1,55 @@
+// The spectral ocean's whitecap foam, kept in the world rather than in the
+// periodic cascades (whose foam repeated with their patches, a grid seen
+// from high up): SWELL_FOAM_LEVELS windows of SWELL_FOAM_SIZE^2 texels that
+// follow the grid centre, each stored toroidally (world texel w at w mod N)
+// so that a moving camera rewrites only the texels entering along the
+// window's edges. shaders/ocean/spectral_foam.comp makes and ages the foam,
+// worldFoam() in shaders/ocean/spectral.glsl reads it.
+#pragma once
+
+#include "ocean/spectral/spectral_cpu.h"
+#include "ocean/spectral/spectral_field.h"
+#include "swell/shader_constants.h"
+
+#include <glm/vec2.hpp>
+
+namespace swell::spectral {
+
+inline constexpr int kFoamSize = SWELL_FOAM_SIZE;
+inline constexpr int kFoamLevels = SWELL_FOAM_LEVELS;
+
+// A level's texel, m: level 0's are those of the finest cascade that folds
+// into foam (kFoamCascades), so the foam is as sharp as the folds it marks;
+// each further level's are SWELL_FOAM_LEVEL_RATIO times wider.
+double foamTexel_m(const SpectralField& field, int level);
+
+// How many points a side each texel of a level averages the foam made at:
+// enough that they lie no further apart than level 0's texels, so every
+// level sees cascade 1's folds unaliased.
+int foamSamplesPerSide(int level);
+
+// How much cascade c adds to the Jacobian of a level: 1 for the cascades
+// that break, at every level, so that each level's samples see the same
+// field, with the same statistics, the same threshold and the same
+// persistence (filtering the coarse levels' Jacobian instead would make
+// fewer, larger patches there, and the cover would change with distance).
+double foamCascadeWeight(int cascade);
+
+// Where a level's window lies for a grid centre.
+struct FoamWindow {
+    // World texel (x, z) holding the grid centre, modulo 2^32: the shader
+    // only takes differences of indices, which wrap correctly.
+    glm::ivec2 centreIndex{0};
+    glm::vec2 centreFraction{0.0f}; // the grid centre within that texel, 0..1
+    glm::ivec2 origin{0};           // the window's first texel: centreIndex - N/2
+    glm::vec2 originTexels{0.0f};   // the grid centre in texels modulo N, for the lookup
+};
+FoamWindow foamWindowAt(glm::dvec2 gridCenter_m, double texel_m);
+
+// The J below which `fraction` of the surface lies: sampled from the CPU
+// twin at t = 0 (the statistics of J do not change with time) at 256^2
+// points spread over more than the largest patch, at the same warped points
+// and with the same weights as the shader.
+float foldThresholdFor(const CpuSurface& cpu, const SpectralField& field, double fraction);
+
+} // namespace swell::spectral
