@@ -12,6 +12,7 @@ size=(--size 960x540 --time 20)
 "$swell" render -o "$out/default.png" "${size[@]}"
 "$swell" render "$root/scenes/sunset.toml" -o "$out/sunset.png" "${size[@]}"
 "$swell" render "$root/scenes/storm.toml" -o "$out/storm.png" "${size[@]}"
+"$swell" render "$root/scenes/trade-wind.toml" -o "$out/trade-wind.png" "${size[@]}"
 "$swell" render "$out/calm-mirror.toml" -o "$out/calm-mirror.png" "${size[@]}"
 "$swell" render "$root/scenes/underwater.toml" -o "$out/underwater.png" "${size[@]}"
 "$swell" render "$root/scenes/under-way.toml" -o "$out/under-way.png" "${size[@]}"
@@ -23,4 +24,11 @@ sed 's/^position_m = \[0\.0, 8\.0, 0\.0\]/position_m = [0.0, 1.2, 0.0]/' "$root/
 grep -q '^position_m = \[0.0, 1.2, 0.0\]' "$scratch/grazing.toml" ||
   { echo "render-readme-pictures: scenes/trade-wind.toml's camera line changed; update this script" >&2; exit 1; }
 "$swell" render "$scratch/grazing.toml" -o "$out/grazing.png" "${size[@]}"
+
+# The storm from 300 m up, looking 50 degrees down: whitecaps without tiling.
+sed 's/^position_m = \[0\.0, 10\.0, 0\.0\]/position_m = [0.0, 300.0, 0.0]/; s/^pitch_deg = -8\.0/pitch_deg = -50.0/' \
+  "$root/scenes/storm.toml" >"$scratch/storm-from-above.toml"
+grep -q '^position_m = \[0.0, 300.0, 0.0\]' "$scratch/storm-from-above.toml" ||
+  { echo "render-readme-pictures: scenes/storm.toml's camera line changed; update this script" >&2; exit 1; }
+"$swell" render "$scratch/storm-from-above.toml" -o "$out/storm-from-above.png" "${size[@]}"
 git -C "$root" status --short docs/images

@@ -44,7 +44,7 @@ layout(binding = SWELL_UNIT_OCEAN3) uniform sampler2DArray oceanSlopeMoments; //
 // Value noise on a lattice of 1 m cells: the bubbly texture inside foam.
 // An integer hash (multiply-xorshift): uniform on 0..1 for any cell, where
 // the usual fract(sin(x) * big) leans on sin's accuracy far from 0, which
-// software rasterisers do not keep.
+// GLSL does not specify.
 float foamHash(vec2 cell)
 {
     uvec2 q = uvec2(ivec2(cell)) * uvec2(1597334673u, 3812015801u);

@@ -90,12 +90,8 @@ TEST_F(Whitecaps, CoverFollowsMonahan)
         double windSpeed_mps, allowedFactor;
     };
     // The issue asks for a factor of 1.5 at every wind. Measured (seeded, so
-    // the same on every run of one build): 1.65, 0.89, 1.04 and 0.93 times
-    // Monahan at 8, 12, 16 and 20 m/s. At 8 m/s the breaking fraction is so
-    // small (a few dozen samples of each cascade) that the soft edge and
-    // texture of each tiny patch add relatively more: that gap is open, and
-    // bounded here at 2 so that it cannot grow unnoticed.
-    for (const Case c : {Case{8.0, 2.0}, Case{12.0, 1.5}, Case{16.0, 1.5}, Case{20.0, 1.5}}) {
+    // the same on every run of one build): see docs/RENDERING.md.
+    for (const Case c : {Case{8.0, 1.5}, Case{12.0, 1.5}, Case{16.0, 1.5}, Case{20.0, 1.5}}) {
         const double cover = renderedCover(c.windSpeed_mps);
         const double expected = spectral::monahanWhitecapCover(c.windSpeed_mps);
         std::printf("U10 %.0f m/s: rendered cover %.4f, Monahan %.4f, ratio %.2f\n", c.windSpeed_mps, cover, expected,

@@ -5,12 +5,12 @@
 // (Monahan & O'Muircheartaigh 1980, eq. 3; 0.99% at 10 m/s, 10.5% at 20).
 // The cascades' Jacobians do not: the spectrum's shape scales with its peak
 // and so do the cascades, so each cascade's distribution of J is nearly the
-// same at every wind. Foam is therefore made where J is among the lowest
-// `breakingFraction` of a cascade's samples - the most compressed, crest-
-// folding parts of the surface - with that fraction set from W; the foam's
-// lifetime then spreads each breaking over more area than it had while
-// active, by foamPersistence() (measured on rendered frames, see
-// tests/gl/test_whitecaps.cpp).
+// same at every wind. Foam is therefore made where J (of cascades 0 and 1
+// together) is among the lowest `breakingFraction` of the sea - the most
+// compressed, crest-folding parts of the surface - with that fraction set
+// from W; the foam's lifetime then spreads each breaking over more area than
+// it had while active, by foamPersistence() (measured on rendered frames,
+// see tests/golden/test_whitecaps.cpp).
 #pragma once
 
 #include "ocean/spectral/spectral_field.h"
@@ -28,12 +28,13 @@ namespace swell::spectral {
 inline constexpr int kFoamCascades = 2;
 
 // How many times its active area a breaking whitens once its foam has
-// spread and faded (3.85 s lifetime), as measured on rendered frames with a
-// fixed factor of 2.5: 2.90, 1.73, 1.34 and 0.94 times Monahan's cover at 8,
-// 12, 16 and 20 m/s, close to 0.94*(20/U10)^1.2 times it; so the factor is
-// 2.5 times that, 2.35*(20/U10)^1.2. Persistence falls
-// as the wind grows since the breaking crests grow and move faster relative
-// to the fixed lifetime of their foam.
+// spread and faded (3.85 s lifetime), as the mean covered share the shading
+// draws. Measured on rendered frames with a fixed factor of 2.8: 6.51, 2.81,
+// 1.85 and 1.23 times Monahan's cover at 8, 12, 16 and 20 m/s, so the
+// factor was 18.2, 7.9, 5.2 and 3.4 there, about 3.44*(20/U10)^1.82; with
+// that, 0.86, 0.88, 0.92 and 0.90 times Monahan, so 0.89 times it:
+// 3.06*(20/U10)^1.82. Persistence falls as the wind grows since the breaking
+// regions grow relative to how far their foam is carried in its lifetime.
 double foamPersistence(double windSpeed10_mps);
 
 // Monahan & O'Muircheartaigh (1980): the fraction of the sea white at U10, m/s.
