@@ -1,6 +1,8 @@
 // The wake field's spectral step (wake_field.h).
 #include "objects/wake_field.h"
 
+#include "objects/wake_frame.h"
+
 #include "swell/constants.h"
 
 #include <glm/common.hpp>
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 namespace swell::detail {
 
@@ -24,6 +27,15 @@ constexpr double kMinFootprintHalfCells = 2.0;
 // absorbed rather than reflected by the change (a 32-cell sponge takes 1 m
 // waves' energy down by over 10^4 on the way in and out).
 constexpr double kSpongeKeptAtEdge = 0.8;
+
+// Foam: a wave breaks where its slope nears Stokes' limit (ak = 0.44, the
+// 120 deg crest; Stokes 1880, Mathematical and Physical Papers I, p. 227);
+// linear waves have no crest to sharpen, so foam starts at a slope of
+// kFoamOnsetSlope and is full at kFoamFullSlope. It then fades with the
+// spectral whitecaps' lifetime (ocean/spectral/whitecaps.h), 3.85 s.
+constexpr double kFoamOnsetSlope = 0.25;
+constexpr double kFoamFullSlope = 0.44;
+constexpr double kFoamLifetime_s = 3.85;
 
 // The integral of (1 - u^2)^2 over -1..1.
 constexpr double kFootprintShapeIntegral = 16.0 / 15.0;
@@ -49,11 +61,12 @@ struct WakeField::Transforms {
 
 int wakeCellOf(double x_m, double cellSize_m) { return int(std::floor(x_m / cellSize_m)); }
 
-WakeField::WakeField(const WakeSettings& settings) : settings_(settings)
+WakeField::WakeField(const WakeFieldSettings& settings) : settings_(settings)
 {
     const int n = settings_.cells;
     const std::size_t count = std::size_t(n) * std::size_t(n);
     field_.assign(count, {0.0f, 0.0f});
+    foam_.assign(count, 0.0f);
     spectrum_.resize(count);
     turned_.resize(count);
     cosStep_.resize(count);
@@ -67,7 +80,7 @@ WakeField::WakeField(const WakeSettings& settings) : settings_(settings)
             const double k = std::hypot(kx, kz);
             // Linear waves over depth d: omega^2 = g k tanh(k d) (Lamb 1932,
             // sec. 228); the dispersion-free stand-in: omega = c k.
-            const double bigK = k * std::tanh(k * settings_.depth_m);
+            const double bigK = k > 0.0 ? k * std::tanh(k * settings_.depth_m) : 0.0; // tanh(inf) = 1: deep water
             const double omega = settings_.dispersive ? std::sqrt(kGravity * bigK)
                                                       : settings_.dispersionFreeSpeed_m_per_s * k;
             const std::size_t m = std::size_t(p) + std::size_t(q) * n;
@@ -100,6 +113,7 @@ glm::dvec2 WakeField::corner_m() const { return glm::dvec2(cornerCell_) * settin
 void WakeField::reset(glm::dvec2 focus_m)
 {
     std::fill(field_.begin(), field_.end(), std::complex<float>(0.0f, 0.0f));
+    std::fill(foam_.begin(), foam_.end(), 0.0f);
     lastSources_.clear();
     steps_ = 0;
     const int n = settings_.cells;
@@ -116,18 +130,23 @@ void WakeField::recentre(glm::dvec2 focus_m)
     if (shift == glm::ivec2(0))
         return;
     // Cell (i, j) of the new grid is cell (i, j) + shift of the old one.
-    std::vector<std::complex<float>> moved(field_.size(), {0.0f, 0.0f});
-    for (int j = 0; j < n; ++j) {
-        const int oldJ = j + shift.y;
-        if (oldJ < 0 || oldJ >= n)
-            continue;
-        for (int i = 0; i < n; ++i) {
-            const int oldI = i + shift.x;
-            if (oldI >= 0 && oldI < n)
-                moved[std::size_t(i) + std::size_t(j) * n] = field_[std::size_t(oldI) + std::size_t(oldJ) * n];
+    auto move = [&](auto& cells) {
+        using Cells = std::remove_reference_t<decltype(cells)>;
+        Cells moved(cells.size(), typename Cells::value_type{});
+        for (int j = 0; j < n; ++j) {
+            const int oldJ = j + shift.y;
+            if (oldJ < 0 || oldJ >= n)
+                continue;
+            for (int i = 0; i < n; ++i) {
+                const int oldI = i + shift.x;
+                if (oldI >= 0 && oldI < n)
+                    moved[std::size_t(i) + std::size_t(j) * n] = cells[std::size_t(oldI) + std::size_t(oldJ) * n];
+            }
         }
-    }
-    field_ = std::move(moved);
+        cells = std::move(moved);
+    };
+    move(field_);
+    move(foam_);
     cornerCell_ = corner;
 }
 
@@ -203,7 +222,24 @@ void WakeField::step(const std::vector<WakeSource>& sources)
         }
     kiss_fftnd(fft_->inverse, reinterpret_cast<kiss_fft_cpx*>(turned_.data()), in);
     absorbAtBorder();
+    updateFoam();
     ++steps_;
+}
+
+void WakeField::updateFoam()
+{
+    const int n = settings_.cells;
+    const float keep = float(std::exp(-kWakeStep_s / kFoamLifetime_s));
+    const float toSlope = float(0.5 / settings_.cellSize_m);
+    auto e = [&](int i, int j) { return field_[std::size_t(std::clamp(i, 0, n - 1)) + std::size_t(std::clamp(j, 0, n - 1)) * n].real(); };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float sx = (e(i + 1, j) - e(i - 1, j)) * toSlope, sz = (e(i, j + 1) - e(i, j - 1)) * toSlope;
+            const double slope = std::sqrt(double(sx) * sx + double(sz) * sz);
+            const float breaking = float(std::clamp((slope - kFoamOnsetSlope) / (kFoamFullSlope - kFoamOnsetSlope), 0.0, 1.0));
+            float& f = foam_[std::size_t(i) + std::size_t(j) * n];
+            f = std::max(f * keep, breaking);
+        }
 }
 
 std::vector<float> WakeField::heights() const
@@ -217,14 +253,8 @@ std::vector<float> WakeField::heights() const
 double WakeField::heightAt(glm::dvec2 world_m) const
 {
     const int n = settings_.cells;
-    const glm::dvec2 g = (world_m - corner_m()) / settings_.cellSize_m;
-    const glm::dvec2 base = glm::floor(g);
-    const glm::dvec2 f = g - base;
-    auto at = [&](int i, int j) {
-        return i < 0 || j < 0 || i >= n || j >= n ? 0.0 : double(field_[std::size_t(i) + std::size_t(j) * n].real());
-    };
-    const int i = int(base.x), j = int(base.y);
-    return (1.0 - f.y) * ((1.0 - f.x) * at(i, j) + f.x * at(i + 1, j)) + f.y * ((1.0 - f.x) * at(i, j + 1) + f.x * at(i + 1, j + 1));
+    return bilinearOverCells((world_m - corner_m()) / settings_.cellSize_m, n,
+                             [&](int i, int j) { return field_[std::size_t(i) + std::size_t(j) * n].real(); });
 }
 
 } // namespace swell::detail

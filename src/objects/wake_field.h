@@ -25,6 +25,7 @@
 
 #include <complex>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -39,10 +40,10 @@ namespace swell::detail {
 inline constexpr int kWakeStepsPerSecond = 30;
 inline constexpr double kWakeStep_s = 1.0 / kWakeStepsPerSecond;
 
-struct WakeSettings {
+struct WakeFieldSettings {
     int cells = 256;          // per side; a power of two, 32..1024
     double cellSize_m = 1.0;  // 0.1..10; waves shorter than 2 cells are not carried
-    double depth_m = 1.0e4;   // water depth for the dispersion, m (1e4: deep for every wave the grid holds)
+    double depth_m = std::numeric_limits<double>::infinity(); // water depth for the dispersion, m
     // Sponge along the border, cells: waves entering it die out before they
     // reach the edge and come back from the other side (the FFT's domain is periodic).
     int spongeCells = 32;
@@ -66,7 +67,7 @@ struct WakeSource {
 
 class WakeField {
 public:
-    explicit WakeField(const WakeSettings& settings);
+    explicit WakeField(const WakeFieldSettings& settings);
     ~WakeField();
     WakeField(WakeField&&) noexcept;
     WakeField& operator=(WakeField&&) noexcept;
@@ -80,7 +81,7 @@ public:
     void step(const std::vector<WakeSource>& sources);
 
     std::int64_t steps() const { return steps_; }
-    const WakeSettings& settings() const { return settings_; }
+    const WakeFieldSettings& settings() const { return settings_; }
     int cells() const { return settings_.cells; }
     double cellSize_m() const { return settings_.cellSize_m; }
     // World x, z of cell (0, 0)'s centre; cell (i, j) lies at corner + (i, j) * cellSize.
@@ -91,12 +92,16 @@ public:
     std::vector<float> heights() const;
     // Height at a world point, m, bilinear between cell centres (0 outside).
     double heightAt(glm::dvec2 world_m) const;
+    // The foam per cell, 0..1, laid out as heights(): made where the wake's
+    // slope passes the breaking steepness, fading as whitecaps do.
+    const std::vector<float>& foam() const { return foam_; }
 
 private:
     void addFootprints(const std::vector<WakeSource>& sources, double sign);
     void absorbAtBorder();
+    void updateFoam();
 
-    WakeSettings settings_;
+    WakeFieldSettings settings_;
     glm::ivec2 cornerCell_{0};
     std::int64_t steps_ = 0;
     // Per cell, E + i phi (m, m^2/s): one complex transform carries both.
@@ -104,6 +109,7 @@ private:
     // Per mode (row-major, FFT order): cos and sin of omega dt, K / omega and g / omega.
     std::vector<float> cosStep_, sinStep_, kOverOmega_, gOverOmega_;
     std::vector<float> spongeOfIndex_; // per row or column index, the factor a step keeps
+    std::vector<float> foam_;
     std::vector<WakeSource> lastSources_; // the footprints in E, taken out again next step
     struct Transforms;
     std::unique_ptr<Transforms> fft_;

@@ -16,7 +16,7 @@
 namespace {
 
 using swell::detail::WakeField;
-using swell::detail::WakeSettings;
+using swell::detail::WakeFieldSettings;
 using swell::detail::WakeSource;
 
 // A hull-sized source: 10 m long, 4 m wide. At 4 m/s its length Froude
@@ -32,7 +32,7 @@ constexpr double kRunTime_s = 90.0;
 // A source crossing the field along +x at kSpeed_m_per_s for kRunTime_s, the
 // grid following it with the source 64 m ahead of the centre. Returns the
 // field and, in `source`, where the source ended.
-WakeField runSource(const WakeSettings& settings, glm::dvec2& source)
+WakeField runSource(const WakeFieldSettings& settings, glm::dvec2& source)
 {
     WakeField field(settings);
     const glm::dvec2 start(0.0, 0.0), dir(1.0, 0.0);
@@ -77,7 +77,7 @@ double wakeHalfAngle_deg(const WakeField& field, glm::dvec2 source)
 TEST(WakeField, DeepWaterWakeShowsTheKelvinAngle)
 {
     glm::dvec2 source;
-    const WakeField field = runSource(WakeSettings{}, source);
+    const WakeField field = runSource(WakeFieldSettings{}, source);
     const double angle = wakeHalfAngle_deg(field, source);
     RecordProperty("kelvin_half_angle_deg", std::to_string(angle));
     // Kelvin: asin(1/3) = 19.47 deg, whatever the speed (Lamb 1932, sec. 256).
@@ -89,7 +89,7 @@ TEST(WakeField, WavesAtOneSpeedLeaveAMachConeInstead)
     // Every wave at c = 2 m/s: the wake is the cone of half-angle
     // asin(c / U) = 30 deg, not Kelvin's (Lighthill 1978, Waves in Fluids,
     // sec. 3.10): the angle measure tells the two apart.
-    WakeSettings settings;
+    WakeFieldSettings settings;
     settings.dispersive = false;
     settings.dispersionFreeSpeed_m_per_s = 2.0;
     glm::dvec2 source;
@@ -102,7 +102,7 @@ TEST(WakeField, WavesAtOneSpeedLeaveAMachConeInstead)
 
 TEST(WakeField, SameSourcesGiveTheSameFieldBitForBit)
 {
-    WakeSettings settings;
+    WakeFieldSettings settings;
     settings.cells = 128;
     auto run = [&] {
         WakeField field(settings);
@@ -128,7 +128,7 @@ TEST(WakeField, ABodyAtRestMakesNoWaves)
 {
     // The field holds eta + D: a hull that does not move leaves it flat, so
     // its own hollow is never drawn or floated on twice.
-    WakeSettings settings;
+    WakeFieldSettings settings;
     settings.cells = 64;
     WakeField field(settings);
     field.reset({0.0, 0.0});
