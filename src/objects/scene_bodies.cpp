@@ -10,6 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace swell::detail {
@@ -130,8 +131,10 @@ void SceneBodies::advanceWakeFor(std::int64_t bodyStep)
     // n; wake step k -> k + 1 needs the bodies at body step 4k.
     const std::int64_t needed = bodyStep / kBodyStepsPerWaterSample + 1;
     while (wake_->steps() < needed) {
+        const auto start = std::chrono::steady_clock::now();
         wake_->step(wakeSources(), wakeFocus());
         ++wakeStepsTaken_;
+        wakeSteps_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
 }
 

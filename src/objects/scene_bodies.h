@@ -53,6 +53,8 @@ public:
     const SceneWake* wake() const { return wake_.get(); }
     // Wake steps taken so far (restarts included), for the benchmark.
     std::int64_t wakeStepsTaken() const { return wakeStepsTaken_; }
+    // The wall time those steps took, ms (for the benchmark; never read by the simulation).
+    double wakeSteps_ms() const { return wakeSteps_ms_; }
 
 private:
     // What each body's footprint on the wake is, besides where it stands.
@@ -69,6 +71,7 @@ private:
     std::size_t leader_ = 0;             // the body the wake's grid follows
     glm::dvec2 leaderDirection_{0.0};    // its heading of travel, unit (0 when it does not travel)
     std::int64_t wakeStepsTaken_ = 0;
+    double wakeSteps_ms_ = 0.0;
     std::vector<std::unique_ptr<FloatingBody>> bodies_; // null for objects that are not bodies
     std::vector<double> scale_;
     std::size_t count_ = 0;

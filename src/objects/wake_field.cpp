@@ -28,13 +28,20 @@ constexpr double kMinFootprintHalfCells = 2.0;
 // waves' energy down by over 10^4 on the way in and out).
 constexpr double kSpongeKeptAtEdge = 0.8;
 
-// Foam: a wave breaks where its slope nears Stokes' limit (ak = 0.44, the
-// 120 deg crest; Stokes 1880, Mathematical and Physical Papers I, p. 227);
-// linear waves have no crest to sharpen, so foam starts at a slope of
-// kFoamOnsetSlope and is full at kFoamFullSlope. It then fades with the
-// spectral whitecaps' lifetime (ocean/spectral/whitecaps.h), 3.85 s.
-constexpr double kFoamOnsetSlope = 0.25;
+// Foam, made two ways, then fading with the spectral whitecaps' lifetime
+// (ocean/spectral/whitecaps.h), 3.85 s:
+// - a wave breaks where its slope nears Stokes' limit (ak = 0.44, the
+//   120 deg crest; Stokes 1880, Mathematical and Physical Papers I, p. 227);
+//   linear waves have no crest to sharpen, so foam starts at a slope of
+//   kFoamOnsetSlope and is full at kFoamFullSlope;
+// - the water closing in behind a moving hull breaks into its stern wash:
+//   foam where the footprint's draft falls faster than kWashOnset_m_per_s,
+//   full from kWashFull_m_per_s (a 7 m boat at 4 m/s leaves its water at
+//   about 0.5 m/s; at 1 m/s, a quarter of that, it leaves no white water).
+constexpr double kFoamOnsetSlope = 0.3;
 constexpr double kFoamFullSlope = 0.44;
+constexpr double kWashOnset_m_per_s = 0.15;
+constexpr double kWashFull_m_per_s = 0.4;
 constexpr double kFoamLifetime_s = 3.85;
 
 // The integral of (1 - u^2)^2 over -1..1.
@@ -67,6 +74,7 @@ WakeField::WakeField(const WakeFieldSettings& settings) : settings_(settings)
     const std::size_t count = std::size_t(n) * std::size_t(n);
     field_.assign(count, {0.0f, 0.0f});
     foam_.assign(count, 0.0f);
+    draftChange_.assign(count, 0.0f);
     spectrum_.resize(count);
     turned_.resize(count);
     cosStep_.resize(count);
@@ -173,7 +181,9 @@ void WakeField::addFootprints(const std::vector<WakeSource>& sources, double sig
                 if (std::abs(u) >= 1.0 || std::abs(v) >= 1.0)
                     continue;
                 const double du = 1.0 - u * u, dv = 1.0 - v * v;
-                field_[std::size_t(i) + std::size_t(j) * n] += std::complex<float>(float(sign * peak_m * du * du * dv * dv), 0.0f);
+                const float draft_m = float(sign * peak_m * du * du * dv * dv);
+                field_[std::size_t(i) + std::size_t(j) * n] += std::complex<float>(draft_m, 0.0f);
+                draftChange_[std::size_t(i) + std::size_t(j) * n] += draft_m;
             }
     }
 }
@@ -195,6 +205,7 @@ void WakeField::step(const std::vector<WakeSource>& sources)
     // are where they start, on water at rest round them: nothing changes.
     if (steps_ == 0)
         lastSources_ = sources;
+    std::fill(draftChange_.begin(), draftChange_.end(), 0.0f);
     addFootprints(lastSources_, -1.0);
     addFootprints(sources, 1.0);
     lastSources_ = sources;
@@ -237,8 +248,10 @@ void WakeField::updateFoam()
             const float sx = (e(i + 1, j) - e(i - 1, j)) * toSlope, sz = (e(i, j + 1) - e(i, j - 1)) * toSlope;
             const double slope = std::sqrt(double(sx) * sx + double(sz) * sz);
             const float breaking = float(std::clamp((slope - kFoamOnsetSlope) / (kFoamFullSlope - kFoamOnsetSlope), 0.0, 1.0));
+            const double leaving_m_per_s = -draftChange_[std::size_t(i) + std::size_t(j) * n] / kWakeStep_s;
+            const float wash = float(std::clamp((leaving_m_per_s - kWashOnset_m_per_s) / (kWashFull_m_per_s - kWashOnset_m_per_s), 0.0, 1.0));
             float& f = foam_[std::size_t(i) + std::size_t(j) * n];
-            f = std::max(f * keep, breaking);
+            f = std::max(f * keep, std::max(breaking, wash));
         }
 }
 

@@ -110,6 +110,7 @@ private:
     std::vector<float> cosStep_, sinStep_, kOverOmega_, gOverOmega_;
     std::vector<float> spongeOfIndex_; // per row or column index, the factor a step keeps
     std::vector<float> foam_;
+    std::vector<float> draftChange_; // per cell, how much the footprints' draft changed this step, m
     std::vector<WakeSource> lastSources_; // the footprints in E, taken out again next step
     struct Transforms;
     std::unique_ptr<Transforms> fft_;
