@@ -65,7 +65,7 @@ void main()
     // foam joins the waves' whitecaps.
     vec4 wake = wakeAt(vRestPoint);
     n = normalize(n / max(n.y, 0.1) - vec3(wake.y - vWakeSlope.x, 0.0, wake.z - vWakeSlope.y));
-    foam = max(foam, wake.w);
+    foam = max(foam, wakeFoamAt(vRestPoint, wake.w));
 #endif
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);

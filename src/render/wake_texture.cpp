@@ -32,6 +32,8 @@ void WakeTexture::upload(const WakeFrame* frame, glm::dvec3 origin)
         u.corner_m = glm::vec2(corner);
         u.cellSize_m = float(frame->cellSize_m);
         u.cells = frame->cells;
+        const glm::ivec2 period(SWELL_WAKE_NOISE_PERIOD);
+        u.cornerCell = ((frame->cornerCell % period) + period) % period;
     }
     glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
 }
