@@ -56,14 +56,16 @@ float wakeNoise(vec2 p, float period)
 }
 
 // The wake's foam at a point relative to the render origin, 0..1: the
-// cover the simulation gives, broken up by two octaves of noise (patches of
-// about 1 and 0.5 cells) so a stern wash reads as bubbles, not paint.
+// cover the simulation gives, broken up by three octaves of noise (patches
+// of about 1, 1/2 and 1/4 cell) so a stern wash reads as bubbles, not paint:
+// thin cover leaves only the densest patches, full cover a few holes.
 float wakeFoamAt(vec2 p_m, float cover)
 {
     vec2 g = (p_m - wakeCorner_m) / wakeCellSize_m + vec2(wakeCornerCell);
     float period = float(SWELL_WAKE_NOISE_PERIOD);
-    float texture = 0.6 * wakeNoise(g, period) + 0.4 * wakeNoise(2.0 * g, 2.0 * period);
-    return clamp(cover * (0.3 + 1.1 * texture), 0.0, 1.0);
+    float texture = 0.5 * wakeNoise(g, period) + 0.3 * wakeNoise(2.0 * g, 2.0 * period) +
+                    0.2 * wakeNoise(4.0 * g, 4.0 * period);
+    return clamp(cover * (1.6 * texture - 0.1), 0.0, 1.0);
 }
 
 #endif
