@@ -70,6 +70,7 @@ struct Renderer::Impl {
     mutable std::shared_ptr<const WakeFrame> wakeFrame;
     mutable double wakeFrameTime_s = -1.0;
     WakeTexture wakeTexture;
+    double wakeReach_m = 0.0; // the largest wake height this frame, m
     glm::dvec3 posesOrigin{0.0}; // the render origin poses are relative to
 
     explicit Impl(RendererOptions options)
@@ -127,7 +128,7 @@ struct Renderer::Impl {
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         f.waveHeightDeviation_m = float(model().heightDeviation_m());
-        const WaveReach reach = model().reach();
+        WaveReach reach = model().reach();
         f.waveMeanSquareSlope = float(seaMeanSquareSlope);
         // Bodies step on the CPU to this frame's time: fixed steps, so the
         // poses depend on time_s alone, never on the frames before. Their
@@ -147,6 +148,13 @@ struct Renderer::Impl {
         notify(true, "wake");
         wakeTexture.upload(wake.get(), origin);
         wakeTexture.bind();
+        // The wake raises and lowers the water beyond the waves' reach: the
+        // grid's tiles are culled, and the near plane placed, with it.
+        wakeReach_m = 0.0;
+        if (wake)
+            for (const glm::vec4& texel : wake->texels)
+                wakeReach_m = std::max(wakeReach_m, double(std::abs(texel.x)));
+        reach.vertical_m += wakeReach_m;
         notify(false, "wake");
         posesOrigin = origin;
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
@@ -341,7 +349,9 @@ struct Renderer::Impl {
         bindFrame(PassMain, f);
         // The waterline mask is drawn at the main pass's size, so the main
         // pass (multisampled or not) reads it on the same pixel grid.
-        drawWaterline(nearPlaneMedium(camera, double(size.x) / double(size.y), model().reach()), size);
+        WaveReach reach = model().reach();
+        reach.vertical_m += wakeReach_m;
+        drawWaterline(nearPlaneMedium(camera, double(size.x) / double(size.y), reach), size);
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.texture());
         notify(true, "main");
         const GLuint mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
