@@ -40,8 +40,7 @@ bool sameBodies(const Scene& a, const Scene& b)
             return false;
     }
     return a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m &&
-           (a.waves.listed.depth_m == b.waves.listed.depth_m ||
-            (std::isnan(a.waves.listed.depth_m) && std::isnan(b.waves.listed.depth_m)));
+           a.waves.listed.depth_m == b.waves.listed.depth_m; // the wake's dispersion
 }
 
 SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& surface)
