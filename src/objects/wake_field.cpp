@@ -26,7 +26,7 @@ constexpr double kMinFootprintHalfCells = 2.0;
 // a quadratic ramp from 1 at its inner edge, gentle enough that waves are
 // absorbed rather than reflected by the change. A wave of group speed c_g
 // stays h / (c_g dt) steps in each cell of size h: a 20 m wave (c_g = 2.8
-// m/s) loses a factor e^-23 of its amplitude crossing a 32-cell sponge of
+// m/s) loses a factor e^-25 of its amplitude crossing a 32-cell sponge of
 // 1 m cells once, shorter and slower waves far more.
 constexpr double kSpongeKeptAtEdge = 0.8;
 
