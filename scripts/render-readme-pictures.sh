@@ -31,4 +31,13 @@ sed 's/^position_m = \[0\.0, 10\.0, 0\.0\]/position_m = [0.0, 300.0, 0.0]/; s/^p
 grep -q '^position_m = \[0.0, 300.0, 0.0\]' "$scratch/storm-from-above.toml" ||
   { echo "render-readme-pictures: scenes/storm.toml's camera line changed; update this script" >&2; exit 1; }
 "$swell" render "$scratch/storm-from-above.toml" -o "$out/storm-from-above.png" "${size[@]}"
+
+# The wake from above, against the sun: the under-way preset at 30 s with its
+# camera (the [camera] table and its path, the file's end) replaced.
+sed '/^\[camera\]/,$d' "$root/scenes/under-way.toml" >"$scratch/wake.toml"
+grep -q '^\[\[objects\]\]' "$scratch/wake.toml" && ! grep -q '^\[camera' "$scratch/wake.toml" ||
+  { echo "render-readme-pictures: scenes/under-way.toml's layout changed; update this script" >&2; exit 1; }
+printf '%s\n' '[camera]' 'position_m = [22.0, 32.0, -78.0]' 'yaw_deg = -22.0' 'pitch_deg = -33.0' 'far_m = 30000.0' \
+  >>"$scratch/wake.toml"
+"$swell" render "$scratch/wake.toml" -o "$out/under-way-wake.png" --size 960x540 --time 30
 git -C "$root" status --short docs/images

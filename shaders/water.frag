@@ -1,8 +1,9 @@
 // Water shading: reflection weighed against refraction by Fresnel, Phong
 // diffuse and a specular lobe spread by the slopes the normal leaves out,
-// light through backlit crests, whitecap foam, and fog; seen from below,
-// Snell's window (underwater_surface.glsl). Each term can be left out for
-// the benchmark (SWELL_TERM_* in swell/shader_constants.h).
+// light through backlit crests, whitecap foam (the waves' and the bodies'
+// wake's), and fog; seen from below, Snell's window
+// (underwater_surface.glsl). Each term can be left out for the benchmark
+// (SWELL_TERM_* in swell/shader_constants.h).
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"
@@ -11,6 +12,9 @@
 #include "ocean.glsl"
 #include "underwater_surface.glsl"
 #include "subsurface.glsl"
+#if SWELL_WAKE
+#include "wake.glsl"
+#endif
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -19,6 +23,9 @@ in vec3 vAlongZ;
 in vec2 vRestPoint;
 in float vCellSize;
 in float vHeightScale;
+#if SWELL_WAKE
+in vec2 vWakeSlope;
+#endif
 out vec4 fragColor;
 
 // A term of the shading is in unless the benchmark left it out.
@@ -49,6 +56,16 @@ void main()
     vec3 n = normalize(vNormal);
     float foam = 0.0;
     float slopeVariance = 0.0;
+#endif
+#if SWELL_WAKE
+    // The wake's waves are as short as 2 of its cells, finer than the grid
+    // far from the camera: the pixel takes the wake's slopes it sees itself
+    // in place of those the grid's vertices interpolated (n / n.y is
+    // (-dh/dx, 1, -dh/dz) for a height field). Where the wake breaks, its
+    // foam joins the waves' whitecaps.
+    vec4 wake = wakeAt(vRestPoint);
+    n = normalize(n / max(n.y, 0.1) - vec3(wake.y - vWakeSlope.x, 0.0, wake.z - vWakeSlope.y));
+    foam = max(foam, wakeFoamAt(vRestPoint, wake.w));
 #endif
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);

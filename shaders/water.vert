@@ -2,6 +2,9 @@
 #include "frame.glsl"
 #include "grid.glsl"
 #include "ocean.glsl"
+#if SWELL_WAKE
+#include "wake.glsl"
+#endif
 
 out vec3 vPosition;    // displaced position relative to the render origin, m
 out vec3 vNormal;
@@ -10,6 +13,9 @@ out vec3 vAlongZ;
 out vec2 vRestPoint;   // rest position relative to the render origin, m (captured by tests)
 out float vCellSize;   // grid spacing, m (for the LOD view)
 out float vHeightScale; // horizon fade, 0..1
+#if SWELL_WAKE
+out vec2 vWakeSlope;   // the wake's slopes at the vertex, d/dx and d/dz (the fragment's own replace them)
+#endif
 
 void main()
 {
@@ -18,6 +24,16 @@ void main()
     float distance_m = length(rest - eyePosition.xz);
     float fade = horizonFade(distance_m);
     SurfacePoint p = oceanSurface(g.offset, g.cellSize, fade);
+#if SWELL_WAKE
+    // The bodies' wake rises at the rest point (as swell::DrawnSurface adds
+    // it); its slopes tilt the surface's partial derivatives.
+    vec4 wake = wakeAt(rest);
+    p.displacement.y += wake.x;
+    p.alongX.y += wake.y;
+    p.alongZ.y += wake.z;
+    p.normal = normalize(cross(p.alongZ, p.alongX));
+    vWakeSlope = wake.yz;
+#endif
     vPosition = vec3(rest.x, 0.0, rest.y) + p.displacement;
     vNormal = p.normal;
     vAlongX = p.alongX;

@@ -229,6 +229,8 @@ struct Results {
     std::vector<ReflectionModeCost> reflectionModes;
     int floatingBodies = 0;
     std::vector<long long> bodySteps; // per measured frame, all bodies (Renderer::counters())
+    std::vector<long long> wakeSteps; // per measured frame, the bodies' wake field's steps (1/30 s each)
+    std::vector<double> wakeSteps_ms; // per measured frame, the wall time of those steps (within "bodies")
 };
 
 void printReport(const Results& results);

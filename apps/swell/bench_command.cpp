@@ -185,6 +185,8 @@ int runBench(const BenchOptions& options)
             r.real.push_back(std::move(frame));
             r.realTimes_s.push_back(t);
             r.bodySteps.push_back(renderer.counters().bodySteps);
+            r.wakeSteps.push_back(renderer.counters().wakeSteps);
+            r.wakeSteps_ms.push_back(renderer.counters().wakeSteps_ms);
             r.floatingBodies = renderer.counters().floatingBodies;
             r.realCameras.push_back(camera);
         }

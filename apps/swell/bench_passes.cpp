@@ -276,6 +276,8 @@ void FloorFrame::render(PassObserver& observer, bool waterline)
     observer.endPass("ocean");
     observer.beginPass("bodies");
     observer.endPass("bodies");
+    observer.beginPass("wake");
+    observer.endPass("wake");
 
     observer.beginPass("reflection");
     s.bind(s.reflection);

@@ -247,8 +247,21 @@ void printReport(const Results& r)
     long long steps = 0;
     for (long long s : r.bodySteps)
         steps += s;
-    std::printf("  bodies: %d floating rigid bodies, %lld integration steps of 1/120 s over the measured frames\n\n",
+    std::printf("  bodies: %d floating rigid bodies, %lld integration steps of 1/120 s over the measured frames\n",
                 r.floatingBodies, steps);
+    long long wakeSteps = 0;
+    double wake_ms = 0.0;
+    for (size_t f = 0; f < r.wakeSteps.size(); ++f) {
+        wakeSteps += r.wakeSteps[f];
+        wake_ms += r.wakeSteps_ms[f];
+    }
+    if (wakeSteps > 0)
+        std::printf("  wake: %lld steps of 1/30 s over the measured frames (within \"bodies\"), %.2f ms a step, "
+                    "%.2f ms a frame on average (wall)\n",
+                    wakeSteps, wake_ms / double(wakeSteps), wake_ms / double(r.wakeSteps.size()));
+    else
+        std::printf("  wake: none (no floating body under way, or wake.enabled = false)\n");
+    std::printf("\n");
 
     if (!r.reflectionModes.empty()) {
         std::printf("Reflection lookup: the water pass with each reflection.mode, frame for frame in turn\n");
@@ -357,6 +370,8 @@ void writeJson(const Results& r, const std::string& path)
     j["passes"] = std::move(passes);
     j["floating_bodies"] = r.floatingBodies;
     j["body_steps_per_frame"] = r.bodySteps;
+    j["wake_steps_per_frame"] = r.wakeSteps;
+    j["wake_steps_ms_per_frame"] = r.wakeSteps_ms;
 
     const Summary frameReal = summarize(frameSeries(r.real, &FrameSample::wall_ms));
     const Summary frameFloor = summarize(frameSeries(r.floor, &FrameSample::wall_ms));

@@ -129,14 +129,24 @@ int runRender(const RenderOptions& options)
     options.outputSettings.applyTo(scene);
     // Floating bodies are stepped from t = 0 at 1/120 s (docs/BODIES.md):
     // an hour of steps is about a minute of CPU per body, so a first frame
-    // much later would look like a hang.
+    // much later would look like a hang. Their wake steps too, at 1/30 s and
+    // about 5 ms a step (docs/PERFORMANCE.md): 10 minutes of it is a minute
+    // and a half.
     constexpr double kLatestBodyStart_s = 3600.0;
+    constexpr double kLatestWakeStart_s = 600.0;
     const bool bodies = std::any_of(scene.objects.begin(), scene.objects.end(),
                                     [](const SceneObject& o) { return o.isRigidBody(); });
+    const bool wake = scene.wake.enabled && std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
+                          return o.isRigidBody() && (o.velocity_m_per_s.x != 0.0 || o.velocity_m_per_s.z != 0.0);
+                      });
     if (bodies && options.time_s > kLatestBodyStart_s)
         throw InputError({"--time"}, fmt::format("{} s: the scene's floating bodies are stepped from t = 0, so a first "
                                                  "frame after {} s is refused",
                                                  options.time_s, kLatestBodyStart_s));
+    if (wake && options.time_s > kLatestWakeStart_s)
+        throw InputError({"--time"}, fmt::format("{} s: the wake of the scene's bodies under way is stepped from t = 0, "
+                                                 "so a first frame after {} s is refused (or set wake.enabled = false)",
+                                                 options.time_s, kLatestWakeStart_s));
     gl::HeadlessContext context(true);
     gl::DebugHandler debug = gl::logOnceDebugHandler();
     gl::installDebugHandler(&debug);

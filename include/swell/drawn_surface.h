@@ -1,6 +1,7 @@
 // The water surface exactly as the renderer draws it for one camera and time:
 // the grid's vertices, each displaced by the waves its cell can carry and
-// faded toward the horizon, joined by flat triangles. The exact surface
+// faded toward the horizon, raised by the floating bodies' wake at its rest
+// point when there is one, joined by flat triangles. The exact surface
 // (WaveModel::surfaceAt) differs from it by the waves the grid filters out
 // and by the triangles' chords: centimetres near the camera, decimetres far
 // away. Query this one to put things on the water the user sees.
@@ -13,9 +14,14 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <memory>
 #include <optional>
 
 namespace swell {
+
+namespace detail {
+struct WakeFrame;
+}
 
 // Where a vertical line through a world point meets the drawn water.
 struct SWELL_API DrawnPoint {
@@ -27,10 +33,11 @@ struct SWELL_API DrawnPoint {
 class SWELL_API DrawnSurface {
 public:
     // The surface `model` draws on the grid `shape` for a camera at eye_m
-    // (absolute world, m) at time_s. Keeps a reference to `model`: it must
-    // outlive this object.
+    // (absolute world, m) at time_s, plus `wake` (the bodies' wake as this
+    // frame draws it; library-internal, null for none). Keeps a reference
+    // to `model`: it must outlive this object.
     DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
-                 double time_s);
+                 double time_s, std::shared_ptr<const detail::WakeFrame> wake = nullptr);
 
     // The drawn water under world point (x, z). Empty only where no triangle
     // covers the point, which happens nowhere on the unbounded grid except
@@ -55,6 +62,7 @@ private:
     GridPlacement placement_;
     glm::dvec3 eye_m_;
     double time_s_;
+    std::shared_ptr<const detail::WakeFrame> wake_;
 };
 
 } // namespace swell

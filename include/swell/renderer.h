@@ -54,11 +54,14 @@ struct SWELL_API FrameCounters {
     int drawCalls = 0;
     int floatingBodies = 0;  // rigid bodies in the scene (swell/floating_body.h)
     long long bodySteps = 0; // their integration steps taken for this frame (1/120 s each, all bodies)
+    long long wakeSteps = 0; // steps of their wake field taken for this frame (1/30 s each)
+    double wakeSteps_ms = 0.0; // the wall time those steps took, ms (part of the "bodies" pass)
 };
 
 // Told when each pass of a frame begins and ends (for timing and counters).
 // Passes: "ocean" (the wave model's simulation for the frame), "bodies" (the
-// floating bodies stepped on the CPU to the frame's time), "reflection",
+// floating bodies and their wake stepped on the CPU to the frame's time),
+// "wake" (the wake's frame blended and uploaded), "reflection",
 // "refraction", "main"; within "main", "water" for the water draw; then
 // "present" when the main pass's image is resolved, filtered or scaled.
 class SWELL_API PassObserver {

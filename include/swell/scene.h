@@ -136,6 +136,14 @@ struct SWELL_API SceneObject {
     bool isRigidBody() const { return floats && (mass_kg > 0.0 || density_kg_per_m3 > 0.0); }
 };
 
+// The wake field: waves the floating bodies make as they move (docs/BODIES.md).
+// A square grid of cells that follows the bodies, simulated on the CPU.
+struct SWELL_API WakeSettings {
+    bool enabled = true;       // moving rigid bodies leave wakes
+    int cells = 256;           // cells along each side, 32..1024
+    double cellSize_m = 1.0;   // m, 0.1..10: waves shorter than 2 cells are not carried
+};
+
 struct SWELL_API CameraKey {
     double time_s = 0.0;          // when the camera is here, s
     glm::dvec3 position_m{0.0};   // world position, m
@@ -171,6 +179,7 @@ struct SWELL_API Scene {
     WaterSettings water;
     ReflectionSettings reflection;
     std::vector<SceneObject> objects;
+    WakeSettings wake;
     CameraSettings camera;
     DebugView debugView = DebugView::Shaded;
     // Where relative object and sky paths are found: the scene file's folder

@@ -66,6 +66,13 @@
 #define SWELL_WATER_IOR 1.333
 // The image a post-process (FXAA) reads.
 #define SWELL_UNIT_POST_SOURCE 11
+// The wake field's frame (shaders/wake.glsl): height, slopes and foam per cell.
+#define SWELL_UNIT_WAKE 12
+// ...and its uniform block: where the cells lie.
+#define SWELL_BINDING_WAKE 2
+// The wake foam's noise repeats after this many cells, m / cell size: far
+// longer than any foam patch, short enough for a float to hold its cells exactly.
+#define SWELL_WAKE_NOISE_PERIOD 256
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).

@@ -1,5 +1,7 @@
 #include "swell/drawn_surface.h"
 
+#include "objects/wake_frame.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -33,21 +35,24 @@ glm::dvec2 xz(glm::dvec3 p) { return {p.x, p.z}; }
 } // namespace
 
 DrawnSurface::DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
-                           double time_s)
-    : model_(model), shape_(shape), fade_(fade), placement_(placeGrid(shape, eye_m)), eye_m_(eye_m), time_s_(time_s)
+                           double time_s, std::shared_ptr<const detail::WakeFrame> wake)
+    : model_(model), shape_(shape), fade_(fade), placement_(placeGrid(shape, eye_m)), eye_m_(eye_m), time_s_(time_s),
+      wake_(std::move(wake))
 {
 }
 
 glm::dvec3 DrawnSurface::vertex(int i, int j) const
 {
     // As wave_capture's CPU twin of water.vert: the rest point, the waves its
-    // cell size resolves, the horizon fade at its distance from the eye.
+    // cell size resolves, the horizon fade at its distance from the eye, and
+    // the wake at the rest point (shaders/wake.glsl).
     const GridPoint point = gridPoint(shape_, placement_, i, j);
     const glm::dvec2 rest = placement_.center_m + point.offset_m;
     const double distance_m = glm::length(rest - glm::dvec2(eye_m_.x, eye_m_.z));
     const glm::dvec3 d =
         model_.displacementAt(rest, time_s_, SurfaceFilter{point.cellSize_m, horizonFadeAt(fade_, distance_m)});
-    return glm::dvec3(rest.x, 0.0, rest.y) + d;
+    const double wake_m = wake_ ? wake_->heightAt(rest) : 0.0;
+    return glm::dvec3(rest.x, wake_m, rest.y) + d;
 }
 
 glm::ivec2 DrawnSurface::restCellOf(glm::dvec2 r) const

@@ -344,6 +344,16 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t i) -> auto& { return s.objects[i].dampingRatio; },
            {.key = "objects.damping_ratio", .list = L::Objects, .min = 0.0, .max = 2.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "rigid body: fraction of critical damping in heave, roll and pitch"}),
+        // [wake]
+        at([](auto& s, std::size_t) -> auto& { return s.wake.enabled; },
+           {.key = "wake.enabled", .kind = K::Flag, .effect = E::Programs, .min = 0.0, .max = 1.0, .sliderMin = 0.0,
+            .sliderMax = 1.0, .description = "moving floating rigid bodies leave wakes (waves and foam)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.wake.cells; },
+           {.key = "wake.cells", .kind = K::Integer, .min = 32.0, .max = 1024.0, .sliderMin = 32.0, .sliderMax = 1024.0,
+            .logarithmic = true, .description = "wake field cells along each side (CPU cost grows as cells^2 log cells)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.wake.cellSize_m; },
+           {.key = "wake.cell_size_m", .unit = "m", .min = 0.1, .max = 10.0, .sliderMin = 0.25, .sliderMax = 4.0,
+            .logarithmic = true, .description = "wake field cell size: waves shorter than 2 cells are not carried"}),
         // [camera]
         at([](auto& s, std::size_t) -> auto& { return s.camera.position_m; },
            {.key = "camera.position_m", .kind = K::Vector3, .unit = "m", .min = -kWorldLimit_m, .max = kWorldLimit_m,

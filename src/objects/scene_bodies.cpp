@@ -5,8 +5,13 @@
 #include "swell/grid.h"
 
 #include <fmt/format.h>
-#include <algorithm>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 
 namespace swell::detail {
 
@@ -34,15 +39,31 @@ bool sameBodies(const Scene& a, const Scene& b)
              x.dampingRatio != y.dampingRatio))
             return false;
     }
-    return true;
+    return a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m &&
+           a.waves.listed.depth_m == b.waves.listed.depth_m; // the wake's dispersion
 }
 
 SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& surface)
 {
     const SurfaceFilter filter = bodySurfaceFilter(scene);
+    // A wake when some body is under way; its grid follows the first that is.
+    bool underWay = false;
+    for (std::size_t i = 0; i < scene.objects.size() && !underWay; ++i) {
+        const SceneObject& o = scene.objects[i];
+        const glm::dvec2 v(o.velocity_m_per_s.x, o.velocity_m_per_s.z);
+        if (o.isRigidBody() && i < shapes.size() && shapes[i] && glm::length(v) > 0.0) {
+            underWay = true;
+            leader_ = i;
+            leaderDirection_ = glm::normalize(v);
+        }
+    }
+    if (scene.wake.enabled && underWay)
+        wake_ = std::make_unique<SceneWake>(scene.wake, scene.waves.listed.depth_m, surface);
+    const WaveModel& floatsOn = wake_ ? wake_->surface() : surface;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
         scale_.push_back(o.scale);
+        footprints_.emplace_back();
         if (!o.isRigidBody() || i >= shapes.size() || shapes[i] == nullptr) {
             bodies_.emplace_back();
             continue;
@@ -58,8 +79,16 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
             settings.principalInertia_kg_m2 = o.inertia_kg_m2;
             settings.dampingRatio = o.dampingRatio;
             const BodyStart start{o.position_m, o.yaw_deg, o.velocity_m_per_s};
-            bodies_.push_back(std::make_unique<FloatingBody>(shape, settings, start, surface, filter));
+            bodies_.push_back(std::make_unique<FloatingBody>(shape, settings, start, floatsOn, filter));
             ++count_;
+            // Its footprint: the shape's half extents along and across its
+            // length (model x and z), and the water its weight displaces.
+            glm::dvec2 lo(0.0), hi(0.0);
+            for (const glm::dvec3& p : shape.positions_m) {
+                lo = glm::min(lo, glm::dvec2(p.x, p.z));
+                hi = glm::max(hi, glm::dvec2(p.x, p.z));
+            }
+            footprints_.back() = {0.5 * (hi.x - lo.x), 0.5 * (hi.y - lo.y), settings.mass_kg / settings.waterDensity_kg_per_m3};
         } catch (const InputError& e) {
             const std::string key = fmt::format("objects[{}].path", i);
             for (const AssetReference& r : scene.assetReferences)
@@ -70,22 +99,70 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
     }
 }
 
+std::vector<WakeSource> SceneBodies::wakeSources() const
+{
+    std::vector<WakeSource> sources;
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (bodies_[i]) {
+            const BodyState& s = bodies_[i]->state();
+            const glm::dvec3 along = s.orientation * glm::dvec3(1.0, 0.0, 0.0);
+            const glm::dvec2 heading = glm::length(glm::dvec2(along.x, along.z)) > 1e-9
+                                           ? glm::normalize(glm::dvec2(along.x, along.z))
+                                           : glm::dvec2(1.0, 0.0);
+            const Footprint& f = footprints_[i];
+            sources.push_back({{s.centerOfMass_m.x, s.centerOfMass_m.z}, heading, f.halfLength_m, f.halfBeam_m, f.volume_m3});
+        }
+    return sources;
+}
+
+glm::dvec2 SceneBodies::wakeFocus() const
+{
+    // The leader a quarter of the grid ahead of its centre: three quarters
+    // of the field lie astern, where the wake is.
+    const glm::dvec3 at = bodies_[leader_]->state().centerOfMass_m;
+    const double size_m = wake_->field().cells() * wake_->field().cellSize_m();
+    return glm::dvec2(at.x, at.z) - 0.25 * size_m * leaderDirection_;
+}
+
+void SceneBodies::advanceWakeFor(std::int64_t bodyStep)
+{
+    // Body step n -> n + 1 samples the water at the wake steps bracketing
+    // n; wake step k -> k + 1 needs the bodies at body step 4k.
+    const std::int64_t needed = bodyStep / kBodyStepsPerWaterSample + 1;
+    while (wake_->steps() < needed) {
+        const auto start = std::chrono::steady_clock::now();
+        wake_->step(wakeSources(), wakeFocus());
+        ++wakeStepsTaken_;
+        wakeSteps_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
+}
+
 void SceneBodies::advanceTo(double time_s)
 {
     // In lockstep, step by step: every body asks for the water at the same
     // sample times one after another (see FloatingBody::advanceToStep).
     const std::int64_t last = FloatingBody::lastStepFor(time_s);
     std::int64_t from = last;
+    bool wentBack = false;
+    for (const auto& b : bodies_)
+        wentBack = wentBack || (b && b->state().step > last);
     for (const auto& b : bodies_)
         if (b) {
-            if (b->state().step > last)
-                b->advanceToStep(0); // time went back: start again from t = 0
+            if (wentBack)
+                b->advanceToStep(0); // time went back: all start again from t = 0
             from = std::min(from, b->state().step);
         }
-    for (std::int64_t n = from + 1; n <= last; ++n)
+    if (wake_ && (wentBack || wake_->steps() == 0))
+        wake_->reset(wakeFocus());
+    for (std::int64_t n = from + 1; n <= last; ++n) {
+        if (wake_)
+            advanceWakeFor(n - 1);
         for (const auto& b : bodies_)
             if (b && b->state().step < n)
                 b->advanceToStep(n);
+    }
+    if (wake_)
+        advanceWakeFor(last - 1); // the frame's wake: the states that bracket time_s
 }
 
 std::optional<glm::dmat4> SceneBodies::poseAt(std::size_t i, double time_s)

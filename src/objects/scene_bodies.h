@@ -4,6 +4,7 @@
 #pragma once
 
 #include "assets/mesh_data.h"
+#include "objects/scene_wake.h"
 #include "swell/floating_body.h"
 #include "swell/scene.h"
 
@@ -23,7 +24,8 @@ namespace swell::detail {
 SurfaceFilter bodySurfaceFilter(const Scene& scene);
 
 // Whether two scenes' objects would move alike: the same rigid bodies, placed
-// and built the same way (paths and hull nodes are compared with the assets).
+// and built the same way (paths and hull nodes are compared with the assets),
+// with the same wake.
 bool sameBodies(const Scene& a, const Scene& b);
 
 class SceneBodies {
@@ -31,8 +33,10 @@ public:
     SceneBodies() = default;
     // shapes[i]: object i's closed shape in model space (its hull volume,
     // else its mesh); read only for rigid bodies. `surface` must outlive
-    // this. Throws swell::InputError at the object's path key (or naming
-    // the object) when a body cannot be built.
+    // this. With scene.wake on and a body under way, the bodies stir a wake
+    // field and float on the surface plus it (objects/scene_wake.h).
+    // Throws swell::InputError at the object's path key (or naming the
+    // object) when a body cannot be built.
     SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& surface);
 
     bool empty() const { return count_ == 0; }
@@ -45,7 +49,29 @@ public:
     // Integration steps taken by all bodies so far.
     std::int64_t stepsTaken() const;
 
+    // The wake, when the scene has one (wake on, a body under way); else null.
+    const SceneWake* wake() const { return wake_.get(); }
+    // Wake steps taken so far (restarts included), for the benchmark.
+    std::int64_t wakeStepsTaken() const { return wakeStepsTaken_; }
+    // The wall time those steps took, ms (for the benchmark; never read by the simulation).
+    double wakeSteps_ms() const { return wakeSteps_ms_; }
+
 private:
+    // What each body's footprint on the wake is, besides where it stands.
+    struct Footprint {
+        double halfLength_m = 0.0, halfBeam_m = 0.0, volume_m3 = 0.0;
+    };
+    std::vector<WakeSource> wakeSources() const;
+    glm::dvec2 wakeFocus() const;
+    // Steps the wake until the bodies can sample the water for body step `bodyStep`.
+    void advanceWakeFor(std::int64_t bodyStep);
+
+    std::unique_ptr<SceneWake> wake_;
+    std::vector<Footprint> footprints_; // per object, as bodies_
+    std::size_t leader_ = 0;             // the body the wake's grid follows
+    glm::dvec2 leaderDirection_{0.0};    // its heading of travel, unit (0 when it does not travel)
+    std::int64_t wakeStepsTaken_ = 0;
+    double wakeSteps_ms_ = 0.0;
     std::vector<std::unique_ptr<FloatingBody>> bodies_; // null for objects that are not bodies
     std::vector<double> scale_;
     std::size_t count_ = 0;

@@ -47,7 +47,8 @@ gl::Program build(const gl::ShaderSources& sources, const ShaderVariant& variant
 
 ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms)
 {
-    return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile), omittedWaterTerms};
+    return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile), omittedWaterTerms,
+            scene.wake.enabled};
 }
 
 std::vector<std::string> definesOf(const ShaderVariant& v)
@@ -59,6 +60,7 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
         fmt::format("SWELL_GRID_LAYOUT {}", v.gridLayout == GridLayout::Paper ? "SWELL_GRID_PAPER" : "SWELL_GRID_GEOMETRIC"),
         fmt::format("SWELL_OCEAN_FILE \"{}\"", v.oceanFile),
         fmt::format("SWELL_OMITTED_TERMS {}", v.omittedWaterTerms),
+        fmt::format("SWELL_WAKE {}", v.wake ? 1 : 0),
     };
 }
 

@@ -22,6 +22,7 @@ struct ShaderVariant {
     GridLayout gridLayout = GridLayout::Geometric;     // SWELL_GRID_LAYOUT
     std::string oceanFile = "ocean/gerstner.glsl";     // SWELL_OCEAN_FILE: the wave model's GLSL
     unsigned omittedWaterTerms = 0;                    // SWELL_OMITTED_TERMS: SWELL_TERM_* bits (benchmark)
+    bool wake = true;                                  // SWELL_WAKE: the bodies' wake in the water (wake.glsl)
     bool operator==(const ShaderVariant&) const = default;
 };
 

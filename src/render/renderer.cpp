@@ -9,6 +9,7 @@
 #include "render/render_target.h"
 #include "render/sky_cubemap.h"
 #include "render/slope_statistics.h"
+#include "render/wake_texture.h"
 #include "render/water_grid.h"
 #include "render/waterline.h"
 #include "render/wave_model_gpu.h"
@@ -62,8 +63,14 @@ struct Renderer::Impl {
     std::optional<SkyBakeKey> bakedSky;
     // This frame's object transforms, one per scene object (see world.h).
     std::vector<glm::mat4> poses;
-    // The floating rigid bodies, stepped to each frame's time (objects/scene_bodies.h).
-    SceneBodies bodies;
+    // The floating rigid bodies, stepped to each frame's time (objects/scene_bodies.h),
+    // and their wake; stepped by drawnSurface() too, which is const to callers.
+    mutable SceneBodies bodies;
+    // The wake as the last frame (or drawnSurface() query) drew it, at wakeFrameTime_s.
+    mutable std::shared_ptr<const WakeFrame> wakeFrame;
+    mutable double wakeFrameTime_s = -1.0;
+    WakeTexture wakeTexture;
+    double wakeReach_m = 0.0; // the largest wake height this frame, m
     glm::dvec3 posesOrigin{0.0}; // the render origin poses are relative to
 
     explicit Impl(RendererOptions options)
@@ -73,10 +80,25 @@ struct Renderer::Impl {
 
     const WaveModel& model() const { return overrideModel ? *overrideModel : *sceneModel; }
 
+    // The bodies' wake at time_s (null when the scene has none), stepping
+    // the bodies there: it depends on time_s alone.
+    std::shared_ptr<const WakeFrame> wakeAt(double time_s) const
+    {
+        bodies.advanceTo(time_s);
+        if (!bodies.wake())
+            return nullptr;
+        if (!wakeFrame || wakeFrameTime_s != time_s) {
+            wakeFrame = std::make_shared<const WakeFrame>(bodies.wake()->frameAt(time_s));
+            wakeFrameTime_s = time_s;
+        }
+        return wakeFrame;
+    }
+
     // The water as the grid draws it for this camera (swell/drawn_surface.h).
     DrawnSurface drawnSurface(const Camera& camera, double time_s) const
     {
-        return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s);
+        return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s,
+                            wakeAt(time_s));
     }
 
     void notify(bool begin, const char* pass) const
@@ -106,17 +128,34 @@ struct Renderer::Impl {
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         f.waveHeightDeviation_m = float(model().heightDeviation_m());
-        const WaveReach reach = model().reach();
+        WaveReach reach = model().reach();
         f.waveMeanSquareSlope = float(seaMeanSquareSlope);
-        const DrawnSurface drawn = drawnSurface(camera, time_s);
         // Bodies step on the CPU to this frame's time: fixed steps, so the
-        // poses depend on time_s alone, never on the frames before.
+        // poses depend on time_s alone, never on the frames before. Their
+        // wake steps with them (the cost of its steps counted apart).
         notify(true, "bodies");
-        const std::int64_t stepsBefore = bodies.stepsTaken();
+        const std::int64_t stepsBefore = bodies.stepsTaken(), wakeStepsBefore = bodies.wakeStepsTaken();
+        const double wakeBefore_ms = bodies.wakeSteps_ms();
+        const std::shared_ptr<const WakeFrame> wake = wakeAt(time_s);
+        const DrawnSurface drawn = drawnSurface(camera, time_s);
         poses = objectPoses(scene, model(), drawn, bodies, origin, time_s);
         counters.floatingBodies = int(bodies.count());
         counters.bodySteps = bodies.stepsTaken() - stepsBefore;
+        counters.wakeSteps = bodies.wakeStepsTaken() - wakeStepsBefore;
+        counters.wakeSteps_ms = bodies.wakeSteps_ms() - wakeBefore_ms;
         notify(false, "bodies");
+        // The wake's frame: blended, its slopes found and uploaded.
+        notify(true, "wake");
+        wakeTexture.upload(wake.get(), origin);
+        wakeTexture.bind();
+        // The wake raises and lowers the water beyond the waves' reach: the
+        // grid's tiles are culled, and the near plane placed, with it.
+        wakeReach_m = 0.0;
+        if (wake)
+            for (const glm::vec4& texel : wake->texels)
+                wakeReach_m = std::max(wakeReach_m, double(std::abs(texel.x)));
+        reach.vertical_m += wakeReach_m;
+        notify(false, "wake");
         posesOrigin = origin;
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
         waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
@@ -187,6 +226,7 @@ struct Renderer::Impl {
         glBindTextureUnit(SWELL_UNIT_REFLECTION_DEPTH, reflection.depth());
         glBindTextureUnit(SWELL_UNIT_REFRACTION_COLOR, refraction.color());
         glBindTextureUnit(SWELL_UNIT_REFRACTION_DEPTH, refraction.depth());
+        wakeTexture.bind();
         glBindVertexArray(waterGrid.vertexArray());
         if (scene.debugView == DebugView::Wireframe)
             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
@@ -210,6 +250,7 @@ struct Renderer::Impl {
         beginPass(waterline.framebuffer(), size, glm::vec4(SWELL_WATERLINE_NO_HIT));
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.allAbove()); // never the target itself
         programs.waterline.use();
+        wakeTexture.bind();
         glBindVertexArray(waterGrid.vertexArray());
         waterGrid.draw();
         ++counters.drawCalls;
@@ -308,7 +349,9 @@ struct Renderer::Impl {
         bindFrame(PassMain, f);
         // The waterline mask is drawn at the main pass's size, so the main
         // pass (multisampled or not) reads it on the same pixel grid.
-        drawWaterline(nearPlaneMedium(camera, double(size.x) / double(size.y), model().reach()), size);
+        WaveReach reach = model().reach();
+        reach.vertical_m += wakeReach_m;
+        drawWaterline(nearPlaneMedium(camera, double(size.x) / double(size.y), reach), size);
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.texture());
         notify(true, "main");
         const GLuint mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
@@ -370,8 +413,10 @@ struct Renderer::Impl {
             world = std::move(nextWorld);
             bakedSky.reset();
         }
-        if (bodiesChanged)
+        if (bodiesChanged) {
             bodies = std::move(nextBodies);
+            wakeFrame.reset();
+        }
         if (first || hasEffect(effects, ParameterEffect::Grid))
             buildGrid();
     }

@@ -71,6 +71,9 @@ ARGUMENTS = [
     ("view_bad_antialiasing", ["view", "--antialiasing", "on"], 2, "--antialiasing"),
     ("bodies_far_in_time", ["render", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes",
                                                    "under-way.toml"), "-o", "x.png", "--time", "5000"], 2, "--time"),
+    # Within the bodies' hour but past the wake's 10 minutes.
+    ("wake_far_in_time", ["render", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes",
+                                                 "under-way.toml"), "-o", "x.png", "--time", "900"], 2, "wake"),
 ]
 
 failures = []

@@ -3,7 +3,7 @@
 // linear spring of stiffness rho g A_waterplane, damped motion, and poses
 // that do not depend on how often they were asked for.
 #include "objects/scene_bodies.h"
-#include "render/wave_model_gpu.h" // only to return no GPU half from the test water
+#include "support/body_fixtures.h"
 #include "swell/constants.h"
 #include "swell/error.h"
 #include "swell/floating_body.h"
@@ -16,48 +16,9 @@
 
 namespace {
 
-// Water as a test wants it: flat, or one long-crested sine wave of height
-// amplitude_m moving along +x (vertical displacement only, so the default
-// restPointUnder() is exact).
-class TestWater final : public swell::WaveModel {
-public:
-    explicit TestWater(double amplitude_m = 0.0, double wavelength_m = 40.0) : amplitude_m_(amplitude_m)
-    {
-        k_ = swell::kTwoPi / wavelength_m;
-        omega_ = std::sqrt(swell::kGravity * k_); // deep water: omega^2 = g k
-    }
-    std::string_view name() const override { return "test"; }
-    std::string summary() const override { return "test water"; }
-    swell::WaveReach reach() const override { return {amplitude_m_, 0.0}; }
-    swell::SurfacePoint surfaceAt(glm::dvec2 rest, double t, const swell::SurfaceFilter& filter) const override
-    {
-        swell::SurfacePoint p;
-        const double phase = k_ * rest.x - omega_ * t;
-        p.displacement_m.y = filter.heightScale * amplitude_m_ * std::sin(phase);
-        p.normal = glm::normalize(glm::dvec3(-filter.heightScale * amplitude_m_ * k_ * std::cos(phase), 1.0, 0.0));
-        return p;
-    }
-    std::unique_ptr<swell::detail::WaveModelGpu> createGpu(const swell::gl::ShaderSources&) const override
-    {
-        return nullptr;
-    }
-
-private:
-    double amplitude_m_, k_ = 0.0, omega_ = 0.0;
-};
-
-// A closed box centred on the origin, outward winding.
-swell::BodyShape box(glm::dvec3 size_m)
-{
-    swell::BodyShape s;
-    const glm::dvec3 h = 0.5 * size_m;
-    for (int i = 0; i < 8; ++i)
-        s.positions_m.push_back({(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
-    // Each face as two triangles, counter-clockwise seen from outside.
-    s.indices = {0, 4, 6, 0, 6, 2,  1, 3, 7, 1, 7, 5,  0, 1, 5, 0, 5, 4,
-                 2, 6, 7, 2, 7, 3,  0, 2, 3, 0, 3, 1,  4, 5, 7, 4, 7, 6};
-    return s;
-}
+using swell::test::TestWater;
+using swell::test::box;
+using swell::test::meshOf;
 
 constexpr double kRho = swell::kSeaWaterDensity_kg_per_m3;
 // 4 m square, 1.5 m tall: at density 0.5 it draws 0.75 m and floats
@@ -223,15 +184,6 @@ TEST(FloatingBody, RidesTheWavesAndIsCarriedAlong)
     EXPECT_NEAR(body.poseAt(30.0)[3].x, 60.0, 1e-9);
 }
 
-// The shape as a drawn mesh: what a scene object's model gives the bodies.
-swell::detail::MeshData meshOf(const swell::BodyShape& shape)
-{
-    swell::detail::MeshData mesh;
-    for (const glm::dvec3& p : shape.positions_m)
-        mesh.vertices.push_back({glm::vec3(p), {}, {}});
-    mesh.indices = shape.indices;
-    return mesh;
-}
 
 // A scene's bodies step in lockstep (so they share the surface's sample
 // times); each still moves exactly as it would alone.
@@ -246,6 +198,9 @@ TEST(FloatingBody, SceneBodiesInLockstepMoveAsEachAlone)
     scene.objects[1] = {.path = "b", .position_m = {9.0, 0.0, 2.0}, .floats = true}; // a rider, not a body
     scene.objects[2] = {.path = "c", .position_m = {-7.0, 0.0, 5.0}, .yaw_deg = 40.0, .floats = true,
                         .density_kg_per_m3 = 300.0, .velocity_m_per_s = {0.0, 0.0, 3.0}};
+    // Without the wake, which a body alone does not stir for the others
+    // (test_wake_bodies.cpp shows the bodies feel it).
+    scene.wake.enabled = false;
     swell::detail::SceneBodies bodies(scene, {&mesh, &mesh, &mesh}, waves);
     EXPECT_EQ(bodies.count(), 2u);
     EXPECT_FALSE(bodies.poseAt(1, 1.0).has_value());

@@ -50,6 +50,28 @@ TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
     EXPECT_EQ(built, int(models.size()) * int(views.size()) * 2 * 2);
 }
 
+// Without the wake (wake.enabled = false; the variants above have it), with
+// every model and debug view.
+TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
+{
+    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
+    const std::vector<std::string> models = oceanFiles(sources);
+    ASSERT_GE(models.size(), 2u);
+    int built = 0;
+    for (const std::string& model : models)
+        for (const DebugView view : {DebugView::Shaded, DebugView::Normals, DebugView::Reflection, DebugView::Refraction,
+                                     DebugView::Lod, DebugView::Wireframe, DebugView::Foam}) {
+            swell::detail::ShaderVariant variant{view, ReflectionMode::RayMarch, GridLayout::Geometric, model};
+            variant.wake = false;
+            SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake");
+            swell::detail::Programs programs;
+            EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
+            EXPECT_TRUE(programs.water && programs.capture);
+            ++built;
+        }
+    EXPECT_EQ(built, int(models.size()) * 7);
+}
+
 // The benchmark's variants: each water shading term left out alone, and all
 // of them, with every model and both reflection modes.
 TEST_F(AllVariants, EveryWaterTermCanBeLeftOut)

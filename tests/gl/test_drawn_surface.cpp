@@ -142,6 +142,46 @@ std::optional<double> gpuWaterUnder(glm::dvec2 p, const std::vector<float>& data
     return std::nullopt;
 }
 
+// With a boat under way, its wake is in the drawn water alike on both sides:
+// the GPU's vertices and swell::DrawnSurface agree within 1 mm over the
+// wake, and the wake is there (the vertices move by decimetres without it).
+TEST_F(DrawnSurfaceTest, TheWakeIsInTheDrawnTrianglesAlike)
+{
+    swell::Scene scene = plainScene();
+    swell::SceneObject boat;
+    boat.path = "builtin:boat";
+    boat.position_m = {0.0, 0.0, -30.0};
+    boat.yaw_deg = 90.0;
+    boat.floats = true;
+    boat.density_kg_per_m3 = 250.0;
+    boat.velocity_m_per_s = {0.0, 0.0, -4.0};
+    scene.objects = {boat};
+    const glm::dvec3 eye(3.0, 12.0, -40.0); // above the wake, 30 m astern of the boat at 10 s
+    expectDrawnSurface(scene, eye, {10.0, 10.0 + 1.0 / 70.0});
+
+    // The wake's own share: the vertices captured with it and without.
+    auto capture = [&](const swell::Scene& s) {
+        swell::Renderer renderer(s);
+        swell::Camera camera = swell::cameraAt(s.camera, 0.0);
+        camera.position_m = eye;
+        swell::gl::Buffer buffer = swell::gl::Buffer::create();
+        const int count = renderer.waterVertexCount();
+        glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
+        renderer.captureWaterVertices(camera, 10.0, buffer.id());
+        std::vector<float> data(size_t(count) * 8);
+        glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
+        return data;
+    };
+    const std::vector<float> with = capture(scene);
+    scene.wake.enabled = false;
+    const std::vector<float> without = capture(scene);
+    ASSERT_EQ(with.size(), without.size());
+    double largest_m = 0.0;
+    for (size_t v = 0; v < with.size(); v += 8)
+        largest_m = std::max(largest_m, double(std::abs(with[v + 3] - without[v + 3]))); // vPosition.y
+    EXPECT_GT(largest_m, 0.1);
+}
+
 // The default scene's floating buoy sits on the water the GPU draws, within
 // 1 cm (the bound), frame after frame. Placed on the exact surface
 // instead, it is off by 6 cm in one of these frames.

@@ -1,0 +1,39 @@
+// The wake on the GPU: each frame's swell::detail::WakeFrame uploaded as an
+// RGBA32F texture (height, slopes, foam per cell) on SWELL_UNIT_WAKE, and
+// the Wake uniform block (shaders/wake.glsl) saying where its cells lie
+// relative to the render origin.
+#pragma once
+
+#include "objects/wake_frame.h"
+#include "swell/gl/handle.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace swell::detail {
+
+// Mirrors the Wake block of shaders/wake.glsl (std140).
+struct WakeUniforms {
+    glm::vec2 corner_m{0.0f}; // centre of cell (0, 0) relative to the render origin, x, z
+    float cellSize_m = 1.0f;
+    int cells = 0;            // 0: no wake this frame
+    glm::ivec2 cornerCell{0}; // cell (0, 0)'s world index modulo SWELL_WAKE_NOISE_PERIOD
+    glm::ivec2 padding{0};
+};
+static_assert(sizeof(WakeUniforms) == 32, "the Wake block is 32 bytes in std140");
+
+class WakeTexture {
+public:
+    // Uploads `frame` (null: no wake) for a frame drawn about `origin`
+    // (absolute, m). Needs a current GL context.
+    void upload(const WakeFrame* frame, glm::dvec3 origin);
+    // Binds the texture and the uniform block for the water programs.
+    void bind() const;
+
+private:
+    gl::Texture texture_;
+    gl::Buffer uniforms_;
+    int cells_ = 0; // the texture's size, per side
+};
+
+} // namespace swell::detail

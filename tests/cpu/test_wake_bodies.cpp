@@ -1,0 +1,117 @@
+// A scene's wake (objects/scene_wake.h) with its bodies: the same scene and
+// times give the same poses and the same drawn wake bit for bit, however
+// the frames fell; the bodies float on the wake; the frame the renderer
+// draws is the surface the bodies sample.
+#include "objects/scene_bodies.h"
+#include "support/body_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace {
+
+using swell::test::box;
+using swell::test::meshOf;
+using swell::test::TestWater;
+
+// A 6 m x 2 m x 1.5 m box making 4 m/s along -z, and a 3 m box at rest
+// 8 m beside its course, 40 m ahead: the first's wake reaches the second.
+swell::Scene twoBoxes()
+{
+    swell::Scene scene;
+    scene.objects = {
+        {.path = "boat", .position_m = {0.0, 0.0, 0.0}, .yaw_deg = 90.0, .floats = true, .density_kg_per_m3 = 400.0,
+         .velocity_m_per_s = {0.0, 0.0, -4.0}},
+        {.path = "buoy", .position_m = {8.0, 0.0, -40.0}, .floats = true, .density_kg_per_m3 = 500.0},
+    };
+    scene.wake.cells = 128;
+    return scene;
+}
+
+struct Meshes {
+    swell::detail::MeshData boat = meshOf(box({6.0, 1.5, 2.0}));
+    swell::detail::MeshData buoy = meshOf(box({3.0, 1.5, 3.0}));
+    std::vector<const swell::detail::MeshData*> list() const { return {&boat, &buoy}; }
+};
+
+TEST(WakeBodies, SameSceneAndTimesGiveTheSamePosesAndWakeBitForBit)
+{
+    const TestWater waves(0.3, 25.0);
+    const Meshes meshes;
+    const swell::Scene scene = twoBoxes();
+    swell::detail::SceneBodies jumped(scene, meshes.list(), waves), framed(scene, meshes.list(), waves);
+    ASSERT_NE(jumped.wake(), nullptr);
+    // One straight to t, the other through 60 frames a second, and back in
+    // time once (a restart from t = 0).
+    const double t = 12.34;
+    jumped.advanceTo(t);
+    for (double s = 0.0; s < 5.0; s += 1.0 / 60.0)
+        framed.advanceTo(s);
+    framed.advanceTo(1.0);
+    for (double s = 1.0; s < t; s += 1.0 / 60.0)
+        framed.advanceTo(s);
+    framed.advanceTo(t);
+    for (std::size_t i = 0; i < 2; ++i)
+        EXPECT_EQ(*jumped.poseAt(i, t), *framed.poseAt(i, t)) << "object " << i;
+    const swell::detail::WakeFrame a = jumped.wake()->frameAt(t), b = framed.wake()->frameAt(t);
+    ASSERT_EQ(a.texels.size(), b.texels.size());
+    EXPECT_EQ(a.cornerCell, b.cornerCell);
+    EXPECT_EQ(std::memcmp(a.texels.data(), b.texels.data(), a.texels.size() * sizeof(a.texels[0])), 0);
+    // ...and the boat did make a wake.
+    double largest = 0.0;
+    for (const glm::vec4& texel : a.texels)
+        largest = std::max(largest, double(std::abs(texel.x)));
+    EXPECT_GT(largest, 0.02);
+}
+
+TEST(WakeBodies, ABodyAtRestRidesThePassingWake)
+{
+    // On flat water the buoy lies still; the boat's wake, passing it, moves
+    // it. With the wake off it does not move at all.
+    const TestWater flat;
+    const Meshes meshes;
+    swell::Scene scene = twoBoxes();
+    swell::detail::SceneBodies with(scene, meshes.list(), flat);
+    scene.wake.enabled = false;
+    swell::detail::SceneBodies without(scene, meshes.list(), flat);
+    EXPECT_EQ(without.wake(), nullptr);
+    double withRange = 0.0, withoutRange = 0.0;
+    with.advanceTo(0.0);
+    without.advanceTo(0.0);
+    const double rest_m = (*with.poseAt(1, 0.0))[3].y;
+    for (double t = 0.0; t < 25.0; t += 0.1) {
+        with.advanceTo(t);
+        without.advanceTo(t);
+        withRange = std::max(withRange, std::abs((*with.poseAt(1, t))[3].y - rest_m));
+        withoutRange = std::max(withoutRange, std::abs((*without.poseAt(1, t))[3].y - rest_m));
+    }
+    EXPECT_GT(withRange, 0.01);
+    EXPECT_LT(withoutRange, 1e-9);
+}
+
+TEST(WakeBodies, TheDrawnFrameIsTheWaterBodiesSample)
+{
+    // At a wake step's time the frame holds that step's heights exactly, so
+    // what is drawn there is what the bodies floated on.
+    const TestWater flat;
+    const Meshes meshes;
+    swell::detail::SceneBodies bodies(twoBoxes(), meshes.list(), flat);
+    const double t = 200.0 / swell::detail::kWakeStepsPerSecond;
+    bodies.advanceTo(t);
+    const swell::detail::SceneWake& wake = *bodies.wake();
+    const swell::detail::WakeFrame frame = wake.frameAt(t);
+    int nonZero = 0;
+    for (double z = -60.0; z <= 10.0; z += 0.7)
+        for (double x = -15.0; x <= 15.0; x += 0.9) {
+            const double h = wake.heightAt({x, z}, t);
+            EXPECT_EQ(frame.heightAt({x, z}), h) << x << ", " << z;
+            EXPECT_EQ(wake.surface().heightAt({x, z}, t), h) << x << ", " << z;
+            nonZero += std::abs(h) > 1e-3;
+        }
+    EXPECT_GT(nonZero, 100);
+}
+
+} // namespace

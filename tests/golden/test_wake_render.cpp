@@ -1,0 +1,110 @@
+// The wake in rendered frames, checked against its geometry rather than a
+// stored image: a boat under way on flat water, seen from straight above,
+// changes the picture inside Kelvin's wedge astern of it (half-angle 19.47
+// deg; 25 deg allowed for the wedge's own width and the foam) and hardly
+// anywhere else; the wedge's arms are drawn, not only the stern's foam
+// trail; and the same scene and time give the same image bit for bit.
+#include "support/camera_rays.h"
+#include "support/gl_test.h"
+#include "support/golden.h"
+#include "swell/flat_model.h"
+#include "swell/renderer.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+#include <memory>
+
+namespace {
+
+class WakeRender : public swell::test::GlTest {};
+
+constexpr glm::ivec2 kSize{256, 256};
+constexpr double kTime_s = 20.0;
+
+// The built-in boat at 4 m/s along -z on flat water, a camera 60 m above
+// the 60 m of water astern of it.
+swell::Scene wakeScene()
+{
+    swell::Scene scene = swell::defaultScene();
+    scene.showTerrain = false;
+    swell::SceneObject boat;
+    boat.path = "builtin:boat";
+    boat.yaw_deg = 90.0; // bow towards -z
+    boat.floats = true;
+    boat.density_kg_per_m3 = 250.0;
+    boat.velocity_m_per_s = {0.0, 0.0, -4.0};
+    scene.objects = {boat};
+    scene.camera.position_m = {0.0, 60.0, -60.0};
+    scene.camera.yaw_deg = 0.0;
+    scene.camera.pitch_deg = -89.0;
+    return scene;
+}
+
+struct Rendered {
+    swell::Image image;
+    glm::dvec3 boat_m{0.0};
+};
+
+Rendered render(const swell::Scene& scene)
+{
+    swell::Renderer renderer(scene);
+    renderer.setWaveModel(std::make_shared<swell::FlatModel>());
+    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
+    Rendered r;
+    r.image = renderer.renderImage(camera, kTime_s, kSize);
+    r.boat_m = glm::dvec3(renderer.objectTransforms()[0][3]);
+    return r;
+}
+
+TEST_F(WakeRender, TheWakeIsKelvinsWedgeAsternOfTheBoat)
+{
+    swell::Scene scene = wakeScene();
+    const Rendered with = render(scene);
+    const Rendered again = render(scene);
+    EXPECT_EQ(swell::compareImages(with.image, again.image).maxChannel, 0);
+    scene.wake.enabled = false;
+    const Rendered without = render(scene);
+    // The boat rides its own wake a little (it trims), but it is where it was carried.
+    ASSERT_NEAR(with.boat_m.z, without.boat_m.z, 0.1);
+
+    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
+    const double outer = std::tan(glm::radians(25.0)), inner = std::tan(glm::radians(10.0));
+    int changed = 0, astern = 0, inWedge = 0, ahead = 0, onArms = 0;
+    for (int y = 0; y < kSize.y; ++y)
+        for (int x = 0; x < kSize.x; ++x) {
+            const std::size_t i = (std::size_t(y) * kSize.x + std::size_t(x)) * 4;
+            int d = 0;
+            for (int c = 0; c < 3; ++c)
+                d = std::max(d, std::abs(int(with.image.rgba[i + c]) - int(without.image.rgba[i + c])));
+            if (d < 2) // the renders differ by the wake alone: 2 steps of 8 bits is a change seen
+                continue;
+            const glm::dvec3 ray = swell::test::pixelRay(camera, kSize, x, y);
+            const glm::dvec3 water = camera.position_m + ray * (-camera.position_m.y / ray.y);
+            const double behind_m = water.z - with.boat_m.z, across_m = std::abs(water.x - with.boat_m.x);
+            ++changed;
+            if (behind_m < -10.0)
+                ++ahead; // more than a hull length ahead of the boat's centre
+            if (behind_m > 10.0) {
+                ++astern;
+                inWedge += across_m < behind_m * outer + 4.0;
+                onArms += across_m > behind_m * inner + 4.0 && across_m < behind_m * outer;
+            }
+        }
+    const std::string saved = swell::test::saveTestImage(with.image, "wake_render_with") + " vs " +
+                              swell::test::saveTestImage(without.image, "wake_render_without");
+    RecordProperty("changed", changed);
+    RecordProperty("astern", astern);
+    RecordProperty("in_wedge", inWedge);
+    RecordProperty("on_arms", onArms);
+    RecordProperty("ahead", ahead);
+    // The wake covers a good part of the water astern in view...
+    EXPECT_GT(changed, kSize.x * kSize.y / 50) << saved;
+    // ...nearly all of it inside the wedge, almost none ahead of the bow...
+    EXPECT_GT(inWedge, astern * 9 / 10) << saved;
+    EXPECT_LT(ahead, changed / 20) << saved;
+    // ...and it is a V: its arms, off the stern's trail, are drawn.
+    EXPECT_GT(onArms, astern / 5) << saved;
+}
+
+} // namespace
