@@ -25,14 +25,21 @@ float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
 
 void main()
 {
-    vec2 texel = 1.0 / vec2(textureSize(source, 0));
+    ivec2 size = textureSize(source, 0);
+    vec2 texel = 1.0 / vec2(size);
     vec2 uv = gl_FragCoord.xy * texel;
-    vec4 centre = texture(source, uv);
+    // The pixel and its diagonal neighbours lie on texel centres, where a
+    // filtered lookup returns the texel itself: fetched unfiltered, which a
+    // software rasteriser does at a fraction of the cost. The neighbours
+    // clamp at the edges as the filtered lookups did (clamp-to-edge source).
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 last = size - 1;
+    vec4 centre = texelFetch(source, p, 0);
     float lumaM = luma(centre.rgb);
-    float lumaNW = luma(textureOffset(source, uv, ivec2(-1, 1)).rgb);
-    float lumaNE = luma(textureOffset(source, uv, ivec2(1, 1)).rgb);
-    float lumaSW = luma(textureOffset(source, uv, ivec2(-1, -1)).rgb);
-    float lumaSE = luma(textureOffset(source, uv, ivec2(1, -1)).rgb);
+    float lumaNW = luma(texelFetch(source, clamp(p + ivec2(-1, 1), ivec2(0), last), 0).rgb);
+    float lumaNE = luma(texelFetch(source, clamp(p + ivec2(1, 1), ivec2(0), last), 0).rgb);
+    float lumaSW = luma(texelFetch(source, clamp(p + ivec2(-1, -1), ivec2(0), last), 0).rgb);
+    float lumaSE = luma(texelFetch(source, clamp(p + ivec2(1, -1), ivec2(0), last), 0).rgb);
     float lumaMin = min(lumaM, min(min(lumaNW, lumaNE), min(lumaSW, lumaSE)));
     float lumaMax = max(lumaM, max(max(lumaNW, lumaNE), max(lumaSW, lumaSE)));
     if (lumaMax - lumaMin < max(kEdgeMin, lumaMax * kEdgeRelative)) {

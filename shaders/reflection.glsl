@@ -81,9 +81,10 @@ vec4 mirroredSceneAt(vec3 surface, vec3 direction, float t, out vec2 uv, out boo
 }
 
 // The reflected ray's hit, found from the planar reflection with a bounded
-// refinement: at most kRefineTaps + 2 depth taps (the first guess, the
-// refinement, the fallback's check) and one colour tap per pixel, none at all
-// for a ray that misses every world box:
+// refinement: at most kRefineTaps + 1 depth taps (the first guess, which the
+// fallback reuses, and the refinement) and one colour tap per pixel; a ray
+// that misses every world box needs none on a GPU, though a software
+// rasteriser runs the taps masked wherever a neighbouring pixel needs them:
 //
 // The reflection texture holds, along each of the camera's lines of sight,
 // the nearest point of the mirrored world. Start from the distance t of what
@@ -131,58 +132,63 @@ float unmaskedShare(vec3 direction)
     return 1.0 / (1.0 + max(lambda, 0.0));
 }
 
-// Geometry the ray meets, seen as often as the ray escapes the waves around
-// it; the waves that stop it mostly reflect the sky.
-vec3 maskedHit(vec2 uv, vec3 direction, vec3 sky)
+// Geometry the ray meets at uv, seen as often as the ray escapes the waves
+// around it; the waves that stop it mostly reflect the sky. skyUnfogged is
+// skyRadiance(direction), sky the same fogged.
+vec3 maskedHit(vec2 uv, vec3 direction, vec3 skyUnfogged, vec3 sky)
 {
-    return mix(sky, lookupWithFallback(uv, direction), unmaskedShare(direction));
+    float w = edgeWeight(uv);
+    vec3 seen = w > 0.0 ? mix(skyUnfogged, texture(reflectionColor, uv).rgb, w) : skyUnfogged;
+    return mix(sky, seen, unmaskedShare(direction));
 }
 
-// What a ray shows when the texture cannot tell what it meets: what flat
-// water shows here (the planar lookup) where that is geometry, so an object's
-// mirror image stays whole; where flat water shows sky, the sky in the ray's
-// own direction (the planar lookup's sky is the flat mirror's, nearer the
-// horizon, and would brighten every such pixel).
-vec3 unsettled(vec2 flatUv, vec3 direction, vec3 sky)
-{
-    bool onTexture = all(greaterThanEqual(flatUv, vec2(0.0))) && all(lessThanEqual(flatUv, vec2(1.0)));
-    if (!onTexture || texture(reflectionDepth, flatUv).r >= 1.0)
-        return sky;
-    return maskedHit(flatUv, direction, sky);
-}
+// How the march below ends. On a software rasteriser (llvmpipe) every branch
+// of a shader runs for all the pixels it shades together, masked, so each
+// lookup is written once, after the march, and the march only decides which
+// one: the sky, the texture where the ray settled, or what flat water shows.
+const int kShowSky = 0;
+const int kShowHit = 1;
+const int kShowUnsettled = 2;
 
-vec3 reflectRayMarch(vec3 surface, vec3 direction)
+// What a ray shows when the texture cannot tell what it meets (kShowUnsettled):
+// what flat water shows here (the planar lookup) where that is geometry, so
+// an object's mirror image stays whole; where flat water shows sky, the sky
+// in the ray's own direction (the planar lookup's sky is the flat mirror's,
+// nearer the horizon, and would brighten every such pixel).
+//
+// skyOnly: the caller knows the ray can meet nothing (it heads into the water).
+vec3 reflectRayMarch(vec3 surface, vec3 direction, bool skyOnly)
 {
-    vec3 sky = applyFog(skyRadiance(direction), skyDistance(direction));
+    vec3 skyUnfogged = skyRadiance(direction);
+    vec3 sky = applyFog(skyUnfogged, skyDistance(direction));
     // Only the stretch of the ray inside the world's boxes can meet anything.
     vec2 span = worldSpan(surface, direction);
-    if (span.x > span.y)
-        return sky;
     float tNear = max(span.x, 0.05), tFar = min(span.y, 1e6);
     // Flat water reflects, at this pixel, what the mirrored line of sight
     // through the surface point meets: the first guess.
     vec2 flatUv = projectMirrored(surface).xy;
-    vec2 uv;
-    bool onTexture;
+    float flatDepth = texture(reflectionDepth, flatUv).r;
+    bool flatOnTexture = all(greaterThanEqual(flatUv, vec2(0.0))) && all(lessThanEqual(flatUv, vec2(1.0)));
+    bool flatShowsGeometry = flatOnTexture && flatDepth < 1.0;
     // The texture's angular resolution: how far apart, at distance 1 m from
     // the eye, two texels' lines of sight are.
     float texelAngle = 2.0 / (textureSize(reflectionDepth, 0).y * cameraViewProj[1][1]);
-    float t = tNear;
-    {
-        float depth = texture(reflectionDepth, flatUv).r;
-        t = depth < 1.0 ? dot(vec3(1.0, -1.0, 1.0) * worldFromScreen(flatUv, depth) - surface, direction) : tFar;
-        t = clamp(t, tNear, tFar);
-    }
-    for (int i = 0; i < kRefineTaps; ++i) {
+    float t = flatDepth < 1.0 ? dot(vec3(1.0, -1.0, 1.0) * worldFromScreen(flatUv, flatDepth) - surface, direction) : tFar;
+    t = clamp(t, tNear, tFar);
+    int outcome = skyOnly || span.x > span.y ? kShowSky : kShowUnsettled;
+    vec2 hitUv = flatUv;
+    for (int i = 0; i < kRefineTaps && outcome == kShowUnsettled; ++i) {
+        vec2 uv;
+        bool onTexture;
         vec4 q = mirroredSceneAt(surface, direction, t, uv, onTexture);
         if (!onTexture)
-            return unsettled(flatUv, direction, sky);
+            break;
         vec3 p = surface + direction * t;
         if (q.w == 0.0) {
             // Sky where the ray's point is: nothing the texture shows is
             // nearer along this line of sight; try the ray's far end once.
             if (t >= tFar)
-                return sky;
+                outcome = kShowSky;
             t = tFar;
             continue;
         }
@@ -190,14 +196,18 @@ vec3 reflectRayMarch(vec3 surface, vec3 direction)
         // within the texture's resolution there (a texel's width, widened
         // for surfaces seen at a slant) and a little for depth precision.
         float reach_m = 0.05 + 4.0 * texelAngle * distance(eyePosition, vec3(p.x, -p.y, p.z));
-        if (distance(q.xyz, p) < reach_m)
-            return maskedHit(uv, direction, sky);
-        float next = clamp(dot(q.xyz - surface, direction), tNear, tFar);
-        t = next;
+        if (distance(q.xyz, p) < reach_m) {
+            outcome = kShowHit;
+            hitUv = uv;
+        } else {
+            t = clamp(dot(q.xyz - surface, direction), tNear, tFar);
+        }
     }
-    // Never settled: the ray passed behind something the texture shows in
-    // front of it.
-    return unsettled(flatUv, direction, sky);
+    // Never settled (the ray passed behind something the texture shows in
+    // front of it) or left the texture: what flat water shows, if geometry.
+    if (outcome == kShowUnsettled && !flatShowsGeometry)
+        outcome = kShowSky;
+    return outcome == kShowSky ? sky : maskedHit(hitUv, direction, skyUnfogged, sky);
 }
 
 vec3 reflectedRadiance(vec3 surface, vec3 direction)
@@ -213,9 +223,7 @@ vec3 reflectedRadiance(vec3 surface, vec3 direction)
 #if SWELL_REFLECTION_MODE == SWELL_REFLECTION_FIXED
     return reflectFixedDistance(surface, direction);
 #else
-    if (intoTheWater)
-        return applyFog(skyRadiance(direction), skyDistance(direction));
-    return reflectRayMarch(surface, direction);
+    return reflectRayMarch(surface, direction, intoTheWater);
 #endif
 }
 #endif

@@ -13,6 +13,13 @@
 #define SWELL_UNDERWATER_GLSL
 #include "frame.glsl"
 
+// 0 in the programs built for passes in which no pixel looks out from below
+// the water (render/programs.h): pixelUnderwater() is then false, so the
+// compiler drops the underwater shading from every caller.
+#ifndef SWELL_SEEN_FROM_BELOW
+#define SWELL_SEEN_FROM_BELOW 1
+#endif
+
 layout(binding = SWELL_UNIT_WATERLINE) uniform sampler2D waterlineMask;
 
 // The unit direction this pixel looks along, in this pass's camera.
@@ -36,6 +43,9 @@ vec3 pixelViewDirection()
 // texture.
 bool pixelUnderwater()
 {
+#if !SWELL_SEEN_FROM_BELOW
+    return false;
+#else
     ivec2 texel = min(ivec2(gl_FragCoord.xy), textureSize(waterlineMask, 0) - 1);
     float m = texelFetch(waterlineMask, texel, 0).r;
     if (m > 0.75)
@@ -45,6 +55,7 @@ bool pixelUnderwater()
     vec2 ndc = gl_FragCoord.xy * viewportInvSize * 2.0 - 1.0;
     vec4 end = passInvViewProj * vec4(ndc, 1.0, 1.0);
     return end.y / end.w < 0.0;
+#endif
 }
 
 // Whether a water fragment at p is seen from below (for the mask,

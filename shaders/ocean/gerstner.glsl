@@ -50,6 +50,21 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
     return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0, tangent, binormal, 0.0);
 }
 
+// The index of the first wave shorter than length_m, waveCount.x if none
+// is: the waves come longest first, so a binary search finds it in at most
+// log2(SWELL_MAX_WAVES) + 1 look-ups.
+int firstWaveShorterThan(float length_m)
+{
+    int lo = 0, hi = waveCount.x;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        bool longer = wavePhase[mid].z >= length_m;
+        lo = longer ? mid + 1 : lo;
+        hi = longer ? hi : mid;
+    }
+    return lo;
+}
+
 // The grid's vertices summed each wave at weight waveLodWeight(wavelength,
 // gridFootprint_m) and the pixel resolves it at waveLodWeight(wavelength,
 // pixelFootprint_m): only the difference is summed here, its partial
@@ -73,11 +88,12 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
     // filtered-out part of the slope variance becomes BRDF roughness).
     float slopeVariance = 0.0;
     float fade2 = heightScale * heightScale;
-    int i = 0;
+    // Start at the band's longest wave rather than skipping the longer ones
+    // in the loop: a software rasteriser (llvmpipe) runs the loop's whole
+    // body, masked, for every wave any pixel of a block still iterates over.
+    int i = firstWaveShorterThan(bothFull_m);
     for (; i < waveCount.x; ++i) {
         float wavelength = wavePhase[i].z;
-        if (wavelength >= bothFull_m)
-            continue;
         // The waves come longest first: none after this one adds anything either.
         if (wavelength <= neither_m)
             break;

@@ -35,13 +35,18 @@ GLint requiredUniform(const gl::Program& program, const char* name, const char* 
 }
 
 gl::Program build(const gl::ShaderSources& sources, const ShaderVariant& variant, const char* vertex,
-                  const char* fragment)
+                  const char* fragment, const std::vector<std::string>& extraDefines = {})
 {
     std::vector<gl::ShaderStage> stages{{GL_VERTEX_SHADER, vertex}};
     if (fragment)
         stages.push_back({GL_FRAGMENT_SHADER, fragment});
-    return gl::buildProgram(sources, stages, definesOf(variant));
+    std::vector<std::string> defines = definesOf(variant);
+    defines.insert(defines.end(), extraDefines.begin(), extraDefines.end());
+    return gl::buildProgram(sources, stages, defines);
 }
+
+// The programs for passes in which no pixel looks out from below the water.
+const std::vector<std::string> kInAir{"SWELL_SEEN_FROM_BELOW 0"};
 
 } // namespace
 
@@ -64,8 +69,9 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
     };
 }
 
-MeshProgram::MeshProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
-    : program_(build(sources, variant, "mesh.vert", "mesh.frag")),
+MeshProgram::MeshProgram(const gl::ShaderSources& sources, const ShaderVariant& variant,
+                         const std::vector<std::string>& extraDefines)
+    : program_(build(sources, variant, "mesh.vert", "mesh.frag", extraDefines)),
       model_(requiredUniform(program_, "model", "mesh.vert"))
 {
 }
@@ -97,6 +103,9 @@ Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& va
     p.waterline = BlockProgram(build(sources, variant, "water.vert", "waterline.frag"));
     p.fxaa = BlockProgram(build(sources, variant, "fullscreen.vert", "fxaa.frag"));
     p.mesh = MeshProgram(sources, variant);
+    p.waterInAir = BlockProgram(build(sources, variant, "water.vert", "water.frag", kInAir));
+    p.skyInAir = BlockProgram(build(sources, variant, "fullscreen.vert", "sky.frag", kInAir));
+    p.meshInAir = MeshProgram(sources, variant, kInAir);
     p.skyBake = SkyBakeProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),
                                               {"vRestPoint", "vPosition", "vNormal"}));

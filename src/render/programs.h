@@ -37,7 +37,9 @@ std::vector<std::string> definesOf(const ShaderVariant& variant);
 class MeshProgram {
 public:
     MeshProgram() = default;
-    MeshProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
+    // extraDefines: #define lines (without "#define ") added to the variant's.
+    MeshProgram(const gl::ShaderSources& sources, const ShaderVariant& variant,
+                const std::vector<std::string>& extraDefines = {});
     void use() const;
     // Object to render-origin-relative world transform, m.
     void setModel(const glm::mat4& model) const;
@@ -81,6 +83,15 @@ struct Programs {
     BlockProgram water, sky, waterline, fxaa, capture;
     MeshProgram mesh;
     SkyBakeProgram skyBake;
+    // water, sky and mesh again, built with SWELL_SEEN_FROM_BELOW 0 for the
+    // passes in which no pixel looks out from below the water (the waterline
+    // mask says "above" everywhere: the reflection and refraction passes, and
+    // a main pass whose near plane lies wholly in the air). The underwater
+    // shading is compiled out of them rather than branched over, since a
+    // software rasteriser runs both sides of a branch for all the pixels it
+    // shades together.
+    BlockProgram waterInAir, skyInAir;
+    MeshProgram meshInAir;
 };
 
 // Compiles and links every program for a variant. Throws swell::InputError

@@ -48,6 +48,9 @@ struct Renderer::Impl {
     unsigned omittedWaterTerms = 0;
     ShaderVariant variant;
     Programs programs;
+    // Whether the pass being drawn has no pixel that looks out from below the
+    // water, so the programs without underwater shading draw it (programs.h).
+    bool passInAir = true;
     gl::Buffer frameUbo[PassCount];
     gl::VertexArray emptyVao;
     WaterGrid waterGrid;
@@ -168,18 +171,21 @@ struct Renderer::Impl {
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_FRAME, frameUbo[pass].id());
     }
 
+    const MeshProgram& meshProgram() const { return passInAir ? programs.meshInAir : programs.mesh; }
+
     void drawWorld(glm::dvec3 origin)
     {
-        programs.mesh.use();
+        const MeshProgram& mesh = meshProgram();
+        mesh.use();
         const GpuMesh& island = world.island;
         if (island.indexCount() > 0) {
-            programs.mesh.setModel(glm::mat4(glm::translate(glm::dmat4(1.0), kIslandPosition_m - origin)));
+            mesh.setModel(glm::mat4(glm::translate(glm::dmat4(1.0), kIslandPosition_m - origin)));
             island.draw();
             counters.worldTriangles += island.indexCount() / 3;
             ++counters.drawCalls;
         }
         for (size_t i = 0; i < world.meshes.size(); ++i) {
-            programs.mesh.setModel(poses[i]);
+            mesh.setModel(poses[i]);
             world.meshes[i]->draw();
             counters.worldTriangles += world.meshes[i]->indexCount() / 3;
             ++counters.drawCalls;
@@ -194,11 +200,12 @@ struct Renderer::Impl {
     // refraction passes draw no water, so they need no mask.)
     void drawHullVolumes()
     {
-        programs.mesh.use();
+        const MeshProgram& mesh = meshProgram();
+        mesh.use();
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         for (size_t i = 0; i < world.hullVolumes.size(); ++i)
             if (world.hullVolumes[i]) {
-                programs.mesh.setModel(poses[i]);
+                mesh.setModel(poses[i]);
                 world.hullVolumes[i]->draw();
                 ++counters.drawCalls;
             }
@@ -207,7 +214,7 @@ struct Renderer::Impl {
 
     void drawSky()
     {
-        programs.sky.use();
+        (passInAir ? programs.skyInAir : programs.sky).use();
         glBindTextureUnit(SWELL_UNIT_SKY, world.skyCube.id());
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);
@@ -220,7 +227,7 @@ struct Renderer::Impl {
 
     void drawWater()
     {
-        programs.water.use();
+        (passInAir ? programs.waterInAir : programs.water).use();
         glBindTextureUnit(SWELL_UNIT_SKY, world.skyCube.id());
         glBindTextureUnit(SWELL_UNIT_REFLECTION_COLOR, reflection.color());
         glBindTextureUnit(SWELL_UNIT_REFLECTION_DEPTH, reflection.depth());
@@ -302,6 +309,7 @@ struct Renderer::Impl {
         // Passes before the main one see nothing from below the water.
         waterline.resize(size);
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.allAbove());
+        passInAir = true;
 
         // Pass 1: the world mirrored about the water plane, clipped just below it.
         FrameUniforms f = base;
@@ -351,8 +359,10 @@ struct Renderer::Impl {
         // pass (multisampled or not) reads it on the same pixel grid.
         WaveReach reach = model().reach();
         reach.vertical_m += wakeReach_m;
-        drawWaterline(nearPlaneMedium(camera, double(size.x) / double(size.y), reach), size);
+        const NearPlaneMedium medium = nearPlaneMedium(camera, double(size.x) / double(size.y), reach);
+        drawWaterline(medium, size);
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.texture());
+        passInAir = medium == NearPlaneMedium::Air;
         notify(true, "main");
         const GLuint mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
         beginPass(mainFramebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
