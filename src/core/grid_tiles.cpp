@@ -42,19 +42,45 @@ TiledGrid tileGrid(int cells, int tileCells, int blockTiles)
     return grid;
 }
 
+int morphBand(double morph)
+{
+    return morph <= 0.0 ? 0 : std::clamp(int(std::ceil(morph * kMorphBands)), 1, kMorphBands);
+}
+
 Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach)
 {
-    // Along a row a vertex's x grows with i, and |x| grows with the ring
-    // along a column (paper's layout: x depends on i alone), so the extremes
-    // of x lie at the tile's corners or at the point of its left or right edge
-    // nearest the centre; likewise for z. Eight points bound the tile.
+    // Before snapping, along a row a vertex's x grows with i, and |x| grows
+    // with the ring along a column (paper's layout: x depends on i alone), so
+    // the extremes of x lie at the tile's corners or at the point of its left
+    // or right edge nearest the centre; likewise for z. Eight points bound
+    // the tile's unsnapped places, which do not depend on where the centre
+    // snapped; each vertex snaps within half a lattice step of its place.
+    // While morphing, a vertex slides in a straight line from this scale's
+    // place to the coarser one's: the box holds its places at both ends of
+    // the morph band the placement is in, and so every place between.
     Bounds box{glm::dvec3(std::numeric_limits<double>::infinity()), glm::dvec3(-std::numeric_limits<double>::infinity())};
     double margin = 0.0;
+    const int band = morphBand(placement.morph);
+    GridPlacement ends[2] = {placement, placement};
+    ends[0].morph = band == 0 ? 0.0 : double(band - 1) / kMorphBands;
+    ends[1].morph = double(band) / kMorphBands;
+    // The coarser grid's centre sits within 1.5 finest steps of this one's
+    // (each is the camera rounded to its own step: half of one, half of two).
+    for (GridPlacement& end : ends)
+        end.coarseCenterShift_m = glm::dvec2(0.0);
+    const double coarseShift_m = ends[1].morph * 1.5 * placement.finestStep_m;
     auto add = [&](int i, int j) {
-        const GridPoint p = gridPoint(shape, placement, i, j);
-        box.lo = glm::min(box.lo, glm::dvec3(p.offset_m.x, 0.0, p.offset_m.y));
-        box.hi = glm::max(box.hi, glm::dvec3(p.offset_m.x, 0.0, p.offset_m.y));
-        margin = std::max({margin, p.latticeStep_m.x, p.latticeStep_m.y});
+        for (const GridPlacement& end : ends) {
+            const GridPoint p = gridPoint(shape, end, i, j);
+            box.lo = glm::min(box.lo, glm::dvec3(p.nominal_m.x, 0.0, p.nominal_m.y));
+            box.hi = glm::max(box.hi, glm::dvec3(p.nominal_m.x, 0.0, p.nominal_m.y));
+            // Half a step of snapping, the coarser centre's shift, and the
+            // GPU's float arithmetic (about 1e-6 of the distance; 1e-5 here).
+            const double slack_m = 1e-5 * (std::abs(p.nominal_m.x) + std::abs(p.nominal_m.y)) + 1e-3;
+            margin = std::max(margin, 0.5 * std::max(p.latticeStep_m.x, p.latticeStep_m.y) + coarseShift_m + slack_m);
+            if (band == 0)
+                break;
+        }
     };
     const int half = shape.cells / 2;
     const int nearestI = std::clamp(half, tile.i0, tile.i1), nearestJ = std::clamp(half, tile.j0, tile.j1);
@@ -65,8 +91,7 @@ Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const 
     add(tile.i1, nearestJ);
     add(nearestI, tile.j0);
     add(nearestI, tile.j1);
-    // One lattice step, so a vertex the GPU's float arithmetic rounds to the
-    // neighbouring lattice point is still inside; then the waves' reach.
+    // The snapping and float margin, then the waves' reach.
     const glm::dvec3 pad(margin + reach.horizontal_m, reach.vertical_m, margin + reach.horizontal_m);
     box.lo -= pad;
     box.hi += pad;
