@@ -55,6 +55,12 @@ int morphBand(double morph);
 // changes). Its margin covers the snapping (half a lattice step), the GPU's
 // float arithmetic and the waves' reach.
 Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach);
+// tileBounds() of every block and tile of `grid`, finding each vertex's
+// places once.
+struct GridBounds {
+    std::vector<Bounds> blocks, tiles;
+};
+GridBounds gridBounds(const GridShape& shape, const GridPlacement& placement, const TiledGrid& grid, const WaveReach& reach);
 
 // The six planes (a, b, c, d) of a view-projection's clip volume: a point p is
 // inside when dot(plane, (p, 1)) >= 0 for all six (OpenGL clip z in -w..w).

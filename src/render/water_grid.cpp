@@ -26,12 +26,9 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
     const int morphing = morphBand(placement.morph);
     if (!boundsValid_ || placement.scale != boundsScale_ || morphing != boundsMorphBand_ ||
         reach.vertical_m != boundsReach_.vertical_m || reach.horizontal_m != boundsReach_.horizontal_m) {
-        blockBounds_.clear();
-        tileBounds_.clear();
-        for (const GridTile& block : grid_.blocks)
-            blockBounds_.push_back(tileBounds(shape, placement, block, reach));
-        for (const GridTile& tile : grid_.tiles)
-            tileBounds_.push_back(tileBounds(shape, placement, tile, reach));
+        GridBounds bounds = gridBounds(shape, placement, grid_, reach);
+        blockBounds_ = std::move(bounds.blocks);
+        tileBounds_ = std::move(bounds.tiles);
         boundsValid_ = true;
         boundsScale_ = placement.scale;
         boundsMorphBand_ = morphing;
