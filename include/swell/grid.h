@@ -68,8 +68,8 @@ SWELL_API double finestGridStep(const GridShape& shape);
 // the paper's layout. morph (0..1) says how far the grid has slid toward the
 // next coarser scale (2 * scale): it rises from 0 to 1 over a band of heights
 // below the one where that scale takes over, so that crossing into it moves
-// no vertex (geomorphing, as in Strugar 2009, "Continuous distance-dependent
-// level of detail for rendering heightmaps", section 2.3).
+// no vertex (geomorphing, as CDLOD morphs its levels: Strugar 2009,
+// "Continuous distance-dependent level of detail for rendering heightmaps").
 struct SWELL_API GridScale {
     double scale = 1.0;
     double morph = 0.0;
