@@ -29,16 +29,17 @@
 //     |   +-----------------------+   |
 //     +-------------------------------+
 //
-// The inner scale a doubles (scale 1, 2, 4, ...) with each doubling of the
-// camera's height, so the water below a high camera is not over-tessellated,
-// while the reach stays `radius`: ring u moves by 2^(1 - u) per doubling, the
-// far rings hardly at all. Over a band of heights below each switch the
-// vertices slide (gridMorph 0..1) toward where the next coarser scale puts
-// them, so the switch moves nothing (geomorphing; grid.cpp has the heights):
+// The inner scale a doubles (scale ..., 1/2, 1, 2, ...) with each eightfold
+// of the camera's height, so the water below a high camera is not
+// over-tessellated nor the far water seen from low down, while the reach
+// stays `radius`: ring u moves by 2^(1 - u) per doubling, the far rings
+// hardly at all. Over a band of heights below each switch the vertices slide
+// (gridMorph 0..1) toward where the next coarser scale puts them, so the
+// switch moves nothing (geomorphing; grid.cpp has the heights):
 //
-//     height    6.2 s  6.5 s                      12.5 s
-//     scale     |-- s -------------------------------|-- 2 s ---...
-//     gridMorph  0  0  0 .1 .2 .3 .4 .5 .6 .7 .8 .9 1|0  0 ...
+//     height m    5.9       13.2                                 47
+//     scale       |-- 1 ------------------------------------------|-- 2 --...
+//     gridMorph    0  0  0  0 .1 .2 .3 .4 .5 .6 .7 .8 .9  1      | 0  0 ...
 //
 // The outermost lines (ring) are moved out to a skirt far beyond the fog, so
 // the water has no edge. To keep the surface from swimming as the camera

@@ -62,10 +62,11 @@ SWELL_API double gridLineOffset(const GridShape& shape, int i);
 // on straight lines, so they snap to a lattice finer than their spacing).
 SWELL_API double finestGridStep(const GridShape& shape);
 
-// The geometric grid's scale for a camera this high above the water: 1, 2,
-// 4, ... (a power of two, so every scale's lattices are lattices of scale 1),
-// keeping triangles a similar size on screen from any height. Always 1 for
-// the paper's layout. morph (0..1) says how far the grid has slid toward the
+// The geometric grid's scale for a camera this high above the water: 1/4,
+// 1/2, 1, 2, ... up to shape.maxScale (a power of two, so every scale's
+// lattices are lattices of scale 1), doubling every eightfold of height and
+// so keeping triangles a similar size on screen from any height (grid.cpp
+// has the heights). Always 1 for the paper's layout. morph (0..1) says how far the grid has slid toward the
 // next coarser scale (2 * scale): it rises from 0 to 1 over a band of heights
 // below the one where that scale takes over, so that crossing into it moves
 // no vertex (geomorphing, as CDLOD morphs its levels: Strugar 2009,
