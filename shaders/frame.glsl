@@ -14,8 +14,10 @@ struct WorldBox {
 
 // One snap level of the LOD grid (see grid.glsl).
 struct GridLevel {
-    vec2 snapOffset_m; // grid centre (absolute) modulo this level's snap step, m
-    float firstRing;   // geometric layout: the first ring that snaps to this level
+    vec2 snapOffset_m;       // grid centre (absolute) modulo this level's snap step, m
+    vec2 coarseSnapOffset_m; // the same for the next coarser scale's grid (its own centre and steps), m
+    float firstRing;         // geometric layout: the first ring that snaps to this level
+    float coarseFirstRing;   // the same for the next coarser scale's rings
 };
 
 layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
@@ -48,7 +50,7 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     float gridFadeStart_m;  // wave heights fade to 0 between these distances, m
     float gridFadeEnd_m;
     float gridInnerScale_m; // geometric layout: inner scale r0 times the grid scale, m
-    float gridGrowth;       // geometric layout: growth k
+    float gridGrowth;       // geometric layout: growth k of this scale
     float reflectionFixedDistance_m; // the paper's lookup: step along the reflected ray, m
     int worldBoxCount;      // boxes in use; -1: unbounded (every ray is marched)
     vec2 viewportSize;      // pixels
@@ -56,6 +58,9 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     int passEncodesSrgb;    // 1 when this pass writes display colours (sRGB), 0 for linear targets
     float waveHeightDeviation_m; // the wave model's height standard deviation, m
     float waveMeanSquareSlope; // the sea's mean |grad eta|^2, for the reflection's masking
+    float gridMorph;        // geometric layout: 0..1, how far vertices have slid toward the next coarser scale
+    vec2 gridCoarseCenterShift; // the next coarser scale's grid centre relative to gridCenter, m
+    float gridCoarseGrowth; // geometric layout: the next coarser scale's growth (its inner scale is twice this one's)
     GridLevel gridLevels[SWELL_GRID_LEVELS];
     WorldBox worldBoxes[SWELL_MAX_WORLD_BOXES];
 };

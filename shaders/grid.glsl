@@ -14,7 +14,7 @@
 // far out. geometric (SWELL_GRID_GEOMETRIC, the default) uses concentric square rings instead:
 // ring r = max(|i - n/2|, |j - n/2|) lies at Chebyshev radius
 //
-//     f(r) = scale * r0 * (exp(k * r / (n/2)) - 1),   k = ln(1 + radius / r0)
+//     f(r) = a * (exp(k * r / (n/2)) - 1),   a = scale * r0,   k = ln(1 + radius / a)
 //
 // with its vertices evenly along each side (vertex (i, j) at (i - n/2, j - n/2) * f(r) / r):
 //
@@ -29,8 +29,17 @@
 //     |   +-----------------------+   |
 //     +-------------------------------+
 //
-// and the whole grid doubles (scale 1, 2, 4, ...) with each doubling of the
-// camera's height, so the water seen from high up is not over-tessellated.
+// The inner scale a doubles (scale ..., 1/2, 1, 2, ...) with each eightfold
+// of the camera's height, so the water below a high camera is not
+// over-tessellated nor the far water seen from low down, while the reach
+// stays `radius`: ring u moves by 2^(1 - u) per doubling, the far rings
+// hardly at all. Over a band of heights below each switch the vertices slide
+// (gridMorph 0..1) toward where the next coarser scale puts them, so the
+// switch moves nothing (geomorphing; grid.cpp has the heights):
+//
+//     height m    5.9       13.2                                 47
+//     scale       |-- 1 ------------------------------------------|-- 2 --...
+//     gridMorph    0  0  0  0 .1 .2 .3 .4 .5 .6 .7 .8 .9  1      | 0  0 ...
 //
 // The outermost lines (ring) are moved out to a skirt far beyond the fog, so
 // the water has no edge. To keep the surface from swimming as the camera
@@ -79,6 +88,26 @@ float paperLine(int i, int axis, out float spacing)
     return snapToLattice(s, step0 * exp2(float(level)), gridLevels[level].snapOffset_m[axis]);
 }
 
+// Vertex d of ring `ring` at this frame's grid scale (coarse false), or at
+// the next coarser one (twice the scale, its own centre and snap offsets).
+GridVertex geometricVertexAt(ivec2 d, int ring, int half_n, bool coarse)
+{
+    float r0 = coarse ? 2.0 * gridInnerScale_m : gridInnerScale_m, k = coarse ? gridCoarseGrowth : gridGrowth;
+    float u = float(ring) / float(half_n);
+    float radius = r0 * (exp(k * u) - 1.0);
+    float radial = r0 * k * exp(k * u) / float(half_n);
+    float tangential = ring == 0 ? radial : radius / float(ring);
+    int level = 0;
+    for (int l = 1; l < SWELL_GRID_LEVELS; ++l)
+        level = ring >= int(coarse ? gridLevels[l].coarseFirstRing : gridLevels[l].firstRing) ? l : level;
+    // Level l of the coarser scale snaps to this scale's level l + 1 lattice.
+    float step = gridFinestStep_m * exp2(float(coarse ? level + 1 : level));
+    vec2 snapOffset = coarse ? gridLevels[level].coarseSnapOffset_m : gridLevels[level].snapOffset_m;
+    vec2 nominal = vec2(d) * tangential;
+    vec2 offset = vec2(snapToLattice(nominal.x, step, snapOffset.x), snapToLattice(nominal.y, step, snapOffset.y));
+    return GridVertex(coarse ? offset + gridCoarseCenterShift : offset, max(radial, tangential));
+}
+
 GridVertex geometricVertex(int i, int j)
 {
     int half_n = int(gridCells) / 2;
@@ -86,19 +115,13 @@ GridVertex geometricVertex(int i, int j)
     int ring = max(abs(d.x), abs(d.y));
     if (ring == half_n)
         return GridVertex(vec2(d) * (gridSkirt_m / float(half_n)), gridSkirt_m);
-    float r0 = gridInnerScale_m, k = gridGrowth;
-    float u = float(ring) / float(half_n);
-    float radius = r0 * (exp(k * u) - 1.0);
-    float radial = r0 * k * exp(k * u) / float(half_n);
-    float tangential = ring == 0 ? radial : radius / float(ring);
-    int level = 0;
-    for (int l = 1; l < SWELL_GRID_LEVELS; ++l)
-        level = ring >= int(gridLevels[l].firstRing) ? l : level;
-    float step = gridFinestStep_m * exp2(float(level));
-    vec2 nominal = vec2(d) * tangential;
-    vec2 offset = vec2(snapToLattice(nominal.x, step, gridLevels[level].snapOffset_m.x),
-                       snapToLattice(nominal.y, step, gridLevels[level].snapOffset_m.y));
-    return GridVertex(offset, max(radial, tangential));
+    GridVertex fine = geometricVertexAt(d, ring, half_n, false);
+    if (gridMorph <= 0.0)
+        return fine;
+    // Geomorphing (Strugar 2009): slide toward the coarser scale's vertex, so
+    // that the switch to that scale at gridMorph = 1 moves nothing.
+    GridVertex coarse = geometricVertexAt(d, ring, half_n, true);
+    return GridVertex(mix(fine.offset, coarse.offset, gridMorph), mix(fine.cellSize, coarse.cellSize, gridMorph));
 }
 
 GridVertex gridVertex(int vertexId)

@@ -65,13 +65,15 @@ glm::ivec2 DrawnSurface::restCellOf(glm::dvec2 r) const
         line = {inverse(r.x), inverse(r.y)};
     } else {
         // Vertex (i, j) sits at d * f(ring) / ring with f(ring) the ring's
-        // Chebyshev radius, innerScale * expm1(growth * ring / half).
-        const glm::dvec2 q = r / placement_.scale;
-        const double chebyshev = std::max(std::abs(q.x), std::abs(q.y));
+        // Chebyshev radius, innerScale * expm1(growth * ring / half); while
+        // morphing, between that and the coarser scale's: the guess only
+        // starts the search.
+        const double chebyshev = std::max(std::abs(r.x), std::abs(r.y));
         if (chebyshev <= 0.0)
             return {half, half};
-        const double ring = half * std::log1p(chebyshev / shape_.innerScale_m) / shape_.growth;
-        line = q * (ring / chebyshev);
+        auto ringOf = [&](const GridRings& rings) { return half * std::log1p(chebyshev / rings.innerScale_m) / rings.growth; };
+        const double ring = glm::mix(ringOf(placement_.rings), ringOf(placement_.coarseRings), placement_.morph);
+        line = r * (ring / chebyshev);
     }
     const glm::dvec2 cell = glm::floor(line) + double(half);
     return glm::clamp(glm::ivec2(cell), glm::ivec2(0), glm::ivec2(shape_.cells - 1));

@@ -42,21 +42,78 @@ TiledGrid tileGrid(int cells, int tileCells, int blockTiles)
     return grid;
 }
 
-Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach)
+int morphBand(double morph)
 {
-    // Along a row a vertex's x grows with i, and |x| grows with the ring
-    // along a column (paper's layout: x depends on i alone), so the extremes
-    // of x lie at the tile's corners or at the point of its left or right edge
-    // nearest the centre; likewise for z. Eight points bound the tile.
+    return morph <= 0.0 ? 0 : std::clamp(int(std::ceil(morph * kMorphBands)), 1, kMorphBands);
+}
+
+namespace {
+
+// Where one vertex can be, before the waves move it: a box of its unsnapped
+// places, and a margin to add around it.
+struct VertexExtent {
+    glm::dvec2 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+    double margin_m = 0.0;
+};
+
+// While morphing, a vertex slides in a straight line from this scale's place
+// to the coarser one's: its places at both ends of the placement's morph band
+// hold every place between.
+class VertexExtents {
+public:
+    VertexExtents(const GridShape& shape, const GridPlacement& placement)
+        : shape_(shape), band_(morphBand(placement.morph)), ends_{placement, placement}
+    {
+        ends_[0].morph = band_ == 0 ? 0.0 : double(band_ - 1) / kMorphBands;
+        ends_[1].morph = double(band_) / kMorphBands;
+        // The coarser grid's centre sits within 1.5 finest steps of this
+        // one's (each is the camera rounded to its own step: half of one,
+        // half of two), whichever way the centre snapped.
+        for (GridPlacement& end : ends_)
+            end.coarseCenterShift_m = glm::dvec2(0.0);
+        coarseShift_m_ = ends_[1].morph * 1.5 * placement.finestStep_m;
+    }
+
+    VertexExtent at(int i, int j) const
+    {
+        VertexExtent e;
+        for (int k = 0; k < (band_ == 0 ? 1 : 2); ++k) {
+            const GridPoint p = gridPoint(shape_, ends_[k], i, j);
+            e.lo = glm::min(e.lo, p.nominal_m);
+            e.hi = glm::max(e.hi, p.nominal_m);
+            // Half a step of snapping, the coarser centre's shift, and the
+            // GPU's float arithmetic (about 1e-6 of the distance; 1e-5 here).
+            const double slack_m = 1e-5 * (std::abs(p.nominal_m.x) + std::abs(p.nominal_m.y)) + 1e-3;
+            e.margin_m = std::max(e.margin_m, 0.5 * std::max(p.latticeStep_m.x, p.latticeStep_m.y) + coarseShift_m_ + slack_m);
+        }
+        return e;
+    }
+
+private:
+    const GridShape& shape_;
+    int band_;
+    GridPlacement ends_[2];
+    double coarseShift_m_ = 0.0;
+};
+
+// Before snapping, along a row a vertex's x grows with i, and |x| grows with
+// the ring along a column (paper's layout: x depends on i alone), so the
+// extremes of x lie at the tile's corners or at the point of its left or
+// right edge nearest the centre; likewise for z. Eight points bound the
+// tile's unsnapped places, which do not depend on where the centre snapped;
+// each vertex snaps within half a lattice step of its place.
+template <typename ExtentAt>
+Bounds boundsOf(const GridTile& tile, int cells, const WaveReach& reach, const ExtentAt& extentAt)
+{
     Bounds box{glm::dvec3(std::numeric_limits<double>::infinity()), glm::dvec3(-std::numeric_limits<double>::infinity())};
     double margin = 0.0;
     auto add = [&](int i, int j) {
-        const GridPoint p = gridPoint(shape, placement, i, j);
-        box.lo = glm::min(box.lo, glm::dvec3(p.offset_m.x, 0.0, p.offset_m.y));
-        box.hi = glm::max(box.hi, glm::dvec3(p.offset_m.x, 0.0, p.offset_m.y));
-        margin = std::max({margin, p.latticeStep_m.x, p.latticeStep_m.y});
+        const VertexExtent e = extentAt(i, j);
+        box.lo = glm::min(box.lo, glm::dvec3(e.lo.x, 0.0, e.lo.y));
+        box.hi = glm::max(box.hi, glm::dvec3(e.hi.x, 0.0, e.hi.y));
+        margin = std::max(margin, e.margin_m);
     };
-    const int half = shape.cells / 2;
+    const int half = cells / 2;
     const int nearestI = std::clamp(half, tile.i0, tile.i1), nearestJ = std::clamp(half, tile.j0, tile.j1);
     for (const int i : {tile.i0, tile.i1})
         for (const int j : {tile.j0, tile.j1})
@@ -65,12 +122,39 @@ Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const 
     add(tile.i1, nearestJ);
     add(nearestI, tile.j0);
     add(nearestI, tile.j1);
-    // One lattice step, so a vertex the GPU's float arithmetic rounds to the
-    // neighbouring lattice point is still inside; then the waves' reach.
+    // The snapping and float margin, then the waves' reach.
     const glm::dvec3 pad(margin + reach.horizontal_m, reach.vertical_m, margin + reach.horizontal_m);
     box.lo -= pad;
     box.hi += pad;
     return box;
+}
+
+} // namespace
+
+Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach)
+{
+    const VertexExtents extents(shape, placement);
+    return boundsOf(tile, shape.cells, reach, [&](int i, int j) { return extents.at(i, j); });
+}
+
+GridBounds gridBounds(const GridShape& shape, const GridPlacement& placement, const TiledGrid& grid, const WaveReach& reach)
+{
+    // Each vertex's extent once (a vertex is shared by up to four tiles).
+    const VertexExtents extents(shape, placement);
+    const int lines = shape.cells + 1;
+    std::vector<VertexExtent> table(size_t(lines) * size_t(lines));
+    for (int j = 0; j < lines; ++j)
+        for (int i = 0; i < lines; ++i)
+            table[size_t(j) * size_t(lines) + size_t(i)] = extents.at(i, j);
+    auto extentAt = [&](int i, int j) { return table[size_t(j) * size_t(lines) + size_t(i)]; };
+    GridBounds out;
+    out.blocks.reserve(grid.blocks.size());
+    out.tiles.reserve(grid.tiles.size());
+    for (const GridTile& block : grid.blocks)
+        out.blocks.push_back(boundsOf(block, shape.cells, reach, extentAt));
+    for (const GridTile& tile : grid.tiles)
+        out.tiles.push_back(boundsOf(tile, shape.cells, reach, extentAt));
+    return out;
 }
 
 Frustum frustumPlanes(const glm::dmat4& m)

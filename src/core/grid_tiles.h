@@ -41,10 +41,26 @@ TiledGrid tileGrid(int cells, int tileCells, int blockTiles);
 struct Bounds {
     glm::dvec3 lo{0.0}, hi{0.0};
 };
-// A box holding every displaced vertex of the tile, relative to the grid centre.
-// Each side has one lattice step of margin, so a line the GPU's float math
-// rounds to the neighbouring lattice point is still inside.
+// The morph toward the coarser scale in kMorphBands bands: 0 while not
+// morphing, else 1 + the band (of width 1 / kMorphBands) holding morph.
+// Bounds hold for a whole band, so they change kMorphBands times a climb
+// through a scale's morph, not every frame; 16 keeps them within 1/16 of
+// the slide of their tight size.
+constexpr int kMorphBands = 16;
+int morphBand(double morph);
+
+// A box holding every displaced vertex of the tile, relative to the grid
+// centre, wherever the centre snapped at placement's scale, and for every
+// morph in placement's morph band (so it holds until the scale or the band
+// changes). Its margin covers the snapping (half a lattice step), the GPU's
+// float arithmetic and the waves' reach.
 Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach);
+// tileBounds() of every block and tile of `grid`, finding each vertex's
+// places once.
+struct GridBounds {
+    std::vector<Bounds> blocks, tiles;
+};
+GridBounds gridBounds(const GridShape& shape, const GridPlacement& placement, const TiledGrid& grid, const WaveReach& reach);
 
 // The six planes (a, b, c, d) of a view-projection's clip volume: a point p is
 // inside when dot(plane, (p, 1)) >= 0 for all six (OpenGL clip z in -w..w).

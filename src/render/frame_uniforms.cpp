@@ -40,10 +40,14 @@ FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, cons
     const HorizonFade fade = horizonFadeFor(scene.grid, gridShape);
     f.gridFadeStart_m = float(fade.start_m);
     f.gridFadeEnd_m = float(fade.end_m);
-    f.gridInnerScale_m = float(grid.scale * gridShape.innerScale_m);
-    f.gridGrowth = float(gridShape.growth);
+    f.gridInnerScale_m = float(grid.rings.innerScale_m);
+    f.gridGrowth = float(grid.rings.growth);
+    f.gridCoarseGrowth = float(grid.coarseRings.growth);
     for (int l = 0; l < SWELL_GRID_LEVELS; ++l)
-        f.gridLevels[l] = {glm::vec2(grid.snapOffsets[size_t(l)]), float(gridShape.levelFirstRing[size_t(l)])};
+        f.gridLevels[l] = {glm::vec2(grid.snapOffsets[size_t(l)]), glm::vec2(grid.coarseSnapOffsets[size_t(l)]),
+                           float(grid.rings.levelFirstRing[size_t(l)]), float(grid.coarseRings.levelFirstRing[size_t(l)])};
+    f.gridMorph = float(grid.morph);
+    f.gridCoarseCenterShift = glm::vec2(grid.coarseCenterShift_m);
     f.reflectionFixedDistance_m = float(scene.reflection.fixedDistance_m);
     setViewport(f, size);
     return f;

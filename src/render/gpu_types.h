@@ -22,7 +22,9 @@ struct alignas(16) WorldBoxUniform {
 
 struct alignas(16) GridLevelUniform {
     glm::vec2 snapOffset_m;
+    glm::vec2 coarseSnapOffset_m;
     float firstRing;
+    float coarseFirstRing;
 };
 
 struct alignas(16) FrameUniforms {
@@ -63,6 +65,9 @@ struct alignas(16) FrameUniforms {
     int passEncodesSrgb;
     float waveHeightDeviation_m;
     float waveMeanSquareSlope;
+    float gridMorph;
+    glm::vec2 gridCoarseCenterShift;
+    float gridCoarseGrowth;
     GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
     WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
 };

@@ -19,21 +19,21 @@ void WaterGrid::build(const GridShape& shape)
 void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, const WaveReach& reach,
                      const glm::dmat4& viewProj, glm::dvec2 gridCenter_m)
 {
-    // The bounds, relative to the grid centre, change only when the grid
-    // snaps to another centre or scale, or the surface's reach changes: a
-    // camera that turns, or moves within a snap step, reuses them.
-    if (!boundsValid_ || placement.center_m != boundsCenter_m_ || placement.scale != boundsScale_ ||
+    // The bounds, relative to the grid centre, hold wherever the centre
+    // snaps (tileBounds()): they change only when the grid changes scale or
+    // morph band, or the surface's reach changes. A camera that moves,
+    // turns, or climbs within a band reuses them.
+    const int morphing = morphBand(placement.morph);
+    if (!boundsValid_ || placement.scale != boundsScale_ || morphing != boundsMorphBand_ ||
         reach.vertical_m != boundsReach_.vertical_m || reach.horizontal_m != boundsReach_.horizontal_m) {
-        blockBounds_.clear();
-        tileBounds_.clear();
-        for (const GridTile& block : grid_.blocks)
-            blockBounds_.push_back(tileBounds(shape, placement, block, reach));
-        for (const GridTile& tile : grid_.tiles)
-            tileBounds_.push_back(tileBounds(shape, placement, tile, reach));
+        GridBounds bounds = gridBounds(shape, placement, grid_, reach);
+        blockBounds_ = std::move(bounds.blocks);
+        tileBounds_ = std::move(bounds.tiles);
         boundsValid_ = true;
-        boundsCenter_m_ = placement.center_m;
         boundsScale_ = placement.scale;
+        boundsMorphBand_ = morphing;
         boundsReach_ = reach;
+        ++boundsComputed_;
     }
     const Frustum frustum = frustumPlanes(viewProj);
     const glm::dvec3 centre(gridCenter_m.x, 0.0, gridCenter_m.y);

@@ -14,11 +14,13 @@ namespace swell::detail {
 
 class WaterGrid {
 public:
-    // Tiles of this many cells a side: small, so the frustum's edges waste
-    // few triangles; blocks of kBlockTiles x kBlockTiles tiles are tested
-    // first, so the CPU tests the small tiles only along the frustum's edges.
-    static constexpr int kTileCells = 2;
-    static constexpr int kBlockTiles = 4;
+    // Tiles of one cell: the far cells are long and thin, and tiles of 2 x 2
+    // cells along the frustum's sides kept a fifth of the drawn triangles
+    // outside the view (issue 16). Blocks of kBlockTiles x kBlockTiles tiles
+    // are tested first, so the CPU tests the tiles only along the frustum's
+    // edges.
+    static constexpr int kTileCells = 1;
+    static constexpr int kBlockTiles = 8;
 
     void build(const GridShape& shape);
 
@@ -32,6 +34,10 @@ public:
     long long draw() const;
     unsigned vertexArray() const { return vao_.id(); }
 
+    // How many times the tiles' bounds have been computed (once per change of
+    // scale, morph band or reach, not per frame).
+    long long boundsComputed() const { return boundsComputed_; }
+
     // The indices of the chosen tiles' triangles, in the order drawn.
     std::vector<std::uint32_t> chosenIndices() const;
 
@@ -42,12 +48,13 @@ private:
 
     TiledGrid grid_;
     // Each block's and tile's bounds relative to the grid centre, for the
-    // placement and reach they were computed for.
+    // scale, morph band and reach they were computed for.
     std::vector<Bounds> blockBounds_, tileBounds_;
     bool boundsValid_ = false;
-    glm::dvec2 boundsCenter_m_{0.0};
     double boundsScale_ = 0.0;
+    int boundsMorphBand_ = 0;
     WaveReach boundsReach_;
+    long long boundsComputed_ = 0;
     gl::Buffer indices_;
     gl::VertexArray vao_;
     // glMultiDrawElements' arguments for the chosen tiles.

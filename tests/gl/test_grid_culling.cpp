@@ -21,6 +21,9 @@ struct Case {
     swell::GridLayout layout;
     glm::dvec3 position_m;
     double yaw_deg, pitch_deg;
+    // Steep, tall waves by default: their sideways and vertical reach must be
+    // in the bounds. A calm sea leaves the bounds little margin beyond the grid's own.
+    double windSpeed_mps = 20.0;
 };
 
 class GridCulling : public swell::test::GlTest, public testing::WithParamInterface<Case> {};
@@ -40,8 +43,7 @@ TEST_P(GridCulling, EveryTriangleThatReachesTheViewIsDrawn)
     scene.showTerrain = false;
     scene.grid.layout = c.layout;
     scene.grid.resolution = 129;
-    // Steep, tall waves: their sideways and vertical reach must be in the bounds.
-    scene.waves.wind->windSpeed_mps = 20.0;
+    scene.waves.wind->windSpeed_mps = c.windSpeed_mps;
     swell::Renderer renderer(scene);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.position_m = c.position_m;
@@ -104,6 +106,12 @@ INSTANTIATE_TEST_SUITE_P(
                     Case{swell::GridLayout::Geometric, {123.4, 2.0, -56.7}, 137.0, -1.0},
                     Case{swell::GridLayout::Geometric, {-40.0, 60.0, 10.0}, -60.0, -35.0},
                     Case{swell::GridLayout::Geometric, {5.0e5, 12.0, -3.0e5}, 250.0, 10.0},
+                    // Cameras in the morph between scales: vertices between two lattices.
+                    Case{swell::GridLayout::Geometric, {17.0, 25.0, -33.0}, 75.0, -15.0},
+                    Case{swell::GridLayout::Geometric, {-250.3, 4.0, 71.9}, -120.0, -3.0},
+                    Case{swell::GridLayout::Geometric, {17.0, 25.0, -33.0}, 75.0, -15.0, 2.0},
+                    Case{swell::GridLayout::Geometric, {-250.3, 4.0, 71.9}, -120.0, -3.0, 2.0},
+                    Case{swell::GridLayout::Geometric, {31.0, 40.0, 7.0}, 10.0, -45.0, 2.0},
                     Case{swell::GridLayout::Paper, {0.0, 6.0, 0.0}, 45.0, -5.0},
                     Case{swell::GridLayout::Paper, {-7.0, 25.0, 3.0}, 200.0, -50.0}),
     [](const testing::TestParamInfo<Case>& view) {

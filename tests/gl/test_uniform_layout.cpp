@@ -42,7 +42,9 @@ void main() {
            + vec4(gridCenter, gridRadius_m, gridCells) + vec4(gridSkirt_m, gridFinestStep_m, gridFadeStart_m, gridFadeEnd_m)
            + vec4(gridInnerScale_m, gridGrowth, reflectionFixedDistance_m, float(worldBoxCount))
            + vec4(viewportSize, viewportInvSize) + vec4(float(passEncodesSrgb), waveHeightDeviation_m, waveMeanSquareSlope, 0.0)
-           + vec4(gridLevels[gl_VertexID].snapOffset_m, gridLevels[gl_VertexID].firstRing, 0.0)
+           + vec4(gridLevels[gl_VertexID].snapOffset_m, gridLevels[gl_VertexID].firstRing, gridMorph)
+           + vec4(gridLevels[gl_VertexID].coarseSnapOffset_m, gridCoarseCenterShift)
+           + vec4(gridLevels[gl_VertexID].coarseFirstRing, gridCoarseGrowth, 0.0, 0.0)
            + vec4(worldBoxes[gl_VertexID].min_m, 0.0) + vec4(worldBoxes[gl_VertexID].max_m, 0.0)
            + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
     gl_Position = s;
@@ -100,7 +102,16 @@ TEST_F(UniformLayout, FrameAndGerstnerBlocksMatchTheirCppMirrors)
     SWELL_EXPECT_OFFSET(F, passEncodesSrgb);
     SWELL_EXPECT_OFFSET(F, waveHeightDeviation_m);
     SWELL_EXPECT_OFFSET(F, waveMeanSquareSlope);
+    SWELL_EXPECT_OFFSET(F, gridMorph);
+    SWELL_EXPECT_OFFSET(F, gridCoarseCenterShift);
+    SWELL_EXPECT_OFFSET(F, gridCoarseGrowth);
     EXPECT_EQ(offsetOf(p.id(), "gridLevels[0].snapOffset_m"), GLint(offsetof(F, gridLevels)));
+    EXPECT_EQ(offsetOf(p.id(), "gridLevels[1].coarseSnapOffset_m"),
+              GLint(offsetof(F, gridLevels) + sizeof(swell::detail::GridLevelUniform) +
+                    offsetof(swell::detail::GridLevelUniform, coarseSnapOffset_m)));
+    EXPECT_EQ(offsetOf(p.id(), "gridLevels[1].coarseFirstRing"),
+              GLint(offsetof(F, gridLevels) + sizeof(swell::detail::GridLevelUniform) +
+                    offsetof(swell::detail::GridLevelUniform, coarseFirstRing)));
     EXPECT_EQ(offsetOf(p.id(), "gridLevels[1].firstRing"),
               GLint(offsetof(F, gridLevels) + sizeof(swell::detail::GridLevelUniform) +
                     offsetof(swell::detail::GridLevelUniform, firstRing)));
