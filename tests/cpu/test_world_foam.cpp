@@ -48,13 +48,6 @@ TEST(WorldFoam, TheLookupReadsEachTexelAtItsCentre)
     }
 }
 
-TEST(WorldFoam, CoarserLevelsAverageSamplesAsCloseAsLevelZerosTexels)
-{
-    EXPECT_EQ(foamSamplesPerSide(0), 1);
-    for (int level = 1; level < kFoamLevels; ++level)
-        EXPECT_LE(std::pow(SWELL_FOAM_LEVEL_RATIO, level) / foamSamplesPerSide(level), 2.0) << "level " << level;
-}
-
 // The threshold is a quantile of the field's Jacobian; at other points and
 // another time, the share of the sea below it must be the share asked for.
 TEST(WorldFoam, TheFoldThresholdMakesFoamOnTheBreakingFraction)

@@ -88,7 +88,6 @@ public:
         centreIndexLocation_ = glGetUniformLocation(foamStep_.id(), "centreIndex");
         centreFractionLocation_ = glGetUniformLocation(foamStep_.id(), "centreFraction");
         texelLocation_ = glGetUniformLocation(foamStep_.id(), "texel_m");
-        samplesLocation_ = glGetUniformLocation(foamStep_.id(), "samplesPerSide");
 
         const int n = kSize;
         auto array = [n](GLenum format, int levels) {
@@ -262,21 +261,18 @@ private:
         std::array<glm::ivec2, kFoamLevels> origin{}, centre{};
         std::array<glm::vec2, kFoamLevels> fraction{};
         std::array<float, kFoamLevels> texel_m{};
-        std::array<int, kFoamLevels> samples{};
         for (int level = 0; level < kFoamLevels; ++level) {
             const FoamWindow& w = windows_[size_t(level)];
             origin[size_t(level)] = w.origin;
             centre[size_t(level)] = w.centreIndex;
             fraction[size_t(level)] = w.centreFraction;
             texel_m[size_t(level)] = float(foamTexel_m(*field_, level));
-            samples[size_t(level)] = foamSamplesPerSide(level);
         }
         glUniform2iv(windowOriginLocation_, kFoamLevels, &origin[0].x);
         glUniform2iv(previousOriginLocation_, kFoamLevels, &previousOrigin_[0].x);
         glUniform2iv(centreIndexLocation_, kFoamLevels, &centre[0].x);
         glUniform2fv(centreFractionLocation_, kFoamLevels, &fraction[0].x);
         glUniform1fv(texelLocation_, kFoamLevels, texel_m.data());
-        glUniform1iv(samplesLocation_, kFoamLevels, samples.data());
         // The cascades, read through the samplers spectral.glsl declares.
         bind();
         glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R16F);
@@ -331,7 +327,7 @@ private:
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
     GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, cascadeWeightLocation_ = -1;
     GLint windowOriginLocation_ = -1, previousOriginLocation_ = -1, centreIndexLocation_ = -1;
-    GLint centreFractionLocation_ = -1, texelLocation_ = -1, samplesLocation_ = -1;
+    GLint centreFractionLocation_ = -1, texelLocation_ = -1;
     gl::Texture initial_, omega_, displacement_, derivatives_, foam_, slopeMoments_;
     gl::Buffer uniforms_;
     bool transformed_ = false;

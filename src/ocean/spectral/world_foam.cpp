@@ -14,13 +14,6 @@ double foamTexel_m(const SpectralField& field, int level)
     return field.cascades[kFoamCascades - 1].patch_m / kSize * std::pow(SWELL_FOAM_LEVEL_RATIO, level);
 }
 
-int foamSamplesPerSide(int level)
-{
-    // Level 0's texels sample cascade 1's shortest wave 8 times a
-    // wavelength; samples two of them apart still do 4 times, unaliased.
-    return std::max(1, int(std::lround(std::pow(SWELL_FOAM_LEVEL_RATIO, level) / 2.0)));
-}
-
 double foamCascadeWeight(int cascade) { return cascade < kFoamCascades ? 1.0 : 0.0; }
 
 namespace {

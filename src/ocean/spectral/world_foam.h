@@ -23,11 +23,6 @@ inline constexpr int kFoamLevels = SWELL_FOAM_LEVELS;
 // each further level's are SWELL_FOAM_LEVEL_RATIO times wider.
 double foamTexel_m(const SpectralField& field, int level);
 
-// How many points a side each texel of a level averages the foam made at:
-// enough that they lie no further apart than level 0's texels, so every
-// level sees cascade 1's folds unaliased.
-int foamSamplesPerSide(int level);
-
 // How much cascade c adds to the Jacobian of a level: 1 for the cascades
 // that break, at every level, so that each level's samples see the same
 // field, with the same statistics, the same threshold and the same
