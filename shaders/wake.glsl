@@ -65,7 +65,10 @@ float wakeFoamAt(vec2 p_m, float cover)
     float period = float(SWELL_WAKE_NOISE_PERIOD);
     float texture = 0.5 * wakeNoise(g, period) + 0.3 * wakeNoise(2.0 * g, 2.0 * period) +
                     0.2 * wakeNoise(4.0 * g, 4.0 * period);
-    return clamp(cover * (1.6 * texture - 0.1), 0.0, 1.0);
+    // As the share of the pixel covered (water.frag's foamCover): the
+    // patches' soft edges made sharp, so thin cover leaves bubbles rather
+    // than a haze over the whole wake.
+    return smoothstep(0.35, 0.65, cover * (1.6 * texture - 0.1));
 }
 
 #endif
