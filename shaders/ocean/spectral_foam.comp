@@ -47,8 +47,9 @@ void main()
         weights[c] = foldWeight[level * SWELL_FFT_CASCADES + c];
     // The texel's centre from the grid centre, m. Coarser levels sample the
     // same field more sparsely (level 1 at two samples to cascade 1's
-    // shortest wave): averaging 2 x 2 samples a texel there cost three
-    // times the whole step on a software rasteriser.
+    // shortest wave): averaging 2 x 2 samples a texel there made the foam
+    // steps of a still's replayed history take 3.4 s instead of about 1 s
+    // on llvmpipe.
     vec2 restOffset_m = (vec2(world - centreIndex[level]) + 0.5 - centreFraction[level]) * texel_m[level];
     float jacobian = foldJacobian(restOffset_m, weights);
     // Full foam at the threshold, fading over foldSoftness above it: the
