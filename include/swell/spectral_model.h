@@ -53,7 +53,7 @@ public:
 
 private:
     SpectralSettings settings_;
-    std::array<float, SWELL_FOAM_LEVELS> foldThresholds_{}; // J below which each foam level makes foam
+    float foldThreshold_ = 0.0f; // J below which foam is made
     std::shared_ptr<const spectral::SpectralField> field_;
     std::unique_ptr<spectral::CpuSurface> cpu_;
     double heightDeviation_m_ = 0.0;

@@ -134,23 +134,22 @@ vec4 bilinearFetch(sampler2DArray field, vec2 s, int cascade)
 
 vec4 bilinearDisplacement(vec2 s, int cascade) { return bilinearFetch(oceanDisplacement, s, cascade); }
 
-// The Jacobian of the horizontal displacement at a rest point, each
-// cascade's gradients weighed: where it falls low, the surface folds and
-// breaks. The CPU twin is swell::spectral::CpuSurface::foldJacobianAt.
-float foldJacobian(vec2 restOffset_m, float weight[SWELL_FFT_CASCADES])
+// The Jacobian of the horizontal displacement of cascades
+// 0..cascadeCount-1 (unfiltered) at a rest point: where it falls low, the
+// surface folds and breaks. The CPU twin is
+// swell::spectral::CpuSurface::foldJacobianAt.
+float foldJacobian(vec2 restOffset_m, int cascadeCount)
 {
     vec2 gradDx = vec2(0.0), gradDz = vec2(0.0); // (d/dx, d/dz) at the rest point
-    for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
-        if (weight[c] <= 0.0)
-            continue;
+    for (int c = 0; c < cascadeCount; ++c) {
         mat2 jacobian;
         vec2 s = warpedTexels(c, restOffset_m, jacobian);
         float dxz = bilinearDisplacement(s, c).w;
         vec4 d = bilinearFetch(oceanDerivatives, s, c);
         vec2 alongDx = vec2(d.z, dxz), alongDz = vec2(dxz, d.w);
         for (int j = 0; j < 2; ++j) {
-            gradDx[j] += weight[c] * dot(alongDx, jacobian[j]);
-            gradDz[j] += weight[c] * dot(alongDz, jacobian[j]);
+            gradDx[j] += dot(alongDx, jacobian[j]);
+            gradDz[j] += dot(alongDz, jacobian[j]);
         }
     }
     return (1.0 + gradDx.x) * (1.0 + gradDz.y) - gradDx.y * gradDz.x;

@@ -20,10 +20,9 @@ layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 4, r16f) uniform image2DArray foam; // 0..1, one layer a level
 
 uniform float decay;         // exp(-dt/tau) since the last step; 0 starts afresh
-uniform float foldThreshold[SWELL_FOAM_LEVELS]; // J below which each level makes foam
+uniform float foldThreshold; // J below which foam is made
 uniform float foldSoftness;  // foam fades out over this much J above the threshold
-// How much each cascade adds to a level's J: the cascades its texels resolve.
-uniform float foldWeight[SWELL_FOAM_LEVELS * SWELL_FFT_CASCADES];
+uniform int foamCascades;    // cascades 0..foamCascades-1 fold into foam, at every level
 uniform ivec2 windowOrigin[SWELL_FOAM_LEVELS];   // world texel index of each window's first texel (x, z)
 uniform ivec2 previousOrigin[SWELL_FOAM_LEVELS]; // ... at the last step
 uniform ivec2 centreIndex[SWELL_FOAM_LEVELS];    // world texel index holding the grid centre
@@ -42,18 +41,15 @@ void main()
     bool kept = all(greaterThanEqual(sinceLast, ivec2(0))) && all(lessThan(sinceLast, ivec2(SWELL_FOAM_SIZE)));
     float old = kept ? imageLoad(foam, p).r * decay : 0.0;
 
-    float weights[SWELL_FFT_CASCADES];
-    for (int c = 0; c < SWELL_FFT_CASCADES; ++c)
-        weights[c] = foldWeight[level * SWELL_FFT_CASCADES + c];
     // The texel's centre from the grid centre, m. Coarser levels sample the
     // same field more sparsely (level 1 at two samples to cascade 1's
     // shortest wave): averaging 2 x 2 samples a texel there made the foam
     // steps of a still's replayed history take 3.4 s instead of about 1 s
     // on llvmpipe.
     vec2 restOffset_m = (vec2(world - centreIndex[level]) + 0.5 - centreFraction[level]) * texel_m[level];
-    float jacobian = foldJacobian(restOffset_m, weights);
+    float jacobian = foldJacobian(restOffset_m, foamCascades);
     // Full foam at the threshold, fading over foldSoftness above it: the
     // cover the calibration counts is where J < threshold.
-    float made = clamp(1.0 - (jacobian - foldThreshold[level]) / foldSoftness, 0.0, 1.0);
+    float made = clamp(1.0 - (jacobian - foldThreshold) / foldSoftness, 0.0, 1.0);
     imageStore(foam, p, vec4(max(old, made)));
 }

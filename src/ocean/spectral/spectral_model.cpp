@@ -67,8 +67,8 @@ constexpr int kLongestFoamShift = kFoamSize / 4;
 class SpectralGpu final : public detail::WaveModelGpu {
 public:
     SpectralGpu(std::shared_ptr<const SpectralField> field, const SpectralSettings& settings,
-                std::array<float, kFoamLevels> foldThresholds, const gl::ShaderSources& shaders)
-        : field_(std::move(field)), settings_(settings), foldThresholds_(foldThresholds)
+                float foldThreshold, const gl::ShaderSources& shaders)
+        : field_(std::move(field)), settings_(settings), foldThreshold_(foldThreshold)
     {
         evolve_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_evolve.comp"}});
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
@@ -82,7 +82,7 @@ public:
         decayLocation_ = glGetUniformLocation(foamStep_.id(), "decay");
         thresholdLocation_ = glGetUniformLocation(foamStep_.id(), "foldThreshold");
         softnessLocation_ = glGetUniformLocation(foamStep_.id(), "foldSoftness");
-        cascadeWeightLocation_ = glGetUniformLocation(foamStep_.id(), "foldWeight");
+        foamCascadesLocation_ = glGetUniformLocation(foamStep_.id(), "foamCascades");
         windowOriginLocation_ = glGetUniformLocation(foamStep_.id(), "windowOrigin");
         previousOriginLocation_ = glGetUniformLocation(foamStep_.id(), "previousOrigin");
         centreIndexLocation_ = glGetUniformLocation(foamStep_.id(), "centreIndex");
@@ -140,8 +140,6 @@ public:
 
     void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override
     {
-        // The uniforms first: the foam step samples the cascades through them.
-        updateUniforms(gridCenter_m);
         bool moved = false, cut = !foamStepped_;
         for (int level = 0; level < kFoamLevels; ++level) {
             windows_[size_t(level)] = foamWindowAt(gridCenter_m, foamTexel_m(*field_, level));
@@ -149,6 +147,8 @@ public:
             moved = moved || shift != glm::ivec2(0);
             cut = cut || std::abs(shift.x) > kLongestFoamShift || std::abs(shift.y) > kLongestFoamShift;
         }
+        // The uniforms before any foam step: it samples the cascades through them.
+        updateUniforms(gridCenter_m);
         if (!transformed_ || time_s != time_s_)
             advance(time_s, cut);
         else if (cut && settings_.foamLifetime_s > 0.0)
@@ -182,10 +182,9 @@ public:
         const double streak = std::clamp((u10 - 10.8) / (17.2 - 10.8), 0.0, 1.0);
         u.foamStreak = float(1.0 + 3.0 * streak * streak * (3.0 - 2.0 * streak));
         u.unresolvedSlopeVariance = float(field_->unresolvedSlopeVariance);
-        for (int level = 0; level < kFoamLevels; ++level) {
-            const double texel_m = foamTexel_m(*field_, level);
-            u.foamLevels[level] = glm::vec4(foamWindowAt(gridCenter_m, texel_m).originTexels, float(1.0 / texel_m), 0.0f);
-        }
+        for (int level = 0; level < kFoamLevels; ++level)
+            u.foamLevels[level] =
+                glm::vec4(windows_[size_t(level)].originTexels, float(1.0 / foamTexel_m(*field_, level)), 0.0f);
         glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
     }
 
@@ -251,13 +250,9 @@ private:
     {
         glUseProgram(foamStep_.id());
         glUniform1f(decayLocation_, decay);
-        glUniform1fv(thresholdLocation_, kFoamLevels, foldThresholds_.data());
+        glUniform1f(thresholdLocation_, foldThreshold_);
         glUniform1f(softnessLocation_, kFoldSoftness);
-        std::array<float, kFoamLevels * kCascades> weights{};
-        for (int level = 0; level < kFoamLevels; ++level)
-            for (int c = 0; c < kCascades; ++c)
-                weights[size_t(level * kCascades + c)] = float(foamCascadeWeight(c));
-        glUniform1fv(cascadeWeightLocation_, GLsizei(weights.size()), weights.data());
+        glUniform1i(foamCascadesLocation_, kFoamCascades);
         std::array<glm::ivec2, kFoamLevels> origin{}, centre{};
         std::array<glm::vec2, kFoamLevels> fraction{};
         std::array<float, kFoamLevels> texel_m{};
@@ -317,7 +312,7 @@ private:
 
     std::shared_ptr<const SpectralField> field_;
     SpectralSettings settings_;
-    std::array<float, kFoamLevels> foldThresholds_;
+    float foldThreshold_;
     // Each foam level's window now, and where it was at the foam's last step.
     std::array<FoamWindow, kFoamLevels> windows_{};
     std::array<glm::ivec2, kFoamLevels> previousOrigin_{};
@@ -325,7 +320,7 @@ private:
     gl::Program evolve_, fftRows_, fftColumns_, foamStep_, moments_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
-    GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, cascadeWeightLocation_ = -1;
+    GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
     GLint windowOriginLocation_ = -1, previousOriginLocation_ = -1, centreIndexLocation_ = -1;
     GLint centreFractionLocation_ = -1, texelLocation_ = -1;
     gl::Texture initial_, omega_, displacement_, derivatives_, foam_, slopeMoments_;
@@ -356,7 +351,7 @@ SpectralModel::SpectralModel(const SpectralSettings& settings)
     heightDeviation_m_ = std::sqrt(variance);
     // The fold threshold from the field itself, at t = 0: its J
     // distribution is stationary, so any time would do.
-    foldThresholds_.fill(foldThresholdFor(*cpu_, *field_, breakingFraction(settings.wind.windSpeed_mps)));
+    foldThreshold_ = foldThresholdFor(*cpu_, *field_, breakingFraction(settings.wind.windSpeed_mps));
 }
 
 SpectralModel::~SpectralModel() = default;
@@ -384,7 +379,7 @@ glm::dvec3 SpectralModel::displacementAt(glm::dvec2 restPoint_m, double time_s, 
 
 std::unique_ptr<detail::WaveModelGpu> SpectralModel::createGpu(const gl::ShaderSources& shaders) const
 {
-    return std::make_unique<SpectralGpu>(field_, settings_, foldThresholds_, shaders);
+    return std::make_unique<SpectralGpu>(field_, settings_, foldThreshold_, shaders);
 }
 
 } // namespace swell

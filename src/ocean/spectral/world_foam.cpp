@@ -14,8 +14,6 @@ double foamTexel_m(const SpectralField& field, int level)
     return field.cascades[kFoamCascades - 1].patch_m / kSize * std::pow(SWELL_FOAM_LEVEL_RATIO, level);
 }
 
-double foamCascadeWeight(int cascade) { return cascade < kFoamCascades ? 1.0 : 0.0; }
-
 namespace {
 
 // An index far beyond int's range still gives the right differences.
@@ -41,7 +39,7 @@ float foldThresholdFor(const CpuSurface& cpu, const SpectralField& field, double
     // A spacing incommensurate with every patch, so no two samples see the
     // same place of a cascade.
     const double spacing_m = 1.37 * field.cascades[0].patch_m / kSamples;
-    const SurfaceFilter filter{}; // every cascade at weight 1, as foamCascadeWeight
+    const SurfaceFilter filter{}; // unfiltered, as the shader's foldJacobian
     std::vector<float> j;
     j.reserve(size_t(kSamples) * kSamples);
     for (int row = 0; row < kSamples; ++row)

@@ -23,13 +23,6 @@ inline constexpr int kFoamLevels = SWELL_FOAM_LEVELS;
 // each further level's are SWELL_FOAM_LEVEL_RATIO times wider.
 double foamTexel_m(const SpectralField& field, int level);
 
-// How much cascade c adds to the Jacobian of a level: 1 for the cascades
-// that break, at every level, so that each level's samples see the same
-// field, with the same statistics, the same threshold and the same
-// persistence (filtering the coarse levels' Jacobian instead would make
-// fewer, larger patches there, and the cover would change with distance).
-double foamCascadeWeight(int cascade);
-
 // Where a level's window lies for a grid centre.
 struct FoamWindow {
     // World texel (x, z) holding the grid centre, modulo 2^32: the shader
@@ -44,7 +37,10 @@ FoamWindow foamWindowAt(glm::dvec2 gridCenter_m, double texel_m);
 // The J below which `fraction` of the surface lies: sampled from the CPU
 // twin at t = 0 (the statistics of J do not change with time) at 256^2
 // points spread over more than the largest patch, at the same warped points
-// and with the same weights as the shader.
+// as the shader. Every level samples the same unfiltered J of cascades
+// 0..kFoamCascades-1, so one threshold serves them all: the same statistics,
+// the same persistence (filtering the coarse level's J instead would make
+// fewer, larger patches there, and the cover would change with distance).
 float foldThresholdFor(const CpuSurface& cpu, const SpectralField& field, double fraction);
 
 } // namespace swell::spectral
