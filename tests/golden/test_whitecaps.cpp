@@ -7,6 +7,7 @@
 // the foam's history, about 30 s on llvmpipe.
 #include "ocean/spectral/spectral_field.h"
 #include "ocean/spectral/whitecaps.h"
+#include "ocean/spectral/world_foam.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "swell/renderer.h"
@@ -131,6 +132,53 @@ TEST_F(Whitecaps, CoverFollowsMonahan)
         EXPECT_LT(cover, expected * c.allowedFactor) << "at " << c.windSpeed_mps << " m/s";
         EXPECT_GT(cover, expected / c.allowedFactor) << "at " << c.windSpeed_mps << " m/s";
     }
+}
+
+// A still shows the foam its history made. A frame that starts a sequence
+// (or jumps in time) replays the foam's history: steps of kFoamReplayStep_s
+// over kFoamReplayLifetimes lifetimes, the steps before the last
+// transforming only the cascades that fold into foam. A sequence of frames
+// on the same steps takes them with every field transformed, after its own
+// first frame's replay: its foam is the still's plus that first frame's
+// foam, decayed over the replayed span (exp(-10 s / 3.85 s) = 0.074 of it at
+// most). So the sequence's view holds the still's foam and little more; a
+// replay that made its foam from other fields than the sequence's would
+// differ from it everywhere.
+TEST_F(Whitecaps, AStillShowsTheFoamItsHistoryMade)
+{
+    Scene scene = foamScene(16.0);
+    // Each pixel's own share: FXAA's blend across edges depends on the
+    // contrast it finds, so it would not keep one view's foam within the other's.
+    scene.antialiasing = Antialiasing::Off;
+    const double lifetime_s = scene.waves.foamLifetime_s;
+    const int steps = int(std::ceil(spectral::kFoamReplayLifetimes * lifetime_s / spectral::kFoamReplayStep_s));
+    const double time_s = 60.0;
+    Renderer still(scene);
+    const std::vector<double> replayed = foamFrom300m(still, scene, 400.0, -300.0, time_s);
+    Renderer sequence(scene);
+    std::vector<double> stepped;
+    for (int i = steps; i >= 0; --i)
+        stepped = foamFrom300m(sequence, scene, 400.0, -300.0, time_s - i * spectral::kFoamReplayStep_s);
+
+    const double carried = std::exp(-steps * spectral::kFoamReplayStep_s / lifetime_s);
+    double replayedMean = 0.0, steppedMean = 0.0, meanDifference = 0.0, largestDeficit = 0.0;
+    for (size_t i = 0; i < replayed.size(); ++i) {
+        replayedMean += replayed[i];
+        steppedMean += stepped[i];
+        meanDifference += std::abs(stepped[i] - replayed[i]);
+        largestDeficit = std::max(largestDeficit, replayed[i] - stepped[i]);
+    }
+    const double n = double(replayed.size());
+    replayedMean /= n;
+    steppedMean /= n;
+    meanDifference /= n;
+    std::printf("foam cover: still %.4f, sequence %.4f; mean |difference| %.4f; the still above the sequence by "
+                "%.4f at most; the sequence's first foam carried: %.3f\n",
+                replayedMean, steppedMean, meanDifference, largestDeficit, carried);
+    ASSERT_GT(replayedMean, 0.005) << "no foam to compare";
+    // One level of the 8-bit sRGB output near the darkest greys.
+    EXPECT_LE(largestDeficit, test::srgbToLinear(1)) << "the still shows foam its history did not make";
+    EXPECT_LE(meanDifference, carried * steppedMean);
 }
 
 // No tiling of the foam (issue 12's criterion for the heightfield, applied

@@ -47,13 +47,6 @@ struct alignas(16) SpectralUniforms {
     glm::vec4 foamLevels[kFoamLevels]; // the grid centre in texels modulo N (x, y), texels per metre
 };
 
-// Foam needs the history of the breaking: a frame that follows the last by
-// more than this, or goes back in time, first replays kWarmUpLifetimes foam
-// lifetimes at kWarmUpStep_s steps, so a still at any time shows the foam a
-// sequence arriving there would (the same for every still at that time).
-constexpr double kLongestStep_s = 1.0;
-constexpr double kWarmUpStep_s = 0.5;
-constexpr double kWarmUpLifetimes = 2.5;
 // Foam fades out over this much J above the threshold, a fifth of the
 // spread of J's lowest percent below its median (about 0.15): the rim of a
 // breaking makes partial foam, which the shading draws as lace, so a
@@ -204,7 +197,7 @@ private:
     {
         const double lifetime = settings_.foamLifetime_s;
         const bool foam = lifetime > 0.0;
-        const bool continues = transformed_ && !cut && time_s >= time_s_ && time_s - time_s_ <= kLongestStep_s;
+        const bool continues = transformed_ && !cut && time_s >= time_s_ && time_s - time_s_ <= kLongestFoamStep_s;
         if (foam && !continues) {
             replayFoam(time_s);
         } else {
@@ -223,11 +216,15 @@ private:
     void replayFoam(double time_s)
     {
         const double lifetime = settings_.foamLifetime_s;
-        const int steps = int(std::ceil(kWarmUpLifetimes * lifetime / kWarmUpStep_s));
-        const float decay = float(std::exp(-kWarmUpStep_s / lifetime));
+        const int steps = int(std::ceil(kFoamReplayLifetimes * lifetime / kFoamReplayStep_s));
+        const float decay = float(std::exp(-kFoamReplayStep_s / lifetime));
         for (int i = steps; i >= 0; --i) {
-            transform(time_s - i * kWarmUpStep_s);
-            stepFoam(i == steps ? 0.0f : decay);
+            // The steps before the last need only what a foam step reads:
+            // the folding cascades' fields, without mipmaps (half the
+            // transforms' work, and most of a replay's time on llvmpipe).
+            const bool last = i == 0;
+            transform(time_s - i * kFoamReplayStep_s, last ? kCascades : kFoamCascades);
+            stepFoam(i == steps ? 0.0f : decay, last);
         }
     }
 
@@ -246,7 +243,9 @@ private:
 
     // One step of the foam in every level's window: decay what was there
     // (what the window still holds), make foam where the surface folds.
-    void stepFoam(float decay)
+    // The mipmaps are for drawing (the far foam's mean); a step reads only
+    // the base level.
+    void stepFoam(float decay, bool mipmaps = true)
     {
         glUseProgram(foamStep_.id());
         glUniform1f(decayLocation_, decay);
@@ -273,14 +272,17 @@ private:
         glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R16F);
         glDispatchCompute(kFoamSize / 16, kFoamSize / 16, kFoamLevels);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        glGenerateTextureMipmap(foam_.id());
+        if (mipmaps)
+            glGenerateTextureMipmap(foam_.id());
         glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R16F);
         glUseProgram(0);
         previousOrigin_ = origin;
         foamStepped_ = true;
     }
 
-    void transform(double time_s)
+    // The fields of cascades 0 .. cascades - 1 at time_s; their derivatives'
+    // mipmaps only when every cascade is transformed (a full frame's fields).
+    void transform(double time_s, int cascades = kCascades)
     {
         glUseProgram(evolve_.id());
         glUniform1d(timeLocation_, time_s);
@@ -293,16 +295,17 @@ private:
         glBindImageTexture(1, omega_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RG32UI);
         glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
         glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-        glDispatchCompute(kSize / 16, kSize / 16, kCascades);
+        glDispatchCompute(kSize / 16, kSize / 16, GLuint(cascades));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        // One workgroup per row (then column) of every cascade.
+        // One workgroup per row (then column) of each cascade.
         glUseProgram(fftRows_.id());
-        glDispatchCompute(kSize, kCascades, 1);
+        glDispatchCompute(kSize, GLuint(cascades), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         glUseProgram(fftColumns_.id());
-        glDispatchCompute(kSize, kCascades, 1);
+        glDispatchCompute(kSize, GLuint(cascades), 1);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        glGenerateTextureMipmap(derivatives_.id());
+        if (cascades == kCascades)
+            glGenerateTextureMipmap(derivatives_.id());
         for (GLuint unit = 0; unit < 4; ++unit)
             glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         glUseProgram(0);

@@ -18,6 +18,15 @@ namespace swell::spectral {
 inline constexpr int kFoamSize = SWELL_FOAM_SIZE;
 inline constexpr int kFoamLevels = SWELL_FOAM_LEVELS;
 
+// Foam needs the history of the breaking: a frame that follows the last by
+// more than kLongestFoamStep_s, or goes back in time, first replays
+// kFoamReplayLifetimes foam lifetimes at kFoamReplayStep_s steps, so a still
+// at any time shows the foam a sequence arriving there would (the same for
+// every still at that time).
+inline constexpr double kLongestFoamStep_s = 1.0;
+inline constexpr double kFoamReplayStep_s = 0.5;
+inline constexpr double kFoamReplayLifetimes = 2.5;
+
 // A level's texel, m: level 0's are those of the finest cascade that folds
 // into foam (kFoamCascades), so the foam is as sharp as the folds it marks;
 // each further level's are SWELL_FOAM_LEVEL_RATIO times wider.
