@@ -83,8 +83,14 @@ void main()
         butterfly(a0, b0, a2, b2, m, 2 * span);
         butterfly(a1, b1, a3, b3, m + span, 2 * span);
         // The groups part the samples: no other invocation reads these four.
-        bufferA[p0] = a0, bufferA[p1] = a1, bufferA[p2] = a2, bufferA[p3] = a3;
-        bufferB[p0] = b0, bufferB[p1] = b1, bufferB[p2] = b2, bufferB[p3] = b3;
+        bufferA[p0] = a0;
+        bufferA[p1] = a1;
+        bufferA[p2] = a2;
+        bufferA[p3] = a3;
+        bufferB[p0] = b0;
+        bufferB[p1] = b1;
+        bufferB[p2] = b2;
+        bufferB[p3] = b3;
         barrier();
     }
     for (int i = t; i < SWELL_FFT_SIZE; i += SWELL_FFT_QUARTER) {
