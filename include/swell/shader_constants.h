@@ -21,8 +21,9 @@
 
 // The spectral model (src/ocean/spectral/): cascades of SWELL_FFT_SIZE^2
 // samples, each a periodic patch of its own size. 256 resolves a patch's
-// waves down to 4 texels per wavelength with a 256-thread workgroup per row
-// of the FFT; 4 cascades span 1 km down to about 5 cm.
+// waves down to 4 texels per wavelength with one 64-thread workgroup per
+// line of the FFT (spectral_fft.comp takes its stages two at a time, so the
+// size is a power of 4); 4 cascades span 1 km down to about 5 cm.
 #define SWELL_FFT_SIZE 256
 #define SWELL_FFT_LOG2_SIZE 8
 #define SWELL_FFT_CASCADES 4
