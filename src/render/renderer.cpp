@@ -83,6 +83,15 @@ struct Renderer::Impl {
 
     const WaveModel& model() const { return overrideModel ? *overrideModel : *sceneModel; }
 
+    // How far this frame's surface can move from rest: the model's reach,
+    // and the wake's height above it (wakeReach_m, set by prepareFrame).
+    WaveReach frameReach() const
+    {
+        WaveReach reach = model().reach();
+        reach.vertical_m += wakeReach_m;
+        return reach;
+    }
+
     // The bodies' wake at time_s (null when the scene has none), stepping
     // the bodies there: it depends on time_s alone.
     std::shared_ptr<const WakeFrame> wakeAt(double time_s) const
@@ -131,7 +140,6 @@ struct Renderer::Impl {
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
         f.waveHeightDeviation_m = float(model().heightDeviation_m());
-        WaveReach reach = model().reach();
         f.waveMeanSquareSlope = float(seaMeanSquareSlope);
         // Bodies step on the CPU to this frame's time: fixed steps, so the
         // poses depend on time_s alone, never on the frames before. Their
@@ -157,7 +165,7 @@ struct Renderer::Impl {
         if (wake)
             for (const glm::vec4& texel : wake->texels)
                 wakeReach_m = std::max(wakeReach_m, double(std::abs(texel.x)));
-        reach.vertical_m += wakeReach_m;
+        const WaveReach reach = frameReach();
         notify(false, "wake");
         posesOrigin = origin;
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
@@ -357,9 +365,7 @@ struct Renderer::Impl {
         bindFrame(PassMain, f);
         // The waterline mask is drawn at the main pass's size, so the main
         // pass (multisampled or not) reads it on the same pixel grid.
-        WaveReach reach = model().reach();
-        reach.vertical_m += wakeReach_m;
-        const NearPlaneMedium medium = nearPlaneMedium(camera, double(size.x) / double(size.y), reach);
+        const NearPlaneMedium medium = nearPlaneMedium(camera, double(size.x) / double(size.y), frameReach());
         drawWaterline(medium, size);
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.texture());
         passInAir = medium == NearPlaneMedium::Air;
