@@ -106,19 +106,21 @@ const tinygltf::Accessor& GltfLoader::accessorAt(int index, const std::string& s
 }
 
 // Reads accessor `index`, used as `semantic`, whose component type must be
-// in `componentTypes` and element type in `types`. Read converts one
-// component. Sparse substitutions are applied.
+// in `componentTypes` and element type in `types`, with at most
+// `maxElements` elements (kMaxVertices for attributes, kMaxIndices for
+// indices). Read converts one component. Sparse substitutions are applied.
 template <class T, class Read>
-GltfLoader::Values<T> GltfLoader::readAccessor(int index, const std::string& semantic, std::initializer_list<int> componentTypes,
-                       std::initializer_list<int> types, const char* expected, Read read) const
+GltfLoader::Values<T> GltfLoader::readAccessor(int index, const std::string& semantic, std::size_t maxElements,
+                                               std::initializer_list<int> componentTypes,
+                                               std::initializer_list<int> types, const char* expected, Read read) const
 {
     const tinygltf::Accessor& a = accessorAt(index, semantic);
     const std::string user = fmt::format("accessor {} ({})", index, semantic);
     if (std::find(componentTypes.begin(), componentTypes.end(), a.componentType) == componentTypes.end() ||
         std::find(types.begin(), types.end(), a.type) == types.end())
         fail(fmt::format("{} must be {}", user, expected));
-    if (a.count > kMaxVertices)
-        fail(fmt::format("{} has {} elements, more than the limit of {}", user, a.count, kMaxVertices));
+    if (a.count > maxElements)
+        fail(fmt::format("{} has {} elements, more than the limit of {}", user, a.count, maxElements));
     const int components = a.type == TINYGLTF_TYPE_SCALAR ? 1 : a.type; // VEC2..VEC4 are 2..4
     const std::size_t size = componentSize(a.componentType);
     const std::size_t elementSize = size * std::size_t(components);
@@ -165,11 +167,11 @@ GltfLoader::Values<float> GltfLoader::readFloats(int index, const std::string& s
                          std::initializer_list<int> types, const char* expected) const
 {
     Values<float> v = allowNormalized
-                          ? readAccessor<float>(index, semantic,
+                          ? readAccessor<float>(index, semantic, kMaxVertices,
                                                 {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
                                                 types, expected, readFloat)
-                          : readAccessor<float>(index, semantic, {TINYGLTF_COMPONENT_TYPE_FLOAT}, types, expected,
+                          : readAccessor<float>(index, semantic, kMaxVertices, {TINYGLTF_COMPONENT_TYPE_FLOAT}, types, expected,
                                                 readFloat);
     for (std::size_t i = 0; i < v.data.size(); ++i)
         if (!std::isfinite(v.data[i]))
@@ -180,7 +182,7 @@ GltfLoader::Values<float> GltfLoader::readFloats(int index, const std::string& s
 
 GltfLoader::Values<std::uint32_t> GltfLoader::readIndices(int index, const std::string& semantic) const
 {
-    return readAccessor<std::uint32_t>(index, semantic,
+    return readAccessor<std::uint32_t>(index, semantic, kMaxIndices,
                                        {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
                                        {TINYGLTF_TYPE_SCALAR}, "SCALAR unsigned byte, short or int", readIndex);

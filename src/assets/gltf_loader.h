@@ -150,7 +150,8 @@ private:
     static std::uint32_t readIndex(const unsigned char* p, int type);
     const tinygltf::Accessor& accessorAt(int index, const std::string& semantic) const;
     template <class T, class Read>
-    Values<T> readAccessor(int index, const std::string& semantic, std::initializer_list<int> componentTypes,
+    Values<T> readAccessor(int index, const std::string& semantic, std::size_t maxElements,
+                           std::initializer_list<int> componentTypes,
                            std::initializer_list<int> types, const char* expected, Read read) const;
     Values<float> readFloats(int index, const std::string& semantic, bool allowNormalized,
                              std::initializer_list<int> types, const char* expected) const;

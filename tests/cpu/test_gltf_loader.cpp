@@ -551,6 +551,26 @@ TEST(GltfLoader, RejectsAbsurdCounts)
     expectError(writeGltf("too_many_vertices.gltf", m), "model has 2400000 vertices, more than the limit of 2000000");
 }
 
+// docs/SCENE.md allows 6,000,000 indices a model: one index accessor may
+// hold them all (it was once capped at the 2,000,000 vertices' limit), and
+// one more is refused.
+TEST(GltfLoader, AcceptsTheDocumentedIndexCountInOneAccessor)
+{
+    // The triangle, its three indices repeated as 32-bit: 24 MB in a .glb.
+    auto model = [](std::uint32_t count) {
+        Model m = triangle();
+        m.bin.resize(36);
+        for (std::uint32_t i = 0; i < count; ++i)
+            append<std::uint32_t>(m.bin, {i % 3});
+        m.doc["bufferViews"][1] = {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 4 * std::size_t(count)}};
+        m.doc["accessors"][1] = {{"bufferView", 1}, {"componentType", 5125}, {"count", count}, {"type", "SCALAR"}};
+        return m;
+    };
+    const MeshData mesh = loadGltf(writeGlb("six_million_indices.glb", model(6000000)));
+    EXPECT_EQ(mesh.indices.size(), 6000000u);
+    expectError(writeGlb("too_many_indices.glb", model(6000003)), "more than the limit of 6000000");
+}
+
 TEST(GltfLoader, RejectsBadBuffers)
 {
     Model m = triangle();
