@@ -31,6 +31,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace swell {
 
@@ -131,6 +132,14 @@ SWELL_API const Parameter* findParameter(std::string_view key);
 // The TOML key of an array of tables: "waves.list", "objects", "camera.path";
 // "" for ParameterList::None.
 SWELL_API std::string_view listKey(ParameterList list);
+
+// Every table that holds parameters of `list`, each once, in the table's
+// order: for None "waves", "waves.wind", "waves.swell", "grid", ... "wake",
+// "camera" (a table holding only other tables counts too); for an array of
+// tables, the tables inside its items (none today). Scene files read exactly
+// these as tables, and saveScene() writes them, so a parameter added to the
+// table is read and written with no second list to update.
+SWELL_API std::vector<std::string> parameterTables(ParameterList list);
 
 // How many items the scene has in that list (1 for ParameterList::None).
 SWELL_API std::size_t listSize(const Scene& scene, ParameterList list);

@@ -111,6 +111,25 @@ std::string_view listKey(ParameterList list)
     return "";
 }
 
+std::vector<std::string> parameterTables(ParameterList list)
+{
+    std::vector<std::string> tables;
+    const std::string_view item = listKey(list);
+    const std::size_t from = item.empty() ? 0 : item.size() + 1; // past "objects."
+    for (const Parameter& p : parameters()) {
+        if (p.list != list)
+            continue;
+        // Every proper prefix that ends before a dot: "waves" and "waves.wind"
+        // for "waves.wind.speed_mps".
+        for (std::size_t dot = p.key.find('.', from); dot != std::string_view::npos; dot = p.key.find('.', dot + 1)) {
+            std::string table(p.key.substr(0, dot));
+            if (std::find(tables.begin(), tables.end(), table) == tables.end())
+                tables.push_back(std::move(table));
+        }
+    }
+    return tables;
+}
+
 std::size_t listSize(const Scene& scene, ParameterList list)
 {
     switch (list) {

@@ -20,7 +20,10 @@ namespace {
 // ---------------------------------------------------------------------------
 // Step 3: reading the TOML tree into a Scene.
 
-// Keys that are not parameters: tables, arrays of tables and strings.
+// Keys that are not parameters: arrays of tables and strings. The plain
+// tables ([waves], [wake], ...) are not listed here: the parameter table says
+// which they are (parameterTables), so a table added there is read without a
+// second list to keep in step.
 enum class Shape { Table, TableList, Faces, ObjectPath, HullNode };
 
 struct StructuralKey {
@@ -30,30 +33,24 @@ struct StructuralKey {
 };
 
 constexpr StructuralKey kStructure[] = {
-    {"waves", Shape::Table, ParameterList::None},
-    {"waves.wind", Shape::Table, ParameterList::None},
-    {"waves.swell", Shape::Table, ParameterList::None},
     {"waves.list", Shape::TableList, ParameterList::None},
-    {"grid", Shape::Table, ParameterList::None},
-    {"sun", Shape::Table, ParameterList::None},
-    {"sky", Shape::Table, ParameterList::None},
     {"sky.faces", Shape::Faces, ParameterList::None},
-    {"fog", Shape::Table, ParameterList::None},
-    {"water", Shape::Table, ParameterList::None},
-    {"reflection", Shape::Table, ParameterList::None},
     {"objects", Shape::TableList, ParameterList::None},
     {"objects.path", Shape::ObjectPath, ParameterList::Objects},
     {"objects.hull_node", Shape::HullNode, ParameterList::Objects},
-    {"camera", Shape::Table, ParameterList::None},
     {"camera.path", Shape::TableList, ParameterList::None},
 };
 
-const StructuralKey* findStructural(std::string_view key, ParameterList list)
+// The shape of a key that is not a parameter, or nothing when it is unknown.
+std::optional<Shape> shapeOf(std::string_view key, ParameterList list)
 {
     for (const StructuralKey& s : kStructure)
         if (s.key == key && s.list == list)
-            return &s;
-    return nullptr;
+            return s.shape;
+    const std::vector<std::string> tables = parameterTables(list);
+    if (std::find(tables.begin(), tables.end(), key) != tables.end())
+        return Shape::Table;
+    return std::nullopt;
 }
 
 const Parameter* findParameterIn(std::string_view key, ParameterList list)
@@ -164,10 +161,10 @@ private:
                 readParameter(*p, *node, childShown, item);
                 continue;
             }
-            const StructuralKey* s = findStructural(childSchema, list);
-            if (s == nullptr)
+            const std::optional<Shape> shape = shapeOf(childSchema, list);
+            if (!shape)
                 unknownKey(*k, childSchema, shown, list);
-            switch (s->shape) {
+            switch (*shape) {
             case Shape::Table:
                 if (!node->is_table())
                     fail(places_.of(node->source()), fmt::format("{} must be a table, not {}", childShown, typeName(*node)));
@@ -237,6 +234,8 @@ private:
         for (const StructuralKey& s : kStructure)
             if (s.list == list)
                 consider(s.key);
+        for (const std::string& table : parameterTables(list))
+            consider(table);
 
         std::string shown = join(shownPrefix, key.str());
         std::string message = fmt::format("unknown key '{}'", shortText(shown));

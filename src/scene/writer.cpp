@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <string>
 #include <string_view>
 
 namespace swell {
@@ -87,7 +88,11 @@ std::string saveScene(const Scene& scene)
         }
     }
 
-    for (std::string_view table : {"grid", "sun", "sky", "fog", "water", "reflection"}) {
+    // The other tables in the parameter table's order; the waves above and the
+    // camera below (its path follows it) are written by hand.
+    for (const std::string& table : parameterTables(ParameterList::None)) {
+        if (table == "camera" || table == "waves" || table.starts_with("waves."))
+            continue;
         out += fmt::format("\n[{}]\n", table);
         if (table == "sky" && !scene.sky.cubemapFaces.empty()) {
             std::string faces = "[";
