@@ -336,7 +336,8 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t i) -> auto& { return s.objects[i].inertia_kg_m2; },
            {.key = "objects.inertia_kg_m2", .kind = K::Vector3, .list = L::Objects, .unit = "kg*m^2", .min = 0.0,
             .max = 1.0e15, .sliderMin = 0.0, .sliderMax = 1.0e6,
-            .description = "rigid body: principal moments about the centre of mass, model axes; [0, 0, 0]: from the mesh"}),
+            .description = "rigid body: principal moments about the centre of mass, model axes: all three > 0, or "
+                           "[0, 0, 0]: from the mesh"}),
         at([](auto& s, std::size_t i) -> auto& { return s.objects[i].velocity_m_per_s; },
            {.key = "objects.velocity_m_per_s", .kind = K::Vector3, .list = L::Objects, .unit = "m/s", .min = -100.0,
             .max = 100.0, .sliderMin = -20.0, .sliderMax = 20.0,

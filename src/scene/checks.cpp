@@ -65,20 +65,24 @@ void checkFile(const fs::path& base, const fs::path& resolved, const std::string
     }
 }
 
-// A floating rigid body's keys agree: it floats, gives its mass one way, and
-// its inertia is a solid's. (Its other keys mean nothing for other objects
-// and are left as they are, like every key a scene does not use.)
+// A floating object's body keys agree: it gives its mass one way, and its
+// inertia is a solid's. On an object that does not float they mean nothing
+// (docs/SCENE.md) and are left as they are, like every key a scene does not
+// use, so a viewer can turn floats on and off without losing them.
 void checkBody(const SceneObject& o, std::size_t i, const Places& places)
 {
     const std::string item = fmt::format("objects[{}]", i);
+    if (!o.hullNode.empty() && o.path.starts_with(kBuiltinObjectPrefix))
+        fail(places.first({item + ".hull_node", item}),
+             fmt::format("{}.hull_node names a node of a glTF file; the built-in '{}' brings its own hull", item,
+                         o.path));
+    if (!o.floats)
+        return;
     if (o.mass_kg > 0.0 && o.density_kg_per_m3 > 0.0)
         fail(places.first({item + ".density_kg_per_m3", item + ".mass_kg", item}),
              fmt::format("{} gives both mass_kg ({} kg) and density_kg_per_m3 ({} kg/m^3); give one, the other "
                          "follows from the model's volume",
                          item, o.mass_kg, o.density_kg_per_m3));
-    if ((o.mass_kg > 0.0 || o.density_kg_per_m3 > 0.0) && !o.floats)
-        fail(places.first({item + ".floats", item + ".mass_kg", item + ".density_kg_per_m3", item}),
-             fmt::format("{} has a mass but does not float; set floats = true to make it a floating rigid body", item));
     const glm::dvec3 I = o.inertia_kg_m2;
     const bool given = I.x > 0.0 || I.y > 0.0 || I.z > 0.0;
     if (given && !(I.x > 0.0 && I.y > 0.0 && I.z > 0.0))
@@ -91,10 +95,6 @@ void checkBody(const SceneObject& o, std::size_t i, const Places& places)
              fmt::format("{}.inertia_kg_m2 = [{}, {}, {}] is no solid's: each principal moment must be at most the "
                          "sum of the other two",
                          item, I.x, I.y, I.z));
-    if (!o.hullNode.empty() && o.path.starts_with(kBuiltinObjectPrefix))
-        fail(places.first({item + ".hull_node", item}),
-             fmt::format("{}.hull_node names a node of a glTF file; the built-in '{}' brings its own hull", item,
-                         o.path));
 }
 
 void checkObjectPath(const fs::path& base, const fs::path& resolved, const std::string& path, const std::string& name,
