@@ -12,6 +12,7 @@
 // its limits.
 #pragma once
 
+#include "swell/error.h"
 #include "swell/export.h"
 #include "swell/wave_model.h"
 
@@ -22,6 +23,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace swell {
@@ -44,6 +46,26 @@ inline constexpr int kBodyStepsPerWaterSample = 4;
 // 1020..1030 at 35 PSU and 0..25 degC).
 inline constexpr double kSeaWaterDensity_kg_per_m3 = 1025.0;
 
+// The largest omega * kBodyStep_s (rad a step) of a body's fastest
+// oscillation, heave or heel: semi-implicit Euler is stable for an undamped
+// oscillator up to omega dt = 2 (Hairer, Lubich & Wanner 2006, ch. I.1), and
+// a body's stiffness, measured upright at load, grows as it heels and dips
+// in the waves, so half that is allowed: periods down to 2 pi steps (52 ms).
+inline constexpr double kMaxBodyOmegaStep = 1.0;
+
+// A body that cannot float, or whose motion the fixed step cannot follow
+// (too light for its size, or too little inertia for its stiffness). Says
+// which setting to change, so a scene names the key.
+class SWELL_API BodyError : public InputError {
+public:
+    enum class Setting { Shape, Mass, Inertia };
+    BodyError(Setting setting, const std::string& message) : InputError({}, message), setting_(setting) {}
+    Setting setting() const { return setting_; }
+
+private:
+    Setting setting_;
+};
+
 // A closed triangle mesh in the body's own frame, m, triangles wound
 // counter-clockwise seen from outside.
 struct SWELL_API BodyShape {
@@ -60,7 +82,8 @@ struct SWELL_API MassProperties {
 
 // Volume, centroid and inertia of a closed mesh (Blow & Binstock 2004).
 // Throws swell::InputError when the mesh is not closed (an edge not shared by
-// exactly two triangles, vertices compared by position) or encloses no volume.
+// exactly two triangles, vertices compared by position), is wound inside out
+// (its triangles facing inwards), or encloses no volume.
 SWELL_API MassProperties massPropertiesOf(const BodyShape& shape);
 
 // How a body is built: its mass and how it turns. Zero inertia means the
@@ -94,7 +117,10 @@ public:
     // Builds the body at rest on `surface` at t = 0 (heave equilibrium with
     // its yaw, then raised by start.origin_m.y). `surface` must outlive the
     // body; `filter` picks the surface the water is drawn with. Throws
-    // swell::InputError when the shape is not closed, or the body would sink.
+    // swell::InputError when the shape is not closed or wound inside out,
+    // and BodyError when the body would sink or oscillate faster than the
+    // steps can follow (kMaxBodyOmegaStep). step() throws swell::Error
+    // should its state still stop being finite, before the state is used.
     FloatingBody(const BodyShape& shape, const BodySettings& settings, const BodyStart& start,
                  const WaveModel& surface, const SurfaceFilter& filter = {});
     ~FloatingBody();
@@ -137,7 +163,7 @@ private:
     std::vector<std::uint32_t> indices_;
     double reach_m_ = 0.0;             // farthest point from the centre of mass
     double mass_kg_ = 0.0, volume_m3_ = 0.0, waterDensity_ = 0.0;
-    glm::dmat3 inertiaBody_{1.0}, inverseInertiaBody_{1.0};
+    glm::dmat3 inertiaBody_{1.0};
     glm::dvec3 centerOfMassInShape_m_{0.0};
     double heaveDamping_ = 0.0;
     glm::dvec3 rotationDamping_{0.0}; // about body axes, N m s

@@ -130,8 +130,9 @@ MeshData makeBuiltinModel(const std::string& name)
             return (y > 0.9f && y < 1.5f) || y > 2.05f ? glm::vec3(0.9f, 0.9f, 0.85f) : glm::vec3(0.75f, 0.06f, 0.04f);
         });
     } else if (name == "rock") {
-        // A weathered boulder, 6 m across: a lumpy dome that stands in the water.
-        std::vector<glm::vec2> profile;
+        // A weathered boulder, 6 m across: a lumpy dome that stands in the
+        // water, closed underneath so that it is a solid (a body's shape).
+        std::vector<glm::vec2> profile{{0.0f, -4.0f}};
         for (int i = 0; i <= 10; ++i) {
             const float t = float(i) / 10.0f;
             profile.push_back({3.0f * std::sqrt(std::max(0.0f, 1.0f - t * t)) + 0.01f, -4.0f + 7.0f * t});

@@ -4,8 +4,10 @@
 // at the start of the step, then positions from the new velocities; it keeps
 // an undamped oscillator's energy bounded, where explicit Euler would pump it
 // up (Hairer, Lubich & Wanner 2006, Geometric Numerical Integration, ch. I.1).
-// Rotation follows Euler's equations, I dw/dt = tau - w x I w, in the world
-// frame, and dq/dt = 1/2 (0, w) q for the orientation.
+// Rotation follows Euler's equations, I dw/dt = tau - w x I w, in the body
+// frame, with the gyroscopic and damping torques at the step's end (see
+// step()), and dq/dt = 1/2 (0, w) q for the orientation. The damping of heave
+// is taken at the step's end too, so no damping however strong can overshoot.
 //
 // Damping is linear in the velocity relative to the water, b = 2 kappa
 // sqrt(m c) for each degree of freedom with restoring stiffness c: the
@@ -23,11 +25,13 @@
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace swell {
 
@@ -54,6 +58,94 @@ constexpr double kPatchMarginOfReach = 0.25;
 // to stay in the linear range of any body that floats upright.
 constexpr double kStiffnessTilt_rad = 0.01;
 
+// The orientations a body's check visits: each of these directions of the
+// body's own frame pointing up (the faces, edges and corners of a cube), so
+// that every axis of the body, its least inertia's included, lies
+// horizontal in some of them, as it does once a body tumbles.
+std::vector<glm::dquat> checkedOrientations()
+{
+    // The shortest rotation taking unit vector `from` to unit vector `to`.
+    auto turning = [](glm::dvec3 from, glm::dvec3 to) {
+        const double c = glm::dot(from, to);
+        if (c < -1.0 + 1e-12) // opposite: half a turn about any perpendicular axis
+            return glm::angleAxis(glm::pi<double>(), glm::dvec3(1.0, 0.0, 0.0));
+        return glm::angleAxis(std::acos(std::min(c, 1.0)), c > 1.0 - 1e-12 ? glm::dvec3(1.0, 0.0, 0.0)
+                                                                          : glm::normalize(glm::cross(from, to)));
+    };
+    std::vector<glm::dquat> orientations;
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            for (int z = -1; z <= 1; ++z)
+                if (x != 0 || y != 0 || z != 0)
+                    orientations.push_back(turning(glm::normalize(glm::dvec3(x, y, z)), glm::dvec3(0.0, 1.0, 0.0)));
+    return orientations;
+}
+
+// Throws BodyError when the body's fastest oscillation, in heave or in heel,
+// is faster than the steps can follow (kMaxBodyOmegaStep): a hull of cubic
+// metres weighing a gram would otherwise gain energy every step until its
+// state overflowed. The stiffness is measured in every checked orientation
+// at drafts from the body clear of the water to the body under it (the
+// waterplane, and so the stiffness, is largest at some draft and
+// orientation, rarely the rest's), the heel about four horizontal axes
+// against the inertia about each. loadAt(y, q) is the hydrostatic load with
+// the centre of mass at height y and the orientation q.
+template <class LoadAt>
+void checkStepFollows(LoadAt loadAt, double waterHere_m, double reach_m, double mass_kg, double volume_m3,
+                      const glm::dmat3& inertiaBody_kg_m2)
+{
+    const double omegaMax_rad_per_s = kMaxBodyOmegaStep / kBodyStep_s;
+    const double limit = omegaMax_rad_per_s * omegaMax_rad_per_s;
+    const double shortestPeriod_s = 2.0 * glm::pi<double>() / omegaMax_rad_per_s;
+    auto period_s = [](double inertia, double stiffness) { return 2.0 * glm::pi<double>() * std::sqrt(inertia / stiffness); };
+    constexpr int kDrafts = 8;
+    const double h_m = 2.0 * reach_m / kDrafts;
+    const std::vector<glm::dquat> orientations = checkedOrientations();
+    double heave_N_per_m = 0.0;
+    for (const glm::dquat& q : orientations)
+        for (int i = 0; i < kDrafts; ++i) {
+            const double y = waterHere_m - reach_m + (i + 0.5) * h_m;
+            heave_N_per_m =
+                std::max(heave_N_per_m, (loadAt(y - 0.5 * h_m, q).force_N.y - loadAt(y + 0.5 * h_m, q).force_N.y) / h_m);
+        }
+    const double minimumMass_kg = heave_N_per_m / limit;
+    if (mass_kg < minimumMass_kg)
+        throw BodyError(BodyError::Setting::Mass,
+                        fmt::format("too light for the fixed step of 1/{} s: the water's stiffness of {:.4g} N/m would "
+                                    "heave {:.4g} kg with a period of {:.3g} s, and the steps follow periods down to "
+                                    "{:.3g} s; it needs at least {:.4g} kg ({:.4g} kg/m^3 over its {:.4g} m^3)",
+                                    kBodyStepsPerSecond, heave_N_per_m, mass_kg, period_s(mass_kg, heave_N_per_m),
+                                    shortestPeriod_s, minimumMass_kg, minimumMass_kg / volume_m3, volume_m3));
+
+    for (const glm::dquat& q : orientations) {
+        const glm::dmat3 R = glm::mat3_cast(q);
+        const glm::dmat3 inertiaWorld = R * inertiaBody_kg_m2 * glm::transpose(R);
+        for (int i = 0; i < kDrafts; ++i) {
+            const double y = waterHere_m - reach_m + (i + 0.5) * h_m;
+            // Heel: about horizontal axes only (the pressure's forces are
+            // vertical, so they never turn a body about the vertical).
+            for (const glm::dvec3& axis : {glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 0.0, 1.0),
+                                           glm::normalize(glm::dvec3(1.0, 0.0, 1.0)),
+                                           glm::normalize(glm::dvec3(1.0, 0.0, -1.0))}) {
+                const double inertia = glm::dot(axis, inertiaWorld * axis);
+                const glm::dquat tilt = glm::angleAxis(kStiffnessTilt_rad, axis);
+                const double plus = glm::dot(loadAt(y, tilt * q).torque_N_m, axis);
+                const double minus = glm::dot(loadAt(y, glm::inverse(tilt) * q).torque_N_m, axis);
+                const double heel_N_m_per_rad = std::abs(minus - plus) / (2.0 * kStiffnessTilt_rad);
+                if (heel_N_m_per_rad > inertia * limit)
+                    throw BodyError(
+                        BodyError::Setting::Inertia,
+                        fmt::format("too little inertia for the fixed step of 1/{} s: heeled in the water, it meets a "
+                                    "stiffness of {:.4g} N m/rad that would turn its {:.4g} kg m^2 about that axis "
+                                    "with a period of {:.3g} s, and the steps follow periods down to {:.3g} s; it "
+                                    "needs at least {:.4g} kg m^2 about each axis (more mass, or its mass further out)",
+                                    kBodyStepsPerSecond, heel_N_m_per_rad, inertia, period_s(inertia, heel_N_m_per_rad),
+                                    shortestPeriod_s, heel_N_m_per_rad / limit));
+            }
+        }
+    }
+}
+
 } // namespace
 
 FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings, const BodyStart& start,
@@ -66,10 +158,12 @@ FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings,
     mass_kg_ = settings.mass_kg;
     volume_m3_ = props.volume_m3;
     waterDensity_ = settings.waterDensity_kg_per_m3;
-    if (mass_kg_ >= waterDensity_ * volume_m3_)
-        throw InputError({}, fmt::format("a body of {:.6g} kg and {:.6g} m^3 sinks: the water it can displace "
-                                         "weighs {:.6g} kg",
-                                         mass_kg_, volume_m3_, waterDensity_ * volume_m3_));
+    // As heavy as the water it displaces, it floats awash (BODIES.md); heavier, it sinks.
+    if (mass_kg_ > waterDensity_ * volume_m3_)
+        throw BodyError(BodyError::Setting::Mass,
+                        fmt::format("a body of {:.6g} kg and {:.6g} m^3 sinks: the water it can displace weighs "
+                                    "{:.6g} kg",
+                                    mass_kg_, volume_m3_, waterDensity_ * volume_m3_));
     centerOfMassInShape_m_ = props.centroid_m + settings.centerOfMassOffset_m;
 
     // The inertia: given principal moments, or the mesh's at this mass
@@ -83,22 +177,14 @@ FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings,
         inertiaBody_ = density * props.inertiaAboutCentroid_kg_m2 +
                        mass_kg_ * (glm::dot(o, o) * glm::dmat3(1.0) - glm::outerProduct(o, o));
     }
-    inverseInertiaBody_ = glm::inverse(inertiaBody_);
 
-    // The shape about its centre of mass, wound outwards.
+    // The shape about its centre of mass.
     points_m_.reserve(shape.positions_m.size());
     for (const glm::dvec3& p : shape.positions_m) {
         points_m_.push_back(p - centerOfMassInShape_m_);
         reach_m_ = std::max(reach_m_, glm::length(points_m_.back()));
     }
-    indices_ = shape.indices;
-    double signedVolume = 0.0;
-    for (std::size_t t = 0; t < indices_.size(); t += 3)
-        signedVolume += glm::dot(shape.positions_m[indices_[t]],
-                                 glm::cross(shape.positions_m[indices_[t + 1]], shape.positions_m[indices_[t + 2]]));
-    if (signedVolume < 0.0)
-        for (std::size_t t = 0; t < indices_.size(); t += 3)
-            std::swap(indices_[t + 1], indices_[t + 2]);
+    indices_ = shape.indices; // wound outwards: massPropertiesOf() refuses a shape wound inside out
 
     // At rest at t = 0: the heave that balances the weight, found by
     // bisection (the buoyancy only grows as the body goes down).
@@ -140,6 +226,8 @@ FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings,
     }
     // Yaw has no hydrostatic stiffness; it is damped like roll and pitch on average.
     rotationDamping_.y = 0.5 * (rotationDamping_.x + rotationDamping_.z);
+
+    checkStepFollows(loadAt, waterHere, reach_m_, mass_kg_, volume_m3_, inertiaBody_);
 
     initial_.step = 0;
     initial_.centerOfMass_m = {com0.x, restY + start.origin_m.y, com0.z};
@@ -211,22 +299,49 @@ void FloatingBody::step()
 
     BodyState n = s;
     n.step = s.step + 1;
-    const double heaveForce_N = load.force_N.y - mass_kg_ * kGravity -
-                                wetted * heaveDamping_ * (s.heaveVelocity_m_per_s - waterHeave_m_per_s);
-    n.heaveVelocity_m_per_s = s.heaveVelocity_m_per_s + heaveForce_N / mass_kg_ * kBodyStep_s;
+    // The damping at the step's end velocity (implicit): stable however
+    // large the damping is against the mass or inertia (the yaw's, borrowed
+    // from roll and pitch, can be far larger than a slender body's yaw
+    // inertia), where the damping at the start's velocity would overshoot.
+    const double heaveDamping_N_s_per_m = wetted * heaveDamping_;
+    n.heaveVelocity_m_per_s =
+        (s.heaveVelocity_m_per_s +
+         (load.force_N.y - mass_kg_ * kGravity + heaveDamping_N_s_per_m * waterHeave_m_per_s) / mass_kg_ * kBodyStep_s) /
+        (1.0 + heaveDamping_N_s_per_m / mass_kg_ * kBodyStep_s);
     n.centerOfMass_m.y = s.centerOfMass_m.y + n.heaveVelocity_m_per_s * kBodyStep_s;
     const glm::dvec2 carried = carriedAt(n.step);
     n.centerOfMass_m.x = carried.x;
     n.centerOfMass_m.z = carried.y;
 
-    const glm::dvec3 w = s.angularVelocity_rad_per_s;
-    const glm::dvec3 dampingTorque = R * (rotationDamping_ * (glm::transpose(R) * w));
-    const glm::dvec3 torque = load.torque_N_m - wetted * dampingTorque;
-    const glm::dmat3 inertia = R * inertiaBody_ * glm::transpose(R);
-    const glm::dmat3 inverseInertia = R * inverseInertiaBody_ * glm::transpose(R);
-    n.angularVelocity_rad_per_s = w + inverseInertia * (torque - glm::cross(w, inertia * w)) * kBodyStep_s;
+    // Euler's equations in the body frame, I dw/dt = tau - w x I w - D w,
+    // with the gyroscopic and damping torques taken at the step's end:
+    // f(w1) = I (w1 - w) + dt (w1 x I w1 + D w1 - tau) = 0, solved by one
+    // Newton step from w (Catto 2015, "Numerical Methods", GDC physics
+    // tutorial: implicit gyroscopic torque). Taken at the step's start,
+    // they add energy to a body whose moments differ by orders of magnitude
+    // (a centre of mass far off a small hull) until it spins without bound.
+    const glm::dmat3 Rt = glm::transpose(R);
+    const glm::dvec3 wBody = Rt * s.angularVelocity_rad_per_s;
+    const glm::dvec3 torqueBody = Rt * load.torque_N_m;
+    const glm::dmat3 damping(wetted * rotationDamping_.x, 0.0, 0.0, 0.0, wetted * rotationDamping_.y, 0.0, 0.0, 0.0,
+                             wetted * rotationDamping_.z);
+    auto skew = [](glm::dvec3 v) { return glm::dmat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0); };
+    const glm::dvec3 residual =
+        kBodyStep_s * (glm::cross(wBody, inertiaBody_ * wBody) + damping * wBody - torqueBody);
+    const glm::dmat3 jacobian =
+        inertiaBody_ + kBodyStep_s * (skew(wBody) * inertiaBody_ - skew(inertiaBody_ * wBody) + damping);
+    n.angularVelocity_rad_per_s = R * (wBody - glm::inverse(jacobian) * residual);
     const glm::dvec3 w1 = n.angularVelocity_rad_per_s;
     n.orientation = glm::normalize(s.orientation + 0.5 * kBodyStep_s * (glm::dquat(0.0, w1) * s.orientation));
+    // The boundary: a state that is not finite never reaches the water's
+    // lookup (where a NaN would become an index) or a frame.
+    const double numbers[] = {n.heaveVelocity_m_per_s,      n.centerOfMass_m.y,           n.angularVelocity_rad_per_s.x,
+                              n.angularVelocity_rad_per_s.y, n.angularVelocity_rad_per_s.z, n.orientation.w,
+                              n.orientation.x,               n.orientation.y,               n.orientation.z};
+    const bool finite = std::all_of(std::begin(numbers), std::end(numbers), [](double x) { return std::isfinite(x); });
+    if (!finite)
+        throw Error(fmt::format("a floating body of {:.6g} kg: its state stopped being finite at t = {:.6g} s", mass_kg_,
+                                double(n.step) * kBodyStep_s));
 
     previous_ = s;
     next_ = n;

@@ -114,12 +114,14 @@ MassProperties massPropertiesOf(const BodyShape& shape)
         moment += det / 6.0 * (a + b + c) / 4.0;
         covariance += det * A * canonical * glm::transpose(A);
     }
-    // A surface wound inside out encloses a negative volume: the same body.
-    if (volume < 0.0) {
-        volume = -volume;
-        moment = -moment;
-        covariance = -covariance;
-    }
+    // A surface wound inside out encloses a negative volume. Its faces point
+    // into the body: drawn, it shows its inside and is lit from within, so
+    // it is refused rather than turned silently (docs/BODIES.md).
+    if (volume < -1e-12 && std::isfinite(volume))
+        throw InputError({}, fmt::format("the body's mesh is wound inside out: its triangles face inwards (it "
+                                         "encloses {:.6g} m^3); reverse their winding (counter-clockwise seen from "
+                                         "outside, as glTF's front faces are)",
+                                         volume));
     if (!(volume > 1e-12) || !std::isfinite(volume))
         throw InputError({}, fmt::format("the body's mesh encloses no volume ({} m^3)", volume));
     MassProperties m;

@@ -90,11 +90,24 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
             }
             footprints_.back() = {0.5 * (hi.x - lo.x), 0.5 * (hi.y - lo.y), settings.mass_kg / settings.waterDensity_kg_per_m3};
         } catch (const InputError& e) {
+            // The key to change: the mass the object gave, or its inertia;
+            // the shape's problems are its path's.
+            std::string setting;
+            if (const auto* body = dynamic_cast<const BodyError*>(&e)) {
+                if (body->setting() == BodyError::Setting::Mass)
+                    setting = o.mass_kg > 0.0 ? fmt::format(".mass_kg = {}", o.mass_kg)
+                                              : fmt::format(".density_kg_per_m3 = {}", o.density_kg_per_m3);
+                else if (body->setting() == BodyError::Setting::Inertia)
+                    setting = o.inertia_kg_m2 != glm::dvec3(0.0)
+                                  ? fmt::format(".inertia_kg_m2 = [{}, {}, {}]", o.inertia_kg_m2.x, o.inertia_kg_m2.y,
+                                                o.inertia_kg_m2.z)
+                                  : ".inertia_kg_m2 (from the mesh, at its mass and centre of mass)";
+            }
             const std::string key = fmt::format("objects[{}].path", i);
             for (const AssetReference& r : scene.assetReferences)
                 if (r.key == key)
-                    throw InputError(r.place, fmt::format("objects[{}] ({}): {}", i, o.path, e.message()));
-            throw InputError({o.path}, fmt::format("objects[{}]: {}", i, e.message()));
+                    throw InputError(r.place, fmt::format("objects[{}]{} ({}): {}", i, setting, o.path, e.message()));
+            throw InputError({o.path}, fmt::format("objects[{}]{}: {}", i, setting, e.message()));
         }
     }
 }
