@@ -2,6 +2,7 @@
 // a hand list) in its documented place, in each form TOML allows: [table]
 // sections, inline tables and dotted keys. A table the reader forgets (as it
 // once forgot [wake]) fails here the day a parameter is added to it.
+#include "swell/camera.h"
 #include "swell/error.h"
 #include "swell/parameters.h"
 #include "swell/scene.h"
@@ -9,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -328,4 +331,41 @@ TEST(SceneEveryKey, EachKeySetsItsOwnField)
             ADD_FAILURE() << p.key << " = " << formatValue(p, value) << ": " << e.what();
         }
     }
+}
+
+// docs/SCENE.md's sun from an elevation e and an azimuth a:
+// [sin(a) cos(e), sin(e), -cos(a) cos(e)], the direction a camera with that
+// heading and pitch looks along (so the conventions of the two agree).
+TEST(SceneEveryKey, TheDocsSunFormulaIsWhereACameraWithThatHeadingLooks)
+{
+    for (double a : {-170.0, -5.7, 0.0, 30.0, 90.0, 200.0})
+        for (double e : {0.0, 4.0, 45.0, 80.0}) {
+            Camera camera;
+            camera.yaw_deg = a;
+            camera.pitch_deg = e;
+            const double ar = glm::radians(a), er = glm::radians(e);
+            const glm::dvec3 documented(std::sin(ar) * std::cos(er), std::sin(er), -std::cos(ar) * std::cos(er));
+            EXPECT_LT(glm::length(camera.forward() - documented), 1e-12) << a << " " << e;
+        }
+}
+
+// The presets the intro of docs/SCENE.md names are those in scenes/, and its
+// list of debug views is the parameter table's.
+TEST(SceneEveryKey, TheDocsNameEveryPresetAndEveryDebugView)
+{
+    std::ifstream in(fs::path(SWELL_SOURCE_DIR) / "docs" / "SCENE.md");
+    const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string intro = doc.substr(0, doc.find("```"));
+    for (const auto& entry : fs::directory_iterator(fs::path(SWELL_SOURCE_DIR) / "scenes"))
+        if (entry.path().extension() == ".toml") {
+            EXPECT_NE(intro.find("`" + entry.path().stem().string() + "`"), std::string::npos)
+                << "docs/SCENE.md's intro does not name the preset " << entry.path().stem();
+        }
+    const Parameter* debugView = findParameter("debug_view");
+    ASSERT_NE(debugView, nullptr);
+    const std::string topLevel = doc.substr(doc.find("### Top level"));
+    const std::string prose = topLevel.substr(0, topLevel.find("\n## "));
+    for (std::string_view choice : debugView->choices)
+        EXPECT_NE(prose.find(fmt::format("`\"{}\"`", choice)), std::string::npos)
+            << "docs/SCENE.md's Top level section does not list debug_view = \"" << choice << "\"";
 }

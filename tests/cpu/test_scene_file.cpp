@@ -390,6 +390,24 @@ std::string_view lastPart(std::string_view key)
     return dot == std::string_view::npos ? key : key.substr(dot + 1);
 }
 
+// The keys that are strings, not parameters, as the reference lists them
+// after the parameters (the reader's own list is src/scene/reader.cpp's).
+struct StringKey {
+    const char* table;
+    const char* key;
+    const char* range;
+    const char* defaultValue;
+    const char* description;
+};
+constexpr StringKey kStringKeys[] = {
+    {"`[sky]`", "faces", "6 image paths (+x, -x, +y, -y, +z, -z), or none", "`[]`",
+     "a cubemap sky instead of the procedural one"},
+    {"`[[objects]]`", "path", "a .gltf or .glb file, or \"builtin:buoy\", \"builtin:boat\" or \"builtin:rock\"",
+     "required", "the object's model, relative to the scene file's folder"},
+    {"`[[objects]]`", "hull_node", "a node name of the glTF file", "`\"\"`",
+     "the node whose mesh is the closed hull volume: kept dry, and the body's shape"},
+};
+
 // The parameter reference of docs/SCENE.md, written from the table.
 std::string parameterReference()
 {
@@ -397,6 +415,8 @@ std::string parameterReference()
     for (const Parameter& p : parameters())
         out += fmt::format("| {} | `{}` | {} | `{}` | {} |\n", tableHeading(p), lastPart(p.key), rangeText(p),
                            formatValue(p, p.defaultValue), p.description);
+    for (const StringKey& k : kStringKeys)
+        out += fmt::format("| {} | `{}` | {} | {} | {} |\n", k.table, k.key, k.range, k.defaultValue, k.description);
     return out;
 }
 
@@ -457,7 +477,7 @@ std::vector<Malformed> malformedCases()
     return {
         // TOML syntax, reported where the parser stopped
         {"SyntaxMissingValue", "[fog]\nstart_m = \n", 2, 11, "TOML syntax"},
-        {"SyntaxUnterminatedString", "[[objects]]\npath = \"builtin:buoy\n", 2, 21, "TOML syntax"},
+        {"SyntaxUnterminatedString", "[[objects]]\npath = \"builtin:buoy\n", 2, 8, "TOML syntax: this string has no closing \""},
         {"SyntaxDuplicateKey", "[fog]\nstart_m = 1.0\nstart_m = 2.0\n", 3, 11, "start_m"},
         {"SyntaxDuplicateTable", "[fog]\nstart_m = 1.0\n[fog]\n", 3, 1, "fog"},
         {"InvalidUtf8", "[fog]\nstart_m = 1.0 # caf\xe9\n", 2, 20, "byte 0xE9 is not UTF-8"},
