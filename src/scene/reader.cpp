@@ -240,6 +240,26 @@ private:
         std::string shown = join(shownPrefix, key.str());
         std::string message = fmt::format("unknown key '{}'", shortText(shown));
         std::optional<std::string> guess = closest(schema, schemaNames);
+        std::string unitHint;
+        if (!guess) {
+            // The right name in another unit ("direction_rad" for
+            // "direction_deg"): the one key of the table whose name is the
+            // same up to its unit suffix.
+            const std::string_view last = key.str();
+            if (const std::size_t underscore = last.rfind('_'); underscore != std::string_view::npos && underscore > 0) {
+                const std::string stem =
+                    schema.substr(0, schema.size() - last.size()) + std::string(last.substr(0, underscore + 1));
+                std::vector<std::string> sameStem;
+                for (const std::string& n : schemaNames)
+                    if (n.starts_with(stem) && n.find('.', stem.size()) == std::string::npos)
+                        sameStem.push_back(n);
+                if (sameStem.size() == 1) {
+                    guess = sameStem.front();
+                    if (const Parameter* p = findParameterIn(*guess, list); p != nullptr && !p->unit.empty())
+                        unitHint = fmt::format(", in {}", p->unit);
+                }
+            }
+        }
         if (!guess) {
             // A known key in the wrong table: the same last part, exactly one owner.
             std::string_view last = key.str();
@@ -252,7 +272,7 @@ private:
         }
         if (guess) {
             auto at = std::find(schemaNames.begin(), schemaNames.end(), *guess) - schemaNames.begin();
-            message += fmt::format("; did you mean '{}'?", shownNames[static_cast<std::size_t>(at)]);
+            message += fmt::format("; did you mean '{}'{}?", shownNames[static_cast<std::size_t>(at)], unitHint);
         } else if (const std::size_t dot = shown.rfind('.'); dot != std::string::npos && isTopLevelKey(key.str())) {
             // In TOML a key belongs to the last [table] above it, so a
             // top-level key written after one lands in that table.

@@ -52,6 +52,15 @@ Scene parseScene(std::string_view text, const fs::path& virtualPath)
             fail(*open, fmt::format("TOML syntax: this array has no closing ']' (the parser read on into line {} "
                                     "and stopped there: {})",
                                     e.source().begin.line, e.description()));
+        // A string that runs into the end of its line: its closing quote is
+        // missing (the parser calls the line break a control character).
+        const bool controlInString = e.description().find("control character") != std::string_view::npos;
+        if (const std::optional<OpenString> string =
+                controlInString ? unclosedStringOn(text, int(e.source().begin.line), places.path()) : std::nullopt)
+            fail(string->opening, fmt::format("TOML syntax: this string has no closing {0} before the end of its line "
+                                              "(a {0}...{0} string ends on the line it starts; write {0}{0}{0} for one "
+                                              "that spans lines)",
+                                              string->quote));
         fail(places.of(e.source()), fmt::format("TOML syntax: {}", e.description()));
     }
 

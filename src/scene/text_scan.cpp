@@ -332,4 +332,36 @@ std::optional<SourcePlace> unclosedArrayBefore(std::string_view text, int errorL
 }
 
 
+std::optional<OpenString> unclosedStringOn(std::string_view text, int errorLine, const std::string& path)
+{
+    // The error line's text.
+    std::size_t start = 0;
+    for (int line = 1; line < errorLine; ++line) {
+        start = text.find('\n', start);
+        if (start == std::string_view::npos)
+            return std::nullopt;
+        ++start;
+    }
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos)
+        end = text.size();
+    const std::string_view line = text.substr(start, end - start);
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (c == '#')
+            return std::nullopt;
+        if (c != '"' && c != '\'')
+            continue;
+        if (line.substr(i, 3) == std::string_view(c == '"' ? "\"\"\"" : "'''"))
+            return std::nullopt; // a multi-line string: left to the parser
+        std::size_t j = i + 1;
+        while (j < line.size() && line[j] != c && line[j] != '\r')
+            j += (line[j] == '\\' && c == '"') ? 2 : 1;
+        if (j >= line.size() || line[j] == '\r')
+            return OpenString{{path, errorLine, int(i) + 1}, c};
+        i = j;
+    }
+    return std::nullopt;
+}
+
 } // namespace swell::detail::scenefile

@@ -25,4 +25,16 @@ void scanSceneText(std::string_view text, const std::string& path);
 std::optional<SourcePlace> unclosedArrayBefore(std::string_view text, int errorLine, int errorColumn,
                                                const std::string& path);
 
+// A one-line string whose closing quote is missing runs into the end of its
+// line, which the TOML parser reports as a control character inside the
+// string. When line `errorLine` ends inside a basic ("...") or literal
+// ('...') string, this is the place of that string's opening quote, and
+// the quote itself; nullopt otherwise. Comments and closed strings before
+// it on the line are skipped; multi-line strings are not looked into.
+struct OpenString {
+    SourcePlace opening;
+    char quote;
+};
+std::optional<OpenString> unclosedStringOn(std::string_view text, int errorLine, const std::string& path);
+
 } // namespace swell::detail::scenefile

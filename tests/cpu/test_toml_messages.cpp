@@ -61,4 +61,33 @@ TEST(TomlMessages, MissingCommaInAOneElementALineArrayStaysWhereTheParserStopped
     EXPECT_EQ(e.message().find("no closing"), std::string::npos) << e.message();
 }
 
+// A string whose closing quote is missing runs into the line's end, which
+// the parser calls an unescaped control character: say that the quote is
+// missing, at the opening quote.
+TEST(TomlMessages, AStringWithoutItsClosingQuoteIsReportedAtItsOpeningQuote)
+{
+    const swell::InputError e = errorOf("[[objects]]\npath = \"builtin:boat\nfloats = true\n");
+    EXPECT_EQ(e.place().line, 2) << e.what();
+    EXPECT_EQ(e.place().column, 8) << e.what();
+    EXPECT_NE(e.message().find("no closing \" before the end of its line"), std::string::npos) << e.message();
+    EXPECT_EQ(e.message().find("control character"), std::string::npos) << e.message();
+
+    // A closed string and a quote in a comment before it do not count.
+    const swell::InputError literal = errorOf("[[objects]]\npath = 'a' # \"\nhull_node = 'Hull\n");
+    EXPECT_EQ(literal.place().line, 3) << literal.what();
+    EXPECT_EQ(literal.place().column, 13) << literal.what();
+    EXPECT_NE(literal.message().find("no closing '"), std::string::npos) << literal.message();
+}
+
+// The right name in another unit is suggested, with the unit the key takes,
+// though it is further than a typo from what was written.
+TEST(TomlMessages, AKeyInAnotherUnitSuggestsTheKeyAndItsUnit)
+{
+    const swell::InputError e = errorOf("[waves.wind]\ndirection_rad = 1.2\n");
+    EXPECT_NE(e.message().find("did you mean 'waves.wind.direction_deg', in deg?"), std::string::npos) << e.message();
+    const swell::InputError inItem = errorOf("[[camera.path]]\nyaw_rad = 1.2\n");
+    EXPECT_NE(inItem.message().find("did you mean 'camera.path[0].yaw_deg', in deg?"), std::string::npos)
+        << inItem.message();
+}
+
 } // namespace
