@@ -51,6 +51,7 @@ Outcome simulate(const SceneObject& object, double duration_s, bool wake = false
     Scene scene;
     scene.objects = {object};
     scene.wake.enabled = wake;
+    scene.wake.cells = 64; // a quarter of the default's side: the same waves near the body, at a 16th of the cost
     const detail::MeshData shape = shapeOf(object.path);
     Outcome outcome;
     try {
