@@ -17,6 +17,11 @@ struct SWELL_API Camera {
     double pitch_deg = 0.0;                // degrees, -89..89
     double fovY_deg = 60.0;                // vertical field of view, degrees
     double near_m = 0.1, far_m = 20000.0;  // clip planes, m
+    // About the view direction, degrees, -180..180: + banks the camera to
+    // the right (its up turns towards its right), so the horizon in the
+    // image turns counter-clockwise. A camera on a rolling deck. (Last, so
+    // that aggregate initialisers written before it still compile.)
+    double roll_deg = 0.0;
 
     glm::dvec3 forward() const;
     // View matrix for positions relative to `origin_m` (the render origin).

@@ -149,6 +149,7 @@ struct SWELL_API CameraKey {
     glm::dvec3 position_m{0.0};   // world position, m
     double yaw_deg = 0.0;         // heading, degrees from -z towards +x
     double pitch_deg = 0.0;       // up/down, degrees, -89..89
+    double roll_deg = 0.0;        // about the view direction, degrees, -180..180 (swell/camera.h)
 };
 
 struct SWELL_API CameraSettings {
@@ -159,6 +160,7 @@ struct SWELL_API CameraSettings {
     double near_m = 0.1;                   // near plane, m, > 0
     double far_m = 20000.0;                // far plane, m, > near
     std::vector<CameraKey> path;           // optional: keys sorted by time, interpolated linearly
+    double roll_deg = 0.0;                 // about the view direction, degrees, -180..180 (swell/camera.h)
 };
 
 // Where a scene file named a file the renderer reads (a model or a sky

@@ -16,7 +16,13 @@ glm::dvec3 Camera::forward() const
 glm::dmat4 Camera::viewRelativeTo(glm::dvec3 origin_m) const
 {
     const glm::dvec3 eye = position_m - origin_m;
-    return glm::lookAt(eye, eye + forward(), glm::dvec3(0.0, 1.0, 0.0));
+    // Up turned about the view direction by the roll (Rodrigues' rotation:
+    // v cos r + (f x v) sin r + f (f . v)(1 - cos r)); exactly +y at roll 0.
+    const glm::dvec3 f = forward(), worldUp(0.0, 1.0, 0.0);
+    const double r = glm::radians(roll_deg);
+    const glm::dvec3 up =
+        worldUp * std::cos(r) + glm::cross(f, worldUp) * std::sin(r) + f * glm::dot(f, worldUp) * (1.0 - std::cos(r));
+    return glm::lookAt(eye, eye + f, up);
 }
 
 glm::dmat4 Camera::projection(double aspect) const
@@ -30,6 +36,7 @@ Camera cameraAt(const CameraSettings& s, double time_s)
     c.position_m = s.position_m;
     c.yaw_deg = s.yaw_deg;
     c.pitch_deg = s.pitch_deg;
+    c.roll_deg = s.roll_deg;
     c.fovY_deg = s.fovY_deg;
     c.near_m = s.near_m;
     c.far_m = s.far_m;
@@ -40,6 +47,7 @@ Camera cameraAt(const CameraSettings& s, double time_s)
         c.position_m = k.position_m;
         c.yaw_deg = k.yaw_deg;
         c.pitch_deg = k.pitch_deg;
+        c.roll_deg = k.roll_deg;
     };
     if (time_s <= path.front().time_s) {
         apply(path.front());
@@ -57,6 +65,7 @@ Camera cameraAt(const CameraSettings& s, double time_s)
     c.position_m = glm::mix(a.position_m, b.position_m, f);
     c.yaw_deg = a.yaw_deg + (b.yaw_deg - a.yaw_deg) * f;
     c.pitch_deg = a.pitch_deg + (b.pitch_deg - a.pitch_deg) * f;
+    c.roll_deg = a.roll_deg + (b.roll_deg - a.roll_deg) * f;
     return c;
 }
 
