@@ -61,6 +61,8 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     float gridMorph;        // geometric layout: 0..1, how far vertices have slid toward the next coarser scale
     vec2 gridCoarseCenterShift; // the next coarser scale's grid centre relative to gridCenter, m
     float gridCoarseGrowth; // geometric layout: the next coarser scale's growth (its inner scale is twice this one's)
+    float waveReachVertical_m; // the surface (waves and wake) stays within +- this of the mean level this frame, m
+    int eyeUnderwater;      // 1 when the eye is below the surface under it (the refraction pass's choice), else 0
     GridLevel gridLevels[SWELL_GRID_LEVELS];
     WorldBox worldBoxes[SWELL_MAX_WORLD_BOXES];
 };

@@ -33,14 +33,33 @@ vec3 pixelViewDirection()
 
 // Whether this pixel's ray starts (at the near plane) below the water.
 // Mask values: SWELL_WATERLINE_ABOVE or _BELOW where the ray meets the
-// surface; SWELL_WATERLINE_NO_HIT where it never does within the far plane,
-// so its whole drawn length lies in one medium: under the water when its
-// far end lies below the mean level (a ray from the air that far down would
-// have met the water). Not merely when it points down: a ray from the air
-// just below the horizon meets the water only beyond the far plane, and was
-// drawn as a dark line along the horizon. Passes other than the main one
-// bind a 1x1 mask cleared to "above", so the coordinate is clamped into the
-// texture.
+// surface; SWELL_WATERLINE_NO_HIT where it meets no drawn water, so its whole
+// drawn length lies in one medium. That length ends at the far plane or where
+// the ray leaves the water grid's square skirt, whichever comes first: the
+// skirt lies at 0.9 far_m along its axes, so towards the image's borders the
+// far plane reaches past it (noDrawnWaterEnd). Where that end lies below every
+// trough (waveReachVertical_m under the mean level) the ray is under the
+// water, above every crest it is in the air, and within the waves' band the
+// end says nothing (a ray from the air passes over a trough below the mean
+// level; one from below under a crest above it): the ray then lies on the
+// eye's side. Judged by its end against the mean level alone, a ray from the
+// air that sank below it beyond the skirt, or over a trough at a near far
+// plane, was drawn in the depths' colour: a dark line along the horizon.
+// Passes other than the main one bind a 1x1 mask cleared to "above", so the
+// coordinate is clamped into the texture.
+vec3 noDrawnWaterEnd(vec3 start, vec3 end)
+{
+    // The segment's parameter where it leaves the square |x|, |z| <= skirt
+    // around the grid's centre (the start lies inside it, near the eye).
+    vec2 from = start.xz - gridCenter;
+    vec2 along = end.xz - start.xz;
+    float t = 1.0;
+    for (int axis = 0; axis < 2; ++axis)
+        if (abs(along[axis]) > 1e-6)
+            t = min(t, (sign(along[axis]) * gridSkirt_m - from[axis]) / along[axis]);
+    return mix(start, end, clamp(t, 0.0, 1.0));
+}
+
 bool pixelUnderwater()
 {
 #if !SWELL_SEEN_FROM_BELOW
@@ -53,8 +72,14 @@ bool pixelUnderwater()
     if (m > 0.25)
         return false;
     vec2 ndc = gl_FragCoord.xy * viewportInvSize * 2.0 - 1.0;
-    vec4 end = passInvViewProj * vec4(ndc, 1.0, 1.0);
-    return end.y / end.w < 0.0;
+    vec4 near = passInvViewProj * vec4(ndc, -1.0, 1.0);
+    vec4 far = passInvViewProj * vec4(ndc, 1.0, 1.0);
+    float endY = noDrawnWaterEnd(near.xyz / near.w, far.xyz / far.w).y;
+    if (endY < -waveReachVertical_m)
+        return true;
+    if (endY > waveReachVertical_m)
+        return false;
+    return eyeUnderwater != 0;
 #endif
 }
 

@@ -68,6 +68,8 @@ struct alignas(16) FrameUniforms {
     float gridMorph;
     glm::vec2 gridCoarseCenterShift;
     float gridCoarseGrowth;
+    float waveReachVertical_m;
+    int eyeUnderwater;
     GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
     WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
 };

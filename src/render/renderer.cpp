@@ -167,6 +167,11 @@ struct Renderer::Impl {
                 wakeReach_m = std::max(wakeReach_m, double(std::abs(texel.x)));
         const WaveReach reach = frameReach();
         notify(false, "wake");
+        // What the waterline mask's rays that meet no water are judged by
+        // (shaders/underwater.glsl): the band the surface stays in, and the
+        // eye's own side of it.
+        f.waveReachVertical_m = float(reach.vertical_m);
+        f.eyeUnderwater = eyeUnderwater(camera, model(), time_s) ? 1 : 0;
         posesOrigin = origin;
         f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
         waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));

@@ -2,6 +2,7 @@
 // finite differences, the inverse (heightAt) against round trips, phase
 // precision far from the origin, the fold limit, validation, and WaveSampler
 // against the exact double evaluation.
+#include "support/param_names.h"
 #include "swell/spectrum.h"
 #include "swell/waves.h"
 
@@ -683,10 +684,7 @@ TEST_P(WaveSamplerAgreement, BatchOfAnySizeMatchesSingleQueries)
 
 INSTANTIATE_TEST_SUITE_P(Simd, WaveSamplerAgreement,
                          ::testing::Values(swell::WaveSampler::Simd::Auto, swell::WaveSampler::Simd::Baseline),
-                         [](const auto& param) {
-                             return param.param == swell::WaveSampler::Simd::Auto ? std::string("Auto")
-                                                                                 : std::string("Baseline");
-                         });
+                         [](const auto& param) { return swell::paramName(param.param); });
 
 TEST(WaveSampler, ReportsThePathItUses)
 {

@@ -2,6 +2,7 @@
 // those: every triangle the GPU would place even partly inside the view
 // frustum is among the triangles drawn, for both layouts and many cameras.
 #include "support/gl_test.h"
+#include "support/param_names.h"
 #include "swell/renderer.h"
 
 #include <epoxy/gl.h>
@@ -12,7 +13,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <ostream>
 #include <set>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -25,6 +28,35 @@ struct Case {
     // in the bounds. A calm sea leaves the bounds little margin beyond the grid's own.
     double windSpeed_mps = 20.0;
 };
+
+// A number in a test name: digits and letters only ("m" for minus, "p" for
+// the point), e.g. -250.3 -> "m250p3".
+std::string nameNumber(double x)
+{
+    std::ostringstream text;
+    text << x;
+    std::string s;
+    for (char c : text.str())
+        if (c != '+')
+            s += c == '-' ? 'm' : c == '.' ? 'p' : c;
+    return s;
+}
+
+// What the name (caseName) leaves out, the camera's place: GetParam() is
+// otherwise the struct's bytes, its padding included, which differ from
+// build to build.
+void PrintTo(const Case& c, std::ostream* os)
+{
+    *os << "camera at (" << c.position_m.x << ", " << c.position_m.y << ", " << c.position_m.z << ") m";
+}
+
+// The test's name: layout, camera height, yaw, pitch and wind (every case
+// differs in one of them), e.g. Geometric_H6_Yaw0_Pitchm5_Wind20.
+std::string caseName(const Case& c)
+{
+    return swell::paramName(c.layout) + "_H" + nameNumber(c.position_m.y) + "_Yaw" + nameNumber(c.yaw_deg) + "_Pitch" +
+           nameNumber(c.pitch_deg) + "_Wind" + nameNumber(c.windSpeed_mps);
+}
 
 class GridCulling : public swell::test::GlTest, public testing::WithParamInterface<Case> {};
 
@@ -114,8 +146,6 @@ INSTANTIATE_TEST_SUITE_P(
                     Case{swell::GridLayout::Geometric, {31.0, 40.0, 7.0}, 10.0, -45.0, 2.0},
                     Case{swell::GridLayout::Paper, {0.0, 6.0, 0.0}, 45.0, -5.0},
                     Case{swell::GridLayout::Paper, {-7.0, 25.0, 3.0}, 200.0, -50.0}),
-    [](const testing::TestParamInfo<Case>& view) {
-        return (view.param.layout == swell::GridLayout::Paper ? "Paper" : "Geometric") + std::to_string(view.index);
-    });
+    [](const testing::TestParamInfo<Case>& view) { return caseName(view.param); });
 
 } // namespace

@@ -2,6 +2,7 @@
 // smaller than the finest cell leaves every vertex where it was, and after any
 // move every vertex sits on a world-fixed lattice point of its LOD level.
 #include "support/gl_test.h"
+#include "support/param_names.h"
 #include "swell/grid.h"
 #include "swell/renderer.h"
 #include "wave_capture.h"
@@ -88,8 +89,6 @@ TEST_P(NoSwimming, EveryVertexSitsOnItsLevelsWorldFixedLattice)
 }
 
 INSTANTIATE_TEST_SUITE_P(Layouts, NoSwimming, testing::Values(swell::GridLayout::Geometric, swell::GridLayout::Paper),
-                         [](const testing::TestParamInfo<swell::GridLayout>& layout) {
-                             return layout.param == swell::GridLayout::Paper ? "Paper" : "Geometric";
-                         });
+                         [](const testing::TestParamInfo<swell::GridLayout>& layout) { return swell::paramName(layout.param); });
 
 } // namespace

@@ -5,6 +5,7 @@
 #include "support/camera_rays.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
+#include "support/param_names.h"
 #include "support/gltf_writer.h"
 #include "support/stage.h"
 #include "swell/flat_model.h"
@@ -437,8 +438,6 @@ TEST_F(ReflectionRayMarch, EveryReflectedPixelHasAFacetThatSendsItsRayToTheBox)
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, Reflection, ::testing::Values(swell::ReflectionMode::FixedDistance, swell::ReflectionMode::RayMarch),
-                         [](const ::testing::TestParamInfo<swell::ReflectionMode>& param) {
-                             return param.param == swell::ReflectionMode::FixedDistance ? std::string("Fixed") : std::string("RayMarch");
-                         });
+                         [](const ::testing::TestParamInfo<swell::ReflectionMode>& param) { return swell::paramName(param.param); });
 
 } // namespace
