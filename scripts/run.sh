@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# The README's first command: installs what is missing, builds, and runs the
-# default scene: a window when a display is usable, otherwise a headless render
-# to swell-default.png, whose path it prints. Arguments go to the swell executable.
-# It builds everything (tests and benchmarks too), in the same configuration as
-# scripts/test.sh, so that neither script leaves the other's programs stale.
+# The README's first command: installs what is missing, builds the swell
+# executable (only it: the tests and benchmarks wait for scripts/test.sh),
+# and runs the default scene: a window when a display is usable, otherwise a
+# headless render to swell-default.png. swell says which path it took, and
+# the render's path. Arguments go to the swell executable.
+# The build uses scripts/build.sh's one configuration, which scripts/test.sh
+# shares, so that neither script leaves the other's programs stale.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+build=${SWELL_BUILD_DIR:-$root/build}
 "$root/scripts/install-deps.sh"
-"$root/scripts/build.sh"
-exec "${SWELL_BUILD_DIR:-$root/build}/apps/swell/swell" "$@"
+echo "swell: building the swell executable into $build (the tests are built by scripts/test.sh)" >&2
+SWELL_BUILD_TARGETS=swell_app "$root/scripts/build.sh"
+exec "$build/apps/swell/swell" "$@"

@@ -112,6 +112,14 @@ bool softwareRasterizer(const std::string& glRenderer)
 
 } // namespace bench
 
+int benchRendersPerFrameWithTerms()
+{
+    // The frame, each term variant, and the two reflection lookups
+    // (measureReflectionModes: fixed and raymarch).
+    constexpr int kReflectionModes = 2;
+    return 1 + int(bench::termVariants().size()) + kReflectionModes;
+}
+
 int runBench(const BenchOptions& options)
 {
     using namespace bench;
@@ -170,8 +178,12 @@ int runBench(const BenchOptions& options)
     checkGl("creating the water term variants");
 
     const int floorWarmup = std::min(options.warmup, kFloorWarmup);
-    const int perFrame = 1 + int(r.terms.size());
-    Progress progress("benchmarking", (options.warmup + options.frames) * perFrame + floorWarmup + options.frames + 1);
+    // Progress counts frames of the camera path, each phase on its own, so
+    // that "60/60" means the 60 measured frames (with --terms, each of them
+    // rendered once more per term variant and reflection lookup).
+    Progress progress(options.warmup > 0 ? fmt::format("warm-up ({}) and measured frames", options.warmup)
+                                         : std::string("measured frames"),
+                      options.warmup + options.frames);
     // The real frames: warm-up at the path's start, then the measured ones.
     for (int i = 0; i < options.warmup + options.frames; ++i) {
         const bool measured = i >= options.warmup;
@@ -190,34 +202,36 @@ int runBench(const BenchOptions& options)
             r.floatingBodies = renderer.counters().floatingBodies;
             r.realCameras.push_back(camera);
         }
-        progress.advance();
         for (size_t v = 0; v < termRenderers.size(); ++v) {
             FrameSample variant = recorder.recordFrame(
                 [&] { termRenderers[v]->render(camera, t, r.size, output.framebuffer.id()); });
             checkGl("rendering a frame with a water term left out");
             if (measured)
                 r.terms[v].frames.push_back(std::move(variant));
-            progress.advance();
         }
+        progress.advance();
     }
+    progress.finish();
     termRenderers.clear();
     renderer.setPassObserver(nullptr);
 
     // The floor: the same passes at the same sizes with trivial shading.
     const bool presents = scene.antialiasing != Antialiasing::Off || drawSize != r.size;
     FloorFrame floorFrame(r.passSize, drawSize, r.size, presents);
+    Progress floorProgress("floor frames (trivial shading)", floorWarmup + options.frames);
     for (int i = 0; i < floorWarmup + options.frames; ++i) {
         FrameSample frame = recorder.recordFrame([&] { floorFrame.render(recorder, i % 2 == 0); });
         checkGl("rendering the floor");
         if (i >= floorWarmup)
             r.floor.push_back(std::move(frame));
-        progress.advance();
+        floorProgress.advance();
     }
-    r.reflectionModes =
-        measureReflectionModes(scene, recorder, options.frames, r.size, output.framebuffer.id(), r.realCameras, r.realTimes_s);
-    checkGl("comparing the reflection lookups");
-    progress.advance();
-    progress.finish();
+    floorProgress.finish();
+    if (options.terms) {
+        r.reflectionModes = measureReflectionModes(scene, recorder, options.frames, r.size, output.framebuffer.id(),
+                                                   r.realCameras, r.realTimes_s);
+        checkGl("comparing the reflection lookups");
+    }
 
     // The water grid's LOD at a few frames of the path, from the vertices
     // the water shader produces for the same camera and time.
@@ -254,6 +268,8 @@ int runBench(const BenchOptions& options)
 
     printReport(r);
     printTermReport(r);
+    if (!options.terms)
+        std::printf("\n(swell bench --terms adds what each water shading term and each reflection lookup costs)\n");
     if (!options.jsonPath.empty()) {
         writeJson(r, options.jsonPath);
         std::fprintf(stderr, "swell bench: results written to %s\n", options.jsonPath.c_str());

@@ -208,6 +208,12 @@ Machine describeMachine()
 void printReport(const Results& r)
 {
     const std::vector<std::string> names = passNames(r.real);
+    // The headline first: frames per second from the median whole frame.
+    const Summary frameWall = summarize(frameSeries(r.real, &FrameSample::wall_ms));
+    const Summary frameCpu = summarize(frameSeries(r.real, &FrameSample::cpu_ms));
+    std::printf("%.2f frames per second (median frame %.1f ms wall, %.1f ms CPU) at %dx%d, %d measured frames\n\n",
+                frameWall.median > 0.0 ? 1000.0 / frameWall.median : 0.0, frameWall.median, frameCpu.median, r.size.x,
+                r.size.y, r.frames);
     std::printf("swell bench: %dx%d (reflection and refraction %dx%d), %s, %dx%d water cells\n", r.size.x,
                 r.size.y, r.passSize.x, r.passSize.y, r.surface.c_str(), r.gridCells, r.gridCells);
     std::printf("output: %s\n", r.output.c_str());
@@ -302,7 +308,7 @@ void printReport(const Results& r)
         }
     }
 
-    std::printf("\nGoals\n");
+    std::printf("\nThe project's goals (docs/PERFORMANCE.md, \"Goals\")\n");
     const double frameRatio = ratio(summarize(frameSeries(r.real, &FrameSample::wall_ms)).median,
                                     floorCost(summarize(frameSeries(r.floor, &FrameSample::wall_ms))));
     const double frameCpuRatio = ratio(summarize(frameSeries(r.real, &FrameSample::cpu_ms)).median,
@@ -336,6 +342,8 @@ void writeJson(const Results& r, const std::string& path)
     j["surface"] = r.surface;
     j["grid_cells"] = r.gridCells;
     j["frames"] = r.frames;
+    const double frameWall_ms = summarize(frameSeries(r.real, &FrameSample::wall_ms)).median;
+    j["frames_per_second"] = frameWall_ms > 0.0 ? 1000.0 / frameWall_ms : 0.0; // from the median frame, wall
     j["warmup"] = r.warmup;
     j["frame_step_s"] = r.frameStep_s;
     j["pipeline_statistics"] = r.pipelineStatistics;

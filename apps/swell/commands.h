@@ -39,6 +39,10 @@ struct ViewOptions {
     // to screenshotPath first when it is set.
     int exitAfterFrames = 0;
     std::string screenshotPath;
+    // For tests: end every frame with a wait this long, ms (a deliberately
+    // slow frame), and log what the panel saw pressed (viewer/gui.h).
+    int slowFrame_ms = 0;
+    bool logInput = false;
     int width = 1280, height = 720;
     OutputSettings outputSettings;
 };
@@ -49,10 +53,12 @@ bool displayAvailable();
 
 struct BenchOptions {
     int width = 1280, height = 720;
-    int frames = 60;       // measured frames along the camera path
-    int warmup = 10;       // frames rendered and discarded first
+    // The defaults keep a run of the default scene at 1280x720 to about a
+    // minute on 2 shared cores with llvmpipe (docs/PERFORMANCE.md).
+    int frames = 40;       // measured frames along the camera path
+    int warmup = 5;        // frames rendered and discarded first
     std::string jsonPath;  // also write the results as JSON here
-    bool terms = true;     // also measure the water with each shading term left out
+    bool terms = false;    // also measure the water with each shading term left out, and each reflection lookup
     OutputSettings outputSettings;
     // Every frame from the scene's own camera (the view `swell view` opens
     // on) instead of the camera path, to compare with the viewer.
@@ -60,5 +66,8 @@ struct BenchOptions {
     std::string scenePath; // the scene benchmarked; empty: the built-in default
 };
 int runBench(const BenchOptions& options);
+// Renders a measured frame takes with BenchOptions::terms: the frame, each
+// term variant, and each reflection lookup.
+int benchRendersPerFrameWithTerms();
 
 } // namespace swell::app

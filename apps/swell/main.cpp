@@ -3,6 +3,7 @@
 // usable, and otherwise renders it to a PNG whose path it prints.
 #include "commands.h"
 #include "data_folders.h"
+#include "scene_loading.h"
 
 #include "swell/error.h"
 #include "swell/parameters.h"
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <regex>
 #include <vector>
 
@@ -32,16 +34,62 @@ void parseSize(const std::string& text, int& width, int& height)
         throw CLI::ValidationError("--size", "each side must be 1..16384 pixels, got '" + text + "'");
 }
 
-// Range checks let NaN through (every comparison with it is false).
-const CLI::Validator finiteNumber(
-    [](std::string& text) {
-        try {
-            return std::isfinite(std::stod(text)) ? std::string() : "must be a finite number, got '" + text + "'";
-        } catch (const std::exception&) {
-            return "must be a number, got '" + text + "'";
-        }
-    },
-    "FINITE");
+// A number from `lo` to `hi`: finite (range checks alone let NaN through, as
+// every comparison with it is false) and in range. The help shows the type
+// and the range as "SECONDS:0..3600", not CLI11's own validator names.
+CLI::Validator numberIn(double lo, double hi)
+{
+    CLI::Validator check(
+        [lo, hi](std::string& text) {
+            const std::string range = fmt::format("{:g} to {:g}", lo, hi);
+            try {
+                size_t used = 0;
+                const double value = std::stod(text, &used);
+                if (used == text.size() && std::isfinite(value) && value >= lo && value <= hi)
+                    return std::string();
+            } catch (const std::exception&) {
+            }
+            return fmt::format("must be a number from {}, got '{}'", range, text);
+        },
+        fmt::format("{:g}..{:g}", lo, hi));
+    return check;
+}
+
+// A whole number from `lo` to `hi`, shown in the help as "N:1..100000".
+CLI::Validator wholeNumberIn(long lo, long hi)
+{
+    CLI::Validator check(
+        [lo, hi](std::string& text) {
+            try {
+                size_t used = 0;
+                const long value = std::stol(text, &used);
+                if (used == text.size() && value >= lo && value <= hi)
+                    return std::string();
+            } catch (const std::exception&) {
+            }
+            return fmt::format("must be a whole number from {} to {}, got '{}'", lo, hi, text);
+        },
+        fmt::format("{}..{}", lo, hi));
+    return check;
+}
+
+// What the first argument most likely meant when it is not a subcommand: a
+// scene file given without one gets the commands that take it.
+void suggestSubcommand(const std::string& first)
+{
+    if (first.empty() || first[0] == '-')
+        return;
+    const bool sceneLike = first.size() > 5 && first.compare(first.size() - 5, 5, ".toml") == 0;
+    if (sceneLike) {
+        const std::string stem = std::filesystem::path(first).stem().string();
+        std::fprintf(stderr,
+                     "swell: a scene file needs a subcommand: `swell view %s` opens it in a window, "
+                     "`swell render %s -o %s.png` renders it headless\n",
+                     first.c_str(), first.c_str(), stem.c_str());
+    } else {
+        std::fprintf(stderr, "swell: the subcommands are view, render and bench (swell --help)\n");
+    }
+}
 
 // --antialiasing and --scale on a subcommand, into `settings`.
 void addOutputOptions(CLI::App& command, swell::app::OutputSettings& settings)
@@ -56,13 +104,18 @@ void addOutputOptions(CLI::App& command, swell::app::OutputSettings& settings)
                    settings.antialiasing = swell::Antialiasing(at - names.begin());
                },
                "Edge smoothing: fxaa, msaa4 or off; overrides the scene's antialiasing key (default fxaa)")
+        ->type_name("MODE")
         ->check(CLI::IsMember(names));
     command.add_option("--scale", settings.renderScale,
-                       fmt::format("Render the frame at this fraction of the output size and scale it up (filtered), "
-                                   "{}..{}", swell::kMinRenderScale, swell::kMaxRenderScale))
-        ->check(finiteNumber & CLI::Range(swell::kMinRenderScale, swell::kMaxRenderScale))
+                       "Render the frame at this fraction of the output size and scale it up (filtered); "
+                       "0.5 draws a quarter of the pixels")
+        ->type_name("FRACTION")
+        ->check(numberIn(swell::kMinRenderScale, swell::kMaxRenderScale))
         ->capture_default_str();
 }
+
+constexpr const char* kSceneHelp =
+    "Scene file (TOML), or a preset's name (storm, sunset, ...); the built-in default when omitted";
 
 } // namespace
 
@@ -81,48 +134,76 @@ int main(int argc, char** argv)
     swell::app::ViewOptions view;
     std::string viewSize = "1280x720";
     CLI::App* viewCommand = app.add_subcommand("view", "Open the interactive viewer");
-    viewCommand->add_option("scene", view.scenePath, "Scene file (TOML); the built-in default when omitted");
-    viewCommand->add_option("--size", viewSize, "Window size, WIDTHxHEIGHT")->capture_default_str();
+    viewCommand->add_option("scene", view.scenePath,
+                            kSceneHelp)
+        ->type_name("SCENE");
+    viewCommand->add_option("--size", viewSize, "Window size, WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
     viewCommand->add_option("--exit-after-frames", view.exitAfterFrames,
-                            "Quit after this many frames (for tests and scripts)")->check(CLI::Range(0, 1000000));
+                            "Quit after this many frames (for tests and scripts)")
+        ->type_name("N")
+        ->check(wholeNumberIn(0, 1000000));
     viewCommand->add_option("--screenshot", view.screenshotPath,
                             "With --exit-after-frames: write the last frame to this PNG first");
+    viewCommand->add_option("--slow-frames", view.slowFrame_ms,
+                            "For tests: end every frame with a wait this long, as on a slow machine")
+        ->type_name("MS")
+        ->check(wholeNumberIn(0, 60000));
+    viewCommand->add_flag("--log-input", view.logInput,
+                          "For tests: print on stderr what the panel saw pressed each frame (Enter, Esc, clicks)");
     addOutputOptions(*viewCommand, view.outputSettings);
 
     swell::app::RenderOptions render;
     std::string renderSize = "1280x720";
     double duration = -1.0;
     CLI::App* renderCommand = app.add_subcommand("render", "Render headless to a PNG, an image sequence or an MP4");
-    renderCommand->add_option("scene", render.scenePath, "Scene file (TOML); the built-in default when omitted");
+    renderCommand->add_option("scene", render.scenePath,
+                              kSceneHelp)
+        ->type_name("SCENE");
     renderCommand->add_option("-o,--output", render.output,
                               "Output: NAME.png for one frame; with --duration, NAME.png becomes NAME_00000.png, "
                               "NAME_00001.png, ... or NAME.mp4 a video (needs the ffmpeg program). "
-                              "Missing parent folders are created")->required();
-    renderCommand->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->capture_default_str();
+                              "Missing parent folders are created")
+        ->type_name("FILE")
+        ->required();
+    renderCommand->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
     renderCommand->add_option("--time", render.time_s, "Simulation time of the first frame, seconds")
-        ->check(finiteNumber & CLI::Range(0.0, 1.0e9))->capture_default_str();
+        ->type_name("SECONDS")
+        ->check(numberIn(0.0, 1.0e9))
+        ->capture_default_str();
     renderCommand->add_option("--duration", duration, "Render a sequence this many seconds long")
-        ->check(finiteNumber & CLI::Range(0.0, 3600.0));
+        ->type_name("SECONDS")
+        ->check(numberIn(0.0, 3600.0));
     renderCommand->add_option("--fps", render.fps, "Frames per second of a sequence")
-        ->check(finiteNumber & CLI::Range(1.0, 240.0))->capture_default_str();
+        ->type_name("FPS")
+        ->check(numberIn(1.0, 240.0))
+        ->capture_default_str();
     addOutputOptions(*renderCommand, render.outputSettings);
 
     swell::app::BenchOptions bench;
     std::string benchSize = "1280x720";
     CLI::App* benchCommand = app.add_subcommand("bench", "Benchmark a scene (the default one unless named) headless along a fixed camera path");
-    benchCommand->add_option("--size", benchSize, "Frame size, WIDTHxHEIGHT")->capture_default_str();
-    benchCommand->add_option("--frames", bench.frames, "Measured frames")->check(CLI::Range(1, 100000))->capture_default_str();
+    benchCommand->add_option("--size", benchSize, "Frame size, WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
+    benchCommand->add_option("--frames", bench.frames, "Measured frames along the camera path")
+        ->type_name("N")
+        ->check(wholeNumberIn(1, 100000))
+        ->capture_default_str();
     benchCommand->add_option("--warmup", bench.warmup, "Frames rendered first and not measured")
-        ->check(CLI::Range(0, 100000))->capture_default_str();
-    benchCommand->add_option("--json", bench.jsonPath, "Also write the results as JSON to this file");
-    bool noTerms = false;
-    benchCommand->add_flag("--no-terms", noTerms,
-                           "Skip the water shading terms' costs (each term left out in turn: 8 renders a frame instead of 1)");
+        ->type_name("N")
+        ->check(wholeNumberIn(0, 100000))
+        ->capture_default_str();
+    benchCommand->add_option("--json", bench.jsonPath, "Also write the results as JSON to this file")->type_name("FILE");
+    benchCommand->add_flag("--terms", bench.terms,
+                           fmt::format("Also measure what the water's shading terms and its reflection lookups cost "
+                                       "(each term left out in turn, then each lookup: {} renders a measured frame "
+                                       "instead of 1)",
+                                       swell::app::benchRendersPerFrameWithTerms()));
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");
     benchCommand->add_option("scene", bench.scenePath,
-                             "Scene file (TOML) to benchmark along the same camera path; the built-in default when omitted");
+                             "Scene file (TOML) or a preset's name, benchmarked along the same camera path; "
+                             "the built-in default when omitted")
+        ->type_name("SCENE");
 
     try {
         app.parse(argc, argv);
@@ -134,28 +215,40 @@ int main(int argc, char** argv)
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);
+        if (argc > 1 && app.get_subcommands().empty())
+            suggestSubcommand(argv[1]);
         return swell::kExitBadInput;
     }
     try {
+        // A scene named by a path that does not exist may be a preset's name.
+        const std::filesystem::path presets = swell::app::dataFolders().scenes;
         if (*viewCommand) {
             parseSize(viewSize, view.width, view.height);
+            view.scenePath = swell::app::resolveScenePath(view.scenePath, presets);
             return swell::app::runView(view);
         }
         if (*renderCommand) {
             parseSize(renderSize, render.width, render.height);
+            render.scenePath = swell::app::resolveScenePath(render.scenePath, presets);
             if (duration >= 0.0)
                 render.duration_s = duration;
             return swell::app::runRender(render);
         }
         if (*benchCommand) {
             parseSize(benchSize, bench.width, bench.height);
-            bench.terms = !noTerms;
+            bench.scenePath = swell::app::resolveScenePath(bench.scenePath, presets);
             return swell::app::runBench(bench);
         }
-        // No subcommand: the main job.
-        if (swell::app::displayAvailable())
+        // No subcommand: the main job. Which path it takes is said on
+        // stderr, so that scripts/run.sh's user knows what to look for.
+        if (swell::app::displayAvailable()) {
+            std::fprintf(stderr, "swell: showing the default scene in a window (Esc quits, F1 the panel)\n");
             return swell::app::runView(view);
+        }
         render.output = "swell-default.png";
+        std::fprintf(stderr, "swell: no usable display (DISPLAY and WAYLAND_DISPLAY unset, or no X server there): "
+                             "rendering the default scene headless to %s\n",
+                     std::filesystem::absolute(render.output).c_str());
         return swell::app::runRender(render);
     } catch (const CLI::ParseError& e) { // parseSize's checks
         app.exit(e);

@@ -1,4 +1,5 @@
-// Progress of a long job: a bar on a terminal, plain lines otherwise.
+// Progress of a long job on stderr: a bar on a terminal, plain lines
+// otherwise; both with the time elapsed and an estimate of the time left.
 #pragma once
 
 #include <chrono>
@@ -13,6 +14,9 @@ public:
     void finish();
 
 private:
+    // The time left, s, at the mean time per step so far.
+    double remaining_s(double elapsed_s) const;
+
     std::string label_;
     int total_, done_ = 0, lastPercent_ = -1;
     bool terminal_;

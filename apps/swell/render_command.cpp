@@ -158,7 +158,7 @@ int runRender(const RenderOptions& options)
     std::unique_ptr<VideoWriter> videoWriter;
     if (video)
         videoWriter = std::make_unique<VideoWriter>(output, options.width, options.height, options.fps);
-    Progress progress("rendering", frames);
+    Progress progress("rendering frames", frames);
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
         const Image image = renderer.renderImage(cameraAt(scene.camera, t), t, size);

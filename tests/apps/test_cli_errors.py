@@ -6,6 +6,7 @@ where the problem is; none may crash (a signal, or exit codes other than 0/1/2).
 usage: test_cli_errors.py SWELL_EXECUTABLE WORK_DIR
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -83,6 +84,11 @@ ARGUMENTS = [
     ("unknown_subcommand", ["paint"], 2, "paint"),
     ("unknown_option", ["render", "-o", "x.png", "--colour", "red"], 2, "--colour"),
     ("bench_bad_frames", ["bench", "--frames", "0"], 2, "--frames"),
+    ("range_in_words", ["render", "-o", "x.png", "--time", "-3"], 2, "must be a number from 0 to 1e+09, got '-3'"),
+    # A scene file without a subcommand: the commands that take it.
+    ("scene_without_subcommand", ["evening.toml"], 2, "swell view evening.toml"),
+    # Neither a file nor a preset: the presets are listed.
+    ("unknown_preset", ["render", "no-such-sea", "-o", "x.png"], 2, "calm, fog, paper, storm"),
     # The render scale: 0.1..2, a finite number, on every subcommand that draws.
     *[(f"render_scale_{v}", ["render", "-o", "x.png", "--scale", v], 2, "--scale")
       for v in ("0", "-1", "5", "abc", "nan", "0.05")],
@@ -233,6 +239,37 @@ for scale, antialiasing in (("0.5", "off"), ("0.1", "fxaa"), ("2", "msaa4")):
     if r.returncode != 0 or not os.path.exists(out) or png_size(out) != (48, 27):
         failures.append(f"--scale {scale} --antialiasing {antialiasing}: exit {r.returncode}, "
                         f"size {png_size(out) if os.path.exists(out) else None}, {r.stderr[:300]!r}")
+
+# The help names types and ranges in words (SECONDS:0..3600), not CLI11's
+# validator names, and says as many renders a frame for `bench --terms` as
+# docs/PERFORMANCE.md does.
+root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+for command in ("view", "render", "bench"):
+    count += 1
+    r = run([command, "--help"])
+    noise = [n for n in ("FINITE", " AND ", "FLOAT", "INT in", "TEXT:") if n in r.stdout]
+    if r.returncode != 0 or noise:
+        failures.append(f"{command} --help: exit {r.returncode}, validator noise {noise}: {r.stdout[:600]!r}")
+    if command == "render" and ("--time SECONDS:0..1e+09" not in r.stdout or "--duration SECONDS:0..3600" not in r.stdout):
+        failures.append(f"render --help does not show --time's and --duration's ranges: {r.stdout[:900]!r}")
+    if command == "bench":
+        renders = re.search(r"(\d+) renders a measured frame", r.stdout.replace("\n", " "))
+        with open(os.path.join(root, "docs", "PERFORMANCE.md"), encoding="utf-8") as f:
+            docs = f.read()
+        if not renders or f"{renders.group(1)} renders a measured frame" not in docs:
+            failures.append(f"bench --help and docs/PERFORMANCE.md disagree on --terms' renders a frame: {r.stdout[:900]!r}")
+
+# A preset by its name, from a folder without such a file.
+count += 1
+r = run(["render", "calm", "-o", "preset.png", "--size", "32x18"])
+if r.returncode != 0 or not os.path.exists(os.path.join(work, "preset.png")):
+    failures.append(f"the preset 'calm' by name: exit {r.returncode}, {r.stderr[:300]!r}")
+
+# A sequence's progress gives the time left (stderr is not a terminal here: plain lines).
+count += 1
+r = run(["render", "-o", "sequence.png", "--duration", "0.3", "--fps", "10", "--size", "32x18"])
+if r.returncode != 0 or "rendering frames: 1/3" not in r.stderr or "left" not in r.stderr:
+    failures.append(f"a sequence's progress: exit {r.returncode}, no time left in {r.stderr[:400]!r}")
 
 for f in failures:
     print("FAIL", f)

@@ -3,27 +3,46 @@
 that everything it counts is identical between the runs: the pipeline
 statistics and samples passed of every pass of every measured frame, their
 totals (real and floor), and the water LOD figures. Timings vary and are only
-checked for being there.
+checked for being there. The second run adds --terms: only it may print the
+shading terms' table and the reflection lookups; both print frames per second
+on their first line.
 
 Usage: check_bench_counters.py SWELL_EXECUTABLE OUTPUT_DIR
 """
 import json
 import os
+import re
 import subprocess
 import sys
 
 ARGS = ["bench", "--size", "160x90", "--frames", "3", "--warmup", "1"]
 
 
-def run(swell, json_path):
-    command = [swell, *ARGS, "--json", json_path]
+def run(swell, json_path, terms):
+    command = [swell, *ARGS, "--json", json_path, *(["--terms"] if terms else [])]
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"FAIL: {' '.join(command)} exited {result.returncode}\n{result.stdout}\n{result.stderr}")
-    if "Time per pass" not in result.stdout or "Goals" not in result.stdout:
+    if "Time per pass" not in result.stdout or "goals" not in result.stdout:
         sys.exit(f"FAIL: no table on stdout:\n{result.stdout}")
+    if not re.match(r"[0-9.]+ frames per second \(median frame ", result.stdout):
+        sys.exit(f"FAIL: stdout does not start with the frames per second:\n{result.stdout}")
+    for table in ("Water shading terms", "Reflection lookup"):
+        if (table in result.stdout) != terms:
+            sys.exit(f"FAIL: '{table}' {'missing with' if terms else 'printed without'} --terms:\n{result.stdout}")
+    # The progress counts frames of the path: warm-up and measured, then the floor's.
+    frames, warmup = ARGS[ARGS.index("--frames") + 1], ARGS[ARGS.index("--warmup") + 1]
+    path_frames = int(frames) + int(warmup)
+    if f" {path_frames}/{path_frames} " not in result.stderr:
+        sys.exit(f"FAIL: the progress does not end at {path_frames}/{path_frames} frames:\n{result.stderr}")
     with open(json_path, encoding="utf-8") as f:
-        return json.load(f)
+        results = json.load(f)
+    if (len(results["water_terms"]) > 0) != terms or (len(results["reflection_modes"]) > 0) != terms:
+        sys.exit(f"FAIL: JSON water_terms {results['water_terms']!r}, reflection modes {results['reflection_modes']!r} "
+                 f"{'with' if terms else 'without'} --terms")
+    if not results["frames_per_second"] > 0.0:
+        sys.exit(f"FAIL: frames_per_second {results['frames_per_second']!r}")
+    return results
 
 
 def deterministic(results):
@@ -64,8 +83,8 @@ def differences(a, b, path=""):
 def main():
     swell, out_dir = sys.argv[1], sys.argv[2]
     os.makedirs(out_dir, exist_ok=True)
-    first = run(swell, os.path.join(out_dir, "bench_run1.json"))
-    second = run(swell, os.path.join(out_dir, "bench_run2.json"))
+    first = run(swell, os.path.join(out_dir, "bench_run1.json"), terms=False)
+    second = run(swell, os.path.join(out_dir, "bench_run2.json"), terms=True)
 
     problems = list(differences(deterministic(first), deterministic(second)))
 

@@ -28,10 +28,16 @@ PanelMode nextPanelMode(PanelMode mode)
 
 namespace {
 
-void keyHelp()
+// wrap: at the sidebar's edge, which is narrower than the longest line (the
+// overlay sizes itself to the lines instead).
+void keyHelp(bool wrap)
 {
+    if (wrap)
+        ImGui::PushTextWrapPos(0.0f);
     for (const char* line : kKeyHelp)
         ImGui::TextDisabled("%s", line);
+    if (wrap)
+        ImGui::PopTextWrapPos();
 }
 
 // The rate time really runs at, beside the one asked for: time follows the
@@ -85,9 +91,11 @@ void Panel::drawStats(const FrameStats& stats)
     ImGui::TextDisabled("%s", stats.context.c_str());
     ImGui::PopTextWrapPos();
     const float average = stats.times.average();
-    ImGui::Text("%d x %d px   %.2f ms   %.0f fps", stats.size.x, stats.size.y, stats.times.latest(),
+    // One decimal, as the overlay: at software GL's fractions of a frame a
+    // second, "0 fps" said nothing.
+    ImGui::Text("%d x %d px   %.1f ms   %.1f fps", stats.size.x, stats.size.y, stats.times.latest(),
                 average > 0.0f ? 1000.0f / average : 0.0f);
-    ImGui::Text("water %lld triangles, world %lld, %d draw calls", stats.counters.waterTriangles,
+    ImGui::TextWrapped("water %lld triangles, world %lld, %d draw calls", stats.counters.waterTriangles,
                 stats.counters.worldTriangles, stats.counters.drawCalls);
     const std::string overlay = fmt::format("avg {:.1f} ms, max {:.1f} ms", average, stats.times.maximum());
     ImGui::PlotLines("##frame times", stats.times.values(), stats.times.count(), stats.times.offset(), overlay.c_str(),
@@ -158,7 +166,7 @@ void Panel::drawView(Session& session, ViewState& view, const FrameStats& stats,
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Sets camera.position_m, yaw_deg and pitch_deg; a camera path still takes over while it has keys");
-    keyHelp();
+    keyHelp(true);
 
     ImGui::Separator();
     if (ImGui::Button("screenshot (F12)"))
@@ -223,6 +231,15 @@ void Panel::drawShaders(Session& session, PanelRequests& requests)
         message(session.shaderMessage());
 }
 
+void Panel::refusedEditText(Session& session)
+{
+    errorText("Not applied: " + session.editMessage().text);
+    if (ImGui::SmallButton("dismiss")) {
+        session.clearEditMessage();
+        refused_.reset();
+    }
+}
+
 PanelRequests Panel::draw(Session& session, ViewState& view, const FrameStats& stats)
 {
     PanelRequests requests;
@@ -230,25 +247,28 @@ PanelRequests Panel::draw(Session& session, ViewState& view, const FrameStats& s
     // size; only its width is the user's to change.
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     constexpr float kMargin = 8.0f;
+    // A quarter of the window (320 of 1280 px), at least room for a slider
+    // and its key's name; the title bar's arrow folds it to a bar, F1 to an
+    // overlay.
     if (width_ <= 0.0f)
-        width_ = std::clamp(viewport->WorkSize.x * 0.4f, 300.0f, 440.0f);
+        width_ = std::clamp(viewport->WorkSize.x * 0.25f, 280.0f, 360.0f);
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + kMargin, viewport->WorkPos.y + kMargin), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width_, std::max(1.0f, viewport->WorkSize.y - 2.0f * kMargin)), ImGuiCond_Always);
-    const bool visible = ImGui::Begin("Swell", nullptr, ImGuiWindowFlags_NoCollapse);
+    const bool visible = ImGui::Begin("Swell");
     width_ = std::max(200.0f, ImGui::GetWindowWidth());
     Scene edited = session.scene();
     bool changed = false;
     if (visible) {
         // Room on the right of each widget for the longest key name.
-        ImGui::PushItemWidth(-ImGui::GetFontSize() * 11.5f);
+        ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.5f);
         if (ImGui::SmallButton("collapse to an overlay (F1)"))
             view.panel = PanelMode::Overlay;
         drawStats(stats);
-        if (session.editMessage().error) {
-            errorText("Not applied: " + session.editMessage().text);
-            if (ImGui::SmallButton("dismiss"))
-                session.clearEditMessage();
-        }
+        // A refused edit shows beside its field; here only when that field
+        // was not drawn in the last frame (its section closed).
+        if (session.editMessage().error && !refusedShown_)
+            refusedEditText(session);
+        refusedShown_ = false;
         if (session.shaderMessage().error)
             errorText("Shader reload failed; the previous shaders stay in use.\n" + session.shaderMessage().text);
         drawView(session, view, stats, edited, changed, requests);
@@ -259,14 +279,20 @@ PanelRequests Panel::draw(Session& session, ViewState& view, const FrameStats& s
     }
     ImGui::End();
 
-    if (changed)
-        session.apply(edited);
+    // The refused edit's message goes with the next action that succeeds.
+    if (changed) {
+        if (session.apply(edited))
+            refused_.reset();
+        else
+            refused_ = lastEdited_;
+    }
     if (saveRequest_) {
         saveRequest_ = false;
         Scene toSave = session.scene();
         if (!view.followSceneCamera)
             setCameraPose(toSave.camera, view.fly.camera());
-        session.save(toSave, savePath_);
+        if (session.save(toSave, savePath_))
+            session.clearEditMessage();
     }
     if (loadRequest_) {
         const fs::path file = *loadRequest_;
@@ -276,6 +302,7 @@ PanelRequests Panel::draw(Session& session, ViewState& view, const FrameStats& s
             view.followSceneCamera = true;
             staged_.reset();
             lastWind_.reset();
+            refused_.reset();
             sceneLoaded(file);
         }
     }
@@ -297,7 +324,7 @@ PanelRequests Panel::drawOverlay(ViewState& view, const FrameStats& stats)
         ImGui::Text("%.1f ms  %.1f fps   t %.2f s%s", stats.times.latest(), average > 0.0f ? 1000.0f / average : 0.0f,
                     view.time_s, view.paused ? " (paused)" : "");
         actualRateText(view);
-        keyHelp();
+        keyHelp(false);
         if (ImGui::SmallButton("full panel (F1)"))
             view.panel = PanelMode::Full;
         ImGui::SameLine();

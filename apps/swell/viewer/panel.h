@@ -112,8 +112,11 @@ private:
     void drawShaders(Session& session, PanelRequests& requests);
     void drawParameters(Session& session, Scene& edited, bool& changed);
     void drawList(Session& session, ParameterList list, Scene& edited, bool& changed);
-    // One parameter's widget; writes an accepted change into `edited`.
+    // One parameter's widget; writes an accepted change into `edited`. A
+    // refused value's message shows under the widget that was edited.
     bool editParameter(Session& session, const Parameter& p, std::size_t item, Scene& edited);
+    // The refused edit's message and a button to dismiss it.
+    void refusedEditText(Session& session);
     void refreshPresets();
 
     float width_ = 0.0f; // of the panel, pixels; 0 until the first frame
@@ -126,6 +129,17 @@ private:
     std::optional<std::filesystem::path> loadRequest_;
     bool saveRequest_ = false;
     Message screenshot_;
+    // The field the last accepted value came from, and the one whose edit
+    // was refused (its message shows beside it): parameter key and item.
+    struct Field {
+        std::string_view key;
+        std::size_t item = 0;
+        bool operator==(const Field&) const = default;
+    };
+    std::optional<Field> lastEdited_, refused_;
+    // Whether the refused edit's message was drawn beside its field in the
+    // last frame; when not (its section is closed), the top of the panel shows it.
+    bool refusedShown_ = false;
 };
 
 } // namespace swell::app::viewer

@@ -27,6 +27,7 @@ bool Panel::editParameter(Session& session, const Parameter& p, std::size_t item
     ImGui::PopID();
     ImGui::PopID();
 
+    const Field field{p.key, item};
     bool commit = r.changed;
     if (appliedOnRelease(p)) {
         if (r.changed && r.active) {
@@ -38,14 +39,23 @@ bool Panel::editParameter(Session& session, const Parameter& p, std::size_t item
             commit = true;
         }
     }
-    if (!commit)
-        return false;
-    if (std::string problem = valueProblem(p, value, valueName(p, item)); !problem.empty()) {
-        session.refuseEdit(std::move(problem));
-        return false;
+    bool accepted = false;
+    if (commit) {
+        if (std::string problem = valueProblem(p, value, valueName(p, item)); !problem.empty()) {
+            session.refuseEdit(std::move(problem));
+            refused_ = field;
+        } else {
+            p.set(edited, item, value);
+            lastEdited_ = field;
+            accepted = true;
+        }
     }
-    p.set(edited, item, value);
-    return true;
+    // Beside the field, where the eye is, not at the top of a scrolled panel.
+    if (refused_ == field && session.editMessage().error) {
+        refusedEditText(session);
+        refusedShown_ = true;
+    }
+    return accepted;
 }
 
 void Panel::drawList(Session& session, ParameterList list, Scene& edited, bool& changed)

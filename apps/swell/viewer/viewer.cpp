@@ -202,7 +202,7 @@ int run(const ViewOptions& options)
     const DataFolders data = dataFolders();
     Session session(std::move(scene), options.scenePath, ShaderFolders{data.shaders, data.include});
     KeyPresses keys(window.handle());
-    Gui gui(window.handle());
+    Gui gui(window.handle(), GuiTesting{.slowFrame_ms = options.slowFrame_ms, .logInput = options.logInput});
     Panel panel(data.scenes);
     panel.sceneLoaded(options.scenePath);
 
