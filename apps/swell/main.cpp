@@ -85,6 +85,10 @@ int main(int argc, char** argv)
     viewCommand->add_option("--size", viewSize, "Window size, WIDTHxHEIGHT")->capture_default_str();
     viewCommand->add_option("--exit-after-frames", view.exitAfterFrames,
                             "Quit after this many frames (for tests and scripts)")->check(CLI::Range(0, 1000000));
+    viewCommand->add_option("--time-step", view.scriptedStep_s,
+                            "With --exit-after-frames: simulation time each frame advances, seconds (default 1/60; "
+                            "longer steps stand for slow frames)")
+        ->check(CLI::Range(0.0, 60.0));
     viewCommand->add_option("--screenshot", view.screenshotPath,
                             "With --exit-after-frames: write the last frame to this PNG first");
     addOutputOptions(*viewCommand, view.outputSettings);

@@ -13,19 +13,39 @@
 
 #include <glm/vec2.hpp>
 
+#include <vector>
+
 namespace swell::spectral {
 
 inline constexpr int kFoamSize = SWELL_FOAM_SIZE;
 inline constexpr int kFoamLevels = SWELL_FOAM_LEVELS;
 
 // Foam needs the history of the breaking: a frame that follows the last by
-// more than kLongestFoamStep_s, or goes back in time, first replays
-// kFoamReplayLifetimes foam lifetimes at kFoamReplayStep_s steps, so a still
-// at any time shows the foam a sequence arriving there would (the same for
-// every still at that time).
+// more than kLongestFoamStep_s, or goes back in time, first replays the
+// foam's history on the steps foamReplayOffsets_s() gives, so a still at any
+// time shows the foam a sequence arriving there would (the same for every
+// still at that time). An interactive renderer (the viewer) never replays
+// on a frame later than the last: it takes one step, however long.
 inline constexpr double kLongestFoamStep_s = 1.0;
+// The replay's steps: every kFoamReplayStep_s over the last
+// kFoamFineReplay_s (the whole replay at the salt-water lifetime of 3.85 s,
+// where 2.5 lifetimes are 9.6 s), then growing geometrically until they
+// reach kFoamReplayLifetimes lifetimes back, at most kFoamReplayMostSteps
+// steps in all: so a still costs at most about twice as much at the longest
+// lifetime (60 s, 150 s of history) as at the default (20 steps), instead
+// of 15 times (300 steps of 0.5 s). Each step sits on the lattice of
+// kFoamReplayStep_s before the frame, so the replay takes a subset of the
+// steps a sequence takes: its foam never exceeds the sequence's.
 inline constexpr double kFoamReplayStep_s = 0.5;
 inline constexpr double kFoamReplayLifetimes = 2.5;
+inline constexpr double kFoamFineReplay_s = 10.0;
+inline constexpr int kFoamReplayMostSteps = 36;
+
+// A still's replay at this foam lifetime: how long before the frame each
+// step is, s, the oldest first, the last 0 (the frame itself); each a
+// whole number of kFoamReplayStep_s, strictly decreasing. At most
+// kFoamReplayMostSteps + 1 entries.
+std::vector<double> foamReplayOffsets_s(double lifetime_s);
 
 // A level's texel, m: level 0's are those of the finest cascade that folds
 // into foam (kFoamCascades), so the foam is as sharp as the folds it marks;
