@@ -78,36 +78,23 @@ TEST(WorldFoam, TheFoldThresholdMakesFoamOnTheBreakingFraction)
 
 namespace {
 
-// A still's replay plan (foamReplayOffsets_s): at the salt-water lifetime
-// the whole 2.5 lifetimes every 0.5 s, as before the plan grew; at the
-// longest lifetime (60 s) the same 2.5 lifetimes (150 s) in at most
-// kFoamReplayMostSteps steps, the last 10 s still every 0.5 s; every offset
-// on the sequence's lattice, strictly decreasing to 0.
-TEST(WorldFoam, AStillsReplayIsBoundedAndOnTheSequencesLattice)
+// A still's replay plan (foamReplayOffsets_s): 2.5 lifetimes on the 0.5 s
+// lattice a sequence of frames takes, strictly decreasing to 0, whatever
+// the lifetime (20 steps at the salt-water 3.85 s, which the golden test
+// was measured on).
+TEST(WorldFoam, AStillsReplayIsOnTheSequencesLattice)
 {
-    for (const double lifetime_s : {0.5, 3.85, 10.0, 30.0, 60.0}) {
+    for (const double lifetime_s : {0.5, 3.85, 10.0, 60.0}) {
         SCOPED_TRACE(lifetime_s);
         const std::vector<double> offsets = foamReplayOffsets_s(lifetime_s);
         ASSERT_FALSE(offsets.empty());
         EXPECT_EQ(offsets.back(), 0.0);
-        EXPECT_EQ(offsets.front(), std::ceil(kFoamReplayLifetimes * lifetime_s / kFoamReplayStep_s) * kFoamReplayStep_s);
-        EXPECT_LE(offsets.size(), std::size_t(kFoamReplayMostSteps + 1));
-        for (std::size_t i = 0; i < offsets.size(); ++i) {
-            const double steps = offsets[i] / kFoamReplayStep_s;
-            EXPECT_EQ(steps, std::round(steps)) << "off the lattice: " << offsets[i];
-            if (i > 0) {
-                EXPECT_LT(offsets[i], offsets[i - 1]);
-            }
-            // The last kFoamFineReplay_s every step of the lattice.
-            if (offsets[i] <= kFoamFineReplay_s && i + 1 < offsets.size()) {
-                EXPECT_EQ(offsets[i] - offsets[i + 1], kFoamReplayStep_s) << "at " << offsets[i];
-            }
+        EXPECT_GE(offsets.front(), kFoamReplayLifetimes * lifetime_s);
+        for (std::size_t i = 1; i < offsets.size(); ++i) {
+            EXPECT_EQ(offsets[i - 1] - offsets[i], kFoamReplayStep_s) << "at " << offsets[i];
         }
     }
-    // The default lifetime's replay is the one the golden test was measured on.
     EXPECT_EQ(foamReplayOffsets_s(3.85).size(), 21u);
-    // The longest lifetime's no dearer than twice the default's.
-    EXPECT_LE(foamReplayOffsets_s(60.0).size() - 1, 2 * (foamReplayOffsets_s(3.85).size() - 1));
 }
 
 } // namespace

@@ -237,7 +237,9 @@ int run(const ViewOptions& options)
         last = now;
         stats.times.add(float(frame_s * 1000.0));
         const double cpu_ms = processCpu_ms();
-        if (scripted && frame > 0) {
+        // Frame 1 measures frame 0, the first: it replays the sea's history
+        // (there is no frame before it), so it is left out like a warm-up.
+        if (scripted && frame > 1) {
             scriptedFrames_s.push_back(frame_s);
             scriptedFramesCpu_ms.push_back(cpu_ms - lastCpu_ms);
         }

@@ -23,39 +23,10 @@ int wrapped(double index) { return std::int32_t(std::uint32_t(std::int64_t(index
 
 std::vector<double> foamReplayOffsets_s(double lifetime_s)
 {
-    // In whole lattice steps, so every offset is exact.
-    const auto span = std::int64_t(std::ceil(kFoamReplayLifetimes * lifetime_s / kFoamReplayStep_s));
-    const auto fine = std::min(span, std::int64_t(std::ceil(kFoamFineReplay_s / kFoamReplayStep_s)));
-    std::vector<std::int64_t> steps;
-    for (std::int64_t i = 0; i <= fine; ++i)
-        steps.push_back(i);
-    const std::int64_t coarseSteps = kFoamReplayMostSteps - fine;
-    if (span > fine && coarseSteps > 0) {
-        // Step k of the coarse part is r^k lattice steps long (rounded, at
-        // least one), r chosen (by bisection) so that coarseSteps of them
-        // reach the span: sum r^k, k = 1..m, = span - fine.
-        const double remaining = double(span - fine);
-        auto reach = [&](double r) {
-            double sum = 0.0, length = 1.0;
-            for (std::int64_t k = 0; k < coarseSteps; ++k)
-                sum += (length *= r);
-            return sum;
-        };
-        double lo = 1.0, hi = 2.0;
-        while (reach(hi) < remaining)
-            hi *= 2.0;
-        for (int i = 0; i < 60; ++i)
-            (reach(0.5 * (lo + hi)) < remaining ? lo : hi) = 0.5 * (lo + hi);
-        double length = 1.0, at = double(fine);
-        for (std::int64_t k = 0; k < coarseSteps && steps.back() < span; ++k) {
-            at += (length *= hi);
-            steps.push_back(std::clamp(std::int64_t(std::llround(at)), steps.back() + 1, span));
-        }
-        steps.back() = span; // the whole span, whatever the rounding
-    }
+    const auto steps = std::int64_t(std::ceil(kFoamReplayLifetimes * lifetime_s / kFoamReplayStep_s));
     std::vector<double> offsets;
-    for (auto i = steps.rbegin(); i != steps.rend(); ++i)
-        offsets.push_back(double(*i) * kFoamReplayStep_s);
+    for (std::int64_t i = steps; i >= 0; --i)
+        offsets.push_back(double(i) * kFoamReplayStep_s);
     return offsets;
 }
 

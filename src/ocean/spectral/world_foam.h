@@ -27,24 +27,18 @@ inline constexpr int kFoamLevels = SWELL_FOAM_LEVELS;
 // still at that time). An interactive renderer (the viewer) never replays
 // on a frame later than the last: it takes one step, however long.
 inline constexpr double kLongestFoamStep_s = 1.0;
-// The replay's steps: every kFoamReplayStep_s over the last
-// kFoamFineReplay_s (the whole replay at the salt-water lifetime of 3.85 s,
-// where 2.5 lifetimes are 9.6 s), then growing geometrically until they
-// reach kFoamReplayLifetimes lifetimes back, at most kFoamReplayMostSteps
-// steps in all: so a still costs at most about twice as much at the longest
-// lifetime (60 s, 150 s of history) as at the default (20 steps), instead
-// of 15 times (300 steps of 0.5 s). Each step sits on the lattice of
-// kFoamReplayStep_s before the frame, so the replay takes a subset of the
-// steps a sequence takes: its foam never exceeds the sequence's.
+// The replay steps every kFoamReplayStep_s over kFoamReplayLifetimes
+// lifetimes: the lattice a sequence of frames takes, so the replayed foam is
+// the sequence's but for what its first frame carried in. Its cost grows
+// with the lifetime (20 steps at 3.85 s, 300 at 60 s): sparser steps before
+// the last 10 s (36 in all at 60 s) were tried and missed too many
+// breakings (the foam cover of a 60 s-lifetime still fell from 0.44 to 0.27).
 inline constexpr double kFoamReplayStep_s = 0.5;
 inline constexpr double kFoamReplayLifetimes = 2.5;
-inline constexpr double kFoamFineReplay_s = 10.0;
-inline constexpr int kFoamReplayMostSteps = 36;
 
 // A still's replay at this foam lifetime: how long before the frame each
-// step is, s, the oldest first, the last 0 (the frame itself); each a
-// whole number of kFoamReplayStep_s, strictly decreasing. At most
-// kFoamReplayMostSteps + 1 entries.
+// step is, s, the oldest first, the last 0 (the frame itself), each a whole
+// number of kFoamReplayStep_s.
 std::vector<double> foamReplayOffsets_s(double lifetime_s);
 
 // A level's texel, m: level 0's are those of the finest cascade that folds
