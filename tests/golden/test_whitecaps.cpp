@@ -3,8 +3,9 @@
 // shading covers with foam (the foam debug view's grey level, decoded from
 // sRGB: each pixel's covered share), over nine places of one frame.
 //
-// In the golden tier (Release only): it renders 36 frames, each replaying
-// the foam's history, 44 s on an idle 2-core machine with llvmpipe.
+// In the golden tier (Release only): CoverFollowsMonahan renders 36 frames,
+// each replaying the foam's history, 44 s on an idle 2-core machine with
+// llvmpipe; AStillAtTimeZeroShowsTheDevelopedFoam 27 (50 s on a loaded one).
 #include "ocean/spectral/spectral_field.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
