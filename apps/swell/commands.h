@@ -38,6 +38,9 @@ struct ViewOptions {
     // For tests and scripts: quit after this many frames, writing a screenshot
     // to screenshotPath first when it is set.
     int exitAfterFrames = 0;
+    // Simulation time a scripted frame advances, s: 1/60 by default; longer
+    // steps stand for the slow frames of a real-time run on a slow machine.
+    double scriptedStep_s = 1.0 / 60.0;
     std::string screenshotPath;
     // For tests: end every frame with a wait this long, ms (a deliberately
     // slow frame), and log what the panel saw pressed (viewer/gui.h).

@@ -142,6 +142,11 @@ int main(int argc, char** argv)
                             "Quit after this many frames (for tests and scripts)")
         ->type_name("N")
         ->check(wholeNumberIn(0, 1000000));
+    viewCommand->add_option("--time-step", view.scriptedStep_s,
+                            "With --exit-after-frames: simulation time each frame advances, seconds (default 1/60; "
+                            "longer steps stand for slow frames)")
+        ->type_name("SECONDS")
+        ->check(numberIn(0.0, 60.0));
     viewCommand->add_option("--screenshot", view.screenshotPath,
                             "With --exit-after-frames: write the last frame to this PNG first");
     viewCommand->add_option("--slow-frames", view.slowFrame_ms,

@@ -56,6 +56,8 @@ struct SWELL_API FrameCounters {
     long long bodySteps = 0; // their integration steps taken for this frame (1/120 s each, all bodies)
     long long wakeSteps = 0; // steps of their wake field taken for this frame (1/30 s each)
     double wakeSteps_ms = 0.0; // the wall time those steps took, ms (part of the "bodies" pass)
+    int oceanTransforms = 0;   // the wave model's sets of inverse FFTs for this frame (spectral model)
+    int foamSteps = 0;         // its foam's steps for this frame: more than one is a replay of its history
 };
 
 // Told when each pass of a frame begins and ends (for timing and counters).
@@ -119,6 +121,13 @@ public:
     Image renderImage(const Camera& camera, double time_s, glm::ivec2 size);
 
     const FrameCounters& counters() const;
+
+    // For a viewer: a frame later than the last never replays the
+    // simulation's history (the foam's), however long the frame or far the
+    // camera moved; it takes one step, so a slow frame never makes the next
+    // one slower. Off (the default): a frame more than a foam step (1 s)
+    // after the last, or after a camera cut, replays it, as a still does.
+    void setInteractive(bool interactive);
 
     // Observes the passes of later frames; nullptr stops. Not owned.
     void setPassObserver(PassObserver* observer);

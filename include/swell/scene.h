@@ -14,6 +14,8 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -192,7 +194,27 @@ struct SWELL_API Scene {
     std::vector<AssetReference> assetReferences;
     bool showTerrain = true; // the built-in island
     Antialiasing antialiasing = Antialiasing::Fxaa;
+    // When the simulation's history starts, s: the foam is made, and
+    // floating bodies and their wake start from rest, from this time on;
+    // before it there is no foam and the bodies wait where they start.
+    // -inf (the default): the sea has always been going: the foam is in its
+    // steady state at any time, and the bodies start kDevelopedHistory_s
+    // before t = 0 (settled, their wakes trailing at t = 0).
+    double historyStart_s = -std::numeric_limits<double>::infinity();
 };
+
+// How long before t = 0 floating bodies and their wake start when the
+// scene's history_start_s is -inf: a boat at 4 m/s crosses the wake field's
+// astern three quarters (192 m at the default 256 x 1 m) in 48 s, and a
+// body settles in a few of its periods.
+inline constexpr double kDevelopedHistory_s = 60.0;
+
+// The time the scene's bodies and wake start from: historyStart_s, or
+// kDevelopedHistory_s before t = 0 when that is -inf.
+inline double bodiesStart_s(const Scene& scene)
+{
+    return std::isinf(scene.historyStart_s) ? -kDevelopedHistory_s : scene.historyStart_s;
+}
 
 // The built-in default scene: an open ocean under a trade wind, with an island.
 SWELL_API Scene defaultScene();

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 
 namespace swell {
 
@@ -33,6 +34,10 @@ struct SWELL_API SpectralSettings {
     // exp(-t/foamLifetime_s) (3.85 s: salt-water foam, Monahan &
     // O'Muircheartaigh 1986). 0: no foam.
     double foamLifetime_s = 3.85; // s, 0..60
+    // When the foam's history starts, s (Scene::historyStart_s): no foam
+    // before it, and a still replays none from before it. -inf: the foam has
+    // always been made (a still at any time shows it in its steady state).
+    double historyStart_s = -std::numeric_limits<double>::infinity();
 };
 
 class SWELL_API SpectralModel final : public WaveModel {

@@ -341,7 +341,7 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t i) -> auto& { return s.objects[i].velocity_m_per_s; },
            {.key = "objects.velocity_m_per_s", .kind = K::Vector3, .list = L::Objects, .unit = "m/s", .min = -100.0,
             .max = 100.0, .sliderMin = -20.0, .sliderMax = 20.0,
-            .description = "rigid body: carried at [x, z] (a boat under way); y: its heave velocity at t = 0"}),
+            .description = "rigid body: carried at [x, z] (a boat under way); y: its heave velocity at its start"}),
         at([](auto& s, std::size_t i) -> auto& { return s.objects[i].dampingRatio; },
            {.key = "objects.damping_ratio", .list = L::Objects, .min = 0.0, .max = 2.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "rigid body: fraction of critical damping in heave, roll and pitch"}),
@@ -408,6 +408,11 @@ std::vector<Parameter> buildTable()
             .sliderMax = kAntialiasing.size() - 1.0,
             .description = "edge smoothing of the main pass: fxaa (a post-process), msaa4 (4 samples a pixel) or off",
             .choices = kAntialiasing}),
+        at([](auto& s, std::size_t) -> auto& { return s.historyStart_s; },
+           {.key = "history_start_s", .effect = E::Waves, .unit = "s", .min = -kInf, .max = 1.0e9,
+            .sliderMin = -120.0, .sliderMax = 120.0,
+            .description = "when the foam, floating bodies and their wake start; -inf: the sea has always been going "
+                           "(foam developed, bodies started 60 s before t = 0)"}),
     };
 
     // Defaults come from the member initialisers: a default Scene with one

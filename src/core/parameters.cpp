@@ -177,7 +177,9 @@ std::string rangeText(const Parameter& p)
         return s;
     }
     std::string span;
-    if (std::isinf(p.max))
+    if (std::isinf(p.min) && !std::isinf(p.max))
+        span = fmt::format("<= {}", formatNumber(p.max));
+    else if (std::isinf(p.max))
         span = fmt::format("{} {}", p.minExclusive ? ">" : ">=", formatNumber(p.min));
     else if (p.minExclusive)
         span = fmt::format("> {} and <= {}", formatNumber(p.min), formatNumber(p.max));
@@ -186,6 +188,8 @@ std::string rangeText(const Parameter& p)
     span = withUnit(span, p.unit);
     if (std::isinf(p.max))
         span += ", inf allowed";
+    else if (std::isinf(p.min))
+        span += ", -inf allowed";
     switch (p.kind) {
     case K::Colour: return "each channel " + span;
     case K::Vector3: return "each component " + span;
@@ -197,7 +201,7 @@ std::string rangeText(const Parameter& p)
 
 std::string rangeMessage(const Parameter& p, std::string_view name, double x)
 {
-    bool finiteExpected = !(std::isinf(x) && std::isinf(p.max));
+    bool finiteExpected = !(std::isinf(x) && (x > 0 ? std::isinf(p.max) : std::isinf(p.min)));
     const char* what = (std::isfinite(x) || !finiteExpected) ? "is out of range" : "is not a finite number";
     return fmt::format("{} = {} {}; allowed {}", name, formatNumber(x), what, rangeText(p));
 }

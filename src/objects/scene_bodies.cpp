@@ -1,6 +1,7 @@
 // A scene's floating bodies (scene_bodies.h).
 #include "objects/scene_bodies.h"
 
+#include "render/wave_model_gpu.h" // the waves' GPU half, handed on
 #include "swell/error.h"
 #include "swell/grid.h"
 
@@ -39,12 +40,57 @@ bool sameBodies(const Scene& a, const Scene& b)
              x.dampingRatio != y.dampingRatio))
             return false;
     }
-    return a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m &&
+    return bodiesStart_s(a) == bodiesStart_s(b) && a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m &&
            a.waves.listed.depth_m == b.waves.listed.depth_m; // the wake's dispersion
 }
 
-SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& surface)
+namespace {
+
+// The scene's waves on the bodies' clock: their time t is the scene's
+// t + start_s, so the bodies step from 0 whenever the history starts.
+class WavesOnTheBodiesClock final : public WaveModel {
+public:
+    WavesOnTheBodiesClock(const WaveModel& waves, double start_s) : waves_(waves), start_s_(start_s) {}
+    std::string_view name() const override { return waves_.name(); }
+    std::string summary() const override { return waves_.summary(); }
+    WaveReach reach() const override { return waves_.reach(); }
+    double heightDeviation_m() const override { return waves_.heightDeviation_m(); }
+    SurfacePoint surfaceAt(glm::dvec2 rest, double time_s, const SurfaceFilter& filter) const override
+    {
+        return waves_.surfaceAt(rest, time_s + start_s_, filter);
+    }
+    glm::dvec3 displacementAt(glm::dvec2 rest, double time_s, const SurfaceFilter& filter) const override
+    {
+        return waves_.displacementAt(rest, time_s + start_s_, filter);
+    }
+    glm::dvec2 restPointUnder(glm::dvec2 world, double time_s, const SurfaceFilter& filter) const override
+    {
+        return waves_.restPointUnder(world, time_s + start_s_, filter);
+    }
+    std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override
+    {
+        return waves_.createGpu(shaders);
+    }
+
+private:
+    const WaveModel& waves_;
+    double start_s_;
+};
+
+} // namespace
+
+SceneBodies::SceneBodies(SceneBodies&&) noexcept = default;
+SceneBodies& SceneBodies::operator=(SceneBodies&&) noexcept = default;
+SceneBodies::~SceneBodies() = default;
+
+double SceneBodies::clock_s(double time_s) const { return std::max(0.0, time_s - start_s_); }
+
+WakeFrame SceneBodies::wakeFrameAt(double time_s) const { return wake_->frameAt(clock_s(time_s)); }
+
+SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& sceneWaves)
+    : start_s_(bodiesStart_s(scene)), waves_(std::make_unique<WavesOnTheBodiesClock>(sceneWaves, start_s_))
 {
+    const WaveModel& surface = *waves_;
     const SurfaceFilter filter = bodySurfaceFilter(scene);
     // A wake when some body is under way; its grid follows the first that is.
     bool underWay = false;
@@ -78,7 +124,10 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
             settings.centerOfMassOffset_m = o.centerOfMassOffset_m * o.scale;
             settings.principalInertia_kg_m2 = o.inertia_kg_m2;
             settings.dampingRatio = o.dampingRatio;
-            const BodyStart start{o.position_m, o.yaw_deg, o.velocity_m_per_s};
+            // Where it starts: back along its course by the time until t = 0
+            // (x(t) = x0 + v t, docs/BODIES.md, at every t after the start).
+            const glm::dvec3 carried(o.velocity_m_per_s.x * start_s_, 0.0, o.velocity_m_per_s.z * start_s_);
+            const BodyStart start{o.position_m + carried, o.yaw_deg, o.velocity_m_per_s};
             bodies_.push_back(std::make_unique<FloatingBody>(shape, settings, start, floatsOn, filter));
             ++count_;
             // Its footprint: the shape's half extents along and across its
@@ -150,8 +199,9 @@ void SceneBodies::advanceWakeFor(std::int64_t bodyStep)
     }
 }
 
-void SceneBodies::advanceTo(double time_s)
+void SceneBodies::advanceTo(double sceneTime_s)
 {
+    const double time_s = clock_s(sceneTime_s);
     // In lockstep, step by step: every body asks for the water at the same
     // sample times one after another (see FloatingBody::advanceToStep).
     const std::int64_t last = FloatingBody::lastStepFor(time_s);
@@ -182,7 +232,7 @@ std::optional<glm::dmat4> SceneBodies::poseAt(std::size_t i, double time_s)
 {
     if (i >= bodies_.size() || !bodies_[i])
         return std::nullopt;
-    return bodies_[i]->poseAt(time_s) * glm::scale(glm::dmat4(1.0), glm::dvec3(scale_[i]));
+    return bodies_[i]->poseAt(clock_s(time_s)) * glm::scale(glm::dmat4(1.0), glm::dvec3(scale_[i]));
 }
 
 std::int64_t SceneBodies::stepsTaken() const

@@ -39,6 +39,10 @@ public:
     // object) when a body cannot be built.
     SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& surface);
 
+    SceneBodies(SceneBodies&&) noexcept;
+    SceneBodies& operator=(SceneBodies&&) noexcept;
+    ~SceneBodies();
+
     bool empty() const { return count_ == 0; }
     std::size_t count() const { return count_; }
     // Steps every body to time_s together (see FloatingBody::advanceToStep).
@@ -50,7 +54,14 @@ public:
     std::int64_t stepsTaken() const;
 
     // The wake, when the scene has one (wake on, a body under way); else null.
+    // It runs on the bodies' own clock, from 0 at their start (startTime_s()).
     const SceneWake* wake() const { return wake_.get(); }
+    // The wake's frame at scene time time_s (the wake must exist).
+    WakeFrame wakeFrameAt(double time_s) const;
+    // When the bodies and the wake start, scene time, s (swell::bodiesStart_s):
+    // each starts from rest there, at its position_m less velocity times the
+    // time until t = 0, so that it passes position_m at t = 0.
+    double startTime_s() const { return start_s_; }
     // Wake steps taken so far (restarts included), for the benchmark.
     std::int64_t wakeStepsTaken() const { return wakeStepsTaken_; }
     // The wall time those steps took, ms (for the benchmark; never read by the simulation).
@@ -66,6 +77,13 @@ private:
     // Steps the wake until the bodies can sample the water for body step `bodyStep`.
     void advanceWakeFor(std::int64_t bodyStep);
 
+    // The bodies' clock: scene time less start_s_, never below 0 (before
+    // their start they wait where they start).
+    double clock_s(double time_s) const;
+
+    double start_s_ = 0.0;
+    // The waves on the bodies' clock (what they and the wake float on).
+    std::unique_ptr<WaveModel> waves_;
     std::unique_ptr<SceneWake> wake_;
     std::vector<Footprint> footprints_; // per object, as bodies_
     std::size_t leader_ = 0;             // the body the wake's grid follows

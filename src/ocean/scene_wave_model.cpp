@@ -17,6 +17,7 @@ std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene)
         settings.wind.depth_m = scene.waves.listed.depth_m;
         settings.choppiness = scene.waves.choppiness;
         settings.foamLifetime_s = scene.waves.foamLifetime_s;
+        settings.historyStart_s = scene.historyStart_s;
         settings.seed = scene.waves.wind->seed;
         return std::make_unique<SpectralModel>(settings);
     }

@@ -60,6 +60,7 @@ struct Renderer::Impl {
     // Where the main pass draws when anti-aliased or scaled (render_target.h).
     MainTarget mainTarget;
     double renderScale = 1.0;
+    bool interactive = false; // see Renderer::setInteractive
     FrameCounters counters;
     PassObserver* observer = nullptr;
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
@@ -100,7 +101,7 @@ struct Renderer::Impl {
         if (!bodies.wake())
             return nullptr;
         if (!wakeFrame || wakeFrameTime_s != time_s) {
-            wakeFrame = std::make_shared<const WakeFrame>(bodies.wake()->frameAt(time_s));
+            wakeFrame = std::make_shared<const WakeFrame>(bodies.wakeFrameAt(time_s));
             wakeFrameTime_s = time_s;
         }
         return wakeFrame;
@@ -136,6 +137,8 @@ struct Renderer::Impl {
         notify(true, "ocean");
         modelGpu->prepareFrame(grid.center_m, time_s);
         modelGpu->bind();
+        counters.oceanTransforms = modelGpu->lastWork().transforms;
+        counters.foamSteps = modelGpu->lastWork().foamSteps;
         notify(false, "ocean");
         const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
         FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
@@ -413,7 +416,7 @@ struct Renderer::Impl {
         World nextWorld;
         if (worldChanged)
             nextWorld = buildWorld(next);
-        // Bodies start again from t = 0 when what moves them changed.
+        // Bodies start again from their start when what moves them changed.
         const bool bodiesChanged = worldChanged || modelChanged || !sameBodies(scene, next);
         SceneBodies nextBodies;
         if (bodiesChanged)
@@ -424,6 +427,7 @@ struct Renderer::Impl {
         overrideModel = std::move(nextOverride);
         if (gpu) {
             modelGpu = std::move(gpu);
+            modelGpu->setInteractive(interactive);
             seaMeanSquareSlope = meanSquareSlope(model());
         }
         if (programsChanged) {
@@ -485,6 +489,12 @@ double Renderer::renderScale() const { return impl_->renderScale; }
 
 const FrameCounters& Renderer::counters() const { return impl_->counters; }
 void Renderer::setPassObserver(PassObserver* observer) { impl_->observer = observer; }
+
+void Renderer::setInteractive(bool interactive)
+{
+    impl_->interactive = interactive;
+    impl_->modelGpu->setInteractive(interactive);
+}
 
 void Renderer::reloadShaders()
 {

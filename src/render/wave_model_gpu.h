@@ -33,6 +33,24 @@ public:
 
     // Binds the buffers and textures prepareFrame() filled.
     virtual void bind() const = 0;
+
+    // An interactive model (the viewer's) never replays its history on a
+    // frame later than the last, however long the frame or far the camera
+    // moved: it steps once, so a slow frame does not make the next one
+    // slower. Only its first frame and a frame earlier than the last replay.
+    void setInteractive(bool interactive) { interactive_ = interactive; }
+
+    // The simulation work the last prepareFrame() did (for the frame
+    // counters and the tests that hold the interactive rule).
+    struct Work {
+        int transforms = 0; // sets of inverse FFTs (one time, some cascades)
+        int foamSteps = 0;  // steps of the foam
+    };
+    const Work& lastWork() const { return work_; }
+
+protected:
+    bool interactive_ = false;
+    Work work_;
 };
 
 } // namespace swell::detail

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <memory>
+#include <vector>
 
 namespace {
 
@@ -71,6 +72,29 @@ TEST(WorldFoam, TheFoldThresholdMakesFoamOnTheBreakingFraction)
     const double share = double(below) / total;
     std::printf("breaking fraction %.4f, share below the threshold elsewhere %.4f\n", fraction, share);
     EXPECT_NEAR(share, fraction, 0.25 * fraction);
+}
+
+} // namespace
+
+namespace {
+
+// A still's replay plan (foamReplayOffsets_s): 2.5 lifetimes on the 0.5 s
+// lattice a sequence of frames takes, strictly decreasing to 0, whatever
+// the lifetime (20 steps at the salt-water 3.85 s, which the golden test
+// was measured on).
+TEST(WorldFoam, AStillsReplayIsOnTheSequencesLattice)
+{
+    for (const double lifetime_s : {0.5, 3.85, 10.0, 60.0}) {
+        SCOPED_TRACE(lifetime_s);
+        const std::vector<double> offsets = foamReplayOffsets_s(lifetime_s);
+        ASSERT_FALSE(offsets.empty());
+        EXPECT_EQ(offsets.back(), 0.0);
+        EXPECT_GE(offsets.front(), kFoamReplayLifetimes * lifetime_s);
+        for (std::size_t i = 1; i < offsets.size(); ++i) {
+            EXPECT_EQ(offsets[i - 1] - offsets[i], kFoamReplayStep_s) << "at " << offsets[i];
+        }
+    }
+    EXPECT_EQ(foamReplayOffsets_s(3.85).size(), 21u);
 }
 
 } // namespace

@@ -3,8 +3,9 @@
 // shading covers with foam (the foam debug view's grey level, decoded from
 // sRGB: each pixel's covered share), over nine places of one frame.
 //
-// In the golden tier (Release only): it renders 36 frames, each replaying
-// the foam's history, 44 s on an idle 2-core machine with llvmpipe.
+// In the golden tier (Release only): CoverFollowsMonahan renders 36 frames,
+// each replaying the foam's history, 44 s on an idle 2-core machine with
+// llvmpipe; AStillAtTimeZeroShowsTheDevelopedFoam 27 (50 s on a loaded one).
 #include "ocean/spectral/spectral_field.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
@@ -135,35 +136,42 @@ TEST_F(Whitecaps, CoverFollowsMonahan)
 }
 
 // A still shows the foam its history made. A frame that starts a sequence
-// (or jumps in time) replays the foam's history: steps of kFoamReplayStep_s
-// over kFoamReplayLifetimes lifetimes, the steps before the last
-// transforming only the cascades that fold into foam. A sequence of frames
-// on the same steps takes them with every field transformed, after its own
-// first frame's replay: its foam holds the still's, texel by texel, and
-// exceeds it by at most that first frame's foam decayed over the replayed
-// span (exp(-10 s / 3.85 s) = 0.074 of it). So no pixel of the still shows
-// more foam than the sequence's (the covered share grows with the foam), and
+// (or jumps in time) replays the foam's history on the steps
+// foamReplayOffsets_s() gives (every kFoamReplayStep_s over
+// kFoamReplayLifetimes lifetimes), the steps before the last transforming
+// only the cascades that fold into foam. A sequence of frames on the same
+// steps takes them with every field transformed, after its own first
+// frame's replay: its foam holds the still's, texel by texel, and exceeds
+// it by at most that first frame's foam decayed over the replayed span
+// (exp(-10 s / 3.85 s) = 0.074 of it). So no pixel of the still shows more
+// foam than the sequence's (the covered share grows with the foam), and
 // their mean difference is allowed that share of the sequence's cover
 // (measured: 0.0032 of 0.0068 allowed). A replay that made its foam from
 // other fields than the sequence's differs far more (one cascade
 // transformed instead of two: 0.069).
-TEST_F(Whitecaps, AStillShowsTheFoamItsHistoryMade)
+void expectTheStillsFoamIsItsHistorys(double lifetime_s)
 {
     Scene scene = foamScene(16.0);
+    scene.waves.foamLifetime_s = lifetime_s;
     // Each pixel's own share: FXAA's blend across edges depends on the
     // contrast it finds, so it would not keep one view's foam within the other's.
     scene.antialiasing = Antialiasing::Off;
-    const double lifetime_s = scene.waves.foamLifetime_s;
-    const int steps = int(std::ceil(spectral::kFoamReplayLifetimes * lifetime_s / spectral::kFoamReplayStep_s));
+    const double span_s = spectral::foamReplayOffsets_s(lifetime_s).front();
+    const int steps = int(std::lround(span_s / spectral::kFoamReplayStep_s));
     const double time_s = 60.0;
     Renderer still(scene);
     const std::vector<double> replayed = foamFrom300m(still, scene, 400.0, -300.0, time_s);
     Renderer sequence(scene);
-    std::vector<double> stepped;
-    for (int i = steps; i >= 0; --i)
-        stepped = foamFrom300m(sequence, scene, 400.0, -300.0, time_s - i * spectral::kFoamReplayStep_s);
+    Camera camera = cameraAt(scene.camera, 0.0);
+    camera.position_m = {400.0, 300.0, -300.0};
+    camera.pitch_deg = -89.0;
+    // The frames before the last only step the foam (the picture's size
+    // does not change it).
+    for (int i = steps; i >= 1; --i)
+        sequence.renderImage(camera, time_s - i * spectral::kFoamReplayStep_s, {8, 8});
+    const std::vector<double> stepped = foamFrom300m(sequence, scene, 400.0, -300.0, time_s);
 
-    const double carried = std::exp(-steps * spectral::kFoamReplayStep_s / lifetime_s);
+    const double carried = std::exp(-span_s / lifetime_s);
     double replayedMean = 0.0, steppedMean = 0.0, meanDifference = 0.0, largestDeficit = 0.0;
     for (size_t i = 0; i < replayed.size(); ++i) {
         replayedMean += replayed[i];
@@ -175,13 +183,58 @@ TEST_F(Whitecaps, AStillShowsTheFoamItsHistoryMade)
     replayedMean /= n;
     steppedMean /= n;
     meanDifference /= n;
-    std::printf("foam cover: still %.4f, sequence %.4f; mean |difference| %.4f; the still above the sequence by "
-                "%.4f at most; the sequence's first foam carried: %.3f\n",
-                replayedMean, steppedMean, meanDifference, largestDeficit, carried);
+    std::printf("lifetime %.2f s, %zu replay steps against %d: foam cover: still %.4f, sequence %.4f; mean "
+                "|difference| %.4f; the still above the sequence by %.4f at most; the sequence's first foam "
+                "carried: %.3f\n",
+                lifetime_s, spectral::foamReplayOffsets_s(lifetime_s).size() - 1, steps, replayedMean, steppedMean,
+                meanDifference, largestDeficit, carried);
     ASSERT_GT(replayedMean, 0.005) << "no foam to compare";
     // One level of the 8-bit sRGB output near the darkest greys.
     EXPECT_LE(largestDeficit, test::srgbToLinear(1)) << "the still shows foam its history did not make";
     EXPECT_LE(meanDifference, carried * steppedMean);
+}
+
+TEST_F(Whitecaps, AStillShowsTheFoamItsHistoryMade) { expectTheStillsFoamIsItsHistorys(3.85); }
+
+// The mean covered share of the foam view straight down from 1200 m
+// (1386 m across, inside level 1's window of 1536 m; the levels sample the
+// same folds, so they have the same cover) over nine places of one frame,
+// each replayed: 16 times the area of the views from 300 m for the same
+// replays, so the cover of one time varies less from place to place.
+double wideCoverAt(const Scene& scene, double time_s)
+{
+    constexpr int kWide = 256;
+    Renderer renderer(scene);
+    double white = 0.0;
+    long long total = 0;
+    for (int k = 0; k < 9; ++k) {
+        Camera camera = cameraAt(scene.camera, 0.0);
+        camera.position_m = {4937.0 * k, 1200.0, -7603.0 * k};
+        camera.pitch_deg = -89.0;
+        const Image image = renderer.renderImage(camera, time_s, {kWide, kWide});
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                white += test::srgbToLinear(image.pixel(x, y)[0]);
+                ++total;
+            }
+    }
+    return white / double(total);
+}
+
+// A still at t = 0 (swell render's default time) shows the sea the wind has
+// been making for ever: its foam cover is that of a still at 60 s within 10%
+// (issue 28, item 3). With history_start_s = 0 the foam starts at t = 0:
+// a still there shows only the breaking of that instant.
+TEST_F(Whitecaps, AStillAtTimeZeroShowsTheDevelopedFoam)
+{
+    Scene scene = foamScene(16.0);
+    const double atZero = wideCoverAt(scene, 0.0), atSixty = wideCoverAt(scene, 60.0);
+    scene.historyStart_s = 0.0;
+    const double fromZero = wideCoverAt(scene, 0.0);
+    std::printf("foam cover at t = 0: %.4f; at t = 60 s: %.4f; at t = 0 with the history starting there: %.4f\n",
+                atZero, atSixty, fromZero);
+    EXPECT_NEAR(atZero, atSixty, 0.1 * atSixty);
+    EXPECT_LT(fromZero, 0.8 * atZero) << "history_start_s = 0 made no difference";
 }
 
 // No tiling of the foam (issue 12's criterion for the heightfield, applied

@@ -47,8 +47,9 @@ void actualRateText(const ViewState& view)
 {
     const bool slower = !view.paused && view.actualTimeRate < view.timeRate * 0.98;
     if (slower)
-        ImGui::TextWrapped("time runs at %.2fx: frames take longer than the clock's %.0f s step", view.actualTimeRate,
-                           kMaxFrameStep_s);
+        ImGui::TextWrapped("time runs at %.2fx, slower than the %.2fx asked: frames take longer than the clock's "
+                           "%.0f s step",
+                           view.actualTimeRate, view.timeRate, kMaxFrameStep_s);
     else
         ImGui::Text("time runs at %.2fx", view.actualTimeRate);
 }

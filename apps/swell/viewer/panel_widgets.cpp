@@ -152,6 +152,15 @@ WidgetResult editValue(const Parameter& p, const char* label, ParameterValue& va
                 r.changed = true;
             }
             ImGui::Unindent();
+        } else if (std::isinf(p.min)) {
+            // Likewise an unbounded minimum (a history that always ran).
+            bool infinite = std::isinf(v);
+            ImGui::Indent();
+            if (ImGui::Checkbox("-infinite", &infinite)) {
+                v = infinite ? -std::numeric_limits<double>::infinity() : 0.0;
+                r.changed = true;
+            }
+            ImGui::Unindent();
         }
         return r;
     }

@@ -3,8 +3,13 @@
 // panel over it, then a screenshot when one was asked for, and the swap.
 //
 // With --exit-after-frames the run is scripted: no input, the scene's own
-// camera, and time advancing exactly 1/60 s per frame, so the frames (and the
-// --screenshot of the last) do not depend on how fast the machine is.
+// camera, and time advancing exactly 1/60 s per frame (or --time-step), so
+// the frames (and the --screenshot of the last) do not depend on how fast
+// the machine is.
+//
+// The renderer is interactive (Renderer::setInteractive): a frame, however
+// long after the last, never replays the foam's history, so a slow frame
+// does not make the next one slower.
 #include "viewer/viewer.h"
 
 #include "data_folders.h"
@@ -37,8 +42,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Simulation time per frame of a scripted run, s.
-constexpr double kScriptedFrame_s = 1.0 / 60.0;
 // The fly camera moves for at most this long per frame, s: long enough to
 // keep its speed at the few frames per second of software GL, short enough
 // that a stall does not throw the camera far away.
@@ -186,6 +189,8 @@ fs::path writeScreenshot(glm::ivec2 size, const fs::path& path)
 int run(const ViewOptions& options)
 {
     const bool scripted = options.exitAfterFrames > 0;
+    if (options.scriptedStep_s != 1.0 / 60.0 && !scripted)
+        throw InputError({"--time-step"}, "--time-step needs --exit-after-frames N (an interactive run follows the clock)");
     if (!options.screenshotPath.empty() && !scripted)
         throw InputError({"--screenshot"}, "--screenshot needs --exit-after-frames N (press F12 for a screenshot "
                                            "in an interactive session)");
@@ -232,7 +237,9 @@ int run(const ViewOptions& options)
         last = now;
         stats.times.add(float(frame_s * 1000.0));
         const double cpu_ms = processCpu_ms();
-        if (scripted && frame > 0) {
+        // Frame 1 measures frame 0, the first: it replays the sea's history
+        // (there is no frame before it), so it is left out like a warm-up.
+        if (scripted && frame > 1) {
             scriptedFrames_s.push_back(frame_s);
             scriptedFramesCpu_ms.push_back(cpu_ms - lastCpu_ms);
         }
@@ -242,7 +249,7 @@ int run(const ViewOptions& options)
         bool reloadShaders = false, screenshot = false;
         if (scripted) {
             keys.clear();
-            view.time_s = frame * kScriptedFrame_s;
+            view.time_s = frame * options.scriptedStep_s;
         } else {
             const ImGuiIO& io = ImGui::GetIO();
             // Esc quits, unless it is ending an edit in the panel (ImGui
@@ -286,6 +293,7 @@ int run(const ViewOptions& options)
         const Camera camera = frameCamera(view, session.scene());
         const glm::ivec2 size = window.framebufferSize();
         session.renderer().setRenderScale(view.renderScale);
+        session.renderer().setInteractive(true); // (the session may have made a new renderer)
         session.renderer().render(camera, view.time_s, size);
         stats.counters = session.renderer().counters();
         stats.size = size;
@@ -315,9 +323,12 @@ int run(const ViewOptions& options)
         // On stderr, so that stdout keeps only the screenshot's path.
         const glm::ivec2 size = window.framebufferSize();
         std::fprintf(stderr,
-                     "swell view: %zu frames timed at %dx%d, render scale %.2f: median %.1f ms wall, %.1f ms CPU a frame\n",
+                     "swell view: %zu frames timed at %dx%d, render scale %.2f: median %.1f ms wall, %.1f ms CPU a "
+                     "frame; the longest %.1f ms wall, %.1f ms CPU\n",
                      scriptedFrames_s.size(), size.x, size.y, view.renderScale, 1000.0 * median(scriptedFrames_s),
-                     median(scriptedFramesCpu_ms));
+                     median(scriptedFramesCpu_ms),
+                     1000.0 * *std::max_element(scriptedFrames_s.begin(), scriptedFrames_s.end()),
+                     *std::max_element(scriptedFramesCpu_ms.begin(), scriptedFramesCpu_ms.end()));
     }
     return kExitOk;
 }

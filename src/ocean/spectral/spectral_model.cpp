@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace swell {
 
@@ -133,6 +134,7 @@ public:
 
     void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override
     {
+        work_ = {};
         bool moved = false, cut = !foamStepped_;
         for (int level = 0; level < kFoamLevels; ++level) {
             windows_[size_t(level)] = foamWindowAt(gridCenter_m, foamTexel_m(*field_, level));
@@ -142,12 +144,13 @@ public:
         }
         // The uniforms before any foam step: it samples the cascades through them.
         updateUniforms(gridCenter_m);
+        const bool foam = settings_.foamLifetime_s > 0.0;
         if (!transformed_ || time_s != time_s_)
             advance(time_s, cut);
-        else if (cut && settings_.foamLifetime_s > 0.0)
+        else if (cut && foam && !interactive_)
             replayFoam(time_s);
-        else if (moved && settings_.foamLifetime_s > 0.0)
-            stepFoam(1.0f); // the same time: only the texels entering the windows are new
+        else if (moved && foam)
+            stepFoam(time_s, 1.0f); // the same time: only the texels entering the windows are new
     }
 
     void updateUniforms(glm::dvec2 gridCenter_m)
@@ -192,39 +195,44 @@ public:
 
 private:
     // Moves the fields to time_s and the foam with them; after a cut (in
-    // time, or of the camera), the foam's history is replayed first.
+    // time, or of the camera), the foam's history is replayed first, except
+    // that an interactive model goes on from any earlier frame in one step.
     void advance(double time_s, bool cut)
     {
         const double lifetime = settings_.foamLifetime_s;
         const bool foam = lifetime > 0.0;
-        const bool continues = transformed_ && !cut && time_s >= time_s_ && time_s - time_s_ <= kLongestFoamStep_s;
+        const bool continues = transformed_ && time_s >= time_s_ &&
+                               (interactive_ || (!cut && time_s - time_s_ <= kLongestFoamStep_s));
         if (foam && !continues) {
             replayFoam(time_s);
         } else {
             const double dt = transformed_ ? time_s - time_s_ : 0.0;
             transform(time_s);
             if (foam)
-                stepFoam(float(std::exp(-dt / lifetime)));
+                stepFoam(time_s, float(std::exp(-dt / lifetime)));
         }
         updateSlopeMoments();
     }
 
-    // The foam's recent history on a fixed lattice of steps ending at time_s,
-    // starting from none, so a still shows the foam a sequence arriving there
-    // would (the same for every still at that time and place); leaves the
-    // fields at time_s.
+    // The foam's recent history on a fixed lattice of steps ending at time_s
+    // (foamReplayOffsets_s), starting from none (or from the history's
+    // start, when that is later), so a still shows the foam a sequence
+    // arriving there would (the same for every still at that time and
+    // place); leaves the fields at time_s.
     void replayFoam(double time_s)
     {
         const double lifetime = settings_.foamLifetime_s;
-        const int steps = int(std::ceil(kFoamReplayLifetimes * lifetime / kFoamReplayStep_s));
-        const float decay = float(std::exp(-kFoamReplayStep_s / lifetime));
-        for (int i = steps; i >= 0; --i) {
+        std::vector<double> offsets = foamReplayOffsets_s(lifetime);
+        // Nothing from before the history's start: the first step on or after it starts afresh.
+        std::erase_if(offsets, [&](double offset_s) { return offset_s > 0.0 && time_s - offset_s < settings_.historyStart_s; });
+        for (size_t i = 0; i < offsets.size(); ++i) {
             // The steps before the last need only what a foam step reads:
             // the folding cascades' fields, without mipmaps (half the
             // transforms' work, and most of a replay's time on llvmpipe).
-            const bool last = i == 0;
-            transform(time_s - i * kFoamReplayStep_s, last ? kCascades : kFoamCascades);
-            stepFoam(i == steps ? 0.0f : decay, last);
+            const bool last = i + 1 == offsets.size();
+            transform(time_s - offsets[i], last ? kCascades : kFoamCascades);
+            const float decay = i == 0 ? 0.0f : float(std::exp(-(offsets[i - 1] - offsets[i]) / lifetime));
+            stepFoam(time_s - offsets[i], decay, last);
         }
     }
 
@@ -245,8 +253,19 @@ private:
     // (what the window still holds), make foam where the surface folds.
     // The mipmaps are for drawing (the far foam's mean); a step reads only
     // the base level.
-    void stepFoam(float decay, bool mipmaps = true)
+    // Before the history's start there is no foam: the windows are cleared.
+    void stepFoam(double time_s, float decay, bool mipmaps = true)
     {
+        if (time_s < settings_.historyStart_s) {
+            const float zero = 0.0f;
+            for (int level = 0; level <= SWELL_FOAM_LOG2_SIZE; ++level)
+                glClearTexImage(foam_.id(), level, GL_RED, GL_FLOAT, &zero);
+            for (int level = 0; level < kFoamLevels; ++level)
+                previousOrigin_[size_t(level)] = windows_[size_t(level)].origin;
+            foamStepped_ = true;
+            return;
+        }
+        ++work_.foamSteps;
         glUseProgram(foamStep_.id());
         glUniform1f(decayLocation_, decay);
         glUniform1f(thresholdLocation_, foldThreshold_);
@@ -295,6 +314,7 @@ private:
         glBindImageTexture(1, omega_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RG32UI);
         glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
         glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+        ++work_.transforms;
         glDispatchCompute(kSize / 16, kSize / 16, GLuint(cascades));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         // One workgroup per row (then column) of each cascade.

@@ -21,6 +21,15 @@ int wrapped(double index) { return std::int32_t(std::uint32_t(std::int64_t(index
 
 } // namespace
 
+std::vector<double> foamReplayOffsets_s(double lifetime_s)
+{
+    const auto steps = std::int64_t(std::ceil(kFoamReplayLifetimes * lifetime_s / kFoamReplayStep_s));
+    std::vector<double> offsets;
+    for (std::int64_t i = steps; i >= 0; --i)
+        offsets.push_back(double(i) * kFoamReplayStep_s);
+    return offsets;
+}
+
 FoamWindow foamWindowAt(glm::dvec2 gridCenter_m, double texel_m)
 {
     const glm::dvec2 texels = gridCenter_m / texel_m;

@@ -13,19 +13,33 @@
 
 #include <glm/vec2.hpp>
 
+#include <vector>
+
 namespace swell::spectral {
 
 inline constexpr int kFoamSize = SWELL_FOAM_SIZE;
 inline constexpr int kFoamLevels = SWELL_FOAM_LEVELS;
 
 // Foam needs the history of the breaking: a frame that follows the last by
-// more than kLongestFoamStep_s, or goes back in time, first replays
-// kFoamReplayLifetimes foam lifetimes at kFoamReplayStep_s steps, so a still
-// at any time shows the foam a sequence arriving there would (the same for
-// every still at that time).
+// more than kLongestFoamStep_s, or goes back in time, first replays the
+// foam's history on the steps foamReplayOffsets_s() gives, so a still at any
+// time shows the foam a sequence arriving there would (the same for every
+// still at that time). An interactive renderer (the viewer) never replays
+// on a frame later than the last: it takes one step, however long.
 inline constexpr double kLongestFoamStep_s = 1.0;
+// The replay steps every kFoamReplayStep_s over kFoamReplayLifetimes
+// lifetimes: the lattice a sequence of frames takes, so the replayed foam is
+// the sequence's but for what its first frame carried in. Its cost grows
+// with the lifetime (20 steps at 3.85 s, 300 at 60 s): sparser steps before
+// the last 10 s (36 in all at 60 s) were tried and missed too many
+// breakings (the foam cover of a 60 s-lifetime still fell from 0.44 to 0.27).
 inline constexpr double kFoamReplayStep_s = 0.5;
 inline constexpr double kFoamReplayLifetimes = 2.5;
+
+// A still's replay at this foam lifetime: how long before the frame each
+// step is, s, the oldest first, the last 0 (the frame itself), each a whole
+// number of kFoamReplayStep_s.
+std::vector<double> foamReplayOffsets_s(double lifetime_s);
 
 // A level's texel, m: level 0's are those of the finest cascade that folds
 // into foam (kFoamCascades), so the foam is as sharp as the folds it marks;
