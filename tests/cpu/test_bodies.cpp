@@ -201,6 +201,9 @@ TEST(FloatingBody, SceneBodiesInLockstepMoveAsEachAlone)
     // Without the wake, which a body alone does not stir for the others
     // (test_wake_bodies.cpp shows the bodies feel it).
     scene.wake.enabled = false;
+    // From t = 0, as each body alone below starts (a scene's bodies start
+    // 60 s earlier by default: history_start_s).
+    scene.historyStart_s = 0.0;
     swell::detail::SceneBodies bodies(scene, {&mesh, &mesh, &mesh}, waves);
     EXPECT_EQ(bodies.count(), 2u);
     EXPECT_FALSE(bodies.poseAt(1, 1.0).has_value());
