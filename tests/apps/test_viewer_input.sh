@@ -5,18 +5,13 @@
 # quick Ctrl+click (press and release milliseconds apart, through xdotool's
 # XTEST, as a keyboard and mouse would). The panel must see both, Ctrl held
 # at the click (--log-input prints what ImGui saw each frame); then Esc quits.
-# Usage: test_viewer_input.sh SWELL
-# Exit 0: passed; 1: failed; 77: skipped (no xvfb-run or no xdotool).
+# Usage: under_xvfb.sh sh test_viewer_input.sh SWELL (CTest runs it so: it needs an X server)
+# Exit 0: passed; 1: failed; 77: skipped (no xdotool; under_xvfb.sh: no xvfb-run).
 set -u
 swell=$1
-for tool in xvfb-run xdotool; do
-    if ! command -v "$tool" >/dev/null 2>&1; then
-        echo "$tool is not installed (scripts/install-deps.sh installs it): skipped"
-        exit 77
-    fi
-done
-if [ -z "${SWELL_INPUT_TEST_INNER:-}" ]; then
-    SWELL_INPUT_TEST_INNER=1 exec xvfb-run -a -s "-screen 0 1024x768x24" sh "$0" "$@"
+if ! command -v xdotool >/dev/null 2>&1; then
+    echo "xdotool is not installed (scripts/install-deps.sh installs it): skipped"
+    exit 77
 fi
 
 log=$(mktemp /tmp/swell-input-XXXXXX.log)
