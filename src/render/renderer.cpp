@@ -354,7 +354,7 @@ struct Renderer::Impl {
         f.clipPlane = glm::vec4(0.0f, -1.0f, 0.0f, float(scene.reflection.clipOffset_m));
         // Underwater hook: an eye below the surface looks up through it, so
         // this pass holds the world above the water instead.
-        if (eyeUnderwater(camera, model(), time_s))
+        if (base.eyeUnderwater != 0)
             f.clipPlane = glm::vec4(0.0f, 1.0f, 0.0f, float(scene.reflection.clipOffset_m));
         setViewport(f, scaled);
         notify(true, "refraction");
