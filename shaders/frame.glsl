@@ -63,6 +63,13 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     float gridCoarseGrowth; // geometric layout: the next coarser scale's growth (its inner scale is twice this one's)
     float waveReachVertical_m; // the surface (waves and wake) stays within +- this of the mean level this frame, m
     int eyeUnderwater;      // 1 when the eye is below the surface under it (the refraction pass's choice), else 0
+    float depthNdcScale;    // NDC z = window depth * depthNdcScale + depthNdcOffset (2, -1 or 1, 0)
+    vec2 viewportOrigin;    // the pass's viewport's lower-left corner in its framebuffer, pixels
+    float depthNdcOffset;
+    float depthFar;         // the window depth of nothing drawn: 1, or 0 for reversed-Z
+    float nearNdcZ;         // NDC z of the near plane (-1, 0, or 1 reversed) and of the far one
+    float farNdcZ;
+    float projectionFocalY; // the projection's [1][1]: 1 / tan(half the vertical field of view)
     GridLevel gridLevels[SWELL_GRID_LEVELS];
     WorldBox worldBoxes[SWELL_MAX_WORLD_BOXES];
 };
@@ -70,7 +77,48 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
 // The point the real camera sees at texture coordinate uv and window depth.
 vec3 worldFromScreen(vec2 uv, float depth)
 {
-    vec4 p = cameraInvViewProj * vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0);
+    vec4 p = cameraInvViewProj * vec4(uv * 2.0 - 1.0, depth * depthNdcScale + depthNdcOffset, 1.0);
+    return p.xyz / p.w;
+}
+
+// The window depth of an NDC z, in the view's depth convention.
+float windowDepth(float ndcZ)
+{
+    return (ndcZ - depthNdcOffset) / depthNdcScale;
+}
+
+// Whether a window depth read back from a pass holds geometry (is nearer
+// than the far plane it was cleared to).
+bool depthHasGeometry(float depth)
+{
+    return depthFar > 0.5 ? depth < 1.0 : depth > 0.0;
+}
+
+// This pixel's coordinate in the pass's viewport, 0..1 (a macro: vertex
+// shaders include this file too, and have no gl_FragCoord).
+#define viewportUv() ((gl_FragCoord.xy - viewportOrigin) * viewportInvSize)
+
+// The world point (relative to the render origin) on this pass's near plane
+// at an NDC xy, and the unit direction of the eye's ray through it.
+vec3 nearPlanePoint(vec2 ndc)
+{
+    vec4 p = passInvViewProj * vec4(ndc, nearNdcZ, 1.0);
+    return p.xyz / p.w;
+}
+vec3 pixelRayDirection(vec2 ndc)
+{
+    return normalize(nearPlanePoint(ndc) - eyePosition);
+}
+
+// The far end of the ray through ndc: on the far plane, or 10^7 m along the
+// ray where the far plane is at infinity (or past that).
+vec3 farPlanePoint(vec2 ndc)
+{
+    vec3 near = nearPlanePoint(ndc);
+    vec4 p = passInvViewProj * vec4(ndc, farNdcZ, 1.0);
+    vec3 limit = near + pixelRayDirection(ndc) * 1.0e7;
+    if (p.w <= 0.0 || distance(p.xyz, near * p.w) >= 1.0e7 * p.w)
+        return limit;
     return p.xyz / p.w;
 }
 

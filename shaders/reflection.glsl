@@ -14,7 +14,7 @@ vec3 projectMirrored(vec3 p)
 {
     vec4 clip = cameraViewProj * vec4(p.x, -p.y, p.z, 1.0);
     vec3 ndc = clip.xyz / max(clip.w, 1e-6);
-    return ndc * 0.5 + 0.5;
+    return vec3(ndc.xy * 0.5 + 0.5, windowDepth(ndc.z));
 }
 
 // How much a lookup at uv can be trusted: fades to 0 over the last few
@@ -70,11 +70,11 @@ vec4 mirroredSceneAt(vec3 surface, vec3 direction, float t, out vec2 uv, out boo
 {
     vec3 p = projectMirrored(surface + direction * t);
     uv = p.xy;
-    onTexture = all(greaterThanEqual(p.xy, vec2(0.0))) && all(lessThanEqual(p.xy, vec2(1.0))) && p.z < 1.0;
+    onTexture = all(greaterThanEqual(p.xy, vec2(0.0))) && all(lessThanEqual(p.xy, vec2(1.0))) && depthHasGeometry(p.z);
     if (!onTexture)
         return vec4(0.0);
     float depth = texture(reflectionDepth, p.xy).r;
-    if (depth >= 1.0)
+    if (!depthHasGeometry(depth))
         return vec4(0.0);
     vec3 q = worldFromScreen(p.xy, depth);
     return vec4(q.x, -q.y, q.z, 1.0);
@@ -169,11 +169,11 @@ vec3 reflectRayMarch(vec3 surface, vec3 direction, bool skyOnly)
     vec2 flatUv = projectMirrored(surface).xy;
     float flatDepth = texture(reflectionDepth, flatUv).r;
     bool flatOnTexture = all(greaterThanEqual(flatUv, vec2(0.0))) && all(lessThanEqual(flatUv, vec2(1.0)));
-    bool flatShowsGeometry = flatOnTexture && flatDepth < 1.0;
+    bool flatShowsGeometry = flatOnTexture && depthHasGeometry(flatDepth);
     // The texture's angular resolution: how far apart, at distance 1 m from
     // the eye, two texels' lines of sight are.
-    float texelAngle = 2.0 / (textureSize(reflectionDepth, 0).y * cameraViewProj[1][1]);
-    float t = flatDepth < 1.0 ? dot(vec3(1.0, -1.0, 1.0) * worldFromScreen(flatUv, flatDepth) - surface, direction) : tFar;
+    float texelAngle = 2.0 / (textureSize(reflectionDepth, 0).y * projectionFocalY);
+    float t = depthHasGeometry(flatDepth) ? dot(vec3(1.0, -1.0, 1.0) * worldFromScreen(flatUv, flatDepth) - surface, direction) : tFar;
     t = clamp(t, tNear, tFar);
     int outcome = skyOnly || span.x > span.y ? kShowSky : kShowUnsettled;
     vec2 hitUv = flatUv;

@@ -15,14 +15,14 @@ vec3 refractedRadiance(vec3 surface, vec3 normal, vec2 screenUv, out float pathL
     float depth = texture(refractionDepth, uv).r;
     // The bent lookup must land on something under the water, not in front of it.
     vec3 below = worldFromScreen(uv, depth);
-    if (depth < 1.0 && below.y > surface.y) {
+    if (depthHasGeometry(depth) && below.y > surface.y) {
         uv = screenUv;
         depth = texture(refractionDepth, uv).r;
         below = worldFromScreen(uv, depth);
     }
-    pathLength_m = depth >= 1.0 ? 1e6 : max(distance(surface, below), 0.0);
+    pathLength_m = !depthHasGeometry(depth) ? 1e6 : max(distance(surface, below), 0.0);
     vec3 transmitted = exp(-waterAbsorption * pathLength_m);
-    vec3 seen = depth >= 1.0 ? vec3(0.0) : texture(refractionColor, uv).rgb;
+    vec3 seen = !depthHasGeometry(depth) ? vec3(0.0) : texture(refractionColor, uv).rgb;
     return seen * transmitted + waterDeep * (1.0 - transmitted);
 }
 #endif

@@ -13,9 +13,7 @@ out vec4 fragColor;
 
 void main()
 {
-    vec4 far = passInvViewProj * vec4(vNdc, 1.0, 1.0);
-    vec4 near = passInvViewProj * vec4(vNdc, -1.0, 1.0);
-    vec3 direction = normalize(far.xyz / far.w - near.xyz / near.w);
+    vec3 direction = pixelRayDirection(vNdc);
     vec3 color = applyFog(skyRadianceFiltered(direction), skyDistance(direction));
     // Underwater hook: below the surface, what no geometry covers is the
     // water's depths (underwater.glsl).

@@ -22,15 +22,6 @@
 
 layout(binding = SWELL_UNIT_WATERLINE) uniform sampler2D waterlineMask;
 
-// The unit direction this pixel looks along, in this pass's camera.
-vec3 pixelViewDirection()
-{
-    vec2 ndc = gl_FragCoord.xy * viewportInvSize * 2.0 - 1.0;
-    vec4 far = passInvViewProj * vec4(ndc, 1.0, 1.0);
-    vec4 near = passInvViewProj * vec4(ndc, -1.0, 1.0);
-    return normalize(far.xyz / far.w - near.xyz / near.w);
-}
-
 // Whether this pixel's ray starts (at the near plane) below the water.
 // Mask values: SWELL_WATERLINE_ABOVE or _BELOW where the ray meets the
 // surface; SWELL_WATERLINE_NO_HIT where it meets no drawn water, so its whole
@@ -65,16 +56,14 @@ bool pixelUnderwater()
 #if !SWELL_SEEN_FROM_BELOW
     return false;
 #else
-    ivec2 texel = min(ivec2(gl_FragCoord.xy), textureSize(waterlineMask, 0) - 1);
+    ivec2 texel = min(ivec2(gl_FragCoord.xy - viewportOrigin), textureSize(waterlineMask, 0) - 1);
     float m = texelFetch(waterlineMask, texel, 0).r;
     if (m > 0.75)
         return true;
     if (m > 0.25)
         return false;
-    vec2 ndc = gl_FragCoord.xy * viewportInvSize * 2.0 - 1.0;
-    vec4 near = passInvViewProj * vec4(ndc, -1.0, 1.0);
-    vec4 far = passInvViewProj * vec4(ndc, 1.0, 1.0);
-    float endY = noDrawnWaterEnd(near.xyz / near.w, far.xyz / far.w).y;
+    vec2 ndc = viewportUv() * 2.0 - 1.0;
+    float endY = noDrawnWaterEnd(nearPlanePoint(ndc), farPlanePoint(ndc)).y;
     if (endY < -waveReachVertical_m)
         return true;
     if (endY > waveReachVertical_m)

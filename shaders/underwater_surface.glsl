@@ -25,7 +25,7 @@ vec3 lightFromAbove(vec3 p, vec3 normalUp, vec3 t, vec2 screenUv)
     float depth = texture(refractionDepth, uv).r;
     // Only what really lies above this point of the surface (the pass holds
     // the world below instead while the eye is above the water).
-    if (depth < 1.0 && worldFromScreen(uv, depth).y <= p.y)
+    if (depthHasGeometry(depth) && worldFromScreen(uv, depth).y <= p.y)
         world = vec4(0.0);
     return world.rgb + applyFog(skyRadiance(t), skyDistance(t)) * (1.0 - world.a);
 }

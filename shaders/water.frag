@@ -78,7 +78,7 @@ void main()
     // from below).
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
     if (pixelUnderwater()) {
-        fragColor = passOutput(surfaceFromBelow(vPosition, n, gl_FragCoord.xy * viewportInvSize));
+        fragColor = passOutput(surfaceFromBelow(vPosition, n, viewportUv()));
         return;
     }
 #endif
@@ -92,7 +92,7 @@ void main()
     vec3 reflected = skyHorizon;
 #endif
 #if SWELL_HAS_TERM(SWELL_TERM_REFRACTION)
-    vec2 screenUv = gl_FragCoord.xy * viewportInvSize;
+    vec2 screenUv = viewportUv();
     float path_m;
     vec3 refracted = refractedRadiance(vPosition, n, screenUv, path_m);
 #else

@@ -33,11 +33,13 @@ struct SWELL_API DrawnPoint {
 class SWELL_API DrawnSurface {
 public:
     // The surface `model` draws on the grid `shape` for a camera at eye_m
-    // (absolute world, m) at time_s, plus `wake` (the bodies' wake as this
-    // frame draws it; library-internal, null for none). Keeps a reference
-    // to `model`: it must outlive this object.
+    // (relative to the water's mean level, m: the sea's frame) at time_s,
+    // plus `wake` (the bodies' wake as this frame draws it; library-internal,
+    // null for none). Answers in the world's frame: with the mean level
+    // level_m (Scene::water.level_m) added to every height. Keeps a
+    // reference to `model`: it must outlive this object.
     DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
-                 double time_s, std::shared_ptr<const detail::WakeFrame> wake = nullptr);
+                 double time_s, std::shared_ptr<const detail::WakeFrame> wake = nullptr, double level_m = 0.0);
 
     // The drawn water under world point (x, z). Empty only where no triangle
     // covers the point, which happens nowhere on the unbounded grid except
@@ -63,6 +65,7 @@ private:
     glm::dvec3 eye_m_;
     double time_s_;
     std::shared_ptr<const detail::WakeFrame> wake_;
+    double level_m_ = 0.0;
 };
 
 } // namespace swell

@@ -1,12 +1,18 @@
-// The ocean renderer: draws a Scene with a Camera at a simulation time into a
-// framebuffer of the current OpenGL 4.5 context. Passes:
-//   1  reflection: sky and world mirrored about the water plane (colour + depth)
-//   1b refraction: the world below the water plane (colour + depth)
-//   2  main: the world, the closed volumes of open hulls into depth only,
-//      the water depth-tested against both, then the sky where nothing is
-//   present: when the scene's antialiasing is on or the render scale is not
-//      1, the main pass drew into its own target: resolved (MSAA), filtered
-//      (FXAA) and scaled (bilinear) into the output framebuffer
+// The ocean renderer. Simulation and drawing are apart: advanceTo() moves the
+// ocean, the floating bodies and their wake to an absolute time; draw()
+// draws one view of that time into a host's frame, as often as there are
+// views (split screen, two eyes), without simulating again. render() does
+// both for a Swell Camera, with Swell owning the frame. Passes of a view:
+//   1  reflection: the world (the host's geometry through swell/view.h's
+//      callback, Swell's own scene world through the same) mirrored about
+//      the sea level, then the sky (colour + depth)
+//   1b refraction: the world below the sea level (colour + depth)
+//   2  main: into the host's framebuffer, depth-tested against what the host
+//      drew (render(): cleared, the world drawn first, and the closed volumes
+//      of open hulls into depth only), the water, then the sky where nothing is
+//   present (render() only): when the scene's antialiasing is on or the
+//      render scale is not 1, the main pass drew into its own target:
+//      resolved (MSAA), filtered (FXAA) and scaled (bilinear) into the output
 #pragma once
 
 #include "swell/export.h"
@@ -16,6 +22,7 @@
 #include "swell/gl/shader_sources.h"
 #include "swell/image.h"
 #include "swell/scene.h"
+#include "swell/view.h"
 #include "swell/wave_model.h"
 
 #include <glm/mat4x4.hpp>
@@ -23,6 +30,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace swell {
@@ -47,11 +55,14 @@ struct SWELL_API RendererOptions {
     unsigned omittedWaterTerms = 0;
 };
 
-// Triangles and draw calls of the last frame, for the benchmark and tests.
+// What the last advanceTo() did, and what the views drawn since drew (their
+// sums), for the benchmark and tests. advanceTo() starts them again.
 struct SWELL_API FrameCounters {
     long long waterTriangles = 0;
     long long worldTriangles = 0;
     int drawCalls = 0;
+    int views = 0;             // views drawn since the last advanceTo()
+    int simulationSteps = 0;   // 1 when the last advanceTo() moved the simulation to a new time or viewpoint
     int floatingBodies = 0;  // rigid bodies in the scene (swell/floating_body.h)
     long long bodySteps = 0; // their integration steps taken for this frame (1/120 s each, all bodies)
     long long wakeSteps = 0; // steps of their wake field taken for this frame (1/30 s each)
@@ -97,11 +108,18 @@ public:
     void setWaveModel(std::shared_ptr<const WaveModel> model);
 
     // The water exactly as render() draws it for this camera and time: the
-    // grid's triangles (swell/drawn_surface.h). Put things on the water the
-    // user sees with it. Valid until the next setScene() or setWaveModel().
+    // grid's triangles (swell/drawn_surface.h), in absolute world
+    // coordinates (the sea level added). Put things on the water the user
+    // sees with it. Changes nothing: at a time other than the simulated one
+    // it steps a copy of the bodies' wake there. Valid until the next
+    // setScene() or setWaveModel().
     DrawnSurface drawnSurface(const Camera& camera, double time_s) const;
-    // Each scene object's transform (object to absolute world, m) in the last
-    // frame drawn or captured: floating objects sit on drawnSurface().
+    // The same for a view whose grid detail is centred at `lodViewpoint_m`
+    // (View::lodViewpoint_m, or its eye), at the simulated time. Throws
+    // swell::Error before the first advanceTo().
+    DrawnSurface drawnSurface(glm::dvec3 lodViewpoint_m) const;
+    // Each scene object's transform (object to absolute world, m) at the
+    // simulated time: floating objects sit on drawnSurface().
     std::vector<glm::dmat4> objectTransforms() const;
     // Draws every pass at `scale` times the output's size (each side, rounded)
     // and scales the image to the output with a bilinear filter: 0.5 costs
@@ -114,8 +132,32 @@ public:
     // the old programs stay in use and the error is thrown.
     void reloadShaders();
 
-    // Draws one frame into `framebuffer` (0: the default one) of `size` pixels.
-    // A zero-sized frame draws nothing.
+    // The simulation: moves the ocean (the spectral model's fields and its
+    // foam), the floating bodies and their wake to time_s (absolute, s; any
+    // order, stills and videos reproduce it exactly), around `viewpoint_m`
+    // (absolute world, m): where the foam's windows are centred and the
+    // drawn surface that non-rigid floating objects sit on. Calling it again
+    // with the same time and viewpoint does nothing.
+    void advanceTo(double time_s, glm::dvec3 viewpoint_m);
+    // The time the last advanceTo() reached; empty before the first, and
+    // after a setScene() or setWaveModel() that changed the simulation.
+    std::optional<double> simulatedTime_s() const;
+
+    // Draws one view of the simulated time into the host's `framebuffer`
+    // (0: the default one) at view.viewport, compositing: it clears nothing,
+    // tests the water against the depth the host drew, and writes only
+    // where water (or, if asked, sky) is. The reflection and refraction see
+    // options.geometry through its callback. Restores the GL state it
+    // changes (docs/LIBRARY.md lists it). Throws swell::Error, with the
+    // host's framebuffer as it was, before any advanceTo(), for an empty
+    // viewport, a projection that cannot be inverted, a framebuffer that is
+    // incomplete or has no depth, or a callback that leaves a GL error.
+    void draw(const View& view, unsigned framebuffer, const DrawOptions& options = {});
+
+    // Swell owns the frame: advances to time_s at the camera and draws one
+    // frame of `size` pixels into `framebuffer` (0: the default one),
+    // cleared first, with the scene's own world and sky, antialiasing and
+    // render scale. A zero-sized frame draws nothing.
     void render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer = 0);
     // Draws one frame offscreen and reads it back (top row first).
     Image renderImage(const Camera& camera, double time_s, glm::ivec2 size);

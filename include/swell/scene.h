@@ -99,6 +99,11 @@ struct SWELL_API WaterSettings {
     double shininess = 400.0;                     // Phong specular exponent, 1..10000
     double specularStrength = 1.0;                // 0..10
     double refractionDistortion = 0.05;           // how much the normal bends the refraction lookup, 0..1
+    // The water's mean level: the height of the surface at rest, absolute
+    // world y, m (a lake in the hills lies at hundreds of metres). Wave
+    // models and their queries work relative to it; DrawnSurface, the
+    // floating objects and the renderer add it.
+    double level_m = 0.0;
 };
 
 struct SWELL_API ReflectionSettings {

@@ -35,9 +35,9 @@ glm::dvec2 xz(glm::dvec3 p) { return {p.x, p.z}; }
 } // namespace
 
 DrawnSurface::DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
-                           double time_s, std::shared_ptr<const detail::WakeFrame> wake)
+                           double time_s, std::shared_ptr<const detail::WakeFrame> wake, double level_m)
     : model_(model), shape_(shape), fade_(fade), placement_(placeGrid(shape, eye_m)), eye_m_(eye_m), time_s_(time_s),
-      wake_(std::move(wake))
+      wake_(std::move(wake)), level_m_(level_m)
 {
 }
 
@@ -52,7 +52,7 @@ glm::dvec3 DrawnSurface::vertex(int i, int j) const
     const glm::dvec3 d =
         model_.displacementAt(rest, time_s_, SurfaceFilter{point.cellSize_m, horizonFadeAt(fade_, distance_m)});
     const double wake_m = wake_ ? wake_->heightAt(rest) : 0.0;
-    return glm::dvec3(rest.x, wake_m, rest.y) + d;
+    return glm::dvec3(rest.x, level_m_ + wake_m, rest.y) + d;
 }
 
 glm::ivec2 DrawnSurface::restCellOf(glm::dvec2 r) const

@@ -157,13 +157,13 @@ GridBounds gridBounds(const GridShape& shape, const GridPlacement& placement, co
     return out;
 }
 
-Frustum frustumPlanes(const glm::dmat4& m)
+Frustum frustumPlanes(const glm::dmat4& m, bool zeroToOne)
 {
     const glm::dvec4 row0(m[0][0], m[1][0], m[2][0], m[3][0]);
     const glm::dvec4 row1(m[0][1], m[1][1], m[2][1], m[3][1]);
     const glm::dvec4 row2(m[0][2], m[1][2], m[2][2], m[3][2]);
     const glm::dvec4 row3(m[0][3], m[1][3], m[2][3], m[3][3]);
-    return {row3 + row0, row3 - row0, row3 + row1, row3 - row1, row3 + row2, row3 - row2};
+    return {row3 + row0, row3 - row0, row3 + row1, row3 - row1, zeroToOne ? row2 : row3 + row2, row3 - row2};
 }
 
 Containment frustumContains(const Frustum& frustum, const Bounds& box)

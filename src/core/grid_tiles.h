@@ -63,11 +63,13 @@ struct GridBounds {
 GridBounds gridBounds(const GridShape& shape, const GridPlacement& placement, const TiledGrid& grid, const WaveReach& reach);
 
 // The six planes (a, b, c, d) of a view-projection's clip volume: a point p is
-// inside when dot(plane, (p, 1)) >= 0 for all six (OpenGL clip z in -w..w).
+// inside when dot(plane, (p, 1)) >= 0 for all six: clip z in -w..w (GL's
+// default), or in 0..w when zeroToOne (glClipControl's GL_ZERO_TO_ONE, the
+// convention of reversed-Z; an infinite far plane leaves that plane empty).
 // A box is Outside when it lies wholly outside one plane (conservative: a box
 // past a corner of the frustum may count as Partly), Inside when wholly inside all.
 using Frustum = std::array<glm::dvec4, 6>;
-Frustum frustumPlanes(const glm::dmat4& viewProj);
+Frustum frustumPlanes(const glm::dmat4& viewProj, bool zeroToOne = false);
 enum class Containment { Outside, Partly, Inside };
 Containment frustumContains(const Frustum& frustum, const Bounds& box);
 

@@ -293,6 +293,9 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.water.refractionDistortion; },
            {.key = "water.refraction_distortion", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.3,
             .description = "how far the normal bends the refraction lookup"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.level_m; },
+           {.key = "water.level_m", .unit = "m", .min = -1.0e4, .max = 1.0e4, .sliderMin = -10.0, .sliderMax = 500.0,
+            .description = "the water's mean level: the height of the surface at rest (a lake at 300 m)"}),
         // [reflection]
         at([](auto& s, std::size_t) -> auto& { return s.reflection.mode; },
            {.key = "reflection.mode", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kReflectionModes.size() - 1.0,

@@ -40,7 +40,7 @@ bool sameBodies(const Scene& a, const Scene& b)
              x.dampingRatio != y.dampingRatio))
             return false;
     }
-    return bodiesStart_s(a) == bodiesStart_s(b) && a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m &&
+    return bodiesStart_s(a) == bodiesStart_s(b) && a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m && a.water.level_m == b.water.level_m &&
            a.waves.listed.depth_m == b.waves.listed.depth_m; // the wake's dispersion
 }
 

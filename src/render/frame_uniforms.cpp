@@ -6,7 +6,7 @@
 namespace swell::detail {
 
 FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, const GridPlacement& grid,
-                            const Camera& camera, const glm::dmat4& viewProj, glm::dvec3 origin, glm::ivec2 size)
+                            glm::dvec3 eye_m, const glm::dmat4& viewProj, glm::dvec3 origin, glm::ivec2 size)
 {
     FrameUniforms f{};
     f.cameraViewProj = glm::mat4(viewProj);
@@ -14,7 +14,7 @@ FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, cons
     f.passViewProj = f.cameraViewProj;
     f.passInvViewProj = f.cameraInvViewProj;
     f.clipPlane = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    f.eyePosition = glm::vec3(camera.position_m - origin);
+    f.eyePosition = glm::vec3(eye_m - origin);
     f.sunDirection = glm::vec3(glm::normalize(scene.sun.direction));
     f.sunIntensity = float(scene.sun.intensity);
     f.sunColor = glm::vec3(scene.sun.color);

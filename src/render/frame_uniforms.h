@@ -13,9 +13,10 @@
 namespace swell::detail {
 
 // viewProj maps positions relative to `origin` (the render origin, absolute
-// m); size is the output in pixels. World boxes are left for the caller.
+// m, in the sea's frame: y = 0 at its mean level, like eye_m); size is the
+// viewport in pixels. World boxes are left for the caller.
 FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, const GridPlacement& grid,
-                            const Camera& camera, const glm::dmat4& viewProj, glm::dvec3 origin, glm::ivec2 size);
+                            glm::dvec3 eye_m, const glm::dmat4& viewProj, glm::dvec3 origin, glm::ivec2 size);
 
 // Sets viewportSize and viewportInvSize for a target of `size` pixels.
 void setViewport(FrameUniforms& f, glm::ivec2 size);

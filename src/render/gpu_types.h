@@ -70,6 +70,13 @@ struct alignas(16) FrameUniforms {
     float gridCoarseGrowth;
     float waveReachVertical_m;
     int eyeUnderwater;
+    float depthNdcScale;
+    glm::vec2 viewportOrigin;
+    float depthNdcOffset;
+    float depthFar;
+    float nearNdcZ;
+    float farNdcZ;
+    float projectionFocalY;
     GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
     WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
 };

@@ -99,12 +99,12 @@ Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& va
 {
     Programs p;
     p.water = BlockProgram(build(sources, variant, "water.vert", "water.frag"));
-    p.sky = BlockProgram(build(sources, variant, "fullscreen.vert", "sky.frag"));
+    p.sky = BlockProgram(build(sources, variant, "sky.vert", "sky.frag"));
     p.waterline = BlockProgram(build(sources, variant, "water.vert", "waterline.frag"));
     p.fxaa = BlockProgram(build(sources, variant, "fullscreen.vert", "fxaa.frag"));
     p.mesh = MeshProgram(sources, variant);
     p.waterInAir = BlockProgram(build(sources, variant, "water.vert", "water.frag", kInAir));
-    p.skyInAir = BlockProgram(build(sources, variant, "fullscreen.vert", "sky.frag", kInAir));
+    p.skyInAir = BlockProgram(build(sources, variant, "sky.vert", "sky.frag", kInAir));
     p.meshInAir = MeshProgram(sources, variant, kInAir);
     p.skyBake = SkyBakeProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),

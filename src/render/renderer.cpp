@@ -5,12 +5,15 @@
 #include "swell/renderer.h"
 
 #include "render/frame_uniforms.h"
+#include "render/gl_state.h"
 #include "render/programs.h"
 #include "render/render_target.h"
+#include "render/scene_world.h"
 #include "render/sky_cubemap.h"
 #include "render/slope_statistics.h"
 #include "render/wake_texture.h"
 #include "render/water_grid.h"
+#include "render/view_setup.h"
 #include "render/waterline.h"
 #include "render/wave_model_gpu.h"
 #include "render/world.h"
@@ -23,6 +26,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -32,12 +36,25 @@ using namespace detail;
 
 namespace {
 
-enum Pass { PassReflection = 0, PassRefraction = 1, PassMain = 2, PassCount = 3 };
+// The scene with its objects moved into the sea's frame, in which the
+// water's mean level is y = 0 (Scene::water.level_m).
+Scene inSeaFrame(const Scene& scene)
+{
+    Scene sea = scene;
+    for (SceneObject& object : sea.objects)
+        object.position_m.y -= scene.water.level_m;
+    return sea;
+}
+
+enum Pass { PassReflection = 0, PassRefraction = 1, PassMain = 2, PassWaterline = 3, PassCount = 4 };
 
 } // namespace
 
 struct Renderer::Impl {
     Scene scene;
+    // The scene with its objects in the sea's frame (y = 0 at the water's
+    // mean level): what the bodies, the poses and the world's boxes use.
+    Scene seaScene;
     // The scene's wave model, and the one setWaveModel() put in its place.
     std::shared_ptr<const WaveModel> sceneModel, overrideModel;
     std::unique_ptr<WaveModelGpu> modelGpu;
@@ -48,9 +65,6 @@ struct Renderer::Impl {
     unsigned omittedWaterTerms = 0;
     ShaderVariant variant;
     Programs programs;
-    // Whether the pass being drawn has no pixel that looks out from below the
-    // water, so the programs without underwater shading draw it (programs.h).
-    bool passInAir = true;
     gl::Buffer frameUbo[PassCount];
     gl::VertexArray emptyVao;
     WaterGrid waterGrid;
@@ -65,17 +79,23 @@ struct Renderer::Impl {
     PassObserver* observer = nullptr;
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
     std::optional<SkyBakeKey> bakedSky;
-    // This frame's object transforms, one per scene object (see world.h).
-    std::vector<glm::mat4> poses;
-    // The floating rigid bodies, stepped to each frame's time (objects/scene_bodies.h),
-    // and their wake; stepped by drawnSurface() too, which is const to callers.
-    mutable SceneBodies bodies;
-    // The wake as the last frame (or drawnSurface() query) drew it, at wakeFrameTime_s.
-    mutable std::shared_ptr<const WakeFrame> wakeFrame;
-    mutable double wakeFrameTime_s = -1.0;
+
+    // The simulation's state at the time advanceTo() reached (sea frame).
+    struct Simulated {
+        double time_s = 0.0;
+        glm::dvec3 viewpoint{0.0};
+        // Each scene object's transform, object to sea frame (see world.h).
+        std::vector<glm::dmat4> poses;
+        std::shared_ptr<const WakeFrame> wake; // null when the scene has none
+        double wakeReach_m = 0.0; // the largest wake height, m
+    };
+    std::optional<Simulated> simulated;
+    // The floating rigid bodies, stepped to the simulated time (objects/scene_bodies.h).
+    SceneBodies bodies;
+    // Bodies of drawnSurface()'s queries at times other than the simulated
+    // one: stepped apart from those drawn, so a query changes no frame.
+    mutable std::optional<SceneBodies> queryBodies;
     WakeTexture wakeTexture;
-    double wakeReach_m = 0.0; // the largest wake height this frame, m
-    glm::dvec3 posesOrigin{0.0}; // the render origin poses are relative to
 
     explicit Impl(RendererOptions options)
         : sources(std::move(options.shaders)), omittedWaterTerms(options.omittedWaterTerms)
@@ -83,35 +103,32 @@ struct Renderer::Impl {
     }
 
     const WaveModel& model() const { return overrideModel ? *overrideModel : *sceneModel; }
+    double level() const { return scene.water.level_m; }
+    glm::dvec3 toSea(glm::dvec3 world_m) const { return world_m - glm::dvec3(0.0, level(), 0.0); }
 
-    // How far this frame's surface can move from rest: the model's reach,
-    // and the wake's height above it (wakeReach_m, set by prepareFrame).
-    WaveReach frameReach() const
+    // How far the simulated surface can move from rest: the model's reach,
+    // and the wake's height above it.
+    WaveReach simulatedReach() const
     {
         WaveReach reach = model().reach();
-        reach.vertical_m += wakeReach_m;
+        if (simulated)
+            reach.vertical_m += simulated->wakeReach_m;
         return reach;
     }
 
-    // The bodies' wake at time_s (null when the scene has none), stepping
-    // the bodies there: it depends on time_s alone.
-    std::shared_ptr<const WakeFrame> wakeAt(double time_s) const
+    // The water as the grid draws it around a viewpoint (sea frame), with the
+    // wake `wake`; in the sea frame, or in the world's with `level_m` added.
+    DrawnSurface drawnSurfaceAt(glm::dvec3 viewpointSea, double time_s, std::shared_ptr<const WakeFrame> wake,
+                                double level_m) const
     {
-        bodies.advanceTo(time_s);
-        if (!bodies.wake())
-            return nullptr;
-        if (!wakeFrame || wakeFrameTime_s != time_s) {
-            wakeFrame = std::make_shared<const WakeFrame>(bodies.wakeFrameAt(time_s));
-            wakeFrameTime_s = time_s;
-        }
-        return wakeFrame;
+        return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), viewpointSea, time_s,
+                            std::move(wake), level_m);
     }
 
-    // The water as the grid draws it for this camera (swell/drawn_surface.h).
-    DrawnSurface drawnSurface(const Camera& camera, double time_s) const
+    void addWork(const WaveModelGpu::Work& work)
     {
-        return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), camera.position_m, time_s,
-                            wakeAt(time_s));
+        counters.oceanTransforms += work.transforms;
+        counters.foamSteps += work.foamSteps;
     }
 
     void notify(bool begin, const char* pass) const
@@ -126,59 +143,109 @@ struct Renderer::Impl {
         waterGrid.build(gridShape);
     }
 
-    // Per-frame setup shared by drawing and capture: the render origin is the
-    // camera's x,z; the surface is phased at the snapped grid centre; object
-    // poses are computed; the water tiles in view are chosen.
-    FrameUniforms prepareFrame(const Camera& camera, double time_s, glm::ivec2 size, glm::dvec3& origin)
+    // The simulation (Renderer::advanceTo): the wave model's own work for the
+    // time (the spectral model's FFTs and foam), the bodies stepped on the
+    // CPU with fixed steps (so their poses depend on time_s alone, never on
+    // the frames before) and their wake.
+    void advanceTo(double time_s, glm::dvec3 viewpointWorld)
     {
-        origin = glm::dvec3(camera.position_m.x, 0.0, camera.position_m.z);
-        const GridPlacement grid = placeGrid(gridShape, camera.position_m);
-        // The wave model's own work for the frame (the spectral model's FFTs).
+        const glm::dvec3 viewpoint = toSea(viewpointWorld);
+        if (simulated && simulated->time_s == time_s && simulated->viewpoint == viewpoint) {
+            counters = {};
+            return;
+        }
+        counters = {};
+        counters.simulationSteps = 1;
+        Simulated next;
+        next.time_s = time_s;
+        next.viewpoint = viewpoint;
+        const GridPlacement grid = placeGrid(gridShape, viewpoint);
         notify(true, "ocean");
         modelGpu->prepareFrame(grid.center_m, time_s);
-        modelGpu->bind();
-        counters.oceanTransforms = modelGpu->lastWork().transforms;
-        counters.foamSteps = modelGpu->lastWork().foamSteps;
+        addWork(modelGpu->takeWork());
         notify(false, "ocean");
-        const glm::dmat4 viewProj = camera.projection(double(size.x) / double(size.y)) * camera.viewRelativeTo(origin);
-        FrameUniforms f = frameUniforms(scene, gridShape, grid, camera, viewProj, origin, size);
-        f.waveHeightDeviation_m = float(model().heightDeviation_m());
-        f.waveMeanSquareSlope = float(seaMeanSquareSlope);
-        // Bodies step on the CPU to this frame's time: fixed steps, so the
-        // poses depend on time_s alone, never on the frames before. Their
-        // wake steps with them (the cost of its steps counted apart).
         notify(true, "bodies");
         const std::int64_t stepsBefore = bodies.stepsTaken(), wakeStepsBefore = bodies.wakeStepsTaken();
         const double wakeBefore_ms = bodies.wakeSteps_ms();
-        const std::shared_ptr<const WakeFrame> wake = wakeAt(time_s);
-        const DrawnSurface drawn = drawnSurface(camera, time_s);
-        poses = objectPoses(scene, model(), drawn, bodies, origin, time_s);
+        bodies.advanceTo(time_s);
+        if (bodies.wake())
+            next.wake = std::make_shared<const WakeFrame>(bodies.wakeFrameAt(time_s));
+        const DrawnSurface drawn = drawnSurfaceAt(viewpoint, time_s, next.wake, 0.0);
+        next.poses = objectPoses(seaScene, model(), drawn, bodies, time_s);
         counters.floatingBodies = int(bodies.count());
         counters.bodySteps = bodies.stepsTaken() - stepsBefore;
         counters.wakeSteps = bodies.wakeStepsTaken() - wakeStepsBefore;
         counters.wakeSteps_ms = bodies.wakeSteps_ms() - wakeBefore_ms;
         notify(false, "bodies");
-        // The wake's frame: blended, its slopes found and uploaded.
+        // The wake's frame: blended, its slopes found and uploaded. It raises
+        // and lowers the water beyond the waves' reach: the grid's tiles are
+        // culled, and the near plane placed, with it.
         notify(true, "wake");
-        wakeTexture.upload(wake.get(), origin);
-        wakeTexture.bind();
-        // The wake raises and lowers the water beyond the waves' reach: the
-        // grid's tiles are culled, and the near plane placed, with it.
-        wakeReach_m = 0.0;
-        if (wake)
-            for (const glm::vec4& texel : wake->texels)
-                wakeReach_m = std::max(wakeReach_m, double(std::abs(texel.x)));
-        const WaveReach reach = frameReach();
+        wakeTexture.upload(next.wake.get());
+        if (next.wake)
+            for (const glm::vec4& texel : next.wake->texels)
+                next.wakeReach_m = std::max(next.wakeReach_m, double(std::abs(texel.x)));
         notify(false, "wake");
+        simulated = std::move(next);
+    }
+
+    // What every pass of one view shares.
+    struct ViewFrame {
+        FrameUniforms base{};
+        glm::dvec3 origin{0.0};   // the render origin, sea frame: the eye's x, z at the mean level
+        glm::dvec3 eye{0.0};      // sea frame
+        glm::dmat4 viewRelative{1.0}; // render origin relative to eye
+        glm::dmat4 viewProj{1.0};     // the view's projection of it
+        DepthConvention depth;
+        std::vector<glm::mat4> poses; // each object's transform relative to the origin
+        glm::mat4 island{1.0f};
+        glm::ivec2 size{0};       // every pass's size, pixels
+        glm::ivec4 viewport{0};   // the main pass's viewport in its framebuffer
+    };
+
+    // Per-view setup shared by drawing and capture: the render origin is the
+    // eye's x,z; the surface is phased at the snapped grid centre around the
+    // LOD viewpoint; the water tiles in view are chosen.
+    ViewFrame prepareView(const View& view, glm::ivec2 size, bool hostGeometry)
+    {
+        ViewFrame v;
+        v.size = size;
+        v.viewport = view.viewport;
+        v.depth = depthConventionOf(view.depth);
+        v.eye = toSea(view.eye_m());
+        v.origin = glm::dvec3(v.eye.x, 0.0, v.eye.z);
+        const glm::dvec3 lod = view.lodViewpoint_m ? toSea(*view.lodViewpoint_m) : v.eye;
+        const GridPlacement grid = placeGrid(gridShape, lod);
+        modelGpu->prepareView(grid.center_m);
+        addWork(modelGpu->takeWork()); // none, unless a view simulated: the counters would show it
+        modelGpu->bind();
+        // World = sea + level: relative = world - (origin + level).
+        v.viewRelative = view.view * glm::translate(glm::dmat4(1.0), v.origin + glm::dvec3(0.0, level(), 0.0));
+        v.viewProj = view.projection * v.viewRelative;
+        const glm::dmat4& viewProj = v.viewProj;
+        FrameUniforms& f = v.base;
+        f = frameUniforms(scene, gridShape, grid, v.eye, viewProj, v.origin, size);
+        setDepthConvention(f, view.depth);
+        f.projectionFocalY = float(view.projection[1][1]);
+        f.waveHeightDeviation_m = float(model().heightDeviation_m());
+        f.waveMeanSquareSlope = float(seaMeanSquareSlope);
+        wakeTexture.place(v.origin);
+        wakeTexture.bind();
+        const WaveReach reach = simulatedReach();
         // What the waterline mask's rays that meet no water are judged by
         // (shaders/underwater.glsl): the band the surface stays in, and the
         // eye's own side of it.
         f.waveReachVertical_m = float(reach.vertical_m);
-        f.eyeUnderwater = eyeUnderwater(camera, model(), time_s) ? 1 : 0;
-        posesOrigin = origin;
-        f.worldBoxCount = worldBoxes(world, scene, reach, origin, poses, f.worldBoxes);
-        waterGrid.cull(gridShape, grid, reach, viewProj, grid.center_m - glm::dvec2(origin.x, origin.z));
-        return f;
+        f.eyeUnderwater = eyeUnderwater(v.eye, model(), simulated->time_s) ? 1 : 0;
+        for (const glm::dmat4& pose : simulated->poses)
+            v.poses.emplace_back(glm::translate(glm::dmat4(1.0), -v.origin) * pose);
+        v.island = glm::mat4(glm::translate(glm::dmat4(1.0), kIslandPosition_m - v.origin));
+        // A host's geometry has no boxes Swell knows of: every reflected ray
+        // is marched.
+        f.worldBoxCount =
+            hostGeometry ? -1 : worldBoxes(world, seaScene, reach, v.origin, simulated->poses, f.worldBoxes);
+        waterGrid.cull(gridShape, grid, reach, viewProj, v.depth.zeroToOne(), grid.center_m - glm::dvec2(v.origin.x, v.origin.z));
+        return v;
     }
 
     void bindFrame(Pass pass, const FrameUniforms& f)
@@ -187,63 +254,22 @@ struct Renderer::Impl {
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_FRAME, frameUbo[pass].id());
     }
 
-    const MeshProgram& meshProgram() const { return passInAir ? programs.meshInAir : programs.mesh; }
-
-    void drawWorld(glm::dvec3 origin)
+    void drawSky(bool inAir, const DepthConvention& depth)
     {
-        const MeshProgram& mesh = meshProgram();
-        mesh.use();
-        const GpuMesh& island = world.island;
-        if (island.indexCount() > 0) {
-            mesh.setModel(glm::mat4(glm::translate(glm::dmat4(1.0), kIslandPosition_m - origin)));
-            island.draw();
-            counters.worldTriangles += island.indexCount() / 3;
-            ++counters.drawCalls;
-        }
-        for (size_t i = 0; i < world.meshes.size(); ++i) {
-            mesh.setModel(poses[i]);
-            world.meshes[i]->draw();
-            counters.worldTriangles += world.meshes[i]->indexCount() / 3;
-            ++counters.drawCalls;
-        }
-    }
-
-    // Pass 3's clean intersections: each open hull's closed volume is drawn
-    // into depth only, after the world and before the water. Its outer surface
-    // coincides with the hull's, so only its lid at the gunwale changes the
-    // depth buffer: a ray into the open hull meets the lid before the water
-    // inside, and that water fails the depth test. (The reflection and
-    // refraction passes draw no water, so they need no mask.)
-    void drawHullVolumes()
-    {
-        const MeshProgram& mesh = meshProgram();
-        mesh.use();
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        for (size_t i = 0; i < world.hullVolumes.size(); ++i)
-            if (world.hullVolumes[i]) {
-                mesh.setModel(poses[i]);
-                world.hullVolumes[i]->draw();
-                ++counters.drawCalls;
-            }
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    }
-
-    void drawSky()
-    {
-        (passInAir ? programs.skyInAir : programs.sky).use();
+        (inAir ? programs.skyInAir : programs.sky).use();
         glBindTextureUnit(SWELL_UNIT_SKY, world.skyCube.id());
-        glDepthFunc(GL_LEQUAL);
+        glDepthFunc(depth.testOrFar);
         glDepthMask(GL_FALSE);
         glBindVertexArray(emptyVao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         ++counters.drawCalls;
         glDepthMask(GL_TRUE);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(depth.test);
     }
 
-    void drawWater()
+    void drawWater(bool inAir)
     {
-        (passInAir ? programs.waterInAir : programs.water).use();
+        (inAir ? programs.waterInAir : programs.water).use();
         glBindTextureUnit(SWELL_UNIT_SKY, world.skyCube.id());
         glBindTextureUnit(SWELL_UNIT_REFLECTION_COLOR, reflection.color());
         glBindTextureUnit(SWELL_UNIT_REFLECTION_DEPTH, reflection.depth());
@@ -260,17 +286,20 @@ struct Renderer::Impl {
 
     // The waterline mask for the main pass (render/waterline.h): drawn from
     // the water grid when the near plane can lie on either side of the
-    // waves, else cleared to the side it lies on. Expects the main pass's
-    // frame uniforms bound.
-    void drawWaterline(NearPlaneMedium medium, glm::ivec2 size)
+    // waves, else cleared to the side it lies on. Draws into its own target
+    // with its own frame uniforms (the viewport at its origin).
+    void drawWaterline(NearPlaneMedium medium, const ViewFrame& v)
     {
-        waterline.resize(size);
+        waterline.resize(v.size);
         if (medium != NearPlaneMedium::Both) {
             waterline.fill(medium);
             return;
         }
         notify(true, "waterline");
-        beginPass(waterline.framebuffer(), size, glm::vec4(SWELL_WATERLINE_NO_HIT));
+        FrameUniforms f = v.base;
+        f.viewportOrigin = glm::vec2(0.0f);
+        bindFrame(PassWaterline, f);
+        beginPass(waterline.framebuffer(), glm::ivec4(0, 0, v.size), v.depth, glm::vec4(SWELL_WATERLINE_NO_HIT));
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.allAbove()); // never the target itself
         programs.waterline.use();
         wakeTexture.bind();
@@ -280,52 +309,126 @@ struct Renderer::Impl {
         notify(false, "waterline");
     }
 
-    // Every pass sets all the state it depends on, so passes can be reordered.
-    void beginPass(GLuint framebuffer, glm::ivec2 size, glm::vec4 clear)
+    // Every pass sets all the state it depends on, so passes can be
+    // reordered; a clear colour clears colour and depth, none keeps both.
+    void beginPass(GLuint framebuffer, glm::ivec4 viewport, const DepthConvention& depth,
+                   std::optional<glm::vec4> clear)
     {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glViewport(0, 0, size.x, size.y);
+        setPassState(viewport, depth);
+        if (clear) {
+            glClearColor(clear->r, clear->g, clear->b, clear->a);
+            glClearDepth(depth.cleared);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        }
+    }
+
+    void setPassState(glm::ivec4 viewport, const DepthConvention& depth)
+    {
+        glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
         glDisable(GL_BLEND);
         glDisable(GL_CULL_FACE);
         glDisable(GL_SCISSOR_TEST);
+        glDisable(GL_RASTERIZER_DISCARD);
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(depth.test);
         glDepthMask(GL_TRUE);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        // The shaders write display-ready (sRGB-encoded) colour: a host that
-        // enabled sRGB writes would have it encoded twice.
+        glClipControl(GL_LOWER_LEFT, depth.clipDepth);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        // The shaders write display-ready (sRGB-encoded) colour, or linear
+        // colour for a linear target: never encoded again on the way.
         glDisable(GL_FRAMEBUFFER_SRGB);
         // Filter across cubemap face edges (off by default even in core profiles).
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-        glClearColor(clear.r, clear.g, clear.b, clear.a);
-        glClearDepth(1.0);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
 
-    void render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer)
+    // Calls a host's geometry for a pass and puts back the state the pass
+    // draws with: the host may change any of it.
+    void drawHost(PassGeometry& geometry, const PassView& pass, Pass uniforms, const FrameUniforms& f,
+                  GLuint framebuffer, bool mirrored)
     {
-        counters = {};
-        if (outputSize.x <= 0 || outputSize.y <= 0)
-            return;
-        // Every pass works at the render scale; present() brings the main
-        // pass's image to the output's size.
-        const glm::ivec2 size = scaledFrameSize(outputSize, renderScale);
-        glm::dvec3 origin;
-        const FrameUniforms base = prepareFrame(camera, time_s, size, origin);
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        geometry.drawPass(pass);
+        const GLenum error = glGetError();
+        if (error != GL_NO_ERROR)
+            throw Error(fmt::format("the host's geometry left GL error 0x{:04x} in the {} pass", error,
+                                    passName(pass.pass)));
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        setPassState(pass.viewport, depthConventionOf(pass.depth));
+        glFrontFace(mirrored ? GL_CW : GL_CCW);
+        if (pass.pass == PassKind::Reflection || pass.pass == PassKind::Refraction)
+            glEnable(GL_CLIP_DISTANCE0);
+        bindFrame(uniforms, f);
+        modelGpu->bind();
+        wakeTexture.bind();
+    }
+
+    static const char* passName(PassKind pass)
+    {
+        switch (pass) {
+        case PassKind::Reflection: return "reflection";
+        case PassKind::Refraction: return "refraction";
+        case PassKind::Main: return "main";
+        case PassKind::WaterMask: return "water mask";
+        }
+        return "?";
+    }
+
+    // The geometry of a pass: Swell's own world and the host's, each through
+    // the same callback; the pass's view in absolute world coordinates.
+    void drawGeometry(PassKind kind, SceneWorld* own, PassGeometry* host, const View& view, const ViewFrame& v,
+                      Pass uniforms, const FrameUniforms& f, GLuint framebuffer, glm::ivec4 viewport)
+    {
+        const bool mirrored = kind == PassKind::Reflection;
+        PassView pass;
+        pass.pass = kind;
+        pass.view = mirrored ? view.view * mirrorAbout(level()) : view.view;
+        pass.projection = view.projection;
+        pass.viewport = viewport;
+        pass.depth = view.depth;
+        const glm::dvec3 eye = view.eye_m();
+        pass.eye_m = mirrored ? glm::dvec3(eye.x, 2.0 * level() - eye.y, eye.z) : eye;
+        // The pass's clip plane, relative to the render origin, is the
+        // world's plane moved by the origin (its y at the sea level).
+        const glm::dvec4 plane(f.clipPlane);
+        pass.clipPlane_m = glm::dvec4(glm::dvec3(plane), plane.w - plane.y * level());
+        glFrontFace(mirrored ? GL_CW : GL_CCW);
+        if (own)
+            own->drawPass(pass);
+        if (host)
+            drawHost(*host, pass, uniforms, f, framebuffer, mirrored);
+        glFrontFace(GL_CCW);
+    }
+
+    // The passes of one view. ownsFrame: render()'s frame (cleared, the main
+    // pass through mainTarget at the render scale); else draw()'s
+    // compositing into the host's framebuffer at the view's viewport.
+    void drawView(const View& view, GLuint framebuffer, const DrawOptions& options, bool ownsFrame,
+                  glm::ivec2 outputSize)
+    {
+        const glm::ivec2 size = ownsFrame ? scaledFrameSize(outputSize, renderScale) : glm::ivec2(view.viewport.z, view.viewport.w);
+        ViewFrame v = prepareView(view, size, options.geometry != nullptr);
+        ++counters.views;
+        SceneWorld own(world, programs.meshInAir, programs.mesh, v.poses, v.island, counters);
+        SceneWorld* ownWorld = options.sceneWorld ? &own : nullptr;
+        const FrameUniforms& base = v.base;
         // The procedural sky is baked into the cubemap when first needed and
         // after the sun or sky changed (the bake reads the frame uniforms).
         if (scene.sky.cubemapFaces.empty() && bakedSky != skyBakeKeyOf(scene)) {
             bindFrame(PassMain, base);
+            glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
             bakeProceduralSky(programs.skyBake, world.skyCube, emptyVao.id());
             bakedSky = skyBakeKeyOf(scene);
         }
         const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
+        const glm::ivec4 passViewport(0, 0, scaled);
         reflection.resize(scaled);
         refraction.resize(scaled);
         // Passes before the main one see nothing from below the water.
         waterline.resize(size);
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.allAbove());
-        passInAir = true;
 
         // Pass 1: the world mirrored about the water plane, clipped just below it.
         FrameUniforms f = base;
@@ -337,16 +440,16 @@ struct Renderer::Impl {
         setViewport(f, scaled);
         notify(true, "reflection");
         bindFrame(PassReflection, f);
-        beginPass(reflection.framebuffer(), scaled, glm::vec4(0.0f));
+        beginPass(reflection.framebuffer(), passViewport, v.depth, glm::vec4(0.0f));
         glEnable(GL_CLIP_DISTANCE0);
         // The mirror turns every triangle's winding around on screen: without
-        // this the faces seen would count as back faces, and mesh.frag, which
-        // turns a back face's normal round, would light each object's
-        // reflection from the wrong side (a dark rock mirrored pale).
-        glFrontFace(GL_CW);
-        drawWorld(origin);
-        glFrontFace(GL_CCW);
-        drawSky();
+        // the front face turned too, the faces seen would count as back
+        // faces, and mesh.frag, which turns a back face's normal round,
+        // would light each object's reflection from the wrong side.
+        drawGeometry(PassKind::Reflection, ownWorld, options.geometry, view, v, PassReflection, f,
+                     reflection.framebuffer(), passViewport);
+        glDisable(GL_CLIP_DISTANCE0);
+        drawSky(true, v.depth);
         notify(false, "reflection");
 
         // Pass 1b: the world below the water, for refraction.
@@ -359,43 +462,98 @@ struct Renderer::Impl {
         setViewport(f, scaled);
         notify(true, "refraction");
         bindFrame(PassRefraction, f);
-        beginPass(refraction.framebuffer(), scaled, glm::vec4(0.0f));
-        drawWorld(origin);
+        beginPass(refraction.framebuffer(), passViewport, v.depth, glm::vec4(0.0f));
+        glEnable(GL_CLIP_DISTANCE0);
+        drawGeometry(PassKind::Refraction, ownWorld, options.geometry, view, v, PassRefraction, f,
+                     refraction.framebuffer(), passViewport);
         glDisable(GL_CLIP_DISTANCE0);
         notify(false, "refraction");
 
-        // Pass 2: world, then the water depth-tested against it, so objects
-        // crossing the surface meet it cleanly; the sky last, only where
-        // nothing else was drawn (its depth test passes at the far plane
-        // alone), so its shader runs on the visible sky's pixels only.
+        // Pass 2: the world (Swell's frame only: a host drew its own), the
+        // water depth-tested against it, so objects crossing the surface meet
+        // it cleanly; the sky last, only where nothing else was drawn (its
+        // depth test passes at the far plane alone), so its shader runs on
+        // the visible sky's pixels only.
         f = base;
-        f.passEncodesSrgb = 1;
-        bindFrame(PassMain, f);
+        f.passEncodesSrgb = options.encoding == OutputEncoding::Srgb ? 1 : 0;
         // The waterline mask is drawn at the main pass's size, so the main
         // pass (multisampled or not) reads it on the same pixel grid.
-        const NearPlaneMedium medium = nearPlaneMedium(camera, double(size.x) / double(size.y), frameReach());
-        drawWaterline(medium, size);
+        const WaveReach reach = simulatedReach();
+        const NearPlaneMedium medium = nearPlaneMedium(nearPlaneCorners(glm::inverse(v.viewProj), v.depth.nearNdcZ), reach);
+        drawWaterline(medium, v);
         glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline.texture());
-        passInAir = medium == NearPlaneMedium::Air;
+        const bool inAir = medium == NearPlaneMedium::Air;
+        own.setMainPassInAir(inAir);
         notify(true, "main");
-        const GLuint mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
-        beginPass(mainFramebuffer, size, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-        drawWorld(origin);
-        drawHullVolumes();
+        GLuint mainFramebuffer = framebuffer;
+        glm::ivec4 mainViewport = view.viewport;
+        if (ownsFrame) {
+            mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
+            mainViewport = glm::ivec4(0, 0, size);
+        }
+        f.viewportOrigin = glm::vec2(mainViewport.x, mainViewport.y);
+        bindFrame(PassMain, f);
+        beginPass(mainFramebuffer, mainViewport, v.depth,
+                  ownsFrame ? std::optional<glm::vec4>(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)) : std::nullopt);
+        if (ownsFrame) {
+            drawGeometry(PassKind::Main, ownWorld, options.geometry, view, v, PassMain, f, mainFramebuffer, mainViewport);
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            drawGeometry(PassKind::WaterMask, ownWorld, options.geometry, view, v, PassMain, f, mainFramebuffer,
+                         mainViewport);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        } else if (ownWorld) {
+            // The host drew its opaque scene; Swell's own world joins it.
+            drawGeometry(PassKind::Main, ownWorld, nullptr, view, v, PassMain, f, mainFramebuffer, mainViewport);
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            drawGeometry(PassKind::WaterMask, ownWorld, nullptr, view, v, PassMain, f, mainFramebuffer, mainViewport);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        }
         notify(true, "water");
-        drawWater();
+        drawWater(inAir);
         notify(false, "water");
-        drawSky();
+        if (ownsFrame || options.sky)
+            drawSky(inAir, v.depth);
         notify(false, "main");
 
         // The MSAA resolve, the FXAA filter and the render scale's filtering.
-        if (mainTarget.presents()) {
+        if (ownsFrame && mainTarget.presents()) {
             notify(true, "present");
+            glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
             mainTarget.present(programs.fxaa, emptyVao.id());
             notify(false, "present");
         }
-        glBindVertexArray(0);
-        glUseProgram(0);
+    }
+
+    void requireSimulation() const
+    {
+        if (!simulated)
+            throw Error("nothing to draw yet: call advanceTo() with the frame's time before draw()");
+    }
+
+    // Draws a view with the GL state put back afterwards, whatever happens.
+    void drawRestoring(const View& view, GLuint framebuffer, const DrawOptions& options, bool ownsFrame,
+                       glm::ivec2 outputSize)
+    {
+        const SavedGlState saved;
+        try {
+            drawView(view, framebuffer, options, ownsFrame, outputSize);
+        } catch (...) {
+            saved.restore();
+            throw;
+        }
+        saved.restore();
+    }
+
+    void render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer)
+    {
+        counters = {};
+        if (outputSize.x <= 0 || outputSize.y <= 0)
+            return;
+        advanceTo(time_s, camera.position_m);
+        DrawOptions options;
+        options.sceneWorld = true;
+        options.sky = true;
+        drawRestoring(viewOf(camera, scaledFrameSize(outputSize, renderScale)), framebuffer, options, true, outputSize);
     }
 
     // Makes `next` the scene and `nextSceneModel` (when given) its model,
@@ -420,9 +578,10 @@ struct Renderer::Impl {
         const bool bodiesChanged = worldChanged || modelChanged || !sameBodies(scene, next);
         SceneBodies nextBodies;
         if (bodiesChanged)
-            nextBodies = buildBodies(worldChanged ? nextWorld : world, next, nextModel);
+            nextBodies = buildBodies(worldChanged ? nextWorld : world, inSeaFrame(next), nextModel);
 
         scene = next;
+        seaScene = inSeaFrame(next);
         sceneModel = std::move(nextSceneModel);
         overrideModel = std::move(nextOverride);
         if (gpu) {
@@ -440,8 +599,12 @@ struct Renderer::Impl {
         }
         if (bodiesChanged) {
             bodies = std::move(nextBodies);
-            wakeFrame.reset();
+            queryBodies.reset();
         }
+        // What was simulated was for the scene before (the poses of objects
+        // that float without being bodies follow their positions): the next
+        // advanceTo() takes it again, at no cost where nothing moved.
+        simulated.reset();
         if (first || hasEffect(effects, ParameterEffect::Grid))
             buildGrid();
     }
@@ -504,6 +667,27 @@ void Renderer::reloadShaders()
     s.bakedSky.reset(); // the bake shader may have changed
 }
 
+void Renderer::advanceTo(double time_s, glm::dvec3 viewpoint_m)
+{
+    if (!std::isfinite(time_s) || !std::isfinite(viewpoint_m.x + viewpoint_m.y + viewpoint_m.z))
+        throw Error(fmt::format("advanceTo: the time ({}) and the viewpoint must be finite", time_s));
+    impl_->advanceTo(time_s, viewpoint_m);
+}
+
+std::optional<double> Renderer::simulatedTime_s() const
+{
+    return impl_->simulated ? std::optional<double>(impl_->simulated->time_s) : std::nullopt;
+}
+
+void Renderer::draw(const View& view, unsigned framebuffer, const DrawOptions& options)
+{
+    Impl& s = *impl_;
+    s.requireSimulation();
+    checkView(view);
+    checkFramebuffer(framebuffer, true);
+    s.drawRestoring(view, framebuffer, options, false, {view.viewport.z, view.viewport.w});
+}
+
 void Renderer::render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer)
 {
     impl_->render(camera, time_s, size, framebuffer);
@@ -520,8 +704,11 @@ Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size
     image.height = size.y;
     image.rgba.resize(size_t(size.x) * size_t(size.y) * 4);
     std::vector<std::uint8_t> bottomUp(image.rgba.size());
+    GLint packAlignment = 4;
+    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(impl_->output.color(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(bottomUp.size()), bottomUp.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
     const size_t row = size_t(size.x) * 4;
     for (int y = 0; y < size.y; ++y)
         std::copy_n(&bottomUp[size_t(size.y - 1 - y) * row], row, &image.rgba[size_t(y) * row]);
@@ -531,15 +718,37 @@ Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size
 std::vector<glm::dmat4> Renderer::objectTransforms() const
 {
     std::vector<glm::dmat4> out;
-    for (const glm::mat4& pose : impl_->poses)
-        out.push_back(glm::translate(glm::dmat4(1.0), impl_->posesOrigin) * glm::dmat4(pose));
+    if (!impl_->simulated)
+        return out;
+    const glm::dmat4 toWorld = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, impl_->level(), 0.0));
+    for (const glm::dmat4& pose : impl_->simulated->poses)
+        out.push_back(toWorld * pose);
     return out;
 }
 
 DrawnSurface Renderer::drawnSurface(const Camera& camera, double time_s) const
 {
     const Impl& s = *impl_;
-    return s.drawnSurface(camera, time_s);
+    const glm::dvec3 eye = s.toSea(camera.position_m);
+    if (s.simulated && s.simulated->time_s == time_s)
+        return s.drawnSurfaceAt(eye, time_s, s.simulated->wake, s.level());
+    // Another time: the wake there, from bodies of the queries' own, so
+    // that nothing a frame draws changes.
+    std::shared_ptr<const WakeFrame> wake;
+    if (s.bodies.wake()) {
+        if (!s.queryBodies)
+            s.queryBodies = buildBodies(s.world, s.seaScene, s.model());
+        s.queryBodies->advanceTo(time_s);
+        wake = std::make_shared<const WakeFrame>(s.queryBodies->wakeFrameAt(time_s));
+    }
+    return s.drawnSurfaceAt(eye, time_s, std::move(wake), s.level());
+}
+
+DrawnSurface Renderer::drawnSurface(glm::dvec3 lodViewpoint_m) const
+{
+    const Impl& s = *impl_;
+    s.requireSimulation();
+    return s.drawnSurfaceAt(s.toSea(lodViewpoint_m), s.simulated->time_s, s.simulated->wake, s.level());
 }
 
 int Renderer::waterVertexCount() const { return (impl_->gridShape.cells + 1) * (impl_->gridShape.cells + 1); }
@@ -548,8 +757,10 @@ int Renderer::captureWaterVertices(const Camera& camera, double time_s, unsigned
                                    std::vector<std::uint32_t>* drawnIndices)
 {
     Impl& s = *impl_;
-    glm::dvec3 origin;
-    s.bindFrame(PassMain, s.prepareFrame(camera, time_s, glm::max(size, glm::ivec2(1)), origin));
+    size = glm::max(size, glm::ivec2(1));
+    s.advanceTo(time_s, camera.position_m);
+    const SavedGlState saved;
+    s.bindFrame(PassMain, s.prepareView(viewOf(camera, size), size, false).base);
     if (drawnIndices)
         *drawnIndices = s.waterGrid.chosenIndices();
     // Drawing needs a complete framebuffer even with rasterisation discarded
@@ -566,8 +777,7 @@ int Renderer::captureWaterVertices(const Camera& camera, double time_s, unsigned
     glDrawArrays(GL_POINTS, 0, count);
     glEndTransformFeedback();
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-    glDisable(GL_RASTERIZER_DISCARD);
-    glUseProgram(0);
+    saved.restore();
     return count;
 }
 

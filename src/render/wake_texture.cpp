@@ -5,7 +5,7 @@
 
 namespace swell::detail {
 
-void WakeTexture::upload(const WakeFrame* frame, glm::dvec3 origin)
+void WakeTexture::upload(const WakeFrame* frame)
 {
     if (!uniforms_) {
         uniforms_ = gl::Buffer::create();
@@ -22,18 +22,30 @@ void WakeTexture::upload(const WakeFrame* frame, glm::dvec3 origin)
         const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
         glClearTexImage(texture_.id(), 0, GL_RGBA, GL_FLOAT, zero);
     }
-    WakeUniforms u;
-    if (frame && frame->cells > 0) {
+    hasWake_ = frame && frame->cells > 0;
+    if (hasWake_) {
+        GLint unpackAlignment = 4;
+        glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTextureSubImage2D(texture_.id(), 0, 0, 0, cells, cells, GL_RGBA, GL_FLOAT, frame->texels.data());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
+        corner_m_ = frame->corner_m();
+        cellSize_m_ = frame->cellSize_m;
+        cornerCell_ = frame->cornerCell;
+    }
+}
+
+void WakeTexture::place(glm::dvec3 origin)
+{
+    WakeUniforms u;
+    if (hasWake_) {
         // The corner relative to the render origin, subtracted in double so
         // the float keeps centimetres however far from the world origin.
-        const glm::dvec2 corner = frame->corner_m() - glm::dvec2(origin.x, origin.z);
-        u.corner_m = glm::vec2(corner);
-        u.cellSize_m = float(frame->cellSize_m);
-        u.cells = frame->cells;
+        u.corner_m = glm::vec2(corner_m_ - glm::dvec2(origin.x, origin.z));
+        u.cellSize_m = float(cellSize_m_);
+        u.cells = cells_;
         const glm::ivec2 period(SWELL_WAKE_NOISE_PERIOD);
-        u.cornerCell = ((frame->cornerCell % period) + period) % period;
+        u.cornerCell = ((cornerCell_ % period) + period) % period;
     }
     glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
 }

@@ -24,9 +24,12 @@ static_assert(sizeof(WakeUniforms) == 32, "the Wake block is 32 bytes in std140"
 
 class WakeTexture {
 public:
-    // Uploads `frame` (null: no wake) for a frame drawn about `origin`
-    // (absolute, m). Needs a current GL context.
-    void upload(const WakeFrame* frame, glm::dvec3 origin);
+    // Uploads `frame` (null: no wake): once per simulated time. Needs a
+    // current GL context.
+    void upload(const WakeFrame* frame);
+    // Says where the uploaded frame's cells lie for a view drawn about
+    // `origin` (absolute, m): once per view.
+    void place(glm::dvec3 origin);
     // Binds the texture and the uniform block for the water programs.
     void bind() const;
 
@@ -34,6 +37,11 @@ private:
     gl::Texture texture_;
     gl::Buffer uniforms_;
     int cells_ = 0; // the texture's size, per side
+    // The uploaded frame's placement (absent: no wake).
+    bool hasWake_ = false;
+    glm::dvec2 corner_m_{0.0};
+    double cellSize_m_ = 1.0;
+    glm::ivec2 cornerCell_{0};
 };
 
 } // namespace swell::detail

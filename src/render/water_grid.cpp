@@ -17,7 +17,7 @@ void WaterGrid::build(const GridShape& shape)
 }
 
 void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, const WaveReach& reach,
-                     const glm::dmat4& viewProj, glm::dvec2 gridCenter_m)
+                     const glm::dmat4& viewProj, bool zeroToOneDepth, glm::dvec2 gridCenter_m)
 {
     // The bounds, relative to the grid centre, hold wherever the centre
     // snaps (tileBounds()): they change only when the grid changes scale or
@@ -35,7 +35,7 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
         boundsReach_ = reach;
         ++boundsComputed_;
     }
-    const Frustum frustum = frustumPlanes(viewProj);
+    const Frustum frustum = frustumPlanes(viewProj, zeroToOneDepth);
     const glm::dvec3 centre(gridCenter_m.x, 0.0, gridCenter_m.y);
     counts_.clear();
     offsets_.clear();

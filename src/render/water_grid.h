@@ -27,7 +27,7 @@ public:
     // Chooses the tiles to draw for a camera. viewProj maps positions relative
     // to the render origin; gridCenter_m is the grid centre relative to it.
     void cull(const GridShape& shape, const GridPlacement& placement, const WaveReach& reach,
-              const glm::dmat4& viewProj, glm::dvec2 gridCenter_m);
+              const glm::dmat4& viewProj, bool zeroToOneDepth, glm::dvec2 gridCenter_m);
 
     // Draws the chosen tiles (the grid VAO must be bound: see vertexArray()).
     // Returns the triangles submitted.

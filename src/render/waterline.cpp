@@ -2,30 +2,37 @@
 
 #include "swell/shader_constants.h"
 
-#include <glm/trigonometric.hpp>
-
-#include <cmath>
+#include <algorithm>
 
 namespace swell::detail {
 
-NearPlaneMedium nearPlaneMedium(const Camera& camera, double aspect, const WaveReach& reach)
+NearPlaneMedium nearPlaneMedium(const std::array<glm::dvec3, 4>& nearCorners_m, const WaveReach& reach)
 {
-    // The farthest any point of the near plane's rectangle lies from the eye:
-    // its corners, near_m / cos of the half-diagonal angle.
-    const double t = std::tan(glm::radians(camera.fovY_deg) * 0.5);
-    const double corner_m = camera.near_m * std::sqrt(1.0 + t * t * (1.0 + aspect * aspect));
-    const double y = camera.position_m.y;
-    if (y - corner_m > reach.vertical_m)
+    double lowest = nearCorners_m[0].y, highest = lowest;
+    for (const glm::dvec3& corner : nearCorners_m) {
+        lowest = std::min(lowest, corner.y);
+        highest = std::max(highest, corner.y);
+    }
+    if (lowest > reach.vertical_m)
         return NearPlaneMedium::Air;
-    if (y + corner_m < -reach.vertical_m)
+    if (highest < -reach.vertical_m)
         return NearPlaneMedium::Water;
     return NearPlaneMedium::Both;
 }
 
-bool eyeUnderwater(const Camera& camera, const WaveModel& model, double time_s)
+std::array<glm::dvec3, 4> nearPlaneCorners(const glm::dmat4& inverseViewProj, double nearNdcZ)
 {
-    const glm::dvec3 eye = camera.position_m;
-    return eye.y < model.heightAt({eye.x, eye.z}, time_s);
+    std::array<glm::dvec3, 4> corners;
+    for (int i = 0; i < 4; ++i) {
+        const glm::dvec4 p = inverseViewProj * glm::dvec4(i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, nearNdcZ, 1.0);
+        corners[size_t(i)] = glm::dvec3(p) / p.w;
+    }
+    return corners;
+}
+
+bool eyeUnderwater(glm::dvec3 eye_m, const WaveModel& model, double time_s)
+{
+    return eye_m.y < model.heightAt({eye_m.x, eye_m.z}, time_s);
 }
 
 void WaterlineMask::resize(glm::ivec2 size)

@@ -6,11 +6,14 @@
 #pragma once
 
 #include "render/render_target.h"
-#include "swell/camera.h"
 #include "swell/gl/handle.h"
 #include "swell/wave_model.h"
 
 #include <glm/vec2.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
 
 namespace swell::detail {
 
@@ -21,13 +24,19 @@ enum class NearPlaneMedium {
     Both,  // within the waves' reach: decided pixel by pixel
 };
 
-// Classifies a camera against a surface whose heights stay within
-// +-reach.vertical_m of the mean level (y = 0). `aspect` is width / height.
-NearPlaneMedium nearPlaneMedium(const Camera& camera, double aspect, const WaveReach& reach);
+// Classifies a view's near plane, given by its corners (relative to the
+// mean level, m: its rectangle spans the heights between them), against a
+// surface whose heights stay within +-reach.vertical_m of the mean level.
+NearPlaneMedium nearPlaneMedium(const std::array<glm::dvec3, 4>& nearCorners_m, const WaveReach& reach);
 
-// Whether the eye itself is below the surface at time_s (WaveModel::heightAt
-// under it): decides which half of the world the refraction pass renders.
-bool eyeUnderwater(const Camera& camera, const WaveModel& model, double time_s);
+// The corners of a view's near plane: the inverse of its view-projection at
+// the near plane's NDC z (-1, or 0 for GL_ZERO_TO_ONE, or 1 reversed).
+std::array<glm::dvec3, 4> nearPlaneCorners(const glm::dmat4& inverseViewProj, double nearNdcZ);
+
+// Whether the eye (relative to the mean level, m) is below the surface at
+// time_s (WaveModel::heightAt under it): decides which half of the world the
+// refraction pass renders.
+bool eyeUnderwater(glm::dvec3 eye_m, const WaveModel& model, double time_s);
 
 class WaterlineMask {
 public:

@@ -26,10 +26,17 @@ public:
     // The GLSL file under shaders/ that defines oceanSurface(), e.g. "ocean/gerstner.glsl".
     virtual std::string shaderFile() const = 0;
 
-    // Uploads what this frame's shaders read: phases are referenced to
-    // gridCenter_m (absolute world x,z, m), so float precision is spent near
-    // the camera; time_s is the simulation time, s.
+    // The simulation's step (Renderer::advanceTo): moves what the model
+    // simulates to time_s (s) around gridCenter_m (absolute world x,z, m;
+    // the spectral model's foam windows), and uploads what the shaders read
+    // for a view of that centre.
     virtual void prepareFrame(glm::dvec2 gridCenter_m, double time_s) = 0;
+
+    // One view of the time prepareFrame() reached, whose grid is centred at
+    // gridCenter_m: uploads what its shaders read (phases referenced to that
+    // centre, so float precision is spent near the camera). Simulates
+    // nothing.
+    virtual void prepareView(glm::dvec2 gridCenter_m) = 0;
 
     // Binds the buffers and textures prepareFrame() filled.
     virtual void bind() const = 0;
@@ -40,13 +47,19 @@ public:
     // slower. Only its first frame and a frame earlier than the last replay.
     void setInteractive(bool interactive) { interactive_ = interactive; }
 
-    // The simulation work the last prepareFrame() did (for the frame
-    // counters and the tests that hold the interactive rule).
+    // The simulation work done since the last call (for the frame counters,
+    // the tests that hold the interactive rule, and those that hold that a
+    // view simulates nothing), and forgets it.
     struct Work {
         int transforms = 0; // sets of inverse FFTs (one time, some cascades)
         int foamSteps = 0;  // steps of the foam
     };
-    const Work& lastWork() const { return work_; }
+    Work takeWork()
+    {
+        const Work work = work_;
+        work_ = {};
+        return work;
+    }
 
 protected:
     bool interactive_ = false;

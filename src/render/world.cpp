@@ -46,8 +46,7 @@ World buildWorld(const Scene& from)
 
 namespace {
 
-glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, const DrawnSurface& drawn, glm::dvec3 origin,
-                      double time_s)
+glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, const DrawnSurface& drawn, double time_s)
 {
     glm::dvec3 position = o.position_m;
     glm::dmat4 tilt(1.0);
@@ -68,7 +67,7 @@ glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, const Draw
         if (s > 1e-9)
             tilt = glm::rotate(glm::dmat4(1.0), std::asin(std::min(s, 1.0)), axis / s);
     }
-    return glm::translate(glm::dmat4(1.0), position - origin) * tilt *
+    return glm::translate(glm::dmat4(1.0), position) * tilt *
            glm::rotate(glm::dmat4(1.0), glm::radians(o.yaw_deg), glm::dvec3(0, 1, 0)) *
            glm::scale(glm::dmat4(1.0), glm::dvec3(o.scale));
 }
@@ -83,23 +82,23 @@ SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel&
     return SceneBodies(scene, shapes, surface);
 }
 
-std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
-                                   SceneBodies& bodies, glm::dvec3 origin, double time_s)
+std::vector<glm::dmat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
+                                    SceneBodies& bodies, double time_s)
 {
-    std::vector<glm::mat4> poses;
+    std::vector<glm::dmat4> poses;
     poses.reserve(scene.objects.size());
     bodies.advanceTo(time_s);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         if (const std::optional<glm::dmat4> body = bodies.poseAt(i, time_s))
-            poses.emplace_back(glm::translate(glm::dmat4(1.0), -origin) * *body);
+            poses.push_back(*body);
         else
-            poses.emplace_back(objectPose(scene.objects[i], surface, drawn, origin, time_s));
+            poses.push_back(objectPose(scene.objects[i], surface, drawn, time_s));
     }
     return poses;
 }
 
 int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,
-               const std::vector<glm::mat4>& poses, WorldBoxUniform* boxes)
+               const std::vector<glm::dmat4>& poses, WorldBoxUniform* boxes)
 {
     int count = 0;
     auto add = [&](glm::dvec3 lo, glm::dvec3 hi) {
@@ -119,7 +118,7 @@ int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, g
         const double r = world.meshReach_m[i] * o.scale;
         if (o.isRigidBody() && i < poses.size()) {
             // Where it is this frame (a body under way leaves its start behind).
-            const glm::dvec3 at = glm::dvec3(poses[i][3]) + origin;
+            const glm::dvec3 at(poses[i][3]);
             add(at - glm::dvec3(r), at + glm::dvec3(r));
             continue;
         }

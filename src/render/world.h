@@ -45,15 +45,14 @@ SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel&
 // so a bad asset leaves the renderer as it was. Throws swell::InputError.
 World buildWorld(const Scene& scene);
 
-// Each object's transform for this frame, relative to the render origin:
-// Each object's transform for this frame, relative to the render origin:
+// Each object's transform (object to absolute world, m) at time_s:
 // rigid bodies where `bodies` has stepped them to time_s (on the surface
 // their own filter gives, from the scene alone: swell/floating_body.h);
 // other floating objects sit on the water as drawn (`drawn`, the grid's
 // triangles) at their position, and tilt with the surface's normal.
-// Computed once a frame; every pass draws with the same poses.
-std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
-                                   SceneBodies& bodies, glm::dvec3 origin, double time_s);
+// Computed once per simulated time; every view and pass draws with them.
+std::vector<glm::dmat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
+                                    SceneBodies& bodies, double time_s);
 
 // Fills boxes holding all world geometry, relative to the render origin: a
 // reflected ray that misses them all can only meet the sky. Returns the
@@ -61,6 +60,6 @@ std::vector<glm::mat4> objectPoses(const Scene& scene, const WaveModel& surface,
 // then marched).
 // `poses` are this frame's objectPoses(): rigid bodies are boxed where they are.
 int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,
-               const std::vector<glm::mat4>& poses, WorldBoxUniform* boxes);
+               const std::vector<glm::dmat4>& poses, WorldBoxUniform* boxes);
 
 } // namespace swell::detail

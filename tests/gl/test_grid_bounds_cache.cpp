@@ -25,7 +25,7 @@ TEST_F(GridBoundsCache, ComputedOncePerScaleAndMorphBandNotPerSnap)
                                 glm::lookAt(glm::dvec3(0.0, 6.0, 0.0), glm::dvec3(0.0, 5.0, -10.0), glm::dvec3(0.0, 1.0, 0.0));
     auto cullAt = [&](glm::dvec3 camera_m) {
         const swell::GridPlacement placement = swell::placeGrid(shape, camera_m);
-        grid.cull(shape, placement, reach, viewProj, placement.center_m - glm::dvec2(camera_m.x, camera_m.z));
+        grid.cull(shape, placement, reach, viewProj, false, placement.center_m - glm::dvec2(camera_m.x, camera_m.z));
         return placement;
     };
     // 6 m up, flying 37 cm a frame for 200 frames: a new grid centre every frame.

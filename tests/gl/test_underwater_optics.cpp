@@ -3,8 +3,11 @@
 // Fresnel's own reciprocity, not against the code's earlier output.
 #include "render/waterline.h"
 #include "support/gl_test.h"
+#include "swell/camera.h"
 #include "swell/gl/shader.h"
+#include "swell/view.h"
 
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
@@ -95,33 +98,44 @@ TEST_F(UnderwaterOptics, FresnelAndSnellFromWaterIntoAirMatchPublishedFigures)
 
 // Which side of the water the near plane lies on: per pixel whenever any of
 // its rectangle may be within the waves' reach, never a single switch there.
+// The rectangle is the view's own (any roll or tilt), from its inverse
+// view-projection.
 TEST(WaterlineMedium, NearPlaneWithinTheWavesReachIsDecidedPerPixel)
 {
     using swell::detail::NearPlaneMedium;
+    using swell::detail::nearPlaneCorners;
     using swell::detail::nearPlaneMedium;
     swell::Camera camera;
     camera.near_m = 0.1;
     camera.fovY_deg = 60.0;
-    const double aspect = 16.0 / 9.0;
-    // The near plane's corners lie 0.1 * sqrt(1 + tan^2(30 deg) * (1 + aspect^2)) = 0.154 m from the eye.
+    const glm::ivec2 size(1600, 900);
+    auto medium = [&](double eyeY, const swell::WaveReach& reach) {
+        camera.position_m.y = eyeY;
+        const swell::View view = swell::viewOf(camera, size);
+        return nearPlaneMedium(nearPlaneCorners(glm::inverse(view.projection * view.view), -1.0), reach);
+    };
     const swell::WaveReach calm{0.0, 0.0}, swell1m{1.0, 0.5};
-    camera.position_m.y = 0.15;
-    EXPECT_EQ(nearPlaneMedium(camera, aspect, calm), NearPlaneMedium::Both) << "a corner dips under still water";
-    camera.position_m.y = 0.16;
-    EXPECT_EQ(nearPlaneMedium(camera, aspect, calm), NearPlaneMedium::Air);
-    camera.position_m.y = -0.15;
-    EXPECT_EQ(nearPlaneMedium(camera, aspect, calm), NearPlaneMedium::Both);
-    camera.position_m.y = -0.16;
-    EXPECT_EQ(nearPlaneMedium(camera, aspect, calm), NearPlaneMedium::Water);
-    // Waves 1 m high: anywhere within 1.154 m of the mean level is decided per pixel.
-    for (double y : {-1.15, -0.5, 0.0, 0.5, 1.15}) {
-        camera.position_m.y = y;
-        EXPECT_EQ(nearPlaneMedium(camera, aspect, swell1m), NearPlaneMedium::Both) << "eye at " << y << " m";
-    }
-    camera.position_m.y = 1.16;
-    EXPECT_EQ(nearPlaneMedium(camera, aspect, swell1m), NearPlaneMedium::Air);
-    camera.position_m.y = -1.16;
-    EXPECT_EQ(nearPlaneMedium(camera, aspect, swell1m), NearPlaneMedium::Water);
+    // Level: the rectangle's top and bottom edges lie 0.1 * tan(30 deg) = 0.0577 m above and below the eye.
+    EXPECT_EQ(medium(0.057, calm), NearPlaneMedium::Both) << "its bottom edge dips under still water";
+    EXPECT_EQ(medium(0.058, calm), NearPlaneMedium::Air);
+    EXPECT_EQ(medium(-0.057, calm), NearPlaneMedium::Both);
+    EXPECT_EQ(medium(-0.058, calm), NearPlaneMedium::Water);
+    // Waves 1 m high: anywhere within 1.0577 m of the mean level is decided per pixel.
+    for (double y : {-1.057, -0.5, 0.0, 0.5, 1.057})
+        EXPECT_EQ(medium(y, swell1m), NearPlaneMedium::Both) << "eye at " << y << " m";
+    EXPECT_EQ(medium(1.058, swell1m), NearPlaneMedium::Air);
+    EXPECT_EQ(medium(-1.058, swell1m), NearPlaneMedium::Water);
+    // Rolled 90 degrees, the rectangle's long side stands upright: its
+    // corners reach 0.1 * tan(30 deg) * 16/9 = 0.1026 m above and below.
+    camera.roll_deg = 90.0;
+    EXPECT_EQ(medium(0.102, calm), NearPlaneMedium::Both);
+    EXPECT_EQ(medium(0.103, calm), NearPlaneMedium::Air);
+    // Looking straight down, the whole rectangle lies 0.1 m below the eye.
+    camera.roll_deg = 0.0;
+    camera.pitch_deg = -89.9;
+    EXPECT_EQ(medium(0.099, calm), NearPlaneMedium::Water);
+    EXPECT_EQ(medium(0.1, calm), NearPlaneMedium::Both);
+    EXPECT_EQ(medium(0.101, calm), NearPlaneMedium::Air);
 }
 
 } // namespace

@@ -45,6 +45,7 @@ void main() {
            + vec4(gridLevels[gl_VertexID].snapOffset_m, gridLevels[gl_VertexID].firstRing, gridMorph)
            + vec4(gridLevels[gl_VertexID].coarseSnapOffset_m, gridCoarseCenterShift)
            + vec4(gridLevels[gl_VertexID].coarseFirstRing, gridCoarseGrowth, waveReachVertical_m, float(eyeUnderwater))
+           + vec4(viewportOrigin, depthNdcScale, depthNdcOffset) + vec4(depthFar, nearNdcZ, farNdcZ, projectionFocalY)
            + vec4(worldBoxes[gl_VertexID].min_m, 0.0) + vec4(worldBoxes[gl_VertexID].max_m, 0.0)
            + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
     gl_Position = s;
@@ -107,6 +108,13 @@ TEST_F(UniformLayout, FrameAndGerstnerBlocksMatchTheirCppMirrors)
     SWELL_EXPECT_OFFSET(F, gridCoarseGrowth);
     SWELL_EXPECT_OFFSET(F, waveReachVertical_m);
     SWELL_EXPECT_OFFSET(F, eyeUnderwater);
+    SWELL_EXPECT_OFFSET(F, viewportOrigin);
+    SWELL_EXPECT_OFFSET(F, depthNdcScale);
+    SWELL_EXPECT_OFFSET(F, depthNdcOffset);
+    SWELL_EXPECT_OFFSET(F, depthFar);
+    SWELL_EXPECT_OFFSET(F, nearNdcZ);
+    SWELL_EXPECT_OFFSET(F, farNdcZ);
+    SWELL_EXPECT_OFFSET(F, projectionFocalY);
     EXPECT_EQ(offsetOf(p.id(), "gridLevels[0].snapOffset_m"), GLint(offsetof(F, gridLevels)));
     EXPECT_EQ(offsetOf(p.id(), "gridLevels[1].coarseSnapOffset_m"),
               GLint(offsetof(F, gridLevels) + sizeof(swell::detail::GridLevelUniform) +

@@ -12,6 +12,7 @@ class FlatGpu final : public detail::WaveModelGpu {
 public:
     std::string shaderFile() const override { return "ocean/flat.glsl"; }
     void prepareFrame(glm::dvec2, double) override {}
+    void prepareView(glm::dvec2) override {}
     void bind() const override {}
 };
 

@@ -35,8 +35,17 @@ public:
 
     std::string shaderFile() const override { return "ocean/gerstner.glsl"; }
 
+    // A Gerstner sum has no state: the step is the time, the view's upload
+    // all there is.
     void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override
     {
+        time_s_ = time_s;
+        prepareView(gridCenter_m);
+    }
+
+    void prepareView(glm::dvec2 gridCenter_m) override
+    {
+        const double time_s = time_s_;
         detail::GerstnerUniforms u{};
         const int count = int(order_.size());
         // Mean square slope of each wave and every shorter one: what a pixel
@@ -69,6 +78,7 @@ private:
     WaveSet waves_;
     std::vector<const Wave*> order_; // into waves_, longest first
     gl::Buffer buffer_;
+    double time_s_ = 0.0; // the time prepareFrame() reached, s
 };
 
 } // namespace

@@ -153,6 +153,8 @@ public:
             stepFoam(time_s, 1.0f); // the same time: only the texels entering the windows are new
     }
 
+    void prepareView(glm::dvec2 gridCenter_m) override { updateUniforms(gridCenter_m); }
+
     void updateUniforms(glm::dvec2 gridCenter_m)
     {
         SpectralUniforms u{};

@@ -1,0 +1,136 @@
+// What a host gives Swell to draw the water into its own frame: the view
+// (its matrices, its viewport, its depth convention) and the geometry it
+// wants to see reflected and refracted (a callback per pass). Swell's own
+// sky, island and scene objects are one client of the same callback.
+// docs/LIBRARY.md shows a whole host (examples/host/).
+#pragma once
+
+#include "swell/export.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <optional>
+
+namespace swell {
+
+struct Camera;
+
+// How the host's depth buffer maps distance. Swell draws its passes the same
+// way, tests the water against the host's depth with the matching function,
+// and sets glClipControl to match for its own draws (restoring the host's).
+enum class DepthMode {
+    // GL's default: clip z in -w..w (GL_NEGATIVE_ONE_TO_ONE), the near
+    // plane at depth 0, the far plane at 1; GL_LESS, cleared to 1.
+    Standard,
+    // Clip z in 0..w (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)), near at
+    // 0, far at 1; GL_LESS, cleared to 1.
+    ZeroToOne,
+    // Reversed-Z: clip z in 0..w (GL_ZERO_TO_ONE), the near plane at depth 1
+    // and the far plane (or infinity) at 0; GL_GREATER, cleared to 0.
+    Reversed,
+};
+
+// One view of the water: where the eye is, what it sees, and where in the
+// framebuffer the picture goes.
+struct SWELL_API View {
+    // World (absolute, m; y up) to eye space, in double: the renderer draws
+    // relative to the eye so precision does not depend on where it is. Any
+    // rotation (roll included); no scale or shear.
+    glm::dmat4 view{1.0};
+    // Eye to clip space: any invertible projection (off-axis, jittered,
+    // infinite far plane), written for `depth`'s convention.
+    glm::dmat4 projection{1.0};
+    // x, y, width, height in the framebuffer, pixels (GL's lower-left origin).
+    glm::ivec4 viewport{0};
+    DepthMode depth = DepthMode::Standard;
+    // Where the water grid's detail is centred (absolute world, m): by
+    // default the eye; a host may keep the detail around a player while the
+    // camera orbits, or share one viewpoint across the two eyes of a stereo
+    // pair.
+    std::optional<glm::dvec3> lodViewpoint_m;
+
+    // The eye's position (absolute world, m), from the view matrix.
+    glm::dvec3 eye_m() const;
+};
+
+// The view of a Swell Camera (yaw, pitch, roll, lens) over a whole target of
+// `size` pixels: its matrices, the viewport (0, 0, size), standard depth.
+SWELL_API View viewOf(const Camera& camera, glm::ivec2 size);
+
+// Which of Swell's passes a callback is asked to draw into.
+enum class PassKind {
+    // The world mirrored about the sea level, for the water's reflections:
+    // keep what lies above the clip plane. The mirror turns windings round
+    // (glFrontFace is GL_CW while it draws).
+    Reflection,
+    // The world below the sea level (above it when the eye is under the
+    // water), which the water refracts: keep what the clip plane keeps.
+    Refraction,
+    // The main pass, when Swell owns the frame (Renderer::render): the
+    // world seen directly, before the water.
+    Main,
+    // Depth only, just before the water is drawn (colour writes are off):
+    // closed volumes the water must not show inside, such as the lid of an
+    // open hull at its gunwale.
+    WaterMask,
+};
+
+// What a pass's callback draws with: the host draws its objects with its
+// own shaders, transforming world positions by projection * view, and
+// writes gl_ClipDistance[0] = dot(clipPlane_m, vec4(worldPosition, 1)).
+struct SWELL_API PassView {
+    PassKind pass = PassKind::Main;
+    // World (absolute, m) to eye, mirrored about the sea level in the
+    // reflection pass; and the pass's projection (the view's own).
+    glm::dmat4 view{1.0};
+    glm::dmat4 projection{1.0};
+    // World plane (a, b, c, d): keep points with a x + b y + c z + d >= 0.
+    // GL_CLIP_DISTANCE0 is enabled in the reflection and refraction passes;
+    // in the others the plane keeps everything (0, 0, 0, 1).
+    glm::dvec4 clipPlane_m{0.0, 0.0, 0.0, 1.0};
+    // The pass's viewport, already set (glViewport), pixels.
+    glm::ivec4 viewport{0};
+    DepthMode depth = DepthMode::Standard;
+    // The eye's position in this pass (mirrored in the reflection), absolute world, m.
+    glm::dvec3 eye_m{0.0};
+};
+
+// Geometry a host wants in Swell's passes. drawPass() is called with the
+// pass's framebuffer bound, its viewport, depth function and clip distance
+// set; it may change any GL state but must leave no GL error (Swell checks,
+// and throws swell::Error naming the pass). An exception it throws leaves
+// the host's framebuffer as it was and propagates.
+class SWELL_API PassGeometry {
+public:
+    virtual ~PassGeometry() = default;
+    virtual void drawPass(const PassView& pass) = 0;
+};
+
+// How the water's colour is written.
+enum class OutputEncoding {
+    // Display-ready, sRGB-encoded (GL_FRAMEBUFFER_SRGB is turned off for
+    // Swell's draws); for an RGBA8 target shown as is.
+    Srgb,
+    // Linear radiance, for a floating-point target (e.g. RGBA16F) that the
+    // host tone-maps and post-processes itself.
+    Linear,
+};
+
+// How Renderer::draw composites into the host's frame.
+struct SWELL_API DrawOptions {
+    // The host's geometry for the reflection, refraction and water-mask
+    // passes; null for none. Not owned.
+    PassGeometry* geometry = nullptr;
+    // Whether Swell's own world (the scene's island and objects) is drawn
+    // too: into the passes and into the host's frame.
+    bool sceneWorld = false;
+    // Whether Swell draws its sky where the host's depth is still cleared
+    // (at the far plane), after the water.
+    bool sky = true;
+    OutputEncoding encoding = OutputEncoding::Srgb;
+};
+
+} // namespace swell

@@ -1,0 +1,65 @@
+#include "render/gl_state.h"
+
+namespace swell::detail {
+
+namespace {
+
+// Every capability a pass of the renderer sets (renderer.cpp's beginPass
+// and its passes); their order is enabled_'s.
+constexpr std::array<GLenum, 9> kCapabilities = {
+    GL_BLEND,        GL_CULL_FACE,         GL_SCISSOR_TEST,       GL_DEPTH_TEST,
+    GL_FRAMEBUFFER_SRGB, GL_CLIP_DISTANCE0, GL_TEXTURE_CUBE_MAP_SEAMLESS, GL_RASTERIZER_DISCARD,
+    GL_MULTISAMPLE,
+};
+
+} // namespace
+
+SavedGlState::SavedGlState()
+{
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray_);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture_);
+    glGetIntegerv(GL_VIEWPORT, viewport_.data());
+    glGetIntegerv(GL_SCISSOR_BOX, scissorBox_.data());
+    glGetBooleanv(GL_COLOR_WRITEMASK, colorMask_.data());
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
+    glGetIntegerv(GL_DEPTH_FUNC, &depthFunc_);
+    glGetIntegerv(GL_FRONT_FACE, &frontFace_);
+    glGetIntegerv(GL_CLIP_ORIGIN, &clipOrigin_);
+    glGetIntegerv(GL_CLIP_DEPTH_MODE, &clipDepth_);
+    glGetIntegerv(GL_POLYGON_MODE, polygonMode_.data());
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, clearColor_.data());
+    glGetFloatv(GL_DEPTH_CLEAR_VALUE, &clearDepth_);
+    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment_);
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment_);
+    for (std::size_t i = 0; i < kCapabilities.size(); ++i)
+        enabled_[i] = glIsEnabled(kCapabilities[i]);
+}
+
+void SavedGlState::restore() const
+{
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer_));
+    glUseProgram(GLuint(program_));
+    glBindVertexArray(GLuint(vertexArray_));
+    glActiveTexture(GLenum(activeTexture_));
+    glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    glScissor(scissorBox_[0], scissorBox_[1], scissorBox_[2], scissorBox_[3]);
+    glColorMask(colorMask_[0], colorMask_[1], colorMask_[2], colorMask_[3]);
+    glDepthMask(depthMask_);
+    glDepthFunc(GLenum(depthFunc_));
+    glFrontFace(GLenum(frontFace_));
+    glClipControl(GLenum(clipOrigin_), GLenum(clipDepth_));
+    // Core profiles keep one mode for both faces (GL_POLYGON_MODE reads it twice).
+    glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygonMode_[0]));
+    glClearColor(clearColor_[0], clearColor_[1], clearColor_[2], clearColor_[3]);
+    glClearDepth(clearDepth_);
+    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment_);
+    for (std::size_t i = 0; i < kCapabilities.size(); ++i)
+        enabled_[i] ? glEnable(kCapabilities[i]) : glDisable(kCapabilities[i]);
+}
+
+} // namespace swell::detail

@@ -1,0 +1,34 @@
+// The GL state a draw of the water changes, captured before it and put back
+// after it, so a host's own passes find their state as they left it
+// (docs/LIBRARY.md lists what is restored and what is left bound;
+// tests/gl/test_host_composite.cpp holds it).
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <array>
+
+namespace swell::detail {
+
+class SavedGlState {
+public:
+    // Reads the state now current.
+    SavedGlState();
+    // Puts it back.
+    void restore() const;
+
+private:
+    GLint drawFramebuffer_ = 0, readFramebuffer_ = 0, program_ = 0, vertexArray_ = 0, activeTexture_ = 0;
+    std::array<GLint, 4> viewport_{}, scissorBox_{};
+    std::array<GLboolean, 4> colorMask_{};
+    GLboolean depthMask_ = GL_TRUE;
+    GLint depthFunc_ = GL_LESS, frontFace_ = GL_CCW, clipOrigin_ = GL_LOWER_LEFT, clipDepth_ = GL_NEGATIVE_ONE_TO_ONE;
+    std::array<GLint, 2> polygonMode_{};
+    std::array<GLfloat, 4> clearColor_{};
+    GLfloat clearDepth_ = 1.0f;
+    GLint packAlignment_ = 4, unpackAlignment_ = 4;
+    // The capabilities it turns on or off (kCapabilities in gl_state.cpp).
+    std::array<GLboolean, 9> enabled_{};
+};
+
+} // namespace swell::detail

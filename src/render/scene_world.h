@@ -1,0 +1,45 @@
+// Swell's own world (the scene's island and objects, and the closed volumes
+// of open hulls) as one client of the pass geometry API (swell/view.h): the
+// renderer draws it through the same callback as a host's geometry. It
+// draws relative to the render origin with the Frame uniforms the renderer
+// bound for the pass, so its precision does not depend on where it is.
+#pragma once
+
+#include "render/programs.h"
+#include "render/world.h"
+#include "swell/renderer.h"
+#include "swell/view.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <vector>
+
+namespace swell::detail {
+
+class SceneWorld final : public PassGeometry {
+public:
+    // poses: each scene object's transform relative to the render origin;
+    // island: the island's. meshInAir / mesh: the programs for passes whose
+    // pixels all look out from the air, and for any pass.
+    SceneWorld(const World& world, const MeshProgram& meshInAir, const MeshProgram& mesh,
+               const std::vector<glm::mat4>& poses, const glm::mat4& island, FrameCounters& counters);
+
+    // Whether the next Main pass may have pixels that look out from below
+    // the water (the main pass's waterline mask decides per pixel then).
+    void setMainPassInAir(bool inAir) { mainInAir_ = inAir; }
+
+    void drawPass(const PassView& pass) override;
+
+private:
+    void drawObjects(const MeshProgram& program);
+    void drawHullVolumes(const MeshProgram& program);
+
+    const World& world_;
+    const MeshProgram &meshInAir_, &mesh_;
+    const std::vector<glm::mat4>& poses_;
+    glm::mat4 island_;
+    FrameCounters& counters_;
+    bool mainInAir_ = true;
+};
+
+} // namespace swell::detail
