@@ -12,8 +12,8 @@
 #include "ocean.glsl"
 #include "underwater_surface.glsl"
 #include "subsurface.glsl"
-#if SWELL_WAKE
-#include "wake.glsl"
+#if SWELL_SURFACE_SOURCES
+#include "surface_sources.glsl"
 #endif
 
 in vec3 vPosition;
@@ -23,8 +23,8 @@ in vec3 vAlongZ;
 in vec2 vRestPoint;
 in float vCellSize;
 in float vHeightScale;
-#if SWELL_WAKE
-in vec2 vWakeSlope;
+#if SWELL_SURFACE_SOURCES
+in vec2 vSourceSlope;
 #endif
 out vec4 fragColor;
 
@@ -57,15 +57,15 @@ void main()
     float foam = 0.0;
     float slopeVariance = 0.0;
 #endif
-#if SWELL_WAKE
-    // The wake's waves are as short as 2 of its cells, finer than the grid
-    // far from the camera: the pixel takes the wake's slopes it sees itself
-    // in place of those the grid's vertices interpolated (n / n.y is
-    // (-dh/dx, 1, -dh/dz) for a height field). Where the wake breaks, its
-    // foam joins the waves' whitecaps.
-    vec4 wake = wakeAt(vRestPoint);
-    n = normalize(n / max(n.y, 0.1) - vec3(wake.y - vWakeSlope.x, 0.0, wake.z - vWakeSlope.y));
-    foam = max(foam, wakeFoamAt(vRestPoint, wake.w));
+#if SWELL_SURFACE_SOURCES
+    // The sources' waves (the wake's are as short as 2 of its cells) are
+    // finer than the grid far from the camera: the pixel takes the slopes it
+    // sees itself in place of those the grid's vertices interpolated (n / n.y
+    // is (-dh/dx, 1, -dh/dz) for a height field). Where a source breaks (the
+    // wake's stern wash), its foam joins the waves' whitecaps.
+    vec4 sources = surfaceSourcesAt(vRestPoint);
+    n = normalize(n / max(n.y, 0.1) - vec3(sources.y - vSourceSlope.x, 0.0, sources.z - vSourceSlope.y));
+    foam = max(foam, sources.w);
 #endif
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);

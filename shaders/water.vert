@@ -2,8 +2,8 @@
 #include "frame.glsl"
 #include "grid.glsl"
 #include "ocean.glsl"
-#if SWELL_WAKE
-#include "wake.glsl"
+#if SWELL_SURFACE_SOURCES
+#include "surface_sources.glsl"
 #endif
 
 out vec3 vPosition;    // displaced position relative to the render origin, m
@@ -13,8 +13,8 @@ out vec3 vAlongZ;
 out vec2 vRestPoint;   // rest position relative to the render origin, m (captured by tests)
 out float vCellSize;   // grid spacing, m (for the LOD view)
 out float vHeightScale; // horizon fade, 0..1
-#if SWELL_WAKE
-out vec2 vWakeSlope;   // the wake's slopes at the vertex, d/dx and d/dz (the fragment's own replace them)
+#if SWELL_SURFACE_SOURCES
+out vec2 vSourceSlope; // the surface sources' slopes at the vertex, d/dx and d/dz (the fragment's own replace them)
 #endif
 
 void main()
@@ -24,15 +24,16 @@ void main()
     float distance_m = length(rest - eyePosition.xz);
     float fade = horizonFade(distance_m);
     SurfacePoint p = oceanSurface(g.offset, g.cellSize, fade);
-#if SWELL_WAKE
-    // The bodies' wake rises at the rest point (as swell::DrawnSurface adds
-    // it); its slopes tilt the surface's partial derivatives.
-    vec4 wake = wakeAt(rest);
-    p.displacement.y += wake.x;
-    p.alongX.y += wake.y;
-    p.alongZ.y += wake.z;
+#if SWELL_SURFACE_SOURCES
+    // The surface sources (the bodies' wake, a host's own) raise the water at
+    // the rest point (as swell::DrawnSurface adds them); their slopes tilt
+    // the surface's partial derivatives.
+    vec4 sources = surfaceSourcesAt(rest);
+    p.displacement.y += sources.x;
+    p.alongX.y += sources.y;
+    p.alongZ.y += sources.z;
     p.normal = normalize(cross(p.alongZ, p.alongX));
-    vWakeSlope = wake.yz;
+    vSourceSlope = sources.yz;
 #endif
     vPosition = vec3(rest.x, 0.0, rest.y) + p.displacement;
     vNormal = p.normal;

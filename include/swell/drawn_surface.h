@@ -1,7 +1,8 @@
 // The water surface exactly as the renderer draws it for one camera and time:
 // the grid's vertices, each displaced by the waves its cell can carry and
-// faded toward the horizon, raised by the floating bodies' wake at its rest
-// point when there is one, joined by flat triangles. The exact surface
+// faded toward the horizon, raised by the surface sources (swell/surface_source.h:
+// the floating bodies' wake, a host's own) at its rest point, joined by flat
+// triangles. The exact surface
 // (WaveModel::surfaceAt) differs from it by the waves the grid filters out
 // and by the triangles' chords: centimetres near the camera, decimetres far
 // away. Query this one to put things on the water the user sees.
@@ -10,18 +11,16 @@
 #include "swell/export.h"
 #include "swell/grid.h"
 #include "swell/wave_model.h"
+#include "swell/surface_source.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace swell {
-
-namespace detail {
-struct WakeFrame;
-}
 
 // Where a vertical line through a world point meets the drawn water.
 struct SWELL_API DrawnPoint {
@@ -34,12 +33,12 @@ class SWELL_API DrawnSurface {
 public:
     // The surface `model` draws on the grid `shape` for a camera at eye_m
     // (relative to the water's mean level, m: the sea's frame) at time_s,
-    // plus `wake` (the bodies' wake as this frame draws it; library-internal,
-    // null for none). Answers in the world's frame: with the mean level
-    // level_m (Scene::water.level_m) added to every height. Keeps a
-    // reference to `model`: it must outlive this object.
+    // plus the heights of `sources` (as this frame draws them). Answers in
+    // the world's frame: with the mean level level_m (Scene::water.level_m)
+    // added to every height. Keeps a reference to `model`: it must outlive
+    // this object.
     DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
-                 double time_s, std::shared_ptr<const detail::WakeFrame> wake = nullptr, double level_m = 0.0);
+                 double time_s, std::vector<std::shared_ptr<const SurfaceSource>> sources = {}, double level_m = 0.0);
 
     // The drawn water under world point (x, z). Empty only where no triangle
     // covers the point, which happens nowhere on the unbounded grid except
@@ -64,7 +63,7 @@ private:
     GridPlacement placement_;
     glm::dvec3 eye_m_;
     double time_s_;
-    std::shared_ptr<const detail::WakeFrame> wake_;
+    std::vector<std::shared_ptr<const SurfaceSource>> sources_;
     double level_m_ = 0.0;
 };
 

@@ -17,7 +17,7 @@ public:
     double heightDeviation_m() const override { return 0.0; }
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     glm::dvec2 restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
-    std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
+    std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
 };
 
 } // namespace swell

@@ -25,7 +25,7 @@ public:
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     // Newton's method with the analytic Jacobian (swell::restPointUnder).
     glm::dvec2 restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
-    std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
+    std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
 
 private:
     WaveSet waves_;

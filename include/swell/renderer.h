@@ -24,6 +24,7 @@
 #include "swell/scene.h"
 #include "swell/view.h"
 #include "swell/wave_model.h"
+#include "swell/surface_source.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -106,6 +107,17 @@ public:
     // (then the scene's waves again). Throws swell::InputError, keeping the
     // model it had, when the model's shaders do not build.
     void setWaveModel(std::shared_ptr<const WaveModel> model);
+
+    // Adds a surface source of the host's (swell/surface_source.h): drawn in the
+    // water, in drawnSurface() and under the floating bodies (which start
+    // again from rest). Throws swell::InputError, keeping the sources it
+    // had, when its GLSL does not build (naming surface_source_<i>.glsl and the
+    // line), swell::Error when it is null, added already, or one too many
+    // (SWELL_MAX_SURFACE_SOURCES, the wake's included). Shared: the host may
+    // keep changing what it answers with time, not its GLSL.
+    void addSurfaceSource(std::shared_ptr<const SurfaceSource> source);
+    // Removes it (nothing when it is not there).
+    void removeSurfaceSource(const std::shared_ptr<const SurfaceSource>& source);
 
     // The water exactly as render() draws it for this camera and time: the
     // grid's triangles (swell/drawn_surface.h), in absolute world

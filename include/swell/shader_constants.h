@@ -71,6 +71,11 @@
 #define SWELL_UNIT_WAKE 12
 // ...and its uniform block: where the cells lie.
 #define SWELL_BINDING_WAKE 2
+// Surface sources (swell/surface_source.h): the WaveSources block of
+// shaders/surface_sources.glsl's generated code, four vec4 parameters a source;
+// at most SWELL_MAX_SURFACE_SOURCES sources, the wake's included.
+#define SWELL_BINDING_SURFACE_SOURCES 3
+#define SWELL_MAX_SURFACE_SOURCES 8
 // The wake foam's noise repeats after this many cells, m / cell size: far
 // longer than any foam patch, short enough for a float to hold its cells exactly.
 #define SWELL_WAKE_NOISE_PERIOD 256

@@ -54,7 +54,7 @@ public:
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     // Transforms only the displacement fields for a new time: half the cost.
     glm::dvec3 displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
-    std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
+    std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
 
 private:
     SpectralSettings settings_;

@@ -22,9 +22,7 @@
 
 namespace swell {
 
-namespace detail {
 class WaveModelGpu;
-}
 namespace gl {
 class ShaderSources;
 }
@@ -84,11 +82,11 @@ public:
     // Surface height, m, at world (x, z): the displacement's y at restPointUnder().
     double heightAt(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter = {}) const;
 
-    // The GPU half: what the model uploads each frame and the GLSL file that
-    // defines oceanSurface() for the water shaders (see shaders/ocean.glsl).
-    // Needs a current GL context; programs of its own (compute shaders) are
-    // built from `shaders`. Library-internal type.
-    virtual std::unique_ptr<detail::WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const = 0;
+    // The GPU half (swell/wave_model_gpu.h): what the model uploads each
+    // frame and the GLSL file that defines oceanSurface() for the water
+    // shaders (see shaders/ocean.glsl). Needs a current GL context; programs
+    // of its own (compute shaders) are built from `shaders`.
+    virtual std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const = 0;
 };
 
 struct Scene;

@@ -1,6 +1,5 @@
 #include "swell/drawn_surface.h"
 
-#include "objects/wake_frame.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -35,9 +34,9 @@ glm::dvec2 xz(glm::dvec3 p) { return {p.x, p.z}; }
 } // namespace
 
 DrawnSurface::DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
-                           double time_s, std::shared_ptr<const detail::WakeFrame> wake, double level_m)
+                           double time_s, std::vector<std::shared_ptr<const SurfaceSource>> sources, double level_m)
     : model_(model), shape_(shape), fade_(fade), placement_(placeGrid(shape, eye_m)), eye_m_(eye_m), time_s_(time_s),
-      wake_(std::move(wake)), level_m_(level_m)
+      sources_(std::move(sources)), level_m_(level_m)
 {
 }
 
@@ -45,14 +44,16 @@ glm::dvec3 DrawnSurface::vertex(int i, int j) const
 {
     // As wave_capture's CPU twin of water.vert: the rest point, the waves its
     // cell size resolves, the horizon fade at its distance from the eye, and
-    // the wake at the rest point (shaders/wake.glsl).
+    // the surface sources at the rest point (shaders/water.vert).
     const GridPoint point = gridPoint(shape_, placement_, i, j);
     const glm::dvec2 rest = placement_.center_m + point.offset_m;
     const double distance_m = glm::length(rest - glm::dvec2(eye_m_.x, eye_m_.z));
     const glm::dvec3 d =
         model_.displacementAt(rest, time_s_, SurfaceFilter{point.cellSize_m, horizonFadeAt(fade_, distance_m)});
-    const double wake_m = wake_ ? wake_->heightAt(rest) : 0.0;
-    return glm::dvec3(rest.x, level_m_ + wake_m, rest.y) + d;
+    double sources_m = 0.0;
+    for (const std::shared_ptr<const SurfaceSource>& source : sources_)
+        sources_m += source->heightAt(rest, time_s_).x;
+    return glm::dvec3(rest.x, level_m_ + sources_m, rest.y) + d;
 }
 
 glm::ivec2 DrawnSurface::restCellOf(glm::dvec2 r) const

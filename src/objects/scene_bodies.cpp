@@ -1,7 +1,7 @@
 // A scene's floating bodies (scene_bodies.h).
 #include "objects/scene_bodies.h"
 
-#include "render/wave_model_gpu.h" // the waves' GPU half, handed on
+#include "swell/wave_model_gpu.h" // the waves' GPU half, handed on
 #include "swell/error.h"
 #include "swell/grid.h"
 

@@ -1,7 +1,7 @@
 // A scene's wake and the surface bodies float on (scene_wake.h).
 #include "objects/scene_wake.h"
 
-#include "render/wave_model_gpu.h" // the waves' GPU half, handed on
+#include "swell/wave_model_gpu.h" // the waves' GPU half, handed on
 
 
 #include <fmt/format.h>

@@ -40,10 +40,14 @@ SavedGlState::SavedGlState()
 
 void SavedGlState::restore() const
 {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer_));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer_));
-    glUseProgram(GLuint(program_));
-    glBindVertexArray(GLuint(vertexArray_));
+    // A name that died meanwhile is not bound again: a program the host
+    // deleted while it was current lives until another is bound (ours), and
+    // binding its name then would be an error; the others unbind at deletion.
+    auto alive = [](GLint name, GLboolean (*is)(GLuint)) { return name == 0 || is(GLuint(name)) ? GLuint(name) : 0u; };
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, alive(drawFramebuffer_, glIsFramebuffer));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, alive(readFramebuffer_, glIsFramebuffer));
+    glUseProgram(alive(program_, glIsProgram));
+    glBindVertexArray(alive(vertexArray_, glIsVertexArray));
     glActiveTexture(GLenum(activeTexture_));
     glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
     glScissor(scissorBox_[0], scissorBox_[1], scissorBox_[2], scissorBox_[3]);

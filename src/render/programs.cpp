@@ -1,6 +1,8 @@
 // Building the renderer's programs for a variant, and their typed setters.
 #include "render/programs.h"
 
+#include "render/surface_sources.h"
+
 #include "swell/error.h"
 
 #include <fmt/format.h>
@@ -50,10 +52,11 @@ const std::vector<std::string> kInAir{"SWELL_SEEN_FROM_BELOW 0"};
 
 } // namespace
 
-ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms)
+ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms,
+                              std::vector<std::string> waveSources)
 {
     return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile), omittedWaterTerms,
-            scene.wake.enabled};
+            std::move(waveSources)};
 }
 
 std::vector<std::string> definesOf(const ShaderVariant& v)
@@ -65,7 +68,7 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
         fmt::format("SWELL_GRID_LAYOUT {}", v.gridLayout == GridLayout::Paper ? "SWELL_GRID_PAPER" : "SWELL_GRID_GEOMETRIC"),
         fmt::format("SWELL_OCEAN_FILE \"{}\"", v.oceanFile),
         fmt::format("SWELL_OMITTED_TERMS {}", v.omittedWaterTerms),
-        fmt::format("SWELL_WAKE {}", v.wake ? 1 : 0),
+        fmt::format("SWELL_SURFACE_SOURCES {}", v.waveSources.size()),
     };
 }
 
@@ -95,8 +98,9 @@ void SkyBakeProgram::setFace(int face) const { glProgramUniform1i(program_.id(),
 
 void BlockProgram::use() const { glUseProgram(program_.id()); }
 
-Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant)
+Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
 {
+    setSurfaceSourceFiles(sources, variant.waveSources);
     Programs p;
     p.water = BlockProgram(build(sources, variant, "water.vert", "water.frag"));
     p.sky = BlockProgram(build(sources, variant, "sky.vert", "sky.frag"));

@@ -22,13 +22,16 @@ struct ShaderVariant {
     GridLayout gridLayout = GridLayout::Geometric;     // SWELL_GRID_LAYOUT
     std::string oceanFile = "ocean/gerstner.glsl";     // SWELL_OCEAN_FILE: the wave model's GLSL
     unsigned omittedWaterTerms = 0;                    // SWELL_OMITTED_TERMS: SWELL_TERM_* bits (benchmark)
-    bool wake = true;                                  // SWELL_WAKE: the bodies' wake in the water (wake.glsl)
+    // SWELL_SURFACE_SOURCES: the GLSL of each surface source drawn (the bodies'
+    // wake's first when the scene has one; render/surface_sources.h).
+    std::vector<std::string> waveSources;
     bool operator==(const ShaderVariant&) const = default;
 };
 
 // The variant a scene asks for, with the wave model's GLSL file and the
 // water shading terms left out (RendererOptions::omittedWaterTerms).
-ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms);
+ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms,
+                              std::vector<std::string> waveSources);
 
 // The #define lines (without "#define ") for a variant.
 std::vector<std::string> definesOf(const ShaderVariant& variant);
@@ -94,8 +97,9 @@ struct Programs {
     MeshProgram meshInAir;
 };
 
-// Compiles and links every program for a variant. Throws swell::InputError
-// naming the shader file and line when one fails.
-Programs buildPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant);
+// Compiles and links every program for a variant, its surface sources' files
+// written into `sources` first. Throws swell::InputError naming the shader
+// file and line when one fails.
+Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant);
 
 } // namespace swell::detail

@@ -4,6 +4,8 @@
 // comes from a swell::WaveModel, never from a particular model.
 #include "swell/renderer.h"
 
+#include "objects/wake_surface.h"
+#include "ocean/waves_with_sources.h"
 #include "render/frame_uniforms.h"
 #include "render/gl_state.h"
 #include "render/programs.h"
@@ -11,16 +13,18 @@
 #include "render/scene_world.h"
 #include "render/sky_cubemap.h"
 #include "render/slope_statistics.h"
+#include "render/view_setup.h"
 #include "render/wake_texture.h"
 #include "render/water_grid.h"
-#include "render/view_setup.h"
 #include "render/waterline.h"
-#include "render/wave_model_gpu.h"
+#include "render/surface_sources.h"
 #include "render/world.h"
 #include "swell/error.h"
 #include "swell/gl/shader.h"
 #include "swell/grid.h"
 #include "swell/scene_changes.h"
+#include "swell/shader_constants.h"
+#include "swell/wave_model_gpu.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -57,6 +61,10 @@ struct Renderer::Impl {
     Scene seaScene;
     // The scene's wave model, and the one setWaveModel() put in its place.
     std::shared_ptr<const WaveModel> sceneModel, overrideModel;
+    // The host's surface sources (Renderer::addSurfaceSource), drawn after the wake.
+    std::vector<std::shared_ptr<const SurfaceSource>> hostSources;
+    // What the floating bodies float on: model() plus the host's sources.
+    std::shared_ptr<const WaveModel> bodyModel;
     std::unique_ptr<WaveModelGpu> modelGpu;
     double seaMeanSquareSlope = 0.0; // of model(), for the reflection's masking (slope_statistics.h)
     GridShape gridShape;
@@ -87,7 +95,10 @@ struct Renderer::Impl {
         // Each scene object's transform, object to sea frame (see world.h).
         std::vector<glm::dmat4> poses;
         std::shared_ptr<const WakeFrame> wake; // null when the scene has none
-        double wakeReach_m = 0.0; // the largest wake height, m
+        // The surface sources drawn, in the programs' order: the wake's (when
+        // the scene has one) and the host's.
+        std::vector<std::shared_ptr<const SurfaceSource>> sources;
+        double sourcesReach_m = 0.0; // the largest height they add together, m
     };
     std::optional<Simulated> simulated;
     // The floating rigid bodies, stepped to the simulated time (objects/scene_bodies.h).
@@ -96,6 +107,7 @@ struct Renderer::Impl {
     // one: stepped apart from those drawn, so a query changes no frame.
     mutable std::optional<SceneBodies> queryBodies;
     WakeTexture wakeTexture;
+    SurfaceSourceParametersBuffer sourceParameters;
 
     explicit Impl(RendererOptions options)
         : sources(std::move(options.shaders)), omittedWaterTerms(options.omittedWaterTerms)
@@ -112,17 +124,40 @@ struct Renderer::Impl {
     {
         WaveReach reach = model().reach();
         if (simulated)
-            reach.vertical_m += simulated->wakeReach_m;
+            reach.vertical_m += simulated->sourcesReach_m;
         return reach;
     }
 
-    // The water as the grid draws it around a viewpoint (sea frame), with the
-    // wake `wake`; in the sea frame, or in the world's with `level_m` added.
-    DrawnSurface drawnSurfaceAt(glm::dvec3 viewpointSea, double time_s, std::shared_ptr<const WakeFrame> wake,
-                                double level_m) const
+    // The GLSL of the sources a scene's programs draw (render/surface_sources.h).
+    static std::vector<std::string> sourceCodes(const Scene& scene,
+                                                const std::vector<std::shared_ptr<const SurfaceSource>>& hosts)
+    {
+        std::vector<std::string> codes;
+        if (scene.wake.enabled)
+            codes.push_back(WakeSurfaceSource::code());
+        for (const std::shared_ptr<const SurfaceSource>& source : hosts)
+            codes.push_back(source->glsl());
+        return codes;
+    }
+
+    // The sources drawn at time_s with the wake's frame `wake`.
+    std::vector<std::shared_ptr<const SurfaceSource>> sourcesWith(std::shared_ptr<const WakeFrame> wake) const
+    {
+        std::vector<std::shared_ptr<const SurfaceSource>> sources;
+        if (scene.wake.enabled)
+            sources.push_back(std::make_shared<const WakeSurfaceSource>(std::move(wake)));
+        sources.insert(sources.end(), hostSources.begin(), hostSources.end());
+        return sources;
+    }
+
+    // The water as the grid draws it around a viewpoint (sea frame), with
+    // the surface sources `sources`; in the sea frame, or in the world's with
+    // `level_m` added.
+    DrawnSurface drawnSurfaceAt(glm::dvec3 viewpointSea, double time_s,
+                                std::vector<std::shared_ptr<const SurfaceSource>> sources, double level_m) const
     {
         return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), viewpointSea, time_s,
-                            std::move(wake), level_m);
+                            std::move(sources), level_m);
     }
 
     void addWork(const WaveModelGpu::Work& work)
@@ -170,7 +205,8 @@ struct Renderer::Impl {
         bodies.advanceTo(time_s);
         if (bodies.wake())
             next.wake = std::make_shared<const WakeFrame>(bodies.wakeFrameAt(time_s));
-        const DrawnSurface drawn = drawnSurfaceAt(viewpoint, time_s, next.wake, 0.0);
+        next.sources = sourcesWith(next.wake);
+        const DrawnSurface drawn = drawnSurfaceAt(viewpoint, time_s, next.sources, 0.0);
         next.poses = objectPoses(seaScene, model(), drawn, bodies, time_s);
         counters.floatingBodies = int(bodies.count());
         counters.bodySteps = bodies.stepsTaken() - stepsBefore;
@@ -182,9 +218,8 @@ struct Renderer::Impl {
         // culled, and the near plane placed, with it.
         notify(true, "wake");
         wakeTexture.upload(next.wake.get());
-        if (next.wake)
-            for (const glm::vec4& texel : next.wake->texels)
-                next.wakeReach_m = std::max(next.wakeReach_m, double(std::abs(texel.x)));
+        for (const std::shared_ptr<const SurfaceSource>& source : next.sources)
+            next.sourcesReach_m += std::abs(source->reach_m(time_s));
         notify(false, "wake");
         simulated = std::move(next);
     }
@@ -231,6 +266,7 @@ struct Renderer::Impl {
         f.waveMeanSquareSlope = float(seaMeanSquareSlope);
         wakeTexture.place(v.origin);
         wakeTexture.bind();
+        sourceParameters.upload(simulated->sources, simulated->time_s, v.origin + glm::dvec3(0.0, level(), 0.0));
         const WaveReach reach = simulatedReach();
         // What the waterline mask's rays that meet no water are judged by
         // (shaders/underwater.glsl): the band the surface stays in, and the
@@ -348,8 +384,6 @@ struct Renderer::Impl {
     void drawHost(PassGeometry& geometry, const PassView& pass, Pass uniforms, const FrameUniforms& f,
                   GLuint framebuffer, bool mirrored)
     {
-        while (glGetError() != GL_NO_ERROR) {
-        }
         geometry.drawPass(pass);
         const GLenum error = glGetError();
         if (error != GL_NO_ERROR)
@@ -363,6 +397,7 @@ struct Renderer::Impl {
         bindFrame(uniforms, f);
         modelGpu->bind();
         wakeTexture.bind();
+        sourceParameters.bind();
     }
 
     static const char* passName(PassKind pass)
@@ -560,25 +595,42 @@ struct Renderer::Impl {
     // rebuilding what `effects` and a changed model file ask for. Everything
     // that can fail is built first; the renderer changes only when all did.
     void apply(const Scene& next, ParameterEffect effects, std::shared_ptr<const WaveModel> nextSceneModel,
-               std::shared_ptr<const WaveModel> nextOverride, bool first)
+               std::shared_ptr<const WaveModel> nextOverride, bool first,
+               std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources)
     {
-        const WaveModel& nextModel = nextOverride ? *nextOverride : *nextSceneModel;
+        const std::shared_ptr<const WaveModel>& nextModelPtr = nextOverride ? nextOverride : nextSceneModel;
+        const WaveModel& nextModel = *nextModelPtr;
         const bool modelChanged = first || &nextModel != &model();
         std::unique_ptr<WaveModelGpu> gpu = modelChanged ? nextModel.createGpu(sources) : nullptr;
-        const ShaderVariant nextVariant = shaderVariantOf(next, gpu ? gpu->shaderFile() : variant.oceanFile, omittedWaterTerms);
+        const ShaderVariant nextVariant = shaderVariantOf(next, gpu ? gpu->shaderFile() : variant.oceanFile, omittedWaterTerms,
+                                                          sourceCodes(next, nextHostSources));
         const bool programsChanged = first || nextVariant != variant;
         Programs nextPrograms;
-        if (programsChanged)
-            nextPrograms = buildPrograms(sources, nextVariant);
+        if (programsChanged) {
+            try {
+                nextPrograms = buildPrograms(sources, nextVariant);
+            } catch (...) {
+                // The files of the sources still drawn, for a later reload.
+                setSurfaceSourceFiles(sources, variant.waveSources);
+                throw;
+            }
+        }
         const bool worldChanged = first || hasEffect(effects, ParameterEffect::World);
         World nextWorld;
         if (worldChanged)
             nextWorld = buildWorld(next);
         // Bodies start again from their start when what moves them changed.
-        const bool bodiesChanged = worldChanged || modelChanged || !sameBodies(scene, next);
+        const bool sourcesChanged = nextHostSources != hostSources;
+        const bool bodiesChanged = worldChanged || modelChanged || sourcesChanged || !sameBodies(scene, next);
         SceneBodies nextBodies;
-        if (bodiesChanged)
-            nextBodies = buildBodies(worldChanged ? nextWorld : world, inSeaFrame(next), nextModel);
+        std::shared_ptr<const WaveModel> nextBodyModel = bodyModel;
+        if (bodiesChanged) {
+            // The bodies float on the host's sources too.
+            nextBodyModel = nextHostSources.empty()
+                ? nextModelPtr
+                : std::make_shared<const WavesWithSources>(nextModelPtr, nextHostSources);
+            nextBodies = buildBodies(worldChanged ? nextWorld : world, inSeaFrame(next), *nextBodyModel);
+        }
 
         scene = next;
         seaScene = inSeaFrame(next);
@@ -597,8 +649,10 @@ struct Renderer::Impl {
             world = std::move(nextWorld);
             bakedSky.reset();
         }
+        hostSources = std::move(nextHostSources);
         if (bodiesChanged) {
             bodies = std::move(nextBodies);
+            bodyModel = std::move(nextBodyModel);
             queryBodies.reset();
         }
         // What was simulated was for the scene before (the poses of objects
@@ -617,7 +671,7 @@ Renderer::Renderer(const Scene& scene, RendererOptions options) : impl_(std::mak
         glNamedBufferStorage(b.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     impl_->emptyVao = gl::VertexArray::create();
-    impl_->apply(scene, ParameterEffect::Frame, makeWaveModel(scene), nullptr, true);
+    impl_->apply(scene, ParameterEffect::Frame, makeWaveModel(scene), nullptr, true, {});
 }
 
 Renderer::~Renderer() = default;
@@ -629,7 +683,7 @@ void Renderer::setScene(const Scene& scene)
     // The waves are generated again only when a wave parameter changed.
     std::shared_ptr<const WaveModel> sceneModel =
         hasEffect(effects, ParameterEffect::Waves) ? makeWaveModel(scene) : s.sceneModel;
-    s.apply(scene, effects, std::move(sceneModel), s.overrideModel, false);
+    s.apply(scene, effects, std::move(sceneModel), s.overrideModel, false, s.hostSources);
 }
 
 const Scene& Renderer::scene() const { return impl_->scene; }
@@ -638,7 +692,31 @@ const WaveModel& Renderer::waveModel() const { return impl_->model(); }
 void Renderer::setWaveModel(std::shared_ptr<const WaveModel> model)
 {
     Impl& s = *impl_;
-    s.apply(s.scene, ParameterEffect::Frame, s.sceneModel, std::move(model), false);
+    s.apply(s.scene, ParameterEffect::Frame, s.sceneModel, std::move(model), false, s.hostSources);
+}
+
+void Renderer::addSurfaceSource(std::shared_ptr<const SurfaceSource> source)
+{
+    Impl& s = *impl_;
+    if (!source)
+        throw Error("addSurfaceSource: no source (null)");
+    if (std::find(s.hostSources.begin(), s.hostSources.end(), source) != s.hostSources.end())
+        throw Error("addSurfaceSource: the source was added already");
+    std::vector<std::shared_ptr<const SurfaceSource>> next = s.hostSources;
+    next.push_back(std::move(source));
+    const std::size_t drawn = next.size() + (s.scene.wake.enabled ? 1 : 0);
+    if (drawn > SWELL_MAX_SURFACE_SOURCES)
+        throw Error(fmt::format("addSurfaceSource: at most {} surface sources are drawn{}", SWELL_MAX_SURFACE_SOURCES,
+                                s.scene.wake.enabled ? ", the wake's included" : ""));
+    s.apply(s.scene, ParameterEffect::Frame, s.sceneModel, s.overrideModel, false, std::move(next));
+}
+
+void Renderer::removeSurfaceSource(const std::shared_ptr<const SurfaceSource>& source)
+{
+    Impl& s = *impl_;
+    std::vector<std::shared_ptr<const SurfaceSource>> next = s.hostSources;
+    next.erase(std::remove(next.begin(), next.end(), source), next.end());
+    s.apply(s.scene, ParameterEffect::Frame, s.sceneModel, s.overrideModel, false, std::move(next));
 }
 
 void Renderer::setRenderScale(double scale)
@@ -683,6 +761,12 @@ void Renderer::draw(const View& view, unsigned framebuffer, const DrawOptions& o
 {
     Impl& s = *impl_;
     s.requireSimulation();
+    // A callback's error is told by the flag it leaves: one pending already
+    // would be blamed on it, and clearing it would hide the host's own.
+    if (const GLenum pending = glGetError(); pending != GL_NO_ERROR)
+        throw Error(fmt::format("GL error 0x{:04x} was pending when draw() was called (draw() tells its "
+                                "callbacks' errors by the flag they leave, so it needs none pending)",
+                                pending));
     checkView(view);
     checkFramebuffer(framebuffer, true);
     s.drawRestoring(view, framebuffer, options, false, {view.viewport.z, view.viewport.w});
@@ -731,24 +815,24 @@ DrawnSurface Renderer::drawnSurface(const Camera& camera, double time_s) const
     const Impl& s = *impl_;
     const glm::dvec3 eye = s.toSea(camera.position_m);
     if (s.simulated && s.simulated->time_s == time_s)
-        return s.drawnSurfaceAt(eye, time_s, s.simulated->wake, s.level());
+        return s.drawnSurfaceAt(eye, time_s, s.simulated->sources, s.level());
     // Another time: the wake there, from bodies of the queries' own, so
     // that nothing a frame draws changes.
     std::shared_ptr<const WakeFrame> wake;
     if (s.bodies.wake()) {
         if (!s.queryBodies)
-            s.queryBodies = buildBodies(s.world, s.seaScene, s.model());
+            s.queryBodies = buildBodies(s.world, s.seaScene, *s.bodyModel);
         s.queryBodies->advanceTo(time_s);
         wake = std::make_shared<const WakeFrame>(s.queryBodies->wakeFrameAt(time_s));
     }
-    return s.drawnSurfaceAt(eye, time_s, std::move(wake), s.level());
+    return s.drawnSurfaceAt(eye, time_s, s.sourcesWith(std::move(wake)), s.level());
 }
 
 DrawnSurface Renderer::drawnSurface(glm::dvec3 lodViewpoint_m) const
 {
     const Impl& s = *impl_;
     s.requireSimulation();
-    return s.drawnSurfaceAt(s.toSea(lodViewpoint_m), s.simulated->time_s, s.simulated->wake, s.level());
+    return s.drawnSurfaceAt(s.toSea(lodViewpoint_m), s.simulated->time_s, s.simulated->sources, s.level());
 }
 
 int Renderer::waterVertexCount() const { return (impl_->gridShape.cells + 1) * (impl_->gridShape.cells + 1); }

@@ -2,6 +2,7 @@
 // reflection mode, each grid layout, and each wave model's GLSL file (every
 // embedded file under ocean/, so a new model is covered by adding its file).
 // A variant the scenes of the other tests never select still has to compile.
+#include "objects/wake_surface.h"
 #include "render/programs.h"
 #include "support/gl_test.h"
 
@@ -28,7 +29,7 @@ std::vector<std::string> oceanFiles(const swell::gl::ShaderSources& sources)
 
 TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
 {
-    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
+    swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
     const std::vector<std::string> models = oceanFiles(sources);
     // Gerstner and flat water at least: a glob that found nothing would pass vacuously.
     ASSERT_GE(models.size(), 2u);
@@ -39,7 +40,8 @@ TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
         for (const DebugView view : views)
             for (const ReflectionMode reflection : {ReflectionMode::FixedDistance, ReflectionMode::RayMarch})
                 for (const GridLayout layout : {GridLayout::Geometric, GridLayout::Paper}) {
-                    const swell::detail::ShaderVariant variant{view, reflection, layout, model};
+                    swell::detail::ShaderVariant variant{view, reflection, layout, model};
+                    variant.waveSources = {swell::detail::WakeSurfaceSource::code()};
                     SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", reflection " +
                                  std::to_string(int(reflection)) + ", layout " + std::to_string(int(layout)));
                     swell::detail::Programs programs;
@@ -50,11 +52,11 @@ TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
     EXPECT_EQ(built, int(models.size()) * int(views.size()) * 2 * 2);
 }
 
-// Without the wake (wake.enabled = false; the variants above have it), with
+// Without the wake or any surface source (wake.enabled = false; the variants above have the wake), with
 // every model and debug view.
 TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
 {
-    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
+    swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
     const std::vector<std::string> models = oceanFiles(sources);
     ASSERT_GE(models.size(), 2u);
     int built = 0;
@@ -62,7 +64,7 @@ TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
         for (const DebugView view : {DebugView::Shaded, DebugView::Normals, DebugView::Reflection, DebugView::Refraction,
                                      DebugView::Lod, DebugView::Wireframe, DebugView::Foam}) {
             swell::detail::ShaderVariant variant{view, ReflectionMode::RayMarch, GridLayout::Geometric, model};
-            variant.wake = false;
+            variant.waveSources.clear();
             SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake");
             swell::detail::Programs programs;
             EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
@@ -76,7 +78,7 @@ TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
 // of them, with every model and both reflection modes.
 TEST_F(AllVariants, EveryWaterTermCanBeLeftOut)
 {
-    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
+    swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
     const std::vector<std::string> models = oceanFiles(sources);
     ASSERT_GE(models.size(), 2u);
     int built = 0;
@@ -84,6 +86,7 @@ TEST_F(AllVariants, EveryWaterTermCanBeLeftOut)
         for (const ReflectionMode reflection : {ReflectionMode::FixedDistance, ReflectionMode::RayMarch})
             for (unsigned term = 1; term <= SWELL_TERM_ALL; term = term == SWELL_TERM_FILTERING ? SWELL_TERM_ALL : term * 2) {
                 swell::detail::ShaderVariant variant{DebugView::Shaded, reflection, GridLayout::Geometric, model};
+                variant.waveSources = {swell::detail::WakeSurfaceSource::code()};
                 variant.omittedWaterTerms = term;
                 SCOPED_TRACE(model + ", reflection " + std::to_string(int(reflection)) + ", terms left out " +
                              std::to_string(term));

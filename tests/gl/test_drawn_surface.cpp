@@ -6,6 +6,9 @@
 #include "wave_capture.h"
 
 #include "swell/drawn_surface.h"
+#include "swell/error.h"
+#include "swell/flat_model.h"
+#include "swell/surface_source.h"
 #include "swell/gl/handle.h"
 #include "swell/renderer.h"
 #include "swell/scene.h"
@@ -14,6 +17,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,9 +35,12 @@ struct Result {
     double worst_m = 0.0;
 };
 
-Result compareAtCentroids(const swell::Scene& scene, glm::dvec3 eye_m, double time_s)
+Result compareAtCentroids(const swell::Scene& scene, glm::dvec3 eye_m, double time_s,
+                          std::shared_ptr<const swell::SurfaceSource> source = nullptr)
 {
     swell::Renderer renderer(scene);
+    if (source)
+        renderer.addSurfaceSource(source);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.position_m = eye_m;
     const glm::ivec2 size(640, 360);
@@ -214,6 +221,132 @@ TEST_F(DrawnSurfaceTest, FloatingObjectsSitOnTheDrawnWater)
         }
     }
     EXPECT_GE(floating, 5);
+}
+
+// A surface source of the host's own (swell/surface_source.h): a ring
+// expanding from an explosion at centre_m since start_s, a Gaussian ridge of
+// height amplitude_m and half-width width_m at radius speed * (t - start).
+// Its GLSL evaluates the same function about the render origin.
+class ExpandingRing final : public swell::SurfaceSource {
+public:
+    glm::dvec2 centre_m{10.0, -80.0};
+    double start_s = 0.0, speed_mps = 8.0, amplitude_m = 1.5, width_m = 6.0;
+
+    glm::dvec3 heightAt(glm::dvec2 rest_m, double time_s) const override
+    {
+        const glm::dvec2 d = rest_m - centre_m;
+        const double r = glm::length(d), s = (r - radius_m(time_s)) / width_m;
+        const double h = amplitude_m * std::exp(-s * s), dhdr = -2.0 * s / width_m * h;
+        const glm::dvec2 slope = r > 1e-9 ? d / r * dhdr : glm::dvec2(0.0);
+        return {h, slope.x, slope.y};
+    }
+    double reach_m(double) const override { return amplitude_m; }
+    std::string glsl() const override
+    {
+        return R"(
+vec4 SWELL_SOURCE_FUNCTION(vec2 p_m, vec4 parameters[4])
+{
+    vec2 d = p_m - parameters[0].xy;
+    float r = length(d);
+    float s = (r - parameters[0].z) / parameters[1].x;
+    float h = parameters[0].w * exp(-s * s);
+    float dhdr = -2.0 * s / parameters[1].x * h;
+    vec2 slope = r > 1e-6 ? d / r * dhdr : vec2(0.0);
+    return vec4(h, slope, 0.0);
+}
+)";
+    }
+    swell::SurfaceSourceParameters gpuParameters(double time_s, glm::dvec3 origin_m) const override
+    {
+        // The centre relative to the render origin, subtracted in double.
+        const glm::dvec2 centre = centre_m - glm::dvec2(origin_m.x, origin_m.z);
+        return {glm::vec4(glm::dvec4(centre, radius_m(time_s), amplitude_m)), glm::vec4(float(width_m), 0.0f, 0.0f, 0.0f),
+                glm::vec4(0.0f), glm::vec4(0.0f)};
+    }
+
+private:
+    double radius_m(double time_s) const { return speed_mps * std::max(time_s - start_s, 0.0); }
+};
+
+// The host's source is in the drawn water and in DrawnSurface alike (within
+// 1 mm at the drawn triangles' centroids), on flat water and on the waves.
+TEST_F(DrawnSurfaceTest, AHostsSurfaceSourceIsInTheDrawnTrianglesAlike)
+{
+    auto ring = std::make_shared<ExpandingRing>();
+    ring->start_s = 5.0;
+    const glm::dvec3 eye(3.7, 6.0, -12.2);
+    for (const double t : {9.0, 12.0}) {
+        SCOPED_TRACE("t = " + std::to_string(t));
+        const Result r = compareAtCentroids(plainScene(), eye, t, ring);
+        EXPECT_GT(r.compared, 1000);
+        EXPECT_EQ(r.missed, 0);
+        EXPECT_LT(r.worst_m, 1e-3);
+    }
+    // It is there: the drawn water on the ring stands its height above the
+    // water without it.
+    swell::Renderer renderer(plainScene());
+    swell::Camera camera = swell::cameraAt(plainScene().camera, 0.0);
+    camera.position_m = eye;
+    const glm::dvec2 onRing = ring->centre_m + glm::dvec2(0.0, 8.0 * (12.0 - 5.0));
+    const double without = renderer.drawnSurface(camera, 12.0).at(onRing)->position_m.y;
+    renderer.addSurfaceSource(ring);
+    const double with = renderer.drawnSurface(camera, 12.0).at(onRing)->position_m.y;
+    EXPECT_NEAR(with - without, ring->amplitude_m, 0.05);
+}
+
+// Floating bodies feel the host's source: a buoy on a standing mound of
+// water 2 m high rides 2 m higher than without it.
+TEST_F(DrawnSurfaceTest, FloatingBodiesRideAHostsSurfaceSource)
+{
+    swell::Scene scene = plainScene();
+    swell::SceneObject buoy;
+    buoy.path = "builtin:buoy";
+    buoy.position_m = {10.0, 0.0, -80.0};
+    buoy.floats = true;
+    buoy.density_kg_per_m3 = 400.0;
+    scene.objects = {buoy};
+    auto mound = std::make_shared<ExpandingRing>();
+    mound->speed_mps = 0.0;
+    mound->amplitude_m = 2.0;
+    mound->width_m = 40.0;
+    const glm::dvec3 eye(3.7, 6.0, -12.2);
+    auto heightAt = [&](bool withMound) {
+        swell::Renderer renderer(scene);
+        renderer.setWaveModel(std::make_shared<swell::FlatModel>()); // calm: the mound alone lifts it
+        if (withMound)
+            renderer.addSurfaceSource(mound);
+        renderer.advanceTo(30.0, eye);
+        return renderer.objectTransforms().at(0)[3].y;
+    };
+    const double without = heightAt(false), with = heightAt(true);
+    EXPECT_NEAR(with - without, 2.0, 0.1) << "without " << without << " m, with " << with << " m";
+}
+
+// A source's bad GLSL is refused naming its file, and the sources drawn stay.
+TEST_F(DrawnSurfaceTest, ASurfaceSourceWhoseGlslDoesNotBuildIsRefused)
+{
+    class Broken final : public swell::SurfaceSource {
+    public:
+        glm::dvec3 heightAt(glm::dvec2, double) const override { return glm::dvec3(0.0); }
+        double reach_m(double) const override { return 0.0; }
+        std::string glsl() const override { return "vec4 SWELL_SOURCE_FUNCTION(vec2 p_m, vec4 parameters[4]) { return p_m; }\n"; }
+        swell::SurfaceSourceParameters gpuParameters(double, glm::dvec3) const override { return {}; }
+    };
+    swell::Renderer renderer(plainScene());
+    auto ring = std::make_shared<ExpandingRing>();
+    renderer.addSurfaceSource(ring);
+    try {
+        renderer.addSurfaceSource(std::make_shared<Broken>());
+        ADD_FAILURE() << "a source that does not compile was added";
+    } catch (const swell::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("surface_source_"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(renderer.addSurfaceSource(nullptr), swell::Error);
+    EXPECT_THROW(renderer.addSurfaceSource(ring), swell::Error) << "added twice";
+    // The ring is still drawn: the renderer draws as before.
+    const swell::Camera camera = swell::cameraAt(plainScene().camera, 3.0);
+    EXPECT_NO_THROW(renderer.renderImage(camera, 3.0, {64, 36}));
+    swell::test::GlTest::messages().clear(); // the compiler's own report of the bad GLSL
 }
 
 } // namespace

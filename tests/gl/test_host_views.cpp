@@ -273,6 +273,30 @@ TEST_F(HostViews, TheGlStateAHostLeftIsTheStateItFindsAfterADraw)
     glUseProgram(0);
 }
 
+// A program the host deleted while it was current lives until another is
+// bound: the draw binds its own, and must not bind the dead name back (a GL
+// error the fixture would report).
+TEST_F(HostViews, AProgramTheHostDeletedWhileCurrentIsNotBoundBack)
+{
+    const swell::Scene scene = swell::defaultScene();
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, 3.0);
+    renderer.advanceTo(3.0, camera.position_m);
+    HostTarget target(kHalf);
+    clearHost(target);
+    {
+        HostScene boxes({HostBox{{-2.0, 1.0, -20.0}, {2.0, 3.0, -16.0}, {1.0f, 0.0f, 0.0f}}});
+        boxes.draw(glm::dmat4(1.0)); // its program current, then deleted with it
+    }
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    ASSERT_NE(current, 0) << "the deleted program is still current until another is bound";
+    renderer.draw(swell::viewOf(camera, kHalf), target.framebuffer());
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    EXPECT_EQ(current, 0);
+    glBindVertexArray(0);
+}
+
 // Each refusal: a swell::Error that says what, and the host's frame as it was.
 TEST_F(HostViews, BadViewsFramebuffersAndCallbacksAreRefusedWithTheHostsFrameKept)
 {
@@ -320,6 +344,11 @@ TEST_F(HostViews, BadViewsFramebuffersAndCallbacksAreRefusedWithTheHostsFrameKep
     options.geometry = &erring;
     refused(good, target.framebuffer(), options, "GL error 0x0500 in the reflection pass");
     // The debug output reported the host's error too: it was the point.
+    GlTest::messages().clear();
+
+    // An error the host left pending is not blamed on a callback, nor hidden.
+    glEnable(GLenum(0x7fff));
+    refused(good, target.framebuffer(), {}, "GL error 0x0500 was pending");
     GlTest::messages().clear();
 
     // After all that, the renderer still draws.

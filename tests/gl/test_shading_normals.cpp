@@ -6,7 +6,7 @@
 // pixel footprints and grid footprints spread over what a frame draws.
 #include "support/gl_test.h"
 
-#include "render/wave_model_gpu.h"
+#include "swell/wave_model_gpu.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
 #include "swell/scene.h"
@@ -72,7 +72,7 @@ std::vector<Probed> runProbes(const swell::Scene& scene, double time_s, const st
     const swell::gl::ShaderSources sources = swell::gl::ShaderSources::fromMap(files);
 
     const std::unique_ptr<swell::WaveModel> model = swell::makeWaveModel(scene);
-    const std::unique_ptr<swell::detail::WaveModelGpu> gpu = model->createGpu(embedded);
+    const std::unique_ptr<swell::WaveModelGpu> gpu = model->createGpu(embedded);
     gpu->prepareFrame({12.5, -7.25}, time_s);
     const swell::gl::Program program = swell::gl::buildProgram(
         sources, {{GL_VERTEX_SHADER, "shading_probe.vert"}}, {"SWELL_OCEAN_FILE \"" + gpu->shaderFile() + "\""},

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "assets/mesh_data.h"
-#include "render/wave_model_gpu.h" // only to return no GPU half from the test water
+#include "swell/wave_model_gpu.h" // only to return no GPU half from the test water
 #include "swell/constants.h"
 #include "swell/floating_body.h"
 #include "swell/wave_model.h"
@@ -37,7 +37,7 @@ public:
         p.normal = glm::normalize(glm::dvec3(-filter.heightScale * amplitude_m_ * k_ * std::cos(phase), 1.0, 0.0));
         return p;
     }
-    std::unique_ptr<swell::detail::WaveModelGpu> createGpu(const swell::gl::ShaderSources&) const override
+    std::unique_ptr<swell::WaveModelGpu> createGpu(const swell::gl::ShaderSources&) const override
     {
         return nullptr;
     }

@@ -24,12 +24,16 @@ public:
     // In-memory sources, for tests.
     static ShaderSources fromMap(std::map<std::string, std::string> files);
 
+    // Adds a file held in memory, or replaces one, over any folder's (the
+    // renderer's code written from its surface sources, swell/surface_source.h).
+    void set(const std::string& name, std::string text) { loaded_[name] = std::move(text); }
+
     // Files read from disk are kept after their first read; this forgets them
     // so the next build reads them again (hot reload).
     void forgetCachedFiles() { cache_.clear(); }
 
-    // The names of the files held in memory (embedded or given), sorted;
-    // empty for sources read from a folder.
+    // The names of the files held in memory (embedded, given or set), sorted;
+    // for sources read from a folder, only those set.
     std::vector<std::string> fileNames() const;
 
     // The text of one file. Throws swell::InputError when it does not exist.

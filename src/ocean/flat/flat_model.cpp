@@ -2,13 +2,13 @@
 // uploads nothing.
 #include "swell/flat_model.h"
 
-#include "render/wave_model_gpu.h"
+#include "swell/wave_model_gpu.h"
 
 namespace swell {
 
 namespace {
 
-class FlatGpu final : public detail::WaveModelGpu {
+class FlatGpu final : public WaveModelGpu {
 public:
     std::string shaderFile() const override { return "ocean/flat.glsl"; }
     void prepareFrame(glm::dvec2, double) override {}
@@ -25,7 +25,7 @@ SurfacePoint FlatModel::surfaceAt(glm::dvec2, double, const SurfaceFilter&) cons
 
 glm::dvec2 FlatModel::restPointUnder(glm::dvec2 worldPoint_m, double, const SurfaceFilter&) const { return worldPoint_m; }
 
-std::unique_ptr<detail::WaveModelGpu> FlatModel::createGpu(const gl::ShaderSources&) const
+std::unique_ptr<WaveModelGpu> FlatModel::createGpu(const gl::ShaderSources&) const
 {
     return std::make_unique<FlatGpu>();
 }

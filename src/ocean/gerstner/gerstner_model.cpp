@@ -3,7 +3,7 @@
 #include "swell/gerstner_model.h"
 
 #include "ocean/gerstner/gerstner_uniforms.h"
-#include "render/wave_model_gpu.h"
+#include "swell/wave_model_gpu.h"
 #include "swell/error.h"
 #include "swell/gl/handle.h"
 
@@ -18,7 +18,7 @@ namespace swell {
 
 namespace {
 
-class GerstnerGpu final : public detail::WaveModelGpu {
+class GerstnerGpu final : public WaveModelGpu {
 public:
     explicit GerstnerGpu(const WaveSet& waves) : waves_(waves)
     {
@@ -119,7 +119,7 @@ glm::dvec2 GerstnerModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s,
     return swell::restPointUnder(exact ? waves_ : filteredWaves(waves_, filter), worldPoint_m, time_s);
 }
 
-std::unique_ptr<detail::WaveModelGpu> GerstnerModel::createGpu(const gl::ShaderSources&) const
+std::unique_ptr<WaveModelGpu> GerstnerModel::createGpu(const gl::ShaderSources&) const
 {
     return std::make_unique<GerstnerGpu>(waves_);
 }

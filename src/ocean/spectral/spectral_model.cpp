@@ -8,7 +8,7 @@
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
-#include "render/wave_model_gpu.h"
+#include "swell/wave_model_gpu.h"
 #include "swell/constants.h"
 #include "swell/gl/shader.h"
 
@@ -58,7 +58,7 @@ constexpr float kFoldSoftness = 0.03f;
 constexpr int kLongestFoamShift = kFoamSize / 4;
 
 
-class SpectralGpu final : public detail::WaveModelGpu {
+class SpectralGpu final : public WaveModelGpu {
 public:
     SpectralGpu(std::shared_ptr<const SpectralField> field, const SpectralSettings& settings,
                 float foldThreshold, const gl::ShaderSources& shaders)
@@ -402,7 +402,7 @@ glm::dvec3 SpectralModel::displacementAt(glm::dvec2 restPoint_m, double time_s, 
     return cpu_->displacementAt(restPoint_m, time_s, filter);
 }
 
-std::unique_ptr<detail::WaveModelGpu> SpectralModel::createGpu(const gl::ShaderSources& shaders) const
+std::unique_ptr<WaveModelGpu> SpectralModel::createGpu(const gl::ShaderSources& shaders) const
 {
     return std::make_unique<SpectralGpu>(field_, settings_, foldThreshold_, shaders);
 }

@@ -1,7 +1,10 @@
-// The GPU half of a wave model (swell/wave_model.h). The water shaders call
+// The GPU half of a wave model (swell/wave_model.h), apart from its CPU
+// queries: what WaveModel::createGpu() returns. A model of a host's own
+// implements both: the queries there, the uploads and bindings here. The water shaders call
 // oceanSurface() and oceanShading(), defined by the model's GLSL file; the
 // renderer builds the water programs with that file as SWELL_OCEAN_FILE
-// (shaders/ocean.glsl includes it), so no shader names a model.
+// (shaders/ocean.glsl includes it), so no shader names a model. A host's
+// model adds its GLSL file to the renderer's gl::ShaderSources.
 //
 // A model's GLSL file defines, under an include guard:
 //   SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
@@ -13,13 +16,15 @@
 // and bind() bound, at binding points of its own from swell/shader_constants.h.
 #pragma once
 
+#include "swell/export.h"
+
 #include <glm/vec2.hpp>
 
 #include <string>
 
-namespace swell::detail {
+namespace swell {
 
-class WaveModelGpu {
+class SWELL_API WaveModelGpu {
 public:
     virtual ~WaveModelGpu() = default;
 
@@ -66,4 +71,4 @@ protected:
     Work work_;
 };
 
-} // namespace swell::detail
+} // namespace swell
