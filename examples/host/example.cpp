@@ -57,28 +57,30 @@ void Example::frame(double time_s, GLuint framebuffer, glm::ivec2 size)
     renderer_.advanceTo(time_s, viewpoint_m);
     harbour_.update(time_s, renderer_.drawnSurface(viewpoint_m), boxes_.boxes);
 
+    const double aspect = double(size.x) / double(size.y);
     swell::View view;
-    view.view = harbour_.eyeView();
-    view.projection = reversedInfiniteProjection(kFovY_deg, double(size.x) / double(size.y), kNear_m);
+    view.view = harbour_.eyeView();                   // world to eye, double, rolling with the ship
+    view.projection = reversedInfiniteProjection(kFovY_deg, aspect, kNear_m);
     view.viewport = {0, 0, size.x, size.y};
-    view.depth = swell::DepthMode::Reversed;
+    view.depth = swell::DepthMode::Reversed;          // glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), GL_GREATER
     // The grid's detail where the height queries were made, so the crate
     // sits on exactly the water that is drawn.
     view.lodViewpoint_m = viewpoint_m;
 
-    // 3: the host's opaque pass. Alpha 0 where nothing is drawn; Swell's sky fills it.
+    // 3: the host's opaque pass into its RGBA16F target, depth cleared to 0.
+    // Alpha 0 where nothing is drawn; Swell's sky fills it.
     const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     beginFrame(*hdr_, clear);
     boxes_.draw(view.projection * view.view);
 
-    // 4: the water (and the boxes in its reflection and refraction).
+    // 4: the water, the boxes in its reflection and refraction, the sky.
     swell::DrawOptions options;
     options.geometry = &boxes_;
     options.sky = true;
     options.encoding = swell::OutputEncoding::Linear;
     renderer_.draw(view, hdr_->framebuffer(), options);
 
-    // 5: to the display.
+    // 5: the host's tone mapping to the display.
     toneMapper_.apply(hdr_->colorTexture(), framebuffer, size, kExposure);
 }
 
