@@ -4,7 +4,9 @@
 # with find_package(Swell) and the system's GLFW, runs its compositing checks
 # (--check: its own cube mirrored by the water within 2 px, its wall hiding
 # the water, nothing else of its frame changed; level, rolled 30 degrees,
-# reversed-Z, the sea at 100 m), and renders its picture headless.
+# reversed-Z, the sea at 100 m), renders its picture headless, and, where
+# xvfb-run is, opens its GLFW window for a few frames (its loader through
+# glfwGetProcAddress). Built with -Werror, as CI builds the project.
 set -euo pipefail
 build=$1
 work=$2
@@ -12,10 +14,16 @@ here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 cmake -S "$here/../../examples/host" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" \
-  -DCMAKE_BUILD_TYPE=Release >/dev/null
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-Werror >/dev/null
 cmake --build "$work/build" >/dev/null
 "$work/build/swell_host_example" --check
 "$work/build/swell_host_example" --headless "$work/harbour.png" --size 320x180 --time 20
+if command -v xvfb-run >/dev/null; then
+  xvfb-run -a -s '-screen 0 1280x720x24' "$work/build/swell_host_example" --frames 3 --size 320x180
+  echo "example host's window drew 3 frames"
+else
+  echo "no xvfb-run: the window is not tried"
+fi
 # A PNG of 320x180 that is a picture, not one flat colour.
 python3 - "$work/harbour.png" <<'PY'
 import struct, sys, zlib
