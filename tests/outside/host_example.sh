@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The example host (examples/host/) as the outside project it is: installs
-# the Swell build at $1 into a fresh prefix, builds the example against it
+# the Swell build at $1 into a fresh prefix, builds the example's installed
+# sources (share/doc/swell/examples/host) against it
 # with find_package(Swell) and the system's GLFW, runs its compositing checks
 # (--check: its own cube mirrored by the water within 2 px, its wall hiding
 # the water, nothing else of its frame changed; level, rolled 30 degrees,
@@ -13,7 +14,9 @@ work=$2
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
-cmake -S "$here/../../examples/host" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" \
+# The installed copy must be the source tree's.
+diff -r "$here/../../examples/host" "$work/prefix/share/doc/swell/examples/host"
+cmake -S "$work/prefix/share/doc/swell/examples/host" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" \
   -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-Werror >/dev/null
 cmake --build "$work/build" >/dev/null
 "$work/build/swell_host_example" --check
