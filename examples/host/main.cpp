@@ -112,10 +112,8 @@ int headless(const Options& o)
 
 int check()
 {
-    swell::gl::HeadlessContext context;
-    if (const char* missing = host::loadGl(eglGetProcAddress))
-        throw swell::Error(std::string("no GL function ") + missing + " in this context");
-    // Any GL error or high-severity message, Swell's or the host's, fails the check.
+    // Any GL error or high-severity message, Swell's or the host's, fails the
+    // check. (The handler first: it must outlive the context.)
     int glErrors = 0;
     swell::gl::DebugHandler handler = [&](const swell::gl::DebugMessage& m) {
         if (m.isError()) {
@@ -123,7 +121,11 @@ int check()
             ++glErrors;
         }
     };
-    swell::gl::installDebugHandler(&handler);
+    swell::gl::HeadlessContext context; // a debug context
+    if (const char* missing = host::loadGl(eglGetProcAddress))
+        throw swell::Error(std::string("no GL function ") + missing + " in this context");
+    if (!swell::gl::installDebugHandler(&handler))
+        throw swell::Error("the headless context has no debug output");
     const int result = host::runChecks();
     if (glErrors > 0)
         std::fprintf(stderr, "check: FAILED: %d GL errors\n", glErrors);
