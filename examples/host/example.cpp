@@ -10,9 +10,9 @@ namespace {
 // is at infinity).
 constexpr double kFovY_deg = 55.0;
 constexpr double kNear_m = 0.1;
-// The tone mapper's exposure: ACES's fit maps 1.0 to about 0.8, so a little
-// over 1 keeps the lit paint near its albedo.
-constexpr float kExposure = 1.1f;
+// The tone mapper's exposure: ACES's fit maps 1.0 to 0.8 and the hazy
+// horizon (the scene's horizon colour, 0.7..0.9) to about 0.7, off white.
+constexpr float kExposure = 0.9f;
 
 } // namespace
 
