@@ -40,4 +40,12 @@ grep -q '^\[\[objects\]\]' "$scratch/wake.toml" && ! grep -q '^\[camera' "$scrat
 printf '%s\n' '[camera]' 'position_m = [22.0, 32.0, -78.0]' 'yaw_deg = -22.0' 'pitch_deg = -33.0' 'far_m = 30000.0' \
   >>"$scratch/wake.toml"
 "$swell" render "$scratch/wake.toml" -o "$out/under-way-wake.png" --size 960x540 --time 30
+
+# The example host's picture: the build installed into a scratch prefix, the
+# example (an outside project) built against it, one frame headless.
+cmake --install "${SWELL_BUILD_DIR:-$root/build}" --prefix "$scratch/prefix" >/dev/null
+cmake -S "$root/examples/host" -B "$scratch/host" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \
+  -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$scratch/host" >/dev/null
+"$scratch/host/swell_host_example" --headless "$out/host-example.png" "${size[@]}"
 git -C "$root" status --short docs/images
