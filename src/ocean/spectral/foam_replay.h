@@ -6,8 +6,8 @@
 // packs both cascades' dDx/dz), against the GPU replay's transform of every
 // field. The windows do not move during a replay, so each texel's warped
 // sample points and the warp's Jacobian are computed once, not every step.
-// On llvmpipe the GPU's steps cost about 0.18 s of CPU each, these about
-// 0.01 s (docs/PERFORMANCE.md); a GPU keeps its own steps.
+// On llvmpipe the GPU's steps cost about 0.19 s of CPU each, these about
+// 0.011 s (docs/PERFORMANCE.md); a GPU keeps its own steps.
 #pragma once
 
 #include "ocean/spectral/spectral_field.h"

@@ -130,8 +130,8 @@ public:
         uniforms_ = gl::Buffer::create();
         glNamedBufferStorage(uniforms_.id(), sizeof(SpectralUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
         // A software rasteriser runs the GPU's replay steps on the CPU at
-        // about 17 times the cost of FoamReplay's (0.18 s against 0.01 s
-        // on llvmpipe); a GPU keeps them.
+        // about 18 times the cost of FoamReplay's (0.19 s against 0.011 s
+        // a step on llvmpipe); a GPU keeps them.
         const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
         const std::string_view name = renderer ? renderer : "";
         if (name.find("llvmpipe") != name.npos || name.find("softpipe") != name.npos)

@@ -35,7 +35,7 @@ inline constexpr double kLongestFoamStep_s = 1.0;
 // (the foam cover of a 60 s-lifetime still fell from 0.44 to 0.27). What
 // keeps a still cheap is the cost of a step instead: on a software
 // rasteriser, FoamReplay (foam_replay.h) takes the steps before the last on
-// the CPU at about a seventeenth of the GPU shaders' cost there.
+// the CPU at about an eighteenth of the GPU shaders' cost there.
 inline constexpr double kFoamReplayStep_s = 0.5;
 inline constexpr double kFoamReplayLifetimes = 2.5;
 
