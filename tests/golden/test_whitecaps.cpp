@@ -196,6 +196,10 @@ void expectTheStillsFoamIsItsHistorys(double lifetime_s)
 
 TEST_F(Whitecaps, AStillShowsTheFoamItsHistoryMade) { expectTheStillsFoamIsItsHistorys(3.85); }
 
+// The same at the longest lifetime waves.foam_lifetime_s allows (60 s: 300
+// replay steps; the sequence renders 300 frames, about 90 s on llvmpipe).
+TEST_F(Whitecaps, AStillShowsTheFoamItsHistoryMadeAtTheLongestLifetime) { expectTheStillsFoamIsItsHistorys(60.0); }
+
 // The mean covered share of the foam view straight down from 1200 m
 // (1386 m across, inside level 1's window of 1536 m; the levels sample the
 // same folds, so they have the same cover) over nine places of one frame,
