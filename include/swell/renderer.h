@@ -76,8 +76,11 @@ struct SWELL_API FrameCounters {
 // Passes: "ocean" (the wave model's simulation for the frame), "bodies" (the
 // floating bodies and their wake stepped on the CPU to the frame's time),
 // "wake" (the wake's frame blended and uploaded), "reflection",
-// "refraction", "main"; within "main", "water" for the water draw; then
-// "present" when the main pass's image is resolved, filtered or scaled.
+// "refraction", "waterline" (the mask, when the near plane meets the
+// waves), "main"; within "main", "underwater host" (draw(): the host's
+// geometry seen from under the water) and "water" for the water draw; then
+// "present" when the main pass's image is resolved, filtered or scaled. The
+// first three come from advanceTo(), the others from each view drawn.
 class SWELL_API PassObserver {
 public:
     virtual ~PassObserver() = default;

@@ -69,6 +69,8 @@
 #define SWELL_UNIT_POST_SOURCE 11
 // The wake field's frame (shaders/wake.glsl): height, slopes and foam per cell.
 #define SWELL_UNIT_WAKE 12
+// A copy of the host's depth (Renderer::draw's underwater pass over the host's geometry).
+#define SWELL_UNIT_HOST_DEPTH 13
 // ...and its uniform block: where the cells lie.
 #define SWELL_BINDING_WAKE 2
 // Surface sources (swell/surface_source.h): the WaveSources block of

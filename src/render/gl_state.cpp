@@ -34,6 +34,12 @@ SavedGlState::SavedGlState()
     glGetFloatv(GL_DEPTH_CLEAR_VALUE, &clearDepth_);
     glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment_);
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment_);
+    glGetIntegerv(GL_BLEND_SRC_RGB, &blend_[0]);
+    glGetIntegerv(GL_BLEND_DST_RGB, &blend_[1]);
+    glGetIntegerv(GL_BLEND_SRC_ALPHA, &blend_[2]);
+    glGetIntegerv(GL_BLEND_DST_ALPHA, &blend_[3]);
+    glGetIntegerv(GL_BLEND_EQUATION_RGB, &blend_[4]);
+    glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &blend_[5]);
     for (std::size_t i = 0; i < kCapabilities.size(); ++i)
         enabled_[i] = glIsEnabled(kCapabilities[i]);
 }
@@ -62,6 +68,8 @@ void SavedGlState::restore() const
     glClearDepth(clearDepth_);
     glPixelStorei(GL_PACK_ALIGNMENT, packAlignment_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment_);
+    glBlendFuncSeparate(GLenum(blend_[0]), GLenum(blend_[1]), GLenum(blend_[2]), GLenum(blend_[3]));
+    glBlendEquationSeparate(GLenum(blend_[4]), GLenum(blend_[5]));
     for (std::size_t i = 0; i < kCapabilities.size(); ++i)
         enabled_[i] ? glEnable(kCapabilities[i]) : glDisable(kCapabilities[i]);
 }

@@ -27,6 +27,7 @@ private:
     std::array<GLfloat, 4> clearColor_{};
     GLfloat clearDepth_ = 1.0f;
     GLint packAlignment_ = 4, unpackAlignment_ = 4;
+    std::array<GLint, 6> blend_{}; // source and destination factors (rgb, alpha), equations (rgb, alpha)
     // The capabilities it turns on or off (kCapabilities in gl_state.cpp).
     std::array<GLboolean, 9> enabled_{};
 };

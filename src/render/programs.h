@@ -84,6 +84,8 @@ private:
 
 struct Programs {
     BlockProgram water, sky, waterline, fxaa, capture;
+    // The host's geometry seen from under the water (sky.vert + underwater_host.frag).
+    BlockProgram underwaterHost;
     MeshProgram mesh;
     SkyBakeProgram skyBake;
     // water, sky and mesh again, built with SWELL_SEEN_FROM_BELOW 0 for the

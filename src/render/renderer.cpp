@@ -8,6 +8,7 @@
 #include "ocean/waves_with_sources.h"
 #include "render/frame_uniforms.h"
 #include "render/gl_state.h"
+#include "render/host_depth.h"
 #include "render/programs.h"
 #include "render/render_target.h"
 #include "render/scene_world.h"
@@ -108,6 +109,7 @@ struct Renderer::Impl {
     mutable std::optional<SceneBodies> queryBodies;
     WakeTexture wakeTexture;
     SurfaceSourceParametersBuffer sourceParameters;
+    HostDepthCopy hostDepth; // draw()'s copy of the host's depth, for its geometry under the water
 
     explicit Impl(RendererOptions options)
         : sources(std::move(options.shaders)), omittedWaterTerms(options.omittedWaterTerms)
@@ -536,7 +538,13 @@ struct Renderer::Impl {
             drawGeometry(PassKind::WaterMask, ownWorld, options.geometry, view, v, PassMain, f, mainFramebuffer,
                          mainViewport);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        } else if (ownWorld) {
+        } else {
+            // The host's geometry seen from below the water: fogged by it,
+            // as Swell's own is (before Swell's own is drawn in).
+            if (medium != NearPlaneMedium::Air)
+                fogHostUnderwater(framebuffer, mainViewport, v.depth);
+        }
+        if (!ownsFrame && ownWorld) {
             // The host drew its opaque scene; Swell's own world joins it.
             drawGeometry(PassKind::Main, ownWorld, nullptr, view, v, PassMain, f, mainFramebuffer, mainViewport);
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -557,6 +565,29 @@ struct Renderer::Impl {
             mainTarget.present(programs.fxaa, emptyVao.id());
             notify(false, "present");
         }
+    }
+
+    // The underwater pass over the host's geometry (underwater_host.frag):
+    // on its copied depth, blending in-scattering and transmittance.
+    void fogHostUnderwater(GLuint framebuffer, glm::ivec4 viewport, const DepthConvention& depth)
+    {
+        notify(true, "underwater host");
+        const GLuint copy = hostDepth.copy(framebuffer, viewport);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        setPassState(viewport, depth);
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_SRC1_COLOR);
+        programs.underwaterHost.use();
+        glBindTextureUnit(SWELL_UNIT_HOST_DEPTH, copy);
+        glBindVertexArray(emptyVao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        ++counters.drawCalls;
+        glDisable(GL_BLEND);
+        setPassState(viewport, depth);
+        notify(false, "underwater host");
     }
 
     void requireSimulation() const

@@ -223,6 +223,59 @@ TEST_P(HostComposite, TheHostsCubeIsMirroredItsWallHidesTheWaterAndNothingElseCh
     EXPECT_EQ(unfilled, 0) << "and fills it (" << reflected << " red water pixels)";
 }
 
+// From under the water, the host's geometry below the surface is seen
+// through the water: absorbed (red first) and filled in by its scattered
+// light, as Swell's own objects are; with a linear target, exactly
+// host colour * transmittance + in-scattering.
+TEST_P(HostComposite, TheHostsGeometryUnderTheWaterIsSeenThroughIt)
+{
+    const Config c = GetParam();
+    const swell::Scene scene = mirrorScene(c.level_m);
+    swell::Renderer renderer(scene);
+    renderer.setWaveModel(std::make_shared<swell::FlatModel>());
+    swell::Camera camera;
+    camera.position_m = {0.0, c.level_m - 3.0, 0.0};
+    camera.pitch_deg = -10.0;
+    camera.roll_deg = c.roll_deg;
+    swell::View view = swell::viewOf(camera, kSize);
+    if (c.reversedZ) {
+        view.projection = reversedInfinite(camera.fovY_deg, double(kSize.x) / kSize.y, camera.near_m);
+        view.depth = swell::DepthMode::Reversed;
+    }
+    // A white block 12 m ahead, from 8 m down to 4 m down.
+    const HostBox block{{-3.0, c.level_m - 8.0, -14.0}, {3.0, c.level_m - 4.0, -10.0}, {1.0f, 1.0f, 1.0f}};
+    HostScene host({block});
+    HostTarget target(kSize, GL_RGBA16F, c.reversedZ ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24);
+    swell::test::drawHostFrame(target, host, view, kHostClear);
+    renderer.advanceTo(10.0, view.eye_m());
+    swell::DrawOptions options;
+    options.geometry = &host;
+    options.sky = false;
+    options.encoding = swell::OutputEncoding::Linear;
+    renderer.draw(view, target.framebuffer(), options);
+    const std::vector<float> after = target.floatPixels();
+    const std::vector<bool> blockMask = coverage({block}, view, glm::dmat4(1.0));
+    int pixels = 0, redAbsorbedMost = 0;
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i < blockMask.size(); ++i) {
+        if (!blockMask[i])
+            continue;
+        const glm::dvec3 rgb(after[4 * i], after[4 * i + 1], after[4 * i + 2]);
+        ++pixels;
+        sum += rgb;
+        redAbsorbedMost += rgb.r < rgb.g && rgb.r < rgb.b && rgb.r < 0.2;
+    }
+    ASSERT_GT(pixels, 500);
+    EXPECT_EQ(redAbsorbedMost, pixels) << "the white block is seen through metres of water: red is absorbed first";
+    // Its centre, 12 m from the eye along a path of about 12.4 m, 4 to 8 m
+    // down: white * exp(-a (depth + path)) + in-scattering, per channel.
+    const glm::dvec3 mean = sum / double(pixels);
+    const glm::dvec3 a = scene.water.absorption_per_m;
+    EXPECT_LT(mean.r, 0.05);
+    EXPECT_GT(mean.g, std::exp(-a.y * (8.0 + 14.5))) << "green is absorbed less than the path's longest allows";
+    EXPECT_LT(mean.g, std::exp(-a.y * (4.0 + 10.0)) + 0.1) << "and at least as much as its shortest";
+}
+
 std::string configName(const ::testing::TestParamInfo<Config>& info) { return info.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Views, HostComposite,

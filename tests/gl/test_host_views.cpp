@@ -175,6 +175,8 @@ struct HostState {
     std::array<GLint, 2> polygonMode;
     std::array<GLfloat, 4> clearColor;
     GLint packAlignment, unpackAlignment;
+    std::array<GLint, 4> blendFactors;
+    GLint blendEquation;
 
     static HostState read()
     {
@@ -201,6 +203,11 @@ struct HostState {
         glGetFloatv(GL_COLOR_CLEAR_VALUE, s.clearColor.data());
         glGetIntegerv(GL_PACK_ALIGNMENT, &s.packAlignment);
         glGetIntegerv(GL_UNPACK_ALIGNMENT, &s.unpackAlignment);
+        glGetIntegerv(GL_BLEND_SRC_RGB, &s.blendFactors[0]);
+        glGetIntegerv(GL_BLEND_DST_RGB, &s.blendFactors[1]);
+        glGetIntegerv(GL_BLEND_SRC_ALPHA, &s.blendFactors[2]);
+        glGetIntegerv(GL_BLEND_DST_ALPHA, &s.blendFactors[3]);
+        glGetIntegerv(GL_BLEND_EQUATION_RGB, &s.blendEquation);
         return s;
     }
     bool operator==(const HostState&) const = default;
@@ -232,6 +239,8 @@ swell::gl::VertexArray leaveUnusualState(const HostTarget& other, const HostScen
     glClearColor(0.3f, 0.2f, 0.1f, 0.5f);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    glBlendFunc(GL_DST_COLOR, GL_ZERO);
+    glBlendEquation(GL_MAX);
     return vao;
 }
 
@@ -251,6 +260,12 @@ TEST_F(HostViews, TheGlStateAHostLeftIsTheStateItFindsAfterADraw)
     const HostState before = HostState::read();
     renderer.draw(swell::viewOf(camera, kHalf), target.framebuffer(), options);
     EXPECT_TRUE(HostState::read() == before) << "draw() put back every piece of state it changed";
+    // From under the water, with the pass that fogs the host's geometry (blending).
+    swell::Camera under = camera;
+    under.position_m.y = -3.0;
+    renderer.advanceTo(3.0, under.position_m);
+    renderer.draw(swell::viewOf(under, kHalf), target.framebuffer(), options);
+    EXPECT_TRUE(HostState::read() == before) << "draw() from under the water put back every piece of state";
     // And render(), which owns the frame, too.
     renderer.render(camera, 3.0, kHalf, target.framebuffer());
     EXPECT_TRUE(HostState::read() == before) << "render() put back every piece of state it changed";
@@ -258,6 +273,8 @@ TEST_F(HostViews, TheGlStateAHostLeftIsTheStateItFindsAfterADraw)
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_FRAMEBUFFER_SRGB);
     glDisable(GL_BLEND);
