@@ -53,10 +53,10 @@ const std::vector<std::string> kInAir{"SWELL_SEEN_FROM_BELOW 0"};
 } // namespace
 
 ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms,
-                              std::vector<std::string> waveSources)
+                              std::vector<std::string> surfaceSources)
 {
     return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile), omittedWaterTerms,
-            std::move(waveSources)};
+            std::move(surfaceSources)};
 }
 
 std::vector<std::string> definesOf(const ShaderVariant& v)
@@ -68,7 +68,7 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
         fmt::format("SWELL_GRID_LAYOUT {}", v.gridLayout == GridLayout::Paper ? "SWELL_GRID_PAPER" : "SWELL_GRID_GEOMETRIC"),
         fmt::format("SWELL_OCEAN_FILE \"{}\"", v.oceanFile),
         fmt::format("SWELL_OMITTED_TERMS {}", v.omittedWaterTerms),
-        fmt::format("SWELL_SURFACE_SOURCES {}", v.waveSources.size()),
+        fmt::format("SWELL_SURFACE_SOURCES {}", v.surfaceSources.size()),
     };
 }
 
@@ -100,7 +100,7 @@ void BlockProgram::use() const { glUseProgram(program_.id()); }
 
 Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
 {
-    setSurfaceSourceFiles(sources, variant.waveSources);
+    setSurfaceSourceFiles(sources, variant.surfaceSources);
     Programs p;
     p.water = BlockProgram(build(sources, variant, "water.vert", "water.frag"));
     p.sky = BlockProgram(build(sources, variant, "sky.vert", "sky.frag"));

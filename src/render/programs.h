@@ -24,14 +24,14 @@ struct ShaderVariant {
     unsigned omittedWaterTerms = 0;                    // SWELL_OMITTED_TERMS: SWELL_TERM_* bits (benchmark)
     // SWELL_SURFACE_SOURCES: the GLSL of each surface source drawn (the bodies'
     // wake's first when the scene has one; render/surface_sources.h).
-    std::vector<std::string> waveSources;
+    std::vector<std::string> surfaceSources{};
     bool operator==(const ShaderVariant&) const = default;
 };
 
 // The variant a scene asks for, with the wave model's GLSL file and the
 // water shading terms left out (RendererOptions::omittedWaterTerms).
 ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigned omittedWaterTerms,
-                              std::vector<std::string> waveSources);
+                              std::vector<std::string> surfaceSources);
 
 // The #define lines (without "#define ") for a variant.
 std::vector<std::string> definesOf(const ShaderVariant& variant);

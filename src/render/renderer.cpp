@@ -145,21 +145,21 @@ struct Renderer::Impl {
     // The sources drawn at time_s with the wake's frame `wake`.
     std::vector<std::shared_ptr<const SurfaceSource>> sourcesWith(std::shared_ptr<const WakeFrame> wake) const
     {
-        std::vector<std::shared_ptr<const SurfaceSource>> sources;
+        std::vector<std::shared_ptr<const SurfaceSource>> drawn;
         if (scene.wake.enabled)
-            sources.push_back(std::make_shared<const WakeSurfaceSource>(std::move(wake)));
-        sources.insert(sources.end(), hostSources.begin(), hostSources.end());
-        return sources;
+            drawn.push_back(std::make_shared<const WakeSurfaceSource>(std::move(wake)));
+        drawn.insert(drawn.end(), hostSources.begin(), hostSources.end());
+        return drawn;
     }
 
     // The water as the grid draws it around a viewpoint (sea frame), with
     // the surface sources `sources`; in the sea frame, or in the world's with
     // `level_m` added.
     DrawnSurface drawnSurfaceAt(glm::dvec3 viewpointSea, double time_s,
-                                std::vector<std::shared_ptr<const SurfaceSource>> sources, double level_m) const
+                                std::vector<std::shared_ptr<const SurfaceSource>> drawn, double level_m) const
     {
         return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), viewpointSea, time_s,
-                            std::move(sources), level_m);
+                            std::move(drawn), level_m);
     }
 
     void addWork(const WaveModelGpu::Work& work)
@@ -415,8 +415,8 @@ struct Renderer::Impl {
 
     // The geometry of a pass: Swell's own world and the host's, each through
     // the same callback; the pass's view in absolute world coordinates.
-    void drawGeometry(PassKind kind, SceneWorld* own, PassGeometry* host, const View& view, const ViewFrame& v,
-                      Pass uniforms, const FrameUniforms& f, GLuint framebuffer, glm::ivec4 viewport)
+    void drawGeometry(PassKind kind, SceneWorld* own, PassGeometry* host, const View& view, Pass uniforms,
+                      const FrameUniforms& f, GLuint framebuffer, glm::ivec4 viewport)
     {
         const bool mirrored = kind == PassKind::Reflection;
         PassView pass;
@@ -483,7 +483,7 @@ struct Renderer::Impl {
         // the front face turned too, the faces seen would count as back
         // faces, and mesh.frag, which turns a back face's normal round,
         // would light each object's reflection from the wrong side.
-        drawGeometry(PassKind::Reflection, ownWorld, options.geometry, view, v, PassReflection, f,
+        drawGeometry(PassKind::Reflection, ownWorld, options.geometry, view, PassReflection, f,
                      reflection.framebuffer(), passViewport);
         glDisable(GL_CLIP_DISTANCE0);
         drawSky(true, v.depth);
@@ -501,7 +501,7 @@ struct Renderer::Impl {
         bindFrame(PassRefraction, f);
         beginPass(refraction.framebuffer(), passViewport, v.depth, glm::vec4(0.0f));
         glEnable(GL_CLIP_DISTANCE0);
-        drawGeometry(PassKind::Refraction, ownWorld, options.geometry, view, v, PassRefraction, f,
+        drawGeometry(PassKind::Refraction, ownWorld, options.geometry, view, PassRefraction, f,
                      refraction.framebuffer(), passViewport);
         glDisable(GL_CLIP_DISTANCE0);
         notify(false, "refraction");
@@ -533,9 +533,9 @@ struct Renderer::Impl {
         beginPass(mainFramebuffer, mainViewport, v.depth,
                   ownsFrame ? std::optional<glm::vec4>(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)) : std::nullopt);
         if (ownsFrame) {
-            drawGeometry(PassKind::Main, ownWorld, options.geometry, view, v, PassMain, f, mainFramebuffer, mainViewport);
+            drawGeometry(PassKind::Main, ownWorld, options.geometry, view, PassMain, f, mainFramebuffer, mainViewport);
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            drawGeometry(PassKind::WaterMask, ownWorld, options.geometry, view, v, PassMain, f, mainFramebuffer,
+            drawGeometry(PassKind::WaterMask, ownWorld, options.geometry, view, PassMain, f, mainFramebuffer,
                          mainViewport);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         } else {
@@ -546,9 +546,9 @@ struct Renderer::Impl {
         }
         if (!ownsFrame && ownWorld) {
             // The host drew its opaque scene; Swell's own world joins it.
-            drawGeometry(PassKind::Main, ownWorld, nullptr, view, v, PassMain, f, mainFramebuffer, mainViewport);
+            drawGeometry(PassKind::Main, ownWorld, nullptr, view, PassMain, f, mainFramebuffer, mainViewport);
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            drawGeometry(PassKind::WaterMask, ownWorld, nullptr, view, v, PassMain, f, mainFramebuffer, mainViewport);
+            drawGeometry(PassKind::WaterMask, ownWorld, nullptr, view, PassMain, f, mainFramebuffer, mainViewport);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         notify(true, "water");
@@ -642,7 +642,7 @@ struct Renderer::Impl {
                 nextPrograms = buildPrograms(sources, nextVariant);
             } catch (...) {
                 // The files of the sources still drawn, for a later reload.
-                setSurfaceSourceFiles(sources, variant.waveSources);
+                setSurfaceSourceFiles(sources, variant.surfaceSources);
                 throw;
             }
         }

@@ -41,7 +41,7 @@ TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
             for (const ReflectionMode reflection : {ReflectionMode::FixedDistance, ReflectionMode::RayMarch})
                 for (const GridLayout layout : {GridLayout::Geometric, GridLayout::Paper}) {
                     swell::detail::ShaderVariant variant{view, reflection, layout, model};
-                    variant.waveSources = {swell::detail::WakeSurfaceSource::code()};
+                    variant.surfaceSources = {swell::detail::WakeSurfaceSource::code()};
                     SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", reflection " +
                                  std::to_string(int(reflection)) + ", layout " + std::to_string(int(layout)));
                     swell::detail::Programs programs;
@@ -64,7 +64,7 @@ TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
         for (const DebugView view : {DebugView::Shaded, DebugView::Normals, DebugView::Reflection, DebugView::Refraction,
                                      DebugView::Lod, DebugView::Wireframe, DebugView::Foam}) {
             swell::detail::ShaderVariant variant{view, ReflectionMode::RayMarch, GridLayout::Geometric, model};
-            variant.waveSources.clear();
+            variant.surfaceSources.clear();
             SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake");
             swell::detail::Programs programs;
             EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
@@ -86,7 +86,7 @@ TEST_F(AllVariants, EveryWaterTermCanBeLeftOut)
         for (const ReflectionMode reflection : {ReflectionMode::FixedDistance, ReflectionMode::RayMarch})
             for (unsigned term = 1; term <= SWELL_TERM_ALL; term = term == SWELL_TERM_FILTERING ? SWELL_TERM_ALL : term * 2) {
                 swell::detail::ShaderVariant variant{DebugView::Shaded, reflection, GridLayout::Geometric, model};
-                variant.waveSources = {swell::detail::WakeSurfaceSource::code()};
+                variant.surfaceSources = {swell::detail::WakeSurfaceSource::code()};
                 variant.omittedWaterTerms = term;
                 SCOPED_TRACE(model + ", reflection " + std::to_string(int(reflection)) + ", terms left out " +
                              std::to_string(term));
