@@ -1,0 +1,271 @@
+// The renderer's state and its steps (swell/renderer.h), shared by the
+// files that define them: render/renderer.cpp (the public calls, the
+// simulation, scene changes) and render/view_passes.cpp (one view's passes).
+// Library-internal.
+#pragma once
+
+#include "swell/renderer.h"
+
+#include "render/frame_uniforms.h"
+#include "render/host_depth.h"
+#include "render/programs.h"
+#include "render/render_target.h"
+#include "render/scene_world.h"
+#include "render/sky_cubemap.h"
+#include "render/surface_sources.h"
+#include "render/view_setup.h"
+#include "render/wake_texture.h"
+#include "render/water_grid.h"
+#include "render/waterline.h"
+#include "render/world.h"
+#include "objects/wake_surface.h"
+#include "swell/error.h"
+#include "swell/grid.h"
+#include "swell/scene_changes.h"
+#include "swell/shader_constants.h"
+#include "swell/wave_model_gpu.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swell {
+
+namespace detail {
+
+// The uniform buffer of each kind of pass (Renderer::Impl::frameUbo).
+enum Pass { PassReflection = 0, PassRefraction = 1, PassMain = 2, PassWaterline = 3, PassCount = 4 };
+
+} // namespace detail
+
+// The library's own code: its internal types are used unqualified.
+using namespace detail;
+
+struct Renderer::Impl {
+    Scene scene;
+    // The scene with its objects in the sea's frame (y = 0 at the water's
+    // mean level): what the bodies, the poses and the world's boxes use.
+    Scene seaScene;
+    // The scene's wave model, and the one setWaveModel() put in its place.
+    std::shared_ptr<const WaveModel> sceneModel, overrideModel;
+    // The host's surface sources (Renderer::addSurfaceSource), drawn after the wake.
+    std::vector<std::shared_ptr<const SurfaceSource>> hostSources;
+    // What the floating bodies float on: model() plus the host's sources.
+    std::shared_ptr<const WaveModel> bodyModel;
+    std::unique_ptr<WaveModelGpu> modelGpu;
+    double seaMeanSquareSlope = 0.0; // of model(), for the reflection's masking (slope_statistics.h)
+    GridShape gridShape;
+    gl::ShaderSources sources;
+    // Water shading terms left out, for the benchmark (RendererOptions).
+    unsigned omittedWaterTerms = 0;
+    ShaderVariant variant;
+    Programs programs;
+    gl::Buffer frameUbo[PassCount];
+    gl::VertexArray emptyVao;
+    WaterGrid waterGrid;
+    World world;
+    RenderTarget reflection, refraction, output;
+    WaterlineMask waterline;
+    // Where the main pass draws when anti-aliased or scaled (render_target.h).
+    MainTarget mainTarget;
+    double renderScale = 1.0;
+    bool interactive = false; // see Renderer::setInteractive
+    FrameCounters counters;
+    PassObserver* observer = nullptr;
+    // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
+    std::optional<SkyBakeKey> bakedSky;
+
+    // The simulation's state at the time advanceTo() reached (sea frame).
+    struct Simulated {
+        double time_s = 0.0;
+        glm::dvec3 viewpoint{0.0};
+        // Each scene object's transform, object to sea frame (see world.h).
+        std::vector<glm::dmat4> poses;
+        std::shared_ptr<const WakeFrame> wake; // null when the scene has none
+        // The surface sources drawn, in the programs' order: the wake's (when
+        // the scene has one) and the host's.
+        std::vector<std::shared_ptr<const SurfaceSource>> sources;
+        double sourcesReach_m = 0.0; // the largest height they add together, m
+    };
+    std::optional<Simulated> simulated;
+    // The floating rigid bodies, stepped to the simulated time (objects/scene_bodies.h).
+    SceneBodies bodies;
+    // Bodies of drawnSurface()'s queries at times other than the simulated
+    // one: stepped apart from those drawn, so a query changes no frame.
+    mutable std::optional<SceneBodies> queryBodies;
+    WakeTexture wakeTexture;
+    SurfaceSourceParametersBuffer sourceParameters;
+    HostDepthCopy hostDepth; // draw()'s copy of the host's depth, for its geometry under the water
+
+    explicit Impl(RendererOptions options)
+        : sources(std::move(options.shaders)), omittedWaterTerms(options.omittedWaterTerms)
+    {
+    }
+
+    const WaveModel& model() const { return overrideModel ? *overrideModel : *sceneModel; }
+    double level() const { return scene.water.level_m; }
+    glm::dvec3 toSea(glm::dvec3 world_m) const { return world_m - glm::dvec3(0.0, level(), 0.0); }
+
+    // How far the simulated surface can move from rest: the model's reach,
+    // and the wake's height above it.
+    WaveReach simulatedReach() const
+    {
+        WaveReach reach = model().reach();
+        if (simulated)
+            reach.vertical_m += simulated->sourcesReach_m;
+        return reach;
+    }
+
+    // The GLSL of the sources a scene's programs draw (render/surface_sources.h).
+    static std::vector<std::string> sourceCodes(const Scene& scene,
+                                                const std::vector<std::shared_ptr<const SurfaceSource>>& hosts)
+    {
+        std::vector<std::string> codes;
+        if (scene.wake.enabled)
+            codes.push_back(WakeSurfaceSource::code());
+        for (const std::shared_ptr<const SurfaceSource>& source : hosts)
+            codes.push_back(source->glsl());
+        return codes;
+    }
+
+    // The sources drawn at time_s with the wake's frame `wake`.
+    std::vector<std::shared_ptr<const SurfaceSource>> sourcesWith(std::shared_ptr<const WakeFrame> wake) const
+    {
+        std::vector<std::shared_ptr<const SurfaceSource>> drawn;
+        if (scene.wake.enabled)
+            drawn.push_back(std::make_shared<const WakeSurfaceSource>(std::move(wake)));
+        drawn.insert(drawn.end(), hostSources.begin(), hostSources.end());
+        return drawn;
+    }
+
+    // The water as the grid draws it around a viewpoint (sea frame), with
+    // the surface sources `sources`; in the sea frame, or in the world's with
+    // `level_m` added.
+    DrawnSurface drawnSurfaceAt(glm::dvec3 viewpointSea, double time_s,
+                                std::vector<std::shared_ptr<const SurfaceSource>> drawn, double level_m) const
+    {
+        return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), viewpointSea, time_s,
+                            std::move(drawn), level_m);
+    }
+
+    void addWork(const WaveModelGpu::Work& work)
+    {
+        counters.oceanTransforms += work.transforms;
+        counters.foamSteps += work.foamSteps;
+    }
+
+    void notify(bool begin, const char* pass) const
+    {
+        if (observer)
+            begin ? observer->beginPass(pass) : observer->endPass(pass);
+    }
+
+    void buildGrid()
+    {
+        gridShape = gridShapeFor(scene.grid, scene.camera);
+        waterGrid.build(gridShape);
+    }
+
+    // The simulation (Renderer::advanceTo): the wave model's own work for the
+    // time (the spectral model's FFTs and foam), the bodies stepped on the
+    // CPU with fixed steps (so their poses depend on time_s alone, never on
+    // the frames before) and their wake.
+    void advanceTo(double time_s, glm::dvec3 viewpointWorld);
+
+    // What every pass of one view shares.
+    struct ViewFrame {
+        FrameUniforms base{};
+        glm::dvec3 origin{0.0};   // the render origin, sea frame: the eye's x, z at the mean level
+        glm::dvec3 eye{0.0};      // sea frame
+        glm::dmat4 viewRelative{1.0}; // render origin relative to eye
+        glm::dmat4 viewProj{1.0};     // the view's projection of it
+        DepthConvention depth;
+        std::vector<glm::mat4> poses; // each object's transform relative to the origin
+        glm::mat4 island{1.0f};
+        glm::ivec2 size{0};       // every pass's size, pixels
+        glm::ivec4 viewport{0};   // the main pass's viewport in its framebuffer
+    };
+
+    // Per-view setup shared by drawing and capture: the render origin is the
+    // eye's x,z; the surface is phased at the snapped grid centre around the
+    // LOD viewpoint; the water tiles in view are chosen.
+    ViewFrame prepareView(const View& view, glm::ivec2 size, bool hostGeometry);
+
+    void bindFrame(Pass pass, const FrameUniforms& f)
+    {
+        glNamedBufferSubData(frameUbo[pass].id(), 0, sizeof(f), &f);
+        glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_FRAME, frameUbo[pass].id());
+    }
+
+    void drawSky(bool inAir, const DepthConvention& depth);
+
+    void drawWater(bool inAir);
+
+    // The waterline mask for the main pass (render/waterline.h): drawn from
+    // the water grid when the near plane can lie on either side of the
+    // waves, else cleared to the side it lies on. Draws into its own target
+    // with its own frame uniforms (the viewport at its origin).
+    void drawWaterline(NearPlaneMedium medium, const ViewFrame& v);
+
+    // Every pass sets all the state it depends on, so passes can be
+    // reordered; a clear colour clears colour and depth, none keeps both.
+    void beginPass(GLuint framebuffer, glm::ivec4 viewport, const DepthConvention& depth,
+                   std::optional<glm::vec4> clear);
+
+    void setPassState(glm::ivec4 viewport, const DepthConvention& depth);
+
+    // Calls a host's geometry for a pass and puts back the state the pass
+    // draws with: the host may change any of it.
+    void drawHost(PassGeometry& geometry, const PassView& pass, Pass uniforms, const FrameUniforms& f,
+                  GLuint framebuffer, bool mirrored);
+
+    static const char* passName(PassKind pass)
+    {
+        switch (pass) {
+        case PassKind::Reflection: return "reflection";
+        case PassKind::Refraction: return "refraction";
+        case PassKind::Main: return "main";
+        case PassKind::WaterMask: return "water mask";
+        }
+        return "?";
+    }
+
+    // The geometry of a pass: Swell's own world and the host's, each through
+    // the same callback; the pass's view in absolute world coordinates.
+    void drawGeometry(PassKind kind, SceneWorld* own, PassGeometry* host, const View& view, Pass uniforms,
+                      const FrameUniforms& f, GLuint framebuffer, glm::ivec4 viewport);
+
+    // The passes of one view. ownsFrame: render()'s frame (cleared, the main
+    // pass through mainTarget at the render scale); else draw()'s
+    // compositing into the host's framebuffer at the view's viewport.
+    void drawView(const View& view, GLuint framebuffer, const DrawOptions& options, bool ownsFrame,
+                  glm::ivec2 outputSize);
+
+    // The underwater pass over the host's geometry (underwater_host.frag):
+    // on its copied depth, blending in-scattering and transmittance.
+    void fogHostUnderwater(GLuint framebuffer, glm::ivec4 viewport, const DepthConvention& depth);
+
+    void requireSimulation() const
+    {
+        if (!simulated)
+            throw Error("nothing to draw yet: call advanceTo() with the frame's time before draw()");
+    }
+
+    // Draws a view with the GL state put back afterwards, whatever happens.
+    void drawRestoring(const View& view, GLuint framebuffer, const DrawOptions& options, bool ownsFrame,
+                       glm::ivec2 outputSize);
+
+    void render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer);
+
+    // Makes `next` the scene and `nextSceneModel` (when given) its model,
+    // rebuilding what `effects` and a changed model file ask for. Everything
+    // that can fail is built first; the renderer changes only when all did.
+    void apply(const Scene& next, ParameterEffect effects, std::shared_ptr<const WaveModel> nextSceneModel,
+               std::shared_ptr<const WaveModel> nextOverride, bool first,
+               std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources);
+};
+
+} // namespace swell
