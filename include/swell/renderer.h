@@ -125,8 +125,9 @@ public:
     // The water exactly as render() draws it for this camera and time: the
     // grid's triangles (swell/drawn_surface.h), in absolute world
     // coordinates (the sea level added). Put things on the water the user
-    // sees with it. Changes nothing: at a time other than the simulated one
-    // it steps a copy of the bodies' wake there. Valid until the next
+    // sees with it. Changes nothing drawn: at a time other than the
+    // simulated one it steps bodies of the queries' own to find the wake
+    // there. Valid until the next
     // setScene() or setWaveModel().
     DrawnSurface drawnSurface(const Camera& camera, double time_s) const;
     // The same for a view whose grid detail is centred at `lodViewpoint_m`
@@ -155,7 +156,8 @@ public:
     // with the same time and viewpoint does nothing.
     void advanceTo(double time_s, glm::dvec3 viewpoint_m);
     // The time the last advanceTo() reached; empty before the first, and
-    // after a setScene() or setWaveModel() that changed the simulation.
+    // after any setScene(), setWaveModel() or change of the surface sources
+    // (the next advanceTo() takes it again, at no cost where nothing moved).
     std::optional<double> simulatedTime_s() const;
 
     // Draws one view of the simulated time into the host's `framebuffer`
