@@ -180,13 +180,11 @@ struct Renderer::Impl {
         FrameUniforms base{};
         glm::dvec3 origin{0.0};   // the render origin, sea frame: the eye's x, z at the mean level
         glm::dvec3 eye{0.0};      // sea frame
-        glm::dmat4 viewRelative{1.0}; // render origin relative to eye
-        glm::dmat4 viewProj{1.0};     // the view's projection of it
+        glm::dmat4 viewProj{1.0};     // positions relative to the render origin to clip space
         DepthConvention depth;
         std::vector<glm::mat4> poses; // each object's transform relative to the origin
         glm::mat4 island{1.0f};
         glm::ivec2 size{0};       // every pass's size, pixels
-        glm::ivec4 viewport{0};   // the main pass's viewport in its framebuffer
     };
 
     // Per-view setup shared by drawing and capture: the render origin is the

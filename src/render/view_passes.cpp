@@ -23,7 +23,6 @@ Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ive
 {
     ViewFrame v;
     v.size = size;
-    v.viewport = view.viewport;
     v.depth = depthConventionOf(view.depth);
     v.eye = toSea(view.eye_m());
     v.origin = glm::dvec3(v.eye.x, 0.0, v.eye.z);
@@ -33,8 +32,8 @@ Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ive
     addWork(modelGpu->takeWork()); // none, unless a view simulated: the counters would show it
     modelGpu->bind();
     // World = sea + level: relative = world - (origin + level).
-    v.viewRelative = view.view * glm::translate(glm::dmat4(1.0), v.origin + glm::dvec3(0.0, level(), 0.0));
-    v.viewProj = view.projection * v.viewRelative;
+    const glm::dmat4 viewRelative = view.view * glm::translate(glm::dmat4(1.0), v.origin + glm::dvec3(0.0, level(), 0.0));
+    v.viewProj = view.projection * viewRelative;
     const glm::dmat4& viewProj = v.viewProj;
     FrameUniforms& f = v.base;
     f = frameUniforms(scene, gridShape, grid, v.eye, viewProj, v.origin, size);
@@ -291,23 +290,19 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     bindFrame(PassMain, f);
     beginPass(mainFramebuffer, mainViewport, v.depth,
               ownsFrame ? std::optional<glm::vec4>(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)) : std::nullopt);
-    if (ownsFrame) {
-        drawGeometry(PassKind::Main, ownWorld, options.geometry, view, PassMain, f, mainFramebuffer, mainViewport);
+    // The host's geometry seen from below the water is fogged by it, as
+    // Swell's own is, before Swell's own is drawn in (draw() only: in
+    // render() there is no host's frame).
+    if (!ownsFrame && medium != NearPlaneMedium::Air)
+        fogHostUnderwater(framebuffer, mainViewport, v.depth);
+    // The world, then the closed volumes the water must not show inside.
+    // In draw() the host drew its own opaque scene and volumes already:
+    // only Swell's own world joins them.
+    PassGeometry* host = ownsFrame ? options.geometry : nullptr;
+    if (ownWorld || host) {
+        drawGeometry(PassKind::Main, ownWorld, host, view, PassMain, f, mainFramebuffer, mainViewport);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        drawGeometry(PassKind::WaterMask, ownWorld, options.geometry, view, PassMain, f, mainFramebuffer,
-                     mainViewport);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    } else {
-        // The host's geometry seen from below the water: fogged by it,
-        // as Swell's own is (before Swell's own is drawn in).
-        if (medium != NearPlaneMedium::Air)
-            fogHostUnderwater(framebuffer, mainViewport, v.depth);
-    }
-    if (!ownsFrame && ownWorld) {
-        // The host drew its opaque scene; Swell's own world joins it.
-        drawGeometry(PassKind::Main, ownWorld, nullptr, view, PassMain, f, mainFramebuffer, mainViewport);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        drawGeometry(PassKind::WaterMask, ownWorld, nullptr, view, PassMain, f, mainFramebuffer, mainViewport);
+        drawGeometry(PassKind::WaterMask, ownWorld, host, view, PassMain, f, mainFramebuffer, mainViewport);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
     notify(true, "water");

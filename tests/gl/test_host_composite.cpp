@@ -254,6 +254,15 @@ TEST_P(HostComposite, TheHostsGeometryUnderTheWaterIsSeenThroughIt)
     options.encoding = swell::OutputEncoding::Linear;
     renderer.draw(view, target.framebuffer(), options);
     const std::vector<float> after = target.floatPixels();
+    Pixels shown; // display-encoded, for a person to look at
+    for (float value : after) {
+        const float v = std::clamp(value, 0.0f, 1.0f);
+        const float encoded = v < 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+        shown.rgba.push_back(std::uint8_t(std::lround(encoded * 255.0f)));
+    }
+    for (std::size_t i = 3; i < shown.rgba.size(); i += 4)
+        shown.rgba[i] = 255;
+    writeFrame(shown, "host_underwater_" + c.name);
     const std::vector<bool> blockMask = coverage({block}, view, glm::dmat4(1.0));
     int pixels = 0, redAbsorbedMost = 0;
     glm::dvec3 sum(0.0);
