@@ -6,6 +6,12 @@
 #define SWELL_FRAME_GLSL
 #include "swell/shader_constants.h"
 
+// 1 in the label pass's programs (swell/labels.h): fragments write labels
+// (labels.glsl) in place of a colour.
+#ifndef SWELL_LABEL_PASS
+#define SWELL_LABEL_PASS 0
+#endif
+
 // A box holding world geometry, relative to the render origin, m.
 struct WorldBox {
     vec3 min_m;

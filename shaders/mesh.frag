@@ -7,13 +7,23 @@
 in vec3 vPosition;
 in vec3 vNormal;
 in vec3 vColor;
+#if SWELL_LABEL_PASS
+#include "labels.glsl"
+// This draw's semantic class and instance (0: none, the terrain).
+uniform uvec2 label;
+#else
 out vec4 fragColor;
+#endif
 
 void main()
 {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing)
         n = -n;
+#if SWELL_LABEL_PASS
+    writeLabels(distance(vPosition, eyePosition), n, label.x, label.y);
+    return;
+#endif
     vec3 ambient = mix(skyHorizon, skyZenith, n.y * 0.5 + 0.5) * 0.45;
     vec3 light = ambient + sunColor * sunIntensity * phongDiffuse(n);
     vec3 color = vColor * light;

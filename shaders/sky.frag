@@ -9,11 +9,31 @@
 layout(early_fragment_tests) in;
 
 in vec2 vNdc;
+#if SWELL_LABEL_PASS
+#define SWELL_LABEL_RAYS
+#include "labels.glsl"
+#else
 out vec4 fragColor;
+#endif
 
 void main()
 {
     vec3 direction = pixelRayDirection(vNdc);
+#if SWELL_LABEL_PASS
+    // Nothing drawn here. From below the surface: the water's depths. From
+    // above, below the horizon: the unbounded sea past the drawn grid, a
+    // plane at the mean level (the ray's distance to it, exact for calm
+    // water); else the sky, infinitely far.
+    const float infinity = uintBitsToFloat(0x7f800000u);
+    dvec3 ray = labelPixelRay();
+    if (pixelUnderwater())
+        writeLabels(infinity, vec3(0.0), SWELL_LABEL_WATER, 0u);
+    else if (ray.y < 0.0 && eyePosition.y > 0.0)
+        writeLabels(float(double(eyePosition.y) / -ray.y), vec3(0.0, 1.0, 0.0), SWELL_LABEL_WATER, 0u);
+    else
+        writeLabels(infinity, vec3(0.0), SWELL_LABEL_SKY, 0u);
+    return;
+#endif
     vec3 color = applyFog(skyRadianceFiltered(direction), skyDistance(direction));
     // Underwater hook: below the surface, what no geometry covers is the
     // water's depths (underwater.glsl).

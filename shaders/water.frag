@@ -26,7 +26,12 @@ in float vHeightScale;
 #if SWELL_SURFACE_SOURCES
 in vec2 vSourceSlope;
 #endif
+#if SWELL_LABEL_PASS
+#define SWELL_LABEL_RAYS
+#include "labels.glsl"
+#else
 out vec4 fragColor;
+#endif
 
 // A term of the shading is in unless the benchmark left it out.
 #define SWELL_HAS_TERM(term) ((SWELL_OMITTED_TERMS & (term)) == 0)
@@ -65,11 +70,23 @@ void main()
     // wake's stern wash), its foam joins the waves' whitecaps.
     vec4 sources = surfaceSourcesAt(vRestPoint);
     n = normalize(n / max(n.y, 0.1) - vec3(sources.y - vSourceSlope.x, 0.0, sources.z - vSourceSlope.y));
+    float sourceFoam = sources.w;
     foam = max(foam, sources.w);
+#else
+    float sourceFoam = 0.0;
 #endif
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);
     vec3 v = toEye / distance_m;
+#if SWELL_LABEL_PASS
+    // Foam where it covers most of the pixel: the wake's (every surface
+    // source's) where it is the larger share, else the waves' whitecaps.
+    uint label = SWELL_LABEL_WATER;
+    if (foam >= SWELL_LABEL_FOAM_COVER)
+        label = sourceFoam >= foam ? SWELL_LABEL_WAKE_FOAM : SWELL_LABEL_WHITECAP_FOAM;
+    writeLabels(labelRangeToPlane(vPosition, normalize(vNormal)), n, label, 0u);
+    return;
+#endif
     // Underwater hook: the surface seen from below is Snell's window and the
     // water's own colour, shaded in underwater_surface.glsl. The waterline
     // mask says so: it holds the side this very fragment is seen from when

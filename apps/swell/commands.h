@@ -29,6 +29,7 @@ struct RenderOptions {
     double time_s = 0.0;            // simulation time of the (first) frame, s
     std::optional<double> duration_s; // render a sequence this long, s
     double fps = 30.0;              // frames per second of a sequence
+    bool labels = false;            // also write each frame's ground truth (label_files.h)
     OutputSettings outputSettings;
 };
 int runRender(const RenderOptions& options);

@@ -1,6 +1,7 @@
 // `swell render`: headless frames to PNG, a PNG sequence, or an MP4 through
 // the ffmpeg program.
 #include "commands.h"
+#include "label_files.h"
 #include "progress.h"
 #include "scene_loading.h"
 
@@ -120,6 +121,9 @@ int runRender(const RenderOptions& options)
     const bool video = extension == ".mp4";
     if (video && !options.duration_s)
         throw InputError({"--output"}, "an .mp4 output needs --duration SECONDS");
+    if (video && options.labels)
+        throw InputError({"--labels"}, "labels are written beside PNG frames: give a .png output (with --duration, "
+                                       "a sequence) instead of an .mp4");
     if (video && !programOnPath("ffmpeg"))
         throw InputError({"--output"}, "writing .mp4 needs the ffmpeg program, which is not installed "
                                        "(apt-get install ffmpeg), or write a PNG sequence instead");
@@ -165,11 +169,16 @@ int runRender(const RenderOptions& options)
     Progress progress("rendering frames", frames);
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
-        const Image image = renderer.renderImage(cameraAt(scene.camera, t), t, size);
+        const Camera camera = cameraAt(scene.camera, t);
+        const Image image = renderer.renderImage(camera, t, size);
+        const fs::path frame = options.duration_s ? sequencePath(output, i) : output;
         if (video)
             videoWriter->write(image);
         else
-            writePng(image, options.duration_s ? sequencePath(output, i) : output);
+            writePng(image, frame);
+        if (options.labels)
+            writeLabelFiles(renderer.renderLabels(camera, size), scene, t, 4.0 * renderer.waveModel().heightDeviation_m(),
+                            frame);
         progress.advance();
     }
     if (videoWriter)

@@ -21,6 +21,7 @@
 #include "swell/drawn_surface.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/image.h"
+#include "swell/labels.h"
 #include "swell/scene.h"
 #include "swell/view.h"
 #include "swell/wave_model.h"
@@ -178,6 +179,14 @@ public:
     void render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer = 0);
     // Draws one frame offscreen and reads it back (top row first).
     Image renderImage(const Camera& camera, double time_s, glm::ivec2 size);
+
+    // The ground truth of the frame render() draws for this camera at the
+    // simulated time (swell/labels.h, docs/LABELS.md): per pixel range,
+    // normal, class and instance, aligned with the colour image of `size`
+    // pixels (at any render scale or antialiasing), each object's boxes,
+    // the camera's calibration and the horizon. Throws swell::Error before
+    // the first advanceTo() or render(), or for an empty size.
+    FrameLabels renderLabels(const Camera& camera, glm::ivec2 size);
 
     const FrameCounters& counters() const;
 

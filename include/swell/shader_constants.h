@@ -97,6 +97,20 @@
 #define SWELL_VIEW_WIREFRAME 5
 #define SWELL_VIEW_FOAM 6
 
+// The label pass (swell/labels.h, shaders/labels.glsl; prepended as
+// SWELL_LABEL_PASS 1 in its programs): each pixel's semantic class. The
+// classes of scene objects follow from SWELL_LABEL_FIRST_OBJECT_CLASS on,
+// one per distinct class name in the scene (FrameLabels::classes).
+#define SWELL_LABEL_NONE 0
+#define SWELL_LABEL_SKY 1
+#define SWELL_LABEL_WATER 2
+#define SWELL_LABEL_WHITECAP_FOAM 3
+#define SWELL_LABEL_WAKE_FOAM 4
+#define SWELL_LABEL_TERRAIN 5
+#define SWELL_LABEL_FIRST_OBJECT_CLASS 16
+// A water pixel is labelled foam where foam covers at least this share of it.
+#define SWELL_LABEL_FOAM_COVER 0.5
+
 // Reflection lookups (prepended as SWELL_REFLECTION_MODE).
 #define SWELL_REFLECTION_FIXED 0
 #define SWELL_REFLECTION_RAYMARCH 1

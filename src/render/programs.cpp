@@ -75,8 +75,15 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
 MeshProgram::MeshProgram(const gl::ShaderSources& sources, const ShaderVariant& variant,
                          const std::vector<std::string>& extraDefines)
     : program_(build(sources, variant, "mesh.vert", "mesh.frag", extraDefines)),
-      model_(requiredUniform(program_, "model", "mesh.vert"))
+      model_(requiredUniform(program_, "model", "mesh.vert")),
+      label_(glGetUniformLocation(program_.id(), "label"))
 {
+}
+
+void MeshProgram::setLabel(glm::uvec2 classAndInstance) const
+{
+    if (label_ >= 0)
+        glProgramUniform2ui(program_.id(), label_, classAndInstance.x, classAndInstance.y);
 }
 
 void MeshProgram::use() const { glUseProgram(program_.id()); }
@@ -97,6 +104,28 @@ void SkyBakeProgram::use() const { glUseProgram(program_.id()); }
 void SkyBakeProgram::setFace(int face) const { glProgramUniform1i(program_.id(), face_, face); }
 
 void BlockProgram::use() const { glUseProgram(program_.id()); }
+
+LabelProgram::LabelProgram(gl::Program program)
+    : program_(std::move(program)), rayFromPixel_(glGetUniformLocation(program_.id(), "labelRayFromPixel"))
+{
+}
+
+void LabelProgram::use() const { glUseProgram(program_.id()); }
+
+void LabelProgram::setRayFromPixel(const glm::dmat3& rayFromPixel) const
+{
+    glProgramUniformMatrix3dv(program_.id(), rayFromPixel_, 1, GL_FALSE, glm::value_ptr(rayFromPixel));
+}
+
+LabelPrograms buildLabelPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant)
+{
+    const std::vector<std::string> labels{"SWELL_LABEL_PASS 1"};
+    LabelPrograms p;
+    p.water = LabelProgram(build(sources, variant, "water.vert", "water.frag", labels));
+    p.sky = LabelProgram(build(sources, variant, "sky.vert", "sky.frag", labels));
+    p.mesh = MeshProgram(sources, variant, labels);
+    return p;
+}
 
 Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
 {

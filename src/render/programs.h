@@ -8,7 +8,9 @@
 #include "swell/gl/shader.h"
 #include "swell/scene.h"
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 
 #include <string>
 #include <vector>
@@ -46,10 +48,14 @@ public:
     void use() const;
     // Object to render-origin-relative world transform, m.
     void setModel(const glm::mat4& model) const;
+    // The label pass's program only (nothing elsewhere): the semantic class
+    // and instance the next draws write (swell/labels.h).
+    void setLabel(glm::uvec2 classAndInstance) const;
 
 private:
     gl::Program program_;
     GLint model_ = -1;
+    GLint label_ = -1; // the label pass's programs only
 };
 
 // One face of the procedural sky cubemap: fullscreen.vert + sky_bake.frag.
@@ -98,6 +104,33 @@ struct Programs {
     BlockProgram waterInAir, skyInAir;
     MeshProgram meshInAir;
 };
+
+// The label pass's programs (swell/labels.h): water, sky and meshes built
+// with SWELL_LABEL_PASS 1, writing each pixel's range, normal, class and
+// instance (shaders/labels.glsl) instead of a colour. Built when labels are
+// first asked for, not with every renderer.
+// The water's and the sky's: their ranges are measured along each pixel's
+// ray in double precision (labels.glsl), which the pass sets.
+class LabelProgram {
+public:
+    LabelProgram() = default;
+    explicit LabelProgram(gl::Program program);
+    void use() const;
+    // Window pixel (relative to the viewport's corner, 1) to the pixel's ray
+    // direction in world axes (not normalised).
+    void setRayFromPixel(const glm::dmat3& rayFromPixel) const;
+
+private:
+    gl::Program program_;
+    GLint rayFromPixel_ = -1;
+};
+
+struct LabelPrograms {
+    LabelProgram water, sky;
+    MeshProgram mesh;
+};
+
+LabelPrograms buildLabelPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant);
 
 // Compiles and links every program for a variant, its surface sources' files
 // written into `sources` first. Throws swell::InputError naming the shader

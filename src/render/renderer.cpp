@@ -230,6 +230,7 @@ void Renderer::reloadShaders()
     Impl& s = *impl_;
     s.sources.forgetCachedFiles();
     s.programs = buildPrograms(s.sources, s.variant);
+    s.labelPrograms.reset(); // built again from the new sources when next asked for
     s.bakedSky.reset(); // the bake shader may have changed
 }
 

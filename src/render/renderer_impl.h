@@ -8,6 +8,7 @@
 
 #include "render/frame_uniforms.h"
 #include "render/host_depth.h"
+#include "render/label_target.h"
 #include "render/programs.h"
 #include "render/render_target.h"
 #include "render/scene_world.h"
@@ -99,6 +100,11 @@ struct Renderer::Impl {
     WakeTexture wakeTexture;
     SurfaceSourceParametersBuffer sourceParameters;
     HostDepthCopy hostDepth; // draw()'s copy of the host's depth, for its geometry under the water
+    // The label pass (swell/labels.h): its programs, built when first asked
+    // for and again when the variant changes, and its target.
+    std::optional<LabelPrograms> labelPrograms;
+    ShaderVariant labelVariant;
+    LabelTarget labelTarget;
 
     explicit Impl(RendererOptions options)
         : sources(std::move(options.shaders)), omittedWaterTerms(options.omittedWaterTerms)
@@ -257,6 +263,10 @@ struct Renderer::Impl {
                        glm::ivec2 outputSize);
 
     void render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer);
+
+    // The label pass (render/label_pass.cpp) for a camera at the simulated time.
+    FrameLabels drawLabels(const Camera& camera, glm::ivec2 size);
+    void drawLabelPass(const Camera& camera, const View& view, glm::ivec2 size);
 
     // Makes `next` the scene and `nextSceneModel` (when given) its model,
     // rebuilding what `effects` and a changed model file ask for. Everything

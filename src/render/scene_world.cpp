@@ -24,12 +24,15 @@ void SceneWorld::drawObjects(const MeshProgram& program)
     program.use();
     if (world_.island.indexCount() > 0) {
         program.setModel(island_);
+        program.setLabel(islandLabel_);
         world_.island.draw();
         counters_.worldTriangles += world_.island.indexCount() / 3;
         ++counters_.drawCalls;
     }
     for (std::size_t i = 0; i < world_.meshes.size() && i < poses_.size(); ++i) {
         program.setModel(poses_[i]);
+        if (i < objectLabels_.size())
+            program.setLabel(objectLabels_[i]);
         world_.meshes[i]->draw();
         counters_.worldTriangles += world_.meshes[i]->indexCount() / 3;
         ++counters_.drawCalls;

@@ -30,6 +30,14 @@ public:
 
     void drawPass(const PassView& pass) override;
 
+    // For the label pass (its mesh program): the island's class and
+    // instance, and each object's, set before each draw.
+    void setLabels(glm::uvec2 island, std::vector<glm::uvec2> objects)
+    {
+        islandLabel_ = island;
+        objectLabels_ = std::move(objects);
+    }
+
 private:
     void drawObjects(const MeshProgram& program);
     void drawHullVolumes(const MeshProgram& program);
@@ -40,6 +48,8 @@ private:
     glm::mat4 island_;
     FrameCounters& counters_;
     bool mainInAir_ = true;
+    glm::uvec2 islandLabel_{0};
+    std::vector<glm::uvec2> objectLabels_;
 };
 
 } // namespace swell::detail

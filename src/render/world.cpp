@@ -5,11 +5,13 @@
 #include "swell/error.h"
 #include "swell/image.h"
 
+#include <glm/common.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 namespace swell::detail {
 
@@ -23,6 +25,13 @@ World buildWorld(const Scene& from)
     for (const ObjectAssets& o : assets.objects) {
         world.meshes.push_back(std::make_unique<GpuMesh>(*o.mesh));
         world.meshReach_m.push_back(o.reach_m);
+        glm::dvec3 lo(0.0), hi(0.0);
+        for (std::size_t v = 0; v < o.mesh->vertices.size(); ++v) {
+            const glm::dvec3 p(o.mesh->vertices[v].position);
+            lo = v == 0 ? p : glm::min(lo, p);
+            hi = v == 0 ? p : glm::max(hi, p);
+        }
+        world.meshBounds_m.emplace_back(lo, hi);
         world.hullVolumes.push_back(o.hullVolume->indices.empty() ? nullptr : std::make_unique<GpuMesh>(*o.hullVolume));
         world.bodyShapes.push_back(o.hullVolume->indices.empty() ? o.mesh : o.hullVolume);
     }

@@ -30,6 +30,9 @@ struct World {
     std::vector<std::unique_ptr<GpuMesh>> meshes;
     // Per scene object, the farthest any vertex lies from the model's origin, m (unscaled).
     std::vector<double> meshReach_m;
+    // Per scene object, its mesh's bounding box in model space (lowest and
+    // highest corner, unscaled, m): its 3D box in labelled frames.
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> meshBounds_m;
     // Per scene object, the closed volume of its open hull, or null (see Renderer's drawHullVolumes).
     std::vector<std::unique_ptr<GpuMesh>> hullVolumes;
     // Per scene object, the closed shape a floating rigid body is built from:

@@ -1,8 +1,10 @@
-// Saving a scene file atomically (saveSceneFile in swell/scene_file.h): a
-// temporary file in the same folder, flushed, then renamed over the target.
+// Writing a file atomically (swell/atomic_file.h), and saving a scene file
+// with it (saveSceneFile in swell/scene_file.h).
+#include "swell/atomic_file.h"
 #include "swell/scene_file.h"
 
 #include "scene/places.h"
+#include "swell/error.h"
 
 #include <fmt/format.h>
 
@@ -19,10 +21,8 @@ namespace swell {
 using detail::scenefile::fail;
 namespace fs = std::filesystem;
 
-void saveSceneFile(const Scene& scene, const fs::path& path)
+void writeFileAtomically(const fs::path& path, std::string_view text)
 {
-    const std::string text = saveScene(scene);
-
     // Write next to the file a symbolic link points at, not over the link.
     std::error_code ec;
     fs::path target = path;
@@ -39,12 +39,12 @@ void saveSceneFile(const Scene& scene, const fs::path& path)
         if (fd >= 0)
             ::close(fd);
         ::unlink(temp.c_str());
-        fail({path.string(), 0, 0}, fmt::format("cannot save the scene: {}", std::strerror(error)));
+        throw Error(fmt::format("cannot write {}: {}", path.string(), std::strerror(error)));
     };
 
     int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0)
-        fail({path.string(), 0, 0}, fmt::format("cannot save the scene: {} ({})", std::strerror(errno), temp.string()));
+        throw Error(fmt::format("cannot write {}: {} ({})", path.string(), std::strerror(errno), temp.string()));
     // Keep the permissions of the file being replaced.
     struct stat existing {};
     if (::stat(target.c_str(), &existing) == 0)
@@ -69,6 +69,15 @@ void saveSceneFile(const Scene& scene, const fs::path& path)
     if (dir >= 0) {
         ::fsync(dir);
         ::close(dir);
+    }
+}
+
+void saveSceneFile(const Scene& scene, const fs::path& path)
+{
+    try {
+        writeFileAtomically(path, saveScene(scene));
+    } catch (const Error& e) {
+        fail({path.string(), 0, 0}, fmt::format("cannot save the scene: {}", e.what()));
     }
 }
 

@@ -1,0 +1,174 @@
+#include "label_files.h"
+
+#include "swell/atomic_file.h"
+#include "swell/image.h"
+
+#include "swell/error.h"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+namespace swell::app {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+fs::path besides(const fs::path& colour, const std::string& suffix)
+{
+    return colour.parent_path() / fmt::format("{}{}", colour.stem().string(), suffix);
+}
+
+Json matrixJson(const glm::dmat4& m)
+{
+    Json rows = Json::array();
+    for (int r = 0; r < 4; ++r)
+        rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
+    return rows;
+}
+
+// A colour per class, and objects tinted by instance so that two boats differ.
+std::array<std::uint8_t, 3> previewColour(std::uint16_t semantic, std::uint16_t instance)
+{
+    switch (semantic) {
+    case SWELL_LABEL_NONE: return {0, 0, 0};
+    case SWELL_LABEL_SKY: return {120, 170, 230};
+    case SWELL_LABEL_WATER: return {20, 60, 120};
+    case SWELL_LABEL_WHITECAP_FOAM: return {240, 240, 240};
+    case SWELL_LABEL_WAKE_FOAM: return {250, 200, 60};
+    case SWELL_LABEL_TERRAIN: return {110, 90, 60};
+    default: break;
+    }
+    // Golden-angle hues: neighbouring ids far apart.
+    const double hue = std::fmod(double(instance) * 137.508, 360.0) / 60.0;
+    const double x = 1.0 - std::abs(std::fmod(hue, 2.0) - 1.0);
+    const int sector = int(hue);
+    const double rgb[6][3] = {{1, x, 0}, {x, 1, 0}, {0, 1, x}, {0, x, 1}, {x, 0, 1}, {1, 0, x}};
+    const double* c = rgb[sector % 6];
+    return {std::uint8_t(60 + 195 * c[0]), std::uint8_t(60 + 195 * c[1]), std::uint8_t(60 + 195 * c[2])};
+}
+
+void writePngAtomically(const Image& image, const fs::path& path)
+{
+    const fs::path temp = path.parent_path() / fmt::format(".{}.tmp", path.filename().string());
+    writePng(image, temp);
+    std::error_code error;
+    fs::rename(temp, path, error);
+    if (error) {
+        fs::remove(temp, error);
+        throw Error(fmt::format("cannot write {}: {}", path.string(), error.message()));
+    }
+}
+
+} // namespace
+
+std::string npyBytes(const void* data, std::size_t bytes, const std::string& descr, const std::vector<int>& shape)
+{
+    std::string dims; // "H, W", or "N," for one dimension (a Python tuple)
+    for (std::size_t i = 0; i < shape.size(); ++i)
+        dims += fmt::format("{}{}", i ? ", " : "", shape[i]);
+    if (shape.size() == 1)
+        dims += ",";
+    std::string header = fmt::format("{{'descr': '{}', 'fortran_order': False, 'shape': ({}), }}", descr, dims);
+    // Magic, version 1.0, the header's length, the header padded with
+    // spaces to a multiple of 64 bytes in all and ended by a newline.
+    const std::size_t prefix = 10;
+    const std::size_t total = (prefix + header.size() + 1 + 63) / 64 * 64;
+    header.append(total - prefix - header.size() - 1, ' ');
+    header += '\n';
+    std::string out("\x93NUMPY\x01\x00", 8);
+    out += char(header.size() & 0xff);
+    out += char(header.size() >> 8);
+    out += header;
+    out.append(static_cast<const char*>(data), bytes);
+    return out;
+}
+
+std::vector<fs::path> labelFilePaths(const fs::path& colour)
+{
+    return {besides(colour, ".range.npy"), besides(colour, ".normal.npy"), besides(colour, ".semantic.npy"),
+            besides(colour, ".instance.npy"), besides(colour, ".labels.png"), besides(colour, ".json")};
+}
+
+void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
+                     const fs::path& colour)
+{
+    const std::vector<fs::path> paths = labelFilePaths(colour);
+    const int w = labels.size.x, h = labels.size.y;
+    const std::size_t pixels = std::size_t(w) * std::size_t(h);
+    static_assert(std::endian::native == std::endian::little, "the .npy descriptors say little-endian");
+    writeFileAtomically(paths[0], npyBytes(labels.range_m.data(), pixels * sizeof(float), "<f4", {h, w}));
+    writeFileAtomically(paths[1], npyBytes(labels.normal.data(), pixels * sizeof(glm::vec3), "<f4", {h, w, 3}));
+    writeFileAtomically(paths[2], npyBytes(labels.semantic.data(), pixels * 2, "<u2", {h, w}));
+    writeFileAtomically(paths[3], npyBytes(labels.instance.data(), pixels * 2, "<u2", {h, w}));
+
+    Image preview;
+    preview.width = w;
+    preview.height = h;
+    preview.rgba.resize(pixels * 4);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const auto c = previewColour(labels.semantic[i], labels.instance[i]);
+        std::memcpy(&preview.rgba[4 * i], c.data(), 3);
+        preview.rgba[4 * i + 3] = 255;
+    }
+    writePngAtomically(preview, paths[4]);
+
+    Json j;
+    j["image"] = colour.filename().string();
+    j["size"] = {w, h};
+    j["time_s"] = time_s;
+    const CameraCalibration& c = labels.camera;
+    j["camera"] = {{"model", "pinhole"},
+                   {"fx_px", c.fx_px},
+                   {"fy_px", c.fy_px},
+                   {"cx_px", c.cx_px},
+                   {"cy_px", c.cy_px},
+                   {"distortion", Json::array()},
+                   {"camera_from_world", matrixJson(c.cameraFromWorld)},
+                   {"world_from_camera", matrixJson(c.worldFromCamera)}};
+    Json horizon = {{"line", {labels.horizon.line.x, labels.horizon.line.y, labels.horizon.line.z}},
+                    {"visible", labels.horizon.visible}};
+    if (labels.horizon.visible) {
+        horizon["from_px"] = {labels.horizon.from_px.x, labels.horizon.from_px.y};
+        horizon["to_px"] = {labels.horizon.to_px.x, labels.horizon.to_px.y};
+    }
+    j["horizon"] = horizon;
+    Json classes = Json::object();
+    for (std::size_t i = 0; i < labels.classes.size(); ++i)
+        if (!labels.classes[i].empty())
+            classes[std::to_string(i)] = labels.classes[i];
+    j["classes"] = classes;
+    Json objects = Json::array();
+    for (const ObjectLabel& o : labels.objects) {
+        Json box3d = Json::array();
+        for (const glm::dvec3& p : o.box3d_m)
+            box3d.push_back({p.x, p.y, p.z});
+        objects.push_back({{"instance", o.instance},
+                           {"class", o.className},
+                           {"class_id", o.semanticClass},
+                           {"visible_pixels", o.visiblePixels},
+                           {"box_px", {o.box_px.x, o.box_px.y, o.box_px.z, o.box_px.w}},
+                           {"box3d_m", box3d}});
+    }
+    j["objects"] = objects;
+    Json sea = {{"level_m", scene.water.level_m}, {"significant_wave_height_m", significantHeight_m}};
+    if (scene.waves.wind) {
+        sea["wind_speed_mps"] = scene.waves.wind->windSpeed_mps;
+        sea["wind_direction_deg"] = scene.waves.wind->windDirection_deg;
+        sea["fetch_km"] = scene.waves.wind->fetch_km;
+    }
+    const glm::dvec3 sun = glm::normalize(scene.sun.direction);
+    sea["sun_direction"] = {sun.x, sun.y, sun.z};
+    sea["sun_elevation_deg"] = glm::degrees(std::asin(sun.y));
+    j["sea"] = sea;
+    writeFileAtomically(paths[5], j.dump(2) + "\n");
+}
+
+} // namespace swell::app

@@ -1,0 +1,31 @@
+// `swell render --labels`: a frame's ground truth (swell/labels.h) written
+// beside its colour image NAME.png, each file whole or not at all:
+//   NAME.range.npy     float32 (H, W): metres along each pixel's ray; inf: sky
+//   NAME.normal.npy    float32 (H, W, 3): unit world normal; 0: sky
+//   NAME.semantic.npy  uint16 (H, W): class ids (NAME.json's "classes")
+//   NAME.instance.npy  uint16 (H, W): 0, or an object's instance id
+//   NAME.labels.png    the classes and instances in colour, for people
+//   NAME.json          camera, horizon, objects and their boxes, sea state
+// (docs/LABELS.md describes each field.)
+#pragma once
+
+#include "swell/labels.h"
+#include "swell/scene.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace swell::app {
+
+// The files written for the colour image `colour`, in the order above.
+std::vector<std::filesystem::path> labelFilePaths(const std::filesystem::path& colour);
+
+// Writes them. `seaHeight_m`: the significant wave height drawn, m.
+void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
+                     const std::filesystem::path& colour);
+
+// The .npy bytes (NumPy's format, version 1.0) of a row-major array.
+std::string npyBytes(const void* data, std::size_t bytes, const std::string& descr, const std::vector<int>& shape);
+
+} // namespace swell::app

@@ -1,0 +1,101 @@
+// Ground truth for a frame, aligned pixel for pixel with its colour image
+// (docs/LABELS.md): the range along each pixel's ray, its surface normal,
+// its semantic class and instance, each object's boxes, the camera's
+// calibration and the sea's horizon line. Image conventions: x to the right,
+// y down, the top-left pixel's top-left corner at (0, 0), so pixel (i, j)'s
+// centre is (i + 0.5, j + 0.5); arrays hold rows top first.
+#pragma once
+
+#include "swell/export.h"
+
+#include "swell/camera.h"
+#include "swell/scene.h"
+#include "swell/shader_constants.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swell {
+
+// A pinhole camera as perception code calibrates one. Camera axes as in
+// computer vision: x right, y down, z forward (OpenCV's); no distortion.
+struct SWELL_API CameraCalibration {
+    glm::ivec2 size{0};          // pixels
+    double fx_px = 0.0, fy_px = 0.0; // focal lengths, pixels
+    double cx_px = 0.0, cy_px = 0.0; // principal point, pixels (image conventions above)
+    glm::dmat4 cameraFromWorld{1.0}; // absolute world (m, y up) to camera axes
+    glm::dmat4 worldFromCamera{1.0};
+};
+
+// The calibration of the image `size` that a Camera renders.
+SWELL_API CameraCalibration calibrationOf(const Camera& camera, glm::ivec2 size);
+
+// Where a world point (absolute, m) lands in the image, pixels; empty
+// behind the camera.
+SWELL_API std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::dvec3 world_m);
+
+// The sea's horizon as it is drawn: the vanishing line of the sea-level
+// plane (the sea is drawn flat, without the Earth's curvature; the labels'
+// water continues past the drawn grid to it). In pixels, a x + b y + c = 0
+// with (a, b) a unit vector pointing to the sky's side.
+struct SWELL_API HorizonLine {
+    glm::dvec3 line{0.0};
+    bool visible = false;      // the line crosses the image
+    glm::dvec2 from_px{0.0}, to_px{0.0}; // where it meets the image's border (when visible)
+};
+SWELL_API HorizonLine horizonOf(const CameraCalibration& camera);
+
+// One scene object in a frame.
+struct SWELL_API ObjectLabel {
+    std::uint16_t instance = 0;      // its value in FrameLabels::instance (its index in scene.objects + 1)
+    std::uint16_t semanticClass = 0; // its value in FrameLabels::semantic
+    std::string className;           // FrameLabels::classes[semanticClass]
+    long long visiblePixels = 0;
+    // The smallest box of its visible pixels: x0, y0 (its top-left pixel's
+    // corner), x1, y1 (one past its bottom-right pixel), pixels; zero when
+    // none is visible.
+    glm::ivec4 box_px{0};
+    // Its mesh's bounding box in its own axes, placed at its pose: the
+    // eight corners, absolute world, m.
+    std::array<glm::dvec3, 8> box3d_m{};
+};
+
+struct SWELL_API FrameLabels {
+    glm::ivec2 size{0};
+    // Per pixel, rows top first. range_m: the distance from the eye along
+    // the pixel's ray to what it shows, m; +infinity for the sky and the
+    // water's depths seen from below. The water runs on past the drawn grid
+    // to the horizon as the plane of the sea level.
+    std::vector<float> range_m;
+    std::vector<glm::vec3> normal; // unit, world axes; zero for the sky
+    std::vector<std::uint16_t> semantic; // SWELL_LABEL_* and the objects' classes
+    std::vector<std::uint16_t> instance; // 0, or an object's ObjectLabel::instance
+    // Each semantic class's name by its value ("" where none): "none",
+    // "sky", "water", "whitecap_foam", "wake_foam", "terrain", then from
+    // SWELL_LABEL_FIRST_OBJECT_CLASS the objects' classes in the order they
+    // first appear in the scene.
+    std::vector<std::string> classes;
+    std::vector<ObjectLabel> objects;
+    CameraCalibration camera;
+    HorizonLine horizon;
+};
+
+// A scene object's class: the built-in's name ("boat" for "builtin:boat"),
+// else its model file's name without folder or extension.
+SWELL_API std::string objectClassOf(const SceneObject& object);
+
+// The class names of a scene: the fixed ones, then each object class once.
+SWELL_API std::vector<std::string> labelClassesOf(const Scene& scene);
+
+// Fills each object's visible pixels and box from the instance image.
+SWELL_API void measureObjectBoxes(FrameLabels& labels);
+
+} // namespace swell

@@ -1,0 +1,138 @@
+// The CPU side of a frame's ground truth (swell/labels.h): the camera's
+// calibration, projection, the horizon line, object classes and boxes.
+#include "swell/labels.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+namespace swell {
+
+namespace {
+
+// OpenGL's camera axes (x right, y up, z back) to computer vision's (x
+// right, y down, z forward).
+const glm::dmat4 kVisionFromGl = glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, -1, 0),
+                                            glm::dvec4(0, 0, 0, 1));
+
+} // namespace
+
+CameraCalibration calibrationOf(const Camera& camera, glm::ivec2 size)
+{
+    CameraCalibration c;
+    c.size = size;
+    // glm::perspective: the image's half height is tan(fov / 2) at unit
+    // distance; pixels are square (the aspect is the image's).
+    c.fy_px = 0.5 * double(size.y) / std::tan(0.5 * glm::radians(camera.fovY_deg));
+    c.fx_px = c.fy_px;
+    c.cx_px = 0.5 * double(size.x);
+    c.cy_px = 0.5 * double(size.y);
+    c.cameraFromWorld = kVisionFromGl * camera.viewRelativeTo(glm::dvec3(0.0));
+    c.worldFromCamera = glm::inverse(c.cameraFromWorld);
+    return c;
+}
+
+std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::dvec3 world_m)
+{
+    const glm::dvec4 p = camera.cameraFromWorld * glm::dvec4(world_m, 1.0);
+    if (p.z <= 0.0)
+        return std::nullopt;
+    return glm::dvec2(camera.fx_px * p.x / p.z + camera.cx_px, camera.fy_px * p.y / p.z + camera.cy_px);
+}
+
+HorizonLine horizonOf(const CameraCalibration& camera)
+{
+    // A pixel p = (x, y, 1) looks along d = R^T K^-1 p (R: world to camera
+    // axes, K: the intrinsics), which rises above the sea level's plane
+    // where d.y > 0: d.y = (K^-T R e_y) . p, so l = K^-T R e_y is the line
+    // (Hartley & Zisserman 2004, sec. 8.6: the vanishing line of a plane).
+    const glm::dvec3 up = glm::dmat3(camera.cameraFromWorld) * glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec3 l(up.x / camera.fx_px, up.y / camera.fy_px,
+                       up.z - up.x * camera.cx_px / camera.fx_px - up.y * camera.cy_px / camera.fy_px);
+    HorizonLine h;
+    const double norm = std::hypot(l.x, l.y);
+    if (norm == 0.0)
+        return h; // looking straight up or down: no horizon in the image
+    h.line = l / norm;
+    // Where it meets the border: each side's crossing inside the image.
+    const double w = camera.size.x, ht = camera.size.y;
+    std::vector<glm::dvec2> hits;
+    auto add = [&](glm::dvec2 p) {
+        if (p.x < 0.0 || p.x > w || p.y < 0.0 || p.y > ht)
+            return;
+        for (const glm::dvec2& q : hits)
+            if (glm::distance(p, q) < 1e-9)
+                return; // a corner, met from both sides
+        hits.push_back(p);
+    };
+    const glm::dvec3 n = h.line;
+    if (n.y != 0.0) {
+        add({0.0, -n.z / n.y});
+        add({w, -(n.x * w + n.z) / n.y});
+    }
+    if (n.x != 0.0) {
+        add({-n.z / n.x, 0.0});
+        add({-(n.y * ht + n.z) / n.x, ht});
+    }
+    if (hits.size() >= 2) {
+        h.visible = true;
+        h.from_px = hits[0];
+        h.to_px = hits[1];
+        if (h.from_px.x > h.to_px.x)
+            std::swap(h.from_px, h.to_px);
+    }
+    return h;
+}
+
+std::string objectClassOf(const SceneObject& object)
+{
+    if (object.path.starts_with(kBuiltinObjectPrefix))
+        return object.path.substr(kBuiltinObjectPrefix.size());
+    return std::filesystem::path(object.path).stem().string();
+}
+
+std::vector<std::string> labelClassesOf(const Scene& scene)
+{
+    std::vector<std::string> classes(SWELL_LABEL_FIRST_OBJECT_CLASS);
+    classes[SWELL_LABEL_NONE] = "none";
+    classes[SWELL_LABEL_SKY] = "sky";
+    classes[SWELL_LABEL_WATER] = "water";
+    classes[SWELL_LABEL_WHITECAP_FOAM] = "whitecap_foam";
+    classes[SWELL_LABEL_WAKE_FOAM] = "wake_foam";
+    classes[SWELL_LABEL_TERRAIN] = "terrain";
+    for (const SceneObject& object : scene.objects) {
+        const std::string name = objectClassOf(object);
+        if (std::find(classes.begin() + SWELL_LABEL_FIRST_OBJECT_CLASS, classes.end(), name) == classes.end())
+            classes.push_back(name);
+    }
+    return classes;
+}
+
+void measureObjectBoxes(FrameLabels& labels)
+{
+    const int w = labels.size.x, h = labels.size.y;
+    for (ObjectLabel& o : labels.objects) {
+        o.visiblePixels = 0;
+        o.box_px = glm::ivec4(std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), 0, 0);
+    }
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::uint16_t id = labels.instance[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+            if (id == 0 || id > labels.objects.size())
+                continue;
+            ObjectLabel& o = labels.objects[id - 1u];
+            ++o.visiblePixels;
+            o.box_px = glm::ivec4(std::min(o.box_px.x, x), std::min(o.box_px.y, y), std::max(o.box_px.z, x + 1),
+                                  std::max(o.box_px.w, y + 1));
+        }
+    for (ObjectLabel& o : labels.objects)
+        if (o.visiblePixels == 0)
+            o.box_px = glm::ivec4(0);
+}
+
+} // namespace swell

@@ -1,0 +1,195 @@
+// The label pass (swell/labels.h) against geometry worked out on the CPU:
+// on calm water every water pixel's range is the distance along its ray to
+// the sea's plane, and the sky meets the water on the horizon line, for a
+// camera low and high, rolled; an object's pixels carry its instance, their
+// box lies within its projected 3D box, and every range on it lands inside
+// that box; the colour image changes where the mask says the object is.
+#include "support/gl_test.h"
+
+#include "swell/flat_model.h"
+#include "swell/labels.h"
+#include "swell/renderer.h"
+#include "swell/scene.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace {
+
+class Labels : public swell::test::GlTest {};
+
+swell::Scene openSea()
+{
+    swell::Scene scene = swell::defaultScene();
+    scene.showTerrain = false;
+    scene.objects.clear();
+    return scene;
+}
+
+// The world direction of the ray through pixel (x, y)'s centre (not unit).
+glm::dvec3 pixelRay(const swell::CameraCalibration& c, int x, int y)
+{
+    const glm::dvec3 camera((x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px, 1.0);
+    return glm::dmat3(c.worldFromCamera) * camera;
+}
+
+struct CalmResult {
+    int waterPixels = 0, wrongRange = 0, wrongSide = 0;
+    double worstRange_m = 0.0, worstHorizon_px = 0.0;
+};
+
+CalmResult renderCalm(double height_m, double roll_deg, double pitch_deg, double far_m = 20000.0)
+{
+    swell::Scene scene = openSea();
+    scene.camera.far_m = far_m; // the grid reaches the far plane, the labels' water the horizon
+    swell::Renderer renderer(scene);
+    renderer.setWaveModel(std::make_shared<swell::FlatModel>());
+    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    camera.position_m = glm::dvec3(30.0, height_m, -12.0);
+    camera.roll_deg = roll_deg;
+    camera.pitch_deg = pitch_deg;
+    camera.yaw_deg = 25.0;
+    const glm::ivec2 size(320, 240);
+    renderer.renderImage(camera, 0.0, size);
+    const swell::FrameLabels labels = renderer.renderLabels(camera, size);
+    CalmResult r;
+    EXPECT_TRUE(labels.horizon.visible);
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
+            const glm::dvec3 d = pixelRay(labels.camera, x, y);
+            // Which side of the horizon line the pixel's centre is on: a
+            // pixel more than 1 px inside the water's side must be water,
+            // more than 1 px inside the sky's, sky.
+            const double side_px = glm::dot(labels.horizon.line, glm::dvec3(x + 0.5, y + 0.5, 1.0));
+            const std::uint16_t s = labels.semantic[i];
+            if ((side_px < -1.0 && s != SWELL_LABEL_WATER) || (side_px > 1.0 && s != SWELL_LABEL_SKY))
+                ++r.wrongSide;
+            if (s == SWELL_LABEL_WATER || s == SWELL_LABEL_SKY)
+                r.worstHorizon_px = std::max(r.worstHorizon_px, (s == SWELL_LABEL_WATER) == (side_px > 0.0) ? std::abs(side_px) : 0.0);
+            if (s != SWELL_LABEL_WATER)
+                continue;
+            ++r.waterPixels;
+            const double expected_m = height_m / -d.y * glm::length(d);
+            const double error_m = std::abs(double(labels.range_m[i]) - expected_m);
+            if (expected_m < 1.0e5)
+                r.worstRange_m = std::max(r.worstRange_m, error_m);
+            // 1 cm; past 131 km, where a 32-bit float's own spacing is
+            // wider (rays within a fraction of a pixel of the horizon reach
+            // thousands of km), one unit in its last place.
+            const float stored = float(expected_m);
+            const double ulp_m = double(std::nextafter(stored, INFINITY) - stored);
+            if (!(error_m <= std::max(0.01, ulp_m)))
+                ++r.wrongRange;
+        }
+    return r;
+}
+
+TEST_F(Labels, CalmWaterRangeIsTheRayPlaneDistanceAndMeetsTheSkyOnTheHorizon)
+{
+    for (double height : {2.0, 50.0})
+        for (double roll : {0.0, 15.0}) {
+            SCOPED_TRACE(::testing::Message() << "camera at " << height << " m, rolled " << roll << " deg");
+            const CalmResult r = renderCalm(height, roll, -4.0);
+            EXPECT_GT(r.waterPixels, 320 * 240 / 4);
+            EXPECT_EQ(r.wrongRange, 0) << "worst within 100 km: " << r.worstRange_m << " m";
+            EXPECT_LE(r.worstRange_m, 0.01);
+            EXPECT_EQ(r.wrongSide, 0);
+            EXPECT_LE(r.worstHorizon_px, 1.0);
+        }
+    // The grid ends at a near far plane, 7 px below the horizon: past it the
+    // labels' water is the sea's plane up to the horizon.
+    const CalmResult r = renderCalm(50.0, 15.0, -4.0, 1000.0);
+    EXPECT_EQ(r.wrongRange, 0) << "worst within 100 km: " << r.worstRange_m << " m";
+    EXPECT_EQ(r.wrongSide, 0);
+    EXPECT_LE(r.worstHorizon_px, 1.0);
+}
+
+TEST_F(Labels, AnObjectsPixelsBoxAndRangesAreItsOwn)
+{
+    swell::Scene scene = openSea();
+    swell::SceneObject buoy;
+    buoy.path = "builtin:buoy";
+    buoy.position_m = glm::dvec3(3.0, 0.0, -25.0);
+    scene.objects.push_back(buoy);
+    scene.antialiasing = swell::Antialiasing::Msaa4; // colour edges blended, labels never
+    const glm::ivec2 size(320, 240);
+    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    camera.position_m = glm::dvec3(0.0, 4.0, 0.0);
+    camera.pitch_deg = -6.0;
+    camera.yaw_deg = 0.0;
+
+    swell::Renderer renderer(scene);
+    const swell::Image withBuoy = renderer.renderImage(camera, 3.0, size);
+    const swell::FrameLabels labels = renderer.renderLabels(camera, size);
+    scene.objects.clear();
+    swell::Renderer without(scene);
+    const swell::Image noBuoy = without.renderImage(camera, 3.0, size);
+
+    ASSERT_EQ(labels.objects.size(), 1u);
+    const swell::ObjectLabel& o = labels.objects[0];
+    EXPECT_EQ(o.className, "buoy");
+    EXPECT_EQ(labels.classes.at(o.semanticClass), "buoy");
+    ASSERT_GT(o.visiblePixels, 50);
+
+    // Its 2D box within its 3D box's projection (1 px of slack for the
+    // rasteriser's rule at the edges).
+    glm::dvec2 lo(1e9), hi(-1e9);
+    for (const glm::dvec3& corner : o.box3d_m) {
+        const std::optional<glm::dvec2> p = swell::projectToImage(labels.camera, corner);
+        ASSERT_TRUE(p);
+        lo = glm::min(lo, *p);
+        hi = glm::max(hi, *p);
+    }
+    EXPECT_GE(o.box_px.x, lo.x - 1.0);
+    EXPECT_GE(o.box_px.y, lo.y - 1.0);
+    EXPECT_LE(o.box_px.z, hi.x + 1.0);
+    EXPECT_LE(o.box_px.w, hi.y + 1.0);
+
+    // Every range on it lands in its box (1 cm of slack); every pixel of it
+    // has its class; and the colour changed where it is and not 2 px away
+    // from it.
+    const glm::dvec3 eye = camera.position_m;
+    const glm::dvec3 boxLo = glm::min(o.box3d_m[0], o.box3d_m[7]) - 0.01, boxHi = glm::max(o.box3d_m[0], o.box3d_m[7]) + 0.01;
+    int outside = 0, wrongClass = 0, unchangedInside = 0, changedFarOutside = 0, inside = 0;
+    auto isBuoy = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < size.x && y < size.y &&
+               labels.instance[std::size_t(y) * std::size_t(size.x) + std::size_t(x)] == o.instance;
+    };
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
+            int diff = 0;
+            for (int c = 0; c < 3; ++c)
+                diff = std::max(diff, std::abs(int(withBuoy.rgba[4 * i + std::size_t(c)]) - int(noBuoy.rgba[4 * i + std::size_t(c)])));
+            if (isBuoy(x, y)) {
+                ++inside;
+                wrongClass += labels.semantic[i] != o.semanticClass;
+                const glm::dvec3 p = eye + double(labels.range_m[i]) * glm::normalize(pixelRay(labels.camera, x, y));
+                if (glm::any(glm::lessThan(p, boxLo)) || glm::any(glm::greaterThan(p, boxHi)))
+                    ++outside;
+                // Its reflection and the water's refraction also change around
+                // it, so only its own pixels are held to changing.
+                unchangedInside += diff < 8;
+                continue;
+            }
+            bool near = false;
+            for (int dy = -2; dy <= 2 && !near; ++dy)
+                for (int dx = -2; dx <= 2 && !near; ++dx)
+                    near = isBuoy(x + dx, y + dy);
+            // Away from it, its reflection below it may change the water: only
+            // pixels above its top row, beside it, are held to unchanged.
+            if (!near && y < o.box_px.y && x >= o.box_px.x && x < o.box_px.z)
+                changedFarOutside += diff >= 8;
+        }
+    EXPECT_EQ(outside, 0);
+    EXPECT_EQ(wrongClass, 0);
+    EXPECT_LE(unchangedInside, inside / 20) << "of " << inside;
+    EXPECT_EQ(changedFarOutside, 0);
+}
+
+} // namespace
