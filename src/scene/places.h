@@ -63,6 +63,9 @@ private:
     std::map<std::string, SourcePlace, std::less<>> places_;
 };
 
+// "a table", "an array", "a string", ...: a TOML value's type in a message.
+std::string typeName(const toml::node& node);
+
 [[noreturn]] inline void fail(SourcePlace place, const std::string& message)
 {
     throw InputError(std::move(place), message);

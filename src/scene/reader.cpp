@@ -78,21 +78,6 @@ std::size_t listLimit(ParameterList list)
     return 0;
 }
 
-std::string typeName(const toml::node& node)
-{
-    switch (node.type()) {
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a float";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
-    default: return "nothing";
-    }
-}
 
 std::optional<double> number(const toml::node& node)
 {
@@ -463,6 +448,22 @@ private:
 Scene readScene(const toml::table& root, Places& places)
 {
     return SceneReader(places).read(root);
+}
+
+std::string typeName(const toml::node& node)
+{
+    switch (node.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a float";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    default: return "nothing";
+    }
 }
 
 } // namespace swell::detail::scenefile

@@ -18,7 +18,7 @@
 #include "scene/checks.h"
 #include "scene/places.h"
 #include "scene/reader.h"
-#include "scene/text_scan.h"
+#include "scene/toml_text.h"
 #include "swell/error.h"
 #include "swell/scene_changes.h"
 
@@ -38,31 +38,7 @@ Scene parseScene(std::string_view text, const fs::path& virtualPath)
     if (text.size() > kMaxSceneFileBytes)
         fail({places.path(), 0, 0}, fmt::format("the scene is {} bytes; scene files are at most {} bytes (4 MiB)",
                                                 text.size(), kMaxSceneFileBytes));
-    scanSceneText(text, places.path());
-
-    toml::table root;
-    try {
-        root = toml::parse(text, std::string_view(places.path()));
-    } catch (const toml::parse_error& e) {
-        const bool arrayOpen = e.description().find("closing ']'") != std::string_view::npos;
-        if (const std::optional<SourcePlace> open =
-                arrayOpen ? detail::scenefile::unclosedArrayBefore(text, int(e.source().begin.line),
-                                                                  int(e.source().begin.column), places.path())
-                          : std::nullopt)
-            fail(*open, fmt::format("TOML syntax: this array has no closing ']' (the parser read on into line {} "
-                                    "and stopped there: {})",
-                                    e.source().begin.line, e.description()));
-        // A string that runs into the end of its line: its closing quote is
-        // missing (the parser calls the line break a control character).
-        const bool controlInString = e.description().find("control character") != std::string_view::npos;
-        if (const std::optional<OpenString> string =
-                controlInString ? unclosedStringOn(text, int(e.source().begin.line), places.path()) : std::nullopt)
-            fail(string->opening, fmt::format("TOML syntax: this string has no closing {0} before the end of its line "
-                                              "(a {0}...{0} string ends on the line it starts; write {0}{0}{0} for one "
-                                              "that spans lines)",
-                                              string->quote));
-        fail(places.of(e.source()), fmt::format("TOML syntax: {}", e.description()));
-    }
+    const toml::table root = parseTomlText(text, places);
 
     Scene scene = readScene(root, places);
     checkScene(scene, places, baseFolder(virtualPath));
