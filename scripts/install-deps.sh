@@ -9,6 +9,8 @@ packages=(
   libglm-dev libimgui-dev libstb-dev libtomlplusplus-dev libcli11-dev libfmt-dev
   libtinygltf-dev libkissfft-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool python3
+  # Datasets across machines: scripts/dataset-dask.py, and its test.
+  python3-distributed
 )
 # Extra packages for `scripts/test.sh --sanitize` and the fuzzers.
 if [[ "${SWELL_WITH_CLANG:-0}" == 1 ]]; then

@@ -5,6 +5,7 @@
 
 #include "swell/scene.h"
 
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -33,6 +34,15 @@ struct RenderOptions {
     OutputSettings outputSettings;
 };
 int runRender(const RenderOptions& options);
+
+struct DatasetOptions {
+    std::string sweepPath;       // the sweep file (swell/sweep.h)
+    std::string out;             // the dataset's folder
+    std::string shard = "1/1";   // K/N: this run renders samples i with i % N == K - 1
+    std::filesystem::path presets; // where a sweep's scene may be a preset's name
+    bool dryRun = false;         // check and write the manifest, render nothing
+};
+int runDataset(const DatasetOptions& options);
 
 struct ViewOptions {
     std::string scenePath;

@@ -14,10 +14,11 @@
 #include <cmath>
 #include <cstring>
 
+#include <unistd.h>
+
 namespace swell::app {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 
 namespace {
 
@@ -55,9 +56,12 @@ std::array<std::uint8_t, 3> previewColour(std::uint16_t semantic, std::uint16_t 
     return {std::uint8_t(60 + 195 * c[0]), std::uint8_t(60 + 195 * c[1]), std::uint8_t(60 + 195 * c[2])};
 }
 
+
+} // namespace
+
 void writePngAtomically(const Image& image, const fs::path& path)
 {
-    const fs::path temp = path.parent_path() / fmt::format(".{}.tmp", path.filename().string());
+    const fs::path temp = path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), ::getpid());
     writePng(image, temp);
     std::error_code error;
     fs::rename(temp, path, error);
@@ -66,8 +70,6 @@ void writePngAtomically(const Image& image, const fs::path& path)
         throw Error(fmt::format("cannot write {}: {}", path.string(), error.message()));
     }
 }
-
-} // namespace
 
 std::string npyBytes(const void* data, std::size_t bytes, const std::string& descr, const std::vector<int>& shape)
 {
@@ -97,8 +99,7 @@ std::vector<fs::path> labelFilePaths(const fs::path& colour)
             besides(colour, ".instance.npy"), besides(colour, ".labels.png"), besides(colour, ".json")};
 }
 
-void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
-                     const fs::path& colour)
+void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
 {
     const std::vector<fs::path> paths = labelFilePaths(colour);
     const int w = labels.size.x, h = labels.size.y;
@@ -119,10 +120,14 @@ void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_
         preview.rgba[4 * i + 3] = 255;
     }
     writePngAtomically(preview, paths[4]);
+}
 
+Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
+               const fs::path& colour)
+{
     Json j;
     j["image"] = colour.filename().string();
-    j["size"] = {w, h};
+    j["size"] = {labels.size.x, labels.size.y};
     j["time_s"] = time_s;
     const CameraCalibration& c = labels.camera;
     j["camera"] = {{"model", "pinhole"},
@@ -168,7 +173,19 @@ void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_
     sea["sun_direction"] = {sun.x, sun.y, sun.z};
     sea["sun_elevation_deg"] = glm::degrees(std::asin(sun.y));
     j["sea"] = sea;
-    writeFileAtomically(paths[5], j.dump(2) + "\n");
+    return j;
+}
+
+void writeFrameJson(const Json& json, const fs::path& colour)
+{
+    writeFileAtomically(labelFilePaths(colour)[5], json.dump(2) + "\n");
+}
+
+void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
+                     const fs::path& colour)
+{
+    writeLabelArrays(labels, colour);
+    writeFrameJson(frameJson(labels, scene, time_s, significantHeight_m, colour), colour);
 }
 
 } // namespace swell::app

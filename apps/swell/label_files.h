@@ -9,8 +9,11 @@
 // (docs/LABELS.md describes each field.)
 #pragma once
 
+#include "swell/image.h"
 #include "swell/labels.h"
 #include "swell/scene.h"
+
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <string>
@@ -21,9 +24,21 @@ namespace swell::app {
 // The files written for the colour image `colour`, in the order above.
 std::vector<std::filesystem::path> labelFilePaths(const std::filesystem::path& colour);
 
-// Writes them. `seaHeight_m`: the significant wave height drawn, m.
+using Json = nlohmann::ordered_json;
+
+// Writes them, the JSON last. `significantHeight_m`: the significant wave
+// height drawn, m.
 void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
                      const std::filesystem::path& colour);
+// The arrays and the preview alone.
+void writeLabelArrays(const FrameLabels& labels, const std::filesystem::path& colour);
+// The JSON's content (camera, horizon, classes, objects, sea), and writing it.
+Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
+               const std::filesystem::path& colour);
+void writeFrameJson(const Json& json, const std::filesystem::path& colour);
+
+// A PNG written whole or not at all (a temporary file renamed).
+void writePngAtomically(const Image& image, const std::filesystem::path& path);
 
 // The .npy bytes (NumPy's format, version 1.0) of a row-major array.
 std::string npyBytes(const void* data, std::size_t bytes, const std::string& descr, const std::vector<int>& shape);

@@ -213,6 +213,24 @@ int main(int argc, char** argv)
                              "the built-in default when omitted")
         ->type_name("SCENE");
 
+    swell::app::DatasetOptions dataset;
+    CLI::App* datasetCommand =
+        app.add_subcommand("dataset", "Render a sweep's labelled samples into a folder (docs/DATASETS.md); "
+                                      "started again, it renders only the samples not done yet");
+    datasetCommand->add_option("sweep", dataset.sweepPath, "Sweep file (TOML): a base scene and what varies")
+        ->type_name("SWEEP")
+        ->required();
+    datasetCommand->add_option("--out", dataset.out, "The dataset's folder (created when missing)")
+        ->type_name("DIR")
+        ->required();
+    datasetCommand->add_option("--shard", dataset.shard,
+                               "Render only part K of N: the samples i with i % N == K - 1 (one part per machine)")
+        ->type_name("K/N")
+        ->capture_default_str();
+    datasetCommand->add_flag("--dry-run", dataset.dryRun,
+                             "Check the sweep, its scene and the folder, write the manifest and say what this shard "
+                             "would render; render nothing");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -241,6 +259,10 @@ int main(int argc, char** argv)
             if (duration >= 0.0)
                 render.duration_s = duration;
             return swell::app::runRender(render);
+        }
+        if (*datasetCommand) {
+            dataset.presets = presets;
+            return swell::app::runDataset(dataset);
         }
         if (*benchCommand) {
             parseSize(benchSize, bench.width, bench.height);

@@ -175,7 +175,7 @@ int runRender(const RenderOptions& options)
         if (video)
             videoWriter->write(image);
         else
-            writePng(image, frame);
+            writePngAtomically(image, frame);
         if (options.labels)
             writeLabelFiles(renderer.renderLabels(camera, size), scene, t, 4.0 * renderer.waveModel().heightDeviation_m(),
                             frame);

@@ -1,0 +1,120 @@
+#include "dataset_coco.h"
+
+#include "swell/error.h"
+#include "swell/labels.h"
+#include "swell/sweep.h"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace swell::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readWhole(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error(fmt::format("cannot read {}", path.string()));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// A uint16 (H, W) array from an .npy file this program wrote.
+std::vector<std::uint16_t> readInstances(const fs::path& path, int width, int height)
+{
+    const std::string bytes = readWhole(path);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    if (bytes.size() < 10 || bytes.compare(0, 6, "\x93NUMPY") != 0)
+        throw Error(fmt::format("{} is not an .npy file", path.string()));
+    const std::size_t header = 10 + std::size_t(std::uint8_t(bytes[8])) + 256 * std::size_t(std::uint8_t(bytes[9]));
+    if (bytes.size() != header + 2 * pixels)
+        throw Error(fmt::format("{} does not hold {}x{} uint16 values", path.string(), width, height));
+    std::vector<std::uint16_t> values(pixels);
+    std::memcpy(values.data(), bytes.data() + header, 2 * pixels);
+    return values;
+}
+
+// COCO's uncompressed RLE of one instance's mask: run lengths alternating
+// from "not in it", over the pixels in column-major order.
+Json runLengths(const std::vector<std::uint16_t>& instances, int width, int height, std::uint16_t instance)
+{
+    Json counts = Json::array();
+    bool inside = false;
+    long long run = 0;
+    for (int x = 0; x < width; ++x)
+        for (int y = 0; y < height; ++y) {
+            const bool here = instances[std::size_t(y) * std::size_t(width) + std::size_t(x)] == instance;
+            if (here != inside) {
+                counts.push_back(run);
+                run = 0;
+                inside = here;
+            }
+            ++run;
+        }
+    counts.push_back(run);
+    return {{"counts", counts}, {"size", {height, width}}};
+}
+
+} // namespace
+
+Json cocoJson(const fs::path& out, int count, const std::vector<std::string>& classes)
+{
+    Json images = Json::array(), annotations = Json::array(), categories = Json::array();
+    for (std::size_t c = SWELL_LABEL_FIRST_OBJECT_CLASS; c < classes.size(); ++c)
+        categories.push_back({{"id", c}, {"name", classes[c]}, {"supercategory", "object"}});
+    long long nextId = 1;
+    for (int i = 0; i < count; ++i) {
+        const fs::path png = out / "samples" / fmt::format("{:06d}.png", i);
+        const std::vector<fs::path> files = labelFilePaths(png);
+        const Json sample = Json::parse(readWhole(files[5]));
+        const int width = sample["size"][0], height = sample["size"][1];
+        images.push_back({{"id", i}, {"file_name", fmt::format("samples/{:06d}.png", i)}, {"width", width}, {"height", height}});
+        if (sample["objects"].empty())
+            continue;
+        const std::vector<std::uint16_t> instances = readInstances(files[3], width, height);
+        for (const Json& o : sample["objects"]) {
+            if (o["visible_pixels"].get<long long>() == 0)
+                continue;
+            const int x0 = o["box_px"][0], y0 = o["box_px"][1], x1 = o["box_px"][2], y1 = o["box_px"][3];
+            annotations.push_back({{"id", nextId++},
+                                   {"image_id", i},
+                                   {"category_id", o["class_id"]},
+                                   {"instance", o["instance"]},
+                                   {"bbox", {x0, y0, x1 - x0, y1 - y0}},
+                                   {"area", o["visible_pixels"]},
+                                   {"iscrowd", 0},
+                                   {"segmentation", runLengths(instances, width, height, o["instance"].get<std::uint16_t>())}});
+        }
+    }
+    return {{"info", {{"description", "rendered by swell dataset"}}},
+            {"images", images},
+            {"annotations", annotations},
+            {"categories", categories}};
+}
+
+Json sampleValueJson(const Scene& scene, std::string_view key)
+{
+    const ParameterValue v = sweptValue(scene, key);
+    if (const Parameter* p = sweptParameter(key); p && p->kind == ParameterKind::Choice)
+        return std::string(p->choices[std::size_t(std::get<std::int64_t>(v))]);
+    if (const auto* d = std::get_if<double>(&v))
+        return *d;
+    if (const auto* i = std::get_if<std::int64_t>(&v))
+        return *i;
+    if (const auto* b = std::get_if<bool>(&v))
+        return *b;
+    if (const auto* v2 = std::get_if<glm::dvec2>(&v))
+        return Json::array({v2->x, v2->y});
+    const glm::dvec3 v3 = std::get<glm::dvec3>(v);
+    return Json::array({v3.x, v3.y, v3.z});
+}
+
+} // namespace swell::app

@@ -1,0 +1,81 @@
+// Sweep files: a dataset of labelled frames as a base scene and the ranges
+// its parameters vary over (docs/DATASETS.md). Sample i of a sweep is fully
+// determined by the sweep and i: each varied value is drawn from its own
+// stream, keyed by (seed, i, key), so adding a key changes no other key's
+// values and any machine draws the same.
+#pragma once
+
+#include "swell/export.h"
+
+#include "swell/error.h"
+#include "swell/parameters.h"
+#include "swell/scene.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace swell {
+
+// The largest sweep: samples are numbered with six digits.
+inline constexpr int kMaxSweepSamples = 1000000;
+
+// How one key varies.
+struct SWELL_API SweepKey {
+    // As written: a scene parameter ("camera.roll_deg"), one in an item of
+    // a list ("objects[1].yaw_deg"), or the sun's "sun.elevation_deg" and
+    // "sun.azimuth_deg" (which set sun.direction together).
+    std::string key;
+    SourcePlace place;
+    enum class Kind { Range, OneOf } kind = Kind::Range;
+    // Range: uniform between lo and hi (both included; whole numbers for an
+    // Integer parameter; each component for a vector). OneOf: one of these,
+    // each as likely. A single value is a OneOf of one.
+    ParameterValue lo{}, hi{};
+    std::vector<ParameterValue> choices;
+};
+
+struct SWELL_API Sweep {
+    std::filesystem::path file;
+    // The base scene: a scene file relative to the sweep file's folder, or a
+    // preset's name (the caller resolves it: sweepScenePath()).
+    std::string scene;
+    SourcePlace scenePlace;
+    int count = 0;              // samples, 1..kMaxSweepSamples
+    std::uint64_t seed = 0;
+    glm::ivec2 size{640, 480};  // pixels
+    double timeMin_s = 0.0, timeMax_s = 0.0; // each sample's time, uniform in [min, max], s
+    bool labels = true;         // write each sample's ground truth (swell/labels.h)
+    std::vector<SweepKey> vary; // in the file's order
+    std::string text;           // the file as read (a dataset's manifest keeps it)
+};
+
+// Reads and checks a sweep file's own structure and values. Throws
+// InputError at file:line:column (an unknown key with a suggestion, an empty
+// range, a value of the wrong type).
+SWELL_API Sweep loadSweepFile(const std::filesystem::path& path);
+
+// Checks every varied key against the base scene: it names a parameter the
+// scene has (a list item that exists, the wind when the waves come from
+// it) and its range lies within the parameter's. Throws InputError at the
+// key's place in the sweep file.
+SWELL_API void checkSweep(const Sweep& sweep, const Scene& base);
+
+// Sample `index` (0..count-1): the base scene with each key drawn, and its time.
+struct SWELL_API SweepSample {
+    Scene scene;
+    double time_s = 0.0;
+};
+SWELL_API SweepSample sweepSample(const Sweep& sweep, const Scene& base, int index);
+
+// A varied key's value in a scene (a sample's): the parameter's, or the
+// sun's elevation or azimuth in degrees. The key must be one a sweep file
+// accepted.
+SWELL_API ParameterValue sweptValue(const Scene& scene, std::string_view key);
+// The parameter a sweep key names; nullptr for the sun's angles.
+SWELL_API const Parameter* sweptParameter(std::string_view key);
+
+} // namespace swell
