@@ -41,6 +41,11 @@ printf '%s\n' '[camera]' 'position_m = [22.0, 32.0, -78.0]' 'yaw_deg = -22.0' 'p
   >>"$scratch/wake.toml"
 "$swell" render "$scratch/wake.toml" -o "$out/under-way-wake.png" --size 960x540 --time 30
 
+# A labelled frame (docs/LABELS.md): the under-way preset with its ground
+# truth, drawn into four panels by docs/images/labelled-frame.py.
+"$swell" render "$root/scenes/under-way.toml" -o "$scratch/labelled.png" --size 480x270 --time 20 --labels
+python3 "$root/docs/images/labelled-frame.py" "$scratch/labelled.png" "$out/labelled-frame.png"
+
 # The example host's picture: the build installed into a scratch prefix, the
 # example (an outside project) built against it, one frame headless.
 cmake --install "${SWELL_BUILD_DIR:-$root/build}" --prefix "$scratch/prefix" >/dev/null
