@@ -180,7 +180,7 @@ int runDataset(const DatasetOptions& options)
                 renderer = std::make_unique<Renderer>(sample.scene);
             else
                 renderer->setScene(sample.scene);
-            const Camera camera = cameraAt(sample.scene.camera, sample.time_s);
+            const Camera camera = renderer->sceneCameraAt(sample.time_s);
             const fs::path png = samplePng(out, i);
             writePngAtomically(renderer->renderImage(camera, sample.time_s, sweep.size), png);
             FrameLabels labels;

@@ -169,7 +169,7 @@ int runRender(const RenderOptions& options)
     Progress progress("rendering frames", frames);
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
-        const Camera camera = cameraAt(scene.camera, t);
+        const Camera camera = renderer.sceneCameraAt(t);
         const Image image = renderer.renderImage(camera, t, size);
         const fs::path frame = options.duration_s ? sequencePath(output, i) : output;
         if (video)

@@ -30,6 +30,13 @@ struct SWELL_API Camera {
 };
 
 // The scene's camera at time t: its fixed pose, or its path interpolated.
+// (A mounted camera's pose is relative to its object: Renderer::sceneCameraAt.)
 SWELL_API Camera cameraAt(const CameraSettings& settings, double time_s);
+
+// A camera carried by an object: `relative` stands at its position_m in the
+// object's axes and looks with its yaw, pitch and roll turned from them;
+// `objectToWorld` places the object (a rigid transform, or one with a
+// uniform scale, which does not scale the offset). The result in the world.
+SWELL_API Camera mountedCamera(const Camera& relative, const glm::dmat4& objectToWorld);
 
 } // namespace swell

@@ -138,6 +138,11 @@ public:
     // Each scene object's transform (object to absolute world, m) at the
     // simulated time: floating objects sit on drawnSurface().
     std::vector<glm::dmat4> objectTransforms() const;
+    // The scene's camera at time_s (swell/camera.h's cameraAt), and for a
+    // camera mounted on an object (camera.mount_object) that object's
+    // transform at time_s applied (mountedCamera): a floating body's heave,
+    // roll and pitch, stepped to time_s as advanceTo() steps it.
+    Camera sceneCameraAt(double time_s);
     // Draws every pass at `scale` times the output's size (each side, rounded)
     // and scales the image to the output with a bilinear filter: 0.5 costs
     // about a quarter of the pixels, 2 supersamples. Throws

@@ -168,6 +168,13 @@ struct SWELL_API CameraSettings {
     double far_m = 20000.0;                // far plane, m, > near
     std::vector<CameraKey> path;           // optional: keys sorted by time, interpolated linearly
     double roll_deg = 0.0;                 // about the view direction, degrees, -180..180 (swell/camera.h)
+    // A camera on a deck: the index of the scene object it is mounted on
+    // (-1: none). Mounted, the camera stands at mountOffset_m in the
+    // object's axes (m, unscaled) and its yaw, pitch and roll turn it from
+    // the object's axes: it heaves, rolls and pitches with a floating body
+    // (Renderer::sceneCameraAt). The object must be a rigid body or fixed.
+    int mountObject = -1;
+    glm::dvec3 mountOffset_m{0.0};
 };
 
 // Where a scene file named a file the renderer reads (a model or a sky

@@ -30,6 +30,33 @@ glm::dmat4 Camera::projection(double aspect) const
     return glm::perspective(glm::radians(fovY_deg), aspect, near_m, far_m);
 }
 
+Camera mountedCamera(const Camera& relative, const glm::dmat4& objectToWorld)
+{
+    // The object's rotation, its scale taken out of each axis.
+    glm::dmat3 rotation(objectToWorld);
+    for (int c = 0; c < 3; ++c)
+        rotation[c] = glm::normalize(rotation[c]);
+    const double scale = glm::length(glm::dvec3(objectToWorld[0]));
+    // The relative camera's forward and up in the object's axes (its view
+    // matrix's rows), turned into the world's.
+    const glm::dmat3 viewRotation(relative.viewRelativeTo(relative.position_m));
+    const glm::dvec3 forward = rotation * -glm::dvec3(viewRotation[0][2], viewRotation[1][2], viewRotation[2][2]);
+    const glm::dvec3 up = rotation * glm::dvec3(viewRotation[0][1], viewRotation[1][1], viewRotation[2][1]);
+    Camera c = relative;
+    c.position_m = glm::dvec3(objectToWorld * glm::dvec4(relative.position_m / scale, 1.0));
+    c.yaw_deg = glm::degrees(std::atan2(forward.x, -forward.z));
+    c.pitch_deg = glm::degrees(std::asin(std::clamp(forward.y, -1.0, 1.0)));
+    // The roll that turns the level up (the world's up, square to forward)
+    // into the camera's about forward (viewRelativeTo's Rodrigues rotation).
+    const glm::dvec3 worldUp(0.0, 1.0, 0.0);
+    const glm::dvec3 level = worldUp - forward * glm::dot(forward, worldUp);
+    const double levelLength = glm::length(level);
+    c.roll_deg = levelLength > 1e-9 ? glm::degrees(std::atan2(glm::dot(up, glm::cross(forward, level / levelLength)),
+                                                              glm::dot(up, level / levelLength)))
+                                    : 0.0;
+    return c;
+}
+
 Camera cameraAt(const CameraSettings& s, double time_s)
 {
     Camera c;

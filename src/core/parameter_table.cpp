@@ -3,6 +3,7 @@
 // get/set pair), its unit, range, default and what a change to it costs.
 // The checks and formatting built on it are parameters.cpp.
 #include "swell/parameters.h"
+#include "swell/scene_file.h"
 
 #include "swell/shader_constants.h"
 
@@ -380,6 +381,15 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.camera.far_m; },
            {.key = "camera.far_m", .effect = E::Grid, .unit = "m", .min = 0.0, .max = 1.0e7, .minExclusive = true, .sliderMin = 100.0,
             .sliderMax = 100000.0, .logarithmic = true, .description = "far clip plane; > near_m"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.mountObject; },
+           {.key = "camera.mount_object", .kind = K::Integer, .min = -1.0, .max = double(kMaxSceneObjects) - 1.0,
+            .sliderMin = -1.0, .sliderMax = 8.0,
+            .description = "index of the [[objects]] item the camera rides on (a rigid body or a fixed object); "
+                           "-1: none. Mounted, yaw, pitch and roll turn it from the object's axes"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.mountOffset_m; },
+           {.key = "camera.mount_offset_m", .kind = K::Vector3, .unit = "m", .min = -1.0e3, .max = 1.0e3,
+            .sliderMin = -20.0, .sliderMax = 20.0,
+            .description = "where a mounted camera stands in its object's axes (unscaled) [x, y, z]"}),
         // [[camera.path]]
         at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].time_s; },
            {.key = "camera.path.time_s", .list = L::CameraPath, .unit = "s", .min = 0.0, .max = 1.0e6, .sliderMin = 0.0,

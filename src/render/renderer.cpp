@@ -288,6 +288,23 @@ Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size
     return image;
 }
 
+Camera Renderer::sceneCameraAt(double time_s)
+{
+    Impl& s = *impl_;
+    Camera camera = cameraAt(s.scene.camera, time_s);
+    const int mount = s.scene.camera.mountObject;
+    if (mount < 0 || std::size_t(mount) >= s.seaScene.objects.size())
+        return camera;
+    camera.position_m = s.scene.camera.mountOffset_m; // in the object's axes
+    // A rigid body where advanceTo() will find it (its steps are taken here,
+    // not again there); a fixed object where it stands.
+    s.bodies.advanceTo(time_s);
+    const std::optional<glm::dmat4> body = s.bodies.poseAt(std::size_t(mount), time_s);
+    const glm::dmat4 pose = body ? *body : placedObjectPose(s.seaScene.objects[std::size_t(mount)],
+                                                            s.seaScene.objects[std::size_t(mount)].position_m);
+    return mountedCamera(camera, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, s.level(), 0.0)) * pose);
+}
+
 std::vector<glm::dmat4> Renderer::objectTransforms() const
 {
     std::vector<glm::dmat4> out;

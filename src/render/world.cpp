@@ -76,12 +76,17 @@ glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, const Draw
         if (s > 1e-9)
             tilt = glm::rotate(glm::dmat4(1.0), std::asin(std::min(s, 1.0)), axis / s);
     }
-    return glm::translate(glm::dmat4(1.0), position) * tilt *
-           glm::rotate(glm::dmat4(1.0), glm::radians(o.yaw_deg), glm::dvec3(0, 1, 0)) *
-           glm::scale(glm::dmat4(1.0), glm::dvec3(o.scale));
+    return placedObjectPose(o, position, tilt);
 }
 
 } // namespace
+
+glm::dmat4 placedObjectPose(const SceneObject& o, glm::dvec3 position_m, const glm::dmat4& tilt)
+{
+    return glm::translate(glm::dmat4(1.0), position_m) * tilt *
+           glm::rotate(glm::dmat4(1.0), glm::radians(o.yaw_deg), glm::dvec3(0, 1, 0)) *
+           glm::scale(glm::dmat4(1.0), glm::dvec3(o.scale));
+}
 
 SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel& surface)
 {

@@ -57,6 +57,10 @@ World buildWorld(const Scene& scene);
 std::vector<glm::dmat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
                                     SceneBodies& bodies, double time_s);
 
+// An object's transform standing at position_m (sea frame), tilted by
+// `tilt`, turned by its yaw and scaled: a fixed object's at its own position.
+glm::dmat4 placedObjectPose(const SceneObject& o, glm::dvec3 position_m, const glm::dmat4& tilt = glm::dmat4(1.0));
+
 // Fills boxes holding all world geometry, relative to the render origin: a
 // reflected ray that misses them all can only meet the sky. Returns the
 // count, or -1 when there are more than SWELL_MAX_WORLD_BOXES (every ray is

@@ -178,6 +178,19 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base, 
     if (!(scene.fog.end_m > scene.fog.start_m))
         fail(places.first({"fog.end_m", "fog.start_m", "fog"}),
              fmt::format("fog.end_m ({} m) must be greater than fog.start_m ({} m)", scene.fog.end_m, scene.fog.start_m));
+    if (const int mount = scene.camera.mountObject; mount >= 0) {
+        if (std::size_t(mount) >= scene.objects.size())
+            fail(places.first({"camera.mount_object", "camera"}),
+                 fmt::format("camera.mount_object = {}: the scene has {} object(s) (indices from 0)", mount,
+                             scene.objects.size()));
+        const SceneObject& o = scene.objects[std::size_t(mount)];
+        if (o.floats && !o.isRigidBody())
+            fail(places.first({"camera.mount_object", "camera"}),
+                 fmt::format("camera.mount_object = {}: objects[{}] floats without being a rigid body (it sits on "
+                             "the drawn water, which depends on the view); give it mass_kg or density_kg_per_m3, "
+                             "or mount the camera on a rigid body or a fixed object",
+                             mount, mount));
+    }
     if (!(scene.camera.far_m > scene.camera.near_m))
         fail(places.first({"camera.far_m", "camera.near_m", "camera"}),
              fmt::format("camera.far_m ({} m) must be greater than camera.near_m ({} m)", scene.camera.far_m,

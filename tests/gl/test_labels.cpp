@@ -193,3 +193,35 @@ TEST_F(Labels, AnObjectsPixelsBoxAndRangesAreItsOwn)
 }
 
 } // namespace
+
+namespace {
+
+// A camera mounted on the boat under way (camera.mount_object): where the
+// boat is drawn, it stands at its offset and rolls with it.
+TEST_F(Labels, AMountedCameraRidesItsBody)
+{
+    swell::Scene scene = swell::defaultScene();
+    swell::SceneObject boat;
+    boat.path = "builtin:boat";
+    boat.position_m = glm::dvec3(0.0, 0.0, -20.0);
+    boat.floats = true;
+    boat.density_kg_per_m3 = 400.0;
+    scene.objects = {boat};
+    scene.camera.mountObject = 0;
+    scene.camera.mountOffset_m = glm::dvec3(0.0, 2.5, 0.0);
+    scene.camera.pitch_deg = -5.0;
+    swell::Renderer renderer(scene);
+    double rollMin = 1e9, rollMax = -1e9;
+    for (double t : {3.0, 4.0, 5.5, 7.0}) {
+        const swell::Camera camera = renderer.sceneCameraAt(t);
+        renderer.renderImage(camera, t, {64, 48});
+        const glm::dmat4 pose = renderer.objectTransforms().at(0);
+        const glm::dvec3 at(pose * glm::dvec4(scene.camera.mountOffset_m, 1.0));
+        EXPECT_NEAR(glm::distance(camera.position_m, at), 0.0, 1e-9) << "at " << t << " s";
+        rollMin = std::min(rollMin, camera.roll_deg);
+        rollMax = std::max(rollMax, camera.roll_deg);
+    }
+    EXPECT_GT(rollMax - rollMin, 0.05) << "the camera does not roll with the boat";
+}
+
+} // namespace
