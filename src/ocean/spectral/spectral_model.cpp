@@ -1,8 +1,8 @@
 // SpectralModel: the spectral field behind swell::WaveModel, with its CPU
 // twin for queries and its GPU half: each frame at a new time, compute
-// shaders evolve the spectra (shaders/ocean/spectral_evolve.comp), transform
-// rows then columns (spectral_fft.comp), and mipmap the slopes and their
-// second moments (spectral_moments.comp).
+// shaders transform rows, evolving the spectra as they read them, then
+// columns (shaders/ocean/spectral_fft.comp), and mipmap the slopes and
+// their second moments (spectral_moments.comp).
 #include "swell/spectral_model.h"
 
 #include "ocean/spectral/foam_replay.h"
@@ -91,9 +91,8 @@ constexpr long long mipTexels(int size, int levels, int layers, int first = 0)
     return texels;
 }
 
-// Local size of the 16 x 16 compute shaders (spectral_evolve.comp,
-// spectral_moments.comp, spectral_foam.comp), each invocation one texel of
-// every image it writes.
+// Local size of the 16 x 16 compute shaders (spectral_moments.comp,
+// spectral_foam.comp), each invocation one texel of every image it writes.
 constexpr int kTile = 16;
 
 
@@ -103,15 +102,14 @@ public:
                 float foldThreshold, const gl::ShaderSources& shaders)
         : field_(std::move(field)), settings_(settings), foldThreshold_(foldThreshold)
     {
-        evolve_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_evolve.comp"}});
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
         foamStep_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_foam.comp"}},
                                      {"SWELL_OCEAN_FILE \"ocean/spectral.glsl\""});
         moments_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_moments.comp"}});
-        timeLocation_ = glGetUniformLocation(evolve_.id(), "time_s");
-        choppinessLocation_ = glGetUniformLocation(evolve_.id(), "choppiness");
-        patchLocation_ = glGetUniformLocation(evolve_.id(), "patchSize_m");
+        timeLocation_ = glGetUniformLocation(fftRows_.id(), "time_s");
+        choppinessLocation_ = glGetUniformLocation(fftRows_.id(), "choppiness");
+        patchLocation_ = glGetUniformLocation(fftRows_.id(), "patchSize_m");
         decayLocation_ = glGetUniformLocation(foamStep_.id(), "decay");
         thresholdLocation_ = glGetUniformLocation(foamStep_.id(), "foldThreshold");
         softnessLocation_ = glGetUniformLocation(foamStep_.id(), "foldSoftness");
@@ -369,7 +367,9 @@ private:
     // mipmaps only when every cascade is transformed (a full frame's fields).
     void transform(double time_s, int cascades = kCascades)
     {
-        glUseProgram(evolve_.id());
+        // The row pass evolves the spectra as it reads them (no image of
+        // them is written first), then transforms every row in place.
+        glUseProgram(fftRows_.id());
         glUniform1d(timeLocation_, time_s);
         glUniform1f(choppinessLocation_, float(field_->choppiness));
         float patches[kCascades];
@@ -381,13 +381,9 @@ private:
         glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kSpectrumFormat);
         glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kSpectrumFormat);
         ++work_.transforms;
-        // Each texel of the two spectra (displacement, derivatives).
+        // One workgroup per row (then column) of each cascade, writing the
+        // line of both images (displacement, derivatives).
         const long long twoSpectra = 2 * texelBytes(kSpectrumFormat);
-        dispatch(kSize / kTile, kSize / kTile, GLuint(cascades), twoSpectra * kTile * kTile);
-        barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        // One workgroup per row (then column) of each cascade, transforming
-        // the line of both images in place.
-        glUseProgram(fftRows_.id());
         dispatch(kSize, GLuint(cascades), 1, twoSpectra * kSize);
         barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         glUseProgram(fftColumns_.id());
@@ -445,7 +441,7 @@ private:
     glm::dvec2 gridCenter_m_{0.0}; // this frame's
     // The replay's steps before the last on the CPU: only on a software rasteriser.
     std::unique_ptr<FoamReplay> cpuReplay_;
-    gl::Program evolve_, fftRows_, fftColumns_, foamStep_, moments_;
+    gl::Program fftRows_, fftColumns_, foamStep_, moments_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
     GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
