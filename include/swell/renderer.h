@@ -91,7 +91,7 @@ struct SWELL_API GpuWork {
     int dispatches = 0;         // glDispatchCompute calls
     int barriers = 0;           // glMemoryBarrier calls
     int mipmaps = 0;            // glGenerateTextureMipmap calls
-    long long bytesWritten = 0; // texels the dispatches, mipmaps and clears wrote, times their formats' sizes
+    long long bytesWritten = 0; // texels the dispatches, mipmaps, clears and image uploads wrote, times their formats' sizes
 };
 
 // What the last advanceTo() did, and what the views drawn since drew (their
