@@ -5,6 +5,8 @@
 //   bench_lod.cpp      the water grid's triangles seen from the camera
 //   bench_report.cpp   the machine, the text table and the JSON file
 //   bench_terms.cpp    what each term of the water shading costs
+//   bench_simulation.cpp  the renderer's own counts: the simulation's CPU
+//                      time by part, Swell's GPU work per frame
 #pragma once
 
 #include "swell/camera.h"
@@ -231,9 +233,20 @@ struct Results {
     std::vector<long long> bodySteps; // per measured frame, all bodies (Renderer::counters())
     std::vector<long long> wakeSteps; // per measured frame, the bodies' wake field's steps (1/30 s each)
     std::vector<double> wakeSteps_ms; // per measured frame, the wall time of those steps (within "bodies")
+    // Per measured frame, Renderer::counters() after it: the simulation's CPU
+    // time by part (simulationCpu) and Swell's GPU work (simulationGpu,
+    // viewsGpu, drawCalls).
+    std::vector<FrameCounters> counters;
 };
 
 void printReport(const Results& results);
+// The line of the simulation's CPU time (FrameCounters::simulationCpu), and
+// the table of Swell's GPU work per frame (bench_simulation.cpp).
+void printSimulationCpuLine(const Results& results);
+void printGpuWork(const Results& results);
+nlohmann::ordered_json simulationCpuJson(const Results& results);
+nlohmann::ordered_json frameSimulationCpuJson(const FrameCounters& counters);
+nlohmann::ordered_json frameGpuWorkJson(const FrameCounters& counters);
 // The terms' table (nothing when they were not measured), and its JSON.
 void printTermReport(const Results& results);
 nlohmann::ordered_json termsJson(const Results& results);

@@ -199,6 +199,7 @@ int runBench(const BenchOptions& options)
             r.bodySteps.push_back(renderer.counters().bodySteps);
             r.wakeSteps.push_back(renderer.counters().wakeSteps);
             r.wakeSteps_ms.push_back(renderer.counters().wakeSteps_ms);
+            r.counters.push_back(renderer.counters());
             r.floatingBodies = renderer.counters().floatingBodies;
             r.realCameras.push_back(camera);
         }

@@ -211,9 +211,11 @@ void printReport(const Results& r)
     // The headline first: frames per second from the median whole frame.
     const Summary frameWall = summarize(frameSeries(r.real, &FrameSample::wall_ms));
     const Summary frameCpu = summarize(frameSeries(r.real, &FrameSample::cpu_ms));
-    std::printf("%.2f frames per second (median frame %.1f ms wall, %.1f ms CPU) at %dx%d, %d measured frames\n\n",
+    std::printf("%.2f frames per second (median frame %.1f ms wall, %.1f ms CPU) at %dx%d, %d measured frames\n",
                 frameWall.median > 0.0 ? 1000.0 / frameWall.median : 0.0, frameWall.median, frameCpu.median, r.size.x,
                 r.size.y, r.frames);
+    printSimulationCpuLine(r);
+    std::printf("\n");
     std::printf("swell bench: %dx%d (reflection and refraction %dx%d), %s, %dx%d water cells\n", r.size.x,
                 r.size.y, r.passSize.x, r.passSize.y, r.surface.c_str(), r.gridCells, r.gridCells);
     std::printf("output: %s\n", r.output.c_str());
@@ -291,6 +293,7 @@ void printReport(const Results& r)
                     (unsigned long long)c.primitivesSubmitted, (unsigned long long)c.clippingInputPrimitives,
                     (unsigned long long)c.clippingOutputPrimitives, (unsigned long long)c.samplesPassed);
     }
+    printGpuWork(r);
 
     if (!r.lod.empty()) {
         std::printf("\nWater grid LOD: %lld triangles submitted per frame; size = projected area in px^2 of the\n"
@@ -344,6 +347,7 @@ void writeJson(const Results& r, const std::string& path)
     j["frames"] = r.frames;
     const double frameWall_ms = summarize(frameSeries(r.real, &FrameSample::wall_ms)).median;
     j["frames_per_second"] = frameWall_ms > 0.0 ? 1000.0 / frameWall_ms : 0.0; // from the median frame, wall
+    j["simulation_cpu_ms"] = simulationCpuJson(r); // the calling thread's, by part (median, p95)
     j["warmup"] = r.warmup;
     j["frame_step_s"] = r.frameStep_s;
     j["pipeline_statistics"] = r.pipelineStatistics;
@@ -436,6 +440,10 @@ void writeJson(const Results& r, const std::string& path)
                                    {"gpu_ms", p.gpu_ms ? Json(*p.gpu_ms) : Json(nullptr)},
                                    {"counters", countersJson(p.counters, r.pipelineStatistics)}};
         frame["passes"] = std::move(framePasses);
+        if (i < r.counters.size()) {
+            frame["simulation_cpu_ms"] = frameSimulationCpuJson(r.counters[i]);
+            frame["gpu_work"] = frameGpuWorkJson(r.counters[i]);
+        }
         measured.push_back(std::move(frame));
     }
     j["measured_frames"] = std::move(measured);

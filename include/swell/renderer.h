@@ -57,12 +57,50 @@ struct SWELL_API RendererOptions {
     unsigned omittedWaterTerms = 0;
 };
 
+// The CPU time of the calling thread (CLOCK_THREAD_CPUTIME_ID) that Swell's
+// simulation work for a frame took, ms, by part. GL calls made in these parts
+// count as far as the driver works on the calling thread (uploads,
+// validation, and on a software rasteriser whatever it does there before
+// handing work on); what a driver runs on threads of its own (llvmpipe's
+// rasteriser and compute threads: the emulated GPU) does not, nor does a
+// PassObserver's own time. Not in any part: issuing the passes' draws and
+// their state (the pass table of `swell bench` has those).
+struct SWELL_API SimulationCpuTime {
+    // The wave model: its frame's preparation (WaveModelGpu::prepareFrame:
+    // the spectral model's dispatches, and on a software rasteriser the
+    // steps of a foam replay before the last) and each view's (prepareView,
+    // bind).
+    double model_ms = 0.0;
+    // The floating bodies and their wake stepped to the frame's time (their
+    // own water queries included), the wake's frame blended and uploaded.
+    double bodies_ms = 0.0;
+    // The frame's DrawnSurface built and the scene objects' poses found on
+    // it, and each view's query of which side of the water the eye is.
+    double queries_ms = 0.0;
+    // Each view's culling and uniforms: the grid's tiles culled, the frame
+    // uniforms and the world's boxes found, the uniforms and the surface
+    // sources' parameters uploaded (every pass's).
+    double views_ms = 0.0;
+    double total_ms() const { return model_ms + bodies_ms + queries_ms + views_ms; }
+};
+
+// Swell's GPU work other than drawing, counted where the library makes the
+// calls (swell/wave_model_gpu.h's Work): exact, the same in every run and on
+// every machine, except a frame that replays the foam's history, whose
+// steps before the last run on the CPU on a software rasteriser.
+struct SWELL_API GpuWork {
+    int dispatches = 0;         // glDispatchCompute calls
+    int barriers = 0;           // glMemoryBarrier calls
+    int mipmaps = 0;            // glGenerateTextureMipmap calls
+    long long bytesWritten = 0; // texels the dispatches, mipmaps, clears and image uploads wrote, times their formats' sizes
+};
+
 // What the last advanceTo() did, and what the views drawn since drew (their
 // sums), for the benchmark and tests. advanceTo() starts them again.
 struct SWELL_API FrameCounters {
     long long waterTriangles = 0;
     long long worldTriangles = 0;
-    int drawCalls = 0;
+    int drawCalls = 0;         // the views': every glDraw* call Swell made for them
     int views = 0;             // views drawn since the last advanceTo()
     int simulationSteps = 0;   // 1 when the last advanceTo() moved the simulation to a new time or viewpoint
     int floatingBodies = 0;  // rigid bodies in the scene (swell/floating_body.h)
@@ -71,6 +109,11 @@ struct SWELL_API FrameCounters {
     double wakeSteps_ms = 0.0; // the wall time those steps took, ms (part of the "bodies" pass)
     int oceanTransforms = 0;   // the wave model's sets of inverse FFTs for this frame (spectral model)
     int foamSteps = 0;         // its foam's steps for this frame: more than one is a replay of its history
+    // Every draw call of the views (the sky's bake and the anti-aliasing's
+    // filter included) is drawCalls above; the rest of the GPU's work:
+    GpuWork simulationGpu; // advanceTo()'s: the wave model's for the frame
+    GpuWork viewsGpu;      // the views': the wave model's for each (none for Swell's own models)
+    SimulationCpuTime simulationCpu;
 };
 
 // Told when each pass of a frame begins and ends (for timing and counters).

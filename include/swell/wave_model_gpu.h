@@ -58,6 +58,28 @@ public:
     struct Work {
         int transforms = 0; // sets of inverse FFTs (one time, some cascades)
         int foamSteps = 0;  // steps of the foam
+        // What it asked of the GPU, counted where it makes the calls: exact,
+        // the same in every run and on every machine (the benchmark's
+        // machine-independent figures). A model of a host's counts its own.
+        int dispatches = 0; // glDispatchCompute calls
+        int barriers = 0;   // glMemoryBarrier calls
+        int mipmaps = 0;    // glGenerateTextureMipmap calls
+        // Bytes of GPU memory written: each texel its dispatches write times
+        // the size of the image's format (an image read and written in place
+        // counts once per dispatch that writes it), the mipmap levels
+        // generated, textures cleared, and images uploaded from the CPU (the
+        // spectral model's foam replayed there). Not the uniforms it uploads.
+        long long bytesWritten = 0;
+        Work& operator+=(const Work& other)
+        {
+            transforms += other.transforms;
+            foamSteps += other.foamSteps;
+            dispatches += other.dispatches;
+            barriers += other.barriers;
+            mipmaps += other.mipmaps;
+            bytesWritten += other.bytesWritten;
+            return *this;
+        }
     };
     Work takeWork()
     {

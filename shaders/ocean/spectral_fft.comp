@@ -4,7 +4,9 @@
 // inputs in bit-reversed order, log2(N) stages of butterflies with
 // twiddles exp(+2 pi i j / size) (the inverse transform, unnormalised, as
 // the CPU twin's kissfft computes it). Each sample carries two complex
-// numbers per image, so one pass transforms all four packed fields.
+// numbers per image, so one pass transforms all four packed fields. The row
+// pass (the first) evolves its samples itself (spectraAt() below) and
+// writes the images; the column pass reads them back.
 //
 // Each invocation takes a group of four samples through two stages at a
 // time in registers (the four a stage of span s and the next of span 2s
@@ -23,8 +25,57 @@
 #define SWELL_FFT_QUARTER (SWELL_FFT_SIZE / 4)
 layout(local_size_x = SWELL_FFT_QUARTER) in;
 
+#if SWELL_FFT_VERTICAL
 layout(binding = 2, rgba32f) uniform image2DArray spectrumA;
 layout(binding = 3, rgba32f) uniform image2DArray spectrumB;
+#else
+layout(binding = 2, rgba32f) uniform writeonly image2DArray spectrumA;
+layout(binding = 3, rgba32f) uniform writeonly image2DArray spectrumB;
+
+// The row pass's samples: the spectra at a time (src/ocean/spectral/
+// spectral_field.h has the formulas; evolve() there is the CPU twin): per
+// sample,
+//   hhat = h0 exp(-i w t) + conj(h0(-k)) exp(i w t)
+// and the displacement and slope fields packed two real fields to a complex
+// sample, ready for the inverse transform. Evolved as they are read, they
+// are never written out before the transform.
+layout(binding = 0, rgba32f) uniform readonly image2DArray initial;  // h0.re, h0.im, conj(h0(-k)).re, .im
+layout(binding = 1, rg32ui) uniform readonly uimage2DArray omega;    // w, rad/s, as a double's two words
+
+uniform double time_s;                         // simulation time, s
+uniform float choppiness;                      // lambda
+uniform float patchSize_m[SWELL_FFT_CASCADES]; // L of each cascade, m
+
+vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+vec2 timesI(vec2 a) { return vec2(-a.y, a.x); }
+
+// The two packed spectra at sample p (x, y, cascade):
+// a = (Dx + i Dy), (Dz + i dDx/dz); b = (dDy/dx + i dDy/dz), (dDx/dx + i dDz/dz).
+void spectraAt(ivec3 p, out vec4 a, out vec4 b)
+{
+    vec4 h0 = imageLoad(initial, p);
+    double w = packDouble2x32(imageLoad(omega, p).xy);
+    // The phase in double, reduced before it becomes float: exact after days.
+    const double twoPi = 6.283185307179586LF;
+    float phase = float(mod(w * time_s, twoPi));
+    vec2 e = vec2(cos(phase), sin(phase));
+    vec2 h = cmul(h0.xy, vec2(e.x, -e.y)) + cmul(h0.zw, e);
+    if (w == 0.0LF)
+        h = vec2(0.0);
+    int n = SWELL_FFT_SIZE;
+    vec2 f = vec2(p.x < n / 2 ? p.x : p.x - n, p.y < n / 2 ? p.y : p.y - n);
+    vec2 k = f * (6.28318530717958647 / patchSize_m[p.z]);
+    float kLength = max(length(k), 1e-30);
+    vec2 dx = timesI(h) * (choppiness * k.x / kLength);
+    vec2 dz = timesI(h) * (choppiness * k.y / kLength);
+    vec2 dyx = timesI(h) * k.x, dyz = timesI(h) * k.y;
+    vec2 dxx = -h * (choppiness * k.x * k.x / kLength);
+    vec2 dzz = -h * (choppiness * k.y * k.y / kLength);
+    vec2 dxz = -h * (choppiness * k.x * k.y / kLength);
+    a = vec4(dx + timesI(h), dz + timesI(dxz));
+    b = vec4(dyx + timesI(dyz), dxx + timesI(dzz));
+}
+#endif
 
 shared vec4 bufferA[SWELL_FFT_SIZE];
 shared vec4 bufferB[SWELL_FFT_SIZE];
@@ -66,8 +117,15 @@ void main()
         twiddle[k] = vec2(cos(angle), sin(angle));
     }
     for (int i = t; i < SWELL_FFT_SIZE; i += SWELL_FFT_QUARTER) {
+#if SWELL_FFT_VERTICAL
         bufferA[bitReversed(i)] = imageLoad(spectrumA, sampleAt(i));
         bufferB[bitReversed(i)] = imageLoad(spectrumB, sampleAt(i));
+#else
+        vec4 a, b;
+        spectraAt(sampleAt(i), a, b);
+        bufferA[bitReversed(i)] = a;
+        bufferB[bitReversed(i)] = b;
+#endif
     }
     barrier();
     // Stages of span s and 2s: the group of 4s holding invocation t's four

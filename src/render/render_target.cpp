@@ -93,10 +93,11 @@ void MainTarget::blitToOutput(const RenderTarget& from) const
                            outputSize_.y, GL_COLOR_BUFFER_BIT, filter);
 }
 
-void MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
+int MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
 {
     if (direct_)
-        return;
+        return 0;
+    int draws = 0;
     // Blits obey the scissor test and the colour mask: the passes leave the
     // former off and the latter open, but say so here too.
     glDisable(GL_SCISSOR_TEST);
@@ -118,6 +119,7 @@ void MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
         glBindTextureUnit(SWELL_UNIT_POST_SOURCE, single_.color());
         glBindVertexArray(emptyVao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
+        ++draws;
         glEnable(GL_DEPTH_TEST);
         if (scaled)
             blitToOutput(filtered_);
@@ -126,6 +128,7 @@ void MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
     }
     glBindFramebuffer(GL_FRAMEBUFFER, output_);
     glViewport(0, 0, outputSize_.x, outputSize_.y);
+    return draws;
 }
 
 } // namespace swell::detail

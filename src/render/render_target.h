@@ -52,8 +52,9 @@ public:
     // Whether present() has work to do for the frame begun last.
     bool presents() const { return !direct_; }
     // Brings the main pass's image to the output. `fxaa` draws the FXAA
-    // filter with `emptyVao`. Leaves the output framebuffer bound.
-    void present(const BlockProgram& fxaa, GLuint emptyVao);
+    // filter with `emptyVao`. Leaves the output framebuffer bound. Returns
+    // the draw calls it made (the filter's; blits are not draws).
+    int present(const BlockProgram& fxaa, GLuint emptyVao);
 
 private:
     // Copies `from`'s colour into the output, bilinear where sizes differ.

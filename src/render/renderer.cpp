@@ -47,23 +47,30 @@ void Renderer::Impl::advanceTo(double time_s, glm::dvec3 viewpointWorld)
     }
     counters = {};
     counters.simulationSteps = 1;
+    // The thread's CPU time, by part (FrameCounters::simulationCpu);
+    // the observer's callbacks are outside every part.
+    SimulationCpuTime& cpu = counters.simulationCpu;
+    const CpuPartScope modelPart(cpuParts, cpu.model_ms);
     Simulated next;
     next.time_s = time_s;
     next.viewpoint = viewpoint;
     const GridPlacement grid = placeGrid(gridShape, viewpoint);
     notify(true, "ocean");
     modelGpu->prepareFrame(grid.center_m, time_s);
-    addWork(modelGpu->takeWork());
+    addWork(modelGpu->takeWork(), counters.simulationGpu);
     notify(false, "ocean");
     notify(true, "bodies");
+    cpuParts.switchTo(&cpu.bodies_ms);
     const std::int64_t stepsBefore = bodies.stepsTaken(), wakeStepsBefore = bodies.wakeStepsTaken();
     const double wakeBefore_ms = bodies.wakeSteps_ms();
     bodies.advanceTo(time_s);
     if (bodies.wake())
         next.wake = std::make_shared<const WakeFrame>(bodies.wakeFrameAt(time_s));
+    cpuParts.switchTo(&cpu.queries_ms);
     next.sources = sourcesWith(next.wake);
     const DrawnSurface drawn = drawnSurfaceAt(viewpoint, time_s, next.sources, 0.0);
     next.poses = objectPoses(seaScene, model(), drawn, bodies, time_s);
+    cpuParts.switchTo(&cpu.bodies_ms);
     counters.floatingBodies = int(bodies.count());
     counters.bodySteps = bodies.stepsTaken() - stepsBefore;
     counters.wakeSteps = bodies.wakeStepsTaken() - wakeStepsBefore;

@@ -6,6 +6,7 @@
 
 #include "swell/renderer.h"
 
+#include "render/cpu_parts.h"
 #include "render/frame_uniforms.h"
 #include "render/host_depth.h"
 #include "render/label_target.h"
@@ -75,6 +76,9 @@ struct Renderer::Impl {
     double renderScale = 1.0;
     bool interactive = false; // see Renderer::setInteractive
     FrameCounters counters;
+    // Charges the calling thread's CPU time to counters.simulationCpu's
+    // parts; paused while the observer runs.
+    mutable CpuParts cpuParts;
     PassObserver* observer = nullptr;
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
     std::optional<SkyBakeKey> bakedSky;
@@ -157,16 +161,25 @@ struct Renderer::Impl {
                             std::move(drawn), level_m);
     }
 
-    void addWork(const WaveModelGpu::Work& work)
+    // The wave model's work, for advanceTo()'s frame (simulationGpu) or
+    // for a view (viewsGpu).
+    void addWork(const WaveModelGpu::Work& work, GpuWork& gpu)
     {
         counters.oceanTransforms += work.transforms;
         counters.foamSteps += work.foamSteps;
+        gpu.dispatches += work.dispatches;
+        gpu.barriers += work.barriers;
+        gpu.mipmaps += work.mipmaps;
+        gpu.bytesWritten += work.bytesWritten;
     }
 
     void notify(bool begin, const char* pass) const
     {
-        if (observer)
-            begin ? observer->beginPass(pass) : observer->endPass(pass);
+        if (!observer)
+            return;
+        cpuParts.pause();
+        begin ? observer->beginPass(pass) : observer->endPass(pass);
+        cpuParts.resume();
     }
 
     void buildGrid()
@@ -200,6 +213,7 @@ struct Renderer::Impl {
 
     void bindFrame(Pass pass, const FrameUniforms& f)
     {
+        const CpuPartScope part(cpuParts, counters.simulationCpu.views_ms);
         glNamedBufferSubData(frameUbo[pass].id(), 0, sizeof(f), &f);
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_FRAME, frameUbo[pass].id());
     }

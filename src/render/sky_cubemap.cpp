@@ -34,7 +34,7 @@ void bakeProceduralSky(const SkyBakeProgram& program, gl::Texture& cube, GLuint 
     glBindTextureUnit(SWELL_UNIT_SKY, 0);
     program.use();
     glBindVertexArray(emptyVao);
-    for (int face = 0; face < 6; ++face) {
+    for (int face = 0; face < kSkyFaces; ++face) {
         glNamedFramebufferTextureLayer(framebuffer.id(), GL_COLOR_ATTACHMENT0, cube.id(), 0, face);
         if (glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw Error("swell::detail::bakeProceduralSky(): framebuffer incomplete");

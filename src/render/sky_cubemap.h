@@ -18,6 +18,7 @@ namespace swell::detail {
 // checks the baked sky against the formula). Magnified at every usual output
 // size, so no mipmaps. The sun's disc, the only sharp feature, stays analytic.
 inline constexpr int kSkyFaceSize = 256;
+inline constexpr int kSkyFaces = 6;
 
 // What the baked sky depends on; a bake is redone when this changes.
 struct SkyBakeKey {
@@ -29,7 +30,7 @@ struct SkyBakeKey {
 SkyBakeKey skyBakeKeyOf(const Scene& scene);
 
 // Renders the procedural sky into `cube` (created when empty) with `program`
-// (fullscreen.vert + sky_bake.frag), one draw per face. The frame uniform
+// (fullscreen.vert + sky_bake.frag), one draw per face (kSkyFaces). The frame uniform
 // block must be bound with the scene's sun and sky. Leaves the framebuffer
 // binding and viewport changed; every pass sets its own.
 void bakeProceduralSky(const SkyBakeProgram& program, gl::Texture& cube, GLuint emptyVao);

@@ -21,6 +21,8 @@ namespace swell {
 // LOD viewpoint; the water tiles in view are chosen.
 Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ivec2 size, bool hostGeometry)
 {
+    SimulationCpuTime& cpu = counters.simulationCpu;
+    const CpuPartScope viewPart(cpuParts, cpu.views_ms);
     ViewFrame v;
     v.size = size;
     v.depth = depthConventionOf(view.depth);
@@ -28,9 +30,11 @@ Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ive
     v.origin = glm::dvec3(v.eye.x, 0.0, v.eye.z);
     const glm::dvec3 lod = view.lodViewpoint_m ? toSea(*view.lodViewpoint_m) : v.eye;
     const GridPlacement grid = placeGrid(gridShape, lod);
+    cpuParts.switchTo(&cpu.model_ms);
     modelGpu->prepareView(grid.center_m);
-    addWork(modelGpu->takeWork()); // none, unless a view simulated: the counters would show it
+    addWork(modelGpu->takeWork(), counters.viewsGpu); // no transforms, unless a view simulated: the counters would show it
     modelGpu->bind();
+    cpuParts.switchTo(&cpu.views_ms);
     // World = sea + level: relative = world - (origin + level).
     const glm::dmat4 viewRelative = view.view * glm::translate(glm::dmat4(1.0), v.origin + glm::dvec3(0.0, level(), 0.0));
     v.viewProj = view.projection * viewRelative;
@@ -49,7 +53,9 @@ Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ive
     // (shaders/underwater.glsl): the band the surface stays in, and the
     // eye's own side of it.
     f.waveReachVertical_m = float(reach.vertical_m);
+    cpuParts.switchTo(&cpu.queries_ms);
     f.eyeUnderwater = eyeUnderwater(v.eye, model(), simulated->time_s) ? 1 : 0;
+    cpuParts.switchTo(&cpu.views_ms);
     for (const glm::dmat4& pose : simulated->poses)
         v.poses.emplace_back(glm::translate(glm::dmat4(1.0), -v.origin) * pose);
     v.island = glm::mat4(glm::translate(glm::dmat4(1.0), kIslandPosition_m - v.origin));
@@ -215,6 +221,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         bindFrame(PassMain, base);
         glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
         bakeProceduralSky(programs.skyBake, world.skyCube, emptyVao.id());
+        counters.drawCalls += kSkyFaces;
         bakedSky = skyBakeKeyOf(scene);
     }
     const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
@@ -316,7 +323,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     if (ownsFrame && mainTarget.presents()) {
         notify(true, "present");
         glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-        mainTarget.present(programs.fxaa, emptyVao.id());
+        counters.drawCalls += mainTarget.present(programs.fxaa, emptyVao.id());
         notify(false, "present");
     }
 }

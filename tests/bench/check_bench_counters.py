@@ -2,8 +2,10 @@
 """Runs `swell bench` twice on a small frame and checks that it succeeds and
 that everything it counts is identical between the runs: the pipeline
 statistics and samples passed of every pass of every measured frame, their
-totals (real and floor), and the water LOD figures. Timings vary and are only
-checked for being there. The second run adds --terms: only it may print the
+totals (real and floor), the water LOD figures, and Swell's own GPU work of
+every frame (dispatches, barriers, mipmaps, bytes written, draw calls).
+Timings vary and are only checked for being there, the simulation's CPU time
+(second line, and its parts in the JSON) among them. The second run adds --terms: only it may print the
 shading terms' table and the reflection lookups; both print frames per second
 on their first line.
 
@@ -27,6 +29,11 @@ def run(swell, json_path, terms):
         sys.exit(f"FAIL: no table on stdout:\n{result.stdout}")
     if not re.match(r"[0-9.]+ frames per second \(median frame ", result.stdout):
         sys.exit(f"FAIL: stdout does not start with the frames per second:\n{result.stdout}")
+    second = result.stdout.splitlines()[1]
+    if not re.match(r"simulation CPU [0-9.]+ ms a frame \(median; p95 [0-9.]+\)", second):
+        sys.exit(f"FAIL: the second line is not the simulation's CPU time:\n{result.stdout}")
+    if "Swell's GPU work a frame" not in result.stdout:
+        sys.exit(f"FAIL: no table of Swell's GPU work:\n{result.stdout}")
     for table in ("Water shading terms", "Reflection lookup"):
         if (table in result.stdout) != terms:
             sys.exit(f"FAIL: '{table}' {'missing with' if terms else 'printed without'} --terms:\n{result.stdout}")
@@ -42,6 +49,9 @@ def run(swell, json_path, terms):
                  f"{'with' if terms else 'without'} --terms")
     if not results["frames_per_second"] > 0.0:
         sys.exit(f"FAIL: frames_per_second {results['frames_per_second']!r}")
+    cpu = results["simulation_cpu_ms"]
+    if set(cpu) != {"total", "model", "bodies", "queries", "views"} or not cpu["total"]["median"] > 0.0:
+        sys.exit(f"FAIL: simulation_cpu_ms {cpu!r}")
     return results
 
 
@@ -59,6 +69,7 @@ def deterministic(results):
                 "time_s": f["time_s"],
                 "camera": f["camera"],
                 "counters": {name: p["counters"] for name, p in f["passes"].items()},
+                "gpu_work": f["gpu_work"],
             }
             for f in results["measured_frames"]
         ],
@@ -115,6 +126,11 @@ def main():
         if first["pipeline_statistics"] and drawn != lod["triangles"]:
             problems.append(f"LOD sample of frame {lod['frame']} counts {lod['triangles']} triangles, "
                             f"the frame drew {drawn}")
+    for f in first["measured_frames"]:
+        # The default scene's waves (Gerstner) dispatch nothing; every view draws.
+        work = f["gpu_work"]
+        if work["views"]["draw_calls"] <= 0 or work["simulation"]["dispatches"] != 0:
+            problems.append(f"implausible GPU work of frame {f['index']}: {work}")
     for name, p in passes.items():
         if not p["wall_ms"]["median"] > 0.0 or not p["floor_wall_ms"]["median"] > 0.0:
             problems.append(f"pass '{name}' has no wall time")

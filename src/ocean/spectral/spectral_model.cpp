@@ -1,8 +1,8 @@
 // SpectralModel: the spectral field behind swell::WaveModel, with its CPU
 // twin for queries and its GPU half: each frame at a new time, compute
-// shaders evolve the spectra (shaders/ocean/spectral_evolve.comp), transform
-// rows then columns (spectral_fft.comp), and mipmap the slopes and their
-// second moments (spectral_moments.comp).
+// shaders transform rows, evolving the spectra as they read them, then
+// columns (shaders/ocean/spectral_fft.comp), and mipmap the slopes and
+// their second moments (spectral_moments.comp).
 #include "swell/spectral_model.h"
 
 #include "ocean/spectral/foam_replay.h"
@@ -58,6 +58,43 @@ constexpr float kFoldSoftness = 0.03f;
 // step (a camera cut) replays the foam's history, as a cut in time does.
 constexpr int kLongestFoamShift = kFoamSize / 4;
 
+// The images' formats, named once: the textures are made, bound and counted
+// (WaveModelGpu::Work::bytesWritten) with these. The compute shaders'
+// layout qualifiers name the same.
+constexpr GLenum kInitialFormat = GL_RGBA32F;  // h0(k) and conj(h0(-k))
+constexpr GLenum kOmegaFormat = GL_RG32UI;     // w(k) as a double's two words
+constexpr GLenum kSpectrumFormat = GL_RGBA32F; // the displacement's and the derivatives' spectra, then fields
+constexpr GLenum kMomentsFormat = GL_RGBA32F;  // the slopes' second moments
+constexpr GLenum kFoamFormat = GL_R16F;
+
+// Bytes a texel of `format` takes (the formats above).
+constexpr long long texelBytes(GLenum format)
+{
+    switch (format) {
+    case GL_RGBA32F: return 16;
+    case GL_RG32UI: return 8;
+    case GL_R16F: return 2;
+    default: return 0;
+    }
+}
+
+static_assert(texelBytes(kInitialFormat) > 0 && texelBytes(kOmegaFormat) > 0 && texelBytes(kSpectrumFormat) > 0 &&
+              texelBytes(kMomentsFormat) > 0 && texelBytes(kFoamFormat) > 0);
+
+// Texels of the levels `first` .. `levels` - 1 of a square mip chain of
+// `size`^2 at its base, each with `layers` layers.
+constexpr long long mipTexels(int size, int levels, int layers, int first = 0)
+{
+    long long texels = 0;
+    for (int level = first; level < levels; ++level)
+        texels += (long long)std::max(size >> level, 1) * std::max(size >> level, 1) * layers;
+    return texels;
+}
+
+// Local size of the 16 x 16 compute shaders (spectral_moments.comp,
+// spectral_foam.comp), each invocation one texel of every image it writes.
+constexpr int kTile = 16;
+
 
 class SpectralGpu final : public WaveModelGpu {
 public:
@@ -65,15 +102,14 @@ public:
                 float foldThreshold, const gl::ShaderSources& shaders)
         : field_(std::move(field)), settings_(settings), foldThreshold_(foldThreshold)
     {
-        evolve_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_evolve.comp"}});
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
         foamStep_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_foam.comp"}},
                                      {"SWELL_OCEAN_FILE \"ocean/spectral.glsl\""});
         moments_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_moments.comp"}});
-        timeLocation_ = glGetUniformLocation(evolve_.id(), "time_s");
-        choppinessLocation_ = glGetUniformLocation(evolve_.id(), "choppiness");
-        patchLocation_ = glGetUniformLocation(evolve_.id(), "patchSize_m");
+        timeLocation_ = glGetUniformLocation(fftRows_.id(), "time_s");
+        choppinessLocation_ = glGetUniformLocation(fftRows_.id(), "choppiness");
+        patchLocation_ = glGetUniformLocation(fftRows_.id(), "patchSize_m");
         decayLocation_ = glGetUniformLocation(foamStep_.id(), "decay");
         thresholdLocation_ = glGetUniformLocation(foamStep_.id(), "foldThreshold");
         softnessLocation_ = glGetUniformLocation(foamStep_.id(), "foldSoftness");
@@ -90,19 +126,17 @@ public:
             glTextureStorage3D(t.id(), levels, format, n, n, kCascades);
             return t;
         };
-        initial_ = array(GL_RGBA32F, 1);
-        omega_ = array(GL_RG32UI, 1);
-        displacement_ = array(GL_RGBA32F, 1);
-        const int levels = SWELL_FFT_LOG2_SIZE + 1;
-        derivatives_ = array(GL_RGBA32F, levels);
+        initial_ = array(kInitialFormat, 1);
+        omega_ = array(kOmegaFormat, 1);
+        displacement_ = array(kSpectrumFormat, 1);
+        derivatives_ = array(kSpectrumFormat, kFieldLevels);
         foam_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
-        glTextureStorage3D(foam_.id(), SWELL_FOAM_LOG2_SIZE + 1, GL_R16F, kFoamSize, kFoamSize, kFoamLevels);
-        slopeMoments_ = array(GL_RGBA32F, levels);
+        glTextureStorage3D(foam_.id(), kFoamFieldLevels, kFoamFormat, kFoamSize, kFoamSize, kFoamLevels);
+        slopeMoments_ = array(kMomentsFormat, kFieldLevels);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        const float zero = 0.0f;
-        for (int level = 0; level <= SWELL_FOAM_LOG2_SIZE; ++level)
-            glClearTexImage(foam_.id(), level, GL_RED, GL_FLOAT, &zero);
+        clearFoam();
+        work_ = {}; // not a frame's work
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         for (const gl::Texture* t : {&derivatives_, &slopeMoments_}) {
@@ -246,6 +280,7 @@ private:
             for (int level = 0; level < kFoamLevels; ++level) {
                 glTextureSubImage3D(foam_.id(), 0, 0, 0, level, kFoamSize, kFoamSize, 1, GL_RED, GL_FLOAT,
                                     foam[size_t(level)].data());
+                work_.bytesWritten += texelBytes(kFoamFormat) * kFoamSize * kFoamSize;
                 previousOrigin_[size_t(level)] = windows_[size_t(level)].origin;
             }
             foamStepped_ = true;
@@ -268,11 +303,12 @@ private:
     void updateSlopeMoments()
     {
         glUseProgram(moments_.id());
-        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glBindImageTexture(5, slopeMoments_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        glDispatchCompute(kSize / 16, kSize / 16, kCascades);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        glGenerateTextureMipmap(slopeMoments_.id());
+        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kSpectrumFormat);
+        glBindImageTexture(5, slopeMoments_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, kMomentsFormat);
+        // Writes the moments' base level.
+        dispatch(kSize / kTile, kSize / kTile, kCascades, texelBytes(kMomentsFormat) * kTile * kTile);
+        barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        generateMipmaps(slopeMoments_, kMomentsFormat, kSize, kFieldLevels, kCascades);
         for (const GLuint unit : {3u, 5u})
             glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         glUseProgram(0);
@@ -286,9 +322,7 @@ private:
     void stepFoam(double time_s, float decay, bool mipmaps = true)
     {
         if (time_s < settings_.historyStart_s) {
-            const float zero = 0.0f;
-            for (int level = 0; level <= SWELL_FOAM_LOG2_SIZE; ++level)
-                glClearTexImage(foam_.id(), level, GL_RED, GL_FLOAT, &zero);
+            clearFoam();
             for (int level = 0; level < kFoamLevels; ++level)
                 previousOrigin_[size_t(level)] = windows_[size_t(level)].origin;
             foamStepped_ = true;
@@ -317,12 +351,13 @@ private:
         glUniform1fv(texelLocation_, kFoamLevels, texel_m.data());
         // The cascades, read through the samplers spectral.glsl declares.
         bind();
-        glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R16F);
-        glDispatchCompute(kFoamSize / 16, kFoamSize / 16, kFoamLevels);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kFoamFormat);
+        // Writes every texel of each level's window (the base level).
+        dispatch(kFoamSize / kTile, kFoamSize / kTile, kFoamLevels, texelBytes(kFoamFormat) * kTile * kTile);
+        barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         if (mipmaps)
-            glGenerateTextureMipmap(foam_.id());
-        glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R16F);
+            generateMipmaps(foam_, kFoamFormat, kFoamSize, kFoamFieldLevels, kFoamLevels);
+        glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, kFoamFormat);
         glUseProgram(0);
         previousOrigin_ = origin;
         foamStepped_ = true;
@@ -332,35 +367,69 @@ private:
     // mipmaps only when every cascade is transformed (a full frame's fields).
     void transform(double time_s, int cascades = kCascades)
     {
-        glUseProgram(evolve_.id());
+        // The row pass evolves the spectra as it reads them (no image of
+        // them is written first), then transforms every row in place.
+        glUseProgram(fftRows_.id());
         glUniform1d(timeLocation_, time_s);
         glUniform1f(choppinessLocation_, float(field_->choppiness));
         float patches[kCascades];
         for (int c = 0; c < kCascades; ++c)
             patches[c] = float(field_->cascades[size_t(c)].patch_m);
         glUniform1fv(patchLocation_, kCascades, patches);
-        glBindImageTexture(0, initial_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glBindImageTexture(1, omega_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RG32UI);
-        glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glBindImageTexture(0, initial_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kInitialFormat);
+        glBindImageTexture(1, omega_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kOmegaFormat);
+        glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kSpectrumFormat);
+        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kSpectrumFormat);
         ++work_.transforms;
-        glDispatchCompute(kSize / 16, kSize / 16, GLuint(cascades));
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        // One workgroup per row (then column) of each cascade.
-        glUseProgram(fftRows_.id());
-        glDispatchCompute(kSize, GLuint(cascades), 1);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        // One workgroup per row (then column) of each cascade, writing the
+        // line of both images (displacement, derivatives).
+        const long long twoSpectra = 2 * texelBytes(kSpectrumFormat);
+        dispatch(kSize, GLuint(cascades), 1, twoSpectra * kSize);
+        barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         glUseProgram(fftColumns_.id());
-        glDispatchCompute(kSize, GLuint(cascades), 1);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        dispatch(kSize, GLuint(cascades), 1, twoSpectra * kSize);
+        barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         if (cascades == kCascades)
-            glGenerateTextureMipmap(derivatives_.id());
+            generateMipmaps(derivatives_, kSpectrumFormat, kSize, kFieldLevels, kCascades);
         for (GLuint unit = 0; unit < 4; ++unit)
             glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         glUseProgram(0);
         transformed_ = true;
         time_s_ = time_s;
     }
+
+    // The GL calls that do the GPU's work, each counted in work_ where it is
+    // made. A dispatch of groups x * y * z writes `bytesPerGroup` each.
+    void dispatch(GLuint x, GLuint y, GLuint z, long long bytesPerGroup)
+    {
+        glDispatchCompute(x, y, z);
+        ++work_.dispatches;
+        work_.bytesWritten += (long long)x * y * z * bytesPerGroup;
+    }
+    void barrier(GLbitfield bits)
+    {
+        glMemoryBarrier(bits);
+        ++work_.barriers;
+    }
+    // Levels 1 .. levels - 1 of a square array texture, from its base.
+    void generateMipmaps(const gl::Texture& texture, GLenum format, int size, int levels, int layers)
+    {
+        glGenerateTextureMipmap(texture.id());
+        ++work_.mipmaps;
+        work_.bytesWritten += texelBytes(format) * mipTexels(size, levels, layers, 1);
+    }
+    // Every level of the foam's windows to none.
+    void clearFoam()
+    {
+        const float zero = 0.0f;
+        for (int level = 0; level < kFoamFieldLevels; ++level)
+            glClearTexImage(foam_.id(), level, GL_RED, GL_FLOAT, &zero);
+        work_.bytesWritten += texelBytes(kFoamFormat) * mipTexels(kFoamSize, kFoamFieldLevels, kFoamLevels);
+    }
+
+    // Mip levels of the cascades' fields and of the foam's windows.
+    static constexpr int kFieldLevels = SWELL_FFT_LOG2_SIZE + 1;
+    static constexpr int kFoamFieldLevels = SWELL_FOAM_LOG2_SIZE + 1;
 
     std::shared_ptr<const SpectralField> field_;
     SpectralSettings settings_;
@@ -372,7 +441,7 @@ private:
     glm::dvec2 gridCenter_m_{0.0}; // this frame's
     // The replay's steps before the last on the CPU: only on a software rasteriser.
     std::unique_ptr<FoamReplay> cpuReplay_;
-    gl::Program evolve_, fftRows_, fftColumns_, foamStep_, moments_;
+    gl::Program fftRows_, fftColumns_, foamStep_, moments_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
     GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;

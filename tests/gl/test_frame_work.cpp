@@ -1,0 +1,150 @@
+// What the renderer counts of its own frame work (FrameCounters, issue 24):
+// the spectral model's GPU work of one step, found by hand from its cascades
+// and their formats, so that a dispatch, barrier or mipmap chain added or
+// taken away, or an image's format changed, shows here; and the
+// simulation's CPU time, which is the calling thread's, with a pass
+// observer's time left out. Counted, never timed: the CPU time is checked
+// only against the same thread's clock read around the frame.
+#include "support/gl_test.h"
+
+#include "swell/renderer.h"
+#include "swell/shader_constants.h"
+
+#include <gtest/gtest.h>
+
+#include <time.h>
+
+namespace {
+
+using namespace swell;
+
+class FrameWork : public test::GlTest {};
+
+// The spectral sea without objects (nothing but the model to simulate).
+Scene spectralScene()
+{
+    Scene scene = defaultScene();
+    scene.objects.clear();
+    scene.showTerrain = false;
+    scene.waves.model = WaveModelKind::Spectral;
+    scene.waves.wind->windSpeed_mps = 20.0;
+    return scene;
+}
+
+constexpr glm::ivec2 kSize{32, 18};
+constexpr double kFrame_s = 1.0 / 60.0;
+
+// Texels of levels 1 .. log2(size) of a square mip chain, `layers` layers.
+long long mipLevelsAboveBase(long long size, long long layers)
+{
+    long long texels = 0;
+    for (size /= 2; size >= 1; size /= 2)
+        texels += size * size * layers;
+    return texels;
+}
+
+// A frame 1/60 s after the last: one step of the spectral model.
+TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
+{
+    const Scene scene = spectralScene();
+    Renderer renderer(scene);
+    const Camera camera = cameraAt(scene.camera, 0.0);
+    renderer.renderImage(camera, 0.0, kSize); // the first frame replays the foam's history
+    renderer.renderImage(camera, kFrame_s, kSize);
+    const FrameCounters& c = renderer.counters();
+    ASSERT_EQ(c.oceanTransforms, 1);
+    ASSERT_EQ(c.foamSteps, 1);
+
+    // The step: transform the rows (evolving the spectra as they are read),
+    // then the columns (in place), take the slopes' second moments, step the
+    // foam; a barrier after each; mipmaps of the derivatives, the moments
+    // and the foam.
+    const long long n = 1 << SWELL_FFT_LOG2_SIZE, cascades = SWELL_FFT_CASCADES;
+    const long long foamSize = 1 << SWELL_FOAM_LOG2_SIZE, foamLevels = SWELL_FOAM_LEVELS;
+    constexpr long long kRgba32f = 16, kR16f = 2; // bytes a texel
+    EXPECT_EQ(c.simulationGpu.dispatches, 4);
+    EXPECT_EQ(c.simulationGpu.barriers, 4);
+    EXPECT_EQ(c.simulationGpu.mipmaps, 3);
+    const long long spectra = 2 * n * n * cascades * kRgba32f; // the displacement's and the derivatives' images
+    const long long transforms = 2 * spectra;                  // written by each FFT pass
+    const long long derivativeMips = mipLevelsAboveBase(n, cascades) * kRgba32f;
+    const long long moments = n * n * cascades * kRgba32f + mipLevelsAboveBase(n, cascades) * kRgba32f;
+    const long long foam = foamSize * foamSize * foamLevels * kR16f + mipLevelsAboveBase(foamSize, foamLevels) * kR16f;
+    EXPECT_EQ(c.simulationGpu.bytesWritten, transforms + derivativeMips + moments + foam);
+    // The same by hand for today's 4 cascades of 256^2 and 2 foam levels of
+    // 256^2: 16 MiB of spectra, 4 MiB of moments, 2 x 1398080 bytes of their
+    // mipmaps, 256 KiB of foam and 87380 bytes of its mipmaps.
+    EXPECT_EQ(c.simulationGpu.bytesWritten, 24117204);
+
+    // A view simulates nothing: the spectral model's views write no image.
+    EXPECT_EQ(c.viewsGpu.dispatches, 0);
+    EXPECT_EQ(c.viewsGpu.barriers, 0);
+    EXPECT_EQ(c.viewsGpu.mipmaps, 0);
+    EXPECT_EQ(c.viewsGpu.bytesWritten, 0);
+    EXPECT_GT(c.drawCalls, 0);
+
+    // The same frame again is no step and no work.
+    renderer.advanceTo(kFrame_s, camera.position_m);
+    EXPECT_EQ(renderer.counters().simulationGpu.dispatches, 0);
+    EXPECT_EQ(renderer.counters().simulationGpu.bytesWritten, 0);
+}
+
+double threadCpu_ms()
+{
+    timespec t{};
+    ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+// An observer that spends CPU time on the calling thread at every pass's
+// begin and end, and counts it.
+class BusyObserver : public PassObserver {
+public:
+    void beginPass(const char*) override { burn(); }
+    void endPass(const char*) override { burn(); }
+    double spent_ms = 0.0;
+    int calls = 0;
+
+private:
+    void burn()
+    {
+        const double start = threadCpu_ms();
+        volatile double sink = 0.0;
+        while (threadCpu_ms() - start < kBurn_ms)
+            sink = sink + 1.0;
+        spent_ms += threadCpu_ms() - start;
+        ++calls;
+    }
+    static constexpr double kBurn_ms = 5.0;
+};
+
+// The parts are the calling thread's CPU time within the frame, apart from
+// each other and from the observer's: together they fit in the thread's
+// time around the frame less the observer's. Charging the observer's time
+// to a part would not fit (it is most of the frame's thread time here), nor
+// would the process's clock, which counts the software rasteriser's threads
+// computing the spectra.
+TEST_F(FrameWork, SimulationCpuTimeIsTheCallingThreadsWithoutTheObserver)
+{
+    const Scene scene = spectralScene();
+    Renderer renderer(scene);
+    const Camera camera = cameraAt(scene.camera, 0.0);
+    renderer.renderImage(camera, 0.0, kSize); // shaders compiled, the history replayed
+    BusyObserver observer;
+    renderer.setPassObserver(&observer);
+    const double before_ms = threadCpu_ms();
+    renderer.renderImage(camera, kFrame_s, kSize);
+    const double around_ms = threadCpu_ms() - before_ms;
+    renderer.setPassObserver(nullptr);
+
+    const SimulationCpuTime& cpu = renderer.counters().simulationCpu;
+    EXPECT_GT(cpu.model_ms, 0.0) << "the spectral model's step";
+    EXPECT_GT(cpu.queries_ms, 0.0) << "the frame's drawn surface";
+    EXPECT_GT(cpu.views_ms, 0.0) << "culling and uniforms";
+    EXPECT_GE(observer.calls, 10);
+    EXPECT_GE(observer.spent_ms, 5.0 * observer.calls);
+    EXPECT_LE(cpu.total_ms() + observer.spent_ms, around_ms + 1e-6)
+        << "parts " << cpu.total_ms() << " ms, observer " << observer.spent_ms << " ms, thread " << around_ms << " ms";
+}
+
+} // namespace
