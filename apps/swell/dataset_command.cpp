@@ -15,6 +15,7 @@
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
 #include "swell/scene_file.h"
+#include "swell/sensor.h"
 #include "swell/sweep.h"
 
 #include <fmt/format.h>
@@ -182,14 +183,21 @@ int runDataset(const DatasetOptions& options)
                 renderer->setScene(sample.scene);
             const Camera camera = renderer->sceneCameraAt(sample.time_s);
             const fs::path png = samplePng(out, i);
-            writePngAtomically(renderer->renderImage(camera, sample.time_s, sweep.size), png);
+            const SensorFrame sensor = renderSensorFrame(*renderer, camera, sample.time_s, sweep.size, sweep.labels);
+            writePngAtomically(sensor.image, png);
             FrameLabels labels;
-            if (sweep.labels) {
-                labels = renderer->renderLabels(camera, sweep.size);
+            if (sensor.labels) {
+                labels = *sensor.labels;
                 writeLabelArrays(labels, png);
             } else {
                 labels.size = sweep.size;
                 labels.camera = calibrationOf(camera, sweep.size);
+                const LensDistortion lens = lensOf(sample.scene.camera);
+                labels.camera.k1 = lens.k1;
+                labels.camera.k2 = lens.k2;
+                labels.camera.k3 = lens.k3;
+                labels.camera.p1 = lens.p1;
+                labels.camera.p2 = lens.p2;
                 labels.horizon = horizonOf(labels.camera);
                 labels.classes = labelClassesOf(sample.scene);
             }

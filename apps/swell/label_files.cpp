@@ -135,7 +135,8 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
                    {"fy_px", c.fy_px},
                    {"cx_px", c.cx_px},
                    {"cy_px", c.cy_px},
-                   {"distortion", Json::array()},
+                   {"distortion_model", "brown-conrady"},
+                   {"distortion", {c.k1, c.k2, c.p1, c.p2, c.k3}},
                    {"camera_from_world", matrixJson(c.cameraFromWorld)},
                    {"world_from_camera", matrixJson(c.worldFromCamera)}};
     Json horizon = {{"line", {labels.horizon.line.x, labels.horizon.line.y, labels.horizon.line.z}},
@@ -143,6 +144,12 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
     if (labels.horizon.visible) {
         horizon["from_px"] = {labels.horizon.from_px.x, labels.horizon.from_px.y};
         horizon["to_px"] = {labels.horizon.to_px.x, labels.horizon.to_px.y};
+    }
+    if (!labels.horizon.curve_px.empty()) {
+        Json curve = Json::array();
+        for (const glm::dvec2& p : labels.horizon.curve_px)
+            curve.push_back({p.x, p.y});
+        horizon["curve_px"] = curve;
     }
     j["horizon"] = horizon;
     Json classes = Json::object();

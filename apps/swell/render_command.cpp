@@ -9,6 +9,7 @@
 #include "swell/error.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
+#include "swell/sensor.h"
 
 #include <fmt/format.h>
 
@@ -170,15 +171,15 @@ int runRender(const RenderOptions& options)
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
         const Camera camera = renderer.sceneCameraAt(t);
-        const Image image = renderer.renderImage(camera, t, size);
+        // Through the camera's lens and sensor (swell/sensor.h).
+        const SensorFrame sensor = renderSensorFrame(renderer, camera, t, size, options.labels);
         const fs::path frame = options.duration_s ? sequencePath(output, i) : output;
         if (video)
-            videoWriter->write(image);
+            videoWriter->write(sensor.image);
         else
-            writePngAtomically(image, frame);
-        if (options.labels)
-            writeLabelFiles(renderer.renderLabels(camera, size), scene, t, 4.0 * renderer.waveModel().heightDeviation_m(),
-                            frame);
+            writePngAtomically(sensor.image, frame);
+        if (sensor.labels)
+            writeLabelFiles(*sensor.labels, scene, t, 4.0 * renderer.waveModel().heightDeviation_m(), frame);
         progress.advance();
     }
     if (videoWriter)

@@ -33,13 +33,16 @@ struct SWELL_API CameraCalibration {
     double cx_px = 0.0, cy_px = 0.0; // principal point, pixels (image conventions above)
     glm::dmat4 cameraFromWorld{1.0}; // absolute world (m, y up) to camera axes
     glm::dmat4 worldFromCamera{1.0};
+    // The lens's Brown-Conrady coefficients (swell/sensor.h), OpenCV's
+    // order: k1, k2, p1, p2, k3; all 0 for a pinhole.
+    double k1 = 0.0, k2 = 0.0, p1 = 0.0, p2 = 0.0, k3 = 0.0;
 };
 
 // The calibration of the image `size` that a Camera renders.
 SWELL_API CameraCalibration calibrationOf(const Camera& camera, glm::ivec2 size);
 
-// Where a world point (absolute, m) lands in the image, pixels; empty
-// behind the camera.
+// Where a world point (absolute, m) lands in the image, pixels, through the
+// lens's distortion when it has one; empty behind the camera.
 SWELL_API std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::dvec3 world_m);
 
 // The sea's horizon as it is drawn: the vanishing line of the sea-level
@@ -50,6 +53,10 @@ struct SWELL_API HorizonLine {
     glm::dvec3 line{0.0};
     bool visible = false;      // the line crosses the image
     glm::dvec2 from_px{0.0}, to_px{0.0}; // where it meets the image's border (when visible)
+    // Through a distorting lens the horizon is a curve: points along it in
+    // the image (every 4 px of the line), the line above holding for the
+    // undistorted (pinhole) image. Empty for a pinhole.
+    std::vector<glm::dvec2> curve_px;
 };
 SWELL_API HorizonLine horizonOf(const CameraCalibration& camera);
 

@@ -175,6 +175,15 @@ struct SWELL_API CameraSettings {
     // (Renderer::sceneCameraAt). The object must be a rigid body or fixed.
     int mountObject = -1;
     glm::dvec3 mountOffset_m{0.0};
+    // The lens and the sensor (swell/sensor.h), applied to stills, videos
+    // and datasets, and to their labels alike: Brown-Conrady distortion
+    // (k1, k2, k3 radial, p1, p2 tangential, OpenCV's order and sign), the
+    // exposure, and Gaussian noise on each colour channel.
+    double distortionK1 = 0.0, distortionK2 = 0.0, distortionK3 = 0.0;
+    double distortionP1 = 0.0, distortionP2 = 0.0;
+    double exposure_ev = 0.0;       // stops: the linear colour times 2^ev before it is encoded
+    double noiseStdDev = 0.0;       // of each 8-bit channel, as a share of full scale, 0..0.5
+    std::uint32_t noiseSeed = 0;
 };
 
 // Where a scene file named a file the renderer reads (a model or a sky

@@ -2,6 +2,8 @@
 // calibration, projection, the horizon line, object classes and boxes.
 #include "swell/labels.h"
 
+#include "swell/sensor.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/matrix.hpp>
@@ -42,7 +44,9 @@ std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::d
     const glm::dvec4 p = camera.cameraFromWorld * glm::dvec4(world_m, 1.0);
     if (p.z <= 0.0)
         return std::nullopt;
-    return glm::dvec2(camera.fx_px * p.x / p.z + camera.cx_px, camera.fy_px * p.y / p.z + camera.cy_px);
+    const LensDistortion lens{camera.k1, camera.k2, camera.k3, camera.p1, camera.p2};
+    const glm::dvec2 d = distort(lens, glm::dvec2(p.x / p.z, p.y / p.z));
+    return glm::dvec2(camera.fx_px * d.x + camera.cx_px, camera.fy_px * d.y + camera.cy_px);
 }
 
 HorizonLine horizonOf(const CameraCalibration& camera)

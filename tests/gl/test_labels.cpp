@@ -10,9 +10,11 @@
 #include "swell/labels.h"
 #include "swell/renderer.h"
 #include "swell/scene.h"
+#include "swell/sensor.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -222,6 +224,135 @@ TEST_F(Labels, AMountedCameraRidesItsBody)
         rollMax = std::max(rollMax, camera.roll_deg);
     }
     EXPECT_GT(rollMax - rollMin, 0.05) << "the camera does not roll with the boat";
+}
+
+} // namespace
+
+namespace {
+
+// Through a distorting lens (camera.distortion_*): on calm water, every
+// pixel's label and range agree with the ray the written calibration and
+// coefficients give its centre: the sky and the water on their sides of
+// that ray's horizon, and the range within half a pixel of where that ray
+// meets the sea (the range converted to pixels by its gradient).
+TEST_F(Labels, ThroughALensTheWrittenModelFindsEachPixelsRay)
+{
+    swell::Scene scene = openSea();
+    scene.camera.distortionK1 = -0.22;
+    scene.camera.distortionK2 = 0.05;
+    scene.camera.distortionP1 = 0.002;
+    scene.camera.distortionP2 = -0.001;
+    swell::Renderer renderer(scene);
+    renderer.setWaveModel(std::make_shared<swell::FlatModel>());
+    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    const double height_m = 20.0;
+    camera.position_m = glm::dvec3(10.0, height_m, 5.0);
+    camera.pitch_deg = -12.0;
+    camera.roll_deg = 10.0;
+    const glm::ivec2 size(240, 180);
+    const swell::SensorFrame frame = swell::renderSensorFrame(renderer, camera, 0.0, size, true);
+    ASSERT_TRUE(frame.labels);
+    const swell::FrameLabels& labels = *frame.labels;
+    const swell::CameraCalibration& c = labels.camera;
+    EXPECT_EQ(c.k1, -0.22);
+    const swell::LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    // The model's ray through a point of the image, and where it meets the sea.
+    auto ray = [&](double px, double py) {
+        const glm::dvec2 u = swell::undistort(lens, {(px - c.cx_px) / c.fx_px, (py - c.cy_px) / c.fy_px});
+        return glm::normalize(glm::dmat3(c.worldFromCamera) * glm::dvec3(u, 1.0));
+    };
+    auto range = [&](double px, double py) {
+        const glm::dvec3 d = ray(px, py);
+        return d.y < 0.0 ? height_m / -d.y : INFINITY;
+    };
+    int none = 0, wrongSide = 0, water = 0, farFromModel = 0;
+    double worst_px = 0.0;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
+            const std::uint16_t s = labels.semantic[i];
+            none += s == SWELL_LABEL_NONE;
+            const bool below = ray(x + 0.5, y + 0.5).y < 0.0;
+            bool nearHorizon = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    nearHorizon = nearHorizon || (ray(x + 0.5 + dx, y + 0.5 + dy).y < 0.0) != below;
+            if (!nearHorizon && (s == SWELL_LABEL_WATER) != below)
+                ++wrongSide;
+            // Ranges where they change smoothly: rays at least 2 degrees down.
+            if (s != SWELL_LABEL_WATER || ray(x + 0.5, y + 0.5).y > -std::sin(glm::radians(2.0)))
+                continue;
+            ++water;
+            const double model = range(x + 0.5, y + 0.5);
+            const glm::dvec2 gradient(range(x + 1.0, y + 0.5) - range(x, y + 0.5), range(x + 0.5, y + 1.0) - range(x + 0.5, y));
+            const double off_px = std::abs(double(labels.range_m[i]) - model) / glm::length(gradient);
+            worst_px = std::max(worst_px, off_px);
+            farFromModel += off_px > 0.5;
+        }
+    EXPECT_EQ(none, 0) << "pixels whose rays the pinhole frame did not hold";
+    EXPECT_EQ(wrongSide, 0);
+    EXPECT_GT(water, size.x * size.y / 3);
+    EXPECT_EQ(farFromModel, 0) << "worst " << worst_px << " px";
+    // A point on the sea, projected with the written model, lands on a pixel
+    // labelled water whose range is that point's distance within half a pixel.
+    const glm::dvec3 point = camera.position_m + glm::dvec3(30.0, -height_m, -60.0);
+    const std::optional<glm::dvec2> at = swell::projectToImage(c, point);
+    ASSERT_TRUE(at);
+    const std::size_t i = std::size_t(at->y) * std::size_t(size.x) + std::size_t(at->x);
+    EXPECT_EQ(labels.semantic[i], SWELL_LABEL_WATER);
+    EXPECT_NEAR(glm::distance(ray(at->x, at->y) * range(at->x, at->y), point - camera.position_m), 0.0, 1e-6);
+}
+
+} // namespace
+
+namespace {
+
+// The sensor: +1 EV doubles the linear light (where nothing clips); the
+// noise has the standard deviation asked for, the same for the same frame
+// and seed, and another for another seed.
+TEST_F(Labels, ExposureDoublesTheLightAndNoiseIsTheSameForTheSameFrame)
+{
+    swell::Scene scene = openSea();
+    const glm::ivec2 size(96, 64);
+    auto frameOf = [&](double ev, double noise, std::uint32_t seed) {
+        swell::Scene s = scene;
+        s.camera.exposure_ev = ev;
+        s.camera.noiseStdDev = noise;
+        s.camera.noiseSeed = seed;
+        swell::Renderer renderer(s);
+        return swell::renderSensorFrame(renderer, swell::cameraAt(s.camera, 2.0), 2.0, size, false).image;
+    };
+    const swell::Image plain = frameOf(0.0, 0.0, 0), brighter = frameOf(1.0, 0.0, 0);
+    auto linear = [](int v) {
+        const double c = v / 255.0;
+        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    };
+    int compared = 0, off = 0;
+    for (std::size_t i = 0; i < plain.rgba.size(); ++i)
+        if (i % 4 != 3 && plain.rgba[i] > 40 && plain.rgba[i] < 150) {
+            ++compared;
+            // Twice the light, within the rounding of two 8-bit encodings.
+            off += std::abs(linear(brighter.rgba[i]) - 2.0 * linear(plain.rgba[i])) > 0.012;
+        }
+    EXPECT_GT(compared, 1000);
+    EXPECT_EQ(off, 0);
+
+    const swell::Image noisy = frameOf(0.0, 0.05, 7), again = frameOf(0.0, 0.05, 7), other = frameOf(0.0, 0.05, 8);
+    EXPECT_EQ(noisy.rgba, again.rgba);
+    EXPECT_NE(noisy.rgba, other.rgba);
+    double sum = 0.0, sumSquares = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < plain.rgba.size(); ++i)
+        if (i % 4 != 3 && plain.rgba[i] > 50 && plain.rgba[i] < 205) { // away from clipping
+            const double d = double(noisy.rgba[i]) - double(plain.rgba[i]);
+            sum += d;
+            sumSquares += d * d;
+            ++n;
+        }
+    ASSERT_GT(n, 1000);
+    const double mean = sum / n, deviation = std::sqrt(sumSquares / n - mean * mean);
+    EXPECT_NEAR(deviation, 0.05 * 255.0, 0.1 * 0.05 * 255.0);
+    EXPECT_NEAR(mean, 0.0, 1.0);
 }
 
 } // namespace

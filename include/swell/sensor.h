@@ -1,0 +1,60 @@
+// The camera as a sensor: its lens's distortion, its exposure and its noise
+// (the scene's camera.distortion_*, exposure_ev, noise_*), applied to a
+// rendered frame and to its labels alike (docs/LABELS.md).
+//
+// Distortion is Brown-Conrady's (Brown 1966, "Decentering distortion of
+// lenses", eq. 9-10; Conrady 1919), in OpenCV's form: for normalised
+// undistorted image coordinates (x, y) (x right, y down, 1 unit = the focal
+// length) and r^2 = x^2 + y^2,
+//   x_d = x (1 + k1 r^2 + k2 r^4 + k3 r^6) + 2 p1 x y + p2 (r^2 + 2 x^2)
+//   y_d = y (1 + k1 r^2 + k2 r^4 + k3 r^6) + p1 (r^2 + 2 y^2) + 2 p2 x y.
+// A distorted frame is drawn as a pinhole frame wide enough to hold every
+// distorted pixel's ray, then resampled: colour bilinear, labels nearest
+// (never a blend of two), ranges and normals with their labels.
+#pragma once
+
+#include "swell/export.h"
+
+#include "swell/camera.h"
+#include "swell/image.h"
+#include "swell/labels.h"
+#include "swell/scene.h"
+
+#include <glm/vec2.hpp>
+
+#include <optional>
+
+namespace swell {
+
+class Renderer;
+
+struct SWELL_API LensDistortion {
+    double k1 = 0.0, k2 = 0.0, k3 = 0.0, p1 = 0.0, p2 = 0.0;
+    bool none() const { return k1 == 0.0 && k2 == 0.0 && k3 == 0.0 && p1 == 0.0 && p2 == 0.0; }
+};
+
+SWELL_API LensDistortion lensOf(const CameraSettings& camera);
+
+// Normalised undistorted coordinates to distorted (the equations above).
+SWELL_API glm::dvec2 distort(const LensDistortion& lens, glm::dvec2 undistorted);
+// The inverse, by fixed-point iteration (converging where the lens maps
+// the image one to one; within 1e-12 or after 50 steps).
+SWELL_API glm::dvec2 undistort(const LensDistortion& lens, glm::dvec2 distorted);
+
+// A frame as the scene's camera sees it: drawn by `renderer` for `camera`
+// at time_s (Renderer::renderImage, advancing to time_s), distorted,
+// exposed and noised as the renderer's scene says; with `labels`, its
+// labels (Renderer::renderLabels) resampled through the same lens, with
+// the lens's coefficients in their calibration, the horizon's distorted
+// curve and the boxes measured on the distorted masks. Throws swell::Error
+// when the lens needs a pinhole frame over 4 times the output's side (it is
+// drawn at 1.5 times the output's focal length, so labels are within half a
+// pixel; a distortion stronger than that is refused).
+struct SWELL_API SensorFrame {
+    Image image;
+    std::optional<FrameLabels> labels;
+};
+SWELL_API SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size,
+                                        bool labels);
+
+} // namespace swell

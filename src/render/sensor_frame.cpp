@@ -1,0 +1,212 @@
+// A frame through the scene camera's lens and sensor (swell/sensor.h).
+#include "swell/sensor.h"
+
+#include "swell/error.h"
+#include "swell/renderer.h"
+
+#include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+namespace swell {
+
+namespace {
+
+// sRGB's transfer function (IEC 61966-2-1:1999), both ways.
+double decodeSrgb(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
+double encodeSrgb(double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055; }
+
+const std::array<double, 256>& srgbToLinear()
+{
+    static const std::array<double, 256> table = [] {
+        std::array<double, 256> t{};
+        for (int i = 0; i < 256; ++i)
+            t[std::size_t(i)] = decodeSrgb(i / 255.0);
+        return t;
+    }();
+    return table;
+}
+
+std::uint8_t toByte(double linear) { return std::uint8_t(std::lround(std::clamp(encodeSrgb(std::max(linear, 0.0)), 0.0, 1.0) * 255.0)); }
+
+// SplitMix64's finaliser (Steele, Lea & Flood 2014): a counter-based
+// stream, so each pixel's noise depends on its own key alone.
+std::uint64_t mix(std::uint64_t x)
+{
+    x += 0x9e3779b97f4a7c15ull;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+double uniform(std::uint64_t key) { return (double(mix(key) >> 11) + 0.5) * 0x1.0p-53; }
+
+// The pinhole frame is drawn at this many times the output's focal length,
+// so that a label taken from its nearest pixel lies within 0.5/1.5 of a
+// pinhole pixel on each axis, 0.47 of an output pixel at most (where the
+// lens does not magnify), inside the half pixel the labels promise.
+constexpr double kPinholeScale = 1.5;
+
+// The pinhole frame's size (each side even, centred on the optical axis)
+// that holds the ray of every pixel of the distorted output: the output's
+// border undistorted, plus a pixel.
+glm::ivec2 pinholeSize(const LensDistortion& lens, const CameraCalibration& c)
+{
+    const double f = kPinholeScale * c.fy_px;
+    double hx = 0.0, hy = 0.0;
+    auto reach = [&](double px, double py) {
+        const glm::dvec2 u = undistort(lens, {(px - c.cx_px) / c.fx_px, (py - c.cy_px) / c.fy_px});
+        hx = std::max(hx, std::abs(u.x));
+        hy = std::max(hy, std::abs(u.y));
+    };
+    for (int x = 0; x <= c.size.x; ++x) {
+        reach(x, 0.0);
+        reach(x, c.size.y);
+    }
+    for (int y = 0; y <= c.size.y; ++y) {
+        reach(0.0, y);
+        reach(c.size.x, y);
+    }
+    return {2 * int(std::ceil(hx * f + 1.0)), 2 * int(std::ceil(hy * f + 1.0))};
+}
+
+// Where the output's pixel (x, y) looks in the pinhole frame of `wide`
+// pixels, pixels (its top-left corner at 0, 0).
+glm::dvec2 sourceOf(const LensDistortion& lens, const CameraCalibration& c, glm::ivec2 wide, int x, int y)
+{
+    const glm::dvec2 u = undistort(lens, {(x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px});
+    return kPinholeScale * c.fy_px * u + 0.5 * glm::dvec2(wide);
+}
+
+void distortImage(const Image& wide, Image& out, const LensDistortion& lens, const CameraCalibration& c)
+{
+    const std::array<double, 256>& linear = srgbToLinear();
+    const glm::ivec2 wideSize(wide.width, wide.height);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            // Bilinear, in linear light.
+            const glm::dvec2 s = sourceOf(lens, c, wideSize, x, y) - 0.5;
+            const int x0 = std::clamp(int(std::floor(s.x)), 0, wide.width - 2);
+            const int y0 = std::clamp(int(std::floor(s.y)), 0, wide.height - 2);
+            const double fx = std::clamp(s.x - x0, 0.0, 1.0), fy = std::clamp(s.y - y0, 0.0, 1.0);
+            std::uint8_t* o = out.pixel(x, y);
+            for (int ch = 0; ch < 3; ++ch) {
+                auto at = [&](int px, int py) { return linear[wide.pixel(px, py)[ch]]; };
+                const double v = (1.0 - fy) * ((1.0 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+                                 fy * ((1.0 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+                o[ch] = toByte(v);
+            }
+            o[3] = 255;
+        }
+}
+
+FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, const CameraCalibration& c)
+{
+    FrameLabels out;
+    out.size = c.size;
+    const std::size_t pixels = std::size_t(c.size.x) * std::size_t(c.size.y);
+    out.range_m.resize(pixels);
+    out.normal.resize(pixels);
+    out.semantic.resize(pixels);
+    out.instance.resize(pixels);
+    for (int y = 0; y < c.size.y; ++y)
+        for (int x = 0; x < c.size.x; ++x) {
+            // Nearest: a label is never a blend of two.
+            const glm::dvec2 s = sourceOf(lens, c, wide.size, x, y);
+            const int sx = std::clamp(int(std::floor(s.x)), 0, wide.size.x - 1);
+            const int sy = std::clamp(int(std::floor(s.y)), 0, wide.size.y - 1);
+            const std::size_t from = std::size_t(sy) * std::size_t(wide.size.x) + std::size_t(sx);
+            const std::size_t to = std::size_t(y) * std::size_t(c.size.x) + std::size_t(x);
+            out.range_m[to] = wide.range_m[from];
+            out.normal[to] = wide.normal[from];
+            out.semantic[to] = wide.semantic[from];
+            out.instance[to] = wide.instance[from];
+        }
+    out.classes = wide.classes;
+    out.objects = wide.objects;
+    out.camera = c;
+    out.horizon = horizonOf(c);
+    // The horizon's curve: points along the pinhole line, through the lens.
+    const glm::dvec3 l = out.horizon.line;
+    if (l.x != 0.0 || l.y != 0.0) {
+        const glm::dvec2 centre(c.cx_px, c.cy_px), along(-l.y, l.x);
+        const glm::dvec2 foot = centre - (glm::dot(glm::dvec2(l), centre) + l.z) * glm::dvec2(l.x, l.y);
+        const double reach = 2.0 * std::hypot(double(c.size.x), double(c.size.y));
+        for (double t = -reach; t <= reach; t += 4.0) {
+            const glm::dvec2 p = foot + t * along;
+            const glm::dvec2 d = distort(lens, {(p.x - c.cx_px) / c.fx_px, (p.y - c.cy_px) / c.fy_px});
+            const glm::dvec2 q(d.x * c.fx_px + c.cx_px, d.y * c.fy_px + c.cy_px);
+            if (q.x >= 0.0 && q.y >= 0.0 && q.x <= c.size.x && q.y <= c.size.y)
+                out.horizon.curve_px.push_back(q);
+        }
+    }
+    measureObjectBoxes(out);
+    return out;
+}
+
+// Exposure, then noise, on the encoded image (decoded to linear light first).
+void exposeAndNoise(Image& image, const CameraSettings& s, double time_s)
+{
+    if (s.exposure_ev == 0.0 && s.noiseStdDev == 0.0)
+        return;
+    const std::array<double, 256>& linear = srgbToLinear();
+    const double gain = std::exp2(s.exposure_ev);
+    const std::uint64_t frameKey = mix(mix(std::uint64_t(s.noiseSeed)) ^ std::bit_cast<std::uint64_t>(time_s));
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) {
+        if (i % 4 == 3)
+            continue;
+        double v = encodeSrgb(std::min(linear[image.rgba[i]] * gain, 1.0));
+        if (s.noiseStdDev > 0.0) {
+            // Box-Muller: a standard normal from two uniforms of the pixel's own key.
+            const double u1 = uniform(frameKey ^ (2 * i)), u2 = uniform(frameKey ^ (2 * i + 1));
+            v += s.noiseStdDev * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.14159265358979323846 * u2);
+        }
+        image.rgba[i] = std::uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+    }
+}
+
+} // namespace
+
+SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size, bool labels)
+{
+    const CameraSettings& settings = renderer.scene().camera;
+    const LensDistortion lens = lensOf(settings);
+    SensorFrame frame;
+    if (lens.none()) {
+        frame.image = renderer.renderImage(camera, time_s, size);
+        if (labels)
+            frame.labels = renderer.renderLabels(camera, size);
+    } else {
+        CameraCalibration c = calibrationOf(camera, size);
+        c.k1 = lens.k1;
+        c.k2 = lens.k2;
+        c.k3 = lens.k3;
+        c.p1 = lens.p1;
+        c.p2 = lens.p2;
+        const glm::ivec2 wide = pinholeSize(lens, c);
+        if (wide.x > 4 * size.x || wide.y > 4 * size.y)
+            throw Error(fmt::format("the lens (camera.distortion_*) needs a pinhole frame of {}x{} pixels to hold the "
+                                    "rays of a {}x{} image: a distortion this strong is not drawn",
+                                    wide.x, wide.y, size.x, size.y));
+        Camera pinhole = camera;
+        pinhole.fovY_deg = glm::degrees(2.0 * std::atan(0.5 * wide.y / (kPinholeScale * c.fy_px)));
+        const Image source = renderer.renderImage(pinhole, time_s, wide);
+        frame.image.width = size.x;
+        frame.image.height = size.y;
+        frame.image.rgba.resize(std::size_t(size.x) * std::size_t(size.y) * 4);
+        distortImage(source, frame.image, lens, c);
+        if (labels)
+            frame.labels = distortLabels(renderer.renderLabels(pinhole, wide), lens, c);
+    }
+    exposeAndNoise(frame.image, settings, time_s);
+    return frame;
+}
+
+} // namespace swell
