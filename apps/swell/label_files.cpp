@@ -2,6 +2,7 @@
 
 #include "swell/atomic_file.h"
 #include "swell/image.h"
+#include "swell/spectrum.h"
 
 #include "swell/error.h"
 
@@ -175,6 +176,13 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
         sea["wind_speed_mps"] = scene.waves.wind->windSpeed_mps;
         sea["wind_direction_deg"] = scene.waves.wind->windDirection_deg;
         sea["fetch_km"] = scene.waves.wind->fetch_km;
+        // The peak period of the wind sea's JONSWAP spectrum (and the swell's).
+        const SeaSpectrum spectrum(*scene.waves.wind);
+        const std::span<const SeaComponent> parts = spectrum.components();
+        if (!parts.empty())
+            sea["peak_period_s"] = 2.0 * 3.14159265358979323846 / parts[0].spectrum.peakFrequency_radps;
+        if (parts.size() > 1)
+            sea["swell_peak_period_s"] = 2.0 * 3.14159265358979323846 / parts[1].spectrum.peakFrequency_radps;
     }
     const glm::dvec3 sun = glm::normalize(scene.sun.direction);
     sea["sun_direction"] = {sun.x, sun.y, sun.z};
