@@ -8,6 +8,7 @@
 #include "support/gl_test.h"
 
 #include "swell/renderer.h"
+#include "support/open_sea.h"
 #include "swell/shader_constants.h"
 
 #include <gtest/gtest.h>
@@ -19,17 +20,6 @@ namespace {
 using namespace swell;
 
 class FrameWork : public test::GlTest {};
-
-// The spectral sea without objects (nothing but the model to simulate).
-Scene spectralScene()
-{
-    Scene scene = defaultScene();
-    scene.objects.clear();
-    scene.showTerrain = false;
-    scene.waves.model = WaveModelKind::Spectral;
-    scene.waves.wind->windSpeed_mps = 20.0;
-    return scene;
-}
 
 constexpr glm::ivec2 kSize{32, 18};
 constexpr double kFrame_s = 1.0 / 60.0;
@@ -46,7 +36,7 @@ long long mipLevelsAboveBase(long long size, long long layers)
 // A frame 1/60 s after the last: one step of the spectral model.
 TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
 {
-    const Scene scene = spectralScene();
+    const Scene scene = test::openSpectralStorm();
     Renderer renderer(scene);
     const Camera camera = cameraAt(scene.camera, 0.0);
     renderer.renderImage(camera, 0.0, kSize); // the first frame replays the foam's history
@@ -126,7 +116,7 @@ private:
 // computing the spectra.
 TEST_F(FrameWork, SimulationCpuTimeIsTheCallingThreadsWithoutTheObserver)
 {
-    const Scene scene = spectralScene();
+    const Scene scene = test::openSpectralStorm();
     Renderer renderer(scene);
     const Camera camera = cameraAt(scene.camera, 0.0);
     renderer.renderImage(camera, 0.0, kSize); // shaders compiled, the history replayed

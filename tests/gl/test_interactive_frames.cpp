@@ -6,6 +6,7 @@
 // frame counters say how many sets of FFTs and foam steps each frame took.
 #include "support/gl_test.h"
 #include "swell/renderer.h"
+#include "support/open_sea.h"
 
 #include <gtest/gtest.h>
 
@@ -15,21 +16,12 @@ using namespace swell;
 
 class InteractiveFrames : public test::GlTest {};
 
-Scene stormScene()
-{
-    Scene scene = defaultScene();
-    scene.objects.clear();
-    scene.showTerrain = false;
-    scene.waves.model = WaveModelKind::Spectral;
-    scene.waves.wind->windSpeed_mps = 20.0;
-    return scene;
-}
 
 constexpr glm::ivec2 kSize{32, 18};
 
 TEST_F(InteractiveFrames, ALongFrameTakesOneStepNotAReplay)
 {
-    const Scene scene = stormScene();
+    const Scene scene = test::openSpectralStorm();
     Renderer renderer(scene);
     renderer.setInteractive(true);
     Camera camera = cameraAt(scene.camera, 0.0);
@@ -63,7 +55,7 @@ TEST_F(InteractiveFrames, ALongFrameTakesOneStepNotAReplay)
 // foam a still at that time shows.
 TEST_F(InteractiveFrames, ARenderersLongFrameReplaysTheHistory)
 {
-    const Scene scene = stormScene();
+    const Scene scene = test::openSpectralStorm();
     Renderer renderer(scene);
     const Camera camera = cameraAt(scene.camera, 0.0);
     renderer.renderImage(camera, 0.0, kSize);

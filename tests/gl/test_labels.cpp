@@ -9,6 +9,7 @@
 #include "swell/flat_model.h"
 #include "swell/labels.h"
 #include "swell/renderer.h"
+#include "support/open_sea.h"
 #include "swell/scene.h"
 #include "swell/sensor.h"
 
@@ -24,14 +25,6 @@ namespace {
 
 class Labels : public swell::test::GlTest {};
 
-swell::Scene openSea()
-{
-    swell::Scene scene = swell::defaultScene();
-    scene.showTerrain = false;
-    scene.objects.clear();
-    return scene;
-}
-
 // The world direction of the ray through pixel (x, y)'s centre (not unit).
 glm::dvec3 pixelRay(const swell::CameraCalibration& c, int x, int y)
 {
@@ -46,7 +39,7 @@ struct CalmResult {
 
 CalmResult renderCalm(double height_m, double roll_deg, double pitch_deg, double far_m = 20000.0)
 {
-    swell::Scene scene = openSea();
+    swell::Scene scene = swell::test::openSea();
     scene.camera.far_m = far_m; // the grid reaches the far plane, the labels' water the horizon
     swell::Renderer renderer(scene);
     renderer.setWaveModel(std::make_shared<swell::FlatModel>());
@@ -113,7 +106,7 @@ TEST_F(Labels, CalmWaterRangeIsTheRayPlaneDistanceAndMeetsTheSkyOnTheHorizon)
 
 TEST_F(Labels, AnObjectsPixelsBoxAndRangesAreItsOwn)
 {
-    swell::Scene scene = openSea();
+    swell::Scene scene = swell::test::openSea();
     swell::SceneObject buoy;
     buoy.path = "builtin:buoy";
     buoy.position_m = glm::dvec3(3.0, 0.0, -25.0);
@@ -237,7 +230,7 @@ namespace {
 // meets the sea (the range converted to pixels by its gradient).
 TEST_F(Labels, ThroughALensTheWrittenModelFindsEachPixelsRay)
 {
-    swell::Scene scene = openSea();
+    swell::Scene scene = swell::test::openSea();
     scene.camera.distortionK1 = -0.22;
     scene.camera.distortionK2 = 0.05;
     scene.camera.distortionP1 = 0.002;
@@ -312,7 +305,7 @@ namespace {
 // and seed, and another for another seed.
 TEST_F(Labels, ExposureDoublesTheLightAndNoiseIsTheSameForTheSameFrame)
 {
-    swell::Scene scene = openSea();
+    swell::Scene scene = swell::test::openSea();
     const glm::ivec2 size(96, 64);
     auto frameOf = [&](double ev, double noise, std::uint32_t seed) {
         swell::Scene s = scene;

@@ -1,0 +1,26 @@
+// Scenes tests start from: the default scene's sea with nothing else in it.
+#pragma once
+
+#include "swell/scene.h"
+
+namespace swell::test {
+
+// The default scene without its island and objects.
+inline Scene openSea()
+{
+    Scene scene = defaultScene();
+    scene.objects.clear();
+    scene.showTerrain = false;
+    return scene;
+}
+
+// The same sea as the spectral model under a 20 m/s wind (the storm's).
+inline Scene openSpectralStorm()
+{
+    Scene scene = openSea();
+    scene.waves.model = WaveModelKind::Spectral;
+    scene.waves.wind->windSpeed_mps = 20.0;
+    return scene;
+}
+
+} // namespace swell::test
