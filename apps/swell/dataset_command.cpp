@@ -131,6 +131,8 @@ int runDataset(const DatasetOptions& options)
     }
     const Scene base = loadSceneOrDefault(scenePath.string());
     checkSweep(sweep, base);
+    // Each sample is a still: its bodies are stepped from their start.
+    checkSteppedHistory(base, sweep.timeMax_s, fmt::format("{}: time_s", sweep.file.string()));
     const auto [shard, shards] = parseShard(options.shard);
     const fs::path out = options.out;
     prepareOut(out);
