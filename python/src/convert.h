@@ -75,15 +75,19 @@ inline py::array_t<double> toArray(glm::dvec3 v)
     return a;
 }
 
-// GLM is column-major (m[column][row]); NumPy's result reads a[row, column],
-// as the matrix is written on paper.
+// GLM is column-major (m[column][row]); NumPy's arrays read a[row, column],
+// as the matrix is written on paper: 16 doubles, row after row.
+inline void copyRows(const glm::dmat4& matrix, double* rows)
+{
+    for (int row = 0; row < 4; ++row)
+        for (int column = 0; column < 4; ++column)
+            rows[4 * row + column] = matrix[column][row];
+}
+
 inline py::array_t<double> toArray(const glm::dmat4& matrix)
 {
     py::array_t<double> a({4, 4});
-    auto m = a.mutable_unchecked<2>();
-    for (int row = 0; row < 4; ++row)
-        for (int column = 0; column < 4; ++column)
-            m(row, column) = matrix[column][row];
+    copyRows(matrix, a.mutable_data());
     return a;
 }
 

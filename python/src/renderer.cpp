@@ -202,11 +202,8 @@ public:
         requireSimulation("object_transforms");
         const std::vector<glm::dmat4> transforms = renderer_->objectTransforms();
         py::array_t<double> out({py::ssize_t(transforms.size()), py::ssize_t(4), py::ssize_t(4)});
-        auto a = out.mutable_unchecked<3>();
         for (std::size_t i = 0; i < transforms.size(); ++i)
-            for (int row = 0; row < 4; ++row)
-                for (int column = 0; column < 4; ++column)
-                    a(py::ssize_t(i), row, column) = transforms[i][column][row];
+            copyRows(transforms[i], out.mutable_data() + 16 * i);
         return out;
     }
 
