@@ -8,7 +8,6 @@
 #include "swell/camera.h"
 #include "swell/parameters.h"
 
-#include <cmath>
 
 namespace swell::python {
 

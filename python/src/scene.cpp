@@ -16,8 +16,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
-#include <limits>
 
 namespace swell::python {
 
