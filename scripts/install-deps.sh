@@ -9,6 +9,7 @@ packages=(
   libglm-dev libimgui-dev libstb-dev libtomlplusplus-dev libcli11-dev libfmt-dev
   libtinygltf-dev libkissfft-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool python3
+  python3-dev python3-numpy pybind11-dev
   # Datasets across machines: scripts/dataset-dask.py, and its test.
   python3-distributed
 )

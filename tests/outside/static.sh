@@ -8,7 +8,7 @@ work=$2
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cmake -S "$source" -B "$work/swell-build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF \
-  -DSWELL_BUILD_APPS=OFF -DSWELL_BUILD_TESTS=OFF -DSWELL_BUILD_BENCHMARKS=OFF >/dev/null
+  -DSWELL_BUILD_APPS=OFF -DSWELL_BUILD_TESTS=OFF -DSWELL_BUILD_BENCHMARKS=OFF -DSWELL_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$work/swell-build" --target swell >/dev/null
 "$here/run.sh" "$work/swell-build" "$work/outside"
 # It was the static library that got linked: no libswell.so was installed.

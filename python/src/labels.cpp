@@ -1,0 +1,142 @@
+// Labels (swell/labels.h, docs/LABELS.md): the per-pixel range, normal,
+// class and instance as NumPy arrays, each object's class and boxes, the
+// camera's calibration and the horizon; the calibration and the horizon of
+// any camera computed on the CPU too.
+#include "labels.h"
+
+#include "bindings.h"
+#include "convert.h"
+
+#include <pybind11/stl.h>
+
+namespace swell::python {
+
+namespace {
+
+std::vector<py::ssize_t> imageShape(glm::ivec2 size) { return {size.y, size.x}; }
+
+} // namespace
+
+PyLabels toPython(FrameLabels&& labels)
+{
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "glm::vec3 must be three packed floats");
+    PyLabels out;
+    out.size = labels.size;
+    const std::vector<py::ssize_t> shape = imageShape(labels.size);
+    out.range_m = arrayOwning<float>(std::move(labels.range_m), shape);
+    out.normal = arrayOwning<float>(std::move(labels.normal), {labels.size.y, labels.size.x, 3});
+    out.semantic = arrayOwning<std::uint16_t>(std::move(labels.semantic), shape);
+    out.instance = arrayOwning<std::uint16_t>(std::move(labels.instance), shape);
+    out.classes = std::move(labels.classes);
+    out.objects = std::move(labels.objects);
+    out.camera = labels.camera;
+    out.horizon = labels.horizon;
+    return out;
+}
+
+void bindLabels(py::module_& m)
+{
+    py::class_<CameraCalibration>(m, "Calibration",
+                                  "A pinhole camera as perception code calibrates one (OpenCV's axes: x right, y "
+                                  "down, z forward; no distortion). Image conventions: x right, y down, pixel (i, j)'s "
+                                  "centre at (i + 0.5, j + 0.5).")
+        .def_property_readonly("size", [](const CameraCalibration& c) { return py::make_tuple(c.size.x, c.size.y); },
+                               "(width, height), pixels.")
+        .def_readonly("fx_px", &CameraCalibration::fx_px, "Focal length along x, pixels.")
+        .def_readonly("fy_px", &CameraCalibration::fy_px, "Focal length along y, pixels.")
+        .def_readonly("cx_px", &CameraCalibration::cx_px, "Principal point x, pixels.")
+        .def_readonly("cy_px", &CameraCalibration::cy_px, "Principal point y, pixels.")
+        .def_property_readonly(
+            "intrinsics",
+            [](const CameraCalibration& c) {
+                py::array_t<double> k({3, 3});
+                auto a = k.mutable_unchecked<2>();
+                const double values[3][3] = {{c.fx_px, 0.0, c.cx_px}, {0.0, c.fy_px, c.cy_px}, {0.0, 0.0, 1.0}};
+                for (int r = 0; r < 3; ++r)
+                    for (int col = 0; col < 3; ++col)
+                        a(r, col) = values[r][col];
+                return k;
+            },
+            "The 3x3 matrix K = [[fx, 0, cx], [0, fy, cy], [0, 0, 1]].")
+        .def_property_readonly(
+            "camera_from_world", [](const CameraCalibration& c) { return toArray(c.cameraFromWorld); },
+            "4x4, absolute world points (m, y up) to camera axes: p_camera = M @ [x, y, z, 1].")
+        .def_property_readonly(
+            "world_from_camera", [](const CameraCalibration& c) { return toArray(c.worldFromCamera); },
+            "4x4, the inverse of camera_from_world.")
+        .def(
+            "project",
+            [](const CameraCalibration& c, py::handle world_m) -> py::object {
+                const std::optional<glm::dvec2> p = projectToImage(c, toVec3(world_m, "world_m"));
+                return p ? py::object(toTuple(*p)) : py::none();
+            },
+            py::arg("world_m"), "Where a world point (m) lands in the image, (x, y) pixels; None behind the camera.");
+
+    py::class_<HorizonLine>(m, "Horizon",
+                            "The sea's horizon as drawn: the vanishing line of the sea-level plane, "
+                            "a x + b y + c = 0 in pixels with (a, b) a unit vector towards the sky.")
+        .def_property_readonly("line", [](const HorizonLine& h) { return toTuple(h.line); }, "(a, b, c).")
+        .def_readonly("visible", &HorizonLine::visible, "Whether the line crosses the image.")
+        .def_property_readonly("from_px", [](const HorizonLine& h) { return toTuple(h.from_px); },
+                               "Where it meets the image's border (x, y), pixels, when visible.")
+        .def_property_readonly("to_px", [](const HorizonLine& h) { return toTuple(h.to_px); },
+                               "The other border point (x, y), pixels, when visible.");
+
+    py::class_<ObjectLabel>(m, "ObjectLabel", "One scene object in a frame.")
+        .def_readonly("instance", &ObjectLabel::instance, "Its value in Labels.instance: its index in the scene's objects + 1.")
+        .def_readonly("class_id", &ObjectLabel::semanticClass, "Its value in Labels.semantic.")
+        .def_readonly("class_name", &ObjectLabel::className, "Labels.classes[class_id]: 'boat', or the model file's name.")
+        .def_readonly("visible_pixels", &ObjectLabel::visiblePixels, "How many pixels show it.")
+        .def_property_readonly(
+            "box_px", [](const ObjectLabel& o) { return py::make_tuple(o.box_px.x, o.box_px.y, o.box_px.z, o.box_px.w); },
+            "(x0, y0, x1, y1), pixels: the smallest box of its visible pixels, x1 and y1 one past its last; "
+            "all 0 when none is visible.")
+        .def_property_readonly(
+            "box3d_m",
+            [](const ObjectLabel& o) {
+                py::array_t<double> corners({8, 3});
+                auto a = corners.mutable_unchecked<2>();
+                for (int i = 0; i < 8; ++i)
+                    for (int j = 0; j < 3; ++j)
+                        a(i, j) = o.box3d_m[std::size_t(i)][j];
+                return corners;
+            },
+            "(8, 3): the corners of its mesh's bounding box in its own axes, placed at its pose this frame; "
+            "absolute world, m.")
+        .def("__repr__", [](const ObjectLabel& o) {
+            return "<swell.ObjectLabel " + std::to_string(o.instance) + " " + o.className + ", "
+                   + std::to_string(o.visiblePixels) + " px>";
+        });
+
+    py::class_<PyLabels>(m, "Labels",
+                         "The ground truth of one frame (docs/LABELS.md), aligned pixel for pixel with its colour "
+                         "image; arrays hold rows top first.")
+        .def_property_readonly("size", [](const PyLabels& l) { return py::make_tuple(l.size.x, l.size.y); },
+                               "(width, height), pixels.")
+        .def_readonly("range_m", &PyLabels::range_m,
+                      "float32 (H, W): metres from the eye along each pixel's ray to what it shows; inf for the sky.")
+        .def_readonly("normal", &PyLabels::normal, "float32 (H, W, 3): the unit surface normal, world axes; 0 for the sky.")
+        .def_readonly("semantic", &PyLabels::semantic,
+                      "uint16 (H, W): the class id (classes[id]): 1 sky, 2 water, 3 whitecap foam, 4 wake foam, "
+                      "5 terrain, 16 and up the objects' classes.")
+        .def_readonly("instance", &PyLabels::instance, "uint16 (H, W): 0, or the instance id of the object shown.")
+        .def_readonly("classes", &PyLabels::classes, "Each class id's name ('' where none).")
+        .def_readonly("objects", &PyLabels::objects, "Every scene object's ObjectLabel, in the scene's order.")
+        .def_readonly("camera", &PyLabels::camera, "The Calibration of this frame.")
+        .def_readonly("horizon", &PyLabels::horizon, "The sea's Horizon in this frame.");
+
+    // The class ids of Labels.semantic, from the header the shaders share.
+    m.attr("CLASS_NONE") = SWELL_LABEL_NONE;
+    m.attr("CLASS_SKY") = SWELL_LABEL_SKY;
+    m.attr("CLASS_WATER") = SWELL_LABEL_WATER;
+    m.attr("CLASS_WHITECAP_FOAM") = SWELL_LABEL_WHITECAP_FOAM;
+    m.attr("CLASS_WAKE_FOAM") = SWELL_LABEL_WAKE_FOAM;
+    m.attr("CLASS_TERRAIN") = SWELL_LABEL_TERRAIN;
+    m.attr("CLASS_FIRST_OBJECT") = SWELL_LABEL_FIRST_OBJECT_CLASS;
+
+    m.def("calibration_of", [](const Camera& camera, py::handle size) { return calibrationOf(camera, imageSize(size)); },
+          py::arg("camera"), py::arg("size"), "The Calibration of the image of `size` (width, height) that `camera` renders.");
+    m.def("horizon_of", &horizonOf, py::arg("calibration"), "The Horizon of the sea-level plane for a Calibration.");
+}
+
+} // namespace swell::python

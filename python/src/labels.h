@@ -1,0 +1,30 @@
+// A frame's labels as Python sees them: the per-pixel buffers as NumPy
+// arrays (which took the library's vectors over), the rest as the library
+// gives it.
+#pragma once
+
+#include "swell/labels.h"
+
+#include <pybind11/numpy.h>
+
+#include <string>
+#include <vector>
+
+namespace swell::python {
+
+struct PyLabels {
+    glm::ivec2 size{0};
+    pybind11::array_t<float> range_m;         // (H, W)
+    pybind11::array_t<float> normal;          // (H, W, 3)
+    pybind11::array_t<std::uint16_t> semantic; // (H, W)
+    pybind11::array_t<std::uint16_t> instance; // (H, W)
+    std::vector<std::string> classes;
+    std::vector<ObjectLabel> objects;
+    CameraCalibration camera;
+    HorizonLine horizon;
+};
+
+// Takes the frame's buffers over. Needs the GIL.
+PyLabels toPython(FrameLabels&& labels);
+
+} // namespace swell::python
