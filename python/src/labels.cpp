@@ -38,7 +38,7 @@ void bindLabels(py::module_& m)
 {
     py::class_<CameraCalibration>(m, "Calibration",
                                   "A pinhole camera as perception code calibrates one (OpenCV's axes: x right, y "
-                                  "down, z forward; no distortion). Image conventions: x right, y down, pixel (i, j)'s "
+                                  "down, z forward), with its lens's Brown-Conrady distortion. Image conventions: x right, y down, pixel (i, j)'s "
                                   "centre at (i + 0.5, j + 0.5).")
         .def_property_readonly("size", [](const CameraCalibration& c) { return py::make_tuple(c.size.x, c.size.y); },
                                "(width, height), pixels.")
@@ -64,6 +64,9 @@ void bindLabels(py::module_& m)
         .def_property_readonly(
             "world_from_camera", [](const CameraCalibration& c) { return toArray(c.worldFromCamera); },
             "4x4, the inverse of camera_from_world.")
+        .def_property_readonly(
+            "distortion", [](const CameraCalibration& c) { return py::make_tuple(c.k1, c.k2, c.p1, c.p2, c.k3); },
+            "The lens's Brown-Conrady coefficients in OpenCV's order (k1, k2, p1, p2, k3); all 0 for a pinhole.")
         .def(
             "project",
             [](const CameraCalibration& c, py::handle world_m) -> py::object {
@@ -80,7 +83,16 @@ void bindLabels(py::module_& m)
         .def_property_readonly("from_px", [](const HorizonLine& h) { return toTuple(h.from_px); },
                                "Where it meets the image's border (x, y), pixels, when visible.")
         .def_property_readonly("to_px", [](const HorizonLine& h) { return toTuple(h.to_px); },
-                               "The other border point (x, y), pixels, when visible.");
+                               "The other border point (x, y), pixels, when visible.")
+        .def_property_readonly(
+            "curve_px",
+            [](const HorizonLine& h) {
+                py::list points;
+                for (const glm::dvec2& p : h.curve_px)
+                    points.append(toTuple(p));
+                return points;
+            },
+            "Through a distorting lens, points (x, y) along the horizon's curve in the image; empty for a pinhole.");
 
     py::class_<ObjectLabel>(m, "ObjectLabel", "One scene object in a frame.")
         .def_readonly("instance", &ObjectLabel::instance, "Its value in Labels.instance: its index in the scene's objects + 1.")

@@ -20,6 +20,7 @@
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
 #include "swell/scene_file.h"
+#include "swell/sensor.h"
 
 #include <pybind11/stl.h>
 
@@ -179,6 +180,31 @@ public:
         return toPython(std::move(labels));
     }
 
+    // The frame through the scene camera's lens and sensor (swell/sensor.h).
+    py::tuple renderSensor(const Camera& camera, double time_s, py::handle size, bool labels)
+    {
+        const glm::ivec2 s = imageSize(size);
+        checkCamera(camera);
+        finiteTime(time_s);
+        use();
+        SensorFrame frame;
+        {
+            py::gil_scoped_release release;
+            frame = renderSensorFrame(*renderer_, camera, time_s, s, labels);
+        }
+        viewpoint_m_ = camera.position_m;
+        py::object image = arrayOwning<std::uint8_t>(std::move(frame.image.rgba), {s.y, s.x, 4});
+        return py::make_tuple(image, frame.labels ? py::cast(toPython(std::move(*frame.labels))) : py::none());
+    }
+
+    Camera sceneCameraAt(double time_s)
+    {
+        finiteTime(time_s);
+        use();
+        py::gil_scoped_release release;
+        return renderer_->sceneCameraAt(time_s);
+    }
+
     void advanceTo(double time_s, py::handle viewpoint)
     {
         finiteTime(time_s);
@@ -294,6 +320,14 @@ void bindRenderer(py::module_& m)
              "The labels (swell.Labels) of the frame render() draws for this camera at the simulated time, "
              "aligned pixel for pixel with the colour image of size (width, height). Raises swell.Error "
              "before the first render() or advance_to().")
+        .def("render_sensor", &PyRenderer::renderSensor, py::arg("camera"), py::arg("time_s"), py::arg("size"),
+             py::arg("labels") = true,
+             "As `swell render` draws a frame: through the scene camera's lens distortion, exposure and "
+             "noise (camera.distortion_*, exposure_ev, noise_*; docs/LABELS.md), its labels resampled "
+             "through the same lens. Returns (uint8 (H, W, 4) RGBA, swell.Labels or None).")
+        .def("scene_camera_at", &PyRenderer::sceneCameraAt, py::arg("time_s"),
+             "The scene's camera at time_s; a camera mounted on an object (camera.mount_object) placed "
+             "on that object's pose there (it heaves, rolls and pitches with a floating body).")
         .def("advance_to", &PyRenderer::advanceTo, py::arg("time_s"), py::arg("viewpoint_m") = py::none(),
              "Moves the simulation (the ocean, the floating bodies, their wake) to time_s (absolute, s; any "
              "order: the same time gives the same state). viewpoint_m (world, m): where the foam's windows "

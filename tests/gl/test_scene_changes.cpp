@@ -32,7 +32,10 @@ constexpr double kTime_s = 3.0;
 Scene baseScene()
 {
     Scene scene = defaultScene();
-    scene.objects = {SceneObject{.path = "builtin:buoy", .position_m = {8.0, 0.0, -30.0}, .floats = true}};
+    // A fixed rock first: camera.mount_object's first other value (0) must
+    // name an object a camera can ride; then a floating buoy.
+    scene.objects = {SceneObject{.path = "builtin:rock", .position_m = {-12.0, 0.0, -45.0}},
+                     SceneObject{.path = "builtin:buoy", .position_m = {8.0, 0.0, -30.0}, .floats = true}};
     scene.camera.path = {CameraKey{0.0, {0.0, 6.0, 0.0}, 0.0, -5.0}, CameraKey{10.0, {5.0, 8.0, -5.0}, 10.0, -8.0}};
     return scene;
 }
@@ -69,9 +72,10 @@ struct Drawn {
     std::vector<float> vertices;
 };
 
-Drawn draw(Renderer& renderer, const Scene& scene)
+Drawn draw(Renderer& renderer)
 {
-    const Camera camera = cameraAt(scene.camera, kTime_s);
+    // The scene's camera as the renderer places it (on its mount, if any).
+    const Camera camera = renderer.sceneCameraAt(kTime_s);
     Drawn d;
     d.image = renderer.renderImage(camera, kTime_s, kSize);
     const int count = renderer.waterVertexCount();
@@ -87,7 +91,7 @@ TEST_F(SceneChanges, EveryParameterChangeDrawsWhatAFreshRendererDraws)
 {
     const Scene base = baseScene();
     Renderer running(base);
-    draw(running, base);
+    draw(running);
     int checked = 0;
     for (const Parameter& p : parameters()) {
         Scene changed = base;
@@ -110,9 +114,9 @@ TEST_F(SceneChanges, EveryParameterChangeDrawsWhatAFreshRendererDraws)
         }
         SCOPED_TRACE(std::string(p.key) + " = " + formatValue(p, p.get(changed, 0)));
         running.setScene(changed);
-        const Drawn incremental = draw(running, changed);
+        const Drawn incremental = draw(running);
         Renderer fresh(changed);
-        const Drawn expected = draw(fresh, changed);
+        const Drawn expected = draw(fresh);
         EXPECT_TRUE(incremental.image.rgba == expected.image.rgba) << "a change of " << p.key << " left a stale image";
         EXPECT_TRUE(incremental.vertices == expected.vertices) << "a change of " << p.key << " left a stale grid";
         running.setScene(base);
@@ -126,15 +130,15 @@ TEST_F(SceneChanges, AReplacedWaveModelIsDrawnAndTheScenesComesBack)
 {
     const Scene scene = baseScene();
     Renderer renderer(scene);
-    const Image waves = draw(renderer, scene).image;
+    const Image waves = draw(renderer).image;
     renderer.setWaveModel(std::make_shared<FlatModel>());
     EXPECT_EQ(renderer.waveModel().name(), "flat");
     EXPECT_EQ(renderer.waveModel().heightAt({3.0, 4.0}, kTime_s), 0.0);
-    const Image flat = draw(renderer, scene).image;
+    const Image flat = draw(renderer).image;
     EXPECT_FALSE(flat.rgba == waves.rgba);
     renderer.setWaveModel(nullptr);
     EXPECT_EQ(renderer.waveModel().name(), "gerstner");
-    EXPECT_TRUE(draw(renderer, scene).image.rgba == waves.rgba);
+    EXPECT_TRUE(draw(renderer).image.rgba == waves.rgba);
 }
 
 } // namespace

@@ -123,3 +123,27 @@ class ObjectLabels(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class Sensor(unittest.TestCase):
+    """render_sensor: without a lens, render() and render_labels() as they are; through a lens, the
+    calibration carries the coefficients and the labels' water lies below the written model's horizon."""
+
+    def test_without_a_lens_it_is_render_and_render_labels(self):
+        scene = open_sea()
+        renderer = swell.Renderer(scene)
+        camera = scene.camera_at(0.0)
+        image, labels = renderer.render_sensor(camera, 1.0, (96, 64))
+        np.testing.assert_array_equal(image, renderer.render(camera, 1.0, (96, 64)))
+        np.testing.assert_array_equal(labels.semantic, renderer.render_labels(camera, (96, 64)).semantic)
+        self.assertEqual(labels.camera.distortion, (0.0, 0.0, 0.0, 0.0, 0.0))
+
+    def test_through_a_lens_the_calibration_carries_it(self):
+        scene = open_sea()
+        scene["camera.distortion_k1"] = -0.2
+        renderer = swell.Renderer(scene)
+        image, labels = renderer.render_sensor(scene.camera_at(0.0), 1.0, (96, 64))
+        self.assertEqual(image.shape, (64, 96, 4))
+        self.assertEqual(labels.camera.distortion[0], -0.2)
+        self.assertTrue(labels.horizon.curve_px)
+        self.assertFalse((labels.semantic == 0).any())
