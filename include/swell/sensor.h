@@ -46,8 +46,9 @@ SWELL_API glm::dvec2 undistort(const LensDistortion& lens, glm::dvec2 distorted)
 // exposed and noised as the renderer's scene says; with `labels`, its
 // labels (Renderer::renderLabels) resampled through the same lens, with
 // the lens's coefficients in their calibration, the horizon's distorted
-// curve and the boxes measured on the distorted masks. Throws swell::Error
-// when the lens needs a pinhole frame over 4 times the output's side (it is
+// curve and the boxes measured on the distorted masks. Throws
+// swell::InputError when the lens needs a pinhole frame over 4 times the
+// output's side (it is
 // drawn at 1.5 times the output's focal length, so labels are within half a
 // pixel; a distortion stronger than that is refused).
 struct SWELL_API SensorFrame {

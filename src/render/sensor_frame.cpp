@@ -192,9 +192,11 @@ SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double t
         c.p2 = lens.p2;
         const glm::ivec2 wide = pinholeSize(lens, c);
         if (wide.x > 4 * size.x || wide.y > 4 * size.y)
-            throw Error(fmt::format("the lens (camera.distortion_*) needs a pinhole frame of {}x{} pixels to hold the "
-                                    "rays of a {}x{} image: a distortion this strong is not drawn",
-                                    wide.x, wide.y, size.x, size.y));
+            throw InputError({"camera.distortion_k1"},
+                             fmt::format("this lens needs a pinhole frame of {}x{} pixels to hold the rays of a {}x{} "
+                                         "image at {} degrees of field: its distortion folds the image's corners "
+                                         "over (or nearly); weaken the coefficients or narrow the field",
+                                         wide.x, wide.y, size.x, size.y, camera.fovY_deg));
         Camera pinhole = camera;
         pinhole.fovY_deg = glm::degrees(2.0 * std::atan(0.5 * wide.y / (kPinholeScale * c.fy_px)));
         const Image source = renderer.renderImage(pinhole, time_s, wide);

@@ -140,10 +140,10 @@ class Sensor(unittest.TestCase):
 
     def test_through_a_lens_the_calibration_carries_it(self):
         scene = open_sea()
-        scene["camera.distortion_k1"] = -0.2
+        scene["camera.distortion_k1"] = -0.1
         renderer = swell.Renderer(scene)
         image, labels = renderer.render_sensor(scene.camera_at(0.0), 1.0, (96, 64))
         self.assertEqual(image.shape, (64, 96, 4))
-        self.assertEqual(labels.camera.distortion[0], -0.2)
+        self.assertEqual(labels.camera.distortion[0], -0.1)
         self.assertTrue(labels.horizon.curve_px)
         self.assertFalse((labels.semantic == 0).any())
