@@ -152,6 +152,12 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
             curve.push_back({p.x, p.y});
         horizon["curve_px"] = curve;
     }
+    // The true horizon of a round Earth for the camera's height.
+    horizon["true_dip_deg"] = labels.trueHorizonDip_deg;
+    Json truePoints = Json::array();
+    for (const glm::dvec2& p : labels.trueHorizon_px)
+        truePoints.push_back({p.x, p.y});
+    horizon["true_px"] = truePoints;
     j["horizon"] = horizon;
     Json classes = Json::object();
     for (std::size_t i = 0; i < labels.classes.size(); ++i)

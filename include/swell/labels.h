@@ -60,6 +60,17 @@ struct SWELL_API HorizonLine {
 };
 SWELL_API HorizonLine horizonOf(const CameraCalibration& camera);
 
+// The true horizon of a round Earth for an eye eyeHeight_m above the sea:
+// its geometric dip below the horizontal, rad, acos(R / (R + h)) with the
+// mean radius R = 6371 km (without the atmosphere's refraction, which
+// lessens it by about a twelfth; Bowditch 2002, The American Practical
+// Navigator, table 22's geometric dip 1.93' sqrt(h)). 0 at or below the sea.
+SWELL_API double horizonDip_rad(double eyeHeight_m);
+// Points along that true horizon in the image (the directions at -dip all
+// round the eye, projected through the lens), every ~2 px; empty when none
+// falls in the image.
+SWELL_API std::vector<glm::dvec2> trueHorizonOf(const CameraCalibration& camera, double eyeHeight_m);
+
 // One scene object in a frame.
 struct SWELL_API ObjectLabel {
     std::uint16_t instance = 0;      // its value in FrameLabels::instance (its index in scene.objects + 1)
@@ -93,6 +104,12 @@ struct SWELL_API FrameLabels {
     std::vector<ObjectLabel> objects;
     CameraCalibration camera;
     HorizonLine horizon;
+    // The true horizon of a round Earth for the camera's height: its dip,
+    // degrees, and points along it in the image (horizonDip_rad,
+    // trueHorizonOf). Swell draws the sea flat, so the drawn sea meets the
+    // sky on `horizon`; the true horizon lies this far below it.
+    double trueHorizonDip_deg = 0.0;
+    std::vector<glm::dvec2> trueHorizon_px;
 };
 
 // A scene object's class: the built-in's name ("boat" for "builtin:boat"),

@@ -31,6 +31,8 @@ PyLabels toPython(FrameLabels&& labels)
     out.objects = std::move(labels.objects);
     out.camera = labels.camera;
     out.horizon = labels.horizon;
+    out.trueHorizonDip_deg = labels.trueHorizonDip_deg;
+    out.trueHorizon_px = std::move(labels.trueHorizon_px);
     return out;
 }
 
@@ -135,7 +137,19 @@ void bindLabels(py::module_& m)
         .def_readonly("classes", &PyLabels::classes, "Each class id's name ('' where none).")
         .def_readonly("objects", &PyLabels::objects, "Every scene object's ObjectLabel, in the scene's order.")
         .def_readonly("camera", &PyLabels::camera, "The Calibration of this frame.")
-        .def_readonly("horizon", &PyLabels::horizon, "The sea's Horizon in this frame.");
+        .def_readonly("horizon", &PyLabels::horizon, "The sea's Horizon in this frame.")
+        .def_readonly("true_horizon_dip_deg", &PyLabels::trueHorizonDip_deg,
+                      "The true horizon's dip below the horizontal for the camera's height over a round Earth, "
+                      "degrees (the sea is drawn flat: it meets the sky on `horizon`).")
+        .def_property_readonly(
+            "true_horizon_px",
+            [](const PyLabels& l) {
+                py::list points;
+                for (const glm::dvec2& p : l.trueHorizon_px)
+                    points.append(toTuple(p));
+                return points;
+            },
+            "Points (x, y) along that true horizon in the image, pixels.");
 
     // The class ids of Labels.semantic, from the header the shaders share.
     m.attr("CLASS_NONE") = SWELL_LABEL_NONE;

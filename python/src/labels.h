@@ -22,6 +22,8 @@ struct PyLabels {
     std::vector<ObjectLabel> objects;
     CameraCalibration camera;
     HorizonLine horizon;
+    double trueHorizonDip_deg = 0.0;
+    std::vector<glm::dvec2> trueHorizon_px;
 };
 
 // Takes the frame's buffers over. Needs the GIL.

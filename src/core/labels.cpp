@@ -93,6 +93,28 @@ HorizonLine horizonOf(const CameraCalibration& camera)
     return h;
 }
 
+double horizonDip_rad(double eyeHeight_m)
+{
+    constexpr double kEarthRadius_m = 6371000.0; // IUGG mean radius
+    return eyeHeight_m > 0.0 ? std::acos(kEarthRadius_m / (kEarthRadius_m + eyeHeight_m)) : 0.0;
+}
+
+std::vector<glm::dvec2> trueHorizonOf(const CameraCalibration& camera, double eyeHeight_m)
+{
+    const double dip = horizonDip_rad(eyeHeight_m);
+    const glm::dvec3 eye(camera.worldFromCamera[3]);
+    // About 2 px apart at the image's centre: an azimuth step of 2 / f.
+    const double step = 2.0 / std::max(camera.fx_px, 1.0);
+    std::vector<glm::dvec2> points;
+    for (double azimuth = 0.0; azimuth < 2.0 * 3.14159265358979323846; azimuth += step) {
+        const glm::dvec3 d(std::cos(-dip) * std::cos(azimuth), std::sin(-dip), std::cos(-dip) * std::sin(azimuth));
+        const std::optional<glm::dvec2> p = projectToImage(camera, eye + 1000.0 * d);
+        if (p && p->x >= 0.0 && p->y >= 0.0 && p->x <= camera.size.x && p->y <= camera.size.y)
+            points.push_back(*p);
+    }
+    return points;
+}
+
 std::string objectClassOf(const SceneObject& object)
 {
     if (object.path.starts_with(kBuiltinObjectPrefix))

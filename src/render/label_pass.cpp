@@ -111,6 +111,9 @@ FrameLabels Renderer::Impl::drawLabels(const Camera& camera, glm::ivec2 size)
     labels.classes = labelClassesOf(scene);
     labels.camera = calibrationOf(camera, size);
     labels.horizon = horizonOf(labels.camera);
+    const double eyeHeight_m = camera.position_m.y - level();
+    labels.trueHorizonDip_deg = glm::degrees(horizonDip_rad(eyeHeight_m));
+    labels.trueHorizon_px = trueHorizonOf(labels.camera, eyeHeight_m);
     // Each object's box: its mesh's, at its pose (the sea frame's, lifted
     // to the world's level).
     const glm::dmat4 toWorld = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, level(), 0.0));

@@ -130,6 +130,7 @@ FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, c
             out.instance[to] = wide.instance[from];
         }
     out.classes = wide.classes;
+    out.trueHorizonDip_deg = wide.trueHorizonDip_deg;
     out.objects = wide.objects;
     out.camera = c;
     out.horizon = horizonOf(c);
@@ -204,8 +205,11 @@ SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double t
         frame.image.height = size.y;
         frame.image.rgba.resize(std::size_t(size.x) * std::size_t(size.y) * 4);
         distortImage(source, frame.image, lens, c);
-        if (labels)
+        if (labels) {
             frame.labels = distortLabels(renderer.renderLabels(pinhole, wide), lens, c);
+            frame.labels->trueHorizon_px =
+                trueHorizonOf(c, camera.position_m.y - renderer.scene().water.level_m);
+        }
     }
     exposeAndNoise(frame.image, settings, time_s);
     return frame;
