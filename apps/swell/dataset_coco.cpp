@@ -15,9 +15,7 @@ namespace swell::app {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string readWhole(const fs::path& path)
+std::string readFileBytes(const fs::path& path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in)
@@ -27,10 +25,12 @@ std::string readWhole(const fs::path& path)
     return text.str();
 }
 
+namespace {
+
 // A uint16 (H, W) array from an .npy file this program wrote.
 std::vector<std::uint16_t> readInstances(const fs::path& path, int width, int height)
 {
-    const std::string bytes = readWhole(path);
+    const std::string bytes = readFileBytes(path);
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     if (bytes.size() < 10 || bytes.compare(0, 6, "\x93NUMPY") != 0)
         throw Error(fmt::format("{} is not an .npy file", path.string()));
@@ -74,7 +74,7 @@ Json cocoJson(const fs::path& out, int count, const std::vector<std::string>& cl
     for (int i = 0; i < count; ++i) {
         const fs::path png = out / "samples" / fmt::format("{:06d}.png", i);
         const std::vector<fs::path> files = labelFilePaths(png);
-        const Json sample = Json::parse(readWhole(files[5]));
+        const Json sample = Json::parse(readFileBytes(files[5]));
         const int width = sample["size"][0], height = sample["size"][1];
         images.push_back({{"id", i}, {"file_name", fmt::format("samples/{:06d}.png", i)}, {"width", width}, {"height", height}});
         if (sample["objects"].empty())

@@ -24,7 +24,6 @@
 #include <cstdio>
 #include <fstream>
 #include <set>
-#include <sstream>
 
 namespace swell::app {
 
@@ -51,14 +50,6 @@ std::pair<int, int> parseShard(const std::string& shard)
                                                   "(1/4 .. 4/4 for four machines)",
                                                   shard));
     return {k, n};
-}
-
-std::string readWhole(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 // The folder exists (created if missing) and takes new files.
@@ -101,7 +92,7 @@ void checkManifest(const fs::path& out, const Sweep& sweep, const Scene& base)
     if (fs::exists(path, error)) {
         Json existing;
         try {
-            existing = Json::parse(readWhole(path));
+            existing = Json::parse(readFileBytes(path));
         } catch (const std::exception& e) {
             throw InputError({path.string()}, fmt::format("not a dataset manifest: {}", e.what()));
         }

@@ -32,7 +32,8 @@ glm::dmat3 rayFromPixel(const Camera& camera, const glm::dmat4& view, glm::ivec2
 
 } // namespace
 
-void Renderer::Impl::drawLabelPass(const Camera& camera, const View& view, glm::ivec2 size)
+void Renderer::Impl::drawLabelPass(const Camera& camera, const View& view, glm::ivec2 size,
+                                   const std::vector<ObjectLabel>& objects)
 {
     if (!labelPrograms || labelVariant != variant) {
         labelPrograms = buildLabelPrograms(sources, variant);
@@ -55,14 +56,11 @@ void Renderer::Impl::drawLabelPass(const Camera& camera, const View& view, glm::
     beginPass(labelTarget.framebuffer(), viewport, v.depth, std::nullopt);
     labelTarget.clear(float(v.depth.cleared));
 
-    // The world: the terrain, then each object with its class and instance
-    // (scene.objects[i] is instance i + 1); the hulls' volumes into depth only.
-    const std::vector<std::string> classes = labelClassesOf(scene);
+    // The world: the terrain, then each object with its class and instance;
+    // the hulls' volumes into depth only.
     std::vector<glm::uvec2> objectLabels;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const auto at = std::find(classes.begin(), classes.end(), objectClassOf(scene.objects[i]));
-        objectLabels.emplace_back(unsigned(at - classes.begin()), unsigned(i + 1));
-    }
+    for (const ObjectLabel& o : objects)
+        objectLabels.emplace_back(o.semanticClass, o.instance);
     SceneWorld own(world, p.mesh, p.mesh, v.poses, v.island, counters);
     own.setLabels(glm::uvec2(SWELL_LABEL_TERRAIN, 0u), std::move(objectLabels));
     own.setMainPassInAir(false);
@@ -94,28 +92,11 @@ FrameLabels Renderer::Impl::drawLabels(const Camera& camera, glm::ivec2 size)
     requireSimulation();
     if (size.x <= 0 || size.y <= 0)
         throw Error(fmt::format("renderLabels: the size must be positive, not {}x{}", size.x, size.y));
-    const View view = viewOf(camera, size);
-    {
-        const SavedGlState saved;
-        try {
-            drawLabelPass(camera, view, size);
-        } catch (...) {
-            saved.restore();
-            throw;
-        }
-        saved.restore();
-    }
     FrameLabels labels;
     labels.size = size;
-    labelTarget.read(labels.range_m, labels.normal, labels.semantic, labels.instance);
     labels.classes = labelClassesOf(scene);
-    labels.camera = calibrationOf(camera, size);
-    labels.horizon = horizonOf(labels.camera);
-    const double eyeHeight_m = camera.position_m.y - level();
-    labels.trueHorizonDip_deg = glm::degrees(horizonDip_rad(eyeHeight_m));
-    labels.trueHorizon_px = trueHorizonOf(labels.camera, eyeHeight_m);
-    // Each object's box: its mesh's, at its pose (the sea frame's, lifted
-    // to the world's level).
+    // Each object: instance i + 1 for scene.objects[i], its class; and its
+    // box, its mesh's at its pose (the sea frame's, lifted to the world's level).
     const glm::dmat4 toWorld = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, level(), 0.0));
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         ObjectLabel o;
@@ -132,6 +113,23 @@ FrameLabels Renderer::Impl::drawLabels(const Camera& camera, glm::ivec2 size)
         }
         labels.objects.push_back(std::move(o));
     }
+    const View view = viewOf(camera, size);
+    {
+        const SavedGlState saved;
+        try {
+            drawLabelPass(camera, view, size, labels.objects);
+        } catch (...) {
+            saved.restore();
+            throw;
+        }
+        saved.restore();
+    }
+    labelTarget.read(labels.range_m, labels.normal, labels.semantic, labels.instance);
+    labels.camera = calibrationOf(camera, size);
+    labels.horizon = horizonOf(labels.camera);
+    const double eyeHeight_m = camera.position_m.y - level();
+    labels.trueHorizonDip_deg = glm::degrees(horizonDip_rad(eyeHeight_m));
+    labels.trueHorizon_px = trueHorizonOf(labels.camera, eyeHeight_m);
     measureObjectBoxes(labels);
     return labels;
 }

@@ -280,7 +280,7 @@ struct Renderer::Impl {
 
     // The label pass (render/label_pass.cpp) for a camera at the simulated time.
     FrameLabels drawLabels(const Camera& camera, glm::ivec2 size);
-    void drawLabelPass(const Camera& camera, const View& view, glm::ivec2 size);
+    void drawLabelPass(const Camera& camera, const View& view, glm::ivec2 size, const std::vector<ObjectLabel>& objects);
 
     // Makes `next` the scene and `nextSceneModel` (when given) its model,
     // rebuilding what `effects` and a changed model file ask for. Everything

@@ -1,6 +1,7 @@
 // A frame through the scene camera's lens and sensor (swell/sensor.h).
 #include "swell/sensor.h"
 
+#include "core/counter_random.h"
 #include "swell/error.h"
 #include "swell/renderer.h"
 
@@ -36,17 +37,9 @@ const std::array<double, 256>& srgbToLinear()
 
 std::uint8_t toByte(double linear) { return std::uint8_t(std::lround(std::clamp(encodeSrgb(std::max(linear, 0.0)), 0.0, 1.0) * 255.0)); }
 
-// SplitMix64's finaliser (Steele, Lea & Flood 2014): a counter-based
-// stream, so each pixel's noise depends on its own key alone.
-std::uint64_t mix(std::uint64_t x)
-{
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
-
-double uniform(std::uint64_t key) { return (double(mix(key) >> 11) + 0.5) * 0x1.0p-53; }
+// A uniform in (0, 1) from its own key (core/counter_random.h): each
+// pixel's noise depends on its key alone. Never 0, for Box-Muller's log.
+double uniform(std::uint64_t key) { return detail::unitFromBits(detail::splitMix64(key)) + 0x1.0p-54; }
 
 // The pinhole frame is drawn at this many times the output's focal length,
 // so that a label taken from its nearest pixel lies within 0.5/1.5 of a
@@ -159,7 +152,8 @@ void exposeAndNoise(Image& image, const CameraSettings& s, double time_s)
         return;
     const std::array<double, 256>& linear = srgbToLinear();
     const double gain = std::exp2(s.exposure_ev);
-    const std::uint64_t frameKey = mix(mix(std::uint64_t(s.noiseSeed)) ^ std::bit_cast<std::uint64_t>(time_s));
+    const std::uint64_t frameKey =
+        detail::splitMix64(detail::splitMix64(std::uint64_t(s.noiseSeed)) ^ std::bit_cast<std::uint64_t>(time_s));
     for (std::size_t i = 0; i < image.rgba.size(); ++i) {
         if (i % 4 == 3)
             continue;

@@ -3,6 +3,7 @@
 // sample drawn from per-key random streams.
 #include "swell/sweep.h"
 
+#include "core/counter_random.h"
 #include "core/input_file.h"
 #include "scene/places.h"
 #include "scene/suggestions.h"
@@ -165,15 +166,6 @@ SweepKey readKey(const std::string& key, const toml::node& node, const Places& p
     return s;
 }
 
-// Splittable 64-bit mixing (Steele, Lea & Flood 2014, SplitMix64's finaliser).
-std::uint64_t mix(std::uint64_t x)
-{
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
-
 // A key's random stream for sample i: FNV-1a of the key, mixed with the seed and i.
 class Stream {
 public:
@@ -182,13 +174,14 @@ public:
         std::uint64_t h = 0xcbf29ce484222325ull;
         for (char c : key)
             h = (h ^ std::uint8_t(c)) * 0x100000001b3ull;
-        state_ = mix(mix(seed) ^ mix(h) ^ mix(std::uint64_t(index) + 0x51ull));
+        using detail::splitMix64;
+        state_ = splitMix64(splitMix64(seed) ^ splitMix64(h) ^ splitMix64(std::uint64_t(index) + 0x51ull));
     }
     // Uniform in [0, 1), 53 bits.
     double next()
     {
-        state_ = mix(state_);
-        return double(state_ >> 11) * 0x1.0p-53;
+        state_ = detail::splitMix64(state_);
+        return detail::unitFromBits(state_);
     }
 
 private:
