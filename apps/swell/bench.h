@@ -70,7 +70,9 @@ class PassRecorder : public PassObserver {
 public:
     // pipelineStatistics: the context has GL_ARB_pipeline_statistics_query.
     // gpuTimers: record GL_TIME_ELAPSED (meaningless on software rasterisers).
-    PassRecorder(bool pipelineStatistics, bool gpuTimers);
+    // stages: record the passes a wave model names inside "ocean" (its
+    // stages); otherwise they are not told apart, and cost no glFinish.
+    PassRecorder(bool pipelineStatistics, bool gpuTimers, bool stages = false);
     ~PassRecorder() override;
     PassRecorder(const PassRecorder&) = delete;
     PassRecorder& operator=(const PassRecorder&) = delete;
@@ -101,6 +103,8 @@ private:
     void stopQueries(size_t index);
 
     std::unique_ptr<Queries> queries_;
+    bool stages_ = false;
+    int ignoredDepth_ = 0; // passes begun inside "ocean" and not recorded, still open
     std::vector<Open> open_;
     FrameSample frame_;
     std::chrono::steady_clock::time_point frameStart_;

@@ -103,11 +103,6 @@ void checkGl(const char* stage)
     throw Error(fmt::format("swell bench: GL error 0x{:04x} while {}", error, stage));
 }
 
-bool softwareRasterizer(const std::string& glRenderer)
-{
-    return glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos;
-}
-
 } // namespace
 
 } // namespace bench
@@ -156,10 +151,10 @@ int runBench(const BenchOptions& options)
     r.warmup = options.warmup;
     r.frameStep_s = kFrameStep_s;
     r.pipelineStatistics = epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query");
-    r.gpuTimers = !softwareRasterizer(r.machine.glRenderer);
+    r.gpuTimers = !gl::isSoftwareRasterizer();
 
     const OffscreenTarget output = makeOffscreenTarget(r.size, GL_RGBA8);
-    PassRecorder recorder(r.pipelineStatistics, r.gpuTimers);
+    PassRecorder recorder(r.pipelineStatistics, r.gpuTimers, options.stages);
     renderer.setPassObserver(&recorder);
     checkGl("creating the benchmark's targets and queries");
 

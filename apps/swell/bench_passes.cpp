@@ -72,7 +72,8 @@ struct PassRecorder::Queries {
         GL_CLIPPING_INPUT_PRIMITIVES_ARB, GL_CLIPPING_OUTPUT_PRIMITIVES_ARB};
 };
 
-PassRecorder::PassRecorder(bool pipelineStatistics, bool gpuTimers) : queries_(std::make_unique<Queries>())
+PassRecorder::PassRecorder(bool pipelineStatistics, bool gpuTimers, bool stages)
+    : queries_(std::make_unique<Queries>()), stages_(stages)
 {
     Queries& q = *queries_;
     q.statistics = pipelineStatistics;
@@ -96,6 +97,7 @@ void PassRecorder::beginFrame()
 {
     frame_ = {};
     open_.clear();
+    ignoredDepth_ = 0;
     glFinish();
     frameStart_ = Clock::now();
     frameCpuStart_ms_ = processCpu_ms();
@@ -149,6 +151,10 @@ void PassRecorder::stopQueries(size_t index)
 
 void PassRecorder::beginPass(const char* name)
 {
+    if (ignoredDepth_ > 0 || (!stages_ && !open_.empty() && frame_.passes[open_.back().index].name == "ocean")) {
+        ++ignoredDepth_;
+        return;
+    }
     glFinish();
     if (!open_.empty())
         stopQueries(open_.back().index);
@@ -164,6 +170,10 @@ void PassRecorder::beginPass(const char* name)
 
 void PassRecorder::endPass(const char* name)
 {
+    if (ignoredDepth_ > 0) {
+        --ignoredDepth_;
+        return;
+    }
     if (open_.empty() || frame_.passes[open_.back().index].name != name)
         throw Error(fmt::format("swell bench: pass '{}' ended but was not the one running", name));
     glFinish();

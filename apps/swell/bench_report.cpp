@@ -117,22 +117,40 @@ std::string passParent(const std::vector<FrameSample>& frames, const std::string
     return {};
 }
 
-// One figure of a pass (or of the whole frame) over the frames that have it.
+// One figure of a pass (or of the whole frame) over the frames that have it:
+// in each frame, the sum over the pass's runs (a stage of the wave model's
+// may run more than once in a frame).
 std::vector<double> passSeries(const std::vector<FrameSample>& frames, const std::string& name, double PassSample::*field)
 {
     std::vector<double> out;
-    for (const FrameSample& f : frames)
-        if (const PassSample* p = f.find(name))
-            out.push_back(p->*field);
+    for (const FrameSample& f : frames) {
+        double sum = 0.0;
+        bool found = false;
+        for (const PassSample& p : f.passes)
+            if (p.name == name) {
+                sum += p.*field;
+                found = true;
+            }
+        if (found)
+            out.push_back(sum);
+    }
     return out;
 }
 
 std::vector<double> passGpu(const std::vector<FrameSample>& frames, const std::string& name)
 {
     std::vector<double> out;
-    for (const FrameSample& f : frames)
-        if (const PassSample* p = f.find(name); p && p->gpu_ms)
-            out.push_back(*p->gpu_ms);
+    for (const FrameSample& f : frames) {
+        double sum = 0.0;
+        bool found = false;
+        for (const PassSample& p : f.passes)
+            if (p.name == name && p.gpu_ms) {
+                sum += *p.gpu_ms;
+                found = true;
+            }
+        if (found)
+            out.push_back(sum);
+    }
     return out;
 }
 
@@ -148,8 +166,9 @@ PassCounters passTotal(const std::vector<FrameSample>& frames, const std::string
 {
     PassCounters total;
     for (const FrameSample& f : frames)
-        if (const PassSample* p = f.find(name))
-            total += p->counters;
+        for (const PassSample& p : f.passes)
+            if (p.name == name)
+                total += p.counters;
     return total;
 }
 
@@ -227,9 +246,9 @@ void printReport(const Results& r)
     std::printf("Time per pass, ms. wall: steady clock between glFinish calls; CPU: process CPU time (all\n"
                 "threads) over the same span. floor: the same pass with trivial shading (least)%s\n",
                 r.gpuTimers ? "; GPU: GL_TIME_ELAPSED (median)" : "");
-    std::printf("  %-14s %29s %9s | %17s | %14s%s\n", "", "------------ wall -----------", "CPU", "----- floor -----",
+    std::printf("  %-16s %29s %9s | %17s | %14s%s\n", "", "------------ wall -----------", "CPU", "----- floor -----",
                 "- real/floor -", r.gpuTimers ? " |       GPU" : "");
-    std::printf("  %-14s %9s %9s %9s %9s | %8s %8s | %6s %7s%s\n", "pass", "median", "p95", "max", "median", "wall",
+    std::printf("  %-16s %9s %9s %9s %9s | %8s %8s | %6s %7s%s\n", "pass", "median", "p95", "max", "median", "wall",
                 "CPU", "wall", "CPU", r.gpuTimers ? " |    median" : "");
     auto row = [&](const std::string& label, const std::vector<double>& wall, const std::vector<double>& cpu,
                    const std::vector<double>& floorWall, const std::vector<double>& floorCpu,
@@ -238,9 +257,13 @@ void printReport(const Results& r)
         std::string gpuColumn;
         if (r.gpuTimers)
             gpuColumn = gpu.empty() ? fmt::format(" | {:>9}", "-") : fmt::format(" | {:9.3f}", summarize(gpu).median);
-        std::printf("  %-14s %9.3f %9.3f %9.3f %9.3f | %8.3f %8.3f | %6.1f %7.1f%s\n", label.c_str(), w.median, w.p95,
-                    w.max, c.median, floorCost(fw), floorCost(fc), ratio(w.median, floorCost(fw)), ratio(c.median, floorCost(fc)),
-                    gpuColumn.c_str());
+        // A pass the floor frame does not have (a wave model's stages): no floor, no ratio.
+        const std::string floorColumns =
+            floorWall.empty() ? fmt::format("{:>8} {:>8} | {:>6} {:>7}", "-", "-", "-", "-")
+                              : fmt::format("{:8.3f} {:8.3f} | {:6.1f} {:7.1f}", floorCost(fw), floorCost(fc),
+                                            ratio(w.median, floorCost(fw)), ratio(c.median, floorCost(fc)));
+        std::printf("  %-16s %9.3f %9.3f %9.3f %9.3f | %s%s\n", label.c_str(), w.median, w.p95, w.max, c.median,
+                    floorColumns.c_str(), gpuColumn.c_str());
     };
     for (const std::string& name : names) {
         const int depth = passDepth(r.real, name);
@@ -283,12 +306,12 @@ void printReport(const Results& r)
     std::printf("Counters summed over the %d measured frames (exact: equal in every run)\n", r.frames);
     if (!r.pipelineStatistics)
         std::printf("  (no GL_ARB_pipeline_statistics_query: samples passed only)\n");
-    std::printf("  %-14s %14s %14s %12s %12s %12s %14s\n", "pass", "VS invocations", "FS invocations", "primitives",
+    std::printf("  %-16s %14s %14s %12s %12s %12s %14s\n", "pass", "VS invocations", "FS invocations", "primitives",
                 "clip in", "clip out", "samples passed");
     for (const std::string& name : names) {
         const PassCounters c = passTotal(r.real, name);
         const std::string label = std::string(size_t(passDepth(r.real, name)) * 2, ' ') + name;
-        std::printf("  %-14s %14llu %14llu %12llu %12llu %12llu %14llu\n", label.c_str(),
+        std::printf("  %-16s %14llu %14llu %12llu %12llu %12llu %14llu\n", label.c_str(),
                     (unsigned long long)c.vertexShaderInvocations, (unsigned long long)c.fragmentShaderInvocations,
                     (unsigned long long)c.primitivesSubmitted, (unsigned long long)c.clippingInputPrimitives,
                     (unsigned long long)c.clippingOutputPrimitives, (unsigned long long)c.samplesPassed);
@@ -372,10 +395,12 @@ void writeJson(const Results& r, const std::string& path)
         pass["wall_ms"] = summaryJson(realWall);
         pass["cpu_ms"] = summaryJson(realCpu);
         pass["gpu_ms"] = gpu.empty() ? Json(nullptr) : summaryJson(summarize(gpu));
-        pass["floor_wall_ms"] = summaryJson(floorWall);
-        pass["floor_cpu_ms"] = summaryJson(floorCpu);
-        pass["real_over_floor"] = ratio(realWall.median, floorCost(floorWall));
-        pass["real_over_floor_cpu"] = ratio(realCpu.median, floorCost(floorCpu));
+        // A pass the floor frame does not have (a wave model's stages): null.
+        const bool inFloor = !passSeries(r.floor, name, &PassSample::wall_ms).empty();
+        pass["floor_wall_ms"] = inFloor ? summaryJson(floorWall) : Json(nullptr);
+        pass["floor_cpu_ms"] = inFloor ? summaryJson(floorCpu) : Json(nullptr);
+        pass["real_over_floor"] = inFloor ? Json(ratio(realWall.median, floorCost(floorWall))) : Json(nullptr);
+        pass["real_over_floor_cpu"] = inFloor ? Json(ratio(realCpu.median, floorCost(floorCpu))) : Json(nullptr);
         pass["counters_total"] = countersJson(passTotal(r.real, name), r.pipelineStatistics);
         pass["floor_counters_total"] = countersJson(passTotal(r.floor, name), r.pipelineStatistics);
     }
@@ -433,8 +458,22 @@ void writeJson(const Results& r, const std::string& path)
             frame["camera"] = cameraJson(r.realCameras[i]);
         frame["wall_ms"] = f.wall_ms;
         frame["cpu_ms"] = f.cpu_ms;
+        // A pass run more than once in the frame (a wave model's stage): the sums.
+        std::vector<PassSample> merged;
+        for (const PassSample& p : f.passes) {
+            auto same = std::find_if(merged.begin(), merged.end(), [&](const PassSample& m) { return m.name == p.name; });
+            if (same == merged.end()) {
+                merged.push_back(p);
+                continue;
+            }
+            same->wall_ms += p.wall_ms;
+            same->cpu_ms += p.cpu_ms;
+            if (p.gpu_ms)
+                same->gpu_ms = same->gpu_ms.value_or(0.0) + *p.gpu_ms;
+            same->counters += p.counters;
+        }
         Json framePasses = Json::object();
-        for (const PassSample& p : f.passes)
+        for (const PassSample& p : merged)
             framePasses[p.name] = {{"wall_ms", p.wall_ms},
                                    {"cpu_ms", p.cpu_ms},
                                    {"gpu_ms", p.gpu_ms ? Json(*p.gpu_ms) : Json(nullptr)},

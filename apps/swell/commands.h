@@ -72,6 +72,7 @@ struct BenchOptions {
     int frames = 40;       // measured frames along the camera path
     int warmup = 5;        // frames rendered and discarded first
     std::string jsonPath;  // also write the results as JSON here
+    bool stages = false;   // also time the wave model's stages inside the "ocean" pass
     bool terms = false;    // also measure the water with each shading term left out, and each reflection lookup
     OutputSettings outputSettings;
     // Every frame from the scene's own camera (the view `swell view` opens

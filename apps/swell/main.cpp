@@ -205,6 +205,9 @@ int main(int argc, char** argv)
                                        "(each term left out in turn, then each lookup: {} renders a measured frame "
                                        "instead of 1)",
                                        swell::app::benchRendersPerFrameWithTerms()));
+    benchCommand->add_flag("--stages", bench.stages,
+                           "Also time each stage of the wave model's GPU work inside the ocean pass (a glFinish "
+                           "around each, which adds to the pass's time)");
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");

@@ -22,6 +22,7 @@
 #include "swell/gl/shader_sources.h"
 #include "swell/image.h"
 #include "swell/labels.h"
+#include "swell/pass_observer.h"
 #include "swell/scene.h"
 #include "swell/view.h"
 #include "swell/wave_model.h"
@@ -114,22 +115,6 @@ struct SWELL_API FrameCounters {
     GpuWork simulationGpu; // advanceTo()'s: the wave model's for the frame
     GpuWork viewsGpu;      // the views': the wave model's for each (none for Swell's own models)
     SimulationCpuTime simulationCpu;
-};
-
-// Told when each pass of a frame begins and ends (for timing and counters).
-// Passes: "ocean" (the wave model's simulation for the frame), "bodies" (the
-// floating bodies and their wake stepped on the CPU to the frame's time),
-// "wake" (the wake's frame blended and uploaded), "reflection",
-// "refraction", "waterline" (the mask, when the near plane meets the
-// waves), "main"; within "main", "underwater host" (draw(): the host's
-// geometry seen from under the water) and "water" for the water draw; then
-// "present" when the main pass's image is resolved, filtered or scaled. The
-// first three come from advanceTo(), the others from each view drawn.
-class SWELL_API PassObserver {
-public:
-    virtual ~PassObserver() = default;
-    virtual void beginPass(const char* name) = 0;
-    virtual void endPass(const char* name) = 0;
 };
 
 class SWELL_API Renderer {

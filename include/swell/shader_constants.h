@@ -71,6 +71,11 @@
 #define SWELL_UNIT_WAKE 12
 // A copy of the host's depth (Renderer::draw's underwater pass over the host's geometry).
 #define SWELL_UNIT_HOST_DEPTH 13
+// The level a mip chain's compute pass reads (shaders/mip_downsample.comp),
+// and how many levels one of its dispatches writes: a workgroup of
+// 2^(n-1) x 2^(n-1) invocations reduces a 2^n x 2^n block in shared memory.
+#define SWELL_UNIT_DOWNSAMPLE_SOURCE 14
+#define SWELL_DOWNSAMPLE_LEVELS 5
 // ...and its uniform block: where the cells lie.
 #define SWELL_BINDING_WAKE 2
 // Surface sources (swell/surface_source.h): the WaveSources block of

@@ -17,6 +17,7 @@
 #pragma once
 
 #include "swell/export.h"
+#include "swell/pass_observer.h"
 
 #include <glm/vec2.hpp>
 
@@ -88,9 +89,28 @@ public:
         return work;
     }
 
+    // Told of the stages of the model's GPU work within the "ocean" pass
+    // (swell/pass_observer.h), for the benchmark's timing; the renderer
+    // sets it. Null: no one is told.
+    void setStageObserver(PassObserver* observer) { stageObserver_ = observer; }
+
 protected:
+    void beginStage(const char* name) const
+    {
+        if (stageObserver_)
+            stageObserver_->beginPass(name);
+    }
+    void endStage(const char* name) const
+    {
+        if (stageObserver_)
+            stageObserver_->endPass(name);
+    }
+
     bool interactive_ = false;
     Work work_;
+
+private:
+    PassObserver* stageObserver_ = nullptr;
 };
 
 } // namespace swell

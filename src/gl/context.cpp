@@ -167,4 +167,11 @@ std::string HeadlessContext::description() const
 
 const std::string& HeadlessContext::platform() const { return state_->platform; }
 
+bool isSoftwareRasterizer()
+{
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string_view name = renderer ? renderer : "";
+    return name.find("llvmpipe") != name.npos || name.find("softpipe") != name.npos;
+}
+
 } // namespace swell::gl

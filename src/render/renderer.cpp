@@ -135,6 +135,7 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
     if (gpu) {
         modelGpu = std::move(gpu);
         modelGpu->setInteractive(interactive);
+        modelGpu->setStageObserver(&stageRelay);
         seaMeanSquareSlope = meanSquareSlope(model());
     }
     if (programsChanged) {

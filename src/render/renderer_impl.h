@@ -80,6 +80,14 @@ struct Renderer::Impl {
     // parts; paused while the observer runs.
     mutable CpuParts cpuParts;
     PassObserver* observer = nullptr;
+    // The wave model's stages, passed on to the observer as passes inside
+    // "ocean", with the CPU parts paused as for the renderer's own.
+    struct StageRelay final : PassObserver {
+        const Impl* impl;
+        explicit StageRelay(const Impl* owner) : impl(owner) {}
+        void beginPass(const char* name) override { impl->notify(true, name); }
+        void endPass(const char* name) override { impl->notify(false, name); }
+    } stageRelay{this};
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
     std::optional<SkyBakeKey> bakedSky;
 

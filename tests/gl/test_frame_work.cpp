@@ -7,13 +7,16 @@
 // only against the same thread's clock read around the frame.
 #include "support/gl_test.h"
 
+#include "swell/gl/context.h"
 #include "swell/renderer.h"
 #include "support/open_sea.h"
 #include "swell/shader_constants.h"
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <time.h>
+#include <vector>
 
 namespace {
 
@@ -48,13 +51,27 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     // The step: transform the rows (evolving the spectra as they are read),
     // then the columns (in place), take the slopes' second moments, step the
     // foam; a barrier after each; mipmaps of the derivatives, the moments
-    // and the foam.
+    // and the foam. On a GPU each chain by compute dispatches of up to
+    // SWELL_DOWNSAMPLE_LEVELS levels, a barrier after each (a 256^2 chain's
+    // 8 levels: 2); on a software rasteriser by glGenerateTextureMipmap
+    // (gl/mip_downsample.h).
     const long long n = 1 << SWELL_FFT_LOG2_SIZE, cascades = SWELL_FFT_CASCADES;
     const long long foamSize = 1 << SWELL_FOAM_LOG2_SIZE, foamLevels = SWELL_FOAM_LEVELS;
     constexpr long long kRgba32f = 16, kR16f = 2; // bytes a texel
-    EXPECT_EQ(c.simulationGpu.dispatches, 4);
-    EXPECT_EQ(c.simulationGpu.barriers, 4);
-    EXPECT_EQ(c.simulationGpu.mipmaps, 3);
+    const auto dispatchesOfChain = [](long long log2Size) {
+        return int((log2Size + SWELL_DOWNSAMPLE_LEVELS - 1) / SWELL_DOWNSAMPLE_LEVELS);
+    };
+    if (gl::isSoftwareRasterizer()) {
+        EXPECT_EQ(c.simulationGpu.dispatches, 4);
+        EXPECT_EQ(c.simulationGpu.barriers, 4);
+        EXPECT_EQ(c.simulationGpu.mipmaps, 3);
+    } else {
+        const int chains = 2 * dispatchesOfChain(SWELL_FFT_LOG2_SIZE) + dispatchesOfChain(SWELL_FOAM_LOG2_SIZE);
+        EXPECT_EQ(c.simulationGpu.dispatches, 4 + chains);
+        EXPECT_EQ(c.simulationGpu.barriers, 4 + chains);
+        EXPECT_EQ(c.simulationGpu.dispatches, 10) << "today's 256^2 fields and foam";
+        EXPECT_EQ(c.simulationGpu.mipmaps, 0);
+    }
     const long long spectra = 2 * n * n * cascades * kRgba32f; // the displacement's and the derivatives' images
     const long long transforms = 2 * spectra;                  // written by each FFT pass
     const long long derivativeMips = mipLevelsAboveBase(n, cascades) * kRgba32f;
@@ -135,6 +152,43 @@ TEST_F(FrameWork, SimulationCpuTimeIsTheCallingThreadsWithoutTheObserver)
     EXPECT_GE(observer.spent_ms, 5.0 * observer.calls);
     EXPECT_LE(cpu.total_ms() + observer.spent_ms, around_ms + 1e-6)
         << "parts " << cpu.total_ms() << " ms, observer " << observer.spent_ms << " ms, thread " << around_ms << " ms";
+}
+
+// An observer that writes down every begin and end, indented by nesting.
+class PassLog : public PassObserver {
+public:
+    void beginPass(const char* name) override { log.push_back(std::string(size_t(depth++) * 2, ' ') + "+" + name); }
+    void endPass(const char* name) override { log.push_back(std::string(size_t(--depth) * 2, ' ') + "-" + name); }
+    std::vector<std::string> log;
+    int depth = 0;
+};
+
+// The spectral model tells the observer the stages of its GPU work, inside
+// the "ocean" pass and in the order it runs them (the benchmark times each:
+// issue 24, item 2), and nothing of them outside it.
+TEST_F(FrameWork, TheSpectralStepsStagesArePassesInsideTheOceanPass)
+{
+    const Scene scene = test::openSpectralStorm();
+    Renderer renderer(scene);
+    const Camera camera = cameraAt(scene.camera, 0.0);
+    renderer.renderImage(camera, 0.0, kSize);
+    PassLog observer;
+    renderer.setPassObserver(&observer);
+    renderer.renderImage(camera, kFrame_s, kSize);
+    renderer.setPassObserver(nullptr);
+    EXPECT_EQ(observer.depth, 0);
+    const std::vector<std::string> expected{
+        "+ocean",          "  +fft rows",     "  -fft rows",      "  +fft columns", "  -fft columns",
+        "  +slope mipmaps", "  -slope mipmaps", "  +foam",          "  -foam",        "  +foam mipmaps",
+        "  -foam mipmaps", "  +moments",      "  -moments",       "  +moment mipmaps", "  -moment mipmaps",
+        "-ocean"};
+    ASSERT_GE(observer.log.size(), expected.size());
+    EXPECT_EQ(std::vector<std::string>(observer.log.begin(), observer.log.begin() + std::ptrdiff_t(expected.size())),
+              expected);
+    // The views' passes after it: none of them a stage.
+    for (size_t i = expected.size(); i < observer.log.size(); ++i)
+        for (const char* stage : {"fft", "mipmaps", "foam", "moments"})
+            EXPECT_EQ(observer.log[i].find(stage), std::string::npos) << observer.log[i];
 }
 
 } // namespace

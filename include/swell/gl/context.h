@@ -31,6 +31,11 @@ SWELL_API bool installDebugHandler(DebugHandler* handler);
 // A handler for the apps: logs each distinct message once to stderr.
 SWELL_API DebugHandler logOnceDebugHandler();
 
+// Whether the current context's GL_RENDERER is a software rasteriser
+// (Mesa's llvmpipe or softpipe), where some GPU work is cheaper done
+// another way (the spectral model's foam replay, its mip chains).
+SWELL_API bool isSoftwareRasterizer();
+
 class SWELL_API HeadlessContext {
 public:
     // Creates and makes current a 4.5 core context; debug adds KHR_debug output.

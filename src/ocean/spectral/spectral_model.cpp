@@ -5,12 +5,14 @@
 // their second moments (spectral_moments.comp).
 #include "swell/spectral_model.h"
 
+#include "gl/mip_downsample.h"
 #include "ocean/spectral/foam_replay.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
 #include "swell/wave_model_gpu.h"
 #include "swell/constants.h"
+#include "swell/gl/context.h"
 #include "swell/gl/shader.h"
 
 #include <fmt/format.h>
@@ -100,7 +102,7 @@ class SpectralGpu final : public WaveModelGpu {
 public:
     SpectralGpu(std::shared_ptr<const SpectralField> field, const SpectralSettings& settings,
                 float foldThreshold, const gl::ShaderSources& shaders)
-        : field_(std::move(field)), settings_(settings), foldThreshold_(foldThreshold)
+        : field_(std::move(field)), settings_(settings), foldThreshold_(foldThreshold), downsampler_(shaders)
     {
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
@@ -166,9 +168,7 @@ public:
         // A software rasteriser runs the GPU's replay steps on the CPU at
         // about 18 times the cost of FoamReplay's (0.19 s against 0.011 s
         // a step on llvmpipe); a GPU keeps them.
-        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        const std::string_view name = renderer ? renderer : "";
-        if (name.find("llvmpipe") != name.npos || name.find("softpipe") != name.npos)
+        if (gl::isSoftwareRasterizer())
             cpuReplay_ = std::make_unique<FoamReplay>(field_, foldThreshold_, kFoldSoftness);
     }
 
@@ -306,9 +306,13 @@ private:
         glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kSpectrumFormat);
         glBindImageTexture(5, slopeMoments_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, kMomentsFormat);
         // Writes the moments' base level.
+        beginStage("moments");
         dispatch(kSize / kTile, kSize / kTile, kCascades, texelBytes(kMomentsFormat) * kTile * kTile);
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        endStage("moments");
+        beginStage("moment mipmaps");
         generateMipmaps(slopeMoments_, kMomentsFormat, kSize, kFieldLevels, kCascades);
+        endStage("moment mipmaps");
         for (const GLuint unit : {3u, 5u})
             glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         glUseProgram(0);
@@ -353,10 +357,15 @@ private:
         bind();
         glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kFoamFormat);
         // Writes every texel of each level's window (the base level).
+        beginStage("foam");
         dispatch(kFoamSize / kTile, kFoamSize / kTile, kFoamLevels, texelBytes(kFoamFormat) * kTile * kTile);
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        if (mipmaps)
+        endStage("foam");
+        if (mipmaps) {
+            beginStage("foam mipmaps");
             generateMipmaps(foam_, kFoamFormat, kFoamSize, kFoamFieldLevels, kFoamLevels);
+            endStage("foam mipmaps");
+        }
         glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, kFoamFormat);
         glUseProgram(0);
         previousOrigin_ = origin;
@@ -384,13 +393,20 @@ private:
         // One workgroup per row (then column) of each cascade, writing the
         // line of both images (displacement, derivatives).
         const long long twoSpectra = 2 * texelBytes(kSpectrumFormat);
+        beginStage("fft rows");
         dispatch(kSize, GLuint(cascades), 1, twoSpectra * kSize);
         barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        endStage("fft rows");
+        beginStage("fft columns");
         glUseProgram(fftColumns_.id());
         dispatch(kSize, GLuint(cascades), 1, twoSpectra * kSize);
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        if (cascades == kCascades)
+        endStage("fft columns");
+        if (cascades == kCascades) {
+            beginStage("slope mipmaps");
             generateMipmaps(derivatives_, kSpectrumFormat, kSize, kFieldLevels, kCascades);
+            endStage("slope mipmaps");
+        }
         for (GLuint unit = 0; unit < 4; ++unit)
             glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         glUseProgram(0);
@@ -411,12 +427,16 @@ private:
         glMemoryBarrier(bits);
         ++work_.barriers;
     }
-    // Levels 1 .. levels - 1 of a square array texture, from its base.
+    // Levels 1 .. levels - 1 of a square array texture, from its base
+    // (gl/mip_downsample.h: a compute pass on a GPU, the driver's own on a
+    // software rasteriser).
     void generateMipmaps(const gl::Texture& texture, GLenum format, int size, int levels, int layers)
     {
-        glGenerateTextureMipmap(texture.id());
-        ++work_.mipmaps;
-        work_.bytesWritten += texelBytes(format) * mipTexels(size, levels, layers, 1);
+        const gl::MipDownsampler::Work work = downsampler_.run(texture, format, size, levels, layers);
+        work_.dispatches += work.dispatches;
+        work_.barriers += work.barriers;
+        work_.mipmaps += work.driverChains;
+        work_.bytesWritten += texelBytes(format) * work.texelsWritten;
     }
     // Every level of the foam's windows to none.
     void clearFoam()
@@ -442,6 +462,7 @@ private:
     // The replay's steps before the last on the CPU: only on a software rasteriser.
     std::unique_ptr<FoamReplay> cpuReplay_;
     gl::Program fftRows_, fftColumns_, foamStep_, moments_;
+    gl::MipDownsampler downsampler_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
     GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
