@@ -1,0 +1,100 @@
+// The spectral model's GPU fields against its CPU twin's, texel by texel:
+// every cascade's displacement (Dx, Dy, Dz, dDx/dz) and derivatives
+// (dDy/dx, dDy/dz, dDx/dx, dDz/dz) after the GPU's evolution and inverse
+// FFT, at a time long after 0 (where the phases are large). Queries on the
+// drawn surface (the displacement) and its shading (the derivatives) stand
+// on these fields; a difference in one field shows here by cascade and
+// field, before any lookup, warp or filtering mixes them.
+#include "support/gl_test.h"
+
+#include "ocean/spectral/spectral_cpu.h"
+#include "ocean/spectral/spectral_field.h"
+#include "swell/gl/shader_sources.h"
+#include "swell/shader_constants.h"
+#include "swell/spectral_model.h"
+#include "swell/spectrum.h"
+#include "swell/wave_model_gpu.h"
+
+#include <epoxy/gl.h>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace swell;
+
+class SpectralFields : public test::GlTest {};
+
+// The RGBA32F array texture bound to a texture unit, level 0, every layer.
+std::vector<float> boundArray(GLuint unit)
+{
+    GLint name = 0;
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &name);
+    glActiveTexture(GL_TEXTURE0);
+    EXPECT_NE(name, 0) << "nothing bound to unit " << unit;
+    std::vector<float> texels(size_t(SWELL_FFT_SIZE) * SWELL_FFT_SIZE * SWELL_FFT_CASCADES * 4);
+    glGetTextureImage(GLuint(name), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+    return texels;
+}
+
+TEST_F(SpectralFields, TheGpusFieldsAreTheCpuTwins)
+{
+    SpectralSettings settings;
+    settings.wind.windSpeed_mps = 10.0;
+    const SpectralModel model(settings);
+    const std::unique_ptr<WaveModelGpu> gpu = model.createGpu(gl::ShaderSources::embedded());
+    constexpr double kTime_s = 1000.25;
+    gpu->prepareFrame({0.0, 0.0}, kTime_s);
+    gpu->bind();
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    const std::vector<float> displacement = boundArray(SWELL_UNIT_OCEAN0), derivatives = boundArray(SWELL_UNIT_OCEAN1);
+
+    // The twin, from the same field the model makes.
+    const spectral::CpuSurface twin(std::make_shared<const spectral::SpectralField>(
+        spectral::makeSpectralField(SeaSpectrum(settings.wind), settings.choppiness, settings.seed)));
+    const spectral::CpuSurface::Fields& fields = twin.fieldsAt(kTime_s);
+    const char* const names[8] = {"Dx", "Dy", "Dz", "dDx/dz", "dDy/dx", "dDy/dz", "dDx/dx", "dDz/dz"};
+    const int n = SWELL_FFT_SIZE;
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c)
+        for (int f = 0; f < 8; ++f) {
+            const std::vector<float>& gpuField = f < 4 ? displacement : derivatives;
+            const std::vector<float>& cpu = fields.values[size_t(c)][size_t(f)];
+            auto error = [&](int x, int z) {
+                x &= n - 1, z &= n - 1;
+                return double(gpuField[((size_t(c) * n + z) * n + x) * 4 + size_t(f % 4)]) - cpu[size_t(z) * n + x];
+            };
+            double worst = 0.0, sumSq = 0.0, errorSum = 0.0;
+            int worstX = 0, worstZ = 0;
+            for (int z = 0; z < n; ++z)
+                for (int x = 0; x < n; ++x) {
+                    const double v = cpu[size_t(z) * n + x];
+                    errorSum += error(x, z);
+                    if (std::abs(error(x, z)) > worst)
+                        worst = std::abs(error(x, z)), worstX = x, worstZ = z;
+                    sumSq += v * v;
+                }
+            const double rms = std::sqrt(sumSq / double(n * n));
+            std::printf("cascade %d %-7s rms %.3e, worst difference %.3e (%.2e of rms)\n", c, names[f], rms, worst,
+                        worst / std::max(rms, 1e-30));
+            // float FFTs of 256^2 on both sides, in different orders: 1e-4 of
+            // the field's rms covers their rounding many times over.
+            // Where it differs: the mean difference (a wrong mean), and the
+            // differences next to the worst along x and z (a wrong frequency's
+            // pattern: the Nyquist alternates, one low frequency barely moves).
+            std::string along;
+            for (int i = 0; i < 4; ++i)
+                along += fmt::format(" x+{}: {:.2e}, z+{}: {:.2e};", i, error(worstX + i, worstZ), i, error(worstX, worstZ + i));
+            EXPECT_LE(worst, 1e-4 * rms + 1e-9) << "cascade " << c << ", " << names[f] << ": mean difference "
+                                               << errorSum / double(n * n) << ", worst at " << worstX << ", " << worstZ
+                                               << ";" << along;
+        }
+}
+
+} // namespace
