@@ -100,9 +100,6 @@ struct Programs {
     BlockProgram underwaterHost;
     MeshProgram mesh;
     SkyBakeProgram skyBake;
-    // The physical sky's bake: built when a scene first asks for it (its
-    // ray march is the costliest shader to compile), empty until then.
-    SkyBakeProgram skyBakePhysical;
     // water, sky and mesh again, built with SWELL_SEEN_FROM_BELOW 0 for the
     // passes in which no pixel looks out from below the water (the waterline
     // mask says "above" everywhere: the reflection and refraction passes, and

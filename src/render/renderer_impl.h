@@ -89,6 +89,11 @@ struct Renderer::Impl {
     SkyLight skyLight;
     std::optional<std::pair<SkyBakeKey, bool>> skyLightKey;
     AtmosphereTextures atmosphereTextures;
+    // The physical sky's bake program: built when a scene first asks for it
+    // (its ray march is the costliest shader here to compile) and kept
+    // across variants, which it does not depend on; empty until then, after
+    // a shader reload and while the sky is not physical.
+    SkyBakeProgram physicalSkyBake;
     // The sky's light for the scene, found again when the sun or sky changed.
     const SkyLight& currentSkyLight();
 

@@ -72,8 +72,11 @@ const SkyLight& Renderer::Impl::currentSkyLight()
     const std::pair<SkyBakeKey, bool> key{skyBakeKeyOf(scene), usesPhysicalSky(scene)};
     if (skyLightKey != key) {
         atmosphere = key.second ? atmosphereFor(scene.sky.atmosphere) : nullptr;
-        if (!atmosphere)
-            atmosphereTextures = {}; // given back while the sky is not physical
+        if (!atmosphere) {
+            // Given back while the sky is not physical.
+            atmosphereTextures = {};
+            physicalSkyBake = {};
+        }
         skyLight = skyLightOf(scene, atmosphere.get());
         skyLightKey = key;
     }
@@ -234,12 +237,12 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         bindFrame(PassMain, base);
         glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
         if (usesPhysicalSky(scene)) {
-            if (!programs.skyBakePhysical)
-                programs.skyBakePhysical = SkyBakeProgram(sources, variant, true);
+            if (!physicalSkyBake)
+                physicalSkyBake = SkyBakeProgram(sources, variant, true);
             atmosphereTextures.upload(*atmosphere);
             atmosphereTextures.bind();
-            programs.skyBakePhysical.setAtmosphere(scene.sky.exposure, scene.sky.atmosphere.mieScale);
-            bakeProceduralSky(programs.skyBakePhysical, world.skyCube, emptyVao.id());
+            physicalSkyBake.setAtmosphere(scene.sky.exposure, scene.sky.atmosphere.mieScale);
+            bakeProceduralSky(physicalSkyBake, world.skyCube, emptyVao.id());
             glBindTextureUnit(SWELL_UNIT_SKY_TRANSMITTANCE, 0);
             glBindTextureUnit(SWELL_UNIT_SKY_MULTISCATTER, 0);
         } else {
