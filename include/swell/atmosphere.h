@@ -44,13 +44,13 @@ SWELL_API AtmosphereCoefficients atmosphereAt(double altitude_m, const Atmospher
 // The fraction of light that crosses the atmosphere from a point at radius
 // r_m (from the Earth's centre) along a direction whose zenith angle's
 // cosine is mu, to the top: exp(-optical depth) (Bruneton & Neyret 2008,
-// eq. 5), integrated with `steps` trapezoids. 0 where the ray meets the ground.
+// sec. 2), integrated with `steps` trapezoids. 0 where the ray meets the ground.
 SWELL_API glm::dvec3 transmittanceToTop(double r_m, double mu, const AtmosphereSettings& settings, int steps = 512);
 
 // Phase functions, 1/sr, of the cosine between the light's and the view's
 // directions: Rayleigh's (Bruneton & Neyret 2008, eq. 2) and the
 // Cornette-Shanks form of Henyey-Greenstein for aerosols (Cornette & Shanks
-// 1992, eq. 4, as in Bruneton & Neyret 2008, eq. 4).
+// 1992, as in Bruneton & Neyret 2008, eq. 4).
 SWELL_API double rayleighPhase(double cosAngle);
 SWELL_API double miePhase(double cosAngle, double g);
 
@@ -105,7 +105,7 @@ private:
 
 // The nine real spherical harmonics Y_00, Y_1-1, Y_10, Y_11, Y_2-2, Y_2-1,
 // Y_20, Y_21, Y_22 at a unit direction, in Ramamoorthi & Hanrahan's (2001,
-// eq. 3) Cartesian form with y as the axis usually called z (up here).
+// sec. 2) Cartesian form with y (up here) as the axis they call z.
 SWELL_API std::array<double, 9> shHarmonics(glm::dvec3 n);
 
 // The irradiance the expansion gives on a surface facing unit n.

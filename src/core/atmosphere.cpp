@@ -30,7 +30,7 @@ constexpr int kMsSize = SWELL_MULTISCATTER_SIZE;
 constexpr int kMsDirectionsPerAxis = 8;
 constexpr int kMsSteps = 20;
 // The transmittance table's trapezoids per ray (Bruneton 2017 uses 500;
-// 128 agree with 4096 within 4e-4 of the value along every ray).
+// 128 agree with 4096 within 1e-3 of the value along every ray tried).
 constexpr int kTableSteps = 128;
 
 // Distance along (r, mu) to the top of the atmosphere, and to the ground
@@ -106,8 +106,8 @@ glm::dvec2 multiScatteringCoordinates(double r, double muSun)
 }
 
 // The scattering a sample adds towards the eye, per unit solar irradiance
-// and unit length: sunlight scattered once (Hillaire 2020, eq. 3's S term
-// with the phase functions), plus Psi_ms times the scattering coefficient
+// and unit length: sunlight scattered once (Hillaire 2020, sec. 4, the
+// in-scattering term with the phase functions), plus Psi_ms times the scattering coefficient
 // (Hillaire 2020, sec. 5.5, the multiple-scattering term added to the
 // in-scattering integrand).
 glm::dvec3 inScattering(const AtmosphereCoefficients& c, glm::dvec3 sunTransmittance, glm::dvec3 multiple,
@@ -256,8 +256,8 @@ glm::dvec3 Atmosphere::skyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection
     const double length = distanceToTop(r0, d.y);
     const double cosAngle = glm::dot(d, sun);
     const double phaseRayleigh = rayleighPhase(cosAngle), phaseMie = miePhase(cosAngle, SWELL_MIE_ASYMMETRY);
-    // Single scattering along the ray (Hillaire 2020, eq. 1 and 3; Bruneton
-    // & Neyret 2008, eq. 7), by the midpoint rule on segments whose ends
+    // Single scattering along the ray (Hillaire 2020, sec. 4; Bruneton &
+    // Neyret 2008, sec. 2), by the midpoint rule on segments whose ends
     // grow as the square of their index.
     glm::dvec3 depth(0.0), radiance(0.0);
     const int n = steps;
@@ -285,7 +285,7 @@ glm::dvec3 Atmosphere::sunTransmittance(glm::dvec3 sunDirection) const
 std::array<double, 9> shHarmonics(glm::dvec3 n)
 {
     // Real spherical harmonics, orthonormal over the sphere (Ramamoorthi &
-    // Hanrahan 2001, eq. 3), y up.
+    // Hanrahan 2001, sec. 2), y up.
     return {0.282095,
             0.488603 * n.z,
             0.488603 * n.y,
@@ -310,7 +310,7 @@ std::array<glm::dvec3, 9> Atmosphere::irradianceSh(glm::dvec3 sunDirection) cons
 {
     const glm::dvec3 sun = glm::normalize(sunDirection);
     // Radiance projected on the harmonics (Ramamoorthi & Hanrahan 2001,
-    // eq. 10) over equal-area cells of each hemisphere: the sky above, and
+    // sec. 3) over equal-area cells of each hemisphere: the sky above, and
     // below the ground's Lambertian radiance, albedo / pi times the sun's
     // and the sky's irradiance on it.
     constexpr int kRings = 24, kSectors = 48;
@@ -341,7 +341,7 @@ std::array<glm::dvec3, 9> Atmosphere::irradianceSh(glm::dvec3 sunDirection) cons
         }
     // Irradiance is radiance convolved with the clamped cosine: band l
     // scaled by A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4 (Ramamoorthi &
-    // Hanrahan 2001, eq. 8).
+    // Hanrahan 2001, sec. 3).
     const double a[9] = {kPi, 2.0 * kPi / 3.0, 2.0 * kPi / 3.0, 2.0 * kPi / 3.0, kPi / 4.0, kPi / 4.0, kPi / 4.0, kPi / 4.0, kPi / 4.0};
     for (size_t i = 0; i < 9; ++i)
         radiance[i] *= a[i];
