@@ -78,6 +78,9 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     float projectionFocalY; // the projection's [1][1]: 1 / tan(half the vertical field of view)
     GridLevel gridLevels[SWELL_GRID_LEVELS];
     WorldBox worldBoxes[SWELL_MAX_WORLD_BOXES];
+    // World objects' ambient light: order-2 spherical harmonics of the sky's
+    // irradiance (rgb; Ramamoorthi & Hanrahan 2001), see skyAmbient() in lighting.glsl.
+    vec4 ambientSh[9];
 };
 
 // The point the real camera sees at texture coordinate uv and window depth.

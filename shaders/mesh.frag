@@ -1,4 +1,4 @@
-// World geometry: Phong diffuse from the sun, sky ambient, fog.
+// World geometry: Phong diffuse from the sun, the sky's ambient light, fog.
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"
@@ -24,7 +24,7 @@ void main()
     writeLabels(distance(vPosition, eyePosition), n, label.x, label.y);
     return;
 #endif
-    vec3 ambient = mix(skyHorizon, skyZenith, n.y * 0.5 + 0.5) * 0.45;
+    vec3 ambient = max(skyAmbient(n), vec3(0.0));
     vec3 light = ambient + sunColor * sunIntensity * phongDiffuse(n);
     vec3 color = vColor * light;
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS

@@ -1,7 +1,14 @@
 // Renders one face of the procedural sky cubemap (drawn with fullscreen.vert
-// into a face of the cubemap; see src/render/sky_cubemap.cpp).
+// into a face of the cubemap; see src/render/sky_cubemap.cpp): the gradient
+// sky, or with SWELL_SKY_PHYSICAL 1 the atmosphere's.
 #include "frame.glsl"
+#if SWELL_SKY_PHYSICAL
+#include "atmosphere.glsl"
+// SkySettings::exposure: displayed colour per unit radiance over the sun's irradiance.
+uniform float skyExposure;
+#else
 #include "sky_procedural.glsl"
+#endif
 
 uniform int face; // 0..5: +x, -x, +y, -y, +z, -z
 
@@ -25,5 +32,10 @@ vec3 faceDirection(int f, vec2 st)
 void main()
 {
     // Linear radiance: the cubemap is half-float, as the glow can exceed 1.
-    fragColor = vec4(proceduralSky(normalize(faceDirection(face, vNdc))), 1.0);
+    vec3 d = normalize(faceDirection(face, vNdc));
+#if SWELL_SKY_PHYSICAL
+    fragColor = vec4(skyExposure * atmosphereSkyRadiance(d, sunDirection), 1.0);
+#else
+    fragColor = vec4(proceduralSky(d), 1.0);
+#endif
 }

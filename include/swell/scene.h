@@ -5,6 +5,7 @@
 // swell/parameters.h; the comments below only summarise them.
 #pragma once
 
+#include "swell/atmosphere.h"
 #include "swell/error.h"
 #include "swell/export.h"
 
@@ -78,12 +79,24 @@ struct SWELL_API SunSettings {
     double intensity = 1.0;                   // multiplier, 0..20
 };
 
+// What the built-in sky is (when no cubemap faces are given).
+enum class SkyModel {
+    Gradient, // a hand-coloured gradient from horizon to zenith and a glow around the sun (the paper's look)
+    Physical, // the atmosphere's scattering of sunlight (swell/atmosphere.h); it also sets the sun's
+              // colour and intensity and the ambient light of world objects
+};
+
 struct SWELL_API SkySettings {
     // Six images (+x, -x, +y, -y, +z, -z), paths relative to the scene file.
     // Empty: the built-in procedural sky, coloured from the values below.
     std::vector<std::string> cubemapFaces;
-    glm::dvec3 zenithColor{0.18, 0.36, 0.70};  // linear RGB, 0..1
-    glm::dvec3 horizonColor{0.70, 0.80, 0.90}; // linear RGB, 0..1
+    SkyModel model = SkyModel::Gradient;
+    glm::dvec3 zenithColor{0.18, 0.36, 0.70};  // gradient: linear RGB, 0..1
+    glm::dvec3 horizonColor{0.70, 0.80, 0.90}; // gradient: linear RGB, 0..1
+    // Physical: the displayed linear colour per unit radiance over the sun's
+    // irradiance at the top of the atmosphere (1/sr), 0.01..1000.
+    double exposure = 10.0;
+    AtmosphereSettings atmosphere; // physical: aerosols and the ground's albedo
 };
 
 struct SWELL_API FogSettings {

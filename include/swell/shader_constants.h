@@ -144,4 +144,51 @@
 #define SWELL_GRID_GEOMETRIC 0
 #define SWELL_GRID_PAPER 1
 
+// The physical sky (swell/atmosphere.h, src/core/atmosphere.cpp and
+// shaders/atmosphere.glsl share these; docs/RENDERING.md). Lengths in m,
+// coefficients in 1/m, for the three wavelengths drawn as red, green and
+// blue: 680, 550 and 440 nm (Bruneton 2017's RGB wavelengths).
+// The Earth and the top of its atmosphere (Bruneton 2017's Earth).
+#define SWELL_ATMOSPHERE_BOTTOM_RADIUS_M 6360000.0
+#define SWELL_ATMOSPHERE_TOP_RADIUS_M 6420000.0
+// The eye's altitude for the baked sky, m: a deck's height (the sky hardly
+// changes over the first hundred metres).
+#define SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M 10.0
+// Rayleigh scattering at sea level, 1.24062e-6 / lambda^4 (lambda in um)
+// (Bruneton 2017; the same figures in Hillaire 2020, sec. 4), and its
+// scale height (Bruneton & Neyret 2008, sec. 2.1).
+#define SWELL_RAYLEIGH_SCATTERING_R 5.802e-6
+#define SWELL_RAYLEIGH_SCATTERING_G 13.558e-6
+#define SWELL_RAYLEIGH_SCATTERING_B 33.1e-6
+#define SWELL_RAYLEIGH_SCALE_HEIGHT_M 8000.0
+// Aerosols (Mie): Bruneton 2017's Angstrom beta 5.328e-3 over the scale
+// height (alpha 0: grey), single-scattering albedo 0.9, so extinction
+// 4.44e-6 and scattering 3.996e-6; Cornette-Shanks asymmetry g = 0.8.
+#define SWELL_MIE_EXTINCTION 4.44e-6
+#define SWELL_MIE_SCATTERING 3.996e-6
+#define SWELL_MIE_SCALE_HEIGHT_M 1200.0
+#define SWELL_MIE_ASYMMETRY 0.8
+// Ozone absorbs (it does not scatter): its peak coefficient (Hillaire 2020,
+// sec. 4), in a tent profile 1 at 25 km falling to 0 at 10 and 40 km
+// (Bruneton 2017's two linear layers).
+#define SWELL_OZONE_ABSORPTION_R 0.650e-6
+#define SWELL_OZONE_ABSORPTION_G 1.881e-6
+#define SWELL_OZONE_ABSORPTION_B 0.085e-6
+#define SWELL_OZONE_PEAK_ALTITUDE_M 25000.0
+#define SWELL_OZONE_HALF_WIDTH_M 15000.0
+// Steps of the sky's ray march, spaced quadratically (dense near the eye,
+// where the air is densest along a low ray): 40 keep the horizon's radiance
+// within 1% of a 4000-step march (tests/cpu/test_atmosphere.cpp).
+#define SWELL_SKY_MARCH_STEPS 40
+// The transmittance table: (view zenith, altitude) texels, in Bruneton
+// 2017's parametrisation (dense towards the horizon).
+#define SWELL_TRANSMITTANCE_MU_SIZE 256
+#define SWELL_TRANSMITTANCE_R_SIZE 64
+// Hillaire 2020's multiple-scattering table (sec. 5.5): (sun zenith
+// cosine, altitude), 32 x 32 as in the paper.
+#define SWELL_MULTISCATTER_SIZE 32
+// Their texture units (the physical sky's bake only).
+#define SWELL_UNIT_SKY_TRANSMITTANCE 14
+#define SWELL_UNIT_SKY_MULTISCATTER 15
+
 #endif

@@ -49,6 +49,9 @@ constexpr std::array<std::string_view, 3> kAntialiasing{"off", "msaa4", "fxaa"};
 static_assert(static_cast<int>(Antialiasing::Off) == 0 && static_cast<int>(Antialiasing::Msaa4) == 1
               && static_cast<int>(Antialiasing::Fxaa) == 2);
 
+constexpr std::array<std::string_view, 2> kSkyModels{"gradient", "physical"};
+static_assert(static_cast<int>(SkyModel::Gradient) == 0 && static_cast<int>(SkyModel::Physical) == 1);
+
 constexpr std::array<std::string_view, 2> kSpreadings{"mitsuyasu", "donelan-banner"};
 static_assert(static_cast<int>(SpreadingModel::Mitsuyasu) == 0 && static_cast<int>(SpreadingModel::DonelanBanner) == 1);
 
@@ -259,12 +262,31 @@ std::vector<Parameter> buildTable()
            {.key = "sun.intensity", .min = 0.0, .max = 20.0, .sliderMin = 0.0, .sliderMax = 20.0,
             .description = "sunlight multiplier"}),
         // [sky]
+        at([](auto& s, std::size_t) -> auto& { return s.sky.model; },
+           {.key = "sky.model", .kind = K::Choice, .min = 0.0, .max = kSkyModels.size() - 1.0, .sliderMin = 0.0,
+            .sliderMax = kSkyModels.size() - 1.0,
+            .description = "gradient: the colours below and a glow round the sun; physical: the atmosphere's scattering "
+                           "of sunlight, which also sets the sun's colour and intensity and objects' ambient light "
+                           "(sun.color and sun.intensity unused); the sky is baked again",
+            .choices = kSkyModels}),
         at([](auto& s, std::size_t) -> auto& { return s.sky.zenithColor; },
            {.key = "sky.zenith_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
-            .description = "procedural sky straight up, linear RGB"}),
+            .description = "gradient sky straight up, linear RGB"}),
         at([](auto& s, std::size_t) -> auto& { return s.sky.horizonColor; },
            {.key = "sky.horizon_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
-            .description = "procedural sky at the horizon, linear RGB"}),
+            .description = "gradient sky at the horizon, linear RGB"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.exposure; },
+           {.key = "sky.exposure", .min = 0.01, .max = 1000.0, .sliderMin = 1.0, .sliderMax = 100.0, .logarithmic = true,
+            .description = "physical sky: displayed linear colour per unit radiance over the sun's irradiance at the "
+                           "top of the atmosphere (1/sr); the sky is baked again"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.atmosphere.mieScale; },
+           {.key = "sky.mie_scale", .min = 0.0, .max = 20.0, .sliderMin = 0.0, .sliderMax = 10.0,
+            .description = "physical sky: aerosol (haze) density over Bruneton 2017's clear air; the atmosphere's "
+                           "tables are built again (0.35 s on one core)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.atmosphere.groundAlbedo; },
+           {.key = "sky.ground_albedo", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "physical sky: Lambertian albedo of the surface below (the sea: about 0.06); the "
+                           "atmosphere's tables are built again (0.35 s on one core)"}),
         // [fog]
         at([](auto& s, std::size_t) -> auto& { return s.fog.start_m; },
            {.key = "fog.start_m", .unit = "m", .min = 0.0, .max = kWorldLimit_m, .sliderMin = 0.0, .sliderMax = 20000.0,

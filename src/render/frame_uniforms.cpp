@@ -5,8 +5,9 @@
 
 namespace swell::detail {
 
-FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, const GridPlacement& grid,
-                            glm::dvec3 eye_m, const glm::dmat4& viewProj, glm::dvec3 origin, glm::ivec2 size)
+FrameUniforms frameUniforms(const Scene& scene, const SkyLight& sky, const GridShape& gridShape,
+                            const GridPlacement& grid, glm::dvec3 eye_m, const glm::dmat4& viewProj, glm::dvec3 origin,
+                            glm::ivec2 size)
 {
     FrameUniforms f{};
     f.cameraViewProj = glm::mat4(viewProj);
@@ -16,16 +17,18 @@ FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, cons
     f.clipPlane = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     f.eyePosition = glm::vec3(eye_m - origin);
     f.sunDirection = glm::vec3(glm::normalize(scene.sun.direction));
-    f.sunIntensity = float(scene.sun.intensity);
-    f.sunColor = glm::vec3(scene.sun.color);
+    f.sunIntensity = float(sky.sunIntensity);
+    f.sunColor = glm::vec3(sky.sunColor);
     // The sky's fog layer: the height at which a ray at the fog's end distance has
     // risen by 2% of it, so the sky stays clear a few degrees above the horizon.
     f.fogSkyLayer_m = float(0.02 * scene.fog.end_m);
     f.fogColor = glm::vec3(scene.fog.color);
     f.fogStart_m = float(scene.fog.start_m);
     f.fogEnd_m = float(scene.fog.end_m);
-    f.skyZenith = glm::vec3(scene.sky.zenithColor);
-    f.skyHorizon = glm::vec3(scene.sky.horizonColor);
+    f.skyZenith = glm::vec3(sky.zenith);
+    f.skyHorizon = glm::vec3(sky.horizon);
+    for (size_t i = 0; i < sky.ambientSh.size(); ++i)
+        f.ambientSh[i] = glm::vec4(glm::vec3(sky.ambientSh[i]), 0.0f);
     f.waterDeep = glm::vec3(scene.water.deepColor);
     f.waterAbsorption = glm::vec3(scene.water.absorption_per_m);
     f.fresnelF0 = float(scene.water.fresnelF0);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/gpu_types.h"
+#include "render/sky_light.h"
 #include "swell/camera.h"
 #include "swell/grid.h"
 #include "swell/scene.h"
@@ -15,8 +16,10 @@ namespace swell::detail {
 // viewProj maps positions relative to `origin` (the render origin, absolute
 // m, in the sea's frame: y = 0 at its mean level, like eye_m); size is the
 // viewport in pixels. World boxes are left for the caller.
-FrameUniforms frameUniforms(const Scene& scene, const GridShape& gridShape, const GridPlacement& grid,
-                            glm::dvec3 eye_m, const glm::dmat4& viewProj, glm::dvec3 origin, glm::ivec2 size);
+// The sun's light, the sky's colours and the ambient light come from `sky`.
+FrameUniforms frameUniforms(const Scene& scene, const SkyLight& sky, const GridShape& gridShape,
+                            const GridPlacement& grid, glm::dvec3 eye_m, const glm::dmat4& viewProj, glm::dvec3 origin,
+                            glm::ivec2 size);
 
 // Sets viewportSize and viewportInvSize for a target of `size` pixels.
 void setViewport(FrameUniforms& f, glm::ivec2 size);

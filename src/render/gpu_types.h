@@ -79,6 +79,7 @@ struct alignas(16) FrameUniforms {
     float projectionFocalY;
     GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
     WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
+    glm::vec4 ambientSh[9];
 };
 
 } // namespace swell::detail

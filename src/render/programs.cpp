@@ -93,10 +93,21 @@ void MeshProgram::setModel(const glm::mat4& model) const
     glProgramUniformMatrix4fv(program_.id(), model_, 1, GL_FALSE, glm::value_ptr(model));
 }
 
-SkyBakeProgram::SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
-    : program_(build(sources, variant, "fullscreen.vert", "sky_bake.frag")),
+SkyBakeProgram::SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant, bool physical)
+    : program_(build(sources, variant, "fullscreen.vert", "sky_bake.frag",
+                     {physical ? "SWELL_SKY_PHYSICAL 1" : "SWELL_SKY_PHYSICAL 0"})),
       face_(requiredUniform(program_, "face", "sky_bake.frag"))
 {
+    if (physical) {
+        exposure_ = requiredUniform(program_, "skyExposure", "sky_bake.frag");
+        mieScale_ = requiredUniform(program_, "atmosphereMieScale", "atmosphere.glsl");
+    }
+}
+
+void SkyBakeProgram::setAtmosphere(double exposure, double mieScale) const
+{
+    glProgramUniform1f(program_.id(), exposure_, float(exposure));
+    glProgramUniform1f(program_.id(), mieScale_, float(mieScale));
 }
 
 void SkyBakeProgram::use() const { glUseProgram(program_.id()); }

@@ -58,18 +58,24 @@ private:
     GLint label_ = -1; // the label pass's programs only
 };
 
-// One face of the procedural sky cubemap: fullscreen.vert + sky_bake.frag.
+// One face of the procedural sky cubemap: fullscreen.vert + sky_bake.frag,
+// the gradient sky, or with physical set (SWELL_SKY_PHYSICAL 1) the
+// atmosphere (atmosphere.glsl).
 class SkyBakeProgram {
 public:
     SkyBakeProgram() = default;
-    SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
+    SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant, bool physical = false);
+    explicit operator bool() const { return bool(program_); }
     void use() const;
     // 0..5: +x, -x, +y, -y, +z, -z.
     void setFace(int face) const;
+    // The physical sky's only: SkySettings::exposure and AtmosphereSettings::mieScale.
+    void setAtmosphere(double exposure, double mieScale) const;
 
 private:
     gl::Program program_;
     GLint face_ = -1;
+    GLint exposure_ = -1, mieScale_ = -1;
 };
 
 // Programs with no uniforms of their own (all from the Frame block): the sky

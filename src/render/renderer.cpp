@@ -240,6 +240,7 @@ void Renderer::reloadShaders()
     s.programs = buildPrograms(s.sources, s.variant);
     s.labelPrograms.reset(); // built again from the new sources when next asked for
     s.bakedSky.reset(); // the bake shader may have changed
+    s.physicalSkyBake = {};
 }
 
 void Renderer::advanceTo(double time_s, glm::dvec3 viewpoint_m)

@@ -90,6 +90,20 @@ struct Renderer::Impl {
     } stageRelay{this};
     // The sun and sky world.skyCube was baked for; empty when it must be (re)baked.
     std::optional<SkyBakeKey> bakedSky;
+    // The physical sky's atmosphere (null for the gradient), the light the
+    // frame uniforms take from the sky (sky_light.h) and what it was found
+    // for, and the atmosphere's tables on the GPU while the sky is physical.
+    std::shared_ptr<const Atmosphere> atmosphere;
+    SkyLight skyLight;
+    std::optional<std::pair<SkyBakeKey, bool>> skyLightKey;
+    AtmosphereTextures atmosphereTextures;
+    // The physical sky's bake program: built when a scene first asks for it
+    // (its ray march is the costliest shader here to compile) and kept
+    // across variants, which it does not depend on; empty until then, after
+    // a shader reload and while the sky is not physical.
+    SkyBakeProgram physicalSkyBake;
+    // The sky's light for the scene, found again when the sun or sky changed.
+    const SkyLight& currentSkyLight();
 
     // The simulation's state at the time advanceTo() reached (sea frame).
     struct Simulated {

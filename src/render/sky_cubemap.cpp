@@ -8,7 +8,44 @@ namespace swell::detail {
 
 SkyBakeKey skyBakeKeyOf(const Scene& scene)
 {
-    return {scene.sky.zenithColor, scene.sky.horizonColor, scene.sun.direction, scene.sun.color, scene.sun.intensity};
+    if (scene.sky.model == SkyModel::Physical)
+        return {SkyModel::Physical, {}, {}, scene.sun.direction, {}, 0.0, scene.sky.exposure, scene.sky.atmosphere};
+    return {SkyModel::Gradient, scene.sky.zenithColor, scene.sky.horizonColor, scene.sun.direction, scene.sun.color,
+            scene.sun.intensity};
+}
+
+namespace {
+
+gl::Texture tableTexture(int width, int height, const std::vector<float>& rgb)
+{
+    gl::Texture t = gl::Texture::create(GLenum(GL_TEXTURE_2D));
+    // 32-bit floats: transmittance spans 1 to below 1e-5 towards the horizon.
+    glTextureStorage2D(t.id(), 1, GL_RGB32F, width, height);
+    glTextureSubImage2D(t.id(), 0, 0, 0, width, height, GL_RGB, GL_FLOAT, rgb.data());
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+} // namespace
+
+void AtmosphereTextures::upload(const Atmosphere& atmosphere)
+{
+    // Rows of RGB floats are 4-byte aligned; the host's setting is put back.
+    GLint unpackAlignment = 4;
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    transmittance = tableTexture(SWELL_TRANSMITTANCE_MU_SIZE, SWELL_TRANSMITTANCE_R_SIZE, atmosphere.transmittanceTable());
+    multipleScattering = tableTexture(SWELL_MULTISCATTER_SIZE, SWELL_MULTISCATTER_SIZE, atmosphere.multipleScatteringTable());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
+}
+
+void AtmosphereTextures::bind() const
+{
+    glBindTextureUnit(SWELL_UNIT_SKY_TRANSMITTANCE, transmittance.id());
+    glBindTextureUnit(SWELL_UNIT_SKY_MULTISCATTER, multipleScattering.id());
 }
 
 void bakeProceduralSky(const SkyBakeProgram& program, gl::Texture& cube, GLuint emptyVao)

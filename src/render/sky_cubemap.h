@@ -5,6 +5,7 @@
 #pragma once
 
 #include "render/programs.h"
+#include "swell/atmosphere.h"
 #include "swell/gl/handle.h"
 #include "swell/scene.h"
 
@@ -22,8 +23,11 @@ inline constexpr int kSkyFaces = 6;
 
 // What the baked sky depends on; a bake is redone when this changes.
 struct SkyBakeKey {
+    SkyModel model = SkyModel::Gradient;
     glm::dvec3 zenith{0.0}, horizon{0.0}, sunDirection{0.0}, sunColor{0.0};
     double sunIntensity = 0.0;
+    double exposure = 0.0;           // physical only
+    AtmosphereSettings atmosphere{}; // physical only
     bool operator==(const SkyBakeKey&) const = default;
 };
 
@@ -34,5 +38,15 @@ SkyBakeKey skyBakeKeyOf(const Scene& scene);
 // block must be bound with the scene's sun and sky. Leaves the framebuffer
 // binding and viewport changed; every pass sets its own.
 void bakeProceduralSky(const SkyBakeProgram& program, gl::Texture& cube, GLuint emptyVao);
+
+// The physical sky's two tables (Atmosphere::transmittanceTable and
+// multipleScatteringTable) as RGB32F textures, linear, clamped; made when
+// empty. Bound to SWELL_UNIT_SKY_TRANSMITTANCE and SWELL_UNIT_SKY_MULTISCATTER
+// by the caller for the bake.
+struct AtmosphereTextures {
+    gl::Texture transmittance, multipleScattering;
+    void upload(const Atmosphere& atmosphere);
+    void bind() const;
+};
 
 } // namespace swell::detail

@@ -40,7 +40,7 @@ Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ive
     v.viewProj = view.projection * viewRelative;
     const glm::dmat4& viewProj = v.viewProj;
     FrameUniforms& f = v.base;
-    f = frameUniforms(scene, gridShape, grid, v.eye, viewProj, v.origin, size);
+    f = frameUniforms(scene, currentSkyLight(), gridShape, grid, v.eye, viewProj, v.origin, size);
     setDepthConvention(f, view.depth);
     f.projectionFocalY = float(view.projection[1][1]);
     f.waveHeightDeviation_m = float(model().heightDeviation_m());
@@ -65,6 +65,22 @@ Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ive
         hostGeometry ? -1 : worldBoxes(world, seaScene, reach, v.origin, simulated->poses, f.worldBoxes);
     waterGrid.cull(gridShape, grid, reach, viewProj, v.depth.zeroToOne(), grid.center_m - glm::dvec2(v.origin.x, v.origin.z));
     return v;
+}
+
+const SkyLight& Renderer::Impl::currentSkyLight()
+{
+    const std::pair<SkyBakeKey, bool> key{skyBakeKeyOf(scene), usesPhysicalSky(scene)};
+    if (skyLightKey != key) {
+        atmosphere = key.second ? atmosphereFor(scene.sky.atmosphere) : nullptr;
+        if (!atmosphere) {
+            // Given back while the sky is not physical.
+            atmosphereTextures = {};
+            physicalSkyBake = {};
+        }
+        skyLight = skyLightOf(scene, atmosphere.get());
+        skyLightKey = key;
+    }
+    return skyLight;
 }
 
 void Renderer::Impl::drawSky(bool inAir, const DepthConvention& depth)
@@ -220,7 +236,18 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     if (scene.sky.cubemapFaces.empty() && bakedSky != skyBakeKeyOf(scene)) {
         bindFrame(PassMain, base);
         glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-        bakeProceduralSky(programs.skyBake, world.skyCube, emptyVao.id());
+        if (usesPhysicalSky(scene)) {
+            if (!physicalSkyBake)
+                physicalSkyBake = SkyBakeProgram(sources, variant, true);
+            atmosphereTextures.upload(*atmosphere);
+            atmosphereTextures.bind();
+            physicalSkyBake.setAtmosphere(scene.sky.exposure, scene.sky.atmosphere.mieScale);
+            bakeProceduralSky(physicalSkyBake, world.skyCube, emptyVao.id());
+            glBindTextureUnit(SWELL_UNIT_SKY_TRANSMITTANCE, 0);
+            glBindTextureUnit(SWELL_UNIT_SKY_MULTISCATTER, 0);
+        } else {
+            bakeProceduralSky(programs.skyBake, world.skyCube, emptyVao.id());
+        }
         counters.drawCalls += kSkyFaces;
         bakedSky = skyBakeKeyOf(scene);
     }

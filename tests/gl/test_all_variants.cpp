@@ -100,3 +100,17 @@ TEST_F(AllVariants, EveryWaterTermCanBeLeftOut)
 }
 
 } // namespace
+
+namespace {
+
+// The physical sky's bake, built only when a scene first asks for it
+// (render/programs.h), so no variant above compiles it.
+TEST_F(AllVariants, ThePhysicalSkyBakeCompilesAndLinks)
+{
+    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
+    swell::detail::SkyBakeProgram program;
+    EXPECT_NO_THROW(program = swell::detail::SkyBakeProgram(sources, swell::detail::ShaderVariant{}, true));
+    EXPECT_TRUE(program);
+}
+
+} // namespace

@@ -47,6 +47,7 @@ void main() {
            + vec4(gridLevels[gl_VertexID].coarseFirstRing, gridCoarseGrowth, waveReachVertical_m, float(eyeUnderwater))
            + vec4(viewportOrigin, depthNdcScale, depthNdcOffset) + vec4(depthFar, nearNdcZ, farNdcZ, projectionFocalY)
            + vec4(worldBoxes[gl_VertexID].min_m, 0.0) + vec4(worldBoxes[gl_VertexID].max_m, 0.0)
+           + ambientSh[gl_VertexID]
            + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
     gl_Position = s;
 }
@@ -129,6 +130,9 @@ TEST_F(UniformLayout, FrameAndGerstnerBlocksMatchTheirCppMirrors)
     EXPECT_EQ(offsetOf(p.id(), "worldBoxes[1].max_m"),
               GLint(offsetof(F, worldBoxes) + sizeof(swell::detail::WorldBoxUniform) +
                     offsetof(swell::detail::WorldBoxUniform, max_m)));
+    EXPECT_EQ(offsetOf(p.id(), "ambientSh[0]"), GLint(offsetof(F, ambientSh)));
+    // (a vec4 array's stride is 16 bytes in std140, as glm::vec4's size)
+    static_assert(sizeof(F::ambientSh) == 9 * 16);
     EXPECT_EQ(offsetOf(p.id(), "waveShape[0]"), GLint(offsetof(W, waveShape)));
     EXPECT_EQ(offsetOf(p.id(), "wavePhase[0]"), GLint(offsetof(W, wavePhase)));
     SWELL_EXPECT_OFFSET(W, waveCount);

@@ -15,6 +15,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -24,17 +25,24 @@ namespace {
 
 class WorldLighting : public swell::test::GlTest {};
 
-// The sunset preset's light and sky; fog far beyond the rock.
-std::string rockScene(const std::string& sunDirection, double sunIntensity)
+// The gradient sky the sunset preset had before it took the physical one.
+const std::string kGradientSunsetSky = "[sky]\n"
+                                       "zenith_color = [0.16, 0.2, 0.38]\n"
+                                       "horizon_color = [0.95, 0.55, 0.3]\n";
+// The sunset preset's physical sky (scenes/sunset.toml).
+const std::string kPhysicalSunsetSky = "[sky]\n"
+                                       "model = \"physical\"\n"
+                                       "exposure = 12.0\n";
+
+// A sunset's light and sky; fog far beyond the rock.
+std::string rockScene(const std::string& sunDirection, double sunIntensity, const std::string& sky = kGradientSunsetSky)
 {
     return "terrain = false\n"
            "[sun]\n"
            "direction = " + sunDirection + "\n"
            "color = [1.0, 0.55, 0.25]\n"
            "intensity = " + std::to_string(sunIntensity) + "\n"
-           "[sky]\n"
-           "zenith_color = [0.16, 0.2, 0.38]\n"
-           "horizon_color = [0.95, 0.55, 0.3]\n"
+           + sky +
            "[fog]\n"
            "start_m = 5000.0\n"
            "end_m = 9000.0\n"
@@ -50,6 +58,7 @@ std::string rockScene(const std::string& sunDirection, double sunIntensity)
 struct RockPixel {
     int x, y;
     double luminance; // linear
+    double red, blue; // linear
 };
 
 double linearLuminance(const std::uint8_t* p)
@@ -60,9 +69,10 @@ double linearLuminance(const std::uint8_t* p)
 
 // The rock's pixels above the water: where the image with it differs from
 // the one without it, in rows above its waterline (below it lies its reflection).
-std::vector<RockPixel> rockPixels(const std::string& sunDirection, double sunIntensity, swell::Image& image)
+std::vector<RockPixel> rockPixels(const std::string& sunDirection, double sunIntensity, swell::Image& image,
+                                  const std::string& sky = kGradientSunsetSky)
 {
-    swell::Scene scene = swell::parseScene(rockScene(sunDirection, sunIntensity), "rock.toml");
+    swell::Scene scene = swell::parseScene(rockScene(sunDirection, sunIntensity, sky), "rock.toml");
     scene.antialiasing = swell::Antialiasing::Off;
     const glm::ivec2 size{480, 270};
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
@@ -82,18 +92,18 @@ std::vector<RockPixel> rockPixels(const std::string& sunDirection, double sunInt
             const std::uint8_t* a = image.pixel(x, y);
             const std::uint8_t* b = empty.pixel(x, y);
             if (std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 24)
-                pixels.push_back({x, y, linearLuminance(a)});
+                pixels.push_back({x, y, linearLuminance(a), swell::test::srgbToLinear(a[0]), swell::test::srgbToLinear(a[2])});
         }
     return pixels;
 }
 
-double meanOf(const std::vector<RockPixel>& pixels, auto&& keep)
+double meanOf(const std::vector<RockPixel>& pixels, auto&& keep, double RockPixel::*value = &RockPixel::luminance)
 {
     double sum = 0.0;
     int n = 0;
     for (const RockPixel& p : pixels)
         if (keep(p)) {
-            sum += p.luminance;
+            sum += p.*value;
             ++n;
         }
     return n > 0 ? sum / n : 0.0;
@@ -140,6 +150,41 @@ TEST_F(WorldLighting, WithTheSunOnOneSideThatSideIsTheLitOne)
             << "sun on the " << (left ? "left" : "right") << ": sun's side " << sunSide << ", other side " << shadowSide
             << ": " << swell::test::saveTestImage(image, left ? "world_lighting_left" : "world_lighting_right");
     }
+}
+
+// Issue 28 item 11 itself: at sunset the sky opposite the low sun is dim and
+// bluish, so the rock's side away from the sun, which only the sky and the
+// sea light, must be bluish and dark. Under the physical sky (the sunset
+// preset's), with the sun 4 degrees up on the left: the right half's blue
+// over red exceeds the rock's own albedo's (0.37 / 0.42), so the light on it
+// is bluer than white, and its mean luminance is under a quarter of the lit
+// half's. The gradient sky's ambient (a mix of its orange horizon and blue
+// zenith) made that side warm: with it in place of the physical sky's,
+// blue over red was 0.828 against the albedo's 0.881 (measured at an
+// exposure of 16; a ratio, it does not depend on it), and the
+// test fails; the luminance alone (0.23 of the lit half's then) does not
+// tell the two apart.
+TEST_F(WorldLighting, AtSunsetTheSideAwayFromTheSunIsDimAndBluish)
+{
+    swell::Image image;
+    const std::vector<RockPixel> rock = rockPixels("[-1.0, 0.07, 0.0]", 2.5, image, kPhysicalSunsetSky);
+    ASSERT_GT(rock.size(), 500u) << swell::test::saveTestImage(image, "world_lighting_sunset");
+    double sumX = 0.0;
+    for (const RockPixel& p : rock)
+        sumX += p.x;
+    const double centre = sumX / double(rock.size());
+    auto sunSide = [&](const RockPixel& p) { return p.x < centre; };
+    auto shadeSide = [&](const RockPixel& p) { return p.x >= centre; };
+    const double albedoBlueOverRed = 0.37 / 0.42; // src/assets/mesh_data.cpp's rock
+    const double shadeBlueOverRed = meanOf(rock, shadeSide, &RockPixel::blue) / meanOf(rock, shadeSide, &RockPixel::red);
+    const double sunBlueOverRed = meanOf(rock, sunSide, &RockPixel::blue) / meanOf(rock, sunSide, &RockPixel::red);
+    const double shade = meanOf(rock, shadeSide), lit = meanOf(rock, sunSide);
+    std::printf("sunset rock: away from the sun blue/red %.3f (albedo %.3f), luminance %.4f; sun's side %.3f, %.4f\n",
+                shadeBlueOverRed, albedoBlueOverRed, shade, sunBlueOverRed, lit);
+    EXPECT_GT(shadeBlueOverRed, albedoBlueOverRed)
+        << "the side away from the sun is not lit by a bluish sky: " << swell::test::saveTestImage(image, "world_lighting_sunset");
+    EXPECT_LT(sunBlueOverRed, albedoBlueOverRed) << "the sun's side is not lit warm";
+    EXPECT_LT(shade, 0.25 * lit) << swell::test::saveTestImage(image, "world_lighting_sunset");
 }
 
 } // namespace
