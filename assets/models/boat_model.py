@@ -37,10 +37,10 @@ WATER_DENSITY_KG_PER_M3 = 1025.0  # sea water, as src/objects uses
 DESIGN = {
     "length_m": 7.0,           # overall, transom to stem head
     "beam_m": 2.4,             # at the sheer, widest
-    "draft_m": 0.42,           # keel below the design waterline
+    "draft_m": 0.48,           # keel below the design waterline
     "freeboard_aft_m": 0.78,   # sheer above the waterline at the transom
     "freeboard_bow_m": 1.25,   # at the stem head
-    "displacement_kg": 1900.0, # sea water displaced at the design waterline
+    "displacement_kg": 2500.0, # sea water displaced at the design waterline
     "center_of_mass_height_m": 0.15,  # above the waterline: engine low, wheelhouse high
 }
 
