@@ -168,6 +168,37 @@ TEST(BoatModel, FloatsLevelAtItsDesignWaterline)
     EXPECT_LT(std::abs(body.state().heaveVelocity_m_per_s), 1e-3);
 }
 
+// The waves' yaw moments on a hull that is not symmetric fore and aft would
+// turn it off its course while it is carried along it (yaw has no
+// hydrostatic stiffness); under way, the helm (swell::kHelmPeriod_s) holds
+// it on the heading it started with, and a moored boat is left free.
+TEST(BoatModel, UnderWayItHoldsItsHeadingInBeamSeas)
+{
+    const nlohmann::json d = design();
+    const swell::BodyShape shape = shapeOf(swell::detail::makeBuiltinHullVolume("boat"));
+    const auto& c = d.at("center_of_mass_m");
+    swell::BodySettings settings;
+    settings.mass_kg = d.at("displacement_kg").get<double>();
+    settings.centerOfMassOffset_m =
+        glm::dvec3(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()) - swell::massPropertiesOf(shape).centroid_m;
+    const swell::test::TestWater waves(0.5, 20.0); // crests along z: on the beam of a boat heading along -z
+    auto worstHeadingError_deg = [&](glm::dvec3 velocity_m_per_s) {
+        swell::FloatingBody body(shape, settings, {.yaw_deg = 90.0, .velocity_m_per_s = velocity_m_per_s}, waves);
+        double worst = 0.0;
+        for (double t = 0.0; t <= 60.0; t += 0.5) {
+            const glm::dvec3 bow(body.poseAt(t)[0]);
+            worst = std::max(worst, std::abs(glm::degrees(std::atan2(-bow.z, bow.x)) - 90.0));
+        }
+        return worst;
+    };
+    const double underWay = worstHeadingError_deg({0.0, 0.0, -4.0});
+    const double moored = worstHeadingError_deg({0.0, 0.0, 0.0});
+    EXPECT_LT(underWay, 3.0) << "degrees off its heading under way";
+    EXPECT_GT(moored, 3.0 * underWay) << "the control: moored, the waves turn it (else the test shows nothing)";
+    RecordProperty("heading_error_under_way_deg", std::to_string(underWay));
+    RecordProperty("heading_error_moored_deg", std::to_string(moored));
+}
+
 TEST(BoatModel, BottomPaintBelowTheWaterlineOnly)
 {
     // Antifouling (a red-brown, red over twice its green) on every drawn
