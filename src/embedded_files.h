@@ -14,4 +14,8 @@ struct EmbeddedFile {
 // The GLSL sources and the shared constants header, as they were at build time.
 std::span<const EmbeddedFile> embeddedShaderFiles();
 
+// The built-in models' glTF files (relative to assets/models/), as
+// assets/models/make_models.py wrote them.
+std::span<const EmbeddedFile> embeddedModelFiles();
+
 } // namespace swell::detail

@@ -8,11 +8,21 @@
   crate.glb        a 1 m floating wooden crate, origin at its centre: planked
                    faces and edge battens coloured by COLOR_0 (normalised
                    unsigned bytes), no normals (loaders compute them).
+  boat.gltf        a 7 m motor workboat, origin on its design waterline:
+                   a hard-chine hull fitted to its design displacement, a
+                   deck, a wheelhouse with windows and a bow rail; a material
+                   per paint, and a "hull" node holding the closed hull
+                   volume (boat_model.py has its lines and design numbers).
+                   Swell compiles this file in as `builtin:boat`.
 
 Units are metres, +y is up, colours are linear RGB. Deterministic: running it
-again gives the same bytes. Needs only the Python standard library:
+again gives the same bytes (tests/models/test_make_models.py checks that the
+committed files are its output). Needs only the Python standard library:
 
-    python3 assets/models/make_models.py
+    python3 assets/models/make_models.py [OUTPUT_FOLDER]
+
+writes them next to this script, or into OUTPUT_FOLDER. After changing
+boat.gltf rebuild Swell, which compiles it in as builtin:boat.
 """
 
 import base64
@@ -20,6 +30,10 @@ import json
 import math
 import pathlib
 import struct
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ beside the models: the folder is installed as it is
+import boat_model  # noqa: E402
 
 HERE = pathlib.Path(__file__).resolve().parent
 
@@ -75,8 +89,10 @@ class Gltf:
         })
         return len(self.doc["materials"]) - 1
 
-    def node(self, name, mesh=None, translation=None, children=None):
+    def node(self, name, mesh=None, translation=None, children=None, extras=None):
         n = {"name": name}
+        if extras:
+            n["extras"] = extras
         if mesh is not None:
             n["mesh"] = mesh
         if translation:
@@ -289,11 +305,94 @@ def crate():
             struct.pack("<I4s", len(data), b"BIN\0") + data)
 
 
-def main():
-    for name, content in (("lighthouse.gltf", lighthouse()), ("crate.glb", crate())):
-        (HERE / name).write_bytes(content)
+def creased_normals(tris, crease_deg=30.0):
+    """Indexed vertices with normals for a triangle soup: each corner's
+    normal is the area-weighted sum of the faces at its position that turn
+    less than crease_deg from its own face, so panels stay smooth along
+    their length and a chine or a box's edge stays sharp."""
+    key = lambda p: tuple(round(c, 5) + 0.0 for c in p)
+    faces = [cross(sub(t[1], t[0]), sub(t[2], t[0])) for t in tris]
+    at = {}
+    for f, t in zip(faces, tris):
+        for p in t:
+            at.setdefault(key(p), []).append(f)
+    limit = math.cos(math.radians(crease_deg))
+    verts, index, out = [], {}, []
+    for f, t in zip(faces, tris):
+        unit = normalize(f)
+        corners = []
+        for p in t:
+            total = [0.0, 0.0, 0.0]
+            for g in at[key(p)]:
+                if dot(normalize(g), unit) >= limit:
+                    total = [total[k] + g[k] for k in range(3)]
+            n = tuple(round(c, 5) + 0.0 for c in normalize(total))
+            v = (key(p), n)
+            if v not in index:
+                index[v] = len(verts)
+                verts.append(v)
+            corners.append(index[v])
+        out.append(tuple(corners))
+    return verts, out
+
+
+def welded(tris):
+    """Indexed vertices for a closed surface: corners at one position share
+    one vertex, so its edges are shared as indices too."""
+    key = lambda p: tuple(round(c, 5) + 0.0 for c in p)
+    verts, index, out = [], {}, []
+    for t in tris:
+        corners = []
+        for p in t:
+            k = key(p)
+            if k not in index:
+                index[k] = len(verts)
+                verts.append(k)
+            corners.append(index[k])
+        out.append(tuple(corners))
+    return verts, out
+
+
+def boat():
+    hull, parts = boat_model.parts()
+    g = Gltf()
+    materials = {name: g.material(name, rgb) for name, rgb in boat_model.COLORS.items()}
+    children = []
+    for node_name, prims in parts:
+        primitives = []
+        for material, tris in prims:
+            if node_name == "hull":
+                # The hull volume: never drawn, only positions (welded) matter.
+                points, indices = welded(tris)
+                view = g.view(b"".join(struct.pack("<3f", *p) for p in points), ARRAY_BUFFER)
+                pos = g.accessor(view, FLOAT, len(points), "VEC3", bounds=bounds_of(points))
+                primitives.append({"attributes": {"POSITION": pos}, "indices": g.indices(indices)})
+                continue
+            verts, indices = creased_normals(tris)
+            pos, nrm = g.positions_normals(verts)
+            primitives.append({"attributes": {"POSITION": pos, "NORMAL": nrm}, "indices": g.indices(indices),
+                               "material": materials[material]})
+        children.append(g.node(node_name, mesh=g.mesh(node_name, primitives)))
+    design = dict(boat_model.DESIGN)
+    design["center_of_mass_m"] = [round(c, 4) for c in boat_model.level_trim_center_of_mass(hull)]
+    root = g.node("boat", children=children, extras=design)
+    g.doc["scenes"][0]["nodes"] = [root]
+    g.doc["buffers"].append({
+        "byteLength": len(g.data),
+        "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(g.data)).decode("ascii"),
+    })
+    return json.dumps(g.doc, indent=1).encode("utf-8") + b"\n"
+
+
+def main(folder=HERE):
+    folder = pathlib.Path(folder)
+    for name, content in (("lighthouse.gltf", lighthouse()), ("crate.glb", crate()), ("boat.gltf", boat())):
+        (folder / name).write_bytes(content)
         print("%s: %d bytes" % (name, len(content)))
+    mass, offset = boat_model.scene_keys(boat_model.fit_hull())
+    print("boat.gltf floats level at its waterline with mass_kg = %.1f, center_of_mass_offset_m = %s"
+          % (mass, offset))
 
 
 if __name__ == "__main__":
-    main()
+    main(*sys.argv[1:2])

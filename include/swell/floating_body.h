@@ -5,7 +5,8 @@
 // body, the surface and that time, never on how often it was asked for: the
 // headless renderer and the viewer draw the same poses bit for bit.
 //
-// Heave, roll, pitch and yaw are free; the horizontal position is carried
+// Heave, roll, pitch and yaw are free (a body under way is held on its
+// heading by a helm, kHelmPeriod_s); the horizontal position is carried
 // along (at rest, or at a constant velocity for a boat under way), since
 // hydrostatic forces on a body are vertical on flat water and the waves'
 // horizontal forces are not modelled. docs/BODIES.md explains the model and
@@ -45,6 +46,15 @@ inline constexpr int kBodyStepsPerWaterSample = 4;
 // Sea water's density, kg/m^3 (a typical surface value; UNESCO 1981 gives
 // 1020..1030 at 35 PSU and 0..25 degC).
 inline constexpr double kSeaWaterDensity_kg_per_m3 = 1025.0;
+
+// A body under way is steered: a helmsman holds it on the heading it
+// starts with (BodyStart::yaw_deg) by a yaw torque, a critically damped
+// spring of this period about the vertical. The hull's own directional
+// stability and rudder are not modelled, and yaw has no hydrostatic
+// stiffness, so without it the waves' yaw moments on a hull that is not
+// symmetric fore and aft turn it off its course while it is carried along
+// it. A moored body (no horizontal velocity) is not steered.
+inline constexpr double kHelmPeriod_s = 4.0;
 
 // The largest omega * kBodyStep_s (rad a step) of a body's fastest
 // oscillation, heave or heel: semi-implicit Euler is stable for an undamped
@@ -167,6 +177,8 @@ private:
     glm::dvec3 centerOfMassInShape_m_{0.0};
     double heaveDamping_ = 0.0;
     glm::dvec3 rotationDamping_{0.0}; // about body axes, N m s
+    // The helm (kHelmPeriod_s), about the vertical: 0 for a moored body.
+    double helmStiffness_N_m_per_rad_ = 0.0, helmDamping_N_m_s_ = 0.0;
     BodyStart start_;
     const WaveModel* surface_ = nullptr;
     SurfaceFilter filter_;

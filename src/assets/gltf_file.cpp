@@ -20,6 +20,8 @@ std::uint32_t readU32(const unsigned char* p)
 
 std::string GltfLoader::readFile() const
 {
+    if (embedded_)
+        return std::string(*embedded_);
     std::string bytes;
     try {
         bytes = readInputFile(path_, kMaxFileBytes, "model");

@@ -290,6 +290,9 @@ void GltfLoader::readBuffers(const json& doc, const GlbChunks& chunks, bool bina
 // a refusal tells nothing about a file outside.
 void GltfLoader::readBufferFile(std::size_t i, const std::string& uri, std::uint64_t byteLength)
 {
+    if (embedded_)
+        fail(fmt::format("buffer {} names the file '{}'; a built-in model holds its buffers as data: URIs", i,
+                         printable(uri)));
     const std::string decoded = decodeUri(uri);
     if (std::any_of(decoded.begin(), decoded.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
         fail(fmt::format("buffer {}'s uri '{}' holds a control character", i, printable(uri)));

@@ -73,11 +73,13 @@ MeshData GltfLoader::load(std::string_view hullNode, MeshData* hull)
     if (!binary && extension == ".glb")
         fail("not a binary glTF file: it does not start with the 'glTF' magic");
 
-    std::error_code ec;
-    const fs::path absolute = fs::absolute(path_, ec);
-    if (ec)
-        fail("cannot resolve the file's folder: " + ec.message());
-    folder_ = resolvedFolder(absolute.parent_path());
+    if (!embedded_) {
+        std::error_code ec;
+        const fs::path absolute = fs::absolute(path_, ec);
+        if (ec)
+            fail("cannot resolve the file's folder: " + ec.message());
+        folder_ = resolvedFolder(absolute.parent_path());
+    }
 
     GlbChunks chunks;
     if (binary)
@@ -101,6 +103,13 @@ GltfModel loadGltf(const std::filesystem::path& path, std::string_view hullNode)
 {
     GltfModel model;
     model.mesh = gltf::GltfLoader(path).load(hullNode, &model.hull);
+    return model;
+}
+
+GltfModel loadEmbeddedGltf(std::string_view name, std::string_view text, std::string_view hullNode)
+{
+    GltfModel model;
+    model.mesh = gltf::GltfLoader(name, text).load(hullNode, &model.hull);
     return model;
 }
 

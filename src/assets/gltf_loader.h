@@ -108,6 +108,9 @@ using ReadAheadFiles = std::map<std::string, ReadAhead>;
 class GltfLoader {
 public:
     explicit GltfLoader(const fs::path& path) : path_(path), where_(path.string()) {}
+    // A model compiled into the library (a built-in): `text` is the whole
+    // .gltf, named `name` in messages. It may hold data: URIs only.
+    GltfLoader(std::string_view name, std::string_view text) : path_(name), where_(name), embedded_(text) {}
     MeshData load(std::string_view hullNode = {}, MeshData* hull = nullptr);
 
 private:
@@ -177,7 +180,8 @@ private:
 
     fs::path path_;
     std::string where_;
-    fs::path folder_; // the model's folder, resolved (core/asset_path.h)
+    fs::path folder_; // the model's folder, resolved (core/asset_path.h); empty for an embedded model
+    std::optional<std::string_view> embedded_;
     ReadAheadFiles readAhead_;
     tinygltf::Model model_;
 };

@@ -1,6 +1,9 @@
 // Procedural built-in models and the island heightfield.
 #include "assets/mesh_data.h"
 
+#include "embedded_files.h"
+#include "swell/error.h"
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
@@ -75,14 +78,19 @@ void addLathe(MeshData& mesh, const std::vector<glm::vec2>& profile, int segment
         }
 }
 
-// The built-in boat's hull profile, (radius, height) in m from the keel up to
-// the gunwale at 0.6 m, and its stretch into a 7 m x 2.2 m boat.
-std::vector<glm::vec2> boatProfile()
+// The built-in boat: assets/models/boat.gltf (make_models.py writes it),
+// compiled in and read once by the glTF loader, its node "hull" the closed
+// hull volume. One model, whether a scene names builtin:boat or the file.
+const GltfModel& builtinBoat()
 {
-    return {{0.0f, -0.6f}, {0.6f, -0.55f}, {0.95f, -0.2f}, {1.0f, 0.5f}, {0.98f, 0.6f}};
+    static const GltfModel boat = [] {
+        for (const EmbeddedFile& file : embeddedModelFiles())
+            if (file.path == "boat.gltf")
+                return loadEmbeddedGltf("builtin:boat", file.text, "hull");
+        throw Error("builtin:boat: the library was built without assets/models/boat.gltf");
+    }();
+    return boat;
 }
-constexpr glm::vec3 kBoatStretch{3.5f, 1.0f, 1.1f};
-constexpr int kBoatSegments = 32;
 
 } // namespace
 
@@ -144,12 +152,8 @@ MeshData makeBuiltinModel(const std::string& name)
             v.position *= 1.0f + 0.6f * bump;
         }
     } else if (name == "boat") {
-        // A 7 m open boat: a hull of revolution, flattened across, white above a dark bottom.
-        addLathe(mesh, boatProfile(), kBoatSegments, [](float y) {
-            return y < 0.0f ? glm::vec3(0.12f, 0.16f, 0.25f) : glm::vec3(0.88f, 0.86f, 0.80f);
-        });
-        for (MeshVertex& v : mesh.vertices)
-            v.position *= kBoatStretch;
+        // A 7 m motor workboat, normals and all from its file.
+        return builtinBoat().mesh;
     }
     addTriangleNormals(mesh);
     return mesh;
@@ -157,19 +161,12 @@ MeshData makeBuiltinModel(const std::string& name)
 
 MeshData makeBuiltinHullVolume(const std::string& name)
 {
-    MeshData mesh;
-    if (name == "boat") {
-        // The boat's own hull, with the same rings, closed by a lid at the
-        // gunwale: its outer surface coincides with the boat's, so the lid
-        // is the only part that can change the depth buffer.
-        std::vector<glm::vec2> profile = boatProfile();
-        profile.push_back({0.0f, profile.back().y});
-        addLathe(mesh, profile, kBoatSegments, [](float) { return glm::vec3(0.0f); });
-        for (MeshVertex& v : mesh.vertices)
-            v.position *= kBoatStretch;
-        addTriangleNormals(mesh);
-    }
-    return mesh;
+    // The boat's outer skin from the keel to the sheer, closed by its flat
+    // transom and a lid at the sheer: the skin coincides with the drawn
+    // hull's, so the lid is the only part that can change the depth buffer.
+    if (name == "boat")
+        return builtinBoat().hull;
+    return {};
 }
 
 } // namespace swell::detail

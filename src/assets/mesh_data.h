@@ -32,7 +32,8 @@ MeshData makeIsland(double size_m, double peak_m, int resolution);
 MeshData makeBuiltinModel(const std::string& name);
 
 // The closed volume a built-in model's open hull encloses, from the keel up to
-// the gunwale ("boat"); empty for models with no open hull. The renderer draws
+// the sheer ("boat": the node "hull" of assets/models/boat.gltf); empty for
+// models with no open hull. The renderer draws
 // it into depth only before the water, so no water shows inside the hull.
 MeshData makeBuiltinHullVolume(const std::string& name);
 
@@ -49,5 +50,9 @@ struct GltfModel {
     MeshData hull;
 };
 GltfModel loadGltf(const std::filesystem::path& path, std::string_view hullNode);
+
+// The same from a .gltf's text held in memory (a model compiled into the
+// library), named `name` in messages; its buffers must be data: URIs.
+GltfModel loadEmbeddedGltf(std::string_view name, std::string_view text, std::string_view hullNode);
 
 } // namespace swell::detail

@@ -28,6 +28,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -226,6 +227,17 @@ FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings,
     }
     // Yaw has no hydrostatic stiffness; it is damped like roll and pitch on average.
     rotationDamping_.y = 0.5 * (rotationDamping_.x + rotationDamping_.z);
+    // Under way, the helm: a critically damped spring on the heading. Its
+    // inertia is the one a torque about the vertical turns (q0 is a turn
+    // about it), 1 / (I^-1)_yy, which is less than I_yy when a centre of
+    // mass off the body's axes couples yaw to roll and pitch: sized by
+    // I_yy, such a body's helm would turn faster than the step follows.
+    if (start.velocity_m_per_s.x != 0.0 || start.velocity_m_per_s.z != 0.0) {
+        const double omega_rad_per_s = kTwoPi / kHelmPeriod_s;
+        const double yawInertia_kg_m2 = 1.0 / glm::inverse(inertiaBody_)[1][1];
+        helmStiffness_N_m_per_rad_ = yawInertia_kg_m2 * omega_rad_per_s * omega_rad_per_s;
+        helmDamping_N_m_s_ = 2.0 * yawInertia_kg_m2 * omega_rad_per_s;
+    }
 
     checkStepFollows(loadAt, waterHere, reach_m_, mass_kg_, volume_m3_, inertiaBody_);
 
@@ -322,9 +334,26 @@ void FloatingBody::step()
     // (a centre of mass far off a small hull) until it spins without bound.
     const glm::dmat3 Rt = glm::transpose(R);
     const glm::dvec3 wBody = Rt * s.angularVelocity_rad_per_s;
-    const glm::dvec3 torqueBody = Rt * load.torque_N_m;
-    const glm::dmat3 damping(wetted * rotationDamping_.x, 0.0, 0.0, 0.0, wetted * rotationDamping_.y, 0.0, 0.0, 0.0,
-                             wetted * rotationDamping_.z);
+    glm::dvec3 torque_N_m = load.torque_N_m;
+    glm::dmat3 damping(wetted * rotationDamping_.x, 0.0, 0.0, 0.0, wetted * rotationDamping_.y, 0.0, 0.0, 0.0,
+                       wetted * rotationDamping_.z);
+    if (helmStiffness_N_m_per_rad_ > 0.0) {
+        // The heading, as yaw_deg measures it: the bow (body +x) turned from
+        // +x towards -z about +y. Its error is taken the short way round.
+        // Both taken at the step's end, as the damping is: the heading then
+        // is the error plus dt times the yaw rate, so the spring adds k dt
+        // to the damping about the vertical (in body axes), and neither can
+        // add energy however the body's inertia couples yaw to heel.
+        const glm::dvec3 bow = R * glm::dvec3(1.0, 0.0, 0.0);
+        if (bow.x * bow.x + bow.z * bow.z > 1e-12) {
+            const double error_rad =
+                std::remainder(std::atan2(-bow.z, bow.x) - glm::radians(start_.yaw_deg), kTwoPi);
+            torque_N_m.y -= helmStiffness_N_m_per_rad_ * error_rad;
+        }
+        const glm::dvec3 up = Rt * glm::dvec3(0.0, 1.0, 0.0);
+        damping += (helmDamping_N_m_s_ + helmStiffness_N_m_per_rad_ * kBodyStep_s) * glm::outerProduct(up, up);
+    }
+    const glm::dvec3 torqueBody = Rt * torque_N_m;
     auto skew = [](glm::dvec3 v) { return glm::dmat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0); };
     const glm::dvec3 residual =
         kBodyStep_s * (glm::cross(wBody, inertiaBody_ * wBody) + damping * wBody - torqueBody);

@@ -1,8 +1,10 @@
 // Pass 3's clean intersections: seen from above, no water shows inside the
-// floating boat's open hull, because the hull's closed volume is drawn into
-// depth before the water. The control is the same hull loaded as a user glTF
-// model, which has no hull volume: there the water does show, so the check
-// finds water where there is some.
+// floating boat's hull, because the hull's closed volume is drawn into depth
+// before the water. The built-in boat has a deck 0.3 m above its waterline,
+// so the mechanism is tested on its open shell alone (the node "hull skin"
+// of assets/models/boat.gltf: no deck, no wheelhouse). The control is that
+// shell as a user glTF model without a hull volume: there the water does
+// show, so the check finds water where there is some.
 #include "assets/mesh_data.h"
 #include "support/camera_rays.h"
 #include "support/gl_test.h"
@@ -10,6 +12,7 @@
 #include "support/golden.h"
 #include "swell/renderer.h"
 
+#include <cmath>
 #include <filesystem>
 
 namespace {
@@ -18,10 +21,16 @@ class HullMask : public swell::test::GlTest {};
 
 constexpr glm::ivec2 kSize{320, 240};
 constexpr double kTime_s = 7.0;
-// The built-in boat's gunwale (src/assets/mesh_data.cpp): 0.6 m above its
-// origin, an ellipse of semi-axes 0.98 * 3.5 m along x and 0.98 * 1.1 m along z.
-constexpr double kGunwaleHeight_m = 0.6;
-constexpr double kGunwaleHalfLength_m = 0.98 * 3.5, kGunwaleHalfWidth_m = 0.98 * 1.1;
+const std::filesystem::path kBoatFile = std::filesystem::path(SWELL_SOURCE_DIR) / "assets" / "models" / "boat.gltf";
+// The built-in boat's opening (assets/models/boat_model.py): its sheer lies
+// 0.78 m above its origin at the transom (x = -3.5 m) and rises forward; from
+// the transom to 1.5 m ahead of midships its half-breadth is over 0.99 m.
+// The test's region lies well inside that: rays that cross y = 0.85 m there.
+constexpr double kOpeningHeight_m = 0.85;
+constexpr double kOpeningAft_m = -3.2, kOpeningFore_m = 1.3, kOpeningHalfWidth_m = 0.7;
+
+// The boat's open shell: its outer skin and transom, nothing inside.
+swell::detail::MeshData openShell() { return swell::detail::loadGltf(kBoatFile, "hull skin").hull; }
 
 // A floating boat in wind waves, the camera 12 m above it looking down. The
 // water is painted a green no hull or sky has (deep colour pure green, light
@@ -47,20 +56,19 @@ struct Count {
     int inside = 0, water = 0;
 };
 
-// Water-green pixels among those whose ray crosses the gunwale's plane within
-// 75% of its ellipse: rays that enter the open hull. The boat's tilt (at most
-// half the wave slope, a few degrees here) moves the gunwale by centimetres;
-// the 25% margin is over 25 cm across.
+// Water-green pixels among those whose ray crosses the opening's plane in
+// the region inside the sheer: rays that enter the open hull. The boat's tilt
+// (at most half the wave slope, a few degrees here) moves the sheer by
+// centimetres; the margins are 0.3 m.
 Count waterInsideHull(const swell::Renderer& renderer, const swell::Camera& camera, const swell::Image& image)
 {
-    const double gunwaleY = renderer.waveModel().heightAt({0.0, 0.0}, kTime_s) + kGunwaleHeight_m;
+    const double openingY = renderer.waveModel().heightAt({0.0, 0.0}, kTime_s) + kOpeningHeight_m;
     Count count;
     for (int y = 0; y < kSize.y; ++y)
         for (int x = 0; x < kSize.x; ++x) {
             const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
-            const glm::dvec3 p = camera.position_m + d * ((gunwaleY - camera.position_m.y) / d.y);
-            const double u = p.x / kGunwaleHalfLength_m, v = p.z / kGunwaleHalfWidth_m;
-            if (u * u + v * v > 0.75 * 0.75)
+            const glm::dvec3 p = camera.position_m + d * ((openingY - camera.position_m.y) / d.y);
+            if (p.x < kOpeningAft_m || p.x > kOpeningFore_m || std::abs(p.z) > kOpeningHalfWidth_m)
                 continue;
             ++count.inside;
             count.water += isWaterGreen(image.pixel(x, y));
@@ -78,16 +86,16 @@ TEST_F(HullMask, NoWaterInsideTheFloatingBuiltinBoat)
     // The water outside is green, or the colour test means nothing.
     EXPECT_TRUE(isWaterGreen(image.pixel(8, 8))) << path;
     const Count c = waterInsideHull(renderer, camera, image);
-    // The hull opening is about 90 x 28 pixels here.
+    // The region is about 90 x 28 pixels here.
     EXPECT_GT(c.inside, 1000) << "the hull opening is not where the test expects it: " << path;
     EXPECT_EQ(c.water, 0) << "water shows inside the hull: " << path;
 }
 
-TEST_F(HullMask, WaterShowsInsideTheSameHullWithoutAVolume)
+TEST_F(HullMask, WaterShowsInsideTheOpenShellWithoutAVolume)
 {
     const std::filesystem::path folder = std::filesystem::path(SWELL_TEST_OUTPUT_DIR) / "hull_mask";
     std::filesystem::create_directories(folder);
-    swell::test::writeGltf(swell::detail::makeBuiltinModel("boat"), folder / "open_boat.gltf");
+    swell::test::writeGltf(openShell(), folder / "open_boat.gltf");
     swell::Scene scene = boatFromAbove("open_boat.gltf");
     scene.assetFolder = folder.string();
     swell::Renderer renderer(scene);
@@ -95,14 +103,14 @@ TEST_F(HullMask, WaterShowsInsideTheSameHullWithoutAVolume)
     const swell::Image image = renderer.renderImage(camera, kTime_s, kSize);
     const std::string path = swell::test::saveTestImage(image, "hull_mask_user_gltf_boat");
     const Count c = waterInsideHull(renderer, camera, image);
-    // The boat floats with its origin on the water, 0.6 m above its keel, so
+    // The boat floats with its origin on the water, 0.48 m above its keel, so
     // without a mask most of the opening shows water.
     EXPECT_GT(c.water, c.inside / 2) << "expected water inside an unmasked hull: " << path;
 }
 
 TEST_F(HullMask, NoWaterInsideAUserGltfBoatWithAHullNode)
 {
-    // The same open hull in a user's glTF file, with its closed volume as a
+    // The same open shell in a user's glTF file, with its closed volume as a
     // node named "Hull" (docs/SCENE.md, hull_node): masked like the built-in.
     const std::filesystem::path folder = std::filesystem::path(SWELL_TEST_OUTPUT_DIR) / "hull_mask";
     std::filesystem::create_directories(folder);
@@ -110,8 +118,7 @@ TEST_F(HullMask, NoWaterInsideAUserGltfBoatWithAHullNode)
     swell::detail::MeshData hull = swell::detail::makeBuiltinHullVolume("boat");
     for (swell::detail::MeshVertex& v : hull.vertices)
         v.color = {1.0f, 0.0f, 1.0f};
-    swell::test::writeGltf({{"Boat", swell::detail::makeBuiltinModel("boat")}, {"Hull", hull}},
-                           folder / "boat_with_hull.gltf");
+    swell::test::writeGltf({{"Boat", openShell()}, {"Hull", hull}}, folder / "boat_with_hull.gltf");
     swell::Scene scene = boatFromAbove("boat_with_hull.gltf");
     scene.objects[0].hullNode = "Hull";
     scene.assetFolder = folder.string();

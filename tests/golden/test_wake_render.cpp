@@ -23,7 +23,11 @@ constexpr glm::ivec2 kSize{256, 256};
 constexpr double kTime_s = 20.0;
 
 // The built-in boat at 4 m/s along -z on flat water, a camera 60 m above
-// the 60 m of water astern of it.
+// the 60 m of water astern of it. It carries 450 kg over its design
+// displacement, 2950 kg, what the built-in boat this test was first made
+// with weighed (250 kg/m^3 over its 11.8 m^3), so the wake's source is as
+// strong; its centre of mass is the one that trims it level at its design
+// waterline (docs/SCENE.md).
 swell::Scene wakeScene()
 {
     swell::Scene scene = swell::defaultScene();
@@ -32,7 +36,8 @@ swell::Scene wakeScene()
     boat.path = "builtin:boat";
     boat.yaw_deg = 90.0; // bow towards -z
     boat.floats = true;
-    boat.density_kg_per_m3 = 250.0;
+    boat.mass_kg = 2950.0;
+    boat.centerOfMassOffset_m = {-0.598, -0.203, 0.0};
     boat.velocity_m_per_s = {0.0, 0.0, -4.0};
     scene.objects = {boat};
     scene.camera.position_m = {0.0, 60.0, -60.0};
