@@ -84,6 +84,19 @@ double volumeBelowWaterline_m3(const MeshData& mesh)
     return volume;
 }
 
+// The boat as its design floats it: weighing its displacement, its centre
+// of mass where the design puts it.
+swell::BodySettings designSettings(const swell::BodyShape& shape)
+{
+    const nlohmann::json d = design();
+    const auto& c = d.at("center_of_mass_m");
+    swell::BodySettings settings;
+    settings.mass_kg = d.at("displacement_kg").get<double>();
+    settings.centerOfMassOffset_m =
+        glm::dvec3(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()) - swell::massPropertiesOf(shape).centroid_m;
+    return settings;
+}
+
 TEST(BoatModel, BuiltinBoatIsTheModelFile)
 {
     const swell::detail::GltfModel file = swell::detail::loadGltf(kBoatFile, "hull");
@@ -149,13 +162,8 @@ TEST(BoatModel, FloatsLevelAtItsDesignWaterline)
     // Weighing its displacement, its centre of mass where the design puts
     // it, dropped 0.2 m above rest and left a minute: its origin settles on
     // calm water, its deck level.
-    const nlohmann::json d = design();
     const swell::BodyShape shape = shapeOf(swell::detail::makeBuiltinHullVolume("boat"));
-    const auto& c = d.at("center_of_mass_m");
-    swell::BodySettings settings;
-    settings.mass_kg = d.at("displacement_kg").get<double>();
-    settings.centerOfMassOffset_m =
-        glm::dvec3(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()) - swell::massPropertiesOf(shape).centroid_m;
+    const swell::BodySettings settings = designSettings(shape);
     const swell::test::TestWater flat;
     swell::FloatingBody body(shape, settings, {.origin_m = {0.0, 0.2, 0.0}}, flat);
     const glm::dmat4 pose = body.poseAt(60.0);
@@ -174,13 +182,8 @@ TEST(BoatModel, FloatsLevelAtItsDesignWaterline)
 // it on the heading it started with, and a moored boat is left free.
 TEST(BoatModel, UnderWayItHoldsItsHeadingInBeamSeas)
 {
-    const nlohmann::json d = design();
     const swell::BodyShape shape = shapeOf(swell::detail::makeBuiltinHullVolume("boat"));
-    const auto& c = d.at("center_of_mass_m");
-    swell::BodySettings settings;
-    settings.mass_kg = d.at("displacement_kg").get<double>();
-    settings.centerOfMassOffset_m =
-        glm::dvec3(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()) - swell::massPropertiesOf(shape).centroid_m;
+    const swell::BodySettings settings = designSettings(shape);
     const swell::test::TestWater waves(0.5, 20.0); // crests along z: on the beam of a boat heading along -z
     auto worstHeadingError_deg = [&](glm::dvec3 velocity_m_per_s) {
         swell::FloatingBody body(shape, settings, {.yaw_deg = 90.0, .velocity_m_per_s = velocity_m_per_s}, waves);
