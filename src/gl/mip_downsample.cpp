@@ -18,9 +18,12 @@ constexpr int kGroupSide = 1 << (kLevelsADispatch - 1);
 } // namespace
 
 MipDownsampler::MipDownsampler(const ShaderSources& shaders, Path path)
-    : compute_(path == Path::Compute || !isSoftwareRasterizer()),
-      program_(buildProgram(shaders, {{GL_COMPUTE_SHADER, "mip_downsample.comp"}}))
+    : compute_(path == Path::Compute || !isSoftwareRasterizer())
 {
+    // Built only where it runs: a software rasteriser keeps the driver's.
+    if (!compute_)
+        return;
+    program_ = buildProgram(shaders, {{GL_COMPUTE_SHADER, "mip_downsample.comp"}});
     sourceLevelLocation_ = glGetUniformLocation(program_.id(), "sourceLevel");
     levelsLocation_ = glGetUniformLocation(program_.id(), "levels");
 }

@@ -71,12 +71,15 @@ const SkyLight& Renderer::Impl::currentSkyLight()
 {
     const std::pair<SkyBakeKey, bool> key{skyBakeKeyOf(scene), usesPhysicalSky(scene)};
     if (skyLightKey != key) {
-        atmosphere = key.second ? atmosphereFor(scene.sky.atmosphere) : nullptr;
-        if (!atmosphere) {
-            // Given back while the sky is not physical.
+        std::shared_ptr<const Atmosphere> next = key.second ? atmosphereFor(scene.sky.atmosphere) : nullptr;
+        // The tables depend on the atmosphere alone, not on the sun: uploaded
+        // again only for another one (drawView), given back while the sky is
+        // not physical.
+        if (next != atmosphere)
             atmosphereTextures = {};
+        if (!next)
             physicalSkyBake = {};
-        }
+        atmosphere = std::move(next);
         skyLight = skyLightOf(scene, atmosphere.get());
         skyLightKey = key;
     }
@@ -239,7 +242,8 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         if (usesPhysicalSky(scene)) {
             if (!physicalSkyBake)
                 physicalSkyBake = SkyBakeProgram(sources, variant, true);
-            atmosphereTextures.upload(*atmosphere);
+            if (!atmosphereTextures.transmittance)
+                atmosphereTextures.upload(*atmosphere);
             atmosphereTextures.bind();
             physicalSkyBake.setAtmosphere(scene.sky.exposure, scene.sky.atmosphere.mieScale);
             bakeProceduralSky(physicalSkyBake, world.skyCube, emptyVao.id());
