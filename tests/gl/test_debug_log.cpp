@@ -34,6 +34,9 @@ TEST_F(DebugLog, ShaderCompileErrorIsNotRepeatedAsARawGlMessage)
     }
     // A real driver error still reaches stderr, in words a user can read.
     glBindBuffer(GL_ARRAY_BUFFER, 123456);
+    // ...and leaves its flag, which the test takes back: a later draw() would
+    // find it pending and blame itself or a host's callback.
+    EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
     const std::string printed = testing::internal::GetCapturedStderr();
     // The fixture's handler fails tests on GL errors: put it back (the error
     // above, caused on purpose, went to `log` only).
