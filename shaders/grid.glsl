@@ -138,6 +138,28 @@ GridVertex gridVertex(int vertexId)
 #endif
 }
 
+// The cell (i, j) whose rest square holds rest offset r (from the grid
+// centre), before the waves move it: where a search for the drawn triangle
+// over a point starts. A guess (the morph's coarser centre is left out):
+// the search looks in rings around it. The CPU twin is
+// swell::detail::restCellOf (src/core/drawn_search.h).
+ivec2 gridCellOf(vec2 r)
+{
+    int half_n = int(gridCells) / 2;
+#if SWELL_GRID_LAYOUT == SWELL_GRID_GEOMETRIC
+    float chebyshev = max(abs(r.x), abs(r.y));
+    if (chebyshev <= 0.0)
+        return ivec2(half_n);
+    float fine = float(half_n) * log(1.0 + chebyshev / gridInnerScale_m) / gridGrowth;
+    float coarse = float(half_n) * log(1.0 + chebyshev / (2.0 * gridInnerScale_m)) / gridCoarseGrowth;
+    vec2 line = r * (mix(fine, coarse, gridMorph) / chebyshev);
+#else
+    // s = R u |u|  =>  u = sign(s) sqrt(|s| / R).
+    vec2 line = sign(r) * sqrt(abs(r) / gridRadius_m) * float(half_n);
+#endif
+    return clamp(ivec2(floor(line)) + half_n, ivec2(0), ivec2(int(gridCells) - 1));
+}
+
 // Wave height fades to 0 between gridFadeStart_m and gridFadeEnd_m metres (Earth curvature).
 float horizonFade(float distance_m)
 {

@@ -1,10 +1,5 @@
 // Water surface: grid vertex from gl_VertexID, displaced by the ocean surface in world space.
-#include "frame.glsl"
-#include "grid.glsl"
-#include "ocean.glsl"
-#if SWELL_SURFACE_SOURCES
-#include "surface_sources.glsl"
-#endif
+#include "water_vertex.glsl"
 
 out vec3 vPosition;    // displaced position relative to the render origin, m
 out vec3 vNormal;
@@ -19,28 +14,16 @@ out vec2 vSourceSlope; // the surface sources' slopes at the vertex, d/dx and d/
 
 void main()
 {
-    GridVertex g = gridVertex(gl_VertexID);
-    vec2 rest = gridCenter + g.offset;
-    float distance_m = length(rest - eyePosition.xz);
-    float fade = horizonFade(distance_m);
-    SurfacePoint p = oceanSurface(g.offset, g.cellSize, fade);
+    WaterVertex w = waterVertex(gl_VertexID);
+    vPosition = waterVertexPosition(w);
+    vNormal = w.surface.normal;
+    vAlongX = w.surface.alongX;
+    vAlongZ = w.surface.alongZ;
+    vRestPoint = w.rest;
+    vCellSize = w.cellSize;
+    vHeightScale = w.heightScale;
 #if SWELL_SURFACE_SOURCES
-    // The surface sources (the bodies' wake, a host's own) raise the water at
-    // the rest point (as swell::DrawnSurface adds them); their slopes tilt
-    // the surface's partial derivatives.
-    vec4 sources = surfaceSourcesAt(rest);
-    p.displacement.y += sources.x;
-    p.alongX.y += sources.y;
-    p.alongZ.y += sources.z;
-    p.normal = normalize(cross(p.alongZ, p.alongX));
-    vSourceSlope = sources.yz;
+    vSourceSlope = w.sourceSlope;
 #endif
-    vPosition = vec3(rest.x, 0.0, rest.y) + p.displacement;
-    vNormal = p.normal;
-    vAlongX = p.alongX;
-    vAlongZ = p.alongZ;
-    vRestPoint = rest;
-    vCellSize = g.cellSize;
-    vHeightScale = fade;
     gl_Position = passViewProj * vec4(vPosition, 1.0);
 }

@@ -288,6 +288,8 @@ void FloorFrame::render(PassObserver& observer, bool waterline)
     observer.endPass("bodies");
     observer.beginPass("wake");
     observer.endPass("wake");
+    observer.beginPass("queries");
+    observer.endPass("queries");
 
     observer.beginPass("reflection");
     s.bind(s.reflection);

@@ -100,6 +100,10 @@ void printSimulationCpuLine(const Results& r)
         separator = ", ";
     }
     std::printf("\n");
+    std::printf("  the frame's water queries: %s answered on the GPU, %s of them on the CPU (their triangle beyond "
+                "the GPU's block)\n",
+                perFrame(gpuSeries(r, [](const FrameCounters& c) { return (long long)c.queriesOnGpu; })).c_str(),
+                perFrame(gpuSeries(r, [](const FrameCounters& c) { return (long long)c.queriesOnCpu; })).c_str());
 }
 
 void printGpuWork(const Results& r)
@@ -142,6 +146,8 @@ nlohmann::ordered_json frameSimulationCpuJson(const FrameCounters& c)
     j["total"] = c.simulationCpu.total_ms();
     for (const CpuPart& part : kCpuParts)
         j[part.key] = c.simulationCpu.*part.field;
+    j["queries_on_gpu"] = c.queriesOnGpu;
+    j["queries_on_cpu"] = c.queriesOnCpu;
     return j;
 }
 

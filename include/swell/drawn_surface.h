@@ -52,11 +52,6 @@ public:
     const GridPlacement& placement() const { return placement_; }
 
 private:
-    // The cell whose rest-space square holds rest offset r (from the grid
-    // centre), before the waves move it.
-    glm::ivec2 restCellOf(glm::dvec2 restOffset_m) const;
-    std::optional<DrawnPoint> inCell(int i, int j, glm::dvec2 worldPoint_m) const;
-
     const WaveModel& model_;
     GridShape shape_;
     HorizonFade fade_;

@@ -75,8 +75,10 @@ struct SWELL_API SimulationCpuTime {
     // The floating bodies and their wake stepped to the frame's time (their
     // own water queries included), the wake's frame blended and uploaded.
     double bodies_ms = 0.0;
-    // The frame's DrawnSurface built and the scene objects' poses found on
-    // it, and each view's query of which side of the water the eye is.
+    // The frame's queries of the water: answered on the GPU (the dispatch,
+    // the wait for it, the triangles found among its vertices), the scene
+    // objects' poses found with them, and a view's query of which side of
+    // the water its eye is when it is not the simulated viewpoint.
     double queries_ms = 0.0;
     // Each view's culling and uniforms: the grid's tiles culled, the frame
     // uniforms and the world's boxes found, the uniforms and the surface
@@ -110,6 +112,12 @@ struct SWELL_API FrameCounters {
     double wakeSteps_ms = 0.0; // the wall time those steps took, ms (part of the "bodies" pass)
     int oceanTransforms = 0;   // the wave model's sets of inverse FFTs for this frame (spectral model)
     int foamSteps = 0;         // its foam's steps for this frame: more than one is a replay of its history
+    // The frame's own queries of the water (each floating object's, the
+    // viewpoint's side of it), answered on the GPU from what it draws; and
+    // those whose drawn triangle lay beyond the GPU's block of vertices, found
+    // with the wave model's CPU queries instead.
+    int queriesOnGpu = 0;
+    int queriesOnCpu = 0;
     // Every draw call of the views (the sky's bake and the anti-aliasing's
     // filter included) is drawCalls above; the rest of the GPU's work:
     GpuWork simulationGpu; // advanceTo()'s: the wave model's for the frame

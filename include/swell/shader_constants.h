@@ -83,6 +83,15 @@
 // at most SWELL_MAX_SURFACE_SOURCES sources, the wake's included.
 #define SWELL_BINDING_SURFACE_SOURCES 3
 #define SWELL_MAX_SURFACE_SOURCES 8
+// The frame's water queries answered on the GPU (shaders/surface_probe.comp):
+// shader storage bindings of the query points and the answers, and the side
+// of each answer's block of drawn vertices. 8 x 8 vertices hold 3 rings of
+// cells round the cell the search starts from (the drawn triangle lies in
+// the first ring but where the filtered waves move it further), and are one
+// 64-invocation workgroup.
+#define SWELL_STORAGE_PROBE_QUERIES 0
+#define SWELL_STORAGE_PROBE_ANSWERS 1
+#define SWELL_PROBE_BLOCK 8
 // The wake foam's noise repeats after this many cells, m / cell size: far
 // longer than any foam patch, short enough for a float to hold its cells exactly.
 #define SWELL_WAKE_NOISE_PERIOD 256

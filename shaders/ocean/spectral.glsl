@@ -37,9 +37,11 @@ layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
 };
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
-layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;  // dDy/dx, dDy/dz, dDx/dx, dDz/dz
+// Layers 0 .. SWELL_FFT_CASCADES - 1: dDy/dx, dDy/dz, dDx/dx, dDz/dz; the
+// next SWELL_FFT_CASCADES layers the slopes' second moments, mipmapped
+// with them: (dDy/dx)^2, (dDy/dz)^2, their product.
+layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;
 layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1, a layer a level
-layout(binding = SWELL_UNIT_OCEAN3) uniform sampler2DArray oceanSlopeMoments; // (dDy/dx)^2, (dDy/dz)^2, their product
 
 // Value noise on a lattice of 1 m cells: the bubbly texture inside foam.
 // An integer hash (multiply-xorshift): uniform on 0..1 for any cell, where
@@ -196,7 +198,7 @@ SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightSc
         vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
         float lod = log2(max(footprint_m * cascade.texelsPerMetre, 1.0));
         vec4 d = textureLod(oceanDerivatives, uvw, lod); // dDy/dx, dDy/dz, dDx/dx, dDz/dz in the patch
-        vec3 moments = textureLod(oceanSlopeMoments, uvw, lod).xyz;
+        vec3 moments = textureLod(oceanDerivatives, uvw + vec3(0.0, 0.0, float(SWELL_FFT_CASCADES)), lod).xyz;
         float crossSlope = textureLod(oceanDisplacement, uvw, 0.0).w * weight; // dDx/dz = dDz/dx
         // The chain rule through the warp: d/dx_j = (d/ds) . jacobian[j].
         vec2 slope = d.xy, alongDx = vec2(d.z, crossSlope), alongDz = vec2(crossSlope, d.w);

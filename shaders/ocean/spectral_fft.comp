@@ -155,7 +155,19 @@ void main()
         barrier();
     }
     for (int i = t; i < SWELL_FFT_SIZE; i += SWELL_FFT_QUARTER) {
-        imageStore(spectrumA, sampleAt(i), bufferA[i]);
-        imageStore(spectrumB, sampleAt(i), bufferB[i]);
+        ivec3 p = sampleAt(i);
+        imageStore(spectrumA, p, bufferA[i]);
+        imageStore(spectrumB, p, bufferB[i]);
+#if SWELL_FFT_VERTICAL
+        // The column pass ends with the fields themselves: the slopes'
+        // second moments go beside them, in layers SWELL_FFT_CASCADES and
+        // up of the derivatives' image, so one mip chain filters both
+        // (LEAN mapping: Olano & Baker 2010, "LEAN Mapping", I3D, sec. 3:
+        // over any footprint, E[s^2] - E[s]^2 from the two is the slope
+        // variance the footprint's mean slope leaves out).
+        vec2 slope = bufferB[i].xy; // dDy/dx, dDy/dz
+        imageStore(spectrumB, ivec3(p.xy, p.z + SWELL_FFT_CASCADES),
+                   vec4(slope.x * slope.x, slope.y * slope.y, slope.x * slope.y, 0.0));
+#endif
     }
 }

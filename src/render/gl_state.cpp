@@ -74,4 +74,13 @@ void SavedGlState::restore() const
         enabled_[i] ? glEnable(kCapabilities[i]) : glDisable(kCapabilities[i]);
 }
 
+SavedProgram::SavedProgram() { glGetIntegerv(GL_CURRENT_PROGRAM, &program_); }
+
+SavedProgram::~SavedProgram()
+{
+    // A program the host deleted while it was current is gone once another
+    // was bound: nothing to bind back.
+    glUseProgram(program_ != 0 && glIsProgram(GLuint(program_)) ? GLuint(program_) : 0u);
+}
+
 } // namespace swell::detail

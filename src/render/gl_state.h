@@ -32,4 +32,18 @@ private:
     std::array<GLboolean, 9> enabled_{};
 };
 
+// The current program, put back when it goes out of scope (or 0 when the
+// host deleted it meanwhile): advanceTo()'s compute passes change nothing
+// else a host's passes find.
+class SavedProgram {
+public:
+    SavedProgram();
+    ~SavedProgram();
+    SavedProgram(const SavedProgram&) = delete;
+    SavedProgram& operator=(const SavedProgram&) = delete;
+
+private:
+    GLint program_ = 0;
+};
+
 } // namespace swell::detail

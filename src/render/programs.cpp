@@ -154,6 +154,7 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
     p.skyBake = SkyBakeProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),
                                               {"vRestPoint", "vPosition", "vNormal"}));
+    p.probe = BlockProgram(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "surface_probe.comp"}}, definesOf(variant)));
     return p;
 }
 

@@ -81,8 +81,9 @@ private:
 // Programs with no uniforms of their own (all from the Frame block): the sky
 // (fullscreen.vert + sky.frag), the water (water.vert + water.frag), the
 // waterline mask (water.vert + waterline.frag), the FXAA filter
-// (fullscreen.vert + fxaa.frag) and the water's vertex capture for tests
-// (water.vert with transform feedback).
+// (fullscreen.vert + fxaa.frag), the water's vertex capture for tests
+// (water.vert with transform feedback) and the frame's water queries
+// (surface_probe.comp, render/surface_probe.h).
 class BlockProgram {
 public:
     BlockProgram() = default;
@@ -95,7 +96,7 @@ private:
 };
 
 struct Programs {
-    BlockProgram water, sky, waterline, fxaa, capture;
+    BlockProgram water, sky, waterline, fxaa, capture, probe;
     // The host's geometry seen from under the water (sky.vert + underwater_host.frag).
     BlockProgram underwaterHost;
     MeshProgram mesh;

@@ -47,6 +47,9 @@ void Renderer::Impl::advanceTo(double time_s, glm::dvec3 viewpointWorld)
     }
     counters = {};
     counters.simulationSteps = 1;
+    // The model's compute passes and the frame's queries use programs of
+    // their own; the host's stays current.
+    const SavedProgram savedProgram;
     // The thread's CPU time, by part (FrameCounters::simulationCpu);
     // the observer's callbacks are outside every part.
     SimulationCpuTime& cpu = counters.simulationCpu;
@@ -66,11 +69,6 @@ void Renderer::Impl::advanceTo(double time_s, glm::dvec3 viewpointWorld)
     bodies.advanceTo(time_s);
     if (bodies.wake())
         next.wake = std::make_shared<const WakeFrame>(bodies.wakeFrameAt(time_s));
-    cpuParts.switchTo(&cpu.queries_ms);
-    next.sources = sourcesWith(next.wake);
-    const DrawnSurface drawn = drawnSurfaceAt(viewpoint, time_s, next.sources, 0.0);
-    next.poses = objectPoses(seaScene, model(), drawn, bodies, time_s);
-    cpuParts.switchTo(&cpu.bodies_ms);
     counters.floatingBodies = int(bodies.count());
     counters.bodySteps = bodies.stepsTaken() - stepsBefore;
     counters.wakeSteps = bodies.wakeStepsTaken() - wakeStepsBefore;
@@ -81,10 +79,59 @@ void Renderer::Impl::advanceTo(double time_s, glm::dvec3 viewpointWorld)
     // culled, and the near plane placed, with it.
     notify(true, "wake");
     wakeTexture.upload(next.wake.get());
+    next.sources = sourcesWith(next.wake);
     for (const std::shared_ptr<const SurfaceSource>& source : next.sources)
         next.sourcesReach_m += std::abs(source->reach_m(time_s));
     notify(false, "wake");
+    // The frame's own queries of the water, answered on the GPU from what it
+    // draws (render/surface_probe.h): the floating objects' water and the
+    // viewpoint's side of it.
+    notify(true, "queries");
+    cpuParts.switchTo(&cpu.queries_ms);
+    // The viewpoint's side of the water needs asking only within the waves'
+    // reach (an eye above it is in the air, one below it in the water); a
+    // frame with nothing to ask waits for nothing.
+    std::vector<glm::dvec2> points = floatingObjectPoints(seaScene);
+    const bool askViewpoint = eyeWithinReach(viewpoint, model().reach().vertical_m + next.sourcesReach_m);
+    if (askViewpoint)
+        points.emplace_back(viewpoint.x, viewpoint.z);
+    std::vector<ProbedPoint> water = points.empty() ? std::vector<ProbedPoint>{} : probeWater(points, next, grid);
+    if (askViewpoint) {
+        next.viewpointWaterHeight_m = water.back().displacement_m.y;
+        water.pop_back();
+    }
+    for (const ProbedPoint& p : water)
+        counters.queriesOnCpu += p.drawnOnCpu ? 1 : 0;
+    counters.queriesOnGpu = int(points.size());
+    next.poses = objectPoses(seaScene, water, bodies, time_s);
+    notify(false, "queries");
     simulated = std::move(next);
+}
+
+std::vector<ProbedPoint> Renderer::Impl::probeWater(const std::vector<glm::dvec2>& points, const Simulated& next,
+                                                   const GridPlacement& grid)
+{
+    // A view of the simulated viewpoint, as drawView() sets one up: the
+    // render origin at its x, z, the model phased at the grid's centre, the
+    // wake and the sources placed for that origin.
+    const glm::dvec3 origin(next.viewpoint.x, 0.0, next.viewpoint.z);
+    const FrameUniforms f =
+        frameUniforms(scene, currentSkyLight(), gridShape, grid, next.viewpoint, glm::dmat4(1.0), origin, {1, 1});
+    glNamedBufferSubData(frameUbo[PassProbe].id(), 0, sizeof(f), &f);
+    glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_FRAME, frameUbo[PassProbe].id());
+    modelGpu->prepareView(grid.center_m);
+    addWork(modelGpu->takeWork(), counters.simulationGpu);
+    modelGpu->bind();
+    wakeTexture.place(origin);
+    wakeTexture.bind();
+    sourceParameters.upload(next.sources, next.time_s, origin + glm::dvec3(0.0, level(), 0.0));
+    programs.probe.use();
+    const DrawnSurface cpu = drawnSurfaceAt(next.viewpoint, next.time_s, next.sources, 0.0);
+    std::vector<ProbedPoint> answers = surfaceProbe.run(points, origin, gridShape, grid, cpu);
+    counters.simulationGpu.dispatches += 1;
+    counters.simulationGpu.barriers += 1;
+    counters.simulationGpu.bytesWritten += (long long)(points.size() * SurfaceProbe::answerBytes());
+    return answers;
 }
 
 // Makes `next` the scene and `nextSceneModel` (when given) its model,

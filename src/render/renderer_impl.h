@@ -14,6 +14,7 @@
 #include "render/render_target.h"
 #include "render/scene_world.h"
 #include "render/sky_cubemap.h"
+#include "render/surface_probe.h"
 #include "render/surface_sources.h"
 #include "render/view_setup.h"
 #include "render/wake_texture.h"
@@ -39,7 +40,8 @@ namespace swell {
 namespace detail {
 
 // The uniform buffer of each kind of pass (Renderer::Impl::frameUbo).
-enum Pass { PassReflection = 0, PassRefraction = 1, PassMain = 2, PassWaterline = 3, PassCount = 4 };
+// PassProbe: the frame's water queries (render/surface_probe.h).
+enum Pass { PassReflection = 0, PassRefraction = 1, PassMain = 2, PassWaterline = 3, PassProbe = 4, PassCount = 5 };
 
 } // namespace detail
 
@@ -116,6 +118,11 @@ struct Renderer::Impl {
         // the scene has one) and the host's.
         std::vector<std::shared_ptr<const SurfaceSource>> sources;
         double sourcesReach_m = 0.0; // the largest height they add together, m
+        // The exact surface's height under the viewpoint (sea frame, m),
+        // from the frame's queries: which side of the water an eye there is
+        // (the mean level when the viewpoint is beyond the waves' reach,
+        // which tells the side as well).
+        double viewpointWaterHeight_m = 0.0;
     };
     std::optional<Simulated> simulated;
     // The floating rigid bodies, stepped to the simulated time (objects/scene_bodies.h).
@@ -125,6 +132,7 @@ struct Renderer::Impl {
     mutable std::optional<SceneBodies> queryBodies;
     WakeTexture wakeTexture;
     SurfaceSourceParametersBuffer sourceParameters;
+    SurfaceProbe surfaceProbe;
     HostDepthCopy hostDepth; // draw()'s copy of the host's depth, for its geometry under the water
     // The label pass (swell/labels.h): its programs, built when first asked
     // for and again when the variant changes, and its target.
@@ -215,6 +223,13 @@ struct Renderer::Impl {
     // CPU with fixed steps (so their poses depend on time_s alone, never on
     // the frames before) and their wake.
     void advanceTo(double time_s, glm::dvec3 viewpointWorld);
+
+    // The frame's water queries (sea-frame x, z) answered on the GPU for
+    // `next`'s time, sources and viewpoint, whose grid is `grid`
+    // (render/surface_probe.h): after the model's prepareFrame() and the
+    // wake's upload.
+    std::vector<ProbedPoint> probeWater(const std::vector<glm::dvec2>& points, const Simulated& next,
+                                        const GridPlacement& grid);
 
     // What every pass of one view shares.
     struct ViewFrame {

@@ -54,7 +54,16 @@ Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ive
     // eye's own side of it.
     f.waveReachVertical_m = float(reach.vertical_m);
     cpuParts.switchTo(&cpu.queries_ms);
-    f.eyeUnderwater = eyeUnderwater(v.eye, model(), simulated->time_s) ? 1 : 0;
+    // The frame's query answered it for the simulated viewpoint (the eye a
+    // view matrix gives back differs from it by rounding); another eye
+    // asks the model.
+    constexpr double kSameEye_m = 1e-6;
+    const bool atViewpoint = std::abs(v.eye.x - simulated->viewpoint.x) < kSameEye_m &&
+                             std::abs(v.eye.z - simulated->viewpoint.z) < kSameEye_m;
+    f.eyeUnderwater = (atViewpoint ? v.eye.y < simulated->viewpointWaterHeight_m
+                                   : eyeUnderwater(v.eye, model(), simulated->time_s, reach.vertical_m))
+                          ? 1
+                          : 0;
     cpuParts.switchTo(&cpu.views_ms);
     for (const glm::dmat4& pose : simulated->poses)
         v.poses.emplace_back(glm::translate(glm::dmat4(1.0), -v.origin) * pose);

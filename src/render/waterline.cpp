@@ -30,8 +30,10 @@ std::array<glm::dvec3, 4> nearPlaneCorners(const glm::dmat4& inverseViewProj, do
     return corners;
 }
 
-bool eyeUnderwater(glm::dvec3 eye_m, const WaveModel& model, double time_s)
+bool eyeUnderwater(glm::dvec3 eye_m, const WaveModel& model, double time_s, double reach_m)
 {
+    if (!eyeWithinReach(eye_m, reach_m))
+        return eye_m.y < 0.0;
     return eye_m.y < model.heightAt({eye_m.x, eye_m.z}, time_s);
 }
 

@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cmath>
 
 namespace swell::detail {
 
@@ -35,8 +36,14 @@ std::array<glm::dvec3, 4> nearPlaneCorners(const glm::dmat4& inverseViewProj, do
 
 // Whether the eye (relative to the mean level, m) is below the surface at
 // time_s (WaveModel::heightAt under it): decides which half of the world the
-// refraction pass renders.
-bool eyeUnderwater(glm::dvec3 eye_m, const WaveModel& model, double time_s);
+// refraction pass renders. An eye beyond the waves' reach (`reach_m`, the
+// most the surface moves from the mean level) is answered without asking
+// the model.
+bool eyeUnderwater(glm::dvec3 eye_m, const WaveModel& model, double time_s, double reach_m);
+
+// Whether the surface under an eye (relative to the mean level, m) must be
+// asked for to tell which side of it the eye is: only within the waves' reach.
+inline bool eyeWithinReach(glm::dvec3 eye_m, double reach_m) { return std::abs(eye_m.y) <= reach_m; }
 
 class WaterlineMask {
 public:

@@ -55,22 +55,18 @@ World buildWorld(const Scene& from)
 
 namespace {
 
-glm::dmat4 objectPose(const SceneObject& o, const WaveModel& surface, const DrawnSurface& drawn, double time_s)
+glm::dmat4 objectPose(const SceneObject& o, const ProbedPoint* water)
 {
     glm::dvec3 position = o.position_m;
     glm::dmat4 tilt(1.0);
-    if (o.floats) {
-        const glm::dvec2 at(o.position_m.x, o.position_m.z);
-        const glm::dvec2 rest = surface.restPointUnder(at, time_s);
-        const SurfacePoint p = surface.surfaceAt(rest, time_s);
+    if (water) {
         // On the water the user sees: the grid's triangles, which leave out
         // the waves their cells cannot carry (the exact surface only where
         // no triangle is found).
-        const std::optional<DrawnPoint> water = drawn.at(at);
-        position.y += water ? water->position_m.y : p.displacement_m.y;
+        position.y += water->drawn ? water->drawn->position_m.y : water->displacement_m.y;
         // A body larger than the short waves does not follow every ripple:
         // tilt half way towards the surface normal.
-        const glm::dvec3 up = glm::normalize(glm::mix(glm::dvec3(0, 1, 0), p.normal, 0.5));
+        const glm::dvec3 up = glm::normalize(glm::mix(glm::dvec3(0, 1, 0), water->normal, 0.5));
         const glm::dvec3 axis = glm::cross(glm::dvec3(0, 1, 0), up);
         const double s = glm::length(axis);
         if (s > 1e-9)
@@ -96,17 +92,28 @@ SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel&
     return SceneBodies(scene, shapes, surface);
 }
 
-std::vector<glm::dmat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
-                                    SceneBodies& bodies, double time_s)
+std::vector<glm::dvec2> floatingObjectPoints(const Scene& scene)
+{
+    std::vector<glm::dvec2> points;
+    for (const SceneObject& o : scene.objects)
+        if (o.floats && !o.isRigidBody())
+            points.emplace_back(o.position_m.x, o.position_m.z);
+    return points;
+}
+
+std::vector<glm::dmat4> objectPoses(const Scene& scene, const std::vector<ProbedPoint>& water, SceneBodies& bodies,
+                                    double time_s)
 {
     std::vector<glm::dmat4> poses;
     poses.reserve(scene.objects.size());
     bodies.advanceTo(time_s);
+    std::size_t floating = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
         if (const std::optional<glm::dmat4> body = bodies.poseAt(i, time_s))
             poses.push_back(*body);
         else
-            poses.push_back(objectPose(scene.objects[i], surface, drawn, time_s));
+            poses.push_back(objectPose(o, o.floats && !o.isRigidBody() ? &water.at(floating++) : nullptr));
     }
     return poses;
 }

@@ -6,6 +6,7 @@
 
 #include "render/gpu_types.h"
 #include "render/mesh.h"
+#include "render/surface_probe.h"
 #include "assets/mesh_data.h"
 #include "objects/scene_bodies.h"
 #include "swell/drawn_surface.h"
@@ -48,14 +49,20 @@ SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel&
 // so a bad asset leaves the renderer as it was. Throws swell::InputError.
 World buildWorld(const Scene& scene);
 
+// Where the frame asks for the water under its floating objects (those that
+// ride the waves without being rigid bodies), x, z in the sea frame, m, in
+// the scene's object order.
+std::vector<glm::dvec2> floatingObjectPoints(const Scene& scene);
+
 // Each object's transform (object to absolute world, m) at time_s:
 // rigid bodies where `bodies` has stepped them to time_s (on the surface
 // their own filter gives, from the scene alone: swell/floating_body.h);
-// other floating objects sit on the water as drawn (`drawn`, the grid's
-// triangles) at their position, and tilt with the surface's normal.
+// other floating objects sit on the water as drawn (the grid's triangles)
+// at their position, and tilt with the exact surface's normal: `water`
+// holds the frame's answers for floatingObjectPoints(), in its order.
 // Computed once per simulated time; every view and pass draws with them.
-std::vector<glm::dmat4> objectPoses(const Scene& scene, const WaveModel& surface, const DrawnSurface& drawn,
-                                    SceneBodies& bodies, double time_s);
+std::vector<glm::dmat4> objectPoses(const Scene& scene, const std::vector<ProbedPoint>& water, SceneBodies& bodies,
+                                    double time_s);
 
 // An object's transform standing at position_m (sea frame), tilted by
 // `tilt`, turned by its yaw and scaled: a fixed object's at its own position.

@@ -7,6 +7,8 @@
 
 #include "swell/camera.h"
 #include "swell/error.h"
+#include "swell/gl/shader.h"
+#include "swell/gl/shader_sources.h"
 #include "swell/renderer.h"
 #include "swell/scene_file.h"
 
@@ -287,6 +289,27 @@ TEST_F(HostViews, TheGlStateAHostLeftIsTheStateItFindsAfterADraw)
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glActiveTexture(GL_TEXTURE0);
     glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+// advanceTo() runs compute passes (the spectral model's transforms, the
+// frame's water queries) with programs of its own: the host's program is
+// current again after it.
+TEST_F(HostViews, AdvanceToLeavesTheHostsProgramCurrent)
+{
+    const swell::Scene scene = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/storm.toml");
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, 3.0);
+    const swell::gl::Program host = swell::gl::buildProgram(
+        swell::gl::ShaderSources::fromMap({{"host.comp", "layout(local_size_x = 1) in;\nvoid main() {}\n"}}),
+        {{GL_COMPUTE_SHADER, "host.comp"}});
+    glUseProgram(host.id());
+    for (const double time_s : {3.0, 3.5}) {
+        renderer.advanceTo(time_s, camera.position_m);
+        GLint after = 0;
+        glGetIntegerv(GL_CURRENT_PROGRAM, &after);
+        EXPECT_EQ(GLuint(after), host.id()) << "after advanceTo(" << time_s << ")";
+    }
     glUseProgram(0);
 }
 

@@ -1,6 +1,6 @@
 // The spectral model's GPU fields against its CPU twin's, texel by texel:
 // every cascade's displacement (Dx, Dy, Dz, dDx/dz) and derivatives
-// (dDy/dx, dDy/dz, dDx/dx, dDz/dz) after the GPU's evolution and inverse
+// (dDy/dx, dDy/dz, dDx/dx, dDz/dz) with the slopes' second moments, after the GPU's evolution and inverse
 // FFT, at a time long after 0 (where the phases are large). Queries on the
 // drawn surface (the displacement) and its shading (the derivatives) stand
 // on these fields; a difference in one field shows here by cascade and
@@ -31,15 +31,16 @@ using namespace swell;
 
 class SpectralFields : public test::GlTest {};
 
-// The RGBA32F array texture bound to a texture unit, level 0, every layer.
-std::vector<float> boundArray(GLuint unit)
+// The RGBA32F array texture bound to a texture unit, level 0, every layer
+// (`layers` of them).
+std::vector<float> boundArray(GLuint unit, int layers)
 {
     GLint name = 0;
     glActiveTexture(GL_TEXTURE0 + unit);
     glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &name);
     glActiveTexture(GL_TEXTURE0);
     EXPECT_NE(name, 0) << "nothing bound to unit " << unit;
-    std::vector<float> texels(size_t(SWELL_FFT_SIZE) * SWELL_FFT_SIZE * SWELL_FFT_CASCADES * 4);
+    std::vector<float> texels(size_t(SWELL_FFT_SIZE) * SWELL_FFT_SIZE * size_t(layers) * 4);
     glGetTextureImage(GLuint(name), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
     return texels;
 }
@@ -54,7 +55,10 @@ TEST_F(SpectralFields, TheGpusFieldsAreTheCpuTwins)
     gpu->prepareFrame({0.0, 0.0}, kTime_s);
     gpu->bind();
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-    const std::vector<float> displacement = boundArray(SWELL_UNIT_OCEAN0), derivatives = boundArray(SWELL_UNIT_OCEAN1);
+    // The derivatives' image holds each cascade's slope moments after its
+    // derivatives (shaders/ocean/spectral.glsl).
+    const std::vector<float> displacement = boundArray(SWELL_UNIT_OCEAN0, SWELL_FFT_CASCADES),
+                             derivatives = boundArray(SWELL_UNIT_OCEAN1, 2 * SWELL_FFT_CASCADES);
 
     // The twin, from the same field the model makes.
     const spectral::CpuSurface twin(std::make_shared<const spectral::SpectralField>(
@@ -95,6 +99,23 @@ TEST_F(SpectralFields, TheGpusFieldsAreTheCpuTwins)
                                                << errorSum / double(n * n) << ", worst at " << worstX << ", " << worstZ
                                                << ";" << along;
         }
+    // The slopes' second moments: (dDy/dx)^2, (dDy/dz)^2 and their product,
+    // against the twin's slopes, to the same share of their rms.
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
+        const std::vector<float>& sx = fields.values[size_t(c)][4];
+        const std::vector<float>& sz = fields.values[size_t(c)][5];
+        for (int m = 0; m < 3; ++m) {
+            double worst = 0.0, sumSq = 0.0;
+            for (size_t i = 0; i < size_t(n) * n; ++i) {
+                const double cpu = m == 0 ? double(sx[i]) * sx[i] : m == 1 ? double(sz[i]) * sz[i] : double(sx[i]) * sz[i];
+                const double gpuMoment = derivatives[((size_t(c + SWELL_FFT_CASCADES) * n * n) + i) * 4 + size_t(m)];
+                worst = std::max(worst, std::abs(gpuMoment - cpu));
+                sumSq += cpu * cpu;
+            }
+            const double rms = std::sqrt(sumSq / double(n * n));
+            EXPECT_LE(worst, 3e-4 * rms + 1e-12) << "cascade " << c << ", moment " << m << ": rms " << rms;
+        }
+    }
 }
 
 } // namespace

@@ -1,8 +1,8 @@
 // SpectralModel: the spectral field behind swell::WaveModel, with its CPU
 // twin for queries and its GPU half: each frame at a new time, compute
 // shaders transform rows, evolving the spectra as they read them, then
-// columns (shaders/ocean/spectral_fft.comp), and mipmap the slopes and
-// their second moments (spectral_moments.comp).
+// columns (shaders/ocean/spectral_fft.comp), which also write the slopes'
+// second moments, and mipmap the slopes with their moments.
 #include "swell/spectral_model.h"
 
 #include "gl/mip_downsample.h"
@@ -65,8 +65,10 @@ constexpr int kLongestFoamShift = kFoamSize / 4;
 // layout qualifiers name the same.
 constexpr GLenum kInitialFormat = GL_RGBA32F;  // h0(k) and conj(h0(-k))
 constexpr GLenum kOmegaFormat = GL_RG32UI;     // w(k) as a double's two words
-constexpr GLenum kSpectrumFormat = GL_RGBA32F; // the displacement's and the derivatives' spectra, then fields
-constexpr GLenum kMomentsFormat = GL_RGBA32F;  // the slopes' second moments
+// The displacement's and the derivatives' spectra, then fields; the
+// derivatives' image also holds the slopes' second moments (as many layers
+// again), so one mip chain filters both.
+constexpr GLenum kSpectrumFormat = GL_RGBA32F;
 constexpr GLenum kFoamFormat = GL_R16F;
 
 // Bytes a texel of `format` takes (the formats above).
@@ -81,7 +83,7 @@ constexpr long long texelBytes(GLenum format)
 }
 
 static_assert(texelBytes(kInitialFormat) > 0 && texelBytes(kOmegaFormat) > 0 && texelBytes(kSpectrumFormat) > 0 &&
-              texelBytes(kMomentsFormat) > 0 && texelBytes(kFoamFormat) > 0);
+              texelBytes(kFoamFormat) > 0);
 
 // Texels of the levels `first` .. `levels` - 1 of a square mip chain of
 // `size`^2 at its base, each with `layers` layers.
@@ -93,8 +95,8 @@ constexpr long long mipTexels(int size, int levels, int layers, int first = 0)
     return texels;
 }
 
-// Local size of the 16 x 16 compute shaders (spectral_moments.comp,
-// spectral_foam.comp), each invocation one texel of every image it writes.
+// Local size of the 16 x 16 foam step (spectral_foam.comp), each
+// invocation one texel of every image it writes.
 constexpr int kTile = 16;
 
 
@@ -108,7 +110,6 @@ public:
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
         foamStep_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_foam.comp"}},
                                      {"SWELL_OCEAN_FILE \"ocean/spectral.glsl\""});
-        moments_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_moments.comp"}});
         timeLocation_ = glGetUniformLocation(fftRows_.id(), "time_s");
         choppinessLocation_ = glGetUniformLocation(fftRows_.id(), "choppiness");
         patchLocation_ = glGetUniformLocation(fftRows_.id(), "patchSize_m");
@@ -123,29 +124,26 @@ public:
         texelLocation_ = glGetUniformLocation(foamStep_.id(), "texel_m");
 
         const int n = kSize;
-        auto array = [n](GLenum format, int levels) {
+        auto array = [n](GLenum format, int levels, int layers = kCascades) {
             gl::Texture t = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
-            glTextureStorage3D(t.id(), levels, format, n, n, kCascades);
+            glTextureStorage3D(t.id(), levels, format, n, n, layers);
             return t;
         };
         initial_ = array(kInitialFormat, 1);
         omega_ = array(kOmegaFormat, 1);
         displacement_ = array(kSpectrumFormat, 1);
-        derivatives_ = array(kSpectrumFormat, kFieldLevels);
+        derivatives_ = array(kSpectrumFormat, kFieldLevels, kDerivativeLayers);
         foam_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
         glTextureStorage3D(foam_.id(), kFoamFieldLevels, kFoamFormat, kFoamSize, kFoamSize, kFoamLevels);
-        slopeMoments_ = array(kMomentsFormat, kFieldLevels);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         clearFoam();
         work_ = {}; // not a frame's work
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        for (const gl::Texture* t : {&derivatives_, &slopeMoments_}) {
-            glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-            glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        }
-        for (const gl::Texture* t : {&displacement_, &derivatives_, &foam_, &slopeMoments_}) {
+        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        for (const gl::Texture* t : {&displacement_, &derivatives_, &foam_}) {
             glTextureParameteri(t->id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
             glTextureParameteri(t->id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
         }
@@ -235,7 +233,6 @@ public:
         glBindTextureUnit(SWELL_UNIT_OCEAN0, displacement_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN1, derivatives_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN2, foam_.id());
-        glBindTextureUnit(SWELL_UNIT_OCEAN3, slopeMoments_.id());
     }
 
 private:
@@ -256,7 +253,6 @@ private:
             if (foam)
                 stepFoam(time_s, float(std::exp(-dt / lifetime)));
         }
-        updateSlopeMoments();
     }
 
     // The foam's recent history on a fixed lattice of steps ending at time_s
@@ -298,24 +294,6 @@ private:
             const float decay = i == 0 ? 0.0f : float(std::exp(-(offsets[i - 1] - offsets[i]) / lifetime));
             stepFoam(time_s - offsets[i], decay, last);
         }
-    }
-
-    void updateSlopeMoments()
-    {
-        glUseProgram(moments_.id());
-        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kSpectrumFormat);
-        glBindImageTexture(5, slopeMoments_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, kMomentsFormat);
-        // Writes the moments' base level.
-        beginStage("moments");
-        dispatch(kSize / kTile, kSize / kTile, kCascades, texelBytes(kMomentsFormat) * kTile * kTile);
-        barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        endStage("moments");
-        beginStage("moment mipmaps");
-        generateMipmaps(slopeMoments_, kMomentsFormat, kSize, kFieldLevels, kCascades);
-        endStage("moment mipmaps");
-        for (const GLuint unit : {3u, 5u})
-            glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glUseProgram(0);
     }
 
     // One step of the foam in every level's window: decay what was there
@@ -397,14 +375,15 @@ private:
         dispatch(kSize, GLuint(cascades), 1, twoSpectra * kSize);
         barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         endStage("fft rows");
+        // The columns also write the slopes' second moments.
         beginStage("fft columns");
         glUseProgram(fftColumns_.id());
-        dispatch(kSize, GLuint(cascades), 1, twoSpectra * kSize);
+        dispatch(kSize, GLuint(cascades), 1, (twoSpectra + texelBytes(kSpectrumFormat)) * kSize);
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         endStage("fft columns");
         if (cascades == kCascades) {
             beginStage("slope mipmaps");
-            generateMipmaps(derivatives_, kSpectrumFormat, kSize, kFieldLevels, kCascades);
+            generateMipmaps(derivatives_, kSpectrumFormat, kSize, kFieldLevels, kDerivativeLayers);
             endStage("slope mipmaps");
         }
         for (GLuint unit = 0; unit < 4; ++unit)
@@ -449,6 +428,8 @@ private:
 
     // Mip levels of the cascades' fields and of the foam's windows.
     static constexpr int kFieldLevels = SWELL_FFT_LOG2_SIZE + 1;
+    // The derivatives' image: each cascade's derivatives, then each one's slope moments.
+    static constexpr int kDerivativeLayers = 2 * kCascades;
     static constexpr int kFoamFieldLevels = SWELL_FOAM_LOG2_SIZE + 1;
 
     std::shared_ptr<const SpectralField> field_;
@@ -461,14 +442,14 @@ private:
     glm::dvec2 gridCenter_m_{0.0}; // this frame's
     // The replay's steps before the last on the CPU: only on a software rasteriser.
     std::unique_ptr<FoamReplay> cpuReplay_;
-    gl::Program fftRows_, fftColumns_, foamStep_, moments_;
+    gl::Program fftRows_, fftColumns_, foamStep_;
     gl::MipDownsampler downsampler_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
     GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
     GLint windowOriginLocation_ = -1, previousOriginLocation_ = -1, centreIndexLocation_ = -1;
     GLint centreFractionLocation_ = -1, texelLocation_ = -1;
-    gl::Texture initial_, omega_, displacement_, derivatives_, foam_, slopeMoments_;
+    gl::Texture initial_, omega_, displacement_, derivatives_, foam_;
     gl::Buffer uniforms_;
     bool transformed_ = false;
     double time_s_ = 0.0;
