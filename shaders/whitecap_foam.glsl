@@ -1,0 +1,100 @@
+// The whitecaps' look on the spectral ocean: how much of a pixel foam
+// covers, given the foam the waves made there (worldFoam() in
+// spectral.glsl). Its texture is gradient noise on lattices turned from one
+// another and warped (src/ocean/spectral/foam_texture.h: no cells, seams or
+// repetition at any distance), anchored to the world at the rest point, so
+// it rides the water's own horizontal motion with the waves; each octave
+// fades into its mean where the pixel no longer resolves it.
+// Included by ocean/spectral.glsl, after its uniform block (foamNoise).
+#ifndef SWELL_WHITECAP_FOAM_GLSL
+#define SWELL_WHITECAP_FOAM_GLSL
+
+// A random unit gradient at a lattice vertex: an integer hash of the vertex
+// modulo the period (multiply-xorshift; GLSL does not specify sin's
+// accuracy far from 0, which the usual fract(sin(x) * big) leans on).
+vec2 foamGradient(ivec2 vertex)
+{
+    uvec2 q = uvec2(vertex & ivec2(SWELL_FOAM_NOISE_PERIOD - 1));
+    uint n = (q.x * 1597334673u) ^ (q.y * 3812015801u);
+    n = (n ^ (n >> 16u)) * 0x7feb352du;
+    n = (n ^ (n >> 15u)) * 0x846ca68bu;
+    n ^= n >> 16u;
+    float angle_rad = float(n) * (6.28318530718 / 4294967296.0);
+    return vec2(cos(angle_rad), sin(angle_rad));
+}
+
+// Gradient noise (Perlin 2002, with its quintic fade) at q cells and its
+// gradient per cell: (value, d/dq.x, d/dq.y). Its standard deviation is
+// kFoamNoiseDeviation (measured over 4 million points).
+const float kFoamNoiseDeviation = 0.216;
+vec3 foamGradientNoise(vec2 q)
+{
+    vec2 cell = floor(q), f = q - cell;
+    ivec2 i = ivec2(cell);
+    vec2 g00 = foamGradient(i), g10 = foamGradient(i + ivec2(1, 0));
+    vec2 g01 = foamGradient(i + ivec2(0, 1)), g11 = foamGradient(i + ivec2(1, 1));
+    float v00 = dot(g00, f), v10 = dot(g10, f - vec2(1.0, 0.0));
+    float v01 = dot(g01, f - vec2(0.0, 1.0)), v11 = dot(g11, f - vec2(1.0, 1.0));
+    vec2 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+    vec2 du = 30.0 * f * f * (f * (f - 2.0) + 1.0);
+    float k = v00 - v10 - v01 + v11;
+    float value = v00 + u.x * (v10 - v00) + u.y * (v01 - v00) + u.x * u.y * k;
+    vec2 gradient = g00 + u.x * (g10 - g00) + u.y * (g01 - g00) + u.x * u.y * (g00 - g10 - g01 + g11) +
+                    du * (vec2(v10 - v00, v01 - v00) + u.yx * k);
+    return vec3(value, gradient);
+}
+
+// The texture at a rest point (from the grid centre): x a standard normal
+// variate (the octaves' sum over its deviation), yz its gradient per metre,
+// w how much of it the pixel resolves (0: none, only the mean; 1: two
+// octaves or more).
+vec4 foamTexture(vec2 p_m, float footprint_m)
+{
+    // The warp: a coarser lattice's gradient (about one a cell) moves the
+    // first octave's point by up to half a cell, each octave's gradient the
+    // next's: no octave's lattice stays straight over a patch of foam.
+    FoamNoise w = foamNoise[SWELL_FOAM_OCTAVES];
+    vec2 warp = foamGradientNoise(mat2(w.map.xy, w.map.zw) * p_m + w.offset_cells).yz;
+    float sum = 0.0, variance = 0.0, resolvedShare = 0.0;
+    vec2 gradient_perm = vec2(0.0);
+    for (int i = 0; i < SWELL_FOAM_OCTAVES; ++i) {
+        FoamNoise o = foamNoise[i];
+        float resolved = 1.0 - smoothstep(0.25, 0.5, footprint_m * o.cyclesPerMetre);
+        if (resolved <= 0.0)
+            break; // the finer octaves are finer still
+        mat2 map = mat2(o.map.xy, o.map.zw);
+        vec3 n = foamGradientNoise(map * p_m + o.offset_cells + 0.5 * warp);
+        sum += resolved * n.x;
+        gradient_perm += resolved * (transpose(map) * n.yz);
+        variance += resolved * resolved;
+        resolvedShare += resolved;
+        warp = n.yz;
+    }
+    float scale = variance > 0.0 ? 1.0 / (kFoamNoiseDeviation * sqrt(variance)) : 0.0;
+    return vec4(sum * scale, gradient_perm * scale, clamp(0.5 * resolvedShare, 0.0, 1.0));
+}
+
+// How much of the water foam covers at a point of the world plane (from
+// the grid centre) given the foam's amount there (1 where the wave breaks
+// now, decaying as the foam ages): where the pixel resolves the texture,
+// fresh foam is a nearly solid sheet and ageing foam thins into lace and
+// streaks drawn out along the wind, as the texture exceeds 1 - share; where
+// it does not, that share itself. The texture is made uniform on 0..1 (a
+// standard normal's distribution, in Bowling et al. 2009's logistic
+// approximation), so the covered share of an area is the share at any
+// distance: the cover the whitecap calibration counts does not change as
+// octaves fade. The threshold's soft band is as wide as the texture changes
+// over the pixel, so a foam edge is antialiased rather than stepped.
+float foamCoverage(float amount, vec2 p_m, float footprint_m)
+{
+    // Even where a wave breaks now, the foam is froth with gaps, not paint.
+    float share = 0.75 * amount;
+    vec4 t = foamTexture(p_m, footprint_m);
+    float uniform01 = 1.0 / (1.0 + exp(-1.702 * t.x));
+    float perPixel = uniform01 * (1.0 - uniform01) * 1.702 * length(t.yz) * footprint_m;
+    float band = 0.04 + perPixel;
+    // No foam covers nothing: below the band's width, the soft edge shrinks with the share.
+    float lace = smoothstep(1.0 - share - band, 1.0 - share + band, uniform01) * min(1.0, share / band);
+    return mix(share, lace, t.w);
+}
+#endif
