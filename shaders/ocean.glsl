@@ -22,6 +22,8 @@ struct SurfacePoint {
     vec3 alongZ;       // ... and along rest z
     float slopeVariance; // mean square slope (x plus z) of the waves the normal leaves
                          // out: what shading spreads the highlight by (oceanShading only)
+    float breakingFoam;  // the share of the foam a crest breaking now made, 0..1 (oceanShading only)
+    vec2 foamSlope;      // the foam's relief: d/dx, d/dz of its bubbles' height (oceanShading only)
 };
 
 #ifndef SWELL_OCEAN_FILE

@@ -52,6 +52,8 @@ void main()
     SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ, vHeightScale);
     vec3 n = surface.normal;
     float foam = surface.foam;
+    float breakingFoam = surface.breakingFoam;
+    vec2 foamSlope = surface.foamSlope;
 #if SWELL_HAS_TERM(SWELL_TERM_FILTERING)
     float slopeVariance = surface.slopeVariance;
 #else
@@ -60,6 +62,8 @@ void main()
 #else
     vec3 n = normalize(vNormal);
     float foam = 0.0;
+    float breakingFoam = 0.0;
+    vec2 foamSlope = vec2(0.0);
     float slopeVariance = 0.0;
 #endif
 #if SWELL_SURFACE_SOURCES
@@ -143,10 +147,19 @@ void main()
 #if SWELL_HAS_TERM(SWELL_TERM_FOAM)
     // Whitecaps: a layer of bubbles that scatters nearly all light back,
     // lit by the sun and the sky (Lambertian, as foam is close to; Koepke
-    // 1984 measured its effective reflectance at about 0.55 in the visible).
+    // 1984 measured its effective reflectance at about 0.55 in the visible):
+    // the dense foam of a crest breaking now brighter (0.65), the thinning
+    // lace, through which the water shows, darker (0.5). Its own normal is
+    // the water's tilted by the bubbles' relief (n / n.y is (-dh/dx, 1,
+    // -dh/dz)), so foam is shaded by its mounds and hollows, and its wet
+    // bubbles catch the sun in a broad highlight (a Phong lobe of exponent
+    // 12, a quarter of the sun's light at its peak: chosen by eye).
     float foamCover = clamp(foam, 0.0, 1.0); // the share of the pixel foam covers
-    vec3 foamLight = sunColor * sunIntensity * max(sunDirection.y, 0.0) * (0.6 + 0.4 * phongDiffuse(n)) + skyHorizon * 0.5;
-    color = mix(color, 0.55 * foamLight, foamCover);
+    vec3 foamNormal = normalize(n / max(n.y, 0.1) - vec3(foamSlope.x, 0.0, foamSlope.y));
+    vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
+    vec3 foamLight = sunLight * (0.6 + 0.4 * phongDiffuse(foamNormal)) + skyHorizon * 0.5;
+    float sheen = 0.25 * pow(max(dot(reflect(-sunDirection, foamNormal), v), 0.0), 12.0);
+    color = mix(color, mix(0.5, 0.65, breakingFoam) * foamLight + sheen * sunLight, foamCover);
 #else
     float foamCover = 0.0;
 #endif

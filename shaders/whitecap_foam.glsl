@@ -74,27 +74,58 @@ vec4 foamTexture(vec2 p_m, float footprint_m)
     return vec4(sum * scale, gradient_perm * scale, clamp(0.5 * resolvedShare, 0.0, 1.0));
 }
 
-// How much of the water foam covers at a point of the world plane (from
-// the grid centre) given the foam's amount there (1 where the wave breaks
-// now, decaying as the foam ages): where the pixel resolves the texture,
-// fresh foam is a nearly solid sheet and ageing foam thins into lace and
-// streaks drawn out along the wind, as the texture exceeds 1 - share; where
-// it does not, that share itself. The texture is made uniform on 0..1 (a
-// standard normal's distribution, in Bowling et al. 2009's logistic
-// approximation), so the covered share of an area is the share at any
-// distance: the cover the whitecap calibration counts does not change as
-// octaves fade. The threshold's soft band is as wide as the texture changes
-// over the pixel, so a foam edge is antialiased rather than stepped.
-float foamCoverage(float amount, vec2 p_m, float footprint_m)
+// What a pixel of foam looks like.
+struct FoamLook {
+    float cover;    // the share of the pixel foam covers, 0..1
+    float breaking; // the share of that foam a crest breaking now made, 0..1
+    vec2 slope;     // the bubbles' relief: d/dx, d/dz of their height
+};
+
+// The bubbles' relief, m of height per unit of the texture's standard
+// normal variate: thinning lace lies nearly flat on the water, a breaking
+// crest's foam heaps up into a froth of mounds (chosen by eye: slopes of
+// about 0.2 on lace, 0.5 on fresh foam where the finest octaves resolve).
+const float kLaceRelief_m = 0.004;
+const float kBreakingRelief_m = 0.010;
+
+// The foam at a point of the world plane (from the grid centre) given its
+// amount there (1 where the wave breaks now, decaying as exp(-age /
+// lifetime)): two layers.
+// - Where a crest breaks now (amount above breakingFoamAmount, less than a
+//   second old), a dense sheet: 0.9 of the water, its gaps the texture's
+//   lowest values (holes among the bubbles).
+// - Older foam covers 0.75 of its amount and thins into lace: where the
+//   texture is near its median, a network of filaments around dark holes
+//   that narrows as the foam decays (and, from Beaufort 6, streaks drawn
+//   out along the wind); the last of it (amount below 0.1, 9 s old at the
+//   default lifetime) breaks up into scattered flecks, where the texture is
+//   highest, rather than a fine net over the whole sea.
+// Where the pixel resolves the texture the share is a threshold of it;
+// where it does not, the share itself. The texture is made uniform on 0..1
+// (a standard normal's distribution, in Bowling et al. 2009's logistic
+// approximation), and so is its fold 1 - |2u - 1| that makes the lace, so
+// the covered share of an area is the share at any distance: the cover the
+// whitecap calibration counts does not change as octaves fade. The
+// threshold's soft band is as wide as the texture changes over the pixel,
+// so a foam edge is antialiased rather than stepped.
+FoamLook foamLook(float amount, vec2 p_m, float footprint_m)
 {
-    // Even where a wave breaks now, the foam is froth with gaps, not paint.
-    float share = 0.75 * amount;
+    float breaking = clamp((amount - breakingFoamAmount) / max(1.0 - breakingFoamAmount, 1e-3), 0.0, 1.0);
+    float share = mix(0.75 * amount, 0.9, breaking);
     vec4 t = foamTexture(p_m, footprint_m);
     float uniform01 = 1.0 / (1.0 + exp(-1.702 * t.x));
-    float perPixel = uniform01 * (1.0 - uniform01) * 1.702 * length(t.yz) * footprint_m;
-    float band = 0.04 + perPixel;
+    float lace01 = 1.0 - abs(2.0 * uniform01 - 1.0);
+    float laced = 0.6 * smoothstep(0.1, 0.4, amount) * (1.0 - breaking);
+    float u = mix(uniform01, lace01, laced);
+    // How fast u changes along the surface (the fold doubles the rate).
+    float rate = uniform01 * (1.0 - uniform01) * 1.702 * length(t.yz) * (1.0 + laced);
+    float band = 0.04 + rate * footprint_m;
     // No foam covers nothing: below the band's width, the soft edge shrinks with the share.
-    float lace = smoothstep(1.0 - share - band, 1.0 - share + band, uniform01) * min(1.0, share / band);
-    return mix(share, lace, t.w);
+    float lace = smoothstep(1.0 - share - band, 1.0 - share + band, u) * min(1.0, share / band);
+    FoamLook look;
+    look.cover = mix(share, lace, t.w);
+    look.breaking = breaking;
+    look.slope = mix(kLaceRelief_m, kBreakingRelief_m, breaking) * t.w * t.yz;
+    return look;
 }
 #endif

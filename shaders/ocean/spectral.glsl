@@ -43,6 +43,7 @@ layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
     // window (as the texture repeats), z texels per metre.
     vec4 foamLevels[SWELL_FOAM_LEVELS];
     FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS]; // the octaves, coarsest first, then the warp
+    float breakingFoamAmount; // foam above this amount was made by a crest breaking now (younger than 1 s)
 };
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
@@ -200,7 +201,7 @@ SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightSc
     slopeVariance = (slopeVariance + unresolvedSlopeVariance) * heightScale * heightScale;
     vec3 alongX = vec3(1.0 + gradDx.x, gradDy.x, gradDz.x);
     vec3 alongZ = vec3(gradDx.y, gradDy.y, 1.0 + gradDz.y);
-    return SurfacePoint(vec3(0.0), normalize(cross(alongZ, alongX)), 0.0, alongX, alongZ, slopeVariance);
+    return SurfacePoint(vec3(0.0), normalize(cross(alongZ, alongX)), 0.0, alongX, alongZ, slopeVariance, 0.0, vec2(0.0));
 }
 
 SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
@@ -225,7 +226,10 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
                           vec3 gridAlongZ, float heightScale)
 {
     SurfacePoint p = spectralSlopes(restOffset_m, pixelFootprint_m, heightScale);
-    p.foam = foamCoverage(heightScale * worldFoam(restOffset_m, pixelFootprint_m), restOffset_m, pixelFootprint_m);
+    FoamLook foam = foamLook(heightScale * worldFoam(restOffset_m, pixelFootprint_m), restOffset_m, pixelFootprint_m);
+    p.foam = foam.cover;
+    p.breakingFoam = foam.breaking;
+    p.foamSlope = foam.slope;
     return p;
 }
 #endif

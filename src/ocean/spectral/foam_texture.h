@@ -1,4 +1,4 @@
-// The lattices of the whitecaps' texture (foamCoverage() in
+// The lattices of the whitecaps' texture (foamLook() in
 // shaders/whitecap_foam.glsl): octaves of gradient noise, each on its own
 // lattice turned by the golden angle from the last, so that no two share an
 // axis and their sum has no cells; one more, coarser, warps the first.

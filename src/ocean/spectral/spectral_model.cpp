@@ -58,6 +58,7 @@ struct alignas(16) SpectralUniforms {
     float unresolvedSlopeVariance; // of the waves shorter than the last cascade's
     glm::vec4 foamLevels[kFoamLevels]; // the grid centre in texels modulo N (x, y), texels per metre
     FoamNoiseUniform foamNoise[kFoamNoiseMaps];
+    float breakingFoamAmount; // foam above this amount is a breaking's own (kBreakingFoamAge_s)
 };
 
 // Foam fades out over this much J above the threshold, a fifth of the
@@ -240,6 +241,9 @@ public:
             const FoamNoiseMap& m = noise[size_t(i)];
             u.foamNoise[i] = {glm::vec4(m.map[0], m.map[1]), m.offset_cells, m.cyclesPerMetre};
         }
+        // Foam decays as exp(-age / lifetime) from 1 where the crest folds.
+        const double lifetime = settings_.foamLifetime_s > 0.0 ? settings_.foamLifetime_s : 1.0;
+        u.breakingFoamAmount = float(std::exp(-kBreakingFoamAge_s / lifetime));
         glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
     }
 
