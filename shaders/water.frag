@@ -66,6 +66,8 @@ void main()
     vec2 foamSlope = vec2(0.0);
     float slopeVariance = 0.0;
 #endif
+    // The whitecaps' reflectance (see the foam term below).
+    float foamAlbedo = mix(0.5, 0.65, breakingFoam);
 #if SWELL_SURFACE_SOURCES
     // The sources' waves (the wake's are as short as 2 of its cells) are
     // finer than the grid far from the camera: the pixel takes the slopes it
@@ -75,6 +77,13 @@ void main()
     vec4 sources = surfaceSourcesAt(vRestPoint);
     n = normalize(n / max(n.y, 0.1) - vec3(sources.y - vSourceSlope.x, 0.0, sources.z - vSourceSlope.y));
     float sourceFoam = sources.w;
+    // Where the wake's foam is the larger share, the foam is the wake's: a
+    // churned sheet (value noise, wake.glsl) without the whitecaps' layers
+    // and relief, reflecting Koepke's 0.55.
+    if (sources.w > foam) {
+        foamAlbedo = 0.55;
+        foamSlope = vec2(0.0);
+    }
     foam = max(foam, sources.w);
 #else
     float sourceFoam = 0.0;
@@ -159,7 +168,7 @@ void main()
     vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
     vec3 foamLight = sunLight * (0.6 + 0.4 * phongDiffuse(foamNormal)) + skyHorizon * 0.5;
     float sheen = 0.25 * pow(max(dot(reflect(-sunDirection, foamNormal), v), 0.0), 12.0);
-    color = mix(color, mix(0.5, 0.65, breakingFoam) * foamLight + sheen * sunLight, foamCover);
+    color = mix(color, foamAlbedo * foamLight + sheen * sunLight, foamCover);
 #else
     float foamCover = 0.0;
 #endif
