@@ -6,6 +6,9 @@
 // for the normal and foam one pixel sees (displacement left zero), given the
 // partial derivatives the grid's vertices carry, interpolated, having summed
 // the surface at gridFootprint_m: a model may add only what the grid filtered out.
+// and
+//   float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
+// for the bubbles a breaking drove under the surface there (0 for models without foam).
 // The renderer builds them with SWELL_OCEAN_FILE naming the model's GLSL
 // file (src/render/wave_model_gpu.h), so no water shader names a model.
 #ifndef SWELL_OCEAN_GLSL

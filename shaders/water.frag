@@ -135,6 +135,24 @@ void main()
     float lit = 0.35 + 0.65 * phongDiffuse(n);
     refracted *= mix(1.0, lit, 1.0 - exp(-0.2 * min(path_m, 100.0)));
 #endif
+#if SWELL_HAS_TERM(SWELL_TERM_FOAM)
+    // The bubbles a breaking crest drove under the surface, seen through the
+    // water: a diffuse cloud kBubbleDepth_m down along the refracted ray (so
+    // it shifts against the surface foam as the view tilts: parallax),
+    // blurred over 1.5 m, scattering the daylight that reaches it back up
+    // through that much water each way: pale turquoise under and beside
+    // the whitecaps. Its strength (up to 0.8 of the way toward half the
+    // light a foam layer would send) is chosen by eye.
+    const float kBubbleDepth_m = 0.6;
+    vec3 underRay = refract(-v, n, 1.0 / 1.333);
+    vec2 bubblePoint = vRestPoint - gridCenter + underRay.xz / max(-underRay.y, 0.2) * kBubbleDepth_m;
+    vec2 bubbleFootprint = fwidth(vRestPoint);
+    float bubbles = oceanFoamBelow(bubblePoint, max(1.5, max(bubbleFootprint.x, bubbleFootprint.y))) *
+                    step(kBubbleDepth_m, path_m);
+    vec3 bubbleLight = (sunColor * sunIntensity * max(sunDirection.y, 0.0) + skyHorizon * 0.5) *
+                       exp(-2.0 * kBubbleDepth_m * waterAbsorption);
+    refracted = mix(refracted, 0.5 * bubbleLight, 0.8 * clamp(bubbles, 0.0, 1.0));
+#endif
     vec3 color = mix(refracted, reflected, fresnel);
 #if SWELL_HAS_TERM(SWELL_TERM_LIGHTING)
     // The slopes the normal leaves out spread the sun's highlight: the Phong

@@ -13,4 +13,7 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
 {
     return SurfacePoint(vec3(0.0), vec3(0.0, 1.0, 0.0), 0.0, vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), 0.0, 0.0, vec2(0.0));
 }
+
+// No foam, so no bubbles under it.
+float oceanFoamBelow(vec2 restOffset_m, float footprint_m) { return 0.0; }
 #endif

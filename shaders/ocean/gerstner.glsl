@@ -118,4 +118,7 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
         slopeVariance += wavePhase[i].w * fade2;
     return SurfacePoint(vec3(0.0), normalize(cross(binormal, tangent)), 0.0, tangent, binormal, slopeVariance, 0.0, vec2(0.0));
 }
+
+// No foam, so no bubbles under it.
+float oceanFoamBelow(vec2 restOffset_m, float footprint_m) { return 0.0; }
 #endif

@@ -232,4 +232,15 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
     p.foamSlope = foam.slope;
     return p;
 }
+
+// The bubbles under the whitecaps: a breaking crest drives a plume of them
+// down, which thins faster than the surface foam fades (its bubbles rise
+// into the foam and dissolve): the foam's amount squared, filtered over
+// the footprint (which the caller widens: the plume is diffuse, none of
+// the surface's lace shows through the water).
+float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
+{
+    float amount = worldFoam(restOffset_m, footprint_m);
+    return amount * amount;
+}
 #endif
