@@ -9,9 +9,15 @@
 #ifndef SWELL_WHITECAP_FOAM_GLSL
 #define SWELL_WHITECAP_FOAM_GLSL
 
-// A random unit gradient at a lattice vertex: an integer hash of the vertex
+// A random gradient at a lattice vertex: an integer hash of the vertex
 // modulo the period (multiply-xorshift; GLSL does not specify sin's
-// accuracy far from 0, which the usual fract(sin(x) * big) leans on).
+// accuracy far from 0, which the usual fract(sin(x) * big) leans on), its
+// two halves uniform on -1..1. Uniform in the square rather than on the
+// circle, so a little longer along its diagonals: each octave's lattice is
+// turned from the others', so the sum keeps no direction. (Unit gradients
+// from the hash's angle cost a sine and a cosine each, 28 a pixel: the
+// storm's water pass took 249 and 258 ms of CPU a frame with them against
+// 206 ms without, llvmpipe at 640x360.)
 vec2 foamGradient(ivec2 vertex)
 {
     uvec2 q = uvec2(vertex & ivec2(SWELL_FOAM_NOISE_PERIOD - 1));
@@ -19,14 +25,13 @@ vec2 foamGradient(ivec2 vertex)
     n = (n ^ (n >> 16u)) * 0x7feb352du;
     n = (n ^ (n >> 15u)) * 0x846ca68bu;
     n ^= n >> 16u;
-    float angle_rad = float(n) * (6.28318530718 / 4294967296.0);
-    return vec2(cos(angle_rad), sin(angle_rad));
+    return vec2(uvec2(n & 0xffffu, n >> 16u)) * (2.0 / 65535.0) - 1.0;
 }
 
 // Gradient noise (Perlin 2002, with its quintic fade) at q cells and its
 // gradient per cell: (value, d/dq.x, d/dq.y). Its standard deviation is
-// kFoamNoiseDeviation (measured over 4 million points).
-const float kFoamNoiseDeviation = 0.216;
+// kFoamNoiseDeviation (measured over 4 million points; 0.216 with unit gradients).
+const float kFoamNoiseDeviation = 0.176;
 vec3 foamGradientNoise(vec2 q)
 {
     vec2 cell = floor(q), f = q - cell;

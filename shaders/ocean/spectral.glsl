@@ -138,12 +138,14 @@ float foamBSpline(vec2 s, int level)
 // finest foam level whose window holds the point, cross-faded to the next
 // toward the window's edge (where texels are newest), and beyond the last,
 // that level's mean (its last mip), which is what distant foam averages to.
-// Where the pixel is finer than a texel, the B-spline, cross-faded into the
-// mipmaps as the footprint grows to two texels.
-float worldFoam(vec2 restOffset_m, float footprint_m)
+// The finest level first, so that where its window holds the point fully
+// no coarser level is fetched. With bSpline, where the pixel is finer than
+// a texel, the B-spline, cross-faded into the mipmaps as the footprint
+// grows to two texels.
+float worldFoam(vec2 restOffset_m, float footprint_m, bool bSpline)
 {
-    float foam = textureLod(oceanFoam, vec3(0.5, 0.5, float(SWELL_FOAM_LEVELS - 1)), float(SWELL_FOAM_LOG2_SIZE)).r;
-    for (int level = SWELL_FOAM_LEVELS - 1; level >= 0; --level) {
+    float foam = 0.0, left = 1.0; // the weight the coarser levels still have
+    for (int level = 0; level < SWELL_FOAM_LEVELS && left > 0.0; ++level) {
         vec4 window = foamLevels[level];
         vec2 texels = restOffset_m * window.z;
         float fromCentre = max(abs(texels.x), abs(texels.y)) / float(SWELL_FOAM_SIZE / 2);
@@ -152,11 +154,14 @@ float worldFoam(vec2 restOffset_m, float footprint_m)
             vec2 s = window.xy + texels - 0.5;
             float lod = log2(max(footprint_m * window.z, 1.0));
             float here = textureLod(oceanFoam, vec3((s + 0.5) / float(SWELL_FOAM_SIZE), float(level)), lod).r;
-            if (lod < 1.0)
+            if (bSpline && lod < 1.0)
                 here = mix(foamBSpline(s, level), here, lod);
-            foam = mix(foam, here, inside);
+            foam += left * inside * here;
+            left *= 1.0 - inside;
         }
     }
+    if (left > 0.0)
+        foam += left * textureLod(oceanFoam, vec3(0.5, 0.5, float(SWELL_FOAM_LEVELS - 1)), float(SWELL_FOAM_LOG2_SIZE)).r;
     return foam;
 }
 
@@ -226,7 +231,7 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
                           vec3 gridAlongZ, float heightScale)
 {
     SurfacePoint p = spectralSlopes(restOffset_m, pixelFootprint_m, heightScale);
-    FoamLook foam = foamLook(heightScale * worldFoam(restOffset_m, pixelFootprint_m), restOffset_m, pixelFootprint_m);
+    FoamLook foam = foamLook(heightScale * worldFoam(restOffset_m, pixelFootprint_m, true), restOffset_m, pixelFootprint_m);
     p.foam = foam.cover;
     p.breakingFoam = foam.breaking;
     p.foamSlope = foam.slope;
@@ -237,10 +242,10 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
 // down, which thins faster than the surface foam fades (its bubbles rise
 // into the foam and dissolve): the foam's amount squared, filtered over
 // the footprint (which the caller widens: the plume is diffuse, none of
-// the surface's lace shows through the water).
+// the surface's lace shows through the water), without the B-spline.
 float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
 {
-    float amount = worldFoam(restOffset_m, footprint_m);
+    float amount = worldFoam(restOffset_m, footprint_m, false);
     return amount * amount;
 }
 #endif

@@ -20,13 +20,13 @@
 // within kArc bins of it, at most an eighth of a turn either way, which a
 // smooth anisotropy such as the wind's streaks does not change by much)
 // and none may stand more than kPeakRatio times above it. Measured: from
-// 20 m, 11.4 with the gradient noise and its lace, 13.2 with the value
+// 20 m, 9.2 with the gradient noise and its lace, 13.2 with the value
 // noise it replaced; from 300 m, 5.4 and 7.1 (the texture is mostly
 // unresolved there). A weak separation: the storm's streaks are
 // themselves an anisotropy, and neither periodogram shows a line at the
 // old cells' frequencies; the test guards against a texture that brings
-// one. The lace's fold fully mixed in did (13.3: filaments about 1.7 m
-// apart across the wind).
+// one. The lace's fold fully mixed in did (13.3 with unit gradients:
+// filaments about 1.7 m apart across the wind).
 //
 // In the golden tier (Release only): 24 frames at 256^2, each replaying the
 // foam's history.
@@ -187,7 +187,7 @@ double shiftedDifference(const std::vector<double>& a, const std::vector<double>
 // at the sea's level; the waves' crests are nearer the camera, so the
 // foam's shift is a little less): the second view, moved back by the best
 // shift, matches the first within 0.04 of share on average (measured
-// 0.012 with the texture on the water, against 0.13 unmoved: what is left
+// 0.009 with the texture on the water, against 0.11 unmoved: what is left
 // is the shift's fraction of a pixel and the perspective's differences;
 // the texture laid out from the grid centre matched best unmoved).
 TEST_F(FoamTexture, StaysOnTheWater)
@@ -266,8 +266,8 @@ TEST_F(FoamTexture, ABreakingCrestsFoamIsDenseAndOlderFoamThins)
 // through the surface (the refraction debug view) from 20 m, looking down
 // at 60 degrees, is brighter with the storm's foam than without it
 // (foam_lifetime_s = 0), and brightens more near the foam than away from
-// it. Measured: 0.0040 brighter on average (linear green), 0.0037 near
-// foam against 0.0022 away from it (the plume is blurred over 1.5 m and
+// it. Measured: 0.0040 brighter on average (linear green), 0.0036 near
+// foam against 0.0021 away from it (the plume is blurred over 1.5 m and
 // seen along the refracted ray, so it reaches beyond the lace). Without
 // the bubble layer the two views are the same.
 TEST_F(FoamTexture, BubblesUnderTheFoamBrightenTheWater)
