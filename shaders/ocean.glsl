@@ -6,6 +6,9 @@
 // for the normal and foam one pixel sees (displacement left zero), given the
 // partial derivatives the grid's vertices carry, interpolated, having summed
 // the surface at gridFootprint_m: a model may add only what the grid filtered out.
+// and
+//   float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
+// for the bubbles a breaking drove under the surface there (0 for models without foam).
 // The renderer builds them with SWELL_OCEAN_FILE naming the model's GLSL
 // file (src/render/wave_model_gpu.h), so no water shader names a model.
 #ifndef SWELL_OCEAN_GLSL
@@ -22,6 +25,8 @@ struct SurfacePoint {
     vec3 alongZ;       // ... and along rest z
     float slopeVariance; // mean square slope (x plus z) of the waves the normal leaves
                          // out: what shading spreads the highlight by (oceanShading only)
+    float breakingFoam;  // the share of the foam a crest breaking now made, 0..1 (oceanShading only)
+    vec2 foamSlope;      // the foam's relief: d/dx, d/dz of its bubbles' height (oceanShading only)
 };
 
 #ifndef SWELL_OCEAN_FILE

@@ -52,6 +52,8 @@ void main()
     SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ, vHeightScale);
     vec3 n = surface.normal;
     float foam = surface.foam;
+    float breakingFoam = surface.breakingFoam;
+    vec2 foamSlope = surface.foamSlope;
 #if SWELL_HAS_TERM(SWELL_TERM_FILTERING)
     float slopeVariance = surface.slopeVariance;
 #else
@@ -60,8 +62,12 @@ void main()
 #else
     vec3 n = normalize(vNormal);
     float foam = 0.0;
+    float breakingFoam = 0.0;
+    vec2 foamSlope = vec2(0.0);
     float slopeVariance = 0.0;
 #endif
+    // The whitecaps' reflectance (see the foam term below).
+    float foamAlbedo = mix(0.5, 0.65, breakingFoam);
 #if SWELL_SURFACE_SOURCES
     // The sources' waves (the wake's are as short as 2 of its cells) are
     // finer than the grid far from the camera: the pixel takes the slopes it
@@ -71,6 +77,13 @@ void main()
     vec4 sources = surfaceSourcesAt(vRestPoint);
     n = normalize(n / max(n.y, 0.1) - vec3(sources.y - vSourceSlope.x, 0.0, sources.z - vSourceSlope.y));
     float sourceFoam = sources.w;
+    // Where the wake's foam is the larger share, the foam is the wake's: a
+    // churned sheet (value noise, wake.glsl) without the whitecaps' layers
+    // and relief, reflecting Koepke's 0.55.
+    if (sources.w > foam) {
+        foamAlbedo = 0.55;
+        foamSlope = vec2(0.0);
+    }
     foam = max(foam, sources.w);
 #else
     float sourceFoam = 0.0;
@@ -122,6 +135,24 @@ void main()
     float lit = 0.35 + 0.65 * phongDiffuse(n);
     refracted *= mix(1.0, lit, 1.0 - exp(-0.2 * min(path_m, 100.0)));
 #endif
+#if SWELL_HAS_TERM(SWELL_TERM_FOAM)
+    // The bubbles a breaking crest drove under the surface, seen through the
+    // water: a diffuse cloud kBubbleDepth_m down along the refracted ray (so
+    // it shifts against the surface foam as the view tilts: parallax),
+    // blurred over 1.5 m, scattering the daylight that reaches it back up
+    // through that much water each way: pale turquoise under and beside
+    // the whitecaps. Its strength (up to 0.8 of the way toward half the
+    // light a foam layer would send) is chosen by eye.
+    const float kBubbleDepth_m = 0.6;
+    vec3 underRay = refract(-v, n, 1.0 / 1.333);
+    vec2 bubblePoint = vRestPoint - gridCenter + underRay.xz / max(-underRay.y, 0.2) * kBubbleDepth_m;
+    vec2 bubbleFootprint = fwidth(vRestPoint);
+    float bubbles = oceanFoamBelow(bubblePoint, max(1.5, max(bubbleFootprint.x, bubbleFootprint.y))) *
+                    step(kBubbleDepth_m, path_m);
+    vec3 bubbleLight = (sunColor * sunIntensity * max(sunDirection.y, 0.0) + skyHorizon * 0.5) *
+                       exp(-2.0 * kBubbleDepth_m * waterAbsorption);
+    refracted = mix(refracted, 0.5 * bubbleLight, 0.8 * clamp(bubbles, 0.0, 1.0));
+#endif
     vec3 color = mix(refracted, reflected, fresnel);
 #if SWELL_HAS_TERM(SWELL_TERM_LIGHTING)
     // The slopes the normal leaves out spread the sun's highlight: the Phong
@@ -143,10 +174,19 @@ void main()
 #if SWELL_HAS_TERM(SWELL_TERM_FOAM)
     // Whitecaps: a layer of bubbles that scatters nearly all light back,
     // lit by the sun and the sky (Lambertian, as foam is close to; Koepke
-    // 1984 measured its effective reflectance at about 0.55 in the visible).
+    // 1984 measured its effective reflectance at about 0.55 in the visible):
+    // the dense foam of a crest breaking now brighter (0.65), the thinning
+    // lace, through which the water shows, darker (0.5). Its own normal is
+    // the water's tilted by the bubbles' relief (n / n.y is (-dh/dx, 1,
+    // -dh/dz)), so foam is shaded by its mounds and hollows, and its wet
+    // bubbles catch the sun in a broad highlight (a Phong lobe of exponent
+    // 12, a quarter of the sun's light at its peak: chosen by eye).
     float foamCover = clamp(foam, 0.0, 1.0); // the share of the pixel foam covers
-    vec3 foamLight = sunColor * sunIntensity * max(sunDirection.y, 0.0) * (0.6 + 0.4 * phongDiffuse(n)) + skyHorizon * 0.5;
-    color = mix(color, 0.55 * foamLight, foamCover);
+    vec3 foamNormal = normalize(n / max(n.y, 0.1) - vec3(foamSlope.x, 0.0, foamSlope.y));
+    vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
+    vec3 foamLight = sunLight * (0.6 + 0.4 * phongDiffuse(foamNormal)) + skyHorizon * 0.5;
+    float sheen = 0.25 * pow(max(dot(reflect(-sunDirection, foamNormal), v), 0.0), 12.0);
+    color = mix(color, foamAlbedo * foamLight + sheen * sunLight, foamCover);
 #else
     float foamCover = 0.0;
 #endif

@@ -39,6 +39,15 @@
 #define SWELL_FOAM_LOG2_SIZE 8
 #define SWELL_FOAM_LEVELS 2
 #define SWELL_FOAM_LEVEL_RATIO 4.0
+// The whitecaps' texture (src/ocean/spectral/foam_texture.h): octaves of
+// gradient noise on lattices turned from each other, plus one that warps
+// them; each lattice repeats after SWELL_FOAM_NOISE_PERIOD cells (14 km for
+// the coarsest octave, 140 m for the finest: more than a picture holds
+// where the octave is not faded into its mean; a float still holds a cell
+// index that large to a two-thousandth of a cell).
+#define SWELL_FOAM_OCTAVES 6
+#define SWELL_FOAM_NOISE_MAPS 7
+#define SWELL_FOAM_NOISE_PERIOD 4096
 
 // Texture units, fixed for the same reason.
 #define SWELL_UNIT_SKY 0

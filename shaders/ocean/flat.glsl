@@ -5,12 +5,15 @@
 
 SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
 {
-    return SurfacePoint(vec3(0.0), vec3(0.0, 1.0, 0.0), 0.0, vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), 0.0);
+    return SurfacePoint(vec3(0.0), vec3(0.0, 1.0, 0.0), 0.0, vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), 0.0, 0.0, vec2(0.0));
 }
 
 SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m, vec3 gridAlongX,
                           vec3 gridAlongZ, float heightScale)
 {
-    return SurfacePoint(vec3(0.0), vec3(0.0, 1.0, 0.0), 0.0, vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), 0.0);
+    return SurfacePoint(vec3(0.0), vec3(0.0, 1.0, 0.0), 0.0, vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), 0.0, 0.0, vec2(0.0));
 }
+
+// No foam, so no bubbles under it.
+float oceanFoamBelow(vec2 restOffset_m, float footprint_m) { return 0.0; }
 #endif

@@ -47,7 +47,7 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
         tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
         binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
     }
-    return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0, tangent, binormal, 0.0);
+    return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0, tangent, binormal, 0.0, 0.0, vec2(0.0));
 }
 
 // The index of the first wave shorter than length_m, waveCount.x if none
@@ -116,6 +116,9 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
     // Every shorter wave is wholly unresolved.
     if (i < waveCount.x)
         slopeVariance += wavePhase[i].w * fade2;
-    return SurfacePoint(vec3(0.0), normalize(cross(binormal, tangent)), 0.0, tangent, binormal, slopeVariance);
+    return SurfacePoint(vec3(0.0), normalize(cross(binormal, tangent)), 0.0, tangent, binormal, slopeVariance, 0.0, vec2(0.0));
 }
+
+// No foam, so no bubbles under it.
+float oceanFoamBelow(vec2 restOffset_m, float footprint_m) { return 0.0; }
 #endif

@@ -19,6 +19,14 @@ struct SpectralWarpWave {
     float phaseAtCentre_rad; // at the grid centre (reduced on the CPU in double)
 };
 
+// One lattice of the whitecaps' texture (swell::spectral::FoamNoiseMap):
+// cells q = map * x + offset_cells for x from the grid centre, m.
+struct FoamNoise {
+    vec4 map;            // column-major 2 x 2: cells per metre along x, then along z
+    vec2 offset_cells;   // the grid centre's cell modulo SWELL_FOAM_NOISE_PERIOD
+    float cyclesPerMetre; // across the streaks: what the footprint filters
+};
+
 struct SpectralCascade {
     vec2 originTexels;          // the grid centre modulo the patch, texels
     float texelsPerMetre;       // N / L
@@ -34,6 +42,8 @@ layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
     // Each foam level's window: x, y the grid centre in texels modulo the
     // window (as the texture repeats), z texels per metre.
     vec4 foamLevels[SWELL_FOAM_LEVELS];
+    FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS]; // the octaves, coarsest first, then the warp
+    float breakingFoamAmount; // foam above this amount was made by a crest breaking now (younger than 1 s)
 };
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
@@ -43,60 +53,7 @@ layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; //
 layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;
 layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1, a layer a level
 
-// Value noise on a lattice of 1 m cells: the bubbly texture inside foam.
-// An integer hash (multiply-xorshift): uniform on 0..1 for any cell, where
-// the usual fract(sin(x) * big) leans on sin's accuracy far from 0, which
-// GLSL does not specify.
-float foamHash(vec2 cell)
-{
-    uvec2 q = uvec2(ivec2(cell)) * uvec2(1597334673u, 3812015801u);
-    uint n = (q.x ^ q.y) * 1597334673u;
-    n ^= n >> 16;
-    return float(n) * (1.0 / 4294967295.0);
-}
-float foamNoise(vec2 p)
-{
-    vec2 cell = floor(p), f = fract(p);
-    vec2 u = f * f * (3.0 - 2.0 * f);
-    return mix(mix(foamHash(cell), foamHash(cell + vec2(1.0, 0.0)), u.x),
-               mix(foamHash(cell + vec2(0.0, 1.0)), foamHash(cell + vec2(1.0, 1.0)), u.x), u.y);
-}
-
-// How much of the water foam covers at a point of the world plane (relative
-// to the grid centre; the phase of the noise does not matter), given the
-// foam's amount there (1 where the wave breaks now, decaying as the foam
-// ages). Where the pixel resolves the foam's texture, fresh foam is a nearly
-// solid sheet and ageing foam thins into lace and streaks drawn out along
-// the wind: the texture is covered where it exceeds 1 - amount, so the
-// covered share of an area is about its amount. Where the pixel does not
-// resolve the texture, that share itself: the same mean, without aliasing.
-float foamCoverage(float amount, vec2 p_m, float footprint_m)
-{
-    vec2 along = windDirection, across = vec2(-windDirection.y, windDirection.x);
-    // Streaks: the noise stretched along the wind.
-    vec2 q = vec2(dot(p_m, along) / foamStreak, dot(p_m, across));
-    // Octaves of 3 m down to 3 cm cells, of equal weight so that even a
-    // small patch has gaps: the coarsest break up what the foam's coarser
-    // level blurs, the finest are the bubbles' lace.
-    float texture = 0.0, amplitude = 1.0, scale = 0.3, total = 0.0;
-    float resolvedShare = 0.0;
-    for (int octave = 0; octave < 6; ++octave, scale *= 2.5) {
-        float resolved = 1.0 - smoothstep(0.25, 0.5, footprint_m * scale);
-        texture += amplitude * resolved * (foamNoise(q * scale + float(octave) * 17.0) - 0.5);
-        resolvedShare += amplitude * resolved;
-        total += amplitude;
-    }
-    // 0..1 with mean 1/2 and a spread of about 0.3 (6 octaves' mean has
-    // about 0.08), its contrast stretched
-    // back as octaves fade, kept within the threshold's soft edge of 0 and 1
-    // so that no foam covers nothing.
-    const float edge = 0.08;
-    texture = clamp(0.5 + 4.0 * texture / max(resolvedShare, 1e-3), edge, 1.0 - edge);
-    // Even where a wave breaks now, the foam is froth with gaps, not paint.
-    float share = 0.75 * amount;
-    float lace = smoothstep(1.0 - edge - share, 1.0 + edge - share, texture);
-    return mix(share, lace, resolvedShare / total);
-}
+#include "whitecap_foam.glsl"
 
 // swell::spectral::cascadeWeight.
 float cascadeWeight(float shortestWavelength_m, float footprint_m)
@@ -157,29 +114,61 @@ float foldJacobian(vec2 restOffset_m, int cascadeCount)
     return (1.0 + gradDx.x) * (1.0 + gradDz.y) - gradDx.y * gradDz.x;
 }
 
+// A foam level at texel position s (texel centres at integers), through a
+// cubic B-spline: four bilinear taps weighed as Sigg & Hadwiger (2005,
+// GPU Gems 2 ch. 20). Its contours are smooth curves where the bilinear
+// filter's, thresholded into foam edges, step along the texel grid.
+float foamBSpline(vec2 s, int level)
+{
+    vec2 cell = floor(s), f = s - cell;
+    vec2 w0 = (1.0 - f) * (1.0 - f) * (1.0 - f) / 6.0;
+    vec2 w1 = (4.0 - 6.0 * f * f + 3.0 * f * f * f) / 6.0;
+    vec2 w3 = f * f * f / 6.0;
+    vec2 w2 = 1.0 - w0 - w1 - w3;
+    vec2 g0 = w0 + w1, g1 = w2 + w3;
+    // The taps' texel coordinates, plus half a texel for the hardware's filter.
+    vec2 h0 = (cell - 1.0 + w1 / g0 + 0.5) / float(SWELL_FOAM_SIZE);
+    vec2 h1 = (cell + 1.0 + w3 / g1 + 0.5) / float(SWELL_FOAM_SIZE);
+    float l = float(level);
+    return g0.y * (g0.x * textureLod(oceanFoam, vec3(h0.x, h0.y, l), 0.0).r +
+                   g1.x * textureLod(oceanFoam, vec3(h1.x, h0.y, l), 0.0).r) +
+           g1.y * (g0.x * textureLod(oceanFoam, vec3(h0.x, h1.y, l), 0.0).r +
+                   g1.x * textureLod(oceanFoam, vec3(h1.x, h1.y, l), 0.0).r);
+}
+
 // The whitecap foam at a rest point, filtered over the footprint: from the
 // finest foam level whose window holds the point, cross-faded to the next
 // toward the window's edge (where texels are newest), and beyond the last,
 // that level's mean (its last mip), which is what distant foam averages to.
-float worldFoam(vec2 restOffset_m, float footprint_m)
+// The finest level first, so that where its window holds the point fully
+// no coarser level is fetched. With bSpline, where the pixel is finer than
+// a texel, the B-spline, cross-faded into the mipmaps as the footprint
+// grows to two texels.
+float worldFoam(vec2 restOffset_m, float footprint_m, bool bSpline)
 {
-    float foam = textureLod(oceanFoam, vec3(0.5, 0.5, float(SWELL_FOAM_LEVELS - 1)), float(SWELL_FOAM_LOG2_SIZE)).r;
-    for (int level = SWELL_FOAM_LEVELS - 1; level >= 0; --level) {
+    float foam = 0.0, left = 1.0; // the weight the coarser levels still have
+    for (int level = 0; level < SWELL_FOAM_LEVELS && left > 0.0; ++level) {
         vec4 window = foamLevels[level];
         vec2 texels = restOffset_m * window.z;
         float fromCentre = max(abs(texels.x), abs(texels.y)) / float(SWELL_FOAM_SIZE / 2);
         float inside = 1.0 - smoothstep(0.6, 0.9, fromCentre);
         if (inside > 0.0) {
-            vec3 uvw = vec3((window.xy + texels) / float(SWELL_FOAM_SIZE), float(level));
+            vec2 s = window.xy + texels - 0.5;
             float lod = log2(max(footprint_m * window.z, 1.0));
-            foam = mix(foam, textureLod(oceanFoam, uvw, lod).r, inside);
+            float here = textureLod(oceanFoam, vec3((s + 0.5) / float(SWELL_FOAM_SIZE), float(level)), lod).r;
+            if (bSpline && lod < 1.0)
+                here = mix(foamBSpline(s, level), here, lod);
+            foam += left * inside * here;
+            left *= 1.0 - inside;
         }
     }
+    if (left > 0.0)
+        foam += left * textureLod(oceanFoam, vec3(0.5, 0.5, float(SWELL_FOAM_LEVELS - 1)), float(SWELL_FOAM_LOG2_SIZE)).r;
     return foam;
 }
 
-// The normal and the foam at a footprint (the displacement left zero): the
-// slopes and the foam through their mipmaps. The slope variance the mipmaps
+// The normal at a footprint (the displacement left zero, the foam left to
+// oceanShading): the slopes through their mipmaps. The slope variance the mipmaps
 // average away comes back from the second moments (LEAN mapping, Olano &
 // Baker 2010: E[s^2] - E[s]^2 over the footprint), with that of the waves no
 // cascade holds (Elfouhaily et al. 1997), as the highlight's spread.
@@ -219,8 +208,7 @@ SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightSc
     slopeVariance = (slopeVariance + unresolvedSlopeVariance) * heightScale * heightScale;
     vec3 alongX = vec3(1.0 + gradDx.x, gradDy.x, gradDz.x);
     vec3 alongZ = vec3(gradDx.y, gradDy.y, 1.0 + gradDz.y);
-    float foam = foamCoverage(heightScale * worldFoam(restOffset_m, footprint_m), restOffset_m, footprint_m);
-    return SurfacePoint(vec3(0.0), normalize(cross(alongZ, alongX)), foam, alongX, alongZ, slopeVariance);
+    return SurfacePoint(vec3(0.0), normalize(cross(alongZ, alongX)), 0.0, alongX, alongZ, slopeVariance, 0.0, vec2(0.0));
 }
 
 SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
@@ -239,10 +227,27 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
 }
 
 // The slope textures hold every wave the pixel resolves, at the cost of one
-// filtered fetch per cascade: the grid's normal adds nothing.
+// filtered fetch per cascade: the grid's normal adds nothing. The foam is
+// the pixel's alone (the vertices have no use for it).
 SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m, vec3 gridAlongX,
                           vec3 gridAlongZ, float heightScale)
 {
-    return spectralSlopes(restOffset_m, pixelFootprint_m, heightScale);
+    SurfacePoint p = spectralSlopes(restOffset_m, pixelFootprint_m, heightScale);
+    FoamLook foam = foamLook(heightScale * worldFoam(restOffset_m, pixelFootprint_m, true), restOffset_m, pixelFootprint_m);
+    p.foam = foam.cover;
+    p.breakingFoam = foam.breaking;
+    p.foamSlope = foam.slope;
+    return p;
+}
+
+// The bubbles under the whitecaps: a breaking crest drives a plume of them
+// down, which thins faster than the surface foam fades (its bubbles rise
+// into the foam and dissolve): the foam's amount squared, filtered over
+// the footprint (which the caller widens: the plume is diffuse, none of
+// the surface's lace shows through the water), without the B-spline.
+float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
+{
+    float amount = worldFoam(restOffset_m, footprint_m, false);
+    return amount * amount;
 }
 #endif

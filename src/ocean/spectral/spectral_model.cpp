@@ -6,6 +6,7 @@
 #include "swell/spectral_model.h"
 
 #include "gl/mip_downsample.h"
+#include "ocean/spectral/foam_texture.h"
 #include "ocean/spectral/foam_replay.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/whitecaps.h"
@@ -43,12 +44,21 @@ struct alignas(16) CascadeUniform {
     WarpWaveUniform warp[kWarpWaves];
 };
 static_assert(sizeof(CascadeUniform) == 16 + 32 * kWarpWaves);
+// One lattice of the foam's texture (swell::spectral::FoamNoiseMap).
+struct alignas(16) FoamNoiseUniform {
+    glm::vec4 map; // column-major: cells per metre along x, then along z
+    glm::vec2 offset_cells;
+    float cyclesPerMetre;
+};
+static_assert(sizeof(FoamNoiseUniform) == 32);
 struct alignas(16) SpectralUniforms {
     CascadeUniform cascades[kCascades];
     glm::vec2 windDirection;
     float foamStreak;
     float unresolvedSlopeVariance; // of the waves shorter than the last cascade's
     glm::vec4 foamLevels[kFoamLevels]; // the grid centre in texels modulo N (x, y), texels per metre
+    FoamNoiseUniform foamNoise[kFoamNoiseMaps];
+    float breakingFoamAmount; // foam above this amount is a breaking's own (kBreakingFoamAge_s)
 };
 
 // Foam fades out over this much J above the threshold, a fifth of the
@@ -224,6 +234,14 @@ public:
         for (int level = 0; level < kFoamLevels; ++level)
             u.foamLevels[level] =
                 glm::vec4(windows_[size_t(level)].originTexels, float(1.0 / foamTexel_m(*field_, level)), 0.0f);
+        const auto noise = foamNoiseMaps(gridCenter_m, glm::dvec2(u.windDirection), double(u.foamStreak));
+        for (int i = 0; i < kFoamNoiseMaps; ++i) {
+            const FoamNoiseMap& m = noise[size_t(i)];
+            u.foamNoise[i] = {glm::vec4(m.map[0], m.map[1]), m.offset_cells, m.cyclesPerMetre};
+        }
+        // Foam decays as exp(-age / lifetime) from 1 where the crest folds.
+        const double lifetime = settings_.foamLifetime_s > 0.0 ? settings_.foamLifetime_s : 1.0;
+        u.breakingFoamAmount = float(std::exp(-kBreakingFoamAge_s / lifetime));
         glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
     }
 
