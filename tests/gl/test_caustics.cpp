@@ -28,6 +28,8 @@ class Caustics : public swell::test::GlTest {};
 
 // A high sun, off to one side: its rays reach the slices drifted.
 const glm::vec3 kSun = glm::normalize(glm::vec3(-0.3f, 0.8f, -0.5f));
+// A low one, 10 degrees up: the level surface reflects a third of its light.
+const glm::vec3 kLowSun = glm::normalize(glm::vec3(0.98f, 0.17f, 0.0f));
 // The water's absorption in tests/golden's scenes, 1/m (r, g, b).
 const glm::vec3 kAbsorption_per_m(0.40f, 0.07f, 0.09f);
 
@@ -88,7 +90,8 @@ void main()
 
 class CausticsRun {
 public:
-    explicit CausticsRun(const swell::WaveModel& model) : sources_(swell::gl::ShaderSources::embedded())
+    explicit CausticsRun(const swell::WaveModel& model, glm::vec3 sun = kSun)
+        : sources_(swell::gl::ShaderSources::embedded())
     {
         gpu_ = model.createGpu(sources_);
         gpu_->prepareFrame(glm::dvec2(0.0), 20.0);
@@ -97,7 +100,7 @@ public:
         swell::detail::ShaderVariant variant;
         variant.oceanFile = gpu_->shaderFile();
         const swell::detail::BlockProgram program = swell::detail::buildCausticsProgram(sources_, variant);
-        map_.place(glm::dvec3(0.0), glm::vec2(0.0f), kSun);
+        map_.place(glm::dvec3(0.0), glm::vec2(0.0f), sun);
         triangles_ = map_.render(program);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
@@ -190,6 +193,14 @@ TEST_F(Caustics, FlatWaterLetsTheSunsTransmittedLightDownEverywhere)
         const glm::dvec3 expected = expectedFloor(depth_m);
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(floor[c], expected[c], 0.05 * expected[c]) << "depth " << depth_m << " m, channel " << c;
+    }
+    // A low sun: 1 - R is 0.65, far from the high sun's 0.98 (whose 2% of
+    // reflection alone lies within the 5%), so Fresnel's part is held too.
+    const CausticsRun low(flat, kLowSun);
+    const double lowTransmittance = 1.0 - fresnelAirToWater(kLowSun.y);
+    for (const SliceStats& s : low.slices()) {
+        EXPECT_NEAR(s.mean, lowTransmittance, 0.05 * lowTransmittance);
+        EXPECT_LT(s.contrast, 0.01);
     }
 }
 
