@@ -196,14 +196,16 @@
 // splatted with additive blending into a camera-following map.
 // The map's side, m, and its texels per side: 48 m around the camera holds
 // what a view under or near the water shows in detail; 512 texels of 9.4 cm
-// resolve the focusing of the waves 0.3 m long and up, which the source grid
-// holds.
+// resolve the focusing of the waves the source grid holds.
 #define SWELL_CAUSTICS_EXTENT_M 48.0
 #define SWELL_CAUSTICS_SIZE 512
-// Source grid cells per side (the surface refracted): about 0.16 m cells over
-// the map and its margins, so waves down to 0.32 m (SWELL_MIN_CELLS_PER_WAVELENGTH
-// cells) focus the light; each is refracted once for every slice.
-#define SWELL_CAUSTICS_CELLS 384
+// Source grid cells per side (the surface refracted): about 0.24 m cells over
+// the map and its margins, so waves down to 0.5 m (SWELL_MIN_CELLS_PER_WAVELENGTH
+// cells) focus the light; each is refracted once for every slice. On
+// llvmpipe (2 shared cores, swell bench --still of docs/images/caustics.toml
+// at 960x540) the pass took a median 655 ms a frame with 384 cells (0.16 m)
+// and 459 ms with 256, whose net on the floor still shows every strand.
+#define SWELL_CAUSTICS_CELLS 256
 // Depth slices of the map: the pattern changes with depth as the waves'
 // focal lengths are passed (a refracting surface of radius R focuses at
 // n R / (n - 1), about 4 R in water: Hecht, "Optics", eq. 5.8); 3 slices, their depths in
