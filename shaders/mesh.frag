@@ -3,6 +3,7 @@
 #include "fog.glsl"
 #include "lighting.glsl"
 #include "underwater.glsl"
+#include "caustics.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -25,7 +26,21 @@ void main()
     return;
 #endif
     vec3 ambient = max(skyAmbient(n), vec3(0.0));
-    vec3 light = ambient + sunColor * sunIntensity * phongDiffuse(n);
+    vec3 sun = vec3(phongDiffuse(n));
+#if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
+    // Below the mean level the light comes through the water, seen from
+    // above or below alike: the sky's attenuated by the water above p (as
+    // the in-scattered light is, underwater.glsl), the sun's refracted,
+    // focused by the waves and absorbed along its ray (caustics.glsl).
+    if (vPosition.y < 0.0) {
+        ambient *= exp(-waterAbsorption * -vPosition.y);
+        // The pixel's footprint at its distance (a level floor's, seen
+        // face on), in the map's texels: its mip level.
+        float footprint_m = 2.0 * distance(vPosition, eyePosition) / (viewportSize.y * projectionFocalY);
+        sun = causticsSunlight(n, vPosition, waterAbsorption, log2(max(footprint_m / causticsTexel_m(), 1.0)));
+    }
+#endif
+    vec3 light = ambient + sunColor * sunIntensity * sun;
     vec3 color = vColor * light;
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS
     color = n * 0.5 + 0.5;

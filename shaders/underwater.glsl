@@ -129,14 +129,14 @@ vec3 underwaterBackground(vec3 d, float depth_m)
     return underwaterInscatter(vec3(d.x, min(d.y, 0.0), d.z), depth_m, 1e6);
 }
 
-// World geometry at p seen from under the water: the light that reaches p is
-// attenuated by the water above it (exp(-a depth), as for the in-scattered
-// light), then the path from the eye to p fogs it.
+// World geometry at p seen from under the water, `lit` as the light that
+// reaches p leaves it (mesh.frag: attenuated by the water above p, and the
+// sun's light focused by the waves, caustics.glsl): the path from the eye
+// to p fogs it.
 vec3 underwaterGeometry(vec3 lit, vec3 p)
 {
     vec3 toPoint = p - eyePosition;
     float path_m = length(toPoint);
-    vec3 shaded = lit * exp(-waterAbsorption * max(-p.y, 0.0));
-    return underwaterFog(shaded, toPoint / max(path_m, 1e-6), -eyePosition.y, path_m);
+    return underwaterFog(lit, toPoint / max(path_m, 1e-6), -eyePosition.y, path_m);
 }
 #endif

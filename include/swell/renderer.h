@@ -103,6 +103,7 @@ struct SWELL_API GpuWork {
 struct SWELL_API FrameCounters {
     long long waterTriangles = 0;
     long long worldTriangles = 0;
+    long long causticsTriangles = 0; // the surface's triangles refracted into the caustics map (each to every slice)
     int drawCalls = 0;         // the views': every glDraw* call Swell made for them
     int views = 0;             // views drawn since the last advanceTo()
     int simulationSteps = 0;   // 1 when the last advanceTo() moved the simulation to a new time or viewpoint

@@ -117,6 +117,10 @@ struct SWELL_API WaterSettings {
     // models and their queries work relative to it; DrawnSurface, the
     // floating objects and the renderer add it.
     double level_m = 0.0;
+    // Caustics: the sun's light focused by the waves on what lies under the
+    // water, drawn each frame into a map around the camera (off: the light
+    // under a level surface everywhere).
+    bool caustics = true;
 };
 
 struct SWELL_API ReflectionSettings {

@@ -209,4 +209,31 @@
 #define SWELL_UNIT_SKY_TRANSMITTANCE 14
 #define SWELL_UNIT_SKY_MULTISCATTER 15
 
+// Caustics (shaders/caustics.glsl, src/render/caustics_map.h): the sun's
+// light refracted by the drawn surface onto horizontal slices under it,
+// splatted with additive blending into a camera-following map.
+// The map's side, m, and its texels per side: 48 m around the camera holds
+// what a view under or near the water shows in detail; 512 texels of 9.4 cm
+// resolve the focusing of the waves the source grid holds.
+#define SWELL_CAUSTICS_EXTENT_M 48.0
+#define SWELL_CAUSTICS_SIZE 512
+// Source grid cells per side (the surface refracted): about 0.24 m cells over
+// the map and its margins, so waves down to 0.5 m (SWELL_MIN_CELLS_PER_WAVELENGTH
+// cells) focus the light; each is refracted once for every slice. On
+// llvmpipe (2 shared cores, swell bench --still of docs/images/caustics.toml
+// at 960x540) the pass took a median 655 ms a frame with 384 cells (0.16 m)
+// and 459 ms with 256, whose net on the floor still shows every strand.
+#define SWELL_CAUSTICS_CELLS 256
+// Depth slices of the map: the pattern changes with depth as the waves'
+// focal lengths are passed (a refracting surface of radius R focuses at
+// n R / (n - 1), about 4 R in water: Hecht, "Optics", eq. 5.8); 3 slices, their depths in
+// render/caustics_map.h, and the depths between interpolated.
+#define SWELL_CAUSTICS_SLICES 3
+// The sun's angular diameter, rad (0.53 deg, Allen's Astrophysical
+// Quantities): no focus is sharper than the sun's disc seen from the floor.
+#define SWELL_SUN_ANGULAR_DIAMETER_RAD 0.00925
+// The caustics map's texture unit and uniform block (the Caustics block of caustics.glsl).
+#define SWELL_UNIT_CAUSTICS 16
+#define SWELL_BINDING_CAUSTICS 4
+
 #endif

@@ -319,6 +319,11 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.water.level_m; },
            {.key = "water.level_m", .unit = "m", .min = -1.0e4, .max = 1.0e4, .sliderMin = -10.0, .sliderMax = 500.0,
             .description = "the water's mean level: the height of the surface at rest (a lake at 300 m)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.caustics; },
+           {.key = "water.caustics", .kind = K::Flag, .effect = E::Programs, .min = 0.0, .max = 1.0, .sliderMin = 0.0,
+            .sliderMax = 1.0,
+            .description = "the sun's light focused by the waves on what lies under the water (a map drawn each "
+                           "frame); off: the light under a level surface"}),
         // [reflection]
         at([](auto& s, std::size_t) -> auto& { return s.reflection.mode; },
            {.key = "reflection.mode", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kReflectionModes.size() - 1.0,

@@ -56,7 +56,7 @@ ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigne
                               std::vector<std::string> surfaceSources)
 {
     return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile), omittedWaterTerms,
-            std::move(surfaceSources)};
+            std::move(surfaceSources), scene.water.caustics};
 }
 
 std::vector<std::string> definesOf(const ShaderVariant& v)
@@ -69,6 +69,7 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
         fmt::format("SWELL_OCEAN_FILE \"{}\"", v.oceanFile),
         fmt::format("SWELL_OMITTED_TERMS {}", v.omittedWaterTerms),
         fmt::format("SWELL_SURFACE_SOURCES {}", v.surfaceSources.size()),
+        fmt::format("SWELL_CAUSTICS {}", v.caustics ? 1 : 0),
     };
 }
 
@@ -128,6 +129,13 @@ void LabelProgram::setRayFromPixel(const glm::dmat3& rayFromPixel) const
     glProgramUniformMatrix3dv(program_.id(), rayFromPixel_, 1, GL_FALSE, glm::value_ptr(rayFromPixel));
 }
 
+BlockProgram buildCausticsProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
+{
+    return BlockProgram(gl::buildProgram(
+        sources, {{GL_VERTEX_SHADER, "caustics.vert"}, {GL_GEOMETRY_SHADER, "caustics.geom"}, {GL_FRAGMENT_SHADER, "caustics.frag"}},
+        definesOf(variant)));
+}
+
 LabelPrograms buildLabelPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant)
 {
     const std::vector<std::string> labels{"SWELL_LABEL_PASS 1"};
@@ -152,6 +160,8 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
     p.skyInAir = BlockProgram(build(sources, variant, "sky.vert", "sky.frag", kInAir));
     p.meshInAir = MeshProgram(sources, variant, kInAir);
     p.skyBake = SkyBakeProgram(sources, variant);
+    if (variant.caustics)
+        p.caustics = buildCausticsProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),
                                               {"vRestPoint", "vPosition", "vNormal"}));
     p.probe = BlockProgram(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "surface_probe.comp"}}, definesOf(variant)));

@@ -27,6 +27,7 @@ struct ShaderVariant {
     // SWELL_SURFACE_SOURCES: the GLSL of each surface source drawn (the bodies'
     // wake's first when the scene has one; render/surface_sources.h).
     std::vector<std::string> surfaceSources{};
+    bool caustics = true;                              // SWELL_CAUSTICS: the caustics map drawn and read (water.caustics)
     bool operator==(const ShaderVariant&) const = default;
 };
 
@@ -110,7 +111,13 @@ struct Programs {
     // shades together.
     BlockProgram waterInAir, skyInAir;
     MeshProgram meshInAir;
+    // The caustics map's pass (caustics.vert/.geom/.frag, render/caustics_map.h);
+    // empty when the variant has no caustics.
+    BlockProgram caustics;
 };
+
+// The caustics pass's program for a variant (caustics.vert, .geom, .frag).
+BlockProgram buildCausticsProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
 
 // The label pass's programs (swell/labels.h): water, sky and meshes built
 // with SWELL_LABEL_PASS 1, writing each pixel's range, normal, class and

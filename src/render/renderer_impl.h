@@ -6,6 +6,7 @@
 
 #include "swell/renderer.h"
 
+#include "render/caustics_map.h"
 #include "render/cpu_parts.h"
 #include "render/frame_uniforms.h"
 #include "render/host_depth.h"
@@ -131,6 +132,8 @@ struct Renderer::Impl {
     // one: stepped apart from those drawn, so a query changes no frame.
     mutable std::optional<SceneBodies> queryBodies;
     WakeTexture wakeTexture;
+    // The sun's light under the water, drawn once per view (caustics_map.h).
+    CausticsMap caustics;
     SurfaceSourceParametersBuffer sourceParameters;
     SurfaceProbe surfaceProbe;
     HostDepthCopy hostDepth; // draw()'s copy of the host's depth, for its geometry under the water
@@ -256,6 +259,12 @@ struct Renderer::Impl {
     }
 
     void drawSky(bool inAir, const DepthConvention& depth);
+
+    // The caustics map for a view (caustics_map.h): placed always, drawn
+    // when the variant has caustics, the sun is up and Swell's own world,
+    // which alone reads it, is drawn and reaches under the water within the
+    // map; bound for the passes after it.
+    void drawCaustics(const ViewFrame& v, bool ownWorld);
 
     void drawWater(bool inAir);
 

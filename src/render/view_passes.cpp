@@ -108,6 +108,41 @@ void Renderer::Impl::drawSky(bool inAir, const DepthConvention& depth)
     glDepthFunc(depth.test);
 }
 
+namespace {
+
+// Whether any of the world's boxes (relative to the render origin) reaches
+// below the mean level inside the caustics map's square: where none does,
+// nothing the map lights is drawn (the default scene's island lies 1.7 km
+// from its camera), and the pass is left out. Unbounded worlds always do.
+bool worldUnderMap(const FrameUniforms& f, const CausticsUniforms& map)
+{
+    if (f.worldBoxCount < 0)
+        return true;
+    const glm::vec2 lo = map.mapCorner_m, hi = map.mapCorner_m + map.mapSize_m;
+    for (int i = 0; i < f.worldBoxCount; ++i) {
+        const WorldBoxUniform& box = f.worldBoxes[i];
+        if (box.min_m.y < 0.0f && box.max_m.x >= lo.x && box.min_m.x <= hi.x && box.max_m.z >= lo.y &&
+            box.min_m.z <= hi.y)
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+void Renderer::Impl::drawCaustics(const ViewFrame& v, bool ownWorld)
+{
+    caustics.place(v.origin, v.base.gridCenter, v.base.sunDirection);
+    if (programs.caustics && v.base.sunDirection.y > 0.0f && ownWorld && worldUnderMap(v.base, caustics.uniforms())) {
+        notify(true, "caustics");
+        modelGpu->bind();
+        counters.causticsTriangles += caustics.render(programs.caustics);
+        ++counters.drawCalls;
+        notify(false, "caustics");
+    }
+    caustics.bind();
+}
+
 void Renderer::Impl::drawWater(bool inAir)
 {
     (inAir ? programs.waterInAir : programs.water).use();
@@ -202,6 +237,7 @@ void Renderer::Impl::drawHost(PassGeometry& geometry, const PassView& pass, Pass
     bindFrame(uniforms, f);
     modelGpu->bind();
     wakeTexture.bind();
+    caustics.bind();
     sourceParameters.bind();
 }
 
@@ -264,6 +300,8 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         counters.drawCalls += kSkyFaces;
         bakedSky = skyBakeKeyOf(scene);
     }
+    // The sun's light under the water, before every pass that draws the world.
+    drawCaustics(v, ownWorld != nullptr);
     const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));
     const glm::ivec4 passViewport(0, 0, scaled);
     reflection.resize(scaled);

@@ -46,14 +46,15 @@ TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
                                  std::to_string(int(reflection)) + ", layout " + std::to_string(int(layout)));
                     swell::detail::Programs programs;
                     EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
-                    EXPECT_TRUE(programs.water && programs.sky && programs.capture);
+                    EXPECT_TRUE(programs.water && programs.sky && programs.capture && programs.caustics);
                     ++built;
                 }
     EXPECT_EQ(built, int(models.size()) * int(views.size()) * 2 * 2);
 }
 
 // Without the wake or any surface source (wake.enabled = false; the variants above have the wake), with
-// every model and debug view.
+// every model and debug view, and without the caustics (water.caustics = false: the world's
+// shading reads no map, and the caustics pass is not built).
 TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
 {
     swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
@@ -65,10 +66,12 @@ TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
                                      DebugView::Lod, DebugView::Wireframe, DebugView::Foam}) {
             swell::detail::ShaderVariant variant{view, ReflectionMode::RayMarch, GridLayout::Geometric, model};
             variant.surfaceSources.clear();
-            SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake");
+            variant.caustics = false;
+            SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake, no caustics");
             swell::detail::Programs programs;
             EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
             EXPECT_TRUE(programs.water && programs.capture);
+            EXPECT_FALSE(programs.caustics);
             ++built;
         }
     EXPECT_EQ(built, int(models.size()) * 7);

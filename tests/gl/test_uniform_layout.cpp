@@ -1,5 +1,6 @@
 // The C++ mirrors of the std140 blocks must match what the driver lays out.
 #include "ocean/gerstner/gerstner_uniforms.h"
+#include "render/caustics_map.h"
 #include "render/gpu_types.h"
 #include "support/gl_test.h"
 #include "swell/gl/shader.h"
@@ -139,6 +140,37 @@ TEST_F(UniformLayout, FrameAndGerstnerBlocksMatchTheirCppMirrors)
 #undef SWELL_EXPECT_OFFSET
     EXPECT_EQ(blockSize(p.id(), "Frame"), GLint(sizeof(F)));
     EXPECT_EQ(blockSize(p.id(), "GerstnerWaves"), GLint(sizeof(W)));
+}
+
+// The Caustics block (caustics.glsl), every field used.
+const char* kCausticsProbe = R"(#include "caustics.glsl"
+void main() {
+    gl_Position = vec4(causticsSun, causticsMapSize_m) + vec4(causticsMapCorner_m, causticsSourceCorner_m)
+                + vec4(causticsGridCenter_m, causticsCellSize_m, float(causticsCells)) + causticsSliceDepth_m;
+}
+)";
+
+TEST_F(UniformLayout, CausticsBlockMatchesItsCppMirror)
+{
+    auto files = std::map<std::string, std::string>();
+    const swell::gl::ShaderSources embedded = swell::gl::ShaderSources::embedded();
+    for (const char* f : {"caustics.glsl", "water_optics.glsl", "swell/shader_constants.h"})
+        files[f] = embedded.file(f);
+    files["probe.vert"] = kCausticsProbe;
+    files["probe.frag"] = "out vec4 c; void main() { c = vec4(1.0); }\n";
+    swell::gl::Program p = swell::gl::buildProgram(swell::gl::ShaderSources::fromMap(files),
+                                                   {{GL_VERTEX_SHADER, "probe.vert"}, {GL_FRAGMENT_SHADER, "probe.frag"}},
+                                                   {"SWELL_CAUSTICS 0"});
+    using C = swell::detail::CausticsUniforms;
+    EXPECT_EQ(offsetOf(p.id(), "causticsSun"), GLint(offsetof(C, sun)));
+    EXPECT_EQ(offsetOf(p.id(), "causticsMapSize_m"), GLint(offsetof(C, mapSize_m)));
+    EXPECT_EQ(offsetOf(p.id(), "causticsMapCorner_m"), GLint(offsetof(C, mapCorner_m)));
+    EXPECT_EQ(offsetOf(p.id(), "causticsSourceCorner_m"), GLint(offsetof(C, sourceCorner_m)));
+    EXPECT_EQ(offsetOf(p.id(), "causticsGridCenter_m"), GLint(offsetof(C, gridCenter_m)));
+    EXPECT_EQ(offsetOf(p.id(), "causticsCellSize_m"), GLint(offsetof(C, cellSize_m)));
+    EXPECT_EQ(offsetOf(p.id(), "causticsCells"), GLint(offsetof(C, cells)));
+    EXPECT_EQ(offsetOf(p.id(), "causticsSliceDepth_m"), GLint(offsetof(C, sliceDepth_m)));
+    EXPECT_EQ(blockSize(p.id(), "Caustics"), GLint(sizeof(C)));
 }
 
 } // namespace

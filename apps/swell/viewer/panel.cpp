@@ -96,8 +96,8 @@ void Panel::drawStats(const FrameStats& stats)
     // second, "0 fps" said nothing.
     ImGui::Text("%d x %d px   %.1f ms   %.1f fps", stats.size.x, stats.size.y, stats.times.latest(),
                 average > 0.0f ? 1000.0f / average : 0.0f);
-    ImGui::TextWrapped("water %lld triangles, world %lld, %d draw calls", stats.counters.waterTriangles,
-                stats.counters.worldTriangles, stats.counters.drawCalls);
+    ImGui::TextWrapped("water %lld triangles, world %lld, caustics %lld, %d draw calls", stats.counters.waterTriangles,
+                stats.counters.worldTriangles, stats.counters.causticsTriangles, stats.counters.drawCalls);
     const std::string overlay = fmt::format("avg {:.1f} ms, max {:.1f} ms", average, stats.times.maximum());
     ImGui::PlotLines("##frame times", stats.times.values(), stats.times.count(), stats.times.offset(), overlay.c_str(),
                      0.0f, std::max(1.0f, stats.times.maximum() * 1.2f), ImVec2(ImGui::GetContentRegionAvail().x, 48.0f));

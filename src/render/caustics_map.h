@@ -1,0 +1,72 @@
+// The caustics map (shaders/caustics.glsl): each view, the sun's light
+// refracted by the drawn surface down to SWELL_CAUSTICS_SLICES level slices,
+// splatted into an R32F texture array that follows the camera (snapped to
+// its texels, so the pattern stays put in the world as the camera moves),
+// and the Caustics uniform block saying where it lies. The world's shading
+// (mesh.frag) looks it up under the water.
+#pragma once
+
+#include "swell/gl/handle.h"
+#include "swell/shader_constants.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+
+namespace swell::detail {
+
+class BlockProgram;
+
+// Mirrors the Caustics block of shaders/caustics.glsl (std140);
+// tests/gl/test_uniform_layout.cpp checks each offset with the driver.
+struct alignas(16) CausticsUniforms {
+    glm::vec3 sun{0.0f, 1.0f, 0.0f}; // towards the sun, unit
+    float mapSize_m = float(SWELL_CAUSTICS_EXTENT_M);
+    glm::vec2 mapCorner_m{0.0f};     // texel (0, 0)'s outer corner relative to the render origin, x, z
+    glm::vec2 sourceCorner_m{0.0f};  // the source grid's vertex (0, 0) relative to the render origin
+    glm::vec2 gridCenter_m{0.0f};    // the wave model's grid centre relative to the render origin
+    float cellSize_m = 1.0f;
+    int cells = SWELL_CAUSTICS_CELLS;
+    glm::vec4 sliceDepth_m{0.0f};    // xyz: each slice's depth below the mean level
+};
+static_assert(sizeof(CausticsUniforms) == 64, "the Caustics block is 64 bytes in std140");
+
+// The slices' depths below the mean level, m: 1 m, where the short waves'
+// light comes to its first foci, 3 m and 8 m, where the longer waves' do
+// (a wave of length L and height H focuses at about 4 R = L^2 / (pi^2 H)
+// under its crest: 0.5 to 1 m waves a few cm high within these depths).
+inline constexpr std::array<float, SWELL_CAUSTICS_SLICES> kCausticsSliceDepths_m{1.0f, 3.0f, 8.0f};
+
+class CausticsMap {
+public:
+    // Places the map around the render origin `origin_m` (absolute, sea
+    // frame, m) for the sun `sun` (towards it, unit), the wave model's grid
+    // centre at gridCenter_m relative to the render origin; writes the
+    // uniform block. Once per view, whether the map is drawn or not (the
+    // world's shading reads the block either way).
+    void place(glm::dvec3 origin_m, glm::vec2 gridCenter_m, glm::vec3 sun);
+    // Draws the map with `program` (caustics.vert/.geom/.frag, the wave
+    // model's GLSL): the wave model's buffers and textures bound. Sets the
+    // state it needs and leaves the framebuffer, viewport and blending as
+    // the next pass must set them, and builds the map's mip chain (one
+    // glGenerateTextureMipmap). Returns the source triangles drawn.
+    long long render(const BlockProgram& program);
+    // Binds the map and the uniform block for the world's programs.
+    void bind() const;
+    const CausticsUniforms& uniforms() const { return uniforms_; }
+    GLuint texture() const { return texture_.id(); }
+
+private:
+    void create();
+
+    CausticsUniforms uniforms_;
+    gl::Texture texture_;
+    gl::Framebuffer framebuffer_;
+    gl::Buffer block_, indices_;
+    gl::VertexArray vertexArray_;
+    GLsizei indexCount_ = 0;
+};
+
+} // namespace swell::detail
