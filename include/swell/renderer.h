@@ -114,9 +114,11 @@ struct SWELL_API FrameCounters {
     int oceanTransforms = 0;   // the wave model's sets of inverse FFTs for this frame (spectral model)
     int foamSteps = 0;         // its foam's steps for this frame: more than one is a replay of its history
     // The frame's own queries of the water (each floating object's, the
-    // viewpoint's side of it), answered on the GPU from what it draws; and
-    // those whose drawn triangle lay beyond the GPU's block of vertices, found
-    // with the wave model's CPU queries instead.
+    // viewpoint's side of it within the waves' reach): those answered on the
+    // GPU from what it draws (WaveModelGpu::answersFrameQueries, the
+    // spectral model), and those answered with the wave model's CPU queries
+    // (every one of a model whose CPU queries are cheap; for the others,
+    // a query whose drawn triangle lay beyond the GPU's block of vertices).
     int queriesOnGpu = 0;
     int queriesOnCpu = 0;
     // Every draw call of the views (the sky's bake and the anti-aliasing's

@@ -89,13 +89,62 @@ Agreement compare(swell::Renderer& renderer, const swell::Scene& scene, glm::dve
     return out;
 }
 
-void expectAgreement(const std::string& preset, double time_s, std::shared_ptr<const swell::SurfaceSource> source = nullptr)
+// A model's GPU half that answers the frame's queries on the GPU whatever
+// its model's CPU queries cost: the GPU's queries tested on Gerstner waves,
+// whose CPU queries the renderer otherwise takes.
+class AnsweringGpu final : public swell::WaveModelGpu {
+public:
+    explicit AnsweringGpu(std::unique_ptr<swell::WaveModelGpu> inner) : inner_(std::move(inner)) {}
+    std::string shaderFile() const override { return inner_->shaderFile(); }
+    void prepareFrame(glm::dvec2 centre_m, double time_s) override { inner_->prepareFrame(centre_m, time_s); }
+    void prepareView(glm::dvec2 centre_m) override { inner_->prepareView(centre_m); }
+    void bind() const override { inner_->bind(); }
+    bool answersFrameQueries() const override { return true; }
+
+private:
+    std::unique_ptr<swell::WaveModelGpu> inner_;
+};
+
+class AnsweredOnTheGpu final : public swell::WaveModel {
+public:
+    explicit AnsweredOnTheGpu(std::shared_ptr<const swell::WaveModel> inner) : inner_(std::move(inner)) {}
+    std::string_view name() const override { return inner_->name(); }
+    std::string summary() const override { return inner_->summary(); }
+    swell::WaveReach reach() const override { return inner_->reach(); }
+    double heightDeviation_m() const override { return inner_->heightDeviation_m(); }
+    swell::SurfacePoint surfaceAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
+    {
+        return inner_->surfaceAt(r, t, f);
+    }
+    glm::dvec3 displacementAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
+    {
+        return inner_->displacementAt(r, t, f);
+    }
+    glm::dvec2 restPointUnder(glm::dvec2 p, double t, const swell::SurfaceFilter& f) const override
+    {
+        return inner_->restPointUnder(p, t, f);
+    }
+    std::unique_ptr<swell::WaveModelGpu> createGpu(const swell::gl::ShaderSources& shaders) const override
+    {
+        return std::make_unique<AnsweringGpu>(inner_->createGpu(shaders));
+    }
+
+private:
+    std::shared_ptr<const swell::WaveModel> inner_;
+};
+
+// onGpu: the scene's model answers on the GPU (the spectral model does by
+// itself; Gerstner waves are made to).
+void expectAgreement(const std::string& preset, double time_s, std::shared_ptr<const swell::SurfaceSource> source = nullptr,
+                     bool forceGpu = false)
 {
     SCOPED_TRACE(preset);
     swell::Scene base = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/" + preset + ".toml");
     const glm::dvec3 eye_m = swell::cameraAt(base.camera, time_s).position_m;
     const swell::Scene scene = withBuoysAround(base, eye_m);
     swell::Renderer renderer(scene);
+    if (forceGpu)
+        renderer.setWaveModel(std::make_shared<AnsweredOnTheGpu>(swell::makeWaveModel(scene)));
     if (source)
         renderer.addSurfaceSource(source);
     const Agreement a = compare(renderer, scene, eye_m, time_s);
@@ -108,7 +157,22 @@ void expectAgreement(const std::string& preset, double time_s, std::shared_ptr<c
 
 TEST_F(FrameQueries, ObjectsStandOnTheDrawnWaterInTheSpectralStorm) { expectAgreement("storm", 20.0); }
 
-TEST_F(FrameQueries, ObjectsStandOnTheDrawnWaterOfGerstnerWaves) { expectAgreement("calm", 7.5); }
+TEST_F(FrameQueries, ObjectsStandOnTheDrawnWaterOfGerstnerWaves) { expectAgreement("calm", 7.5, nullptr, true); }
+
+// Gerstner waves' CPU queries cost microseconds: the frame asks them, and
+// the CPU does not wait for the GPU.
+TEST_F(FrameQueries, GerstnerWavesAreAskedOnTheCpuWithoutWaitingForTheGpu)
+{
+    swell::Scene base = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/calm.toml");
+    const glm::dvec3 eye_m = swell::cameraAt(base.camera, 7.5).position_m;
+    const swell::Scene scene = withBuoysAround(base, eye_m);
+    swell::Renderer renderer(scene);
+    renderer.advanceTo(7.5, eye_m);
+    const swell::FrameCounters counters = renderer.counters();
+    EXPECT_EQ(counters.queriesOnGpu, 0);
+    EXPECT_GE(counters.queriesOnCpu, int(scene.objects.size()));
+    EXPECT_EQ(counters.simulationGpu.dispatches, 0);
+}
 
 // A host's source: a mound the probe must add as the vertex shader does.
 class Mound final : public swell::SurfaceSource {

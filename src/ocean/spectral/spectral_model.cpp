@@ -206,6 +206,9 @@ public:
 
     void prepareView(glm::dvec2 gridCenter_m) override { updateUniforms(gridCenter_m); }
 
+    // The CPU twin's queries transform every cascade at each new time.
+    bool answersFrameQueries() const override { return true; }
+
     void updateUniforms(glm::dvec2 gridCenter_m)
     {
         SpectralUniforms u{};
