@@ -100,6 +100,8 @@ void Renderer::Impl::advanceTo(double time_s, glm::dvec3 viewpointWorld)
     if (!points.empty())
         water = onGpu ? probeWater(points, next, grid)
                       : answerOnCpu(points, model(), drawnSurfaceAt(viewpoint, time_s, next.sources, 0.0), time_s);
+    if (points.empty() || !onGpu)
+        surfaceProbe.release();
     for (const ProbedPoint& p : water)
         (p.drawnOnCpu ? counters.queriesOnCpu : counters.queriesOnGpu) += 1;
     if (askViewpoint) {

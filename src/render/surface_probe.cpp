@@ -38,6 +38,13 @@ std::vector<ProbedPoint> answerOnCpu(const std::vector<glm::dvec2>& points, cons
     return out;
 }
 
+void SurfaceProbe::release()
+{
+    queries_ = {};
+    answers_ = {};
+    capacity_ = 0;
+}
+
 std::size_t SurfaceProbe::answerBytes() { return sizeof(GpuAnswer); }
 
 std::vector<ProbedPoint> SurfaceProbe::run(const std::vector<glm::dvec2>& points, glm::dvec3 origin,

@@ -58,6 +58,9 @@ public:
     std::vector<ProbedPoint> run(const std::vector<glm::dvec2>& points, glm::dvec3 origin, const GridShape& shape,
                                  const GridPlacement& placement, const DrawnSurface& cpu);
 
+    // Gives its buffers back (a frame with nothing to ask the GPU keeps none).
+    void release();
+
 private:
     gl::Buffer queries_, answers_;
     std::size_t capacity_ = 0; // queries the buffers hold
