@@ -76,9 +76,10 @@ struct SWELL_API SimulationCpuTime {
     // own water queries included), the wake's frame blended and uploaded.
     double bodies_ms = 0.0;
     // The frame's queries of the water: answered on the GPU (the dispatch,
-    // the wait for it, the triangles found among its vertices), the scene
-    // objects' poses found with them, and a view's query of which side of
-    // the water its eye is when it is not the simulated viewpoint.
+    // the wait for it, the triangles found among its vertices) or, for a
+    // model whose CPU queries are cheap, with those; the scene objects'
+    // poses found with them, and a view's query of which side of the water
+    // its eye is when it is not the simulated viewpoint.
     double queries_ms = 0.0;
     // Each view's culling and uniforms: the grid's tiles culled, the frame
     // uniforms and the world's boxes found, the uniforms and the surface
