@@ -85,6 +85,12 @@
 // 2^(n-1) x 2^(n-1) invocations reduces a 2^n x 2^n block in shared memory.
 #define SWELL_UNIT_DOWNSAMPLE_SOURCE 14
 #define SWELL_DOWNSAMPLE_LEVELS 5
+// ...and how many levels a dispatch of its software rasteriser's pass
+// writes (shaders/mip_blocks.comp): each invocation reduces a 2^n x 2^n
+// block. That pass builds two chains in the same dispatches; the second's
+// source is read from this unit.
+#define SWELL_DOWNSAMPLE_BLOCK_LEVELS 4
+#define SWELL_UNIT_DOWNSAMPLE_SOURCE_B 17
 // ...and its uniform block: where the cells lie.
 #define SWELL_BINDING_WAKE 2
 // Surface sources (swell/surface_source.h): the WaveSources block of
