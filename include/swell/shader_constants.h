@@ -107,9 +107,11 @@
 #define SWELL_STORAGE_PROBE_QUERIES 0
 #define SWELL_STORAGE_PROBE_ANSWERS 1
 #define SWELL_PROBE_BLOCK 8
-// The wake foam's noise repeats after this many cells, m / cell size: far
-// longer than any foam patch, short enough for a float to hold its cells exactly.
-#define SWELL_WAKE_NOISE_PERIOD 256
+// The surface sources' foam (the bodies' wake's) fades as exp(-age / this),
+// s: the spectral whitecaps' default lifetime (salt water, Monahan &
+// O'Muircheartaigh 1980). The shading draws source foam above
+// exp(-1 s / this) as a breaking's own (the whitecaps' dense layer).
+#define SWELL_SOURCE_FOAM_LIFETIME_S 3.85
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).
