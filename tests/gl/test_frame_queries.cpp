@@ -105,32 +105,46 @@ private:
     std::unique_ptr<swell::WaveModelGpu> inner_;
 };
 
-class AnsweredOnTheGpu final : public swell::WaveModel {
+// A model that draws and answers what `inner` does, counting the CPU
+// queries asked of it; with answerOnGpu its GPU half answers the frame's
+// queries (AnsweringGpu).
+class ForwardingModel final : public swell::WaveModel {
 public:
-    explicit AnsweredOnTheGpu(std::shared_ptr<const swell::WaveModel> inner) : inner_(std::move(inner)) {}
+    ForwardingModel(std::shared_ptr<const swell::WaveModel> inner, bool answerOnGpu)
+        : inner_(std::move(inner)), answerOnGpu_(answerOnGpu)
+    {
+    }
     std::string_view name() const override { return inner_->name(); }
     std::string summary() const override { return inner_->summary(); }
     swell::WaveReach reach() const override { return inner_->reach(); }
     double heightDeviation_m() const override { return inner_->heightDeviation_m(); }
     swell::SurfacePoint surfaceAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
     {
+        ++queries;
         return inner_->surfaceAt(r, t, f);
     }
     glm::dvec3 displacementAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
     {
+        ++queries;
         return inner_->displacementAt(r, t, f);
     }
     glm::dvec2 restPointUnder(glm::dvec2 p, double t, const swell::SurfaceFilter& f) const override
     {
+        ++queries;
         return inner_->restPointUnder(p, t, f);
     }
     std::unique_ptr<swell::WaveModelGpu> createGpu(const swell::gl::ShaderSources& shaders) const override
     {
-        return std::make_unique<AnsweringGpu>(inner_->createGpu(shaders));
+        std::unique_ptr<swell::WaveModelGpu> gpu = inner_->createGpu(shaders);
+        if (answerOnGpu_)
+            return std::make_unique<AnsweringGpu>(std::move(gpu));
+        return gpu;
     }
+    mutable std::atomic<long long> queries{0};
 
 private:
     std::shared_ptr<const swell::WaveModel> inner_;
+    bool answerOnGpu_;
 };
 
 // onGpu: the scene's model answers on the GPU (the spectral model does by
@@ -144,7 +158,7 @@ void expectAgreement(const std::string& preset, double time_s, std::shared_ptr<c
     const swell::Scene scene = withBuoysAround(base, eye_m);
     swell::Renderer renderer(scene);
     if (forceGpu)
-        renderer.setWaveModel(std::make_shared<AnsweredOnTheGpu>(swell::makeWaveModel(scene)));
+        renderer.setWaveModel(std::make_shared<ForwardingModel>(swell::makeWaveModel(scene), true));
     if (source)
         renderer.addSurfaceSource(source);
     const Agreement a = compare(renderer, scene, eye_m, time_s);
@@ -208,39 +222,6 @@ TEST_F(FrameQueries, ObjectsStandOnTheDrawnWaterWithASurfaceSource)
     expectAgreement("trade-wind", 20.0, std::make_shared<const Mound>());
 }
 
-// A model that counts the CPU queries asked of it, drawing what `inner` draws.
-class CountingModel final : public swell::WaveModel {
-public:
-    explicit CountingModel(std::shared_ptr<const swell::WaveModel> inner) : inner_(std::move(inner)) {}
-    std::string_view name() const override { return inner_->name(); }
-    std::string summary() const override { return inner_->summary(); }
-    swell::WaveReach reach() const override { return inner_->reach(); }
-    double heightDeviation_m() const override { return inner_->heightDeviation_m(); }
-    swell::SurfacePoint surfaceAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
-    {
-        ++queries;
-        return inner_->surfaceAt(r, t, f);
-    }
-    glm::dvec3 displacementAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
-    {
-        ++queries;
-        return inner_->displacementAt(r, t, f);
-    }
-    glm::dvec2 restPointUnder(glm::dvec2 p, double t, const swell::SurfaceFilter& f) const override
-    {
-        ++queries;
-        return inner_->restPointUnder(p, t, f);
-    }
-    std::unique_ptr<swell::WaveModelGpu> createGpu(const swell::gl::ShaderSources& shaders) const override
-    {
-        return inner_->createGpu(shaders);
-    }
-    mutable std::atomic<long long> queries{0};
-
-private:
-    std::shared_ptr<const swell::WaveModel> inner_;
-};
-
 // The storm (two floating objects, no rigid bodies): after the first frame,
 // frames at new times and viewpoints draw without a single CPU query of the
 // wave model. The frame answered its queries with the model's before.
@@ -248,7 +229,7 @@ TEST_F(FrameQueries, AFrameAsksTheWaveModelsCpuQueriesNothing)
 {
     const swell::Scene scene = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/storm.toml");
     swell::Renderer renderer(scene);
-    auto model = std::make_shared<CountingModel>(swell::makeWaveModel(scene));
+    auto model = std::make_shared<ForwardingModel>(swell::makeWaveModel(scene), false);
     renderer.setWaveModel(model);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     renderer.renderImage(camera, 1.0, {64, 36});
