@@ -263,8 +263,8 @@ struct Renderer::Impl {
     // The caustics map for a view (caustics_map.h): placed always, drawn
     // when the variant has caustics, the sun is up and either Swell's own
     // world is drawn and reaches under the water within the map, or the
-    // shafts of light (water.shafts) may be seen, the main pass's near
-    // plane not wholly in the air; bound for the passes after it.
+    // shafts of light (water.shafts) may be seen, the eye below the waves'
+    // crests; bound for the passes after it.
     void drawCaustics(const ViewFrame& v, bool ownWorld);
 
     void drawWater(bool inAir);
