@@ -16,6 +16,7 @@ size=(--size 960x540 --time 20)
 "$swell" render "$out/calm-mirror.toml" -o "$out/calm-mirror.png" "${size[@]}"
 "$swell" render "$root/scenes/underwater.toml" -o "$out/underwater.png" "${size[@]}"
 "$swell" render "$out/caustics.toml" -o "$out/caustics.png" "${size[@]}"
+"$swell" render "$out/shafts.toml" -o "$out/shafts.png" "${size[@]}"
 "$swell" render "$root/scenes/under-way.toml" -o "$out/under-way.png" "${size[@]}"
 
 # The low grazing camera: the trade wind preset with its camera at 1.2 m.

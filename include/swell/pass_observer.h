@@ -9,7 +9,7 @@ namespace swell {
 // floating bodies and their wake stepped on the CPU to the frame's time),
 // "wake" (the wake's frame blended and uploaded), "caustics" (the
 // caustics map, when Swell's own world reaches under the water near the
-// camera), "reflection",
+// camera, or the eye is below the waves' crests with water.shafts on), "reflection",
 // "refraction", "waterline" (the mask, when the near plane meets the
 // waves), "main"; within "main", "underwater host" (draw(): the host's
 // geometry seen from under the water) and "water" for the water draw; then

@@ -121,6 +121,11 @@ struct SWELL_API WaterSettings {
     // water, drawn each frame into a map around the camera (off: the light
     // under a level surface everywhere).
     bool caustics = true;
+    // Shafts of light: the sun's light the water scatters towards an eye
+    // under the water, focused by the waves into shafts (the caustics map
+    // read along each view ray); off: none of the sun's light scattered
+    // (the water's colour alone, deepColor).
+    bool shafts = true;
 };
 
 struct SWELL_API ReflectionSettings {

@@ -244,4 +244,24 @@
 #define SWELL_UNIT_CAUSTICS 16
 #define SWELL_BINDING_CAUSTICS 4
 
+// Shafts of light (shaders/light_shafts.glsl, src/render/light_shafts.h):
+// the sun's beam scattered once towards an eye under the water.
+// The particles' scattering coefficient, 1/m: Petzold 1972's clear ocean
+// water (the Bahamas' Tongue of the Ocean, 530 nm), b = 0.037 (Mobley 1994,
+// "Light and Water", table 3.10), the clear water Swell's scenes show.
+#define SWELL_WATER_SCATTERING_PER_M 0.037
+// The Henyey-Greenstein 1941 phase function's asymmetry g (the mean cosine
+// of the scattering angle) matching Petzold's average particle phase
+// function: g = 0.924 (Mobley, Sundman and Boss 2002, "Phase function
+// effects on oceanic light fields", Applied Optics 41(6)). So forward a
+// lobe that the shafts show mainly looking towards the sun.
+#define SWELL_WATER_PHASE_G 0.924
+// Samples along each view ray through the caustics map, and how far they
+// reach, m: half the map's side (past it the map holds the mean alone, so
+// the shafts' pattern ends there; the mean itself is integrated in closed
+// form over the whole path). The samples crowd towards the eye (their
+// spacing grows linearly), where shafts are nearest and widest on screen.
+#define SWELL_SHAFTS_STEPS 16
+#define SWELL_SHAFTS_REACH_M 24.0
+
 #endif

@@ -146,7 +146,11 @@ void Renderer::Impl::drawCaustics(const ViewFrame& v, bool ownWorld)
     // Seen from under the water, the caustics on anything there (a hull's
     // underside included) are in full view.
     const bool wanted = v.base.eyeUnderwater != 0 || worldUnderMap(v.base, caustics.uniforms(), floating);
-    if (programs.caustics && v.base.sunDirection.y > 0.0f && ownWorld && wanted) {
+    // The shafts of light read it along the rays of any pixel under the water, the world drawn or not:
+    // wherever the main pass's near plane is not wholly in the air (its programs then have no shafts).
+    const bool shafts = variant.shafts && nearPlaneMedium(nearPlaneCorners(glm::inverse(v.viewProj), v.depth.nearNdcZ),
+                                                          simulatedReach()) != NearPlaneMedium::Air;
+    if (programs.caustics && v.base.sunDirection.y > 0.0f && ((ownWorld && wanted) || shafts)) {
         notify(true, "caustics");
         modelGpu->bind();
         counters.causticsTriangles += caustics.render(programs.caustics);
