@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -88,7 +89,7 @@ inline CentredBox centred(const Bounds& box) { return {0.5 * (box.lo + box.hi), 
 // from box to box), and the pad's part, |n| . pad, is found once a plane.
 class FrustumTest {
 public:
-    FrustumTest(const Frustum& frustum, glm::dvec3 pad)
+    FrustumTest(const Frustum& frustum, glm::dvec3 pad) : horizontalPad_m_(std::max(pad.x, pad.z))
     {
         for (size_t k = 0; k < frustum.size(); ++k) {
             planes_[k] = frustum[k];
@@ -109,7 +110,11 @@ public:
         return inside ? Containment::Inside : Containment::Partly;
     }
 
+    // The pad's larger horizontal half.
+    double horizontalPad_m() const { return horizontalPad_m_; }
+
 private:
+    double horizontalPad_m_;
     Frustum planes_{};
     std::array<glm::dvec3, 6> absNormals_{};
     std::array<double, 6> padRadius_{};

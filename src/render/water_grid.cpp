@@ -126,7 +126,12 @@ void WaterGrid::chooseTiles(const FrustumTest& test, size_t b, int level, int nx
     const Containment c = test(node.box);
     if (c == Containment::Outside)
         return;
-    if (c == Containment::Inside) {
+    // A node of 2 x 2 tiles whose box is mostly the waves' reach (its tiles
+    // far smaller than the reach around them, as near the camera in a
+    // storm): its tiles' boxes are nearly its own, and testing each of them
+    // would rule out hardly any triangle. It is drawn whole.
+    const bool padded = 4.0 * std::max(node.box.half.x, node.box.half.z) < test.horizontalPad_m();
+    if (c == Containment::Inside || padded) {
         for (int ty = ny * side; ty < std::min((ny + 1) * side, height); ++ty)
             for (int tx = nx * side; tx < std::min((nx + 1) * side, width); ++tx)
                 mask |= std::uint64_t(1) << (ty * kBlockTiles + tx);
