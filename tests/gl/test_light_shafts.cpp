@@ -7,6 +7,7 @@
 #include "render/caustics_map.h"
 #include "render/light_shafts.h"
 #include "render/programs.h"
+#include "support/fresnel_reference.h"
 #include "support/gl_test.h"
 #include "swell/flat_model.h"
 #include "swell/gerstner_model.h"
@@ -36,18 +37,7 @@ const glm::dvec3 kSunIrradiance(1.0, 0.96, 0.9);
 // A pixel's width over its distance: 540 rows over a 75-degree field.
 const double kPixelSpread = 2.0 * std::tan(0.5 * 75.0 * 3.14159265358979 / 180.0) / 540.0;
 
-// Fresnel's reflectance of unpolarised light from air into water at the
-// cosine of incidence cosI (Hecht, "Optics", 4th ed., eqs. 4.34 and 4.40),
-// written here apart from the shaders' water_optics.glsl.
-double fresnelAirToWater(double cosI)
-{
-    const double n = SWELL_WATER_IOR;
-    const double sinT = std::sqrt(1.0 - cosI * cosI) / n;
-    const double cosT = std::sqrt(1.0 - sinT * sinT);
-    const double rs = (cosI - n * cosT) / (cosI + n * cosT);
-    const double rp = (n * cosI - cosT) / (n * cosI + cosT);
-    return 0.5 * (rs * rs + rp * rp);
-}
+using swell::test::fresnelAirToWater;
 
 // Ripples 1.5 to 4 m long from three directions, slopes a k about 0.16
 // (tests/golden/test_caustics_render.cpp's): foci between 3 and 8 m down.

@@ -14,6 +14,7 @@
 // In the golden tier (Release only): four frames at 256^2, each simulating
 // the boat and its wake from the start of their history.
 #include "support/gl_test.h"
+#include "support/foam_view.h"
 #include "support/golden.h"
 #include "swell/camera.h"
 #include "swell/renderer.h"
@@ -33,34 +34,16 @@ constexpr double kTime_s = 20.0;
 
 class WakeFoam : public test::GlTest {};
 
-Scene underWayFoam()
-{
-    Scene scene = loadScene(SWELL_SOURCE_DIR "/scenes/under-way.toml");
-    scene.debugView = DebugView::Foam;
-    // Each pixel's own share: FXAA would blend across the edges it finds.
-    scene.antialiasing = Antialiasing::Off;
-    return scene;
-}
+Scene underWayFoam() { return test::foamDebugView(loadScene(SWELL_SOURCE_DIR "/scenes/under-way.toml")); }
 
-// The foam view straight down from height_m over (x, z), linear share. At
-// 20 s the boat's centre is near z = -110 m (4 m/s towards -z from -30 m),
-// its stern near -106.5 m: the view over z = -100 m holds the wash from the
-// stern to about 13 m astern of it.
+// The foam view straight down from height_m over (x, z). At 20 s the boat's
+// centre is near z = -110 m (4 m/s towards -z from -30 m), its stern near
+// -106.5 m: the view over z = -100 m holds the wash from the stern to about
+// 13 m astern of it.
 std::vector<double> foamView(Renderer& renderer, const Scene& scene, double x_m, double z_m, double height_m,
                              const char* name)
 {
-    Camera camera = cameraAt(scene.camera, 0.0);
-    camera.position_m = {x_m, height_m, z_m};
-    camera.yaw_deg = 0.0;
-    camera.pitch_deg = -89.0;
-    const Image image = renderer.renderImage(camera, kTime_s, {kView, kView});
-    if (name)
-        test::saveTestImage(image, name);
-    std::vector<double> share;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x)
-            share.push_back(test::srgbToLinear(image.pixel(x, y)[0]));
-    return share;
+    return test::foamViewDown(renderer, scene, {x_m, height_m, z_m}, 0.0, kTime_s, kView, name);
 }
 
 double at(const std::vector<double>& view, int x, int y) { return view[size_t(y * kView + x)]; }
