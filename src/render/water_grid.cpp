@@ -126,10 +126,10 @@ void WaterGrid::chooseTiles(const FrustumTest& test, size_t b, int level, int nx
     const Containment c = test(node.box);
     if (c == Containment::Outside)
         return;
-    // A node of 2 x 2 tiles whose box is mostly the waves' reach (its tiles
-    // far smaller than the reach around them, as near the camera in a
-    // storm): its tiles' boxes are nearly its own, and testing each of them
-    // would rule out hardly any triangle. It is drawn whole.
+    // A node whose box is mostly the waves' reach (its tiles far smaller
+    // than the reach around them, as near the camera in a storm): its
+    // tiles' boxes are nearly its own, and testing each of them would rule
+    // out hardly any triangle. It is drawn whole.
     const bool padded = 4.0 * std::max(node.box.half.x, node.box.half.z) < test.horizontalPad_m();
     if (c == Containment::Inside || padded) {
         for (int ty = ny * side; ty < std::min((ny + 1) * side, height); ++ty)
