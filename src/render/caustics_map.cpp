@@ -137,6 +137,18 @@ long long CausticsMap::render(const BlockProgram& program)
     return indexCount_ / 3;
 }
 
+GpuWork CausticsMap::renderWork()
+{
+    constexpr long long kR32f = 4; // bytes a texel
+    long long texels = 0;
+    for (long long size = SWELL_CAUSTICS_SIZE; size >= 1; size /= 2)
+        texels += size * size * SWELL_CAUSTICS_SLICES;
+    GpuWork work;
+    work.mipmaps = 1;
+    work.bytesWritten = texels * kR32f;
+    return work;
+}
+
 void CausticsMap::bind() const
 {
     glBindTextureUnit(SWELL_UNIT_CAUSTICS, texture_.id());

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "swell/gl/handle.h"
+#include "swell/renderer.h"
 #include "swell/shader_constants.h"
 
 #include <glm/vec2.hpp>
@@ -53,6 +54,10 @@ public:
     // the next pass must set them, and builds the map's mip chain (one
     // glGenerateTextureMipmap). Returns the source triangles drawn.
     long long render(const BlockProgram& program);
+    // What a render() writes other than by drawing, as GpuWork counts it:
+    // the clear of every slice's base level and the mip chain's levels 1
+    // and up (bytes), its one glGenerateTextureMipmap.
+    static GpuWork renderWork();
     // Binds the map and the uniform block for the world's programs.
     void bind() const;
     const CausticsUniforms& uniforms() const { return uniforms_; }

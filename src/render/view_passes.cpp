@@ -154,6 +154,9 @@ void Renderer::Impl::drawCaustics(const ViewFrame& v, bool ownWorld)
         notify(true, "caustics");
         modelGpu->bind();
         counters.causticsTriangles += caustics.render(programs.caustics);
+        const GpuWork work = CausticsMap::renderWork();
+        counters.viewsGpu.mipmaps += work.mipmaps;
+        counters.viewsGpu.bytesWritten += work.bytesWritten;
         ++counters.drawCalls;
         notify(false, "caustics");
     }

@@ -104,6 +104,34 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     EXPECT_EQ(renderer.counters().simulationGpu.bytesWritten, 0);
 }
 
+// A view that draws the caustics map (the eye under the water) counts what
+// the map's pass writes beside its draw: the clear of its slices' base
+// level and its mip chain, one glGenerateTextureMipmap; a view in the air
+// over an open sea draws no map and counts nothing.
+TEST_F(FrameWork, AViewUnderTheWaterCountsTheCausticsMapsClearAndMipChain)
+{
+    const Scene scene = test::openSpectralStorm();
+    Renderer renderer(scene);
+    Camera camera = cameraAt(scene.camera, 0.0);
+    camera.position_m.y = -6.0;
+    renderer.renderImage(camera, 0.0, kSize);
+    const FrameCounters& c = renderer.counters();
+    ASSERT_GT(c.causticsTriangles, 0) << "the view under the water drew the caustics map";
+    long long texels = 0;
+    for (long long size = SWELL_CAUSTICS_SIZE; size >= 1; size /= 2)
+        texels += size * size * SWELL_CAUSTICS_SLICES;
+    EXPECT_EQ(c.viewsGpu.mipmaps, 1);
+    EXPECT_EQ(c.viewsGpu.bytesWritten, texels * 4) << "R32F texels, base level and mip chain";
+    EXPECT_EQ(c.viewsGpu.dispatches, 0);
+    // Today's map: 3 slices of 512^2.
+    EXPECT_EQ(c.viewsGpu.bytesWritten, 4194300);
+
+    camera.position_m.y = 40.0;
+    renderer.renderImage(camera, 1.0, kSize);
+    EXPECT_EQ(renderer.counters().causticsTriangles, 0);
+    EXPECT_EQ(renderer.counters().viewsGpu.bytesWritten, 0);
+}
+
 double threadCpu_ms()
 {
     timespec t{};
