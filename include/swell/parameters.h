@@ -45,10 +45,12 @@ enum class ParameterKind {
     Direction3, // glm::dvec3 of any non-zero length, normalised on use; TOML [x, y, z]
     Vector3,    // glm::dvec3, every component in range; TOML [x, y, z]
     Direction2, // glm::dvec2 in the xz plane, non-zero, normalised on use; TOML [x, z]
+    DateTime,   // an instant, double seconds since 1970-01-01T00:00:00Z; TOML offset date-time
+                // (2003-10-17T12:30:30-07:00), written back in UTC (2003-10-17T19:30:30Z)
 };
 
 // The value of any parameter. Which alternative a kind uses:
-//   Real: double; Integer, Choice: int64; Flag: bool;
+//   Real, DateTime: double; Integer, Choice: int64; Flag: bool;
 //   Colour, Direction3, Vector3: glm::dvec3; Direction2: glm::dvec2.
 using ParameterValue = std::variant<double, std::int64_t, bool, glm::dvec2, glm::dvec3>;
 
@@ -170,7 +172,12 @@ SWELL_API std::string rangeMessage(const Parameter& p, std::string_view name, do
 // p.key when `name` is empty.
 SWELL_API std::string valueProblem(const Parameter& p, const ParameterValue& value, std::string_view name = {});
 
-// The value as a TOML literal: 1200.0, 256, true, "raymarch", [0.7, 0.8, 0.9], inf.
+// The value as a TOML literal: 1200.0, 256, true, "raymarch", [0.7, 0.8, 0.9], inf,
+// 2003-10-17T19:30:30Z.
 SWELL_API std::string formatValue(const Parameter& p, const ParameterValue& value);
+
+// An instant (seconds since 1970-01-01T00:00:00Z) as a TOML date-time in
+// UTC, to the second: 2003-10-17T19:30:30Z.
+SWELL_API std::string formatDateTime(double time_s);
 
 } // namespace swell

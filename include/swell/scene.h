@@ -73,10 +73,22 @@ struct SWELL_API GridSettings {
     double fadeEnd_m = 1900.0;
 };
 
+// The sun placed by an instant and a place on Earth (swell/sun_position.h)
+// instead of by a direction; north is -z, east +x.
+struct SWELL_API SunPlace {
+    double time_s = 946728000.0; // seconds since 1970-01-01T00:00:00Z (UTC), 1950..2050; default 2000-01-01T12:00:00Z
+    double latitude_deg = 0.0;   // north +, -90..90
+    double longitude_deg = 0.0;  // east +, -180..180
+};
+
 struct SWELL_API SunSettings {
-    glm::dvec3 direction{-0.4, 0.35, -0.85}; // towards the sun, world space; normalised on use
-    glm::dvec3 color{1.0, 0.95, 0.85};        // linear RGB, 0..1
-    double intensity = 1.0;                   // multiplier, 0..20
+    // Towards the sun, world space; normalised on use. When `place` is set,
+    // the solar position there and then, kept in step by the setters of
+    // sun.time, sun.latitude_deg and sun.longitude_deg (swell/parameters.h).
+    glm::dvec3 direction{-0.4, 0.35, -0.85};
+    glm::dvec3 color{1.0, 0.95, 0.85}; // linear RGB, 0..1
+    double intensity = 1.0;            // multiplier, 0..20
+    std::optional<SunPlace> place{};   // the sun placed by date, time and place instead of `direction`
 };
 
 // What the built-in sky is (when no cubemap faces are given).

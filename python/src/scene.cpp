@@ -152,6 +152,13 @@ ParameterValue toParameterValue(const Parameter& p, py::handle v, const std::str
     case ParameterKind::Direction2:
         value = toVec2(v, name);
         break;
+    case ParameterKind::DateTime:
+        // Seconds since 1970-01-01T00:00:00Z, as datetime.timestamp() gives.
+        if (isBool(v) || !PyNumber_Check(v.ptr()) || !py::hasattr(v, "__float__"))
+            throw py::type_error(name + ": expected seconds since 1970-01-01T00:00:00Z (datetime.timestamp()), got "
+                                 + typeName(v));
+        value = v.cast<double>();
+        break;
     }
     if (const std::string problem = valueProblem(p, value, name); !problem.empty())
         throw py::value_error(problem);
@@ -161,7 +168,8 @@ ParameterValue toParameterValue(const Parameter& p, py::handle v, const std::str
 py::object toPython(const Parameter& p, const ParameterValue& value)
 {
     switch (p.kind) {
-    case ParameterKind::Real: return py::float_(std::get<double>(value));
+    case ParameterKind::Real:
+    case ParameterKind::DateTime: return py::float_(std::get<double>(value));
     case ParameterKind::Integer: return py::int_(std::get<std::int64_t>(value));
     case ParameterKind::Flag: return py::bool_(std::get<bool>(value));
     case ParameterKind::Choice: {
@@ -204,6 +212,7 @@ std::string_view kindName(ParameterKind kind)
     case ParameterKind::Direction3: return "direction3";
     case ParameterKind::Vector3: return "vector3";
     case ParameterKind::Direction2: return "direction2";
+    case ParameterKind::DateTime: return "datetime";
     }
     return "";
 }

@@ -6,6 +6,7 @@
 #include "swell/scene_file.h"
 
 #include "swell/shader_constants.h"
+#include "swell/sun_position.h"
 
 #include <fmt/format.h>
 
@@ -125,7 +126,44 @@ Parameter at(Ref, Parameter p)
     return p;
 }
 
+// The sun's place and time, for reading (defaults when the sun is given by
+// its direction) and for writing (setting one places the sun).
+const SunPlace& placeOf(const Scene& s)
+{
+    static const SunPlace none;
+    return s.sun.place ? *s.sun.place : none;
+}
+SunPlace& placeOf(Scene& s)
+{
+    if (!s.sun.place)
+        s.sun.place.emplace();
+    return *s.sun.place;
+}
+
+// A field of the sun's place: setting it moves the sun there and then, so
+// sun.direction, which everything downstream reads (and whose change
+// bakes the sky again), never disagrees with the place.
+template <class Ref>
+struct PlaceField {
+    static void set(Scene& s, std::size_t i, const ParameterValue& v)
+    {
+        Field<Ref>::set(s, i, v);
+        const SunPlace& place = *s.sun.place;
+        s.sun.direction = sunDirectionOf(solarPosition(place.time_s, place.latitude_deg, place.longitude_deg));
+    }
+};
+
+template <class Ref>
+Parameter placing(Ref, Parameter p)
+{
+    p.get = &Field<Ref>::get;
+    p.set = &PlaceField<Ref>::set;
+    return p;
+}
+
 bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
+bool sunIsPlaced(const Scene& s) { return s.sun.place.has_value(); }
+bool sunIsNotPlaced(const Scene& s) { return !s.sun.place.has_value(); }
 bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
 bool swellIsSet(const Scene& s) { return s.waves.wind && s.waves.wind->swell; }
 
@@ -254,7 +292,23 @@ std::vector<Parameter> buildTable()
         // [sun]
         at([](auto& s, std::size_t) -> auto& { return s.sun.direction; },
            {.key = "sun.direction", .kind = K::Direction3, .min = -kDirectionLimit, .max = kDirectionLimit,
-            .sliderMin = -1.0, .sliderMax = 1.0, .description = "towards the sun [x, y, z], world space"}),
+            .sliderMin = -1.0, .sliderMax = 1.0,
+            .description = "towards the sun [x, y, z], world space (north -z, east +x); not with sun.time",
+            .present = sunIsNotPlaced}),
+        // The sun placed by the date, the time and the place instead
+        // (swell/sun_position.h, Michalsky 1988): each sets sun.direction.
+        placing([](auto& s, std::size_t) -> auto& { return placeOf(s).time_s; },
+                {.key = "sun.time", .kind = K::DateTime, .min = kSolarPositionFirst_s, .max = kSolarPositionLast_s,
+                 .sliderMin = 946684800.0, .sliderMax = 1893456000.0,
+                 .description = "places the sun by the date and time (with its UTC offset) at sun.latitude_deg and "
+                                "sun.longitude_deg (Michalsky 1988); sets sun.direction, so the sky is baked again",
+                 .present = sunIsPlaced}),
+        placing([](auto& s, std::size_t) -> auto& { return placeOf(s).latitude_deg; },
+                {.key = "sun.latitude_deg", .unit = "deg", .min = -90.0, .max = 90.0, .sliderMin = -90.0,
+                 .sliderMax = 90.0, .description = "with sun.time: where the sea is, north +", .present = sunIsPlaced}),
+        placing([](auto& s, std::size_t) -> auto& { return placeOf(s).longitude_deg; },
+                {.key = "sun.longitude_deg", .unit = "deg", .min = -180.0, .max = 180.0, .sliderMin = -180.0,
+                 .sliderMax = 180.0, .description = "with sun.time: where the sea is, east +", .present = sunIsPlaced}),
         at([](auto& s, std::size_t) -> auto& { return s.sun.color; },
            {.key = "sun.color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "sunlight colour, linear RGB"}),

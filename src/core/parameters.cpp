@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -85,7 +86,8 @@ std::string formatNumber(double x)
 bool holdsKind(const Parameter& p, const ParameterValue& v)
 {
     switch (p.kind) {
-    case K::Real: return std::holds_alternative<double>(v);
+    case K::Real:
+    case K::DateTime: return std::holds_alternative<double>(v);
     case K::Integer:
     case K::Choice: return std::holds_alternative<std::int64_t>(v);
     case K::Flag: return std::holds_alternative<bool>(v);
@@ -167,6 +169,8 @@ std::string rangeText(const Parameter& p)
 {
     if (p.kind == K::Flag)
         return "true or false";
+    if (p.kind == K::DateTime)
+        return fmt::format("a date and time with its UTC offset, {} to {}", formatDateTime(p.min), formatDateTime(p.max));
     if (p.kind == K::Choice) {
         std::string s;
         for (std::size_t i = 0; i < p.choices.size(); ++i) {
@@ -203,7 +207,8 @@ std::string rangeMessage(const Parameter& p, std::string_view name, double x)
 {
     bool finiteExpected = !(std::isinf(x) && (x > 0 ? std::isinf(p.max) : std::isinf(p.min)));
     const char* what = (std::isfinite(x) || !finiteExpected) ? "is out of range" : "is not a finite number";
-    return fmt::format("{} = {} {}; allowed {}", name, formatNumber(x), what, rangeText(p));
+    const std::string shown = p.kind == K::DateTime && std::isfinite(x) ? formatDateTime(x) : formatNumber(x);
+    return fmt::format("{} = {} {}; allowed {}", name, shown, what, rangeText(p));
 }
 
 std::string valueProblem(const Parameter& p, const ParameterValue& value, std::string_view name)
@@ -213,7 +218,8 @@ std::string valueProblem(const Parameter& p, const ParameterValue& value, std::s
     if (!holdsKind(p, value))
         return fmt::format("{} holds the wrong type of value", name);
     switch (p.kind) {
-    case K::Real: {
+    case K::Real:
+    case K::DateTime: {
         double x = std::get<double>(value);
         return inRange(p, x) ? "" : rangeMessage(p, name, x);
     }
@@ -254,6 +260,7 @@ std::string formatValue(const Parameter& p, const ParameterValue& value)
         return "?";
     switch (p.kind) {
     case K::Real: return formatReal(std::get<double>(value));
+    case K::DateTime: return formatDateTime(std::get<double>(value));
     case K::Integer: return fmt::format("{}", std::get<std::int64_t>(value));
     case K::Flag: return std::get<bool>(value) ? "true" : "false";
     case K::Choice: {
@@ -274,6 +281,29 @@ std::string formatValue(const Parameter& p, const ParameterValue& value)
     }
     }
     return "?";
+}
+
+std::string formatDateTime(double time_s)
+{
+    if (!std::isfinite(time_s))
+        return formatNumber(time_s);
+    using namespace std::chrono;
+    // Whole seconds and milliseconds (a TOML date-time's fraction; finer
+    // than a millisecond moves the sun by less than 1e-5 degree).
+    auto seconds = static_cast<std::int64_t>(std::floor(time_s));
+    auto milliseconds = static_cast<std::int64_t>(std::llround((time_s - double(seconds)) * 1000.0));
+    if (milliseconds == 1000) {
+        ++seconds;
+        milliseconds = 0;
+    }
+    const std::int64_t dayNumber = seconds >= 0 ? seconds / 86400 : -((-seconds + 86399) / 86400);
+    const year_month_day date{sys_days{days{dayNumber}}};
+    const std::int64_t second = seconds - dayNumber * 86400;
+    std::string text = fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}", int(date.year()), unsigned(date.month()),
+                                   unsigned(date.day()), second / 3600, second / 60 % 60, second % 60);
+    if (milliseconds != 0)
+        text += fmt::format(".{:03}", milliseconds);
+    return text + "Z";
 }
 
 } // namespace swell

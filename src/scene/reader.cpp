@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -108,6 +109,7 @@ public:
                      fmt::format("waves.wind.count + waves.swell.count = {}; at most {} waves in all (SWELL_MAX_WAVES)",
                                  total, SWELL_MAX_WAVES));
         }
+        checkSunPlace();
         // One depth for both wave sources (see WaveSource).
         if (scene_.waves.wind)
             scene_.waves.wind->depth_m = scene_.waves.listed.depth_m;
@@ -115,6 +117,33 @@ public:
     }
 
 private:
+    // The sun is given either by its direction or by the date, time and
+    // place, and the place needs all three.
+    void checkSunPlace()
+    {
+        if (!scene_.sun.place)
+            return;
+        const char* placeKeys[] = {"sun.time", "sun.latitude_deg", "sun.longitude_deg"};
+        const char* first = nullptr;
+        for (const char* key : placeKeys)
+            if (places_.has(key) && (first == nullptr || places_.at(key).line < places_.at(first).line))
+                first = key;
+        if (places_.has("sun.direction"))
+            fail(places_.at(first),
+                 fmt::format("{} and sun.direction exclude each other: give the sun's direction, or place it by "
+                             "sun.time, sun.latitude_deg and sun.longitude_deg",
+                             first));
+        for (const char* key : placeKeys)
+            if (!places_.has(key))
+                fail(places_.at(first),
+                     fmt::format("{} places the sun with sun.time, sun.latitude_deg and sun.longitude_deg; {} is "
+                                 "missing{}",
+                                 first, key,
+                                 std::string_view(key) == "sun.time"
+                                     ? " (a date and time with its UTC offset: sun.time = 2003-10-17T12:30:30-07:00)"
+                                     : ""));
+    }
+
     // Entries of a table in the order they appear in the file (toml++ keeps
     // them sorted by name), so the first problem reported is the first one written.
     static std::vector<std::pair<const toml::key*, const toml::node*>> inFileOrder(const toml::table& table)
@@ -358,6 +387,9 @@ private:
         case ParameterKind::Direction3:
         case ParameterKind::Vector3: expected = "an array of 3 numbers [x, y, z]" + unit; break;
         case ParameterKind::Direction2: expected = "an array of 2 numbers [x, z]" + unit; break;
+        case ParameterKind::DateTime:
+            expected = "a date and time with its UTC offset (2003-10-17T12:30:30-07:00, or Z for UTC)";
+            break;
         }
         fail(places_.of(node.source()), fmt::format("{} must be {}, not {}", shown, expected, typeName(node)));
     }
@@ -389,6 +421,30 @@ private:
         for (int c = 0; c < N; ++c)
             v[c] = readNumber(p, (*array)[static_cast<std::size_t>(c)], fmt::format("{}[{}]", shown, c), true);
         return v;
+    }
+
+    // A TOML offset date-time as seconds since 1970-01-01T00:00:00Z. A local
+    // date-time (no offset) names no instant, so it is refused, as are a
+    // date or a time alone.
+    double readDateTime(const Parameter& p, const toml::node& node, const std::string& shown)
+    {
+        const auto* v = node.as_date_time();
+        if (v == nullptr)
+            wrongType(p, node, shown);
+        const toml::date_time& dt = v->get();
+        if (!dt.offset)
+            fail(places_.of(node.source()),
+                 fmt::format("{} has no UTC offset, so it names no instant; add one (2003-10-17T12:30:30-07:00), or "
+                             "Z for UTC",
+                             shown));
+        using namespace std::chrono;
+        const year_month_day date{year{int(dt.date.year)}, month{unsigned(dt.date.month)}, day{unsigned(dt.date.day)}};
+        const double day_s = double(sys_days{date}.time_since_epoch().count()) * 86400.0;
+        const double x = day_s + dt.time.hour * 3600.0 + dt.time.minute * 60.0 + dt.time.second
+            + dt.time.nanosecond * 1.0e-9 - dt.offset->minutes * 60.0;
+        if (!inRange(p, x))
+            fail(places_.of(node.source()), rangeMessage(p, shown, x));
+        return x;
     }
 
     void readParameter(const Parameter& p, const toml::node& node, const std::string& shown, std::size_t item)
@@ -431,6 +487,7 @@ private:
         case ParameterKind::Direction3:
         case ParameterKind::Vector3: value = readVector<3>(p, node, shown); break;
         case ParameterKind::Direction2: value = readVector<2>(p, node, shown); break;
+        case ParameterKind::DateTime: value = readDateTime(p, node, shown); break;
         }
         places_.add(shown, node.source());
         // What is left: zero-length directions.

@@ -112,6 +112,8 @@ ParameterValue valueOf(const toml::node& node, const ResolvedKey& k, const std::
         fail(at, fmt::format("vary.\"{}\": [x, y, z]", key));
     case ParameterKind::Direction2:
         fail(at, fmt::format("vary.\"{}\": a 2D direction cannot be varied yet", key));
+    case ParameterKind::DateTime:
+        fail(at, fmt::format("vary.\"{}\": a date-time cannot be varied yet; vary sun.elevation_deg", key));
     }
     fail(at, "unreachable");
 }
@@ -371,6 +373,8 @@ SweepSample sweepSample(const Sweep& sweep, const Scene& base, int index)
     if (sunVaried) {
         const double e = glm::radians(elevation_deg), a = glm::radians(azimuth_deg);
         s.scene.sun.direction = glm::dvec3(std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a));
+        // The sample's sun is its direction now, not the base scene's date and place.
+        s.scene.sun.place.reset();
     }
     return s;
 }

@@ -52,6 +52,16 @@ SCENES = [
     ("body_least_density", "[[objects]]\npath = \"builtin:boat\"\nfloats = true\ndensity_kg_per_m3 = 5e-324\n", "2:8",
      "objects[0].density_kg_per_m3"),
     ("wake_too_coarse", "[wake]\ncell_size_m = 50.0\n", "2:", "wake.cell_size_m"),
+    # The sun placed by date, time and place: each mistake names its key.
+    ("sun_date_without_time", "[sun]\ntime = 2003-10-17\nlatitude_deg = 39.7\nlongitude_deg = -105.2\n", "2:8",
+     "sun.time must be a date and time with its UTC offset"),
+    ("sun_time_without_offset", "[sun]\ntime = 2003-10-17T12:30:30\nlatitude_deg = 39.7\nlongitude_deg = -105.2\n",
+     "2:8", "sun.time has no UTC offset"),
+    ("sun_latitude_out_of_range", "[sun]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 95.0\nlongitude_deg = 0.0\n",
+     "3:16", "sun.latitude_deg = 95 is out of range"),
+    ("sun_direction_and_time",
+     "[sun]\ndirection = [0.0, 1.0, 0.0]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 39.7\nlongitude_deg = 0.0\n",
+     "3:8", "exclude each other"),
 ]
 
 # Scenes that must render (exit 0): every documented table, bodies at the
@@ -66,6 +76,8 @@ GOOD_SCENES = [
     ("body_as_dense_as_water", "[[objects]]\npath = \"builtin:buoy\"\nfloats = true\ndensity_kg_per_m3 = 1025.0\n"),
     ("body_keys_not_floating", "[[objects]]\npath = \"builtin:buoy\"\nmass_kg = 100.0\n"),
     ("floating_rock", "[[objects]]\npath = \"builtin:rock\"\nfloats = true\ndensity_kg_per_m3 = 600.0\n"),
+    ("sun_placed", "[sun]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 39.742476\nlongitude_deg = -105.1786\n"
+     "[sky]\nmodel = \"physical\"\n"),
 ]
 
 # (name, arguments, expected exit code, substring of stderr)

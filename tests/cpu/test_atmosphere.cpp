@@ -5,6 +5,8 @@
 // sun is dim and bluish, issue 28 item 11), and published reference values.
 #include "swell/atmosphere.h"
 
+#include "published_sky.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -233,4 +235,77 @@ TEST(Atmosphere, RelativeLuminanceAgainstTheCieStandardClearSky)
     }
 }
 
+// Published reference: the colour of the clear sky, as chromaticity x, y,
+// against Preetham, Shirley & Smits (1999, appendix A.2: the zenith's fits
+// and the Perez distribution's coefficients for x and y) at turbidity 2,
+// at the zenith and 5 degrees above the horizon 90 degrees in azimuth from
+// the sun, for the sun 10 to 60 degrees up. The model's radiance at its
+// three wavelengths becomes XYZ by Bruneton's (2016, sec. 14.3) conversion
+// over the ASTM G-173 solar spectrum that Bruneton 2017 uses
+// (published_sky.h). Within 10% everywhere; measured, x then y: zenith
+// -5.0% -9.8% (sun 10), -3.1% -6.7% (20), -1.6% -4.3% (30), -2.6% -4.6%
+// (45), -5.0% -7.4% (60); horizon -7.5% -7.4%, -7.3% -5.7%, -5.8% -3.6%,
+// -5.7% -3.6%, -7.2% -5.8%: the model's sky is a little bluer than
+// Preetham's hazier one. Air without its 440 nm Rayleigh scattering, or
+// the channels swapped, is off by far more.
+TEST(Atmosphere, ChromaticityAgainstPreetham1999)
+{
+    const Atmosphere& air = clearAir();
+    for (double sunElevation : {10.0, 20.0, 30.0, 45.0, 60.0}) {
+        const glm::dvec3 sun = sunAt(sunElevation);
+        const double thetaSun = (90.0 - sunElevation) * kPi / 180.0;
+        for (const glm::dvec3 view : {glm::dvec3(0.0, 1.0, 0.0), skyAt(5.0, 90.0)}) {
+            const glm::dvec3 xyz = swell::test::skyXyz(air.skyRadiance(view, sun, 400));
+            const double x = xyz.x / (xyz.x + xyz.y + xyz.z), y = xyz.y / (xyz.x + xyz.y + xyz.z);
+            const swell::test::SkyColour reference =
+                swell::test::preethamSky(std::acos(view.y), std::acos(glm::dot(view, sun)), thetaSun, 2.0);
+            EXPECT_LT(relativeError(x, reference.x), 0.10)
+                << "sun " << sunElevation << ", view elevation " << std::asin(view.y) * 180.0 / kPi << ": x " << x
+                << ", Preetham " << reference.x;
+            EXPECT_LT(relativeError(y, reference.y), 0.10)
+                << "sun " << sunElevation << ", view elevation " << std::asin(view.y) * 180.0 / kPi << ": y " << y
+                << ", Preetham " << reference.y;
+        }
+    }
+}
+
+// Published reference, out of reach: the absolute luminance of the clear
+// sky from Preetham et al.'s (1999, appendix A.2) zenith fit and Perez
+// distribution at turbidity 2: 2.46, 2.95, 3.49, 4.47, 5.89 kcd/m^2 at the
+// zenith for the sun 10, 20, 30, 45, 60 degrees up, and 13.3 to 15.1 kcd/m^2
+// 5 degrees above the horizon 90 degrees from the sun. The model reaches
+// 0.68, 0.91, 1.10, 1.37, 1.69 kcd/m^2 at the zenith (28 to 31% of
+// Preetham's) and 3.8 to 6.2 kcd/m^2 at that horizon (29 to 43%), by
+// Bruneton's (2016) conversion with 683 lm/W and the CIE colour matching
+// functions (published_sky.h; the solar spectrum there gives 132.6 klx
+// above the atmosphere). That conversion is not what falls short: the
+// sRGB weights times 133.3 klx, used before, give the same within
+// 1.2% at the zenith and 2.8% at the horizon.
+// The atmospheres differ: Preetham's turbidity 2 holds an aerosol optical
+// depth of about 0.10 at 550 nm (their Angstrom beta = 0.04608 T - 0.04586
+// with alpha 1.3), Bruneton 2017's clear air 0.005. With its aerosols
+// raised to that depth (sky.mie_scale 18.9) the model reaches 34 to 67% at
+// the zenith and 20 to 37% at the horizon (measured): Bruneton's aerosols
+// scatter forward (g = 0.8) and absorb (albedo 0.9), so they dim the
+// horizon away from the sun. The test holds the figures reached, at
+// least 27% of Preetham's everywhere, so the sky cannot get dimmer unseen,
+// and no more than 110%.
+TEST(Atmosphere, AbsoluteLuminanceAgainstPreetham1999IsHeldWhereItIs)
+{
+    const Atmosphere& air = clearAir();
+    for (double sunElevation : {10.0, 20.0, 30.0, 45.0, 60.0}) {
+        const glm::dvec3 sun = sunAt(sunElevation);
+        const double thetaSun = (90.0 - sunElevation) * kPi / 180.0;
+        for (const glm::dvec3 view : {glm::dvec3(0.0, 1.0, 0.0), skyAt(5.0, 90.0)}) {
+            const double luminance = swell::test::skyXyz(air.skyRadiance(view, sun, 400)).y;
+            const double reference =
+                swell::test::preethamSky(std::acos(view.y), std::acos(glm::dot(view, sun)), thetaSun, 2.0).luminance_cd_per_m2;
+            EXPECT_GT(luminance / reference, 0.27) << "sun " << sunElevation << ", view " << view.y << ": " << luminance
+                                                   << " cd/m2, Preetham " << reference;
+            EXPECT_LT(luminance / reference, 1.10) << "sun " << sunElevation << ", view " << view.y;
+        }
+    }
+}
+
 } // namespace
+

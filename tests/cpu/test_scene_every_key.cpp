@@ -174,15 +174,22 @@ std::string_view tableOf(const Parameter& p)
     return dot == std::string_view::npos ? std::string_view() : p.key.substr(0, dot);
 }
 
-// Which wave source a scene takes: waves.wind (with a swell) and waves.list
-// exclude each other, so every key needs two scenes.
+// Which wave source and which sun a scene takes: waves.wind (with a swell)
+// and waves.list exclude each other, as do sun.direction and the sun's date
+// and place, so every key needs two scenes: the wind's, with the sun's
+// direction, and the listed waves', with the sun placed.
 enum class Waves { Wind, Listed };
+
+bool placesTheSun(const Parameter& p)
+{
+    return p.key == "sun.time" || p.key == "sun.latitude_deg" || p.key == "sun.longitude_deg";
+}
 
 bool belongsToOtherSource(const Parameter& p, Waves waves)
 {
     if (waves == Waves::Wind)
-        return p.list == ParameterList::Waves;
-    return p.key.starts_with("waves.wind.") || p.key.starts_with("waves.swell.");
+        return p.list == ParameterList::Waves || placesTheSun(p);
+    return p.key.starts_with("waves.wind.") || p.key.starts_with("waves.swell.") || p.key == "sun.direction";
 }
 
 // Every parameter of the table at its default, plus the keys that are not
@@ -251,6 +258,7 @@ TEST(SceneEveryKey, EveryDocumentedKeyLoadsInEachForm)
             EXPECT_EQ(scene.sky.cubemapFaces.size(), 6u);
             ASSERT_EQ(scene.camera.path.size(), 1u);
             EXPECT_EQ(scene.waves.wind.has_value(), waves == Waves::Wind);
+            EXPECT_EQ(scene.sun.place.has_value(), waves == Waves::Listed);
             for (const Parameter& p : parameters()) {
                 if (!belongsToOtherSource(p, waves) && isPresent(p, scene)) {
                     EXPECT_EQ(formatValue(p, p.get(scene, 0)), formatValue(p, p.defaultValue)) << p.key;
@@ -275,6 +283,7 @@ ParameterValue otherValue(const Parameter& p)
     };
     switch (p.kind) {
     case ParameterKind::Real: return nudge(std::get<double>(p.defaultValue));
+    case ParameterKind::DateTime: return std::get<double>(p.defaultValue) + 3600.0; // an hour later, whole seconds
     case ParameterKind::Integer: return static_cast<std::int64_t>(nudge(double(std::get<std::int64_t>(p.defaultValue))));
     case ParameterKind::Flag: return !std::get<bool>(p.defaultValue);
     case ParameterKind::Choice:
@@ -311,7 +320,7 @@ TEST(SceneEveryKey, EachKeySetsItsOwnField)
         const ParameterValue value = &p == model ? spectral : otherValue(p);
         EXPECT_EQ(valueProblem(p, value), "") << p.key;
         EXPECT_NE(formatValue(p, value), formatValue(p, p.defaultValue)) << p.key;
-        const Waves waves = p.list == ParameterList::Waves ? Waves::Listed : Waves::Wind;
+        const Waves waves = p.list == ParameterList::Waves || placesTheSun(p) ? Waves::Listed : Waves::Wind;
         TomlTable root = everyKey(waves, &p, formatValue(p, value));
         if (waves == Waves::Wind && &p != model)
             for (auto& [k, v] : root.table("waves").values)

@@ -50,6 +50,7 @@ ParameterValue otherValue(const Parameter& p, const ParameterValue& value, int a
     const double x = p.sliderMin + f * (p.sliderMax - p.sliderMin);
     switch (p.kind) {
     case ParameterKind::Real: return x;
+    case ParameterKind::DateTime: return std::round(x); // an instant in the slider's years, whole seconds
     case ParameterKind::Integer: {
         const auto i = std::int64_t(std::llround(x));
         return i == std::get<std::int64_t>(value) ? i + 1 : i;

@@ -216,6 +216,24 @@ WidgetResult editValue(const Parameter& p, const char* label, ParameterValue& va
         }
         break;
     }
+    case ParameterKind::DateTime: {
+        // The hour of the day (UTC) on a slider, the date kept: what moves
+        // the sun across the sky; the full instant is shown beside it.
+        double& v = std::get<double>(value);
+        const double dayStart_s = std::floor(v / 86400.0) * 86400.0;
+        double hour_h = (v - dayStart_s) / 3600.0;
+        const double lo = 0.0, hi = 24.0;
+        if (ImGui::SliderScalar(label, ImGuiDataType_Double, &hour_h, &lo, &hi, "%.2f h UTC")) {
+            v = dayStart_s + std::clamp(hour_h, 0.0, 24.0) * 3600.0;
+            r.changed = true;
+        }
+        noteItemState(r);
+        tooltip(p);
+        ImGui::Indent();
+        ImGui::TextDisabled("%s", formatDateTime(v).c_str());
+        ImGui::Unindent();
+        return r;
+    }
     case ParameterKind::Direction2: {
         glm::dvec2& v = std::get<glm::dvec2>(value);
         double c[2] = {v.x, v.y};
