@@ -121,6 +121,10 @@ struct SWELL_API WaterSettings {
     // water, drawn each frame into a map around the camera (off: the light
     // under a level surface everywhere).
     bool caustics = true;
+    // Spray: white mist torn from the breaking crests and carried downwind
+    // (shaders/spray.vert), from Beaufort 7 up (none below, whatever this
+    // says; the spectral model alone has crests that break).
+    bool spray = true;
 };
 
 struct SWELL_API ReflectionSettings {

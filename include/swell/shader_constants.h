@@ -236,4 +236,19 @@
 #define SWELL_UNIT_CAUSTICS 16
 #define SWELL_BINDING_CAUSTICS 4
 
+// Spray (shaders/spray.vert): none below Beaufort 7, "near gale", whose
+// lowest wind is 13.9 m/s at 10 m (WMO Beaufort scale; WMO-No. 8, 2018);
+// its amount grows with the wind to full at Beaufort 10's lowest, 24.5 m/s.
+#define SWELL_SPRAY_ONSET_WIND_MPS 13.9
+#define SWELL_SPRAY_FULL_WIND_MPS 24.5
+// The particles: SWELL_SPRAY_SLOTS in each cell of a square lattice of
+// SWELL_SPRAY_CELLS^2 cells of SWELL_SPRAY_CELL_M, anchored to the world and
+// following the eye (192 m across: farther spray is thinner than a pixel
+// and inside the haze of any sea that makes it), each living
+// SWELL_SPRAY_LIFETIME_S and born again at once elsewhere.
+#define SWELL_SPRAY_CELLS 64
+#define SWELL_SPRAY_CELL_M 3.0
+#define SWELL_SPRAY_SLOTS 6
+#define SWELL_SPRAY_LIFETIME_S 1.6
+
 #endif
