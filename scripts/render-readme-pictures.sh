@@ -16,6 +16,7 @@ size=(--size 960x540 --time 20)
 "$swell" render "$out/calm-mirror.toml" -o "$out/calm-mirror.png" "${size[@]}"
 "$swell" render "$root/scenes/underwater.toml" -o "$out/underwater.png" "${size[@]}"
 "$swell" render "$out/caustics.toml" -o "$out/caustics.png" "${size[@]}"
+"$swell" render "$out/shafts.toml" -o "$out/shafts.png" "${size[@]}"
 "$swell" render "$root/scenes/under-way.toml" -o "$out/under-way.png" "${size[@]}"
 
 # The low grazing camera: the trade wind preset with its camera at 1.2 m.
@@ -32,6 +33,17 @@ sed 's/^position_m = \[0\.0, 10\.0, 0\.0\]/position_m = [0.0, 300.0, 0.0]/; s/^p
 grep -q '^position_m = \[0.0, 300.0, 0.0\]' "$scratch/storm-from-above.toml" ||
   { echo "render-readme-pictures: scenes/storm.toml's camera line changed; update this script" >&2; exit 1; }
 "$swell" render "$scratch/storm-from-above.toml" -o "$out/storm-from-above.png" "${size[@]}"
+
+# A whitecap close up: the trade wind preset at 20 s, its camera (the
+# [camera] table, the file's end) replaced by one 3.5 m up and about 8 m
+# from a crest breaking then: its dense fresh foam, the lace and flecks of
+# the older foam, the bubbles glowing through the water under them.
+sed '/^\[camera\]/,$d' "$root/scenes/trade-wind.toml" >"$scratch/whitecap.toml"
+grep -q '^\[waves\.wind\]' "$scratch/whitecap.toml" && ! grep -q '^\[camera' "$scratch/whitecap.toml" ||
+  { echo "render-readme-pictures: scenes/trade-wind.toml's layout changed; update this script" >&2; exit 1; }
+printf '%s\n' '[camera]' 'position_m = [66.3, 3.5, -80.0]' 'yaw_deg = 0.0' 'pitch_deg = -26.0' 'fov_y_deg = 60.0' \
+  'far_m = 30000.0' >>"$scratch/whitecap.toml"
+"$swell" render "$scratch/whitecap.toml" -o "$out/whitecap.png" "${size[@]}"
 
 # The wake from above, against the sun: the under-way preset at 30 s with its
 # camera (the [camera] table and its path, the file's end) replaced.

@@ -36,8 +36,8 @@ void main()
 #endif
     vec3 color = applyFog(skyRadianceFiltered(direction), skyDistance(direction));
     // Underwater hook: below the surface, what no geometry covers is the
-    // water's depths (underwater.glsl).
+    // water's depths (underwater.glsl), and the shafts of light in them.
     if (pixelUnderwater())
-        color = underwaterBackground(direction, -eyePosition.y);
+        color = underwaterBackground(direction, -eyePosition.y) + underwaterShafts(eyePosition, direction, 1.0e6);
     fragColor = passOutput(color);
 }

@@ -12,6 +12,7 @@
 #ifndef SWELL_UNDERWATER_GLSL
 #define SWELL_UNDERWATER_GLSL
 #include "frame.glsl"
+#include "light_shafts.glsl"
 
 // 0 in the programs built for passes in which no pixel looks out from below
 // the water (render/programs.h): pixelUnderwater() is then false, so the
@@ -129,6 +130,17 @@ vec3 underwaterBackground(vec3 d, float depth_m)
     return underwaterInscatter(vec3(d.x, min(d.y, 0.0), d.z), depth_m, 1e6);
 }
 
+// The sun's light the water scatters towards the eye along this pixel's
+// ray from start, along d (unit), path_m long: the shafts of light
+// (light_shafts.glsl), with the water's absorption (the fog's own) and the
+// scene's sun. Added to underwaterFog()'s light and underwaterBackground()'s
+// by each caller from the eye; a fragment shader's (the pixel's dither).
+vec3 underwaterShafts(vec3 start, vec3 d, float path_m)
+{
+    return shaftsInscatter(start, d, path_m, waterAbsorption, sunColor * sunIntensity,
+                           2.0 / (viewportSize.y * projectionFocalY), shaftsDither(gl_FragCoord.xy));
+}
+
 // World geometry at p seen from under the water, `lit` as the light that
 // reaches p leaves it (mesh.frag: attenuated by the water above p, and the
 // sun's light focused by the waves, caustics.glsl): the path from the eye
@@ -137,6 +149,7 @@ vec3 underwaterGeometry(vec3 lit, vec3 p)
 {
     vec3 toPoint = p - eyePosition;
     float path_m = length(toPoint);
-    return underwaterFog(lit, toPoint / max(path_m, 1e-6), -eyePosition.y, path_m);
+    vec3 d = toPoint / max(path_m, 1e-6);
+    return underwaterFog(lit, d, -eyePosition.y, path_m) + underwaterShafts(eyePosition, d, path_m);
 }
 #endif

@@ -1,5 +1,6 @@
 // The host's own geometry seen from under the water (Renderer::draw): the
-// water's absorption and in-scattering along the path from the eye, as
+// water's absorption and in-scattering along the path from the eye (the
+// shafts of light included), as
 // mesh.frag's underwaterGeometry() gives Swell's own objects. The host's
 // colour is not read: the pass blends with two outputs (dual-source),
 //   result = inscatter + host colour * transmittance,
@@ -25,5 +26,5 @@ void main()
     transmittance = vec4(exp(-waterAbsorption * (max(-p.y, 0.0) + path_m)), 1.0);
     // On a display-encoded target the sum is taken on encoded values: exact
     // on a linear one (OutputEncoding::Linear).
-    inscatter = vec4(passOutput(underwaterInscatter(d, -eyePosition.y, path_m)).rgb, 0.0);
+    inscatter = vec4(passOutput(underwaterInscatter(d, -eyePosition.y, path_m) + underwaterShafts(eyePosition, d, path_m)).rgb, 0.0);
 }

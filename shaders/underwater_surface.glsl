@@ -52,6 +52,9 @@ vec3 surfaceFromBelow(vec3 p, vec3 normalUp, vec2 screenUv)
     // the surface (depth 0) down a path with no end.
     vec3 reflected = underwaterBackground(reflect(d, n), max(-p.y, 0.0));
     vec3 color = mix(transmitted, reflected, reflectance);
-    return underwaterFog(color, d, -eyePosition.y, path_m);
+    // The light reflected down carries no shafts of its own (its path
+    // starts at the surface, out of the eye's sight of the map); the path
+    // from the eye to the surface does.
+    return underwaterFog(color, d, -eyePosition.y, path_m) + underwaterShafts(eyePosition, d, path_m);
 }
 #endif

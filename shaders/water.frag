@@ -76,15 +76,21 @@ void main()
     // wake's stern wash), its foam joins the waves' whitecaps.
     vec4 sources = surfaceSourcesAt(vRestPoint);
     n = normalize(n / max(n.y, 0.1) - vec3(sources.y - vSourceSlope.x, 0.0, sources.z - vSourceSlope.y));
-    float sourceFoam = sources.w;
-    // Where the wake's foam is the larger share, the foam is the wake's: a
-    // churned sheet (value noise, wake.glsl) without the whitecaps' layers
-    // and relief, reflecting Koepke's 0.55.
-    if (sources.w > foam) {
-        foamAlbedo = 0.55;
-        foamSlope = vec2(0.0);
+    // The sources' foam (the wake's stern wash and breaking crests) takes
+    // the whitecaps' look (whitecap_foam.glsl) from its amount: dense and
+    // bright where it breaks now, thinning into lace as it ages, with the
+    // same relief; its lattices are anchored to the world at the render
+    // origin, where vRestPoint is measured from.
+    vec2 sourceFootprint = fwidth(vRestPoint);
+    FoamLook sourceLook = foamLook(sourceFoamNoise, sourceBreakingFoamAmount, sources.w, vRestPoint,
+                                   max(max(sourceFootprint.x, sourceFootprint.y), 1e-3));
+    float sourceFoam = sourceLook.cover;
+    // Where the sources' foam is the larger share, the foam is theirs.
+    if (sourceFoam > foam) {
+        foamAlbedo = mix(0.5, 0.65, sourceLook.breaking);
+        foamSlope = sourceLook.slope;
     }
-    foam = max(foam, sources.w);
+    foam = max(foam, sourceFoam);
 #else
     float sourceFoam = 0.0;
 #endif
@@ -147,8 +153,15 @@ void main()
     vec3 underRay = refract(-v, n, 1.0 / 1.333);
     vec2 bubblePoint = vRestPoint - gridCenter + underRay.xz / max(-underRay.y, 0.2) * kBubbleDepth_m;
     vec2 bubbleFootprint = fwidth(vRestPoint);
-    float bubbles = oceanFoamBelow(bubblePoint, max(1.5, max(bubbleFootprint.x, bubbleFootprint.y))) *
-                    step(kBubbleDepth_m, path_m);
+    float bubbles = oceanFoamBelow(bubblePoint, max(1.5, max(bubbleFootprint.x, bubbleFootprint.y)));
+#if SWELL_SURFACE_SOURCES
+    // And those a source's breaking drove down (the wake's stern wash), the
+    // same way: its amount squared, which its cells (a metre or so) already
+    // blur.
+    float sourceBelow = surfaceSourcesAt(vRestPoint + underRay.xz / max(-underRay.y, 0.2) * kBubbleDepth_m).w;
+    bubbles = max(bubbles, sourceBelow * sourceBelow);
+#endif
+    bubbles *= step(kBubbleDepth_m, path_m);
     vec3 bubbleLight = (sunColor * sunIntensity * max(sunDirection.y, 0.0) + skyHorizon * 0.5) *
                        exp(-2.0 * kBubbleDepth_m * waterAbsorption);
     refracted = mix(refracted, 0.5 * bubbleLight, 0.8 * clamp(bubbles, 0.0, 1.0));

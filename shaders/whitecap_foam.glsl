@@ -1,13 +1,25 @@
-// The whitecaps' look on the spectral ocean: how much of a pixel foam
-// covers, given the foam the waves made there (worldFoam() in
-// spectral.glsl). Its texture is gradient noise on lattices turned from one
-// another and warped (src/ocean/spectral/foam_texture.h: no cells, seams or
-// repetition at any distance), anchored to the world at the rest point, so
-// it rides the water's own horizontal motion with the waves; each octave
-// fades into its mean where the pixel no longer resolves it.
-// Included by ocean/spectral.glsl, after its uniform block (foamNoise).
+// The look of foam on the water: how much of a pixel foam covers, given
+// the foam made there, for the spectral ocean's whitecaps (worldFoam() in
+// spectral.glsl) and the surface sources' foam (the bodies' wake: its
+// stern wash and breaking crests; surface_sources.glsl) alike. Its texture
+// is gradient noise on lattices turned from one another and warped
+// (src/ocean/spectral/foam_texture.h: no cells, seams or repetition at any
+// distance), anchored to the world at the rest point, so it rides the
+// water's own horizontal motion with the waves; each octave fades into its
+// mean where the pixel no longer resolves it. Each caller passes its own
+// lattices (its uniform block's, anchored to its own origin) and the foam
+// amount that marks a breaking's own foam.
 #ifndef SWELL_WHITECAP_FOAM_GLSL
 #define SWELL_WHITECAP_FOAM_GLSL
+#include "swell/shader_constants.h"
+
+// One lattice of the foam's texture (swell::spectral::FoamNoiseMap):
+// cells q = map * x + offset_cells for x from the lattices' origin, m.
+struct FoamNoise {
+    vec4 map;            // column-major 2 x 2: cells per metre along x, then along z
+    vec2 offset_cells;   // the origin's cell modulo SWELL_FOAM_NOISE_PERIOD
+    float cyclesPerMetre; // across the streaks: what the footprint filters
+};
 
 // A random gradient at a lattice vertex: an integer hash of the vertex
 // modulo the period (multiply-xorshift; GLSL does not specify sin's
@@ -49,11 +61,12 @@ vec3 foamGradientNoise(vec2 q)
     return vec3(value, gradient);
 }
 
-// The texture at a rest point (from the grid centre): x a standard normal
+// The texture of the lattices foamNoise (the octaves, coarsest first, then
+// the warp) at a rest point p_m (from their origin): x a standard normal
 // variate (the octaves' sum over its deviation), yz its gradient per metre,
 // w how much of it the pixel resolves (0: none, only the mean; 1: two
 // octaves or more).
-vec4 foamTexture(vec2 p_m, float footprint_m)
+vec4 foamTexture(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], vec2 p_m, float footprint_m)
 {
     // The warp: a coarser lattice's gradient (about one a cell) moves the
     // first octave's point by up to half a cell, each octave's gradient the
@@ -93,9 +106,10 @@ struct FoamLook {
 const float kLaceRelief_m = 0.004;
 const float kBreakingRelief_m = 0.010;
 
-// The foam at a point of the world plane (from the grid centre) given its
-// amount there (1 where the wave breaks now, decaying as exp(-age /
-// lifetime)): two layers.
+// The foam at a point of the world plane (p_m from the lattices' origin)
+// given its amount there (1 where the wave breaks now, decaying as
+// exp(-age / lifetime); breakingFoamAmount: the amount of foam a second
+// old): two layers.
 // - Where a crest breaks now (amount above breakingFoamAmount, less than a
 //   second old), a dense sheet: 0.9 of the water, its gaps the texture's
 //   lowest values (holes among the bubbles).
@@ -113,7 +127,8 @@ const float kBreakingRelief_m = 0.010;
 // whitecap calibration counts does not change as octaves fade. The
 // threshold's soft band is as wide as the texture changes over the pixel,
 // so a foam edge is antialiased rather than stepped.
-FoamLook foamLook(float amount, vec2 p_m, float footprint_m)
+FoamLook foamLook(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], float breakingFoamAmount, float amount, vec2 p_m,
+                  float footprint_m)
 {
     FoamLook look;
     // Where no foam is (most of a calm sea), the texture is not worth its
@@ -128,7 +143,7 @@ FoamLook foamLook(float amount, vec2 p_m, float footprint_m)
     }
     float breaking = clamp((amount - breakingFoamAmount) / max(1.0 - breakingFoamAmount, 1e-3), 0.0, 1.0);
     float share = mix(0.75 * amount, 0.9, breaking);
-    vec4 t = foamTexture(p_m, footprint_m);
+    vec4 t = foamTexture(foamNoise, p_m, footprint_m);
     float uniform01 = 1.0 / (1.0 + exp(-1.702 * t.x));
     float lace01 = 1.0 - abs(2.0 * uniform01 - 1.0);
     float laced = 0.6 * smoothstep(0.1, 0.4, amount) * (1.0 - breaking);

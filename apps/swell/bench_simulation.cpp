@@ -100,8 +100,8 @@ void printSimulationCpuLine(const Results& r)
         separator = ", ";
     }
     std::printf("\n");
-    std::printf("  the frame's water queries: %s answered on the GPU, %s of them on the CPU (their triangle beyond "
-                "the GPU's block)\n",
+    std::printf("  the frame's water queries: %s answered on the GPU, %s on the CPU (a model whose CPU queries "
+                "are cheap, or a triangle beyond the GPU's block)\n",
                 perFrame(gpuSeries(r, [](const FrameCounters& c) { return (long long)c.queriesOnGpu; })).c_str(),
                 perFrame(gpuSeries(r, [](const FrameCounters& c) { return (long long)c.queriesOnCpu; })).c_str());
 }

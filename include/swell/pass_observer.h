@@ -9,7 +9,7 @@ namespace swell {
 // floating bodies and their wake stepped on the CPU to the frame's time),
 // "wake" (the wake's frame blended and uploaded), "caustics" (the
 // caustics map, when Swell's own world reaches under the water near the
-// camera), "reflection",
+// camera, or the eye is below the waves' crests with water.shafts on), "reflection",
 // "refraction", "waterline" (the mask, when the near plane meets the
 // waves), "main"; within "main", "underwater host" (draw(): the host's
 // geometry seen from under the water) and "water" for the water draw; then
@@ -17,9 +17,10 @@ namespace swell {
 // first three come from advanceTo(), the others from each view drawn.
 // Within "ocean", a wave model may name the stages of its GPU work
 // (WaveModelGpu::beginStage); the spectral model's are "fft rows", "fft
-// columns", "slope mipmaps", "foam", "foam mipmaps", "moments" and
-// "moment mipmaps". A pass may begin more than once in a frame (a replay of
-// the foam's history steps the foam many times).
+// columns", "foam", and "mipmaps" (the slopes' and the foam's mip chains
+// after the frame's last step; "slope mipmaps" or "foam mipmaps" when only
+// one changed). A stage may run more than once in a frame (a replay of the
+// foam's history steps the foam many times).
 class SWELL_API PassObserver {
 public:
     virtual ~PassObserver() = default;

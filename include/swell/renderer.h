@@ -76,9 +76,10 @@ struct SWELL_API SimulationCpuTime {
     // own water queries included), the wake's frame blended and uploaded.
     double bodies_ms = 0.0;
     // The frame's queries of the water: answered on the GPU (the dispatch,
-    // the wait for it, the triangles found among its vertices), the scene
-    // objects' poses found with them, and a view's query of which side of
-    // the water its eye is when it is not the simulated viewpoint.
+    // the wait for it, the triangles found among its vertices) or, for a
+    // model whose CPU queries are cheap, with those; the scene objects'
+    // poses found with them, and a view's query of which side of the water
+    // its eye is when it is not the simulated viewpoint.
     double queries_ms = 0.0;
     // Each view's culling and uniforms: the grid's tiles culled, the frame
     // uniforms and the world's boxes found, the uniforms and the surface
@@ -114,9 +115,11 @@ struct SWELL_API FrameCounters {
     int oceanTransforms = 0;   // the wave model's sets of inverse FFTs for this frame (spectral model)
     int foamSteps = 0;         // its foam's steps for this frame: more than one is a replay of its history
     // The frame's own queries of the water (each floating object's, the
-    // viewpoint's side of it), answered on the GPU from what it draws; and
-    // those whose drawn triangle lay beyond the GPU's block of vertices, found
-    // with the wave model's CPU queries instead.
+    // viewpoint's side of it within the waves' reach): those answered on the
+    // GPU from what it draws (WaveModelGpu::answersFrameQueries, the
+    // spectral model), and those answered with the wave model's CPU queries
+    // (every one of a model whose CPU queries are cheap; for the others,
+    // a query whose drawn triangle lay beyond the GPU's block of vertices).
     int queriesOnGpu = 0;
     int queriesOnCpu = 0;
     // Every draw call of the views (the sky's bake and the anti-aliasing's

@@ -121,6 +121,13 @@ struct SWELL_API WaterSettings {
     // water, drawn each frame into a map around the camera (off: the light
     // under a level surface everywhere).
     bool caustics = true;
+    // Shafts of light: the sun's light the water scatters towards an eye
+    // under the water, focused by the waves into shafts (the caustics map
+    // read along each view ray); off: none of the sun's light scattered
+    // (the water's colour alone, deepColor). Off unless asked for: the
+    // renderer's soak test finds a program of a replaced set kept alive
+    // with them on (docs/RENDERING.md, "Shafts of light").
+    bool shafts = false;
     // Spray: white mist torn from the breaking crests and carried downwind
     // (shaders/spray.vert), from Beaufort 7 up (none below, whatever this
     // says; the spectral model alone has crests that break).

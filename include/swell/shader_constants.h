@@ -85,6 +85,12 @@
 // 2^(n-1) x 2^(n-1) invocations reduces a 2^n x 2^n block in shared memory.
 #define SWELL_UNIT_DOWNSAMPLE_SOURCE 14
 #define SWELL_DOWNSAMPLE_LEVELS 5
+// ...and how many levels a dispatch of its software rasteriser's pass
+// writes (shaders/mip_blocks.comp): each invocation reduces a 2^n x 2^n
+// block. That pass builds two chains in the same dispatches; the second's
+// source is read from this unit.
+#define SWELL_DOWNSAMPLE_BLOCK_LEVELS 4
+#define SWELL_UNIT_DOWNSAMPLE_SOURCE_B 17
 // ...and its uniform block: where the cells lie.
 #define SWELL_BINDING_WAKE 2
 // Surface sources (swell/surface_source.h): the WaveSources block of
@@ -101,9 +107,11 @@
 #define SWELL_STORAGE_PROBE_QUERIES 0
 #define SWELL_STORAGE_PROBE_ANSWERS 1
 #define SWELL_PROBE_BLOCK 8
-// The wake foam's noise repeats after this many cells, m / cell size: far
-// longer than any foam patch, short enough for a float to hold its cells exactly.
-#define SWELL_WAKE_NOISE_PERIOD 256
+// The surface sources' foam (the bodies' wake's) fades as exp(-age / this),
+// s: the spectral whitecaps' default lifetime (salt water, Monahan &
+// O'Muircheartaigh 1980). The shading draws source foam above
+// exp(-1 s / this) as a breaking's own (the whitecaps' dense layer).
+#define SWELL_SOURCE_FOAM_LIFETIME_S 3.85
 
 // A wave is faded out where the grid samples it with fewer than this many
 // cells per wavelength (Nyquist is 2; a little more keeps shading stable).
@@ -236,6 +244,25 @@
 #define SWELL_UNIT_CAUSTICS 16
 #define SWELL_BINDING_CAUSTICS 4
 
+// Shafts of light (shaders/light_shafts.glsl, src/render/light_shafts.h):
+// the sun's beam scattered once towards an eye under the water.
+// The particles' scattering coefficient, 1/m: Petzold 1972's clear ocean
+// water (the Bahamas' Tongue of the Ocean, 530 nm), b = 0.037 (Mobley 1994,
+// "Light and Water", table 3.10), the clear water Swell's scenes show.
+#define SWELL_WATER_SCATTERING_PER_M 0.037
+// The Henyey-Greenstein 1941 phase function's asymmetry g (the mean cosine
+// of the scattering angle) matching Petzold's average particle phase
+// function: g = 0.924 (Mobley, Sundman and Boss 2002, "Phase function
+// effects on oceanic light fields", Applied Optics 41(6)). So forward a
+// lobe that the shafts show mainly looking towards the sun.
+#define SWELL_WATER_PHASE_G 0.924
+// Samples along each view ray through the caustics map, and how far they
+// reach, m: half the map's side (past it the map holds the mean alone, so
+// the shafts' pattern ends there; the mean itself is integrated in closed
+// form over the whole path). The samples crowd towards the eye (their
+// spacing grows linearly), where shafts are nearest and widest on screen.
+#define SWELL_SHAFTS_STEPS 16
+#define SWELL_SHAFTS_REACH_M 24.0
 // Spray (shaders/spray.vert): none below Beaufort 7, "near gale", whose
 // lowest wind is 13.9 m/s at 10 m (WMO Beaufort scale; WMO-No. 8, 2018);
 // its amount grows with the wind to full at Beaufort 10's lowest, 24.5 m/s.

@@ -46,6 +46,14 @@ public:
 
     // Binds the buffers and textures prepareFrame() filled.
     virtual void bind() const = 0;
+    // Whether the renderer answers its frame's own water queries (its
+    // floating objects', its eye's side of the water) on the GPU from this
+    // model's fields, reading the answers back in the frame, rather than
+    // through the model's CPU queries. Worth it where those are costly (the
+    // spectral model's CPU twin transforms every cascade at each new time);
+    // not where they are cheap (a sum of Gerstner waves), since reading
+    // back makes the CPU wait for the GPU.
+    virtual bool answersFrameQueries() const { return false; }
 
     // An interactive model (the viewer's) never replays its history on a
     // frame later than the last, however long the frame or far the camera

@@ -19,13 +19,9 @@ struct SpectralWarpWave {
     float phaseAtCentre_rad; // at the grid centre (reduced on the CPU in double)
 };
 
-// One lattice of the whitecaps' texture (swell::spectral::FoamNoiseMap):
-// cells q = map * x + offset_cells for x from the grid centre, m.
-struct FoamNoise {
-    vec4 map;            // column-major 2 x 2: cells per metre along x, then along z
-    vec2 offset_cells;   // the grid centre's cell modulo SWELL_FOAM_NOISE_PERIOD
-    float cyclesPerMetre; // across the streaks: what the footprint filters
-};
+// The whitecaps' look, and the struct of its lattices (FoamNoise): the
+// block below holds the lattices anchored at the grid centre.
+#include "whitecap_foam.glsl"
 
 struct SpectralCascade {
     vec2 originTexels;          // the grid centre modulo the patch, texels
@@ -52,8 +48,6 @@ layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; //
 // with them: (dDy/dx)^2, (dDy/dz)^2, their product.
 layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;
 layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1, a layer a level
-
-#include "whitecap_foam.glsl"
 
 // swell::spectral::cascadeWeight.
 float cascadeWeight(float shortestWavelength_m, float footprint_m)
@@ -233,7 +227,8 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
                           vec3 gridAlongZ, float heightScale)
 {
     SurfacePoint p = spectralSlopes(restOffset_m, pixelFootprint_m, heightScale);
-    FoamLook foam = foamLook(heightScale * worldFoam(restOffset_m, pixelFootprint_m, true), restOffset_m, pixelFootprint_m);
+    FoamLook foam = foamLook(foamNoise, breakingFoamAmount, heightScale * worldFoam(restOffset_m, pixelFootprint_m, true),
+                             restOffset_m, pixelFootprint_m);
     p.foam = foam.cover;
     p.breakingFoam = foam.breaking;
     p.foamSlope = foam.slope;

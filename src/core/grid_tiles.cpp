@@ -168,19 +168,7 @@ Frustum frustumPlanes(const glm::dmat4& m, bool zeroToOne)
 
 Containment frustumContains(const Frustum& frustum, const Bounds& box)
 {
-    bool inside = true;
-    for (const glm::dvec4& plane : frustum) {
-        // The box's corners farthest along and against the plane's normal.
-        const glm::dvec3 far(plane.x >= 0.0 ? box.hi.x : box.lo.x, plane.y >= 0.0 ? box.hi.y : box.lo.y,
-                             plane.z >= 0.0 ? box.hi.z : box.lo.z);
-        const glm::dvec3 near(plane.x >= 0.0 ? box.lo.x : box.hi.x, plane.y >= 0.0 ? box.lo.y : box.hi.y,
-                              plane.z >= 0.0 ? box.lo.z : box.hi.z);
-        if (glm::dot(glm::dvec3(plane), far) + plane.w < 0.0)
-            return Containment::Outside;
-        if (glm::dot(glm::dvec3(plane), near) + plane.w < 0.0)
-            inside = false;
-    }
-    return inside ? Containment::Inside : Containment::Partly;
+    return FrustumTest(frustum, glm::dvec3(0.0))(centred(box));
 }
 
 } // namespace swell::detail

@@ -7,10 +7,13 @@
 #include "swell/grid.h"
 #include "swell/waves.h"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -72,5 +75,49 @@ using Frustum = std::array<glm::dvec4, 6>;
 Frustum frustumPlanes(const glm::dmat4& viewProj, bool zeroToOne = false);
 enum class Containment { Outside, Partly, Inside };
 Containment frustumContains(const Frustum& frustum, const Bounds& box);
+
+// A box as its centre and half its size.
+struct CentredBox {
+    glm::dvec3 centre{0.0}, half{0.0};
+};
+inline CentredBox centred(const Bounds& box) { return {0.5 * (box.lo + box.hi), 0.5 * (box.hi - box.lo)}; }
+
+// frustumContains() for the many boxes of one cull, each grown by the same
+// pad (the waves' reach, which changes from frame to frame while the boxes
+// do not). Along a plane's normal n a box spans n . centre +- |n| . half:
+// no corner is chosen by the normal's signs (branches the CPU mispredicts
+// from box to box), and the pad's part, |n| . pad, is found once a plane.
+class FrustumTest {
+public:
+    FrustumTest(const Frustum& frustum, glm::dvec3 pad) : horizontalPad_m_(std::max(pad.x, pad.z))
+    {
+        for (size_t k = 0; k < frustum.size(); ++k) {
+            planes_[k] = frustum[k];
+            absNormals_[k] = glm::abs(glm::dvec3(frustum[k]));
+            padRadius_[k] = glm::dot(absNormals_[k], pad);
+        }
+    }
+    Containment operator()(const CentredBox& box) const
+    {
+        bool inside = true;
+        for (size_t k = 0; k < planes_.size(); ++k) {
+            const double distance = glm::dot(glm::dvec3(planes_[k]), box.centre) + planes_[k].w;
+            const double radius = glm::dot(absNormals_[k], box.half) + padRadius_[k];
+            if (distance + radius < 0.0)
+                return Containment::Outside;
+            inside = inside && distance - radius >= 0.0;
+        }
+        return inside ? Containment::Inside : Containment::Partly;
+    }
+
+    // The pad's larger horizontal half.
+    double horizontalPad_m() const { return horizontalPad_m_; }
+
+private:
+    double horizontalPad_m_;
+    Frustum planes_{};
+    std::array<glm::dvec3, 6> absNormals_{};
+    std::array<double, 6> padRadius_{};
+};
 
 } // namespace swell::detail

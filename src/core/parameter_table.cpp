@@ -324,6 +324,11 @@ std::vector<Parameter> buildTable()
             .sliderMax = 1.0,
             .description = "the sun's light focused by the waves on what lies under the water (a map drawn each "
                            "frame); off: the light under a level surface"}),
+        at([](auto& s, std::size_t) -> auto& { return s.water.shafts; },
+           {.key = "water.shafts", .kind = K::Flag, .effect = E::Programs, .min = 0.0, .max = 1.0, .sliderMin = 0.0,
+            .sliderMax = 1.0,
+            .description = "shafts of light seen from under the water: the sun's light the water scatters towards the "
+                           "eye, focused by the waves (the caustics map read along each ray); off: none of it"}),
         at([](auto& s, std::size_t) -> auto& { return s.water.spray; },
            {.key = "water.spray", .kind = K::Flag, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "spray torn from the breaking crests and carried downwind, from Beaufort 7 (13.9 m/s) "

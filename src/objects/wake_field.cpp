@@ -4,6 +4,7 @@
 #include "objects/wake_frame.h"
 
 #include "swell/constants.h"
+#include "swell/shader_constants.h"
 
 #include <glm/common.hpp>
 #include <kiss_fftnd.h>
@@ -44,7 +45,7 @@ constexpr double kFoamOnsetSlope = 0.3;
 constexpr double kFoamFullSlope = 0.44;
 constexpr double kWashOnset_m_per_s = 0.15;
 constexpr double kWashFull_m_per_s = 0.4;
-constexpr double kFoamLifetime_s = 3.85;
+constexpr double kFoamLifetime_s = SWELL_SOURCE_FOAM_LIFETIME_S;
 
 // The integral of (1 - u^2)^2 over -1..1.
 constexpr double kFootprintShapeIntegral = 16.0 / 15.0;

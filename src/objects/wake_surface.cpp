@@ -31,13 +31,10 @@ double WakeSurfaceSource::reach_m(double) const { return reach_m_; }
 std::string WakeSurfaceSource::code()
 {
     // The cells come from the Wake block and texture (shaders/wake.glsl),
-    // not from the parameters; the foam is broken up there too.
+    // not from the parameters; the foam's amount is the cells' own, given
+    // its look where water.frag draws every source's foam.
     return R"(#include "wake.glsl"
-vec4 SWELL_SOURCE_FUNCTION(vec2 p_m, vec4 parameters[4])
-{
-    vec4 wake = wakeAt(p_m);
-    return vec4(wake.xyz, wakeFoamAt(p_m, wake.w));
-}
+vec4 SWELL_SOURCE_FUNCTION(vec2 p_m, vec4 parameters[4]) { return wakeAt(p_m); }
 )";
 }
 

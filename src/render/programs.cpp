@@ -58,7 +58,7 @@ ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigne
                               std::vector<std::string> surfaceSources)
 {
     return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile), omittedWaterTerms,
-            std::move(surfaceSources), scene.water.caustics};
+            std::move(surfaceSources), scene.water.caustics, scene.water.shafts};
 }
 
 std::vector<std::string> definesOf(const ShaderVariant& v)
@@ -72,6 +72,7 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
         fmt::format("SWELL_OMITTED_TERMS {}", v.omittedWaterTerms),
         fmt::format("SWELL_SURFACE_SOURCES {}", v.surfaceSources.size()),
         fmt::format("SWELL_CAUSTICS {}", v.caustics ? 1 : 0),
+        fmt::format("SWELL_SHAFTS {}", v.shafts ? 1 : 0),
     };
 }
 

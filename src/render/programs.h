@@ -28,6 +28,7 @@ struct ShaderVariant {
     // wake's first when the scene has one; render/surface_sources.h).
     std::vector<std::string> surfaceSources{};
     bool caustics = true;                              // SWELL_CAUSTICS: the caustics map drawn and read (water.caustics)
+    bool shafts = true;                                // SWELL_SHAFTS: the sun's light scattered in the water column (water.shafts)
     bool operator==(const ShaderVariant&) const = default;
 };
 

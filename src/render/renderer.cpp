@@ -95,14 +95,19 @@ void Renderer::Impl::advanceTo(double time_s, glm::dvec3 viewpointWorld)
     const bool askViewpoint = eyeWithinReach(viewpoint, model().reach().vertical_m + next.sourcesReach_m);
     if (askViewpoint)
         points.emplace_back(viewpoint.x, viewpoint.z);
-    std::vector<ProbedPoint> water = points.empty() ? std::vector<ProbedPoint>{} : probeWater(points, next, grid);
+    const bool onGpu = modelGpu->answersFrameQueries();
+    std::vector<ProbedPoint> water;
+    if (!points.empty())
+        water = onGpu ? probeWater(points, next, grid)
+                      : answerOnCpu(points, model(), drawnSurfaceAt(viewpoint, time_s, next.sources, 0.0), time_s);
+    if (points.empty() || !onGpu)
+        surfaceProbe.release();
+    for (const ProbedPoint& p : water)
+        (p.drawnOnCpu ? counters.queriesOnCpu : counters.queriesOnGpu) += 1;
     if (askViewpoint) {
         next.viewpointWaterHeight_m = water.back().displacement_m.y;
         water.pop_back();
     }
-    for (const ProbedPoint& p : water)
-        counters.queriesOnCpu += p.drawnOnCpu ? 1 : 0;
-    counters.queriesOnGpu = int(points.size());
     next.poses = objectPoses(seaScene, water, bodies, time_s);
     notify(false, "queries");
     simulated = std::move(next);

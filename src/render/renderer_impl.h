@@ -261,9 +261,10 @@ struct Renderer::Impl {
     void drawSky(bool inAir, const DepthConvention& depth);
 
     // The caustics map for a view (caustics_map.h): placed always, drawn
-    // when the variant has caustics, the sun is up and Swell's own world,
-    // which alone reads it, is drawn and reaches under the water within the
-    // map; bound for the passes after it.
+    // when the variant has caustics, the sun is up and either Swell's own
+    // world is drawn and reaches under the water within the map, or the
+    // shafts of light (water.shafts) may be seen, the eye below the waves'
+    // crests; bound for the passes after it.
     void drawCaustics(const ViewFrame& v, bool ownWorld);
 
     void drawWater(bool inAir);

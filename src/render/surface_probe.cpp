@@ -22,6 +22,29 @@ static_assert(sizeof(GpuAnswer) == (3 + SWELL_PROBE_BLOCK * SWELL_PROBE_BLOCK) *
 
 } // namespace
 
+std::vector<ProbedPoint> answerOnCpu(const std::vector<glm::dvec2>& points, const WaveModel& model,
+                                     const DrawnSurface& drawn, double time_s)
+{
+    std::vector<ProbedPoint> out(points.size());
+    for (std::size_t q = 0; q < points.size(); ++q) {
+        ProbedPoint& p = out[q];
+        p.rest_m = model.restPointUnder(points[q], time_s);
+        const SurfacePoint s = model.surfaceAt(p.rest_m, time_s);
+        p.displacement_m = s.displacement_m;
+        p.normal = s.normal;
+        p.drawn = drawn.at(points[q]);
+        p.drawnOnCpu = true;
+    }
+    return out;
+}
+
+void SurfaceProbe::release()
+{
+    queries_ = {};
+    answers_ = {};
+    capacity_ = 0;
+}
+
 std::size_t SurfaceProbe::answerBytes() { return sizeof(GpuAnswer); }
 
 std::vector<ProbedPoint> SurfaceProbe::run(const std::vector<glm::dvec2>& points, glm::dvec3 origin,

@@ -18,6 +18,7 @@
 #include "swell/drawn_surface.h"
 #include "swell/gl/handle.h"
 #include "swell/grid.h"
+#include "swell/wave_model.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -35,8 +36,13 @@ struct ProbedPoint {
     glm::dvec3 displacement_m{0.0};   // the exact surface's displacement there, m
     glm::dvec3 normal{0.0, 1.0, 0.0}; // its unit normal
     std::optional<DrawnPoint> drawn;  // the drawn water under the point
-    bool drawnOnCpu = false;          // the triangle lay beyond the GPU's block: found by the CPU's DrawnSurface
+    bool drawnOnCpu = false;          // answered on the CPU: all of it (answerOnCpu), or its triangle, which lay beyond the GPU's block
 };
+
+// The same answers from the CPU: the model's queries and DrawnSurface (for
+// a model whose CPU queries are cheap, WaveModelGpu::answersFrameQueries).
+std::vector<ProbedPoint> answerOnCpu(const std::vector<glm::dvec2>& points, const WaveModel& model,
+                                     const DrawnSurface& drawn, double time_s);
 
 class SurfaceProbe {
 public:
@@ -51,6 +57,9 @@ public:
     // (its heights in the frame of `origin`, like the answers').
     std::vector<ProbedPoint> run(const std::vector<glm::dvec2>& points, glm::dvec3 origin, const GridShape& shape,
                                  const GridPlacement& placement, const DrawnSurface& cpu);
+
+    // Gives its buffers back (a frame with nothing to ask the GPU keeps none).
+    void release();
 
 private:
     gl::Buffer queries_, answers_;

@@ -1,5 +1,7 @@
 #include "render/surface_sources.h"
 
+#include "ocean/spectral/foam_texture.h"
+#include "ocean/spectral/whitecaps.h"
 #include "swell/error.h"
 #include "swell/shader_constants.h"
 
@@ -7,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 
 namespace swell::detail {
 
@@ -18,9 +21,15 @@ void setSurfaceSourceFiles(gl::ShaderSources& sources, const std::vector<std::st
 #ifndef SWELL_SURFACE_SOURCES_GLSL
 #define SWELL_SURFACE_SOURCES_GLSL
 #include "swell/shader_constants.h"
+#include "whitecap_foam.glsl"
 
+// Mirrored by swell::detail::SurfaceSourcesUniforms (src/render/surface_sources.h).
 layout(std140, binding = SWELL_BINDING_SURFACE_SOURCES) uniform SurfaceSources {
     vec4 surfaceSourceParameters[SWELL_MAX_SURFACE_SOURCES * 4];
+    // The sources' foam's texture: the whitecaps' lattices, anchored to the
+    // world at the render origin (p_m = 0), not drawn out along any wind.
+    FoamNoise sourceFoamNoise[SWELL_FOAM_NOISE_MAPS];
+    float sourceBreakingFoamAmount; // source foam above this amount is a breaking's own (1 s old)
 };
 
 )";
@@ -31,7 +40,9 @@ layout(std140, binding = SWELL_BINDING_SURFACE_SOURCES) uniform SurfaceSources {
                            i, file);
     }
     sum += R"(
-// The sources' sum at p_m (relative to the render origin): height m, dh/dx, dh/dz, foam 0..1.
+// The sources' sum at p_m (relative to the render origin): height m, dh/dx,
+// dh/dz, and the amount of foam, 0..1 (the largest; water.frag gives it the
+// whitecaps' look with sourceFoamNoise).
 vec4 surfaceSourcesAt(vec2 p_m)
 {
     vec4 sum = vec4(0.0);
@@ -48,17 +59,29 @@ vec4 surfaceSourcesAt(vec2 p_m)
 void SurfaceSourceParametersBuffer::upload(const std::vector<std::shared_ptr<const SurfaceSource>>& sources, double time_s,
                                         glm::dvec3 renderOrigin_m)
 {
-    std::array<glm::vec4, SWELL_MAX_SURFACE_SOURCES * 4> parameters{};
+    SurfaceSourcesUniforms u{};
     for (std::size_t i = 0; i < sources.size() && i < SWELL_MAX_SURFACE_SOURCES; ++i) {
         const SurfaceSourceParameters p = sources[i]->gpuParameters(time_s, renderOrigin_m);
         for (std::size_t k = 0; k < 4; ++k)
-            parameters[4 * i + k] = p[k];
+            u.parameters[4 * i + k] = p[k];
     }
+    // The whitecaps' lattices laid from the render origin (the sources' p_m
+    // is relative to it), so the foam's texture stays on the water however
+    // the origin moves; no streaks (a wake's foam lies along the course,
+    // not the wind).
+    const auto maps = spectral::foamNoiseMaps(glm::dvec2(renderOrigin_m.x, renderOrigin_m.z), glm::dvec2(1.0, 0.0), 1.0);
+    for (std::size_t i = 0; i < maps.size(); ++i) {
+        const glm::mat2& m = maps[i].map;
+        u.foamNoise[i].map = glm::vec4(m[0][0], m[0][1], m[1][0], m[1][1]);
+        u.foamNoise[i].offset_cells = maps[i].offset_cells;
+        u.foamNoise[i].cyclesPerMetre = maps[i].cyclesPerMetre;
+    }
+    u.breakingFoamAmount = float(std::exp(-spectral::kBreakingFoamAge_s / SWELL_SOURCE_FOAM_LIFETIME_S));
     if (!buffer_) {
         buffer_ = gl::Buffer::create();
-        glNamedBufferStorage(buffer_.id(), sizeof(parameters), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        glNamedBufferStorage(buffer_.id(), sizeof(u), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
-    glNamedBufferSubData(buffer_.id(), 0, sizeof(parameters), parameters.data());
+    glNamedBufferSubData(buffer_.id(), 0, sizeof(u), &u);
     bind();
 }
 

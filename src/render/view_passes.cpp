@@ -110,17 +110,21 @@ void Renderer::Impl::drawSky(bool inAir, const DepthConvention& depth)
 
 namespace {
 
-// Whether any of the world's boxes (relative to the render origin) reaches
-// below the mean level inside the caustics map's square: where none does,
-// nothing the map lights is drawn (the default scene's island lies 1.7 km
-// from its camera), and the pass is left out. Unbounded worlds always do.
-bool worldUnderMap(const FrameUniforms& f, const CausticsUniforms& map)
+// Whether any of the world's boxes (relative to the render origin) that
+// stays put reaches below the mean level inside the caustics map's square
+// (`floating[i]`: box i rides the water). Where none does, nothing the map
+// lights is drawn (the default scene's island lies 1.7 km from its camera)
+// or what it lights is a floating hull's underside, which from the air
+// shows hardly any of it: the pass is left out. Unbounded worlds always do.
+bool worldUnderMap(const FrameUniforms& f, const CausticsUniforms& map, const std::vector<bool>& floating)
 {
     if (f.worldBoxCount < 0)
         return true;
     const glm::vec2 lo = map.mapCorner_m, hi = map.mapCorner_m + map.mapSize_m;
     for (int i = 0; i < f.worldBoxCount; ++i) {
         const WorldBoxUniform& box = f.worldBoxes[i];
+        if (std::size_t(i) < floating.size() && floating[std::size_t(i)])
+            continue;
         if (box.min_m.y < 0.0f && box.max_m.x >= lo.x && box.min_m.x <= hi.x && box.max_m.z >= lo.y &&
             box.min_m.z <= hi.y)
             return true;
@@ -133,7 +137,20 @@ bool worldUnderMap(const FrameUniforms& f, const CausticsUniforms& map)
 void Renderer::Impl::drawCaustics(const ViewFrame& v, bool ownWorld)
 {
     caustics.place(v.origin, v.base.gridCenter, v.base.sunDirection);
-    if (programs.caustics && v.base.sunDirection.y > 0.0f && ownWorld && worldUnderMap(v.base, caustics.uniforms())) {
+    // The world's boxes in worldBoxes()' order: the island's, then each object's.
+    std::vector<bool> floating;
+    if (world.island.indexCount() > 0)
+        floating.push_back(false);
+    for (const SceneObject& o : seaScene.objects)
+        floating.push_back(o.floats);
+    // Seen from under the water, the caustics on anything there (a hull's
+    // underside included) are in full view.
+    const bool wanted = v.base.eyeUnderwater != 0 || worldUnderMap(v.base, caustics.uniforms(), floating);
+    // The shafts of light read it along the rays of any pixel under the water, the world drawn or not:
+    // wherever the main pass's near plane is not wholly in the air (its programs then have no shafts).
+    const bool shafts = variant.shafts && nearPlaneMedium(nearPlaneCorners(glm::inverse(v.viewProj), v.depth.nearNdcZ),
+                                                          simulatedReach()) != NearPlaneMedium::Air;
+    if (programs.caustics && v.base.sunDirection.y > 0.0f && ((ownWorld && wanted) || shafts)) {
         notify(true, "caustics");
         modelGpu->bind();
         counters.causticsTriangles += caustics.render(programs.caustics);

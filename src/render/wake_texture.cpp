@@ -31,7 +31,6 @@ void WakeTexture::upload(const WakeFrame* frame)
         glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
         corner_m_ = frame->corner_m();
         cellSize_m_ = frame->cellSize_m;
-        cornerCell_ = frame->cornerCell;
     }
 }
 
@@ -44,8 +43,6 @@ void WakeTexture::place(glm::dvec3 origin)
         u.corner_m = glm::vec2(corner_m_ - glm::dvec2(origin.x, origin.z));
         u.cellSize_m = float(cellSize_m_);
         u.cells = cells_;
-        const glm::ivec2 period(SWELL_WAKE_NOISE_PERIOD);
-        u.cornerCell = ((cornerCell_ % period) + period) % period;
     }
     glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
 }

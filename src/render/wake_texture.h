@@ -17,10 +17,8 @@ struct WakeUniforms {
     glm::vec2 corner_m{0.0f}; // centre of cell (0, 0) relative to the render origin, x, z
     float cellSize_m = 1.0f;
     int cells = 0;            // 0: no wake this frame
-    glm::ivec2 cornerCell{0}; // cell (0, 0)'s world index modulo SWELL_WAKE_NOISE_PERIOD
-    glm::ivec2 padding{0};
 };
-static_assert(sizeof(WakeUniforms) == 32, "the Wake block is 32 bytes in std140");
+static_assert(sizeof(WakeUniforms) == 16, "the Wake block is 16 bytes in std140");
 
 class WakeTexture {
 public:
@@ -41,7 +39,6 @@ private:
     bool hasWake_ = false;
     glm::dvec2 corner_m_{0.0};
     double cellSize_m_ = 1.0;
-    glm::ivec2 cornerCell_{0};
 };
 
 } // namespace swell::detail

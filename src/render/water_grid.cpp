@@ -1,6 +1,10 @@
 #include "render/water_grid.h"
 
 #include <epoxy/gl.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <bit>
 
 namespace swell::detail {
 
@@ -21,44 +25,121 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
 {
     // The bounds, relative to the grid centre, hold wherever the centre
     // snaps (tileBounds()): they change only when the grid changes scale or
-    // morph band, or the surface's reach changes. A camera that moves,
-    // turns, or climbs within a band reuses them.
+    // morph band. A camera that moves, turns, or climbs within a band reuses
+    // them; the waves' reach, which may change every frame, pads them as
+    // they are tested.
     const int morphing = morphBand(placement.morph);
-    if (!boundsValid_ || placement.scale != boundsScale_ || morphing != boundsMorphBand_ ||
-        reach.vertical_m != boundsReach_.vertical_m || reach.horizontal_m != boundsReach_.horizontal_m) {
-        GridBounds bounds = gridBounds(shape, placement, grid_, reach);
-        blockBounds_ = std::move(bounds.blocks);
-        tileBounds_ = std::move(bounds.tiles);
+    if (!boundsValid_ || placement.scale != boundsScale_ || morphing != boundsMorphBand_) {
+        GridBounds bounds = gridBounds(shape, placement, grid_, WaveReach{});
+        blockBoxes_.clear();
+        tileBoxes_.clear();
+        for (const Bounds& b : bounds.blocks)
+            blockBoxes_.push_back(centred(b));
+        for (const Bounds& t : bounds.tiles)
+            tileBoxes_.push_back(centred(t));
+        computeNodeBoxes(bounds.tiles);
         boundsValid_ = true;
         boundsScale_ = placement.scale;
         boundsMorphBand_ = morphing;
-        boundsReach_ = reach;
         ++boundsComputed_;
     }
-    const Frustum frustum = frustumPlanes(viewProj, zeroToOneDepth);
+    // The planes moved to the grid centre's frame, where the boxes are:
+    // n . (p + c) + w = n . p + (n . c + w).
+    Frustum frustum = frustumPlanes(viewProj, zeroToOneDepth);
     const glm::dvec3 centre(gridCenter_m.x, 0.0, gridCenter_m.y);
+    for (glm::dvec4& plane : frustum)
+        plane.w += glm::dot(glm::dvec3(plane), centre);
+    const FrustumTest test(frustum, glm::dvec3(reach.horizontal_m, reach.vertical_m, reach.horizontal_m));
     counts_.clear();
     offsets_.clear();
-    auto moved = [&](Bounds box) {
-        box.lo += centre;
-        box.hi += centre;
-        return box;
-    };
+    boxesTested_ = 0;
     for (size_t b = 0; b < grid_.blocks.size(); ++b) {
         const GridTile& block = grid_.blocks[b];
-        const Containment c = frustumContains(frustum, moved(blockBounds_[b]));
+        ++boxesTested_;
+        const Containment c = test(blockBoxes_[b]);
         if (c == Containment::Outside)
             continue;
         if (c == Containment::Inside) {
             choose(block.firstIndex, block.indexCount);
             continue;
         }
-        for (int t = block.firstTile; t < block.firstTile + block.tileCount; ++t) {
-            const GridTile& tile = grid_.tiles[size_t(t)];
-            if (frustumContains(frustum, moved(tileBounds_[size_t(t)])) != Containment::Outside)
-                choose(tile.firstIndex, tile.indexCount);
+        std::uint64_t mask = 0;
+        for (int ny = 0; ny < 2; ++ny)
+            for (int nx = 0; nx < 2; ++nx)
+                chooseTiles(test, b, 0, nx, ny, mask);
+        // In the buffer's order (row by row), so touching tiles merge.
+        const int width = tilesAcross(block);
+        while (mask != 0) {
+            const int bit = std::countr_zero(mask);
+            mask &= mask - 1;
+            const GridTile& tile = grid_.tiles[size_t(block.firstTile + (bit / kBlockTiles) * width + bit % kBlockTiles)];
+            choose(tile.firstIndex, tile.indexCount);
         }
     }
+}
+
+int WaterGrid::tilesAcross(const GridTile& block) { return (block.i1 - block.i0 + kTileCells - 1) / kTileCells; }
+int WaterGrid::tilesDown(const GridTile& block) { return (block.j1 - block.j0 + kTileCells - 1) / kTileCells; }
+
+void WaterGrid::computeNodeBoxes(const std::vector<Bounds>& tiles)
+{
+    for (int level = 0; level < kNodeLevels; ++level) {
+        const int perSide = 2 << level, side = kBlockTiles / perSide;
+        std::vector<Bounds> boxes(grid_.blocks.size() * size_t(perSide * perSide));
+        std::vector<bool> empty(boxes.size(), true);
+        for (size_t b = 0; b < grid_.blocks.size(); ++b) {
+            const GridTile& block = grid_.blocks[b];
+            const int width = tilesAcross(block), height = tilesDown(block);
+            for (int ty = 0; ty < height; ++ty)
+                for (int tx = 0; tx < width; ++tx) {
+                    const Bounds& tile = tiles[size_t(block.firstTile + ty * width + tx)];
+                    const size_t n = b * size_t(perSide * perSide) + size_t((ty / side) * perSide + tx / side);
+                    boxes[n].lo = empty[n] ? tile.lo : glm::min(boxes[n].lo, tile.lo);
+                    boxes[n].hi = empty[n] ? tile.hi : glm::max(boxes[n].hi, tile.hi);
+                    empty[n] = false;
+                }
+        }
+        nodes_[size_t(level)].clear();
+        for (size_t n = 0; n < boxes.size(); ++n)
+            nodes_[size_t(level)].push_back({centred(boxes[n]), empty[n]});
+    }
+}
+
+void WaterGrid::chooseTiles(const FrustumTest& test, size_t b, int level, int nx, int ny, std::uint64_t& mask)
+{
+    const GridTile& block = grid_.blocks[b];
+    const int width = tilesAcross(block), height = tilesDown(block);
+    if (level == kNodeLevels) {
+        // A single tile.
+        if (nx >= width || ny >= height)
+            return;
+        ++boxesTested_;
+        if (test(tileBoxes_[size_t(block.firstTile + ny * width + nx)]) != Containment::Outside)
+            mask |= std::uint64_t(1) << (ny * kBlockTiles + nx);
+        return;
+    }
+    const int perSide = 2 << level, side = kBlockTiles / perSide; // nodes across a block; tiles across a node
+    const Node& node = nodes_[size_t(level)][b * size_t(perSide * perSide) + size_t(ny * perSide + nx)];
+    if (node.empty)
+        return;
+    ++boxesTested_;
+    const Containment c = test(node.box);
+    if (c == Containment::Outside)
+        return;
+    // A node whose box is mostly the waves' reach (its tiles far smaller
+    // than the reach around them, as near the camera in a storm): its
+    // tiles' boxes are nearly its own, and testing each of them would rule
+    // out hardly any triangle. It is drawn whole.
+    const bool padded = 4.0 * std::max(node.box.half.x, node.box.half.z) < test.horizontalPad_m();
+    if (c == Containment::Inside || padded) {
+        for (int ty = ny * side; ty < std::min((ny + 1) * side, height); ++ty)
+            for (int tx = nx * side; tx < std::min((nx + 1) * side, width); ++tx)
+                mask |= std::uint64_t(1) << (ty * kBlockTiles + tx);
+        return;
+    }
+    for (int cy = 0; cy < 2; ++cy)
+        for (int cx = 0; cx < 2; ++cx)
+            chooseTiles(test, b, level + 1, 2 * nx + cx, 2 * ny + cy, mask);
 }
 
 void WaterGrid::choose(std::uint32_t firstIndex, std::uint32_t indexCount)

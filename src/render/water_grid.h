@@ -20,7 +20,7 @@ public:
     // are tested first, so the CPU tests the tiles only along the frustum's
     // edges.
     static constexpr int kTileCells = 1;
-    static constexpr int kBlockTiles = 8;
+    static constexpr int kBlockTiles = 8; // at most 8: a block's tiles are bits of a 64-bit mask
 
     void build(const GridShape& shape);
 
@@ -37,6 +37,8 @@ public:
     // How many times the tiles' bounds have been computed (once per change of
     // scale, morph band or reach, not per frame).
     long long boundsComputed() const { return boundsComputed_; }
+    // How many boxes the last cull() tested against the frustum.
+    int boxesTested() const { return boxesTested_; }
 
     // The indices of the chosen tiles' triangles, in the order drawn.
     std::vector<std::uint32_t> chosenIndices() const;
@@ -45,16 +47,38 @@ private:
     // Adds a range of the index buffer to the draw, merged with the last one
     // when they touch.
     void choose(std::uint32_t firstIndex, std::uint32_t indexCount);
+    // Each block's quadtree nodes' boxes from its tiles' (see nodes_).
+    void computeNodeBoxes(const std::vector<Bounds>& tiles);
+    // Marks in `mask` (bit ty * kBlockTiles + tx) the tiles of block b's node
+    // (level, nx, ny) that reach the frustum (level kNodeLevels: the tile
+    // at nx, ny), tested in the grid centre's frame.
+    void chooseTiles(const FrustumTest& test, size_t b, int level, int nx, int ny, std::uint64_t& mask);
+    // A block's tiles in a row and in a column.
+    static int tilesAcross(const GridTile& block);
+    static int tilesDown(const GridTile& block);
 
     TiledGrid grid_;
-    // Each block's and tile's bounds relative to the grid centre, for the
-    // scale, morph band and reach they were computed for.
-    std::vector<Bounds> blockBounds_, tileBounds_;
+    // Each block's and tile's box relative to the grid centre, for the scale
+    // and morph band they were computed for, without the waves' reach.
+    std::vector<CentredBox> blockBoxes_, tileBoxes_;
+    // A partly visible block is split as a quadtree down to its tiles: level
+    // k's nodes are kBlockTiles >> (k + 1) tiles on a side, (2^(k+1))^2 of
+    // them a block, each node's box the union of its tiles' (empty past a
+    // block's edge). A node outside the frustum rules out every tile in it,
+    // one inside takes them all: the tiles chosen are those a test of each
+    // tile alone would choose, for about a third of the tests.
+    static constexpr int kNodeLevels = 2;
+    struct Node {
+        CentredBox box;
+        bool empty = true;
+    };
+    std::vector<Node> nodes_[kNodeLevels];
+    static_assert(kBlockTiles == 2 << kNodeLevels, "the quadtree's last level is the tiles");
     bool boundsValid_ = false;
     double boundsScale_ = 0.0;
     int boundsMorphBand_ = 0;
-    WaveReach boundsReach_;
     long long boundsComputed_ = 0;
+    int boxesTested_ = 0;
     gl::Buffer indices_;
     gl::VertexArray vao_;
     // glMultiDrawElements' arguments for the chosen tiles.

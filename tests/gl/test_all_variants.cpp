@@ -54,7 +54,8 @@ TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
 
 // Without the wake or any surface source (wake.enabled = false; the variants above have the wake), with
 // every model and debug view, and without the caustics (water.caustics = false: the world's
-// shading reads no map, and the caustics pass is not built).
+// shading reads no map, and the caustics pass is not built); the shafts of light
+// (water.shafts) on and off in turn, by debug view, the caustics' mean alone when on.
 TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
 {
     swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
@@ -67,7 +68,9 @@ TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
             swell::detail::ShaderVariant variant{view, ReflectionMode::RayMarch, GridLayout::Geometric, model};
             variant.surfaceSources.clear();
             variant.caustics = false;
-            SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake, no caustics");
+            variant.shafts = int(view) % 2 == 0;
+            SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake, no caustics, shafts " +
+                         std::to_string(int(variant.shafts)));
             swell::detail::Programs programs;
             EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
             EXPECT_TRUE(programs.water && programs.capture);

@@ -6,6 +6,7 @@
 // pattern's contrast grows with their slope.
 #include "render/caustics_map.h"
 #include "render/programs.h"
+#include "support/fresnel_reference.h"
 #include "support/gl_test.h"
 #include "swell/flat_model.h"
 #include "swell/gerstner_model.h"
@@ -33,18 +34,7 @@ const glm::vec3 kLowSun = glm::normalize(glm::vec3(0.98f, 0.17f, 0.0f));
 // The water's absorption in tests/golden's scenes, 1/m (r, g, b).
 const glm::vec3 kAbsorption_per_m(0.40f, 0.07f, 0.09f);
 
-// Fresnel's reflectance of unpolarised light from air into water at the
-// cosine of incidence cosI (Hecht, "Optics", 4th ed., eqs. 4.34 and 4.40),
-// written here apart from the shaders' water_optics.glsl.
-double fresnelAirToWater(double cosI)
-{
-    const double n = SWELL_WATER_IOR;
-    const double sinT = std::sqrt(1.0 - cosI * cosI) / n;
-    const double cosT = std::sqrt(1.0 - sinT * sinT);
-    const double rs = (cosI - n * cosT) / (cosI + n * cosT);
-    const double rp = (n * cosI - cosT) / (n * cosI + cosT);
-    return 0.5 * (rs * rs + rp * rp);
-}
+using swell::test::fresnelAirToWater;
 
 // The cosine of the sun's refracted ray from the vertical (Snell's law).
 double refractedCosine(double cosI)

@@ -89,13 +89,76 @@ Agreement compare(swell::Renderer& renderer, const swell::Scene& scene, glm::dve
     return out;
 }
 
-void expectAgreement(const std::string& preset, double time_s, std::shared_ptr<const swell::SurfaceSource> source = nullptr)
+// A model's GPU half that answers the frame's queries on the GPU whatever
+// its model's CPU queries cost: the GPU's queries tested on Gerstner waves,
+// whose CPU queries the renderer otherwise takes.
+class AnsweringGpu final : public swell::WaveModelGpu {
+public:
+    explicit AnsweringGpu(std::unique_ptr<swell::WaveModelGpu> inner) : inner_(std::move(inner)) {}
+    std::string shaderFile() const override { return inner_->shaderFile(); }
+    void prepareFrame(glm::dvec2 centre_m, double time_s) override { inner_->prepareFrame(centre_m, time_s); }
+    void prepareView(glm::dvec2 centre_m) override { inner_->prepareView(centre_m); }
+    void bind() const override { inner_->bind(); }
+    bool answersFrameQueries() const override { return true; }
+
+private:
+    std::unique_ptr<swell::WaveModelGpu> inner_;
+};
+
+// A model that draws and answers what `inner` does, counting the CPU
+// queries asked of it; with answerOnGpu its GPU half answers the frame's
+// queries (AnsweringGpu).
+class ForwardingModel final : public swell::WaveModel {
+public:
+    ForwardingModel(std::shared_ptr<const swell::WaveModel> inner, bool answerOnGpu)
+        : inner_(std::move(inner)), answerOnGpu_(answerOnGpu)
+    {
+    }
+    std::string_view name() const override { return inner_->name(); }
+    std::string summary() const override { return inner_->summary(); }
+    swell::WaveReach reach() const override { return inner_->reach(); }
+    double heightDeviation_m() const override { return inner_->heightDeviation_m(); }
+    swell::SurfacePoint surfaceAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
+    {
+        ++queries;
+        return inner_->surfaceAt(r, t, f);
+    }
+    glm::dvec3 displacementAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
+    {
+        ++queries;
+        return inner_->displacementAt(r, t, f);
+    }
+    glm::dvec2 restPointUnder(glm::dvec2 p, double t, const swell::SurfaceFilter& f) const override
+    {
+        ++queries;
+        return inner_->restPointUnder(p, t, f);
+    }
+    std::unique_ptr<swell::WaveModelGpu> createGpu(const swell::gl::ShaderSources& shaders) const override
+    {
+        std::unique_ptr<swell::WaveModelGpu> gpu = inner_->createGpu(shaders);
+        if (answerOnGpu_)
+            return std::make_unique<AnsweringGpu>(std::move(gpu));
+        return gpu;
+    }
+    mutable std::atomic<long long> queries{0};
+
+private:
+    std::shared_ptr<const swell::WaveModel> inner_;
+    bool answerOnGpu_;
+};
+
+// onGpu: the scene's model answers on the GPU (the spectral model does by
+// itself; Gerstner waves are made to).
+void expectAgreement(const std::string& preset, double time_s, std::shared_ptr<const swell::SurfaceSource> source = nullptr,
+                     bool forceGpu = false)
 {
     SCOPED_TRACE(preset);
     swell::Scene base = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/" + preset + ".toml");
     const glm::dvec3 eye_m = swell::cameraAt(base.camera, time_s).position_m;
     const swell::Scene scene = withBuoysAround(base, eye_m);
     swell::Renderer renderer(scene);
+    if (forceGpu)
+        renderer.setWaveModel(std::make_shared<ForwardingModel>(swell::makeWaveModel(scene), true));
     if (source)
         renderer.addSurfaceSource(source);
     const Agreement a = compare(renderer, scene, eye_m, time_s);
@@ -108,7 +171,22 @@ void expectAgreement(const std::string& preset, double time_s, std::shared_ptr<c
 
 TEST_F(FrameQueries, ObjectsStandOnTheDrawnWaterInTheSpectralStorm) { expectAgreement("storm", 20.0); }
 
-TEST_F(FrameQueries, ObjectsStandOnTheDrawnWaterOfGerstnerWaves) { expectAgreement("calm", 7.5); }
+TEST_F(FrameQueries, ObjectsStandOnTheDrawnWaterOfGerstnerWaves) { expectAgreement("calm", 7.5, nullptr, true); }
+
+// Gerstner waves' CPU queries cost microseconds: the frame asks them, and
+// the CPU does not wait for the GPU.
+TEST_F(FrameQueries, GerstnerWavesAreAskedOnTheCpuWithoutWaitingForTheGpu)
+{
+    swell::Scene base = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/calm.toml");
+    const glm::dvec3 eye_m = swell::cameraAt(base.camera, 7.5).position_m;
+    const swell::Scene scene = withBuoysAround(base, eye_m);
+    swell::Renderer renderer(scene);
+    renderer.advanceTo(7.5, eye_m);
+    const swell::FrameCounters counters = renderer.counters();
+    EXPECT_EQ(counters.queriesOnGpu, 0);
+    EXPECT_GE(counters.queriesOnCpu, int(scene.objects.size()));
+    EXPECT_EQ(counters.simulationGpu.dispatches, 0);
+}
 
 // A host's source: a mound the probe must add as the vertex shader does.
 class Mound final : public swell::SurfaceSource {
@@ -144,39 +222,6 @@ TEST_F(FrameQueries, ObjectsStandOnTheDrawnWaterWithASurfaceSource)
     expectAgreement("trade-wind", 20.0, std::make_shared<const Mound>());
 }
 
-// A model that counts the CPU queries asked of it, drawing what `inner` draws.
-class CountingModel final : public swell::WaveModel {
-public:
-    explicit CountingModel(std::shared_ptr<const swell::WaveModel> inner) : inner_(std::move(inner)) {}
-    std::string_view name() const override { return inner_->name(); }
-    std::string summary() const override { return inner_->summary(); }
-    swell::WaveReach reach() const override { return inner_->reach(); }
-    double heightDeviation_m() const override { return inner_->heightDeviation_m(); }
-    swell::SurfacePoint surfaceAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
-    {
-        ++queries;
-        return inner_->surfaceAt(r, t, f);
-    }
-    glm::dvec3 displacementAt(glm::dvec2 r, double t, const swell::SurfaceFilter& f) const override
-    {
-        ++queries;
-        return inner_->displacementAt(r, t, f);
-    }
-    glm::dvec2 restPointUnder(glm::dvec2 p, double t, const swell::SurfaceFilter& f) const override
-    {
-        ++queries;
-        return inner_->restPointUnder(p, t, f);
-    }
-    std::unique_ptr<swell::WaveModelGpu> createGpu(const swell::gl::ShaderSources& shaders) const override
-    {
-        return inner_->createGpu(shaders);
-    }
-    mutable std::atomic<long long> queries{0};
-
-private:
-    std::shared_ptr<const swell::WaveModel> inner_;
-};
-
 // The storm (two floating objects, no rigid bodies): after the first frame,
 // frames at new times and viewpoints draw without a single CPU query of the
 // wave model. The frame answered its queries with the model's before.
@@ -184,7 +229,7 @@ TEST_F(FrameQueries, AFrameAsksTheWaveModelsCpuQueriesNothing)
 {
     const swell::Scene scene = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/storm.toml");
     swell::Renderer renderer(scene);
-    auto model = std::make_shared<CountingModel>(swell::makeWaveModel(scene));
+    auto model = std::make_shared<ForwardingModel>(swell::makeWaveModel(scene), false);
     renderer.setWaveModel(model);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     renderer.renderImage(camera, 1.0, {64, 36});

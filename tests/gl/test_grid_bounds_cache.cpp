@@ -1,13 +1,19 @@
 // The water grid's tile bounds are computed once per grid scale and morph
 // band, not once per frame: they hold wherever the grid's centre snaps, so a
-// camera flying level across hundreds of snaps reuses them. (That they hold
-// is test_grid_culling's job, which also culls from a camera elsewhere first.)
+// camera flying level across hundreds of snaps reuses them, and whatever the
+// waves' reach, which pads them as they are tested. (That they hold is
+// test_grid_culling's job, which also culls from a camera elsewhere first.)
+// The blocks' quadtree chooses the tiles a test of each tile alone would.
 #include "support/gl_test.h"
 #include "render/water_grid.h"
 #include "swell/grid.h"
 #include "swell/scene.h"
 
 #include <glm/ext/matrix_clip_space.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <sstream>
 #include <glm/ext/matrix_transform.hpp>
 
 namespace {
@@ -44,6 +50,76 @@ TEST_F(GridBoundsCache, ComputedOncePerScaleAndMorphBandNotPerSnap)
     for (double h = 13.0; h <= 48.0; h += 0.01)
         cullAt({5.0, h, 3.0});
     EXPECT_EQ(grid.boundsComputed() - before, 1 + swell::detail::kMorphBands);
+    // Another reach every frame (a spectral sea's, frame by frame): the same bounds.
+    const long long atReach = grid.boundsComputed();
+    for (int frame = 0; frame < 50; ++frame) {
+        const swell::GridPlacement placement = swell::placeGrid(shape, {5.0, 6.0, 3.0});
+        grid.cull(shape, placement, {1.0 + 0.1 * frame, 0.5 + 0.05 * frame}, viewProj, false, placement.center_m - glm::dvec2(5.0, 3.0));
+    }
+    EXPECT_EQ(grid.boundsComputed() - atReach, 1) << "the reach must pad the bounds, not rebuild them";
+}
+
+// The tiles chosen through the blocks' quadtree are those whose own box
+// reaches the frustum, for cameras low and high, in every direction, and
+// with reaches from calm to a storm's: every one of them, and no other for
+// a calm sea's reach; where the reach dwarfs a node's tiles (near the
+// camera in a storm) the node is drawn whole, a few more triangles than
+// testing each tile would draw. The quadtree tests fewer boxes.
+TEST_F(GridBoundsCache, TheQuadtreeChoosesTheTilesATestOfEachWould)
+{
+    using namespace swell::detail;
+    const swell::Scene scene = swell::defaultScene();
+    const swell::GridShape shape = swell::gridShapeFor(scene.grid, scene.camera);
+    WaterGrid grid;
+    grid.build(shape);
+    const TiledGrid tiles = tileGrid(shape.cells, WaterGrid::kTileCells, WaterGrid::kBlockTiles);
+    long long tested = 0, tiled = 0, expectedIndices = 0, chosenIndices = 0;
+    for (const swell::WaveReach reach : {swell::WaveReach{0.3, 0.2}, swell::WaveReach{12.0, 8.0}, swell::WaveReach{80.0, 80.0}})
+        for (const glm::dvec3 eye : {glm::dvec3(3.0, 2.0, -7.0), glm::dvec3(-40.0, 30.0, 11.0), glm::dvec3(0.5, 300.0, 0.5)})
+            for (double yaw = 0.0; yaw < 360.0; yaw += 45.0)
+                for (const double pitch : {-5.0, -40.0}) {
+                    const glm::dvec3 direction(std::sin(glm::radians(yaw)) * std::cos(glm::radians(pitch)),
+                                               std::sin(glm::radians(pitch)),
+                                               -std::cos(glm::radians(yaw)) * std::cos(glm::radians(pitch)));
+                    const glm::dvec3 origin(eye.x, 0.0, eye.z);
+                    const glm::dmat4 viewProj = glm::perspective(0.9, 16.0 / 9.0, 0.1, 2.0e4) *
+                                                glm::lookAt(eye - origin, eye - origin + direction, glm::dvec3(0.0, 1.0, 0.0));
+                    const swell::GridPlacement placement = swell::placeGrid(shape, eye);
+                    const glm::dvec2 centre = placement.center_m - glm::dvec2(origin.x, origin.z);
+                    grid.cull(shape, placement, reach, viewProj, false, centre);
+                    tested += grid.boxesTested();
+                    // Each tile alone, in the buffer's order.
+                    const Frustum frustum = frustumPlanes(viewProj, false);
+                    std::vector<std::uint32_t> expected;
+                    for (const GridTile& tile : tiles.tiles) {
+                        Bounds box = tileBounds(shape, placement, tile, reach);
+                        box.lo += glm::dvec3(centre.x, 0.0, centre.y);
+                        box.hi += glm::dvec3(centre.x, 0.0, centre.y);
+                        if (frustumContains(frustum, box) != Containment::Outside)
+                            expected.insert(expected.end(), tiles.indices.begin() + tile.firstIndex,
+                                            tiles.indices.begin() + tile.firstIndex + tile.indexCount);
+                    }
+                    tiled += (long long)tiles.blocks.size() + (long long)tiles.tiles.size();
+                    const std::vector<std::uint32_t> chosen = grid.chosenIndices();
+                    std::ostringstream where;
+                    where << "eye " << eye.x << ", " << eye.y << ", " << eye.z << ", yaw " << yaw << ", pitch " << pitch
+                          << ", reach " << reach.vertical_m;
+                    if (reach.horizontal_m < 1.0) {
+                        ASSERT_EQ(chosen, expected) << where.str();
+                    } else {
+                        // Both in the buffer's order: every expected triangle among the chosen.
+                        size_t k = 0;
+                        for (size_t i = 0; i < chosen.size() && k < expected.size(); i += 3)
+                            if (std::equal(chosen.begin() + std::ptrdiff_t(i), chosen.begin() + std::ptrdiff_t(i + 3),
+                                           expected.begin() + std::ptrdiff_t(k)))
+                                k += 3;
+                        ASSERT_EQ(k, expected.size()) << "a tile that reaches the view left out: " << where.str();
+                    }
+                    expectedIndices += (long long)expected.size();
+                    chosenIndices += (long long)chosen.size();
+                }
+    EXPECT_LT(tested * 2, tiled) << "the quadtree should test well under half the boxes of testing every tile";
+    EXPECT_LE(double(chosenIndices), 1.03 * double(expectedIndices)) << "nodes drawn whole add at most 3% of the triangles";
 }
 
 } // namespace

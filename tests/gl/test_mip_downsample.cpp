@@ -1,9 +1,9 @@
-// The compute pass that builds the spectral model's mip chains
+// The compute passes that build the spectral model's mip chains
 // (gl/mip_downsample.h) against the box filter computed here: every texel
 // of every level is the mean of the 2 x 2 below it, for the formats and
 // sizes Swell uses, across layers and across the boundary between two
-// dispatches (levels 5 and 6), where a wrong source level or block offset
-// shows.
+// dispatches (levels 4 and 5 by blocks, 5 and 6 from shared memory), where
+// a wrong source level or block offset shows.
 #include "support/gl_test.h"
 
 #include "gl/mip_downsample.h"
@@ -28,36 +28,30 @@ struct Case {
     double tolerance; // relative to the values' range (1): R16F keeps 11 bits
 };
 
-void check(const Case& c, gl::MipDownsampler::Path path)
+// A texture for the case whose level 0 holds values in [-1, 1] whose means
+// differ from level to level (no constant or smooth field, which a wrong
+// offset would reproduce); `seed` tells two textures apart.
+gl::Texture filledTexture(const Case& c, unsigned seed)
 {
-    SCOPED_TRACE(testing::Message() << "size " << c.size << ", levels " << c.levels << ", layers " << c.layers
-                                    << ", channels " << c.channels);
     gl::Texture texture = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
     glTextureStorage3D(texture.id(), c.levels, c.format, c.size, c.size, c.layers);
-    // Level 0: values in [-1, 1] whose means differ from level to level (no
-    // constant or smooth field, which a wrong offset would reproduce).
-    std::mt19937 random(7u + unsigned(c.size));
+    std::mt19937 random(seed + unsigned(c.size));
     std::uniform_real_distribution<float> value(-1.0f, 1.0f);
     std::vector<float> base(size_t(c.size) * c.size * c.layers * 4);
     for (float& v : base)
         v = value(random);
     glTextureSubImage3D(texture.id(), 0, 0, 0, 0, c.size, c.size, c.layers, GL_RGBA, GL_FLOAT, base.data());
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    // What level 0 holds after the format's rounding: the reference starts there.
-    std::vector<float> level(base.size());
+    return texture;
+}
+
+// Every level of the texture's chain against the box filter of the level
+// below as the texture holds it (the format's rounding at each level, as
+// the GPU's chain has it). Returns the texels of levels 1 and up.
+long long expectBoxFiltered(const gl::Texture& texture, const Case& c)
+{
+    std::vector<float> level(size_t(c.size) * c.size * c.layers * 4);
     glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(level.size() * sizeof(float)), level.data());
-
-    const gl::MipDownsampler downsampler(gl::ShaderSources::embedded(), path);
-    const gl::MipDownsampler::Work work = downsampler.run(texture, c.format, c.size, c.levels, c.layers);
-    if (work.driverChains == 0) {
-        EXPECT_EQ(work.dispatches, (c.levels - 1 + SWELL_DOWNSAMPLE_LEVELS - 1) / SWELL_DOWNSAMPLE_LEVELS);
-        EXPECT_EQ(work.barriers, work.dispatches);
-    } else {
-        EXPECT_EQ(path, gl::MipDownsampler::Path::Fastest) << "the compute pass was asked for";
-        EXPECT_EQ(work.driverChains, 1);
-        EXPECT_EQ(work.dispatches, 0);
-    }
-
     long long texels = 0;
     int side = c.size;
     for (int l = 1; l < c.levels; ++l) {
@@ -91,28 +85,81 @@ void check(const Case& c, gl::MipDownsampler::Path path)
                     }
         EXPECT_LE(worst, c.tolerance) << "level " << l << ", worst at texel " << worstX << ", " << worstY
                                       << " of layer " << worstLayer;
-        // The next level's reference starts from what this level holds (the
-        // format's rounding at each level, as the GPU's chain has it).
         level = std::move(actual);
     }
-    EXPECT_EQ(work.texelsWritten, texels);
+    return texels;
 }
 
-// The compute pass, and whichever path this machine takes (the driver's on
-// llvmpipe): the same filter.
+void check(const Case& c, gl::MipDownsampler::Path path)
+{
+    SCOPED_TRACE(testing::Message() << "size " << c.size << ", levels " << c.levels << ", layers " << c.layers
+                                    << ", channels " << c.channels);
+    const gl::Texture texture = filledTexture(c, 7u);
+    const gl::MipDownsampler downsampler(gl::ShaderSources::embedded(), path);
+    const gl::MipDownsampler::Work work = downsampler.run({&texture, c.format, c.size, c.levels, c.layers});
+    if (path != gl::MipDownsampler::Path::Fastest) {
+        EXPECT_EQ(downsampler.path(), path);
+    }
+    const int most = gl::MipDownsampler::levelsADispatch(downsampler.path());
+    EXPECT_EQ(work.dispatches, (c.levels - 1 + most - 1) / most);
+    EXPECT_EQ(work.barriers, work.dispatches);
+    EXPECT_EQ(work.texelsWritten, expectBoxFiltered(texture, c));
+}
+
+// Both compute passes, and whichever this machine takes: the same filter.
 TEST_F(MipDownsample, EveryLevelIsTheMeanOfTheTwoByTwoBelowIt)
 {
-    for (const auto path : {gl::MipDownsampler::Path::Compute, gl::MipDownsampler::Path::Fastest}) {
-        SCOPED_TRACE(path == gl::MipDownsampler::Path::Compute ? "compute pass" : "this machine's path");
+    using Path = gl::MipDownsampler::Path;
+    for (const auto path : {Path::SharedMemory, Path::Blocks, Path::Fastest}) {
+        SCOPED_TRACE(path == Path::SharedMemory ? "shared memory" : path == Path::Blocks ? "blocks" : "this machine's path");
         // The spectral fields and moments, and the foam (swell/shader_constants.h).
         check({GL_RGBA32F, 1 << SWELL_FFT_LOG2_SIZE, SWELL_FFT_LOG2_SIZE + 1, SWELL_FFT_CASCADES, 4, 1e-6}, path);
         check({GL_R16F, 1 << SWELL_FOAM_LOG2_SIZE, SWELL_FOAM_LOG2_SIZE + 1, SWELL_FOAM_LEVELS, 1, 1e-3}, path);
         // Smaller chains: one dispatch, a dispatch's every level, one level
-        // past it, and a texture of few levels.
+        // past it (for both passes' dispatches), and a texture of few levels.
         check({GL_RGBA32F, 2, 2, 1, 4, 1e-6}, path);
         check({GL_RGBA32F, 32, 6, 3, 4, 1e-6}, path);
         check({GL_RGBA32F, 64, 7, 1, 4, 1e-6}, path);
+        check({GL_RGBA32F, 16, 5, 2, 4, 1e-6}, path);
+        check({GL_RGBA32F, 32, 5, 1, 4, 1e-6}, path);
         check({GL_RGBA32F, 512, 4, 2, 4, 1e-6}, path);
+    }
+}
+
+// Two chains in one call, as the spectral model builds its slopes' and its
+// foam's (two textures, two formats): on the blocks path in the same
+// dispatches, chain B's layers after chain A's, where a wrong layer offset,
+// source or image unit shows; chains of different sizes one after the other.
+TEST_F(MipDownsample, TwoChainsInOneCall)
+{
+    using Path = gl::MipDownsampler::Path;
+    const Case slopes{GL_RGBA32F, 1 << SWELL_FFT_LOG2_SIZE, SWELL_FFT_LOG2_SIZE + 1, 2 * SWELL_FFT_CASCADES, 4, 1e-6};
+    const Case foam{GL_R16F, 1 << SWELL_FOAM_LOG2_SIZE, SWELL_FOAM_LOG2_SIZE + 1, SWELL_FOAM_LEVELS, 1, 1e-3};
+    const Case smaller{GL_RGBA32F, 64, 7, 3, 4, 1e-6};
+    for (const auto path : {Path::SharedMemory, Path::Blocks}) {
+        SCOPED_TRACE(path == Path::SharedMemory ? "shared memory" : "blocks");
+        const gl::MipDownsampler downsampler(gl::ShaderSources::embedded(), path);
+        const int most = gl::MipDownsampler::levelsADispatch(path);
+        const gl::Texture a = filledTexture(slopes, 11u), b = filledTexture(foam, 13u);
+        const gl::MipDownsampler::Work work = downsampler.run({&a, slopes.format, slopes.size, slopes.levels, slopes.layers},
+                                                              {&b, foam.format, foam.size, foam.levels, foam.layers});
+        const int chainDispatches = (slopes.levels - 1 + most - 1) / most;
+        EXPECT_EQ(work.dispatches, path == Path::Blocks ? chainDispatches : 2 * chainDispatches);
+        EXPECT_EQ(work.barriers, work.dispatches);
+        {
+            SCOPED_TRACE("chain A");
+            const long long texelsA = expectBoxFiltered(a, slopes);
+            SCOPED_TRACE("chain B");
+            EXPECT_EQ(work.texelsWritten, texelsA + expectBoxFiltered(b, foam));
+        }
+        // Another size: one chain after the other.
+        const gl::Texture c = filledTexture(smaller, 17u), d = filledTexture(foam, 19u);
+        const gl::MipDownsampler::Work apart = downsampler.run({&c, smaller.format, smaller.size, smaller.levels, smaller.layers},
+                                                               {&d, foam.format, foam.size, foam.levels, foam.layers});
+        EXPECT_EQ(apart.dispatches, (smaller.levels - 1 + most - 1) / most + chainDispatches);
+        SCOPED_TRACE("apart");
+        const long long texelsC = expectBoxFiltered(c, smaller);
+        EXPECT_EQ(apart.texelsWritten, texelsC + expectBoxFiltered(d, foam));
     }
 }
 
@@ -120,9 +167,10 @@ TEST_F(MipDownsample, RefusesWhatItCannotBuild)
 {
     gl::Texture texture = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
     glTextureStorage3D(texture.id(), 2, GL_RGBA32F, 24, 24, 1);
-    const gl::MipDownsampler downsampler(gl::ShaderSources::embedded(), gl::MipDownsampler::Path::Compute);
-    EXPECT_THROW(downsampler.run(texture, GL_RGBA32F, 24, 2, 1), Error) << "not a power of two";
-    EXPECT_THROW(downsampler.run(texture, GL_RGBA32F, 4, 4, 1), Error) << "more levels than the size has";
+    const gl::MipDownsampler downsampler(gl::ShaderSources::embedded(), gl::MipDownsampler::Path::SharedMemory);
+    EXPECT_THROW(downsampler.run({&texture, GL_RGBA32F, 24, 2, 1}), Error) << "not a power of two";
+    EXPECT_THROW(downsampler.run({&texture, GL_RGBA32F, 4, 4, 1}), Error) << "more levels than the size has";
+    EXPECT_THROW(downsampler.run({nullptr, GL_RGBA32F, 4, 3, 1}), Error) << "no texture";
 }
 
 } // namespace

@@ -2,6 +2,9 @@
 #include "ocean/gerstner/gerstner_uniforms.h"
 #include "render/caustics_map.h"
 #include "render/gpu_types.h"
+#include "render/surface_sources.h"
+#include "render/wake_texture.h"
+#include "objects/wake_surface.h"
 #include "support/gl_test.h"
 #include "swell/gl/shader.h"
 
@@ -171,6 +174,49 @@ TEST_F(UniformLayout, CausticsBlockMatchesItsCppMirror)
     EXPECT_EQ(offsetOf(p.id(), "causticsCells"), GLint(offsetof(C, cells)));
     EXPECT_EQ(offsetOf(p.id(), "causticsSliceDepth_m"), GLint(offsetof(C, sliceDepth_m)));
     EXPECT_EQ(blockSize(p.id(), "Caustics"), GLint(sizeof(C)));
+}
+
+// The surface sources' block (with the lattices of their foam's texture)
+// and the wake's, as the water programs see them: the wake's code as the
+// one source.
+const char* kSourcesProbe = R"(#include "surface_sources.glsl"
+void main() {
+    vec4 s = surfaceSourceParameters[gl_VertexID] + sourceFoamNoise[gl_VertexID].map
+           + vec4(sourceFoamNoise[gl_VertexID].offset_cells, sourceFoamNoise[gl_VertexID].cyclesPerMetre, sourceBreakingFoamAmount)
+           + surfaceSourcesAt(vec2(gl_VertexID)) + vec4(wakeCorner_m, wakeCellSize_m, float(wakeCells));
+    gl_Position = s;
+}
+)";
+
+TEST_F(UniformLayout, SurfaceSourcesAndWakeBlocksMatchTheirCppMirrors)
+{
+    auto files = std::map<std::string, std::string>();
+    const swell::gl::ShaderSources embedded = swell::gl::ShaderSources::embedded();
+    for (const char* f : {"whitecap_foam.glsl", "wake.glsl", "swell/shader_constants.h"})
+        files[f] = embedded.file(f);
+    files["probe.vert"] = kSourcesProbe;
+    files["probe.frag"] = "out vec4 c; void main() { c = vec4(1.0); }\n";
+    swell::gl::ShaderSources sources = swell::gl::ShaderSources::fromMap(files);
+    swell::detail::setSurfaceSourceFiles(sources, {swell::detail::WakeSurfaceSource::code()});
+    swell::gl::Program p = swell::gl::buildProgram(sources, {{GL_VERTEX_SHADER, "probe.vert"}, {GL_FRAGMENT_SHADER, "probe.frag"}},
+                                                   {"SWELL_SURFACE_SOURCES 1"});
+    using S = swell::detail::SurfaceSourcesUniforms;
+    using N = S::FoamNoise;
+    EXPECT_EQ(offsetOf(p.id(), "surfaceSourceParameters[0]"), GLint(offsetof(S, parameters)));
+    for (int i : {0, 1, SWELL_FOAM_NOISE_MAPS - 1}) {
+        const std::string lattice = "sourceFoamNoise[" + std::to_string(i) + "].";
+        const GLint at = GLint(offsetof(S, foamNoise) + sizeof(N) * std::size_t(i));
+        EXPECT_EQ(offsetOf(p.id(), lattice + "map"), at + GLint(offsetof(N, map))) << lattice;
+        EXPECT_EQ(offsetOf(p.id(), lattice + "offset_cells"), at + GLint(offsetof(N, offset_cells))) << lattice;
+        EXPECT_EQ(offsetOf(p.id(), lattice + "cyclesPerMetre"), at + GLint(offsetof(N, cyclesPerMetre))) << lattice;
+    }
+    EXPECT_EQ(offsetOf(p.id(), "sourceBreakingFoamAmount"), GLint(offsetof(S, breakingFoamAmount)));
+    EXPECT_EQ(blockSize(p.id(), "SurfaceSources"), GLint(sizeof(S)));
+    using W = swell::detail::WakeUniforms;
+    EXPECT_EQ(offsetOf(p.id(), "wakeCorner_m"), GLint(offsetof(W, corner_m)));
+    EXPECT_EQ(offsetOf(p.id(), "wakeCellSize_m"), GLint(offsetof(W, cellSize_m)));
+    EXPECT_EQ(offsetOf(p.id(), "wakeCells"), GLint(offsetof(W, cells)));
+    EXPECT_EQ(blockSize(p.id(), "Wake"), GLint(sizeof(W)));
 }
 
 } // namespace

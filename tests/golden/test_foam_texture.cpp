@@ -31,6 +31,7 @@
 // In the golden tier (Release only): 24 frames at 256^2, each replaying the
 // foam's history.
 #include "support/gl_test.h"
+#include "support/foam_view.h"
 #include "support/golden.h"
 #include "swell/camera.h"
 #include "swell/renderer.h"
@@ -59,27 +60,14 @@ Scene stormFoam()
 {
     Scene scene = loadScene(SWELL_SOURCE_DIR "/scenes/storm.toml");
     scene.objects.clear();
-    scene.debugView = DebugView::Foam;
-    // Each pixel's own share: FXAA would blend across the edges it finds.
-    scene.antialiasing = Antialiasing::Off;
-    return scene;
+    return test::foamDebugView(scene);
 }
 
 // The foam view straight down from height_m over (x, z), linear share.
 std::vector<double> foamView(Renderer& renderer, const Scene& scene, double x_m, double z_m, double height_m,
                              const char* name)
 {
-    Camera camera = cameraAt(scene.camera, 0.0);
-    camera.position_m = {x_m, height_m, z_m};
-    camera.pitch_deg = -89.0;
-    const Image image = renderer.renderImage(camera, 20.0, {kView, kView});
-    if (name)
-        test::saveTestImage(image, name);
-    std::vector<double> share;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x)
-            share.push_back(test::srgbToLinear(image.pixel(x, y)[0]));
-    return share;
+    return test::foamViewDown(renderer, scene, {x_m, height_m, z_m}, std::nullopt, 20.0, kView, name);
 }
 
 // |DFT|^2 of the view, mean removed and Hann-windowed, added to `power`

@@ -61,6 +61,10 @@ constexpr double kCriticalAngle_deg = 48.6;
 TEST_F(Underwater, SnellsWindowHasTheCriticalAngleAndWaterColourOutside)
 {
     swell::Scene scene = swell::test::emptyStage();
+    // The window alone: the water's glow about the sun's refracted direction
+    // (water.shafts) reaches past the window's edge, and would be taken
+    // for the sky there (tests/golden/test_light_shafts_render.cpp).
+    scene.water.shafts = false;
     swell::Renderer renderer(scene);
     renderer.setWaveModel(std::make_shared<swell::FlatModel>()); // calm water
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
@@ -211,6 +215,9 @@ TEST_F(Underwater, CameraInTheWavesSplitsTheViewAtTheWaterline)
     // (the view stays outside Snell's window, which begins 41 degrees up),
     // while from the air the sea reflects at least 2% of the blue sky.
     scene.water.deepColor = {0.02, 0.08, 0.0};
+    // Nor the sun's light: the shafts of light (water.shafts) scatter its
+    // blue towards the eye (tests/golden/test_light_shafts_render.cpp).
+    scene.water.shafts = false;
     swell::Renderer renderer(scene);
     const double time_s = 3.0;
     swell::Camera camera = swell::cameraAt(scene.camera, time_s);

@@ -202,9 +202,13 @@ public:
             replayFoam(time_s);
         else if (moved && foam)
             stepFoam(time_s, 1.0f); // the same time: only the texels entering the windows are new
+        buildMipmaps();
     }
 
     void prepareView(glm::dvec2 gridCenter_m) override { updateUniforms(gridCenter_m); }
+
+    // The CPU twin's queries transform every cascade at each new time.
+    bool answersFrameQueries() const override { return true; }
 
     void updateUniforms(glm::dvec2 gridCenter_m)
     {
@@ -357,11 +361,7 @@ private:
         dispatch(kFoamSize / kTile, kFoamSize / kTile, kFoamLevels, texelBytes(kFoamFormat) * kTile * kTile);
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         endStage("foam");
-        if (mipmaps) {
-            beginStage("foam mipmaps");
-            generateMipmaps(foam_, kFoamFormat, kFoamSize, kFoamFieldLevels, kFoamLevels);
-            endStage("foam mipmaps");
-        }
+        foamMipmapsStale_ = foamMipmapsStale_ || mipmaps;
         glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, kFoamFormat);
         glUseProgram(0);
         previousOrigin_ = origin;
@@ -399,11 +399,7 @@ private:
         dispatch(kSize, GLuint(cascades), 1, (twoSpectra + texelBytes(kSpectrumFormat)) * kSize);
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         endStage("fft columns");
-        if (cascades == kCascades) {
-            beginStage("slope mipmaps");
-            generateMipmaps(derivatives_, kSpectrumFormat, kSize, kFieldLevels, kDerivativeLayers);
-            endStage("slope mipmaps");
-        }
+        slopeMipmapsStale_ = slopeMipmapsStale_ || cascades == kCascades;
         for (GLuint unit = 0; unit < 4; ++unit)
             glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         glUseProgram(0);
@@ -424,16 +420,32 @@ private:
         glMemoryBarrier(bits);
         ++work_.barriers;
     }
-    // Levels 1 .. levels - 1 of a square array texture, from its base
-    // (gl/mip_downsample.h: a compute pass on a GPU, the driver's own on a
-    // software rasteriser).
-    void generateMipmaps(const gl::Texture& texture, GLenum format, int size, int levels, int layers)
+    // The mipmaps of what the frame's steps changed: the slopes' (every
+    // cascade transformed) and the foam's (a step that keeps them), built
+    // after the last step (a foam step reads only the fields' base level),
+    // both in the same dispatches where the pass can (gl/mip_downsample.h:
+    // a compute pass, from shared memory on a GPU, by blocks on a software
+    // rasteriser).
+    void buildMipmaps()
     {
-        const gl::MipDownsampler::Work work = downsampler_.run(texture, format, size, levels, layers);
+        const gl::MipDownsampler::Chain slopes{&derivatives_, kSpectrumFormat, kSize, kFieldLevels, kDerivativeLayers};
+        const gl::MipDownsampler::Chain foam{&foam_, kFoamFormat, kFoamSize, kFoamFieldLevels, kFoamLevels};
+        if (!slopeMipmapsStale_ && !foamMipmapsStale_)
+            return;
+        const char* stage = !foamMipmapsStale_ ? "slope mipmaps" : !slopeMipmapsStale_ ? "foam mipmaps" : "mipmaps";
+        beginStage(stage);
+        const gl::MipDownsampler::Work work = slopeMipmapsStale_ && foamMipmapsStale_ ? downsampler_.run(slopes, foam)
+                                              : slopeMipmapsStale_                   ? downsampler_.run(slopes)
+                                                                                     : downsampler_.run(foam);
+        endStage(stage);
         work_.dispatches += work.dispatches;
         work_.barriers += work.barriers;
-        work_.mipmaps += work.driverChains;
-        work_.bytesWritten += texelBytes(format) * work.texelsWritten;
+        // Levels 1 and up of each chain built, in its own format.
+        if (slopeMipmapsStale_)
+            work_.bytesWritten += texelBytes(kSpectrumFormat) * mipTexels(kSize, kFieldLevels, kDerivativeLayers, 1);
+        if (foamMipmapsStale_)
+            work_.bytesWritten += texelBytes(kFoamFormat) * mipTexels(kFoamSize, kFoamFieldLevels, kFoamLevels, 1);
+        slopeMipmapsStale_ = foamMipmapsStale_ = false;
     }
     // Every level of the foam's windows to none.
     void clearFoam()
@@ -457,6 +469,8 @@ private:
     std::array<FoamWindow, kFoamLevels> windows_{};
     std::array<glm::ivec2, kFoamLevels> previousOrigin_{};
     bool foamStepped_ = false;
+    // Base levels changed since their mipmaps were built (buildMipmaps()).
+    bool slopeMipmapsStale_ = false, foamMipmapsStale_ = false;
     glm::dvec2 gridCenter_m_{0.0}; // this frame's
     // The replay's steps before the last on the CPU: only on a software rasteriser.
     std::unique_ptr<FoamReplay> cpuReplay_;
