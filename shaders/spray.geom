@@ -1,26 +1,25 @@
-// The spray's clumps (spray.vert) as drops of five sizes, each a soft
-// puff facing the eye, drawn out along its velocity by the distance it
-// flies in a thirtieth of a second (the streak a camera's shutter sees).
-// A drop of response time tau under Stokes drag (Stokes 1851) relaxes
-// towards the wind's velocity and its terminal fall g tau,
-//   v(a) = v_inf + (v0 - v_inf) exp(-a / tau),
-//   x(a) = x0 + v_inf a + (v0 - v_inf) tau (1 - exp(-a / tau)),
-// closed form, so a drop's place needs no history: the small ones are taken
-// up by the wind at once and blown far, the large fall back soon.
+// The spray's clumps (spray.vert) as SWELL_SPRAY_DROPS drops, each drawn as
+// a streak of its own path (spray.glsl's closed form) over the last
+// fraction of a second: a ribbon facing the eye through four points of
+// that path, so the fine mist the wind takes up at once shows as thin
+// sheets drawn out downwind, densest where the clump left the crest and
+// thinning as they spread, and the larger drops as short streaks along
+// their arcs. A streak narrower or shorter than a pixel is drawn out to one, made
+// fainter by as much (its coverage kept), so distant spray thins into a
+// haze instead of sparkling.
 #include "frame.glsl"
 #include "spray.glsl"
 
 layout(points) in;
-layout(triangle_strip, max_vertices = 20) out;
+layout(triangle_strip, max_vertices = 40) out; // SWELL_SPRAY_DROPS ribbons of 4 point pairs
 
 in vec3 vBirth[];
-in vec3 vLaunch[];
 in vec3 vWind[];
 in float vAge_s[];
 in flat uint vKey[];
 in float vOpacity[];
 
-out vec2 gCorner;     // -1..1 across the quad
+out vec2 gRibbon;     // x: 0 at the streak's tail to 1 at its head; y: -1..1 across
 out vec3 gPosition;   // relative to the render origin, m
 out float gOpacity;
 
@@ -29,34 +28,50 @@ void main()
     if (vOpacity[0] <= 0.0)
         return;
     float age_s = vAge_s[0];
-    for (uint drop = 0u; drop < 5u; ++drop) {
-        // tau 0.05 to 0.4 s: spume drops of about 90 to 270 um
-        // (tau = rho_w d^2 / (18 mu_air)).
-        float u = (float(drop) + sprayUnit(vKey[0], 10u + drop)) / 5.0;
-        float tau_s = 0.05 + 0.35 * u * u;
-        vec3 terminal = vWind[0] + vec3(0.0, -9.81 * tau_s, 0.0);
-        float relaxed = exp(-age_s / tau_s);
-        vec3 p = vBirth[0] + terminal * age_s + (vLaunch[0] - terminal) * tau_s * (1.0 - relaxed);
-        vec3 velocity = terminal + (vLaunch[0] - terminal) * relaxed;
+    // A pixel's width per metre of distance.
+    float pixelSpread = 2.0 / (projectionFocalY * viewportSize.y);
+    for (uint drop = 0u; drop < uint(SWELL_SPRAY_DROPS); ++drop) {
+        bool mist = drop < uint(SWELL_SPRAY_MIST_DROPS);
+        float tau_s = sprayTau_s(vKey[0], drop);
+        vec3 launch_mps = sprayLaunch(vKey[0], drop, vWind[0].xy, vWind[0].z);
+        vec3 air_mps = sprayAir(vKey[0], drop, vWind[0].xy, vWind[0].z);
+        float trail_s = mist ? float(SWELL_SPRAY_MIST_TRAIL_S) : float(SWELL_SPRAY_DROP_TRAIL_S);
+        float tail_s = max(age_s - trail_s, 0.0);
+        vec3 points[4];
+        for (int k = 0; k < 4; ++k)
+            points[k] = vBirth[0] + sprayDropOffset(launch_mps, air_mps, tau_s, mix(tail_s, age_s, float(k) / 3.0));
         // It fades as it falls back to the crest's height, where the foam takes it.
-        float opacity = vOpacity[0] * smoothstep(-0.3, 0.4, p.y - vBirth[0].y);
-        if (opacity <= 0.0)
+        float opacity = vOpacity[0] * smoothstep(-0.3, 0.3, points[3].y - vBirth[0].y);
+        // Mist spreads as it flies (turbulent diffusion, chosen by eye),
+        // fainter as it spreads; a drop stays a drop.
+        float halfWidth_m = mist ? 0.03 + 0.08 * age_s : 0.012;
+        opacity *= mist ? 0.6 * sqrt(0.03 / halfWidth_m) : 0.9;
+        float pixel_m = distance(eyePosition, points[3]) * pixelSpread;
+        float drawn_m = max(halfWidth_m, 0.6 * pixel_m);
+        opacity *= halfWidth_m / drawn_m;
+        // A streak shorter than a pixel is drawn out to one, fainter by as
+        // much, about its middle.
+        vec3 path = points[3] - points[0];
+        float length_m = length(path), drawnLength_m = max(length_m, pixel_m);
+        opacity *= length_m / max(drawnLength_m, 1e-6);
+        if (length_m < 1e-4)
+            continue; // at birth: nothing has left the crest yet
+        vec3 middle = 0.5 * (points[0] + points[3]);
+        for (int k = 0; k < 4; ++k)
+            points[k] = middle + (points[k] - middle) * (drawnLength_m / length_m);
+        if (opacity <= 0.002)
             continue;
-        vec3 toEye = normalize(eyePosition - p);
-        vec3 along = velocity - dot(velocity, toEye) * toEye;
-        float speed = length(along);
-        along = speed > 1e-3 ? along / speed : normalize(cross(toEye, vec3(1.0, 0.0, 0.0)));
-        vec3 side = normalize(cross(toEye, along));
-        // A puff of drops spreading as it flies.
-        float r = 0.3 + 0.9 * age_s;
-        vec3 halfAlong = along * (r + 0.5 * speed / 30.0), halfSide = side * r;
-        for (int i = 0; i < 4; ++i) {
-            vec2 c = vec2(i & 1, i >> 1) * 2.0 - 1.0;
-            gCorner = c;
-            gPosition = p + c.x * halfAlong + c.y * halfSide;
-            gOpacity = opacity;
-            gl_Position = passViewProj * vec4(gPosition, 1.0);
-            EmitVertex();
+        for (int k = 0; k < 4; ++k) {
+            vec3 toEye = normalize(eyePosition - points[k]);
+            vec3 side = cross(toEye, path);
+            side = dot(side, side) > 1e-12 ? normalize(side) : normalize(cross(toEye, vec3(1.0, 0.0, 0.0)));
+            for (int s = -1; s <= 1; s += 2) {
+                gRibbon = vec2(float(k) / 3.0, float(s));
+                gPosition = points[k] + float(s) * drawn_m * side;
+                gOpacity = opacity;
+                gl_Position = passViewProj * vec4(gPosition, 1.0);
+                EmitVertex();
+            }
         }
         EndPrimitive();
     }

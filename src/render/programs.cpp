@@ -1,6 +1,7 @@
 // Building the renderer's programs for a variant, and their typed setters.
 #include "render/programs.h"
 
+#include "render/spray_kinematics.h"
 #include "render/surface_sources.h"
 #include "swell/shader_constants.h"
 
@@ -136,11 +137,11 @@ void SprayProgram::use() const { glUseProgram(program_.id()); }
 void SprayProgram::set(double time_s, glm::ivec2 firstCell, glm::vec2 corner_m, glm::vec2 cornerFromGridCentre_m,
                        float windSpeed_mps, float amount) const
 {
-    // The time within a period of the particles' lifetime: a float holds it
-    // to the microsecond where the absolute time (hours) would not.
-    const double period_s = SWELL_SPRAY_LIFETIME_S * 4096.0;
-    const double t = time_s - std::floor(time_s / period_s) * period_s;
-    glProgramUniform2f(program_.id(), time_, float(t), float(std::floor(time_s / period_s)));
+    // The time within a period of 4096 lifetimes (render/spray_kinematics.h):
+    // a float holds it to the microsecond where the absolute time (hours)
+    // would not.
+    const glm::vec2 t = sprayPeriodTime(time_s);
+    glProgramUniform2f(program_.id(), time_, t.x, t.y);
     glProgramUniform2i(program_.id(), firstCell_, firstCell.x, firstCell.y);
     glProgramUniform2f(program_.id(), corner_, corner_m.x, corner_m.y);
     glProgramUniform2f(program_.id(), cornerFromGrid_, cornerFromGridCentre_m.x, cornerFromGridCentre_m.y);
