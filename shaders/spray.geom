@@ -4,10 +4,11 @@
 // that path, so the fine mist the wind takes up at once shows as thin
 // sheets drawn out downwind, densest where the clump left the crest and
 // thinning as they spread, and the larger drops as short streaks along
-// their arcs. A streak narrower or shorter than a pixel is drawn out to one, made
-// fainter by as much (its coverage kept), so distant spray thins into a
-// haze instead of sparkling.
+// their arcs. A streak narrower or shorter than a pixel is drawn out to
+// one, made fainter by as much (its coverage kept), so distant spray thins
+// into a haze instead of sparkling.
 #include "frame.glsl"
+#include "fog.glsl"
 #include "spray.glsl"
 
 layout(points) in;
@@ -20,8 +21,24 @@ in flat uint vKey[];
 in float vOpacity[];
 
 out vec2 gRibbon;     // x: 0 at the streak's tail to 1 at its head; y: -1..1 across
-out vec3 gPosition;   // relative to the render origin, m
+out vec3 gColor;      // lit and fogged, in the pass's output encoding
 out float gOpacity;
+
+// A streak's colour at p: fine water drops, lit by the sky and the sun
+// (drops scatter nearly all the light they meet, most of it forward),
+// fogged with the distance as the world is. Lit as the whitecaps are
+// (water.frag), the sun's share brighter looking towards it, with an albedo
+// of 1 (drops absorb next to nothing; the foam's 0.55 to 0.65 is a layer
+// the water shows through): chosen by eye. Per vertex, not per fragment: it
+// hardly changes along a streak, and the fragments are many.
+vec3 sprayColor(vec3 p)
+{
+    vec3 toEye = normalize(eyePosition - p);
+    float forward = max(dot(-toEye, sunDirection), 0.0);
+    vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
+    vec3 light = sunLight * (0.6 + 0.4 * forward * forward) + skyHorizon * 0.5;
+    return passOutput(applyFog(light, distance(p, eyePosition))).rgb;
+}
 
 void main()
 {
@@ -62,14 +79,15 @@ void main()
         if (opacity <= 0.002)
             continue;
         for (int k = 0; k < 4; ++k) {
+            vec3 color = sprayColor(points[k]);
             vec3 toEye = normalize(eyePosition - points[k]);
             vec3 side = cross(toEye, path);
             side = dot(side, side) > 1e-12 ? normalize(side) : normalize(cross(toEye, vec3(1.0, 0.0, 0.0)));
             for (int s = -1; s <= 1; s += 2) {
                 gRibbon = vec2(float(k) / 3.0, float(s));
-                gPosition = points[k] + float(s) * drawn_m * side;
+                gColor = color;
                 gOpacity = opacity;
-                gl_Position = passViewProj * vec4(gPosition, 1.0);
+                gl_Position = passViewProj * vec4(points[k] + float(s) * drawn_m * side, 1.0);
                 EmitVertex();
             }
         }
