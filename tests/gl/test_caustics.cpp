@@ -4,23 +4,17 @@
 // water's transmittance (Fresnel and absorption along the refracted ray),
 // and waves move the light about without changing its mean while the
 // pattern's contrast grows with their slope.
-#include "render/caustics_map.h"
-#include "render/programs.h"
+#include "support/caustics_setup.h"
 #include "support/fresnel_reference.h"
 #include "support/gl_test.h"
 #include "swell/flat_model.h"
 #include "swell/gerstner_model.h"
 #include "swell/gl/shader.h"
-#include "swell/gl/shader_sources.h"
-#include "swell/wave_model_gpu.h"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
 #include <cstdio>
-#include <map>
-#include <memory>
-#include <string>
 #include <vector>
 
 namespace {
@@ -80,28 +74,15 @@ void main()
 
 class CausticsRun {
 public:
-    explicit CausticsRun(const swell::WaveModel& model, glm::vec3 sun = kSun)
-        : sources_(swell::gl::ShaderSources::embedded())
-    {
-        gpu_ = model.createGpu(sources_);
-        gpu_->prepareFrame(glm::dvec2(0.0), 20.0);
-        gpu_->prepareView(glm::dvec2(0.0));
-        gpu_->bind();
-        swell::detail::ShaderVariant variant;
-        variant.oceanFile = gpu_->shaderFile();
-        const swell::detail::BlockProgram program = swell::detail::buildCausticsProgram(sources_, variant);
-        map_.place(glm::dvec3(0.0), glm::vec2(0.0f), sun);
-        triangles_ = map_.render(program);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
+    explicit CausticsRun(const swell::WaveModel& model, glm::vec3 sun = kSun) : drawn_(model, sun) {}
 
-    long long triangles() const { return triangles_; }
+    long long triangles() const { return drawn_.triangles(); }
 
     std::vector<SliceStats> slices() const
     {
         const int n = SWELL_CAUSTICS_SIZE;
         std::vector<float> texels(std::size_t(n) * n * SWELL_CAUSTICS_SLICES);
-        glGetTextureImage(map_.texture(), 0, GL_RED, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+        glGetTextureImage(drawn_.map().texture(), 0, GL_RED, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
         std::vector<SliceStats> stats;
         for (int k = 0; k < SWELL_CAUSTICS_SLICES; ++k) {
             double sum = 0.0, squares = 0.0;
@@ -122,12 +103,7 @@ public:
     // The mean light on a level floor at depth_m, per channel (kFloorProbe).
     glm::dvec3 floorMean(float depth_m) const
     {
-        std::map<std::string, std::string> files;
-        for (const std::string& name : sources_.fileNames())
-            files[name] = sources_.file(name);
-        files["probe.comp"] = kFloorProbe;
-        const swell::gl::Program program = swell::gl::buildProgram(swell::gl::ShaderSources::fromMap(files),
-                                                                   {{GL_COMPUTE_SHADER, "probe.comp"}});
+        const swell::gl::Program program = drawn_.probe(kFloorProbe);
         constexpr int kPoints = 64 * 64;
         swell::gl::Buffer buffer = swell::gl::Buffer::create();
         glNamedBufferData(buffer.id(), kPoints * sizeof(glm::vec4), nullptr, GL_DYNAMIC_READ);
@@ -135,7 +111,7 @@ public:
         glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "depth_m"), depth_m);
         glProgramUniform3f(program.id(), glGetUniformLocation(program.id(), "absorption_per_m"), kAbsorption_per_m.r,
                            kAbsorption_per_m.g, kAbsorption_per_m.b);
-        map_.bind();
+        drawn_.map().bind();
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
         glDispatchCompute(kPoints / 64, 1, 1);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -150,10 +126,7 @@ public:
     }
 
 private:
-    swell::gl::ShaderSources sources_;
-    std::unique_ptr<swell::WaveModelGpu> gpu_;
-    swell::detail::CausticsMap map_;
-    long long triangles_ = 0;
+    swell::test::DrawnCausticsMap drawn_;
 };
 
 // The direct light on a level floor depth_m under flat water over the air's

@@ -1,9 +1,15 @@
 // GL names are owned: moved, never copied, deleted with their owner, and a
-// render target recreated on resize (down to 0x0 and back) leaks nothing.
+// render target recreated on resize (down to 0x0 and back) leaks nothing;
+// programs replaced by a scene change are gone, whatever was drawn before.
 #include "render/render_target.h"
 #include "support/gl_objects.h"
 #include "support/gl_test.h"
+#include "swell/camera.h"
 #include "swell/gl/handle.h"
+#include "swell/renderer.h"
+#include "swell/scene_file.h"
+
+#include <string>
 
 #include <type_traits>
 
@@ -60,6 +66,47 @@ TEST_F(GlResources, RenderTargetResizeStormLeaksNothing)
         EXPECT_EQ(liveNames(), before + 3) << "one framebuffer and two textures while sized";
     }
     EXPECT_EQ(liveNames(), before);
+}
+
+// The caustics map is drawn by the frame's only program with a geometry
+// stage. A driver may keep a reference for that stage to whichever program
+// is used next (Mesa does), so a program used after the caustics and then
+// replaced by a scene change lived on, deleted but not freed, until
+// caustics were drawn again: found by the soak with shafts of light on. A
+// frame under the water draws the caustics (the shafts read them); the
+// scene changes twice, rebuilding every program; frames in the air, with
+// nothing under the water to light, draw no caustics. The programs alive must be those of the first state.
+TEST_F(GlResources, AProgramDrawnAfterTheCausticsIsFreedWhenReplaced)
+{
+    swell::Scene scene = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/underwater.toml");
+    scene.water.shafts = true;
+    // Nothing under the caustics map, so the frames in the air draw none.
+    scene.objects.clear();
+    scene.showTerrain = false;
+    const glm::ivec2 size{64, 36};
+    swell::detail::RenderTarget target;
+    target.resize(size);
+    swell::Renderer renderer(scene);
+    const swell::Camera below = swell::cameraAt(scene.camera, 1.0);
+    ASSERT_LT(below.position_m.y, -1.0) << "the preset's camera is under the water";
+    swell::Camera above = below;
+    above.position_m.y = 20.0; // above the waves' vertical reach
+
+    renderer.render(above, 1.0, size, target.framebuffer());
+    glFinish();
+    const int programsBefore = swell::test::countLiveGlObjects().programs;
+
+    renderer.render(below, 1.0, size, target.framebuffer());
+    ASSERT_GT(renderer.counters().causticsTriangles, 0) << "the frame under the water drew the caustics";
+    swell::Scene changed = scene;
+    changed.debugView = swell::DebugView::Normals;
+    renderer.setScene(changed);
+    renderer.render(above, 1.0, size, target.framebuffer());
+    renderer.setScene(scene);
+    renderer.render(above, 1.0, size, target.framebuffer());
+    ASSERT_EQ(renderer.counters().causticsTriangles, 0) << "a frame in the air drew caustics";
+    glFinish();
+    EXPECT_EQ(swell::test::countLiveGlObjects().programs, programsBefore);
 }
 
 } // namespace

@@ -4,6 +4,8 @@
 // waves' reach, which pads them as they are tested. (That they hold is
 // test_grid_culling's job, which also culls from a camera elsewhere first.)
 // The blocks' quadtree chooses the tiles a test of each tile alone would.
+// The bounds hold every vertex's place, on the CPU, without the waves.
+#include "core/grid_tiles.h"
 #include "support/gl_test.h"
 #include "render/water_grid.h"
 #include "swell/grid.h"
@@ -19,6 +21,55 @@
 namespace {
 
 class GridBoundsCache : public swell::test::GlTest {};
+
+// Each tile's bounds, found once for a placement, hold its corners' snapped
+// places (gridPoint) for the camera anywhere in the same scale and morph
+// band: other centres, every morph across the band. Cameras from 6 m to
+// 300 m over both layouts, no waves (reach 0), so nothing but the bounds'
+// own margin (snapping, float slack) stands between a vertex and the edge.
+// The test the drawn-triangle culling tests (test_grid_culling) cannot make:
+// their storm's reach pads the bounds by metres.
+TEST(GridBounds, HoldEveryVertexForEveryCentreAndMorphInTheBand)
+{
+    for (const swell::GridLayout layout : {swell::GridLayout::Geometric, swell::GridLayout::Paper}) {
+        swell::Scene scene = swell::defaultScene();
+        scene.grid.layout = layout;
+        const swell::GridShape shape = swell::gridShapeFor(scene.grid, scene.camera);
+        const swell::detail::TiledGrid grid = swell::detail::tileGrid(shape.cells, swell::detail::WaterGrid::kTileCells,
+                                                                                  swell::detail::WaterGrid::kBlockTiles);
+        int outside = 0, checked = 0;
+        for (const double height_m : {6.0, 14.0, 20.0, 30.0, 46.0, 60.0, 100.0, 300.0}) {
+            const swell::GridPlacement placement = swell::placeGrid(shape, {3.3, height_m, -7.9});
+            const swell::detail::GridBounds bounds = swell::detail::gridBounds(shape, placement, grid, swell::WaveReach{});
+            const int band = swell::detail::morphBand(placement.morph);
+            const double lo = band == 0 ? 0.0 : double(band - 1) / swell::detail::kMorphBands;
+            const double hi = band == 0 ? 0.0 : double(band) / swell::detail::kMorphBands;
+            for (const glm::dvec2 camera_m : {glm::dvec2(3.3, -7.9), glm::dvec2(-511.37, 92.06), glm::dvec2(1e4 / 3.0, -77.7)})
+                for (const double morph : {lo, 0.5 * (lo + hi), hi}) {
+                    swell::GridPlacement moved = swell::placeGrid(shape, {camera_m.x, height_m, camera_m.y});
+                    ASSERT_EQ(moved.scale, placement.scale);
+                    moved.morph = morph;
+                    for (std::size_t t = 0; t < grid.tiles.size(); ++t) {
+                        const swell::detail::GridTile& tile = grid.tiles[t];
+                        const swell::detail::Bounds& box = bounds.tiles[t];
+                        for (const int i : {tile.i0, tile.i1})
+                            for (const int j : {tile.j0, tile.j1}) {
+                                const glm::dvec2 p = swell::gridPoint(shape, moved, i, j).offset_m;
+                                ++checked;
+                                if (p.x < box.lo.x || p.x > box.hi.x || p.y < box.lo.z || p.y > box.hi.z) {
+                                    if (outside++ < 5)
+                                        ADD_FAILURE() << "vertex (" << i << ", " << j << ") at (" << p.x << ", " << p.y
+                                                      << ") m outside its tile's bounds x " << box.lo.x << ".." << box.hi.x
+                                                      << ", z " << box.lo.z << ".." << box.hi.z << " (camera " << height_m
+                                                      << " m up, morph " << morph << ")";
+                                }
+                            }
+                    }
+                }
+        }
+        EXPECT_EQ(outside, 0) << "of " << checked << " vertices checked";
+    }
+}
 
 TEST_F(GridBoundsCache, ComputedOncePerScaleAndMorphBandNotPerSnap)
 {

@@ -4,25 +4,19 @@
 // radiance of a homogeneous medium (render/light_shafts.h) and no pattern;
 // ripples make shafts (contrast across neighbouring rays) about the same
 // mean; the light falls with the eye's depth as the beam's absorption says.
-#include "render/caustics_map.h"
 #include "render/light_shafts.h"
-#include "render/programs.h"
+#include "support/caustics_setup.h"
 #include "support/fresnel_reference.h"
 #include "support/gl_test.h"
 #include "swell/flat_model.h"
 #include "swell/gerstner_model.h"
 #include "swell/gl/shader.h"
-#include "swell/gl/shader_sources.h"
-#include "swell/wave_model_gpu.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
-#include <memory>
-#include <string>
 #include <vector>
 
 namespace {
@@ -75,28 +69,11 @@ void main()
 // A caustics map for a wave model, and the shafts along rays through it.
 class ShaftsRun {
 public:
-    explicit ShaftsRun(const swell::WaveModel& model) : sources_(swell::gl::ShaderSources::embedded())
-    {
-        gpu_ = model.createGpu(sources_);
-        gpu_->prepareFrame(glm::dvec2(0.0), 20.0);
-        gpu_->prepareView(glm::dvec2(0.0));
-        gpu_->bind();
-        swell::detail::ShaderVariant variant;
-        variant.oceanFile = gpu_->shaderFile();
-        const swell::detail::BlockProgram program = swell::detail::buildCausticsProgram(sources_, variant);
-        map_.place(glm::dvec3(0.0), glm::vec2(0.0f), glm::vec3(kSun));
-        map_.render(program);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
+    explicit ShaftsRun(const swell::WaveModel& model) : drawn_(model, glm::vec3(kSun)) {}
 
     std::vector<glm::dvec3> shafts(const std::vector<Ray>& rays) const
     {
-        std::map<std::string, std::string> files;
-        for (const std::string& name : sources_.fileNames())
-            files[name] = sources_.file(name);
-        files["probe.comp"] = kProbe;
-        const swell::gl::Program program = swell::gl::buildProgram(swell::gl::ShaderSources::fromMap(files),
-                                                                   {{GL_COMPUTE_SHADER, "probe.comp"}});
+        const swell::gl::Program program = drawn_.probe(kProbe);
         swell::gl::Buffer in = swell::gl::Buffer::create(), out = swell::gl::Buffer::create();
         glNamedBufferData(in.id(), GLsizeiptr(rays.size() * sizeof(Ray)), rays.data(), GL_STATIC_DRAW);
         glNamedBufferData(out.id(), GLsizeiptr(rays.size() * sizeof(glm::vec4)), nullptr, GL_DYNAMIC_READ);
@@ -107,7 +84,7 @@ public:
         glProgramUniform3f(id, glGetUniformLocation(id, "sunIrradiance"), float(kSunIrradiance.r),
                            float(kSunIrradiance.g), float(kSunIrradiance.b));
         glProgramUniform1f(id, glGetUniformLocation(id, "pixelSpread"), float(kPixelSpread));
-        map_.bind();
+        drawn_.map().bind();
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
         glDispatchCompute(GLuint(rays.size()), 1, 1);
@@ -124,9 +101,7 @@ public:
     }
 
 private:
-    swell::gl::ShaderSources sources_;
-    std::unique_ptr<swell::WaveModelGpu> gpu_;
-    swell::detail::CausticsMap map_;
+    swell::test::DrawnCausticsMap drawn_;
 };
 
 glm::dvec3 expected(const Ray& r)

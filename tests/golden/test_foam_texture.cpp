@@ -156,20 +156,8 @@ void expectNoCells(double height_m, const char* name)
     EXPECT_LT(peak.ratio, kPeakRatio) << "the foam's texture has a peak at a fixed cell size";
 }
 
-// Mean |a - b| of two views' shares over their overlap with b moved by
-// (dx, dy) pixels, a margin of kMargin pixels left out.
+// The views' margin left out of a match, as wide as the largest shift tried.
 constexpr int kMargin = 40;
-double shiftedDifference(const std::vector<double>& a, const std::vector<double>& b, int dx, int dy)
-{
-    double sum = 0.0;
-    int n = 0;
-    for (int y = kMargin; y < kView - kMargin; ++y)
-        for (int x = kMargin; x < kView - kMargin; ++x) {
-            sum += std::abs(a[size_t(y * kView + x)] - b[size_t((y + dy) * kView + x + dx)]);
-            ++n;
-        }
-    return sum / n;
-}
 
 // The foam from 20 m, and from the camera moved 2.4 m along x (24 pixels
 // at the sea's level; the waves' crests are nearer the camera, so the
@@ -184,21 +172,9 @@ TEST_F(FoamTexture, StaysOnTheWater)
     Renderer renderer(scene);
     const std::vector<double> here = foamView(renderer, scene, 0.0, 0.0, 20.0, nullptr);
     const std::vector<double> moved = foamView(renderer, scene, 2.390625, 0.0, 20.0, nullptr);
-    double best = 1e9;
-    int bestDx = 0, bestDy = 0;
-    for (int dy = -8; dy <= 8; ++dy)
-        for (int dx = -kMargin; dx <= kMargin; ++dx) {
-            const double d = shiftedDifference(here, moved, dx, dy);
-            if (d < best) {
-                best = d;
-                bestDx = dx;
-                bestDy = dy;
-            }
-        }
-    std::printf("best match at (%d, %d) pixels: mean |difference| %.4f; unmoved: %.4f\n", bestDx, bestDy, best,
-                shiftedDifference(here, moved, 0, 0));
-    EXPECT_LE(best, 0.04);
-    EXPECT_LE(bestDx, -12) << "the foam's texture moved with the camera";
+    const test::ShiftMatch match = test::bestShift(here, moved, kView, kMargin);
+    EXPECT_LE(match.difference, 0.04);
+    EXPECT_LE(match.dx, -12) << "the foam's texture moved with the camera";
 }
 
 // A shaded still is the same bit for bit on a second render (by a second

@@ -99,20 +99,8 @@ TEST_F(WakeFoam, TheSternWashIsChurnedWaterBreakingIntoLace)
     EXPECT_GT(t.edges, 0.12) << "the wash is a flat sheet: no lace, holes or flecks at the pixel's scale";
 }
 
-// Mean |a - b| of two views' shares over their overlap with b moved by
-// (dx, dy) pixels, a margin of kMargin pixels left out.
+// The views' margin left out of a match, as wide as the largest shift tried.
 constexpr int kMargin = 40;
-double shiftedDifference(const std::vector<double>& a, const std::vector<double>& b, int dx, int dy)
-{
-    double sum = 0.0;
-    int n = 0;
-    for (int y = kMargin; y < kView - kMargin; ++y)
-        for (int x = kMargin; x < kView - kMargin; ++x) {
-            sum += std::abs(at(a, x, y) - at(b, x + dx, y + dy));
-            ++n;
-        }
-    return sum / n;
-}
 
 // The wash from 10 m, and from the camera moved 1.2 m along x (about 24
 // pixels at the sea's level): the second view, moved back by the best
@@ -127,21 +115,9 @@ TEST_F(WakeFoam, StaysOnTheWater)
     Renderer renderer(scene);
     const std::vector<double> here = foamView(renderer, scene, 0.0, -100.0, 10.0, nullptr);
     const std::vector<double> moved = foamView(renderer, scene, 1.2, -100.0, 10.0, nullptr);
-    double best = 1e9;
-    int bestDx = 0, bestDy = 0;
-    for (int dy = -8; dy <= 8; ++dy)
-        for (int dx = -kMargin; dx <= kMargin; ++dx) {
-            const double d = shiftedDifference(here, moved, dx, dy);
-            if (d < best) {
-                best = d;
-                bestDx = dx;
-                bestDy = dy;
-            }
-        }
-    std::printf("best match at (%d, %d) pixels: mean |difference| %.4f; unmoved: %.4f\n", bestDx, bestDy, best,
-                shiftedDifference(here, moved, 0, 0));
-    EXPECT_LE(best, 0.03);
-    EXPECT_LE(bestDx, -12) << "the wake foam's texture moved with the camera";
+    const test::ShiftMatch match = test::bestShift(here, moved, kView, kMargin);
+    EXPECT_LE(match.difference, 0.03);
+    EXPECT_LE(match.dx, -12) << "the wake foam's texture moved with the camera";
 }
 
 } // namespace

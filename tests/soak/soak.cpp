@@ -11,6 +11,7 @@
 //   every 11: the debug view (every program is rebuilt)
 //   every 13: the reflection targets' scale (offscreen targets recreated)
 //   every 17: another preset through setScene (objects, terrain change)
+//   every 19: shafts of light on or off (every program is rebuilt)
 //   every 50: a shader reload
 //
 // Memory: resident set size from /proc/self/statm (after malloc_trim); each
@@ -161,6 +162,9 @@ swell::Scene sceneAt(const std::vector<swell::Scene>& presets, int step)
     if (!scene.waves.wind)
         scene.waves.wind = swell::WindSettings{};
     scene.waves.wind->seed = std::uint32_t(step / 5);
+    // Shafts of light in every other stretch: with them the caustics map is
+    // drawn in more frames, by the frame's only program with a geometry stage.
+    scene.water.shafts = (step / 19) % 2 == 1;
     const int resolutions[] = {256, 16, 64, 128};
     scene.grid.resolution = resolutions[(step / 7) % 4];
     const swell::DebugView views[] = {swell::DebugView::Shaded, swell::DebugView::Normals, swell::DebugView::Lod,
@@ -171,7 +175,10 @@ swell::Scene sceneAt(const std::vector<swell::Scene>& presets, int step)
     return scene;
 }
 
-bool changesScene(int step) { return step % 5 == 0 || step % 7 == 0 || step % 11 == 0 || step % 13 == 0 || step % 17 == 0; }
+bool changesScene(int step)
+{
+    return step % 5 == 0 || step % 7 == 0 || step % 11 == 0 || step % 13 == 0 || step % 17 == 0 || step % 19 == 0;
+}
 bool reloadsShaders(int step) { return step % 50 == 0; }
 
 glm::ivec2 sizeAt(glm::ivec2 base, int step)

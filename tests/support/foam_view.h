@@ -7,6 +7,8 @@
 #include "swell/renderer.h"
 #include "swell/scene.h"
 
+#include <cmath>
+#include <cstdio>
 #include <optional>
 #include <vector>
 
@@ -40,6 +42,47 @@ inline std::vector<double> foamViewDown(Renderer& renderer, const Scene& scene, 
         for (int x = 0; x < image.width; ++x)
             share.push_back(srgbToLinear(image.pixel(x, y)[0]));
     return share;
+}
+
+// Where a second square view (size x size shares) matches the first best:
+// the mean |a - b| over their overlap with b moved by (dx, dy) pixels, a
+// margin of `margin` pixels left out, least over dx in -margin..margin and
+// dy in -8..8. What the "stays on the water" tests ask of a texture that
+// must move with the water, not with the camera.
+struct ShiftMatch {
+    int dx = 0, dy = 0;
+    double difference = 0.0; // at (dx, dy)
+    double unmoved = 0.0;    // at (0, 0)
+};
+
+inline double shiftedDifference(const std::vector<double>& a, const std::vector<double>& b, int size, int margin,
+                                int dx, int dy)
+{
+    double sum = 0.0;
+    int n = 0;
+    for (int y = margin; y < size - margin; ++y)
+        for (int x = margin; x < size - margin; ++x) {
+            sum += std::abs(a[size_t(y * size + x)] - b[size_t((y + dy) * size + x + dx)]);
+            ++n;
+        }
+    return sum / n;
+}
+
+inline ShiftMatch bestShift(const std::vector<double>& a, const std::vector<double>& b, int size, int margin)
+{
+    ShiftMatch best{0, 0, 1e9, shiftedDifference(a, b, size, margin, 0, 0)};
+    for (int dy = -8; dy <= 8; ++dy)
+        for (int dx = -margin; dx <= margin; ++dx) {
+            const double d = shiftedDifference(a, b, size, margin, dx, dy);
+            if (d < best.difference) {
+                best.difference = d;
+                best.dx = dx;
+                best.dy = dy;
+            }
+        }
+    std::printf("best match at (%d, %d) pixels: mean |difference| %.4f; unmoved: %.4f\n", best.dx, best.dy,
+                best.difference, best.unmoved);
+    return best;
 }
 
 } // namespace swell::test

@@ -1,0 +1,58 @@
+// A wave model's caustics map drawn for a sun at the origin, at time 20 s,
+// as the frame draws it (render/caustics_map.h), and compute probes that
+// read it through the shaders' own functions: what the caustics' and the
+// shafts of light's tests measure. Needs a current GL 4.5 context.
+#pragma once
+
+#include "render/caustics_map.h"
+#include "render/programs.h"
+#include "swell/gl/shader.h"
+#include "swell/gl/shader_sources.h"
+#include "swell/wave_model.h"
+#include "swell/wave_model_gpu.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace swell::test {
+
+class DrawnCausticsMap {
+public:
+    DrawnCausticsMap(const WaveModel& model, glm::vec3 sunDirection) : sources_(gl::ShaderSources::embedded())
+    {
+        gpu_ = model.createGpu(sources_);
+        gpu_->prepareFrame(glm::dvec2(0.0), 20.0);
+        gpu_->prepareView(glm::dvec2(0.0));
+        gpu_->bind();
+        detail::ShaderVariant variant;
+        variant.oceanFile = gpu_->shaderFile();
+        const detail::BlockProgram program = detail::buildCausticsProgram(sources_, variant);
+        map_.place(glm::dvec3(0.0), glm::vec2(0.0f), sunDirection);
+        triangles_ = map_.render(program);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+
+    const detail::CausticsMap& map() const { return map_; }
+    // The surface's triangles drawn into the map.
+    long long triangles() const { return triangles_; }
+
+    // A compute program from `text` (as "probe.comp"), which may include
+    // any of the shaders' files.
+    gl::Program probe(const char* text) const
+    {
+        std::map<std::string, std::string> files;
+        for (const std::string& name : sources_.fileNames())
+            files[name] = sources_.file(name);
+        files["probe.comp"] = text;
+        return gl::buildProgram(gl::ShaderSources::fromMap(files), {{GL_COMPUTE_SHADER, "probe.comp"}});
+    }
+
+private:
+    gl::ShaderSources sources_;
+    std::unique_ptr<WaveModelGpu> gpu_;
+    detail::CausticsMap map_;
+    long long triangles_ = 0;
+};
+
+} // namespace swell::test
