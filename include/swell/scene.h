@@ -140,6 +140,10 @@ struct SWELL_API WaterSettings {
     // renderer's soak test finds a program of a replaced set kept alive
     // with them on (docs/RENDERING.md, "Shafts of light").
     bool shafts = false;
+    // Spray: white mist torn from the breaking crests and carried downwind
+    // (shaders/spray.vert), from Beaufort 7 up (none below, whatever this
+    // says; the spectral model alone has crests that break).
+    bool spray = true;
 };
 
 struct SWELL_API ReflectionSettings {

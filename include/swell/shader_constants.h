@@ -263,5 +263,28 @@
 // spacing grows linearly), where shafts are nearest and widest on screen.
 #define SWELL_SHAFTS_STEPS 16
 #define SWELL_SHAFTS_REACH_M 24.0
+// Spray (shaders/spray.vert): none below Beaufort 7, "near gale", whose
+// lowest wind is 13.9 m/s at 10 m (WMO Beaufort scale; WMO-No. 8, 2018);
+// its amount grows with the wind to full at Beaufort 10's lowest, 24.5 m/s.
+#define SWELL_SPRAY_ONSET_WIND_MPS 13.9
+#define SWELL_SPRAY_FULL_WIND_MPS 24.5
+// The particles: SWELL_SPRAY_SLOTS in each cell of a square lattice of
+// SWELL_SPRAY_CELLS^2 cells of SWELL_SPRAY_CELL_M, anchored to the world and
+// following the eye (160 m across: farther spray is thinner than a pixel
+// and inside the haze of any sea that makes it), each living
+// SWELL_SPRAY_LIFETIME_S and born again at once elsewhere.
+#define SWELL_SPRAY_CELLS 64
+#define SWELL_SPRAY_CELL_M 2.5
+#define SWELL_SPRAY_SLOTS 12
+#define SWELL_SPRAY_LIFETIME_S 1.6
+// A clump's drops (shaders/spray.glsl, sprayTau_s): the first
+// SWELL_SPRAY_MIST_DROPS fine mist the wind takes up at once, drawn as
+// streaks of their path over the last SWELL_SPRAY_MIST_TRAIL_S (the sheet a
+// gale tears off a crest), the rest larger drops that fall back in arcs,
+// streaks of SWELL_SPRAY_DROP_TRAIL_S.
+#define SWELL_SPRAY_DROPS 5
+#define SWELL_SPRAY_MIST_DROPS 3
+#define SWELL_SPRAY_MIST_TRAIL_S 0.2
+#define SWELL_SPRAY_DROP_TRAIL_S 0.1
 
 #endif

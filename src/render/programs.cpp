@@ -1,11 +1,14 @@
 // Building the renderer's programs for a variant, and their typed setters.
 #include "render/programs.h"
 
+#include "render/spray_kinematics.h"
 #include "render/surface_sources.h"
+#include "swell/shader_constants.h"
 
 #include "swell/error.h"
 
 #include <fmt/format.h>
+#include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace swell::detail {
@@ -116,6 +119,36 @@ void SkyBakeProgram::use() const { glUseProgram(program_.id()); }
 
 void SkyBakeProgram::setFace(int face) const { glProgramUniform1i(program_.id(), face_, face); }
 
+SprayProgram::SprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
+    : program_(gl::buildProgram(
+          sources, {{GL_VERTEX_SHADER, "spray.vert"}, {GL_GEOMETRY_SHADER, "spray.geom"}, {GL_FRAGMENT_SHADER, "spray.frag"}},
+          definesOf(variant))),
+      time_(requiredUniform(program_, "sprayTime_s", "spray.vert")),
+      firstCell_(requiredUniform(program_, "sprayFirstCell", "spray.vert")),
+      corner_(requiredUniform(program_, "sprayCorner_m", "spray.vert")),
+      cornerFromGrid_(requiredUniform(program_, "sprayCornerFromGrid_m", "spray.vert")),
+      wind_(requiredUniform(program_, "sprayWindSpeed_mps", "spray.vert")),
+      amount_(requiredUniform(program_, "sprayAmount", "spray.vert"))
+{
+}
+
+void SprayProgram::use() const { glUseProgram(program_.id()); }
+
+void SprayProgram::set(double time_s, glm::ivec2 firstCell, glm::vec2 corner_m, glm::vec2 cornerFromGridCentre_m,
+                       float windSpeed_mps, float amount) const
+{
+    // The time within a period of 4096 lifetimes (render/spray_kinematics.h):
+    // a float holds it to the microsecond where the absolute time (hours)
+    // would not.
+    const glm::vec2 t = sprayPeriodTime(time_s);
+    glProgramUniform2f(program_.id(), time_, t.x, t.y);
+    glProgramUniform2i(program_.id(), firstCell_, firstCell.x, firstCell.y);
+    glProgramUniform2f(program_.id(), corner_, corner_m.x, corner_m.y);
+    glProgramUniform2f(program_.id(), cornerFromGrid_, cornerFromGridCentre_m.x, cornerFromGridCentre_m.y);
+    glProgramUniform1f(program_.id(), wind_, windSpeed_mps);
+    glProgramUniform1f(program_.id(), amount_, amount);
+}
+
 void BlockProgram::use() const { glUseProgram(program_.id()); }
 
 LabelProgram::LabelProgram(gl::Program program)
@@ -163,6 +196,8 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
     p.skyBake = SkyBakeProgram(sources, variant);
     if (variant.caustics)
         p.caustics = buildCausticsProgram(sources, variant);
+    if (variant.oceanFile == "ocean/spectral.glsl")
+        p.spray = SprayProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),
                                               {"vRestPoint", "vPosition", "vNormal"}));
     p.probe = BlockProgram(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "surface_probe.comp"}}, definesOf(variant)));

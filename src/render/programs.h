@@ -97,6 +97,26 @@ private:
     gl::Program program_;
 };
 
+// The spray's particles (spray.vert, .geom, .frag): its own uniforms are
+// the simulated time, the wind and the lattice's place.
+class SprayProgram {
+public:
+    SprayProgram() = default;
+    SprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
+    void use() const;
+    explicit operator bool() const { return bool(program_); }
+    // time_s: the simulated time (the particles are a function of it alone);
+    // firstCell: the world index of the lattice's first cell, its corner
+    // relative to the render origin (m) and to the grid centre (m);
+    // the wind's speed at 10 m (m/s); amount 0..1.
+    void set(double time_s, glm::ivec2 firstCell, glm::vec2 corner_m, glm::vec2 cornerFromGridCentre_m,
+             float windSpeed_mps, float amount) const;
+
+private:
+    gl::Program program_;
+    GLint time_ = -1, firstCell_ = -1, corner_ = -1, cornerFromGrid_ = -1, wind_ = -1, amount_ = -1;
+};
+
 struct Programs {
     BlockProgram water, sky, waterline, fxaa, capture, probe;
     // The host's geometry seen from under the water (sky.vert + underwater_host.frag).
@@ -115,6 +135,8 @@ struct Programs {
     // The caustics map's pass (caustics.vert/.geom/.frag, render/caustics_map.h);
     // empty when the variant has no caustics.
     BlockProgram caustics;
+    // The spray (spectral model only: the others have no breaking crests).
+    SprayProgram spray;
 };
 
 // The caustics pass's program for a variant (caustics.vert, .geom, .frag).

@@ -268,6 +268,7 @@ struct Renderer::Impl {
     void drawCaustics(const ViewFrame& v, bool ownWorld);
 
     void drawWater(bool inAir);
+    void drawSpray(const ViewFrame& v, const View& view);
 
     // The waterline mask for the main pass (render/waterline.h): drawn from
     // the water grid when the near plane can lie on either side of the

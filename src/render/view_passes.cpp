@@ -180,6 +180,54 @@ void Renderer::Impl::drawWater(bool inAir)
     ++counters.drawCalls;
 }
 
+// The spray torn from the breaking crests (shaders/spray.vert), over the
+// finished frame: blended, depth-tested against the world and the water,
+// writing no depth. None below Beaufort 7; its amount grows with the wind
+// to Beaufort 10. Every particle is a function of the simulated time.
+void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
+{
+    if (!programs.spray || !scene.water.spray || !scene.waves.wind || scene.debugView != DebugView::Shaded)
+        return;
+    const double wind_mps = scene.waves.wind->windSpeed_mps;
+    const double amount = std::clamp((wind_mps - SWELL_SPRAY_ONSET_WIND_MPS) /
+                                         (SWELL_SPRAY_FULL_WIND_MPS - SWELL_SPRAY_ONSET_WIND_MPS), 0.0, 1.0);
+    if (amount <= 0.0)
+        return;
+    notify(true, "spray");
+    // The lattice, its cells fixed in the world, ahead of the eye: its
+    // centre 0.45 of its width along the view's heading (level), so that it
+    // reaches just behind the eye and most of its slots lie in view.
+    const double cell_m = SWELL_SPRAY_CELL_M;
+    const glm::dvec2 eye(v.origin.x, v.origin.z);
+    const glm::dvec2 forward(-view.view[0][2], -view.view[2][2]);
+    const double level = glm::length(forward);
+    const glm::dvec2 ahead = level > 1e-6 ? forward / level * (0.45 * SWELL_SPRAY_CELLS * cell_m) : glm::dvec2(0.0);
+    const glm::dvec2 first = glm::floor((eye + ahead) / cell_m) - glm::dvec2(SWELL_SPRAY_CELLS / 2);
+    const glm::vec2 corner_m(first * cell_m - eye);
+    programs.spray.set(simulated->time_s, glm::ivec2(first), corner_m, corner_m - v.base.gridCenter, float(wind_mps),
+                       float(amount));
+    programs.spray.use();
+    modelGpu->bind();
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(emptyVao.id());
+    glDrawArrays(GL_POINTS, 0, SWELL_SPRAY_CELLS * SWELL_SPRAY_CELLS * SWELL_SPRAY_SLOTS);
+    ++counters.drawCalls;
+    // Unbound at once, while its geometry stage is current: Mesa (22.3)
+    // updates a stage's reference to the program that set it only when the
+    // stage's code changes, so the next program without a geometry shader
+    // would stay referenced by the geometry stage after every later
+    // glUseProgram(0), alive in the driver after Swell deleted it (the soak
+    // test's one program over its baseline). glUseProgram(0) now clears the
+    // stage together with its reference.
+    glUseProgram(0);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    notify(false, "spray");
+}
+
 // The waterline mask for the main pass (render/waterline.h): drawn from
 // the water grid when the near plane can lie on either side of the
 // waves, else cleared to the side it lies on. Draws into its own target
@@ -415,6 +463,10 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     notify(false, "water");
     if (ownsFrame || options.sky)
         drawSky(inAir, v.depth);
+    // From under the water the surface hides the spray (and the depth
+    // test hides a particle's part below the surface from above).
+    if (base.eyeUnderwater == 0)
+        drawSpray(v, view);
     notify(false, "main");
 
     // The MSAA resolve, the FXAA filter and the render scale's filtering.

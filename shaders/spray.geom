@@ -1,0 +1,96 @@
+// The spray's clumps (spray.vert) as SWELL_SPRAY_DROPS drops, each drawn as
+// a streak of its own path (spray.glsl's closed form) over the last
+// fraction of a second: a ribbon facing the eye through four points of
+// that path, so the fine mist the wind takes up at once shows as thin
+// sheets drawn out downwind, densest where the clump left the crest and
+// thinning as they spread, and the larger drops as short streaks along
+// their arcs. A streak narrower or shorter than a pixel is drawn out to
+// one, made fainter by as much (its coverage kept), so distant spray thins
+// into a haze instead of sparkling.
+#include "frame.glsl"
+#include "fog.glsl"
+#include "spray.glsl"
+
+layout(points) in;
+layout(triangle_strip, max_vertices = 40) out; // SWELL_SPRAY_DROPS ribbons of 4 point pairs
+
+in vec3 vBirth[];
+in vec3 vWind[];
+in float vAge_s[];
+in flat uint vKey[];
+in float vOpacity[];
+
+out vec2 gRibbon;     // x: 0 at the streak's tail to 1 at its head; y: -1..1 across
+out vec3 gColor;      // lit and fogged, in the pass's output encoding
+out float gOpacity;
+
+// A streak's colour at p: fine water drops, lit by the sky and the sun
+// (drops scatter nearly all the light they meet, most of it forward),
+// fogged with the distance as the world is. Lit as the whitecaps are
+// (water.frag), the sun's share brighter looking towards it, with an albedo
+// of 1 (drops absorb next to nothing; the foam's 0.55 to 0.65 is a layer
+// the water shows through): chosen by eye. Per vertex, not per fragment: it
+// hardly changes along a streak, and the fragments are many.
+vec3 sprayColor(vec3 p)
+{
+    vec3 toEye = normalize(eyePosition - p);
+    float forward = max(dot(-toEye, sunDirection), 0.0);
+    vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
+    vec3 light = sunLight * (0.6 + 0.4 * forward * forward) + skyHorizon * 0.5;
+    return passOutput(applyFog(light, distance(p, eyePosition))).rgb;
+}
+
+void main()
+{
+    if (vOpacity[0] <= 0.0)
+        return;
+    float age_s = vAge_s[0];
+    // A pixel's width per metre of distance.
+    float pixelSpread = 2.0 / (projectionFocalY * viewportSize.y);
+    for (uint drop = 0u; drop < uint(SWELL_SPRAY_DROPS); ++drop) {
+        bool mist = drop < uint(SWELL_SPRAY_MIST_DROPS);
+        float tau_s = sprayTau_s(vKey[0], drop);
+        vec3 launch_mps = sprayLaunch(vKey[0], drop, vWind[0].xy, vWind[0].z);
+        vec3 air_mps = sprayAir(vKey[0], drop, vWind[0].xy, vWind[0].z);
+        float trail_s = mist ? float(SWELL_SPRAY_MIST_TRAIL_S) : float(SWELL_SPRAY_DROP_TRAIL_S);
+        float tail_s = max(age_s - trail_s, 0.0);
+        vec3 points[4];
+        for (int k = 0; k < 4; ++k)
+            points[k] = vBirth[0] + sprayDropOffset(launch_mps, air_mps, tau_s, mix(tail_s, age_s, float(k) / 3.0));
+        // It fades as it falls back to the crest's height, where the foam takes it.
+        float opacity = vOpacity[0] * smoothstep(-0.3, 0.3, points[3].y - vBirth[0].y);
+        // Mist spreads as it flies (turbulent diffusion, chosen by eye),
+        // fainter as it spreads; a drop stays a drop.
+        float halfWidth_m = mist ? 0.03 + 0.08 * age_s : 0.012;
+        opacity *= mist ? 0.6 * sqrt(0.03 / halfWidth_m) : 0.9;
+        float pixel_m = distance(eyePosition, points[3]) * pixelSpread;
+        float drawn_m = max(halfWidth_m, 0.6 * pixel_m);
+        opacity *= halfWidth_m / drawn_m;
+        // A streak shorter than a pixel is drawn out to one, fainter by as
+        // much, about its middle.
+        vec3 path = points[3] - points[0];
+        float length_m = length(path), drawnLength_m = max(length_m, pixel_m);
+        opacity *= length_m / max(drawnLength_m, 1e-6);
+        if (length_m < 1e-4)
+            continue; // at birth: nothing has left the crest yet
+        vec3 middle = 0.5 * (points[0] + points[3]);
+        for (int k = 0; k < 4; ++k)
+            points[k] = middle + (points[k] - middle) * (drawnLength_m / length_m);
+        if (opacity <= 0.002)
+            continue;
+        for (int k = 0; k < 4; ++k) {
+            vec3 color = sprayColor(points[k]);
+            vec3 toEye = normalize(eyePosition - points[k]);
+            vec3 side = cross(toEye, path);
+            side = dot(side, side) > 1e-12 ? normalize(side) : normalize(cross(toEye, vec3(1.0, 0.0, 0.0)));
+            for (int s = -1; s <= 1; s += 2) {
+                gRibbon = vec2(float(k) / 3.0, float(s));
+                gColor = color;
+                gOpacity = opacity;
+                gl_Position = passViewProj * vec4(points[k] + float(s) * drawn_m * side, 1.0);
+                EmitVertex();
+            }
+        }
+        EndPrimitive();
+    }
+}

@@ -1,0 +1,117 @@
+// The spray's kinematics (spray.vert, spray.geom): which slot of the
+// lattice lives when, where its clump leaves the crest, how its drops fly.
+// Every value is a function of the slot, the simulated time and the wind
+// alone. The C++ twin is src/render/spray_kinematics.h, line for line;
+// tests/gl/test_spray_kinematics.cpp runs both over a set of seeds.
+#ifndef SWELL_SPRAY_GLSL
+#define SWELL_SPRAY_GLSL
+
+#include "swell/shader_constants.h"
+
+// A 32-bit integer hash (Wellons 2018, "lowbias32"): every input bit
+// changes about half the output bits; GLSL's sin-based hashes are not
+// specified to the bit.
+uint sprayHash(uint x)
+{
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+
+// The n-th uniform number in [0, 1) of a key: 24 bits, exact in a float.
+float sprayUnit(uint key, uint n) { return float(sprayHash(key + n * 0x9e3779b9u) >> 8u) * (1.0 / 16777216.0); }
+
+// A slot's present life: its key (every random choice of that life), its
+// age, and where in its cell it was born (0..1 each way).
+struct SprayLife {
+    uint key;
+    float age_s;
+    vec2 inCell;
+};
+
+// worldCell: the cell's index in the world; time_s: x the time within a
+// period of 4096 lifetimes, y the period's index (float holds the first to
+// the microsecond where hours of absolute time would not).
+SprayLife sprayLife(ivec2 worldCell, int slot, vec2 time_s)
+{
+    uint slotKey = sprayHash(uint(worldCell.x) * 0x9e3779b1u ^ sprayHash(uint(worldCell.y) ^ sprayHash(uint(slot))));
+    // The slot's lives: each starts at a phase of the slot's own.
+    float lifetime_s = float(SWELL_SPRAY_LIFETIME_S);
+    float local_s = time_s.x + sprayUnit(slotKey, 0u) * lifetime_s;
+    float life = floor(local_s / lifetime_s);
+    SprayLife l;
+    l.age_s = local_s - life * lifetime_s;
+    uint lifeIndex = uint(int(time_s.y)) * 4096u + uint(int(life));
+    l.key = sprayHash(slotKey ^ sprayHash(lifeIndex));
+    l.inCell = vec2(sprayUnit(l.key, 2u), sprayUnit(l.key, 3u));
+    return l;
+}
+
+// Whether a life is drawn, from the crest signal: the whitecaps' foam at
+// its birth place (exp(-age / lifetime), 1 where a crest folds now), which
+// says a crest broke there lately. youngFoam is the foam a second old
+// (breakingFoamAmount). Certainly where the foam is under two seconds old
+// (youngFoam^2: the spray's life and a little more), never where it is over
+// five (youngFoam^5; the crest has run on a wavelength's part), in between
+// the likelier the younger; and only a share `amount` (the wind's) of the
+// slots. Five rather than four seconds: chosen by eye, the storm's young
+// foam is patchy and four left most of its crests bare.
+bool sprayLives(uint key, float foam, float youngFoam, float amount)
+{
+    float young = youngFoam * youngFoam, old = young * young * youngFoam;
+    float breaking = clamp((foam - old) / max(young - old, 1e-3), 0.0, 1.0);
+    return sprayUnit(key, 1u) < amount && sprayUnit(key, 4u) < breaking;
+}
+
+// A drop's launch velocity, m/s: the clump's, up 1 to 4 m/s, downwind 0.3
+// to 0.6 of the wind, across it up to 1 m/s either way, and the drop's own
+// scatter about it, up to 0.5 m/s each way across and up (chosen by eye).
+vec3 sprayLaunch(uint key, uint drop, vec2 windDirection, float windSpeed_mps)
+{
+    vec2 across = vec2(-windDirection.y, windDirection.x);
+    float side = (sprayUnit(key, 8u) - 0.5) * 2.0 + (sprayUnit(key, 20u + drop) - 0.5);
+    vec2 level = windDirection * windSpeed_mps * (0.3 + 0.3 * sprayUnit(key, 7u)) + across * side;
+    return vec3(level.x, 1.0 + 3.0 * sprayUnit(key, 6u) + (sprayUnit(key, 30u + drop) - 0.5), level.y);
+}
+
+// The air a drop meets over the crest, m/s: 0.8 of the wind at 10 m (the
+// logarithmic profile a metre or so up at a gale's roughness; Charnock
+// 1955), its gusts 0.9 to 1.1 of that along the wind and 1.5 m/s either
+// way across, and lifted 0.2 to 1 m/s by the turbulence in the lee of the
+// breaking crest: each drop its own eddy, so a clump's mist fans out into
+// a sheet of streaks (chosen by eye).
+vec3 sprayAir(uint key, uint drop, vec2 windDirection, float windSpeed_mps)
+{
+    vec2 across = vec2(-windDirection.y, windDirection.x);
+    vec2 level = windDirection * (0.8 * windSpeed_mps * (0.9 + 0.2 * sprayUnit(key, 40u + drop))) +
+                 across * (sprayUnit(key, 50u + drop) - 0.5) * 3.0;
+    return vec3(level.x, 0.2 + 0.8 * sprayUnit(key, 60u + drop), level.y);
+}
+
+// A drop's response time under Stokes drag, s: tau = rho_w d^2 / (18 mu_air)
+// (Stokes 1851), rho_w = 1025 kg/m^3, mu_air = 1.8e-5 Pa s. Drops
+// 0..SWELL_SPRAY_MIST_DROPS-1 are spume mist, 40 to 120 um, taken up by the
+// wind within a hundredth of a second; the rest are drops of 150 to 350 um
+// that fall back in arcs (Andreas 1998's spume sizes; Stokes' drag
+// overstates the fall of the largest, whose Reynolds number passes 10).
+float sprayTau_s(uint key, uint drop)
+{
+    float u = sprayUnit(key, 10u + drop);
+    float d_m = drop < uint(SWELL_SPRAY_MIST_DROPS) ? (40.0 + 80.0 * u) * 1e-6 : (150.0 + 200.0 * u) * 1e-6;
+    return 1025.0 * d_m * d_m / (18.0 * 1.8e-5);
+}
+
+// A drop's place relative to its birth after age_s, m: under Stokes drag it
+// relaxes towards the air's velocity plus its terminal fall g tau,
+//   x(a) = v_inf a + (v0 - v_inf) tau (1 - exp(-a / tau)),
+// closed form, so a drop's place needs no history.
+vec3 sprayDropOffset(vec3 launch_mps, vec3 air_mps, float tau_s, float age_s)
+{
+    vec3 terminal = air_mps + vec3(0.0, -9.81 * tau_s, 0.0);
+    return terminal * age_s + (launch_mps - terminal) * tau_s * (1.0 - exp(-age_s / tau_s));
+}
+
+#endif

@@ -1,0 +1,103 @@
+// The spray's kinematics: the C++ twin of shaders/spray.glsl, line for
+// line and in float as the shader computes: which slot of the lattice
+// lives when and where in its cell, whether the crest signal (the
+// whitecaps' foam there) lets it live, its launch, the air its drops meet
+// and each drop's flight. tests/gl/test_spray_kinematics.cpp runs the
+// shader's functions and these over a set of seeds and times.
+#pragma once
+
+#include "swell/shader_constants.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace swell::detail {
+
+// spray.glsl's sprayHash (Wellons 2018, "lowbias32").
+inline std::uint32_t sprayHash(std::uint32_t x)
+{
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+
+inline float sprayUnit(std::uint32_t key, std::uint32_t n)
+{
+    return float(sprayHash(key + n * 0x9e3779b9u) >> 8u) * (1.0f / 16777216.0f);
+}
+
+struct SprayLife {
+    std::uint32_t key = 0;
+    float age_s = 0.0f;
+    glm::vec2 inCell{0.0f};
+};
+
+// The shader's time uniform: the time within a period of 4096 lifetimes
+// (x, s) and the period's index (y).
+inline glm::vec2 sprayPeriodTime(double time_s)
+{
+    const double period_s = SWELL_SPRAY_LIFETIME_S * 4096.0;
+    const double period = std::floor(time_s / period_s);
+    return {float(time_s - period * period_s), float(period)};
+}
+
+inline SprayLife sprayLife(glm::ivec2 worldCell, int slot, glm::vec2 time_s)
+{
+    const std::uint32_t slotKey = sprayHash(std::uint32_t(worldCell.x) * 0x9e3779b1u ^
+                                            sprayHash(std::uint32_t(worldCell.y) ^ sprayHash(std::uint32_t(slot))));
+    const float lifetime_s = float(SWELL_SPRAY_LIFETIME_S);
+    const float local_s = time_s.x + sprayUnit(slotKey, 0u) * lifetime_s;
+    const float life = std::floor(local_s / lifetime_s);
+    SprayLife l;
+    l.age_s = local_s - life * lifetime_s;
+    const std::uint32_t lifeIndex = std::uint32_t(int(time_s.y)) * 4096u + std::uint32_t(int(life));
+    l.key = sprayHash(slotKey ^ sprayHash(lifeIndex));
+    l.inCell = {sprayUnit(l.key, 2u), sprayUnit(l.key, 3u)};
+    return l;
+}
+
+inline bool sprayLives(std::uint32_t key, float foam, float youngFoam, float amount)
+{
+    const float young = youngFoam * youngFoam, old = young * young * youngFoam;
+    const float breaking = std::clamp((foam - old) / std::max(young - old, 1e-3f), 0.0f, 1.0f);
+    return sprayUnit(key, 1u) < amount && sprayUnit(key, 4u) < breaking;
+}
+
+inline glm::vec3 sprayLaunch(std::uint32_t key, std::uint32_t drop, glm::vec2 windDirection, float windSpeed_mps)
+{
+    const glm::vec2 across(-windDirection.y, windDirection.x);
+    const float side = (sprayUnit(key, 8u) - 0.5f) * 2.0f + (sprayUnit(key, 20u + drop) - 0.5f);
+    const glm::vec2 level = windDirection * windSpeed_mps * (0.3f + 0.3f * sprayUnit(key, 7u)) + across * side;
+    return {level.x, 1.0f + 3.0f * sprayUnit(key, 6u) + (sprayUnit(key, 30u + drop) - 0.5f), level.y};
+}
+
+inline glm::vec3 sprayAir(std::uint32_t key, std::uint32_t drop, glm::vec2 windDirection, float windSpeed_mps)
+{
+    const glm::vec2 across(-windDirection.y, windDirection.x);
+    const glm::vec2 level = windDirection * (0.8f * windSpeed_mps * (0.9f + 0.2f * sprayUnit(key, 40u + drop))) +
+                            across * (sprayUnit(key, 50u + drop) - 0.5f) * 3.0f;
+    return {level.x, 0.2f + 0.8f * sprayUnit(key, 60u + drop), level.y};
+}
+
+inline float sprayTau_s(std::uint32_t key, std::uint32_t drop)
+{
+    const float u = sprayUnit(key, 10u + drop);
+    const float d_m = drop < std::uint32_t(SWELL_SPRAY_MIST_DROPS) ? (40.0f + 80.0f * u) * 1e-6f
+                                                                    : (150.0f + 200.0f * u) * 1e-6f;
+    return 1025.0f * d_m * d_m / (18.0f * 1.8e-5f);
+}
+
+inline glm::vec3 sprayDropOffset(glm::vec3 launch_mps, glm::vec3 air_mps, float tau_s, float age_s)
+{
+    const glm::vec3 terminal = air_mps + glm::vec3(0.0f, -9.81f * tau_s, 0.0f);
+    return terminal * age_s + (launch_mps - terminal) * tau_s * (1.0f - std::exp(-age_s / tau_s));
+}
+
+} // namespace swell::detail
