@@ -63,17 +63,19 @@ float cloudFractalSum(vec2 p, float footprintCells, out float unresolvedSigma)
     const float warp = float(SWELL_CLOUD_WARP_CELLS);
     vec2 q = p + warp * vec2(cloudGradientNoise(p * 0.5 + vec2(17.3, 41.9), 100u),
                              cloudGradientNoise(p * 0.5 + vec2(-23.1, 7.7), 101u));
-    float sum = 0.0, amplitude = 1.0, cells = footprintCells, variance = 0.0, lost = 0.0;
+    float sum = 0.0, amplitude = 1.0, cells = footprintCells, variance = 0.0, lost = 0.0, slope = 0.0;
     for (int k = 0; k < SWELL_CLOUD_OCTAVES; ++k) {
         float keep = clamp(2.0 - 4.0 * cells, 0.0, 1.0);
         sum += keep * amplitude * cloudGradientNoise(q, uint(k));
         variance += amplitude * amplitude;
         lost += (1.0 - keep) * (1.0 - keep) * amplitude * amplitude;
+        slope += keep * amplitude * cells;
         q = 2.0 * vec2(0.8 * q.x - 0.6 * q.y, 0.6 * q.x + 0.8 * q.y) + vec2(5.2, 1.3);
         amplitude *= 0.5;
         cells *= 2.0;
     }
-    unresolvedSigma = float(SWELL_CLOUD_FBM_SIGMA) * sqrt(lost / variance);
+    float faded = float(SWELL_CLOUD_FBM_SIGMA) * sqrt(lost / variance);
+    unresolvedSigma = sqrt(faded * faded + 0.25 * slope * slope);
     return sum;
 }
 

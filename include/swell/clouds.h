@@ -42,7 +42,8 @@ SWELL_API float cloudGradientNoise(glm::vec2 p, std::uint32_t seed);
 
 // The layer's fractal sum at p (in coarsest cells), its octaves finer than
 // footprintCells averaged away; `unresolvedSigma` receives the standard
-// deviation of what was averaged away (0 when nothing was).
+// deviation of what the footprint averages away (those octaves, and the
+// kept ones' change across it; 0 for a footprint of 0).
 SWELL_API float cloudFractalSum(glm::vec2 p, float footprintCells, float& unresolvedSigma);
 
 // The layer at a point of it (x, z world metres), seen with a footprint of

@@ -85,7 +85,7 @@ float cloudFractalSum(glm::vec2 p, float footprintCells, float& unresolvedSigma)
     const float warp = float(SWELL_CLOUD_WARP_CELLS);
     glm::vec2 q = p + warp * glm::vec2(cloudGradientNoise(p * 0.5f + glm::vec2(17.3f, 41.9f), 100u),
                                        cloudGradientNoise(p * 0.5f + glm::vec2(-23.1f, 7.7f), 101u));
-    float sum = 0.0f, amplitude = 1.0f, cells = footprintCells, variance = 0.0f, lost = 0.0f;
+    float sum = 0.0f, amplitude = 1.0f, cells = footprintCells, variance = 0.0f, lost = 0.0f, slope = 0.0f;
     for (int k = 0; k < SWELL_CLOUD_OCTAVES; ++k) {
         // An octave whose cells are under two footprints wide is faded to
         // its mean (0): the bake's texels cannot hold it, and it would alias.
@@ -93,13 +93,22 @@ float cloudFractalSum(glm::vec2 p, float footprintCells, float& unresolvedSigma)
         sum += keep * amplitude * cloudGradientNoise(q, std::uint32_t(k));
         variance += amplitude * amplitude;
         lost += (1.0f - keep) * (1.0f - keep) * amplitude * amplitude;
+        // How much the kept octave changes across one footprint: its
+        // gradient (about 1 a cell, times its amplitude) times the
+        // footprint in its cells.
+        slope += keep * amplitude * cells;
         // The next octave: half the cell, on a lattice turned by 36.87
         // degrees (cos 0.8, sin 0.6: exact in float) and shifted.
         q = 2.0f * glm::vec2(0.8f * q.x - 0.6f * q.y, 0.6f * q.x + 0.8f * q.y) + glm::vec2(5.2f, 1.3f);
         amplitude *= 0.5f;
         cells *= 2.0f;
     }
-    unresolvedSigma = float(SWELL_CLOUD_FBM_SIGMA) * std::sqrt(lost / variance);
+    // What the footprint averages away: the faded octaves' deviation, and
+    // half the kept ones' change across it (so a cloud's edge, which the
+    // threshold makes sharper than any octave, is never sharper than a
+    // footprint: the bake's texels hold it without aliasing).
+    const float faded = float(SWELL_CLOUD_FBM_SIGMA) * std::sqrt(lost / variance);
+    unresolvedSigma = std::sqrt(faded * faded + 0.25f * slope * slope);
     return sum;
 }
 

@@ -220,9 +220,10 @@ std::vector<double> periodogram(const std::vector<double>& v, int n)
 // kPeakRatio times over the mean of its ring within 30 degrees of it.
 // A noise that tiles (its lattice's gradients repeating every 16 cells, as
 // a small noise texture would) shows as peaks at the tile's harmonics.
-// Measured: 4.3 as built; with the gradients repeating every 16 cells,
-// 8.8 without the domain warp and 11.2 without the warp and the octaves'
-// turns (with the warp a tiling hides from this measure: 4.6).
+// Measured: 5.3 as built; with the gradients repeating every 16 cells,
+// 10.2 without the domain warp and 12.4 without the warp and the octaves'
+// turns (with the warp, before the edges were blurred by the footprint, a
+// tiling hid from this measure: 4.6 against 4.3).
 TEST(CloudLayer, PeriodogramHasNoCellPeaks)
 {
     constexpr int n = 256;
