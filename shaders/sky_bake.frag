@@ -1,9 +1,12 @@
 // Renders one face of the procedural sky cubemap (drawn with fullscreen.vert
 // into a face of the cubemap; see src/render/sky_cubemap.cpp): the gradient
-// sky, or with SWELL_SKY_PHYSICAL 1 the atmosphere's.
+// sky, or with SWELL_SKY_PHYSICAL 1 the atmosphere's with its cloud layer
+// (clouds.glsl; none while cloudCover is 0, and then the sky is the clear one
+// to the bit).
 #include "frame.glsl"
 #if SWELL_SKY_PHYSICAL
 #include "atmosphere.glsl"
+#include "clouds.glsl"
 // SkySettings::exposure: displayed colour per unit radiance over the sun's irradiance.
 uniform float skyExposure;
 #else
@@ -34,7 +37,10 @@ void main()
     // Linear radiance: the cubemap is half-float, as the glow can exceed 1.
     vec3 d = normalize(faceDirection(face, vNdc));
 #if SWELL_SKY_PHYSICAL
-    fragColor = vec4(skyExposure * atmosphereSkyRadiance(d, sunDirection), 1.0);
+    vec3 radiance = atmosphereSkyRadiance(d, sunDirection);
+    if (cloudCover > 0.0)
+        radiance = cloudySkyRadiance(d, sunDirection, radiance);
+    fragColor = vec4(skyExposure * radiance, 1.0);
 #else
     fragColor = vec4(proceduralSky(d), 1.0);
 #endif

@@ -19,6 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace swell {
@@ -89,6 +90,13 @@ public:
     // irradiance on a surface facing n is sum_i coefficients[i] * Y_i(n),
     // with Y_i in shHarmonics()'s order. Per unit solar irradiance.
     std::array<glm::dvec3, 9> irradianceSh(glm::dvec3 sunDirection) const;
+    // The same with something in the sky (a cloud layer, swell/clouds.h):
+    // radianceOf(direction, clear) is the radiance seen along a direction
+    // above the horizon where the clear sky's is `clear`, and sunScale the
+    // share of the sun's direct light that reaches the ground.
+    std::array<glm::dvec3, 9> irradianceSh(glm::dvec3 sunDirection,
+                                           const std::function<glm::dvec3(glm::dvec3, glm::dvec3)>& radianceOf,
+                                           double sunScale) const;
 
     // Row-major RGB floats as uploaded: the transmittance table
     // (SWELL_TRANSMITTANCE_MU_SIZE x SWELL_TRANSMITTANCE_R_SIZE) and the

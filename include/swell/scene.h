@@ -6,6 +6,7 @@
 #pragma once
 
 #include "swell/atmosphere.h"
+#include "swell/clouds.h"
 #include "swell/error.h"
 #include "swell/export.h"
 
@@ -109,6 +110,7 @@ struct SWELL_API SkySettings {
     // irradiance at the top of the atmosphere (1/sr), 0.01..1000.
     double exposure = 10.0;
     AtmosphereSettings atmosphere; // physical: aerosols and the ground's albedo
+    CloudSettings clouds;          // physical: a layer of cloud ([sky.clouds]; swell/clouds.h)
 };
 
 struct SWELL_API FogSettings {

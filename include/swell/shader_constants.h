@@ -217,6 +217,35 @@
 #define SWELL_UNIT_SKY_TRANSMITTANCE 14
 #define SWELL_UNIT_SKY_MULTISCATTER 15
 
+// The cloud layer (swell/clouds.h, src/core/clouds.cpp and shaders/clouds.glsl
+// share these; docs/RENDERING.md, "Clouds"). A thin layer at an altitude,
+// baked into the physical sky's cubemap with it.
+// Octaves of gradient noise in its fractal sum: the coarsest cell is the
+// scene's clouds.scale_m, the finest 1/32 of it (about 90 m for 3 km: finer
+// than a texel of the bake straight up at 1.5 km is wide, 9 m, is lost anyway
+// at the usual views, which look at the layer kilometres away).
+#define SWELL_CLOUD_OCTAVES 6
+// Standard deviation of the unfiltered fractal sum (measured over 10^6
+// points by tests/cpu/test_clouds.cpp): a threshold at its quantile makes
+// the clouded share of the layer the scene's cover.
+#define SWELL_CLOUD_FBM_SIGMA 0.2491
+// Softness of a cloud's edge, in units of that standard deviation: wide
+// enough that a bake texel never steps from clear to opaque, narrow enough
+// that edges read as edges.
+#define SWELL_CLOUD_EDGE_SIGMA 0.12
+// How far the domain warp moves a point, in coarsest cells (Quilez's domain
+// warping): bends the lattice's straight runs into the swirls of real decks.
+#define SWELL_CLOUD_WARP_CELLS 0.7
+// The layer's shapes are drawn out along x this much (rolls and bands of a
+// wind-driven deck).
+#define SWELL_CLOUD_STRETCH 1.6
+// Henyey-Greenstein asymmetry of cloud droplets in visible light: about
+// 0.85 (Bohren 1987; Liou 2002, sec. 5.3): strongly forward.
+#define SWELL_CLOUD_ASYMMETRY 0.85
+// Angular width of the sky bake's texel, rad (90 degrees over 256): the
+// footprint below which the layer's octaves are averaged away.
+#define SWELL_CLOUD_TEXEL_RAD 0.00614
+
 // Caustics (shaders/caustics.glsl, src/render/caustics_map.h): the sun's
 // light refracted by the drawn surface onto horizontal slices under it,
 // splatted with additive blending into a camera-following map.

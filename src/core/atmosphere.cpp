@@ -308,6 +308,13 @@ glm::dvec3 evaluateSh(const std::array<glm::dvec3, 9>& coefficients, glm::dvec3 
 
 std::array<glm::dvec3, 9> Atmosphere::irradianceSh(glm::dvec3 sunDirection) const
 {
+    return irradianceSh(sunDirection, [](glm::dvec3, glm::dvec3 clear) { return clear; }, 1.0);
+}
+
+std::array<glm::dvec3, 9> Atmosphere::irradianceSh(glm::dvec3 sunDirection,
+                                                   const std::function<glm::dvec3(glm::dvec3, glm::dvec3)>& radianceOf,
+                                                   double sunScale) const
+{
     const glm::dvec3 sun = glm::normalize(sunDirection);
     // Radiance projected on the harmonics (Ramamoorthi & Hanrahan 2001,
     // sec. 3) over equal-area cells of each hemisphere: the sky above, and
@@ -326,13 +333,14 @@ std::array<glm::dvec3, 9> Atmosphere::irradianceSh(glm::dvec3 sunDirection) cons
     for (int ring = 0; ring < kRings; ++ring)
         for (int sector = 0; sector < kSectors; ++sector) {
             const glm::dvec3 d = direction(ring, sector, 1.0);
-            const glm::dvec3 l = skyRadiance(d, sun);
+            const glm::dvec3 l = radianceOf(d, skyRadiance(d, sun));
             skyOnGround += l * d.y * cell;
             const std::array<double, 9> y = shHarmonics(d);
             for (size_t i = 0; i < 9; ++i)
                 radiance[i] += l * y[i] * cell;
         }
-    const glm::dvec3 ground = settings_.groundAlbedo / kPi * (sunTransmittance(sun) * std::max(sun.y, 0.0) + skyOnGround);
+    const glm::dvec3 ground =
+        settings_.groundAlbedo / kPi * (sunScale * sunTransmittance(sun) * std::max(sun.y, 0.0) + skyOnGround);
     for (int ring = 0; ring < kRings; ++ring)
         for (int sector = 0; sector < kSectors; ++sector) {
             const std::array<double, 9> y = shHarmonics(direction(ring, sector, -1.0));

@@ -341,6 +341,23 @@ std::vector<Parameter> buildTable()
            {.key = "sky.ground_albedo", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "physical sky: Lambertian albedo of the surface below (the sea: about 0.06); the "
                            "atmosphere's tables are built again (0.35 s on one core)"}),
+        // [sky.clouds]
+        at([](auto& s, std::size_t) -> auto& { return s.sky.clouds.cover; },
+           {.key = "sky.clouds.cover", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "physical sky: share of the cloud layer that is cloud (0: no layer; 1: an overcast deck "
+                           "that hides the sun); the sky is baked again"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.clouds.altitude_m; },
+           {.key = "sky.clouds.altitude_m", .unit = "m", .min = 100.0, .max = 12000.0, .sliderMin = 200.0,
+            .sliderMax = 8000.0, .logarithmic = true,
+            .description = "physical sky: the cloud layer's height over the sea; the sky is baked again"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.clouds.opticalDepth; },
+           {.key = "sky.clouds.optical_depth", .min = 0.0, .max = 200.0, .sliderMin = 0.0, .sliderMax = 80.0,
+            .description = "physical sky: a cloud's mean vertical optical depth (fair-weather cumulus a few to 20, "
+                           "a storm's deck 30 and more); the sky is baked again"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.clouds.scale_m; },
+           {.key = "sky.clouds.scale_m", .unit = "m", .min = 200.0, .max = 50000.0, .sliderMin = 500.0,
+            .sliderMax = 20000.0, .logarithmic = true,
+            .description = "physical sky: the size of the cloud layer's largest shapes; the sky is baked again"}),
         // [fog]
         at([](auto& s, std::size_t) -> auto& { return s.fog.start_m; },
            {.key = "fog.start_m", .unit = "m", .min = 0.0, .max = kWorldLimit_m, .sliderMin = 0.0, .sliderMax = 20000.0,

@@ -106,7 +106,19 @@ SkyBakeProgram::SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVar
     if (physical) {
         exposure_ = requiredUniform(program_, "skyExposure", "sky_bake.frag");
         mieScale_ = requiredUniform(program_, "atmosphereMieScale", "atmosphere.glsl");
+        cloudCover_ = requiredUniform(program_, "cloudCover", "clouds.glsl");
+        cloudAltitude_ = requiredUniform(program_, "cloudAltitude_m", "clouds.glsl");
+        cloudOpticalDepth_ = requiredUniform(program_, "cloudOpticalDepth", "clouds.glsl");
+        cloudScale_ = requiredUniform(program_, "cloudScale_m", "clouds.glsl");
     }
+}
+
+void SkyBakeProgram::setClouds(const CloudSettings& clouds) const
+{
+    glProgramUniform1f(program_.id(), cloudCover_, float(clouds.cover));
+    glProgramUniform1f(program_.id(), cloudAltitude_, float(clouds.altitude_m));
+    glProgramUniform1f(program_.id(), cloudOpticalDepth_, float(clouds.opticalDepth));
+    glProgramUniform1f(program_.id(), cloudScale_, float(clouds.scale_m));
 }
 
 void SkyBakeProgram::setAtmosphere(double exposure, double mieScale) const

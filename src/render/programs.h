@@ -73,11 +73,14 @@ public:
     void setFace(int face) const;
     // The physical sky's only: SkySettings::exposure and AtmosphereSettings::mieScale.
     void setAtmosphere(double exposure, double mieScale) const;
+    // The physical sky's only: its cloud layer (shaders/clouds.glsl).
+    void setClouds(const CloudSettings& clouds) const;
 
 private:
     gl::Program program_;
     GLint face_ = -1;
     GLint exposure_ = -1, mieScale_ = -1;
+    GLint cloudCover_ = -1, cloudAltitude_ = -1, cloudOpticalDepth_ = -1, cloudScale_ = -1;
 };
 
 // Programs with no uniforms of their own (all from the Frame block): the sky

@@ -9,7 +9,8 @@ namespace swell::detail {
 SkyBakeKey skyBakeKeyOf(const Scene& scene)
 {
     if (scene.sky.model == SkyModel::Physical)
-        return {SkyModel::Physical, {}, {}, scene.sun.direction, {}, 0.0, scene.sky.exposure, scene.sky.atmosphere};
+        return {SkyModel::Physical, {}, {}, scene.sun.direction, {}, 0.0, scene.sky.exposure, scene.sky.atmosphere,
+                scene.sky.clouds};
     return {SkyModel::Gradient, scene.sky.zenithColor, scene.sky.horizonColor, scene.sun.direction, scene.sun.color,
             scene.sun.intensity};
 }

@@ -28,6 +28,7 @@ struct SkyBakeKey {
     double sunIntensity = 0.0;
     double exposure = 0.0;           // physical only
     AtmosphereSettings atmosphere{}; // physical only
+    CloudSettings clouds{};          // physical only
     bool operator==(const SkyBakeKey&) const = default;
 };
 

@@ -43,14 +43,24 @@ SkyLight skyLightOf(const Scene& scene, const Atmosphere* atmosphere)
     // a E / pi; the sky's pixels show exposure times radiance, so its
     // surfaces show exposure a E / pi: the sun's E is its transmittance
     // times the cosine (mesh.frag's phongDiffuse), the sky's the expansion.
-    const glm::dvec3 sunLight = exposure / std::numbers::pi * atmosphere->sunTransmittance(sun);
+    // The cloud layer shades the sun's direct light by its transmittance
+    // along the sun from the observer (swell/clouds.h): the sea and the
+    // objects lie in the shadow the sky shows over them.
+    const CloudSettings& clouds = scene.sky.clouds;
+    const double cloudSun = cloudTransmittance(clouds, glm::vec3(sun));
+    const glm::dvec3 sunLight = exposure / std::numbers::pi * cloudSun * atmosphere->sunTransmittance(sun);
     light.sunIntensity = std::max({sunLight.x, sunLight.y, sunLight.z});
     light.sunColor = light.sunIntensity > 0.0 ? sunLight / light.sunIntensity : glm::dvec3(0.0);
-    light.zenith = exposure * atmosphere->skyRadiance({0.0, 1.0, 0.0}, sun);
+    // The sky the clouds leave (their light and what they hide), wherever
+    // the frame looks at the sky's radiance.
+    auto seen = [&](glm::dvec3 d, glm::dvec3 clear) { return cloudySkyRadiance(*atmosphere, clouds, d, sun, clear); };
+    const glm::dvec3 up(0.0, 1.0, 0.0);
+    light.zenith = exposure * seen(up, atmosphere->skyRadiance(up, sun));
     // The horizon a quarter turn from the sun: between its glow and the shadow's side.
     const glm::dvec3 side = glm::length(glm::dvec2(sun.x, sun.z)) > 1.0e-6 ? glm::dvec3(-sun.z, 0.0, sun.x) : glm::dvec3(1.0, 0.0, 0.0);
-    light.horizon = exposure * atmosphere->skyRadiance(glm::normalize(side), sun);
-    const std::array<glm::dvec3, 9> irradiance = atmosphere->irradianceSh(sun);
+    light.horizon = exposure * seen(glm::normalize(side), atmosphere->skyRadiance(glm::normalize(side), sun));
+    const std::array<glm::dvec3, 9> irradiance =
+        clouds.cover > 0.0 ? atmosphere->irradianceSh(sun, seen, cloudSun) : atmosphere->irradianceSh(sun);
     for (size_t i = 0; i < 9; ++i)
         light.ambientSh[i] = exposure / std::numbers::pi * irradiance[i];
     return light;

@@ -359,6 +359,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
                 atmosphereTextures.upload(*atmosphere);
             atmosphereTextures.bind();
             physicalSkyBake.setAtmosphere(scene.sky.exposure, scene.sky.atmosphere.mieScale);
+            physicalSkyBake.setClouds(scene.sky.clouds);
             bakeProceduralSky(physicalSkyBake, world.skyCube, emptyVao.id());
             glBindTextureUnit(SWELL_UNIT_SKY_TRANSMITTANCE, 0);
             glBindTextureUnit(SWELL_UNIT_SKY_MULTISCATTER, 0);
