@@ -162,7 +162,7 @@ void main()
     bubbles = max(bubbles, sourceBelow * sourceBelow);
 #endif
     bubbles *= step(kBubbleDepth_m, path_m);
-    vec3 bubbleLight = (sunColor * sunIntensity * max(sunDirection.y, 0.0) + skyHorizon * 0.5) *
+    vec3 bubbleLight = (sunColor * sunIntensity * max(sunDirection.y, 0.0) + max(skyAmbient(vec3(0.0, 1.0, 0.0)), vec3(0.0))) *
                        exp(-2.0 * kBubbleDepth_m * waterAbsorption);
     refracted = mix(refracted, 0.5 * bubbleLight, 0.8 * clamp(bubbles, 0.0, 1.0));
 #endif
@@ -189,7 +189,11 @@ void main()
     // lit by the sun and the sky (Lambertian, as foam is close to; Koepke
     // 1984 measured its effective reflectance at about 0.55 in the visible):
     // the dense foam of a crest breaking now brighter (0.65), the thinning
-    // lace, through which the water shows, darker (0.5). Its own normal is
+    // lace, through which the water shows, darker (0.5). The sky's light is
+    // its irradiance on the foam's normal (skyAmbient, as the world's
+    // objects get it), so foam under an overcast deck, the sun hidden, is
+    // lit white-grey by the whole sky rather than by a fraction of the
+    // horizon's colour. Its own normal is
     // the water's tilted by the bubbles' relief (n / n.y is (-dh/dx, 1,
     // -dh/dz)), so foam is shaded by its mounds and hollows, and its wet
     // bubbles catch the sun in a broad highlight (a Phong lobe of exponent
@@ -197,7 +201,7 @@ void main()
     float foamCover = clamp(foam, 0.0, 1.0); // the share of the pixel foam covers
     vec3 foamNormal = normalize(n / max(n.y, 0.1) - vec3(foamSlope.x, 0.0, foamSlope.y));
     vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
-    vec3 foamLight = sunLight * (0.6 + 0.4 * phongDiffuse(foamNormal)) + skyHorizon * 0.5;
+    vec3 foamLight = sunLight * (0.6 + 0.4 * phongDiffuse(foamNormal)) + max(skyAmbient(foamNormal), vec3(0.0));
     float sheen = 0.25 * pow(max(dot(reflect(-sunDirection, foamNormal), v), 0.0), 12.0);
     color = mix(color, foamAlbedo * foamLight + sheen * sunLight, foamCover);
 #else
