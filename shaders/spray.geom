@@ -9,6 +9,7 @@
 // into a haze instead of sparkling.
 #include "frame.glsl"
 #include "fog.glsl"
+#include "lighting.glsl"
 #include "spray.glsl"
 
 layout(points) in;
@@ -29,14 +30,19 @@ out float gOpacity;
 // fogged with the distance as the world is. Lit as the whitecaps are
 // (water.frag), the sun's share brighter looking towards it, with an albedo
 // of 1 (drops absorb next to nothing; the foam's 0.55 to 0.65 is a layer
-// the water shows through): chosen by eye. Per vertex, not per fragment: it
-// hardly changes along a streak, and the fragments are many.
+// the water shows through): chosen by eye. The sky lights a drop from
+// every side: the mean of its irradiance from above and from below
+// (skyAmbient, the sky's and the ground's light), so under an overcast
+// deck, the sun hidden, the spray is still whiter than the sea. Per vertex,
+// not per fragment: it hardly changes along a streak, and the fragments
+// are many.
 vec3 sprayColor(vec3 p)
 {
     vec3 toEye = normalize(eyePosition - p);
     float forward = max(dot(-toEye, sunDirection), 0.0);
     vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
-    vec3 light = sunLight * (0.6 + 0.4 * forward * forward) + skyHorizon * 0.5;
+    vec3 skyLight = 0.5 * (skyAmbient(vec3(0.0, 1.0, 0.0)) + skyAmbient(vec3(0.0, -1.0, 0.0)));
+    vec3 light = sunLight * (0.6 + 0.4 * forward * forward) + max(skyLight, vec3(0.0));
     return passOutput(applyFog(light, distance(p, eyePosition))).rgb;
 }
 

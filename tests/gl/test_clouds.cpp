@@ -4,10 +4,10 @@
 // frame's sunlight and ambient light under the layer (render/sky_light.h).
 #include "render/sky_light.h"
 #include "support/gl_test.h"
+#include "support/shader_probe.h"
 #include "swell/clouds.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
-#include "swell/gl/shader_sources.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
@@ -15,9 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <random>
-#include <string>
 #include <vector>
 
 namespace {
@@ -42,13 +40,7 @@ void main()
 // For each direction: transmittance, optical depth, distance, footprint.
 std::vector<glm::vec4> gpuLayer(const swell::CloudSettings& clouds, const std::vector<glm::vec4>& directions)
 {
-    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
-    std::map<std::string, std::string> files;
-    for (const std::string& name : sources.fileNames())
-        files[name] = sources.file(name);
-    files["probe.comp"] = kProbe;
-    const swell::gl::Program program =
-        swell::gl::buildProgram(swell::gl::ShaderSources::fromMap(files), {{GL_COMPUTE_SHADER, "probe.comp"}});
+    const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
     auto uniform = [&](const char* name, double v) {
         glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), name), float(v));
     };

@@ -4,18 +4,16 @@
 #include "render/gpu_types.h"
 #include "render/slope_statistics.h"
 #include "support/gl_test.h"
+#include "support/shader_probe.h"
 #include "swell/flat_model.h"
 #include "swell/gerstner_model.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
-#include "swell/gl/shader_sources.h"
 
 #include <epoxy/gl.h>
 
 #include <cmath>
-#include <map>
 #include <numbers>
-#include <string>
 #include <vector>
 
 namespace {
@@ -46,11 +44,7 @@ double smithLambda(double nu)
 
 TEST_F(ReflectionMasking, TheShaderMasksLowRaysAsSmithsFunctionSays)
 {
-    const swell::gl::ShaderSources embedded = swell::gl::ShaderSources::embedded();
-    std::map<std::string, std::string> files;
-    for (const std::string& name : embedded.fileNames())
-        files[name] = embedded.file(name);
-    files["probe.comp"] = R"(#include "reflection.glsl"
+    const swell::gl::Program program = swell::test::buildShaderProbe(R"(#include "reflection.glsl"
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer Shares { float share[]; };
 void main()
@@ -58,10 +52,8 @@ void main()
     float elevation_rad = radians(share[gl_GlobalInvocationID.x]);
     share[gl_GlobalInvocationID.x] = unmaskedShare(vec3(cos(elevation_rad), sin(elevation_rad), 0.0));
 }
-)";
-    const swell::gl::Program program = swell::gl::buildProgram(
-        swell::gl::ShaderSources::fromMap(files), {{GL_COMPUTE_SHADER, "probe.comp"}},
-        {"SWELL_REFLECTION_MODE SWELL_REFLECTION_RAYMARCH"});
+)",
+                                                                      {"SWELL_REFLECTION_MODE SWELL_REFLECTION_RAYMARCH"});
 
     swell::detail::FrameUniforms frame{};
     const double s2 = 0.05; // about a 9 m/s wind (Cox & Munk 1954: 0.003 + 5.12e-3 U)

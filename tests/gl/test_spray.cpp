@@ -30,6 +30,10 @@ Scene storm(double wind_mps, bool spray)
     Scene scene = loadScene(std::filesystem::path(SWELL_SOURCE_DIR) / "scenes" / "storm.toml");
     scene.waves.wind->windSpeed_mps = wind_mps;
     scene.water.spray = spray;
+    // In the sun, the storm's overcast deck opened: under it the spray over
+    // the whitecaps' foam is about as bright as the foam (measured: 883 of
+    // 1613 changed pixels lighter), which would blur what these tests ask.
+    scene.sky.clouds.cover = 0.0;
     return scene;
 }
 

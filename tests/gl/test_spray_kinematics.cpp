@@ -5,16 +5,14 @@
 // within a millimetre (float's exp and rounding).
 #include "render/spray_kinematics.h"
 #include "support/gl_test.h"
+#include "support/shader_probe.h"
 #include "swell/gl/shader.h"
-#include "swell/gl/shader_sources.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <string>
 #include <vector>
 
 namespace {
@@ -70,13 +68,7 @@ void main()
 
 std::vector<Result> runShader(const std::vector<Seed>& seeds)
 {
-    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
-    std::map<std::string, std::string> files;
-    for (const std::string& name : sources.fileNames())
-        files[name] = sources.file(name);
-    files["probe.comp"] = kProbe;
-    const swell::gl::Program program =
-        swell::gl::buildProgram(swell::gl::ShaderSources::fromMap(files), {{GL_COMPUTE_SHADER, "probe.comp"}});
+    const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
     swell::gl::Buffer in = swell::gl::Buffer::create(), out = swell::gl::Buffer::create();
     glNamedBufferData(in.id(), GLsizeiptr(seeds.size() * sizeof(Seed)), seeds.data(), GL_STATIC_DRAW);
     glNamedBufferData(out.id(), GLsizeiptr(seeds.size() * sizeof(Result)), nullptr, GL_DYNAMIC_READ);

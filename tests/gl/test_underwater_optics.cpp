@@ -3,6 +3,7 @@
 // Fresnel's own reciprocity, not against the code's earlier output.
 #include "render/waterline.h"
 #include "support/gl_test.h"
+#include "support/shader_probe.h"
 #include "swell/camera.h"
 #include "swell/gl/shader.h"
 #include "swell/view.h"
@@ -11,8 +12,6 @@
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
-#include <map>
-#include <string>
 #include <vector>
 
 namespace {
@@ -47,13 +46,7 @@ struct Probe {
 
 std::vector<Probe> runProbe(const std::vector<float>& angles_deg)
 {
-    const swell::gl::ShaderSources embedded = swell::gl::ShaderSources::embedded();
-    std::map<std::string, std::string> files;
-    for (const std::string& name : embedded.fileNames())
-        files[name] = embedded.file(name);
-    files["probe.comp"] = kProbe;
-    const swell::gl::Program program =
-        swell::gl::buildProgram(swell::gl::ShaderSources::fromMap(files), {{GL_COMPUTE_SHADER, "probe.comp"}});
+    const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
     std::vector<Probe> probes;
     for (float a : angles_deg)
         probes.push_back({a, 0.0f, 0.0f, 0.0f});

@@ -6,12 +6,12 @@
 
 #include "render/caustics_map.h"
 #include "render/programs.h"
+#include "support/shader_probe.h"
 #include "swell/gl/shader.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/wave_model.h"
 #include "swell/wave_model_gpu.h"
 
-#include <map>
 #include <memory>
 #include <string>
 
@@ -37,15 +37,11 @@ public:
     // The surface's triangles drawn into the map.
     long long triangles() const { return triangles_; }
 
-    // A compute program from `text` (as "probe.comp"), which may include
-    // any of the shaders' files.
+    // A compute program from `text` that may include any of the shaders'
+    // files (support/shader_probe.h).
     gl::Program probe(const char* text) const
     {
-        std::map<std::string, std::string> files;
-        for (const std::string& name : sources_.fileNames())
-            files[name] = sources_.file(name);
-        files["probe.comp"] = text;
-        return gl::buildProgram(gl::ShaderSources::fromMap(files), {{GL_COMPUTE_SHADER, "probe.comp"}});
+        return buildShaderProbe(text);
     }
 
 private:
