@@ -1,6 +1,7 @@
 // The caustics map (caustics_map.h).
 #include "render/caustics_map.h"
 
+#include "render/gl_state.h"
 #include "render/programs.h"
 
 #include <glm/common.hpp>
@@ -122,14 +123,7 @@ long long CausticsMap::render(const BlockProgram& program)
     program.use();
     glBindVertexArray(vertexArray_.id());
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
-    // No program, before any other is used. This is the frame's only
-    // program with a geometry stage, and a driver may hold a reference for
-    // that stage to the next program used that has none (Mesa does: its
-    // slot changes only when the stage's own program does). That program,
-    // deleted when a scene change rebuilt the programs, then lived on until
-    // caustics were drawn again; the soak found it with shafts of light on
-    // (test: GlResources.AProgramDrawnAfterTheCausticsIsFreedWhenReplaced).
-    glUseProgram(0);
+    unbindGeometryStageProgram();
     glGenerateTextureMipmap(texture_.id());
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);

@@ -215,14 +215,7 @@ void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
     glBindVertexArray(emptyVao.id());
     glDrawArrays(GL_POINTS, 0, SWELL_SPRAY_CELLS * SWELL_SPRAY_CELLS * SWELL_SPRAY_SLOTS);
     ++counters.drawCalls;
-    // Unbound at once, while its geometry stage is current: Mesa (22.3)
-    // updates a stage's reference to the program that set it only when the
-    // stage's code changes, so the next program without a geometry shader
-    // would stay referenced by the geometry stage after every later
-    // glUseProgram(0), alive in the driver after Swell deleted it (the soak
-    // test's one program over its baseline). glUseProgram(0) now clears the
-    // stage together with its reference.
-    glUseProgram(0);
+    unbindGeometryStageProgram();
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     notify(false, "spray");
