@@ -39,11 +39,15 @@ SprayLife sprayLife(ivec2 worldCell, int slot, vec2 time_s)
 {
     uint slotKey = sprayHash(uint(worldCell.x) * 0x9e3779b1u ^ sprayHash(uint(worldCell.y) ^ sprayHash(uint(slot))));
     // The slot's lives: each starts at a phase of the slot's own.
+    // precise: a driver may fuse a product and a sum into one rounding (an
+    // NVIDIA one does); the C++ twin rounds each, and at an hour's time the
+    // fused age differs by microseconds, so the age is kept unfused.
     float lifetime_s = float(SWELL_SPRAY_LIFETIME_S);
-    float local_s = time_s.x + sprayUnit(slotKey, 0u) * lifetime_s;
+    precise float local_s = time_s.x + sprayUnit(slotKey, 0u) * lifetime_s;
     float life = floor(local_s / lifetime_s);
     SprayLife l;
-    l.age_s = local_s - life * lifetime_s;
+    precise float age_s = local_s - life * lifetime_s;
+    l.age_s = age_s;
     uint lifeIndex = uint(int(time_s.y)) * 4096u + uint(int(life));
     l.key = sprayHash(slotKey ^ sprayHash(lifeIndex));
     l.inCell = vec2(sprayUnit(l.key, 2u), sprayUnit(l.key, 3u));
