@@ -1,4 +1,4 @@
-// The caustics pass (caustics.geom): each fragment adds its triangle's
+// The caustics pass (caustics_images.comp, caustics.vert): each fragment adds its triangle's
 // irradiance to the map's texel (additive blending into R32F).
 flat in float gIrradiance;
 out vec4 causticsIrradiance;

@@ -1,6 +1,6 @@
 // Caustics: the sun's light focused and spread by the waves on what lies
-// under the water. The caustics pass (caustics.vert/.geom/.frag,
-// src/render/caustics_map.h) refracts the drawn surface's grid of the sun's
+// under the water. The caustics pass (caustics_sources.comp,
+// caustics_images.comp, caustics.vert/.frag; src/render/caustics_map.h) refracts the drawn surface's grid of the sun's
 // rays down to SWELL_CAUSTICS_SLICES level slices and adds each cell's flux
 // into a camera-following map; this file holds the map's uniform block and
 // its look-up, shared by the pass and the world's shading (mesh.frag).

@@ -272,6 +272,16 @@
 // The caustics map's texture unit and uniform block (the Caustics block of caustics.glsl).
 #define SWELL_UNIT_CAUSTICS 16
 #define SWELL_BINDING_CAUSTICS 4
+// The caustics pass's compute steps (caustics_sources.comp, caustics_images.comp):
+// their workgroups' size, the shader storage bindings of the refracted grid
+// and of the slices' triangles, and the odd stride of the triangles' draw
+// order (slot = triangle * stride modulo the triangles, a permutation while
+// their count, 2 * SWELL_CAUSTICS_CELLS^2, is a power of two: about 0.31 of
+// it, so the triangles drawn in turn lie far apart in the grid).
+#define SWELL_CAUSTICS_GROUP 64
+#define SWELL_STORAGE_CAUSTICS_SOURCES 2
+#define SWELL_STORAGE_CAUSTICS_IMAGES 3
+#define SWELL_CAUSTICS_ORDER_STRIDE 40503
 
 // Shafts of light (shaders/light_shafts.glsl, src/render/light_shafts.h):
 // the sun's beam scattered once towards an eye under the water.

@@ -8,8 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <vector>
 
 namespace swell::detail {
 
@@ -20,6 +18,16 @@ namespace {
 // of the map's side past the drifted square on every side, so that every
 // texel receives the light of every cell that can reach it.
 constexpr double kSourceMargin = 0.1;
+
+// The source grid's points and triangles, the bytes of a point's record
+// (caustics_sources.comp: two vec4) and of a slice's triangle corner
+// (caustics_images.comp: one vec4), the corners of a slice.
+constexpr long long kSourcePoints = (SWELL_CAUSTICS_CELLS + 1) * (SWELL_CAUSTICS_CELLS + 1);
+constexpr long long kTriangles = 2 * SWELL_CAUSTICS_CELLS * SWELL_CAUSTICS_CELLS;
+constexpr long long kSourceBytes = 32, kCornerBytes = 16;
+constexpr long long kCornersPerSlice = 3 * kTriangles;
+// The draw order's stride permutes the triangles only while their count is a power of two.
+static_assert((kTriangles & (kTriangles - 1)) == 0 && SWELL_CAUSTICS_ORDER_STRIDE % 2 == 1);
 
 // The map's mip levels: down to 1 x 1 texel.
 constexpr int kLevels = [] {
@@ -40,25 +48,21 @@ void CausticsMap::create()
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    framebuffer_ = gl::Framebuffer::create();
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0); // layered: gl_Layer picks the slice
+    for (int k = 0; k < SWELL_CAUSTICS_SLICES; ++k) {
+        sliceFramebuffers_[size_t(k)] = gl::Framebuffer::create();
+        glNamedFramebufferTextureLayer(sliceFramebuffers_[size_t(k)].id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0, k);
+    }
     block_ = gl::Buffer::create();
     glNamedBufferStorage(block_.id(), sizeof(CausticsUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    // Two triangles a cell, wound so that a level one's area vector
-    // cross(v2 - v0, v1 - v0) points up (caustics.geom).
-    const std::uint32_t perSide = SWELL_CAUSTICS_CELLS + 1;
-    std::vector<std::uint32_t> indices;
-    indices.reserve(std::size_t(SWELL_CAUSTICS_CELLS) * SWELL_CAUSTICS_CELLS * 6);
-    for (std::uint32_t j = 0; j < SWELL_CAUSTICS_CELLS; ++j)
-        for (std::uint32_t i = 0; i < SWELL_CAUSTICS_CELLS; ++i) {
-            const std::uint32_t v00 = j * perSide + i, v10 = v00 + 1, v01 = v00 + perSide, v11 = v01 + 1;
-            indices.insert(indices.end(), {v00, v10, v01, v10, v11, v01});
-        }
-    indices_ = gl::Buffer::create();
-    glNamedBufferStorage(indices_.id(), GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(), 0);
+    sources_ = gl::Buffer::create();
+    glNamedBufferStorage(sources_.id(), kSourcePoints * kSourceBytes, nullptr, 0);
+    images_ = gl::Buffer::create();
+    glNamedBufferStorage(images_.id(), kCornersPerSlice * SWELL_CAUSTICS_SLICES * kCornerBytes, nullptr, 0);
     vertexArray_ = gl::VertexArray::create();
-    glVertexArrayElementBuffer(vertexArray_.id(), indices_.id());
-    indexCount_ = GLsizei(indices.size());
+    glVertexArrayVertexBuffer(vertexArray_.id(), 0, images_.id(), 0, GLsizei(kCornerBytes));
+    glEnableVertexArrayAttrib(vertexArray_.id(), 0);
+    glVertexArrayAttribFormat(vertexArray_.id(), 0, 4, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vertexArray_.id(), 0, 0);
 }
 
 void CausticsMap::place(glm::dvec3 origin_m, glm::vec2 gridCenter_m, glm::vec3 sun)
@@ -100,12 +104,23 @@ void CausticsMap::place(glm::dvec3 origin_m, glm::vec2 gridCenter_m, glm::vec3 s
     glNamedBufferSubData(block_.id(), 0, sizeof(u), &u);
 }
 
-long long CausticsMap::render(const BlockProgram& program)
+long long CausticsMap::render(const CausticsPrograms& programs)
 {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_CAUSTICS, block_.id());
+    glBindTextureUnit(SWELL_UNIT_CAUSTICS, 0); // never the target itself
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SWELL_STORAGE_CAUSTICS_SOURCES, sources_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SWELL_STORAGE_CAUSTICS_IMAGES, images_.id());
+    programs.sources.use();
+    glDispatchCompute(GLuint((kSourcePoints + SWELL_CAUSTICS_GROUP - 1) / SWELL_CAUSTICS_GROUP), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    programs.images.use();
+    glDispatchCompute(GLuint((kTriangles + SWELL_CAUSTICS_GROUP - 1) / SWELL_CAUSTICS_GROUP), 1, 1);
+    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+    unbindComputeStageProgram();
+
+    const float zero = 0.0f;
+    glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
     glViewport(0, 0, SWELL_CAUSTICS_SIZE, SWELL_CAUSTICS_SIZE);
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE); // folded cells (past a focus) land mirrored
@@ -118,17 +133,17 @@ long long CausticsMap::render(const BlockProgram& program)
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_CAUSTICS, block_.id());
-    glBindTextureUnit(SWELL_UNIT_CAUSTICS, 0); // never the target itself
-    program.use();
+    programs.splat.use();
     glBindVertexArray(vertexArray_.id());
-    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
-    unbindGeometryStageProgram();
+    for (int k = 0; k < SWELL_CAUSTICS_SLICES; ++k) {
+        glBindFramebuffer(GL_FRAMEBUFFER, sliceFramebuffers_[size_t(k)].id());
+        glDrawArrays(GL_TRIANGLES, GLint(k * kCornersPerSlice), GLsizei(kCornersPerSlice));
+    }
     glGenerateTextureMipmap(texture_.id());
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glEnable(GL_DEPTH_TEST);
-    return indexCount_ / 3;
+    return kTriangles;
 }
 
 GpuWork CausticsMap::renderWork()
@@ -138,8 +153,10 @@ GpuWork CausticsMap::renderWork()
     for (long long size = SWELL_CAUSTICS_SIZE; size >= 1; size /= 2)
         texels += size * size * SWELL_CAUSTICS_SLICES;
     GpuWork work;
+    work.dispatches = 2;
+    work.barriers = 2;
     work.mipmaps = 1;
-    work.bytesWritten = texels * kR32f;
+    work.bytesWritten = texels * kR32f + kSourcePoints * kSourceBytes + kCornersPerSlice * SWELL_CAUSTICS_SLICES * kCornerBytes;
     return work;
 }
 

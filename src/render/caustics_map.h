@@ -18,7 +18,7 @@
 
 namespace swell::detail {
 
-class BlockProgram;
+struct CausticsPrograms;
 
 // Mirrors the Caustics block of shaders/caustics.glsl (std140);
 // tests/gl/test_uniform_layout.cpp checks each offset with the driver.
@@ -48,15 +48,20 @@ public:
     // uniform block. Once per view, whether the map is drawn or not (the
     // world's shading reads the block either way).
     void place(glm::dvec3 origin_m, glm::vec2 gridCenter_m, glm::vec3 sun);
-    // Draws the map with `program` (caustics.vert/.geom/.frag, the wave
-    // model's GLSL): the wave model's buffers and textures bound. Sets the
-    // state it needs and leaves the framebuffer, viewport and blending as
-    // the next pass must set them, and builds the map's mip chain (one
-    // glGenerateTextureMipmap). Returns the source triangles drawn.
-    long long render(const BlockProgram& program);
+    // Draws the map with `programs` (the wave model's GLSL in the first):
+    // the wave model's buffers and textures bound. Refracts the source grid
+    // and forms the slices' triangles in two compute dispatches (every core
+    // or multiprocessor shares them, where a geometry stage would run on
+    // few), then draws each slice. Sets the state it needs and leaves the
+    // framebuffer, viewport and blending as the next pass must set them,
+    // and builds the map's mip chain (one glGenerateTextureMipmap). Returns
+    // the source triangles drawn.
+    long long render(const CausticsPrograms& programs);
     // What a render() writes other than by drawing, as GpuWork counts it:
-    // the clear of every slice's base level and the mip chain's levels 1
-    // and up (bytes), its one glGenerateTextureMipmap.
+    // its two dispatches and their barriers, the refracted grid and the
+    // slices' triangles they write, the clear of every slice's base level
+    // and the mip chain's levels 1 and up (bytes), its one
+    // glGenerateTextureMipmap.
     static GpuWork renderWork();
     // Binds the map and the uniform block for the world's programs.
     void bind() const;
@@ -68,10 +73,9 @@ private:
 
     CausticsUniforms uniforms_;
     gl::Texture texture_;
-    gl::Framebuffer framebuffer_;
-    gl::Buffer block_, indices_;
+    std::array<gl::Framebuffer, SWELL_CAUSTICS_SLICES> sliceFramebuffers_; // each slice's base level
+    gl::Buffer block_, sources_, images_;
     gl::VertexArray vertexArray_;
-    GLsizei indexCount_ = 0;
 };
 
 } // namespace swell::detail

@@ -175,11 +175,15 @@ void LabelProgram::setRayFromPixel(const glm::dmat3& rayFromPixel) const
     glProgramUniformMatrix3dv(program_.id(), rayFromPixel_, 1, GL_FALSE, glm::value_ptr(rayFromPixel));
 }
 
-BlockProgram buildCausticsProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
+CausticsPrograms buildCausticsPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant)
 {
-    return BlockProgram(gl::buildProgram(
-        sources, {{GL_VERTEX_SHADER, "caustics.vert"}, {GL_GEOMETRY_SHADER, "caustics.geom"}, {GL_FRAGMENT_SHADER, "caustics.frag"}},
-        definesOf(variant)));
+    const std::vector<std::string> defines = definesOf(variant);
+    CausticsPrograms p;
+    p.sources = BlockProgram(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "caustics_sources.comp"}}, defines));
+    p.images = BlockProgram(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "caustics_images.comp"}}, defines));
+    p.splat = BlockProgram(
+        gl::buildProgram(sources, {{GL_VERTEX_SHADER, "caustics.vert"}, {GL_FRAGMENT_SHADER, "caustics.frag"}}, defines));
+    return p;
 }
 
 LabelPrograms buildLabelPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant)
@@ -207,7 +211,7 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
     p.meshInAir = MeshProgram(sources, variant, kInAir);
     p.skyBake = SkyBakeProgram(sources, variant);
     if (variant.caustics)
-        p.caustics = buildCausticsProgram(sources, variant);
+        p.caustics = buildCausticsPrograms(sources, variant);
     if (variant.oceanFile == "ocean/spectral.glsl")
         p.spray = SprayProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),

@@ -100,6 +100,14 @@ private:
     gl::Program program_;
 };
 
+// The caustics map's pass (render/caustics_map.h): the refracted source
+// grid (caustics_sources.comp, the wave model's GLSL), the slices' triangles
+// (caustics_images.comp), and their draw (caustics.vert, .frag).
+struct CausticsPrograms {
+    BlockProgram sources, images, splat;
+    explicit operator bool() const { return bool(splat); }
+};
+
 // The spray's particles (spray.vert, .geom, .frag): its own uniforms are
 // the simulated time, the wind and the lattice's place.
 class SprayProgram {
@@ -135,15 +143,15 @@ struct Programs {
     // shades together.
     BlockProgram waterInAir, skyInAir;
     MeshProgram meshInAir;
-    // The caustics map's pass (caustics.vert/.geom/.frag, render/caustics_map.h);
-    // empty when the variant has no caustics.
-    BlockProgram caustics;
+    // The caustics map's pass (render/caustics_map.h); empty when the
+    // variant has no caustics.
+    CausticsPrograms caustics;
     // The spray (spectral model only: the others have no breaking crests).
     SprayProgram spray;
 };
 
-// The caustics pass's program for a variant (caustics.vert, .geom, .frag).
-BlockProgram buildCausticsProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
+// The caustics pass's programs for a variant.
+CausticsPrograms buildCausticsPrograms(const gl::ShaderSources& sources, const ShaderVariant& variant);
 
 // The label pass's programs (swell/labels.h): water, sky and meshes built
 // with SWELL_LABEL_PASS 1, writing each pixel's range, normal, class and

@@ -155,9 +155,11 @@ void Renderer::Impl::drawCaustics(const ViewFrame& v, bool ownWorld)
         modelGpu->bind();
         counters.causticsTriangles += caustics.render(programs.caustics);
         const GpuWork work = CausticsMap::renderWork();
+        counters.viewsGpu.dispatches += work.dispatches;
+        counters.viewsGpu.barriers += work.barriers;
         counters.viewsGpu.mipmaps += work.mipmaps;
         counters.viewsGpu.bytesWritten += work.bytesWritten;
-        ++counters.drawCalls;
+        counters.drawCalls += SWELL_CAUSTICS_SLICES; // a draw a slice
         notify(false, "caustics");
     }
     caustics.bind();

@@ -105,9 +105,11 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
 }
 
 // A view that draws the caustics map (the eye under the water) counts what
-// the map's pass writes beside its draw: the clear of its slices' base
-// level and its mip chain, one glGenerateTextureMipmap; a view in the air
-// over an open sea draws no map and counts nothing.
+// the map's pass does beside its draws: its two dispatches (the refracted
+// source grid, the slices' triangles) and their barriers, the buffers they
+// write, the clear of its slices' base level and its mip chain, one
+// glGenerateTextureMipmap; a view in the air over an open sea draws no map
+// and counts nothing.
 TEST_F(FrameWork, AViewUnderTheWaterCountsTheCausticsMapsClearAndMipChain)
 {
     const Scene scene = test::openSpectralStorm();
@@ -120,11 +122,17 @@ TEST_F(FrameWork, AViewUnderTheWaterCountsTheCausticsMapsClearAndMipChain)
     long long texels = 0;
     for (long long size = SWELL_CAUSTICS_SIZE; size >= 1; size /= 2)
         texels += size * size * SWELL_CAUSTICS_SLICES;
+    const long long points = (SWELL_CAUSTICS_CELLS + 1) * (SWELL_CAUSTICS_CELLS + 1);
+    const long long corners = 3 * 2 * SWELL_CAUSTICS_CELLS * SWELL_CAUSTICS_CELLS * SWELL_CAUSTICS_SLICES;
     EXPECT_EQ(c.viewsGpu.mipmaps, 1);
-    EXPECT_EQ(c.viewsGpu.bytesWritten, texels * 4) << "R32F texels, base level and mip chain";
-    EXPECT_EQ(c.viewsGpu.dispatches, 0);
-    // Today's map: 3 slices of 512^2.
-    EXPECT_EQ(c.viewsGpu.bytesWritten, 4194300);
+    EXPECT_EQ(c.viewsGpu.dispatches, 2);
+    EXPECT_EQ(c.viewsGpu.barriers, 2);
+    EXPECT_EQ(c.viewsGpu.bytesWritten, texels * 4 + points * 32 + corners * 16)
+        << "R32F texels, base level and mip chain; two vec4 a source point; a vec4 a corner";
+    EXPECT_EQ(c.causticsTriangles, 2 * SWELL_CAUSTICS_CELLS * SWELL_CAUSTICS_CELLS);
+    // Today's map: 3 slices of 512^2 (4,194,300 bytes), from 257^2 points
+    // (2,113,568) and 3 x 131,072 triangles (18,874,368).
+    EXPECT_EQ(c.viewsGpu.bytesWritten, 25182236);
 
     camera.position_m.y = 40.0;
     renderer.renderImage(camera, 1.0, kSize);

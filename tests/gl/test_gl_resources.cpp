@@ -68,11 +68,13 @@ TEST_F(GlResources, RenderTargetResizeStormLeaksNothing)
     EXPECT_EQ(liveNames(), before);
 }
 
-// The caustics map is drawn by the frame's only program with a geometry
-// stage. A driver may keep a reference for that stage to whichever program
-// is used next (Mesa does), so a program used after the caustics and then
-// replaced by a scene change lived on, deleted but not freed, until
-// caustics were drawn again: found by the soak with shafts of light on. A
+// A program with a geometry stage (the caustics map's, when it had one; the
+// spray's) may leave the driver keeping a reference for that stage to
+// whichever program is used next (Mesa does), so a program used after the
+// caustics and then replaced by a scene change lived on, deleted but not
+// freed, until caustics were drawn again: found by the soak with shafts of
+// light on. The caustics pass has no geometry stage now; the test holds
+// whatever it draws to freeing what a scene change replaces. A
 // frame under the water draws the caustics (the shafts read them); the
 // scene changes twice, rebuilding every program; frames in the air, with
 // nothing under the water to light, draw no caustics. The programs alive must be those of the first state.

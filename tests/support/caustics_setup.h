@@ -27,7 +27,7 @@ public:
         gpu_->bind();
         detail::ShaderVariant variant;
         variant.oceanFile = gpu_->shaderFile();
-        const detail::BlockProgram program = detail::buildCausticsProgram(sources_, variant);
+        const detail::CausticsPrograms program = detail::buildCausticsPrograms(sources_, variant);
         map_.place(glm::dvec3(0.0), glm::vec2(0.0f), sunDirection);
         triangles_ = map_.render(program);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
