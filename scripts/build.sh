@@ -10,12 +10,27 @@
 # SWELL_BUILD_TARGETS (space-separated) builds only those targets, still in
 # this one configuration: scripts/run.sh builds the swell executable alone
 # first, so that the first picture does not wait for the tests.
+#
+# The compiler runs through ccache when it is installed (scripts/install-deps.sh
+# installs it; SWELL_CCACHE=OFF turns it off), in its depend mode, which
+# reads the compiler's dependency file instead of running the preprocessor,
+# so a compile the cache has not seen costs no more than without it. Its use
+# in one run: the static-library test (tests/outside/static.sh) compiles the
+# library's sources again with this build's flags, and finds them cached.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${SWELL_BUILD_DIR:-$root/build}
+launcher=()
+if [[ "${SWELL_CCACHE:-ON}" != OFF ]] && command -v ccache >/dev/null; then
+  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_DEPEND=true;ccache"
+            "-DCMAKE_C_COMPILER_LAUNCHER=env;CCACHE_DEPEND=true;ccache")
+elif [[ "${SWELL_CCACHE:-ON}" == OFF ]]; then
+  # Off again in a folder configured with it before.
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER= -DCMAKE_C_COMPILER_LAUNCHER=)
+fi
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=${SWELL_BUILD_TYPE:-Release} \
   -DSWELL_BUILD_APPS=ON -DSWELL_BUILD_TESTS=ON -DSWELL_BUILD_BENCHMARKS=ON \
-  -DSWELL_WERROR=${SWELL_WERROR:-OFF} "$@" >&2
+  -DSWELL_WERROR=${SWELL_WERROR:-OFF} "${launcher[@]}" "$@" >&2
 targets=()
 for t in ${SWELL_BUILD_TARGETS:-}; do
   targets+=(--target "$t")

@@ -5,6 +5,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  # Compiles once what two builds in one run share (scripts/build.sh).
+  ccache
   libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libglfw3-dev
   libglm-dev libimgui-dev libstb-dev libtomlplusplus-dev libcli11-dev libfmt-dev
   libtinygltf-dev libkissfft-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev

@@ -7,11 +7,15 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
+costs=$root/tests/costs/release.txt
 if [[ "${1:-}" == "--sanitize" ]]; then
   export SWELL_BUILD_DIR=${SWELL_BUILD_DIR:-$root/build-asan} SWELL_BUILD_TYPE=Debug
   "$root/scripts/build.sh" -DSWELL_SANITIZE=ON
+  costs=$root/tests/costs/sanitize.txt
 else
   "$root/scripts/build.sh"
 fi
 cd "${SWELL_BUILD_DIR:-$root/build}"
+# The slowest tests first (a fresh build has no timings of its own).
+"$root/scripts/seed-test-costs.sh" . "$costs"
 exec ctest --output-on-failure --parallel "$(nproc)" --timeout 600
