@@ -429,8 +429,12 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     notify(true, "main");
     GLuint mainFramebuffer = framebuffer;
     glm::ivec4 mainViewport = view.viewport;
+    // The temporal resolve brings its own anti-aliasing (the jitter): the
+    // main pass draws into its target, plain, and the resolve reads it.
+    const bool temporalFrame = ownsFrame && temporalViewProj.has_value();
     if (ownsFrame) {
-        mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
+        mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer,
+                                           temporalFrame ? Antialiasing::Off : scene.antialiasing, temporalFrame);
         mainViewport = glm::ivec4(0, 0, size);
     }
     f.viewportOrigin = glm::vec2(mainViewport.x, mainViewport.y);
@@ -463,6 +467,15 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         drawSpray(v, view);
     notify(false, "main");
 
+    if (temporalFrame) {
+        notify(true, "temporal resolve");
+        glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+        counters.drawCalls += temporal.resolve(programs.temporal, emptyVao.id(), mainTarget.drawnColor(),
+                                               mainTarget.drawnDepth(), outputSize, framebuffer, *temporalViewProj,
+                                               glm::dvec2(v.depth.ndcScale, v.depth.ndcOffset));
+        notify(false, "temporal resolve");
+        return;
+    }
     // The MSAA resolve, the FXAA filter and the render scale's filtering.
     if (ownsFrame && mainTarget.presents()) {
         notify(true, "present");
@@ -518,7 +531,18 @@ void Renderer::Impl::render(const Camera& camera, double time_s, glm::ivec2 outp
     DrawOptions options;
     options.sceneWorld = true;
     options.sky = true;
-    drawRestoring(viewOf(camera, scaledFrameSize(outputSize, renderScale)), framebuffer, options, true, outputSize);
+    const glm::ivec2 drawSize = scaledFrameSize(outputSize, renderScale);
+    View view = viewOf(camera, drawSize);
+    temporalViewProj.reset();
+    if (temporalOn) {
+        // The frame's projection moved by this frame's sub-pixel jitter;
+        // the resolve reprojects with the unmoved one.
+        temporalViewProj = view.projection * view.view;
+        if (temporal.jitterEnabled())
+            view.projection = jitteredProjection(view.projection, temporal.jitter_px(), drawSize);
+    }
+    drawRestoring(view, framebuffer, options, true, outputSize);
+    temporalViewProj.reset();
 }
 
 } // namespace swell
