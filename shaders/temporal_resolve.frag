@@ -15,7 +15,8 @@
 //      (Salvi 2016, variance clipping), so that what the frame no longer
 //      shows (a disocclusion, a moved crest, a camera cut) does not linger;
 //   4. blended by weight: the history carries the weight of the frames in
-//      it (alpha, at most SWELL_TEMPORAL_MAX_WEIGHT), the frame the weight of
+//      it (alpha, at most SWELL_TEMPORAL_MAX_WEIGHT; on the water, while the
+//      waves move, SWELL_TEMPORAL_WATER_MAX_WEIGHT), the frame the weight of
 //      its samples near the pixel. A pixel whose history lies off the last
 //      frame starts again from the frame alone.
 // Colours are the main pass's display-ready (sRGB-encoded) values, in which
@@ -35,6 +36,10 @@ uniform vec2 jitter_px;
 uniform vec2 depthToNdc;
 // 0 when there is no history (the first frame, a reset).
 uniform float historyValid;
+// The most weight the water's history holds this frame: SWELL_TEMPORAL_MAX_WEIGHT
+// while the time stands, SWELL_TEMPORAL_WATER_MAX_WEIGHT while the waves
+// move. The main pass marks the water's pixels with alpha 0.
+uniform float waterMaxWeight;
 
 layout(location = 0) out vec4 resolved;
 
@@ -104,7 +109,12 @@ void main()
     }
     vec4 h = texture(history, previousUv);
     vec3 clipped = fromYCoCg(clipToBox(toYCoCg(h.rgb), mean, SWELL_TEMPORAL_CLIP_SIGMAS * sigma));
-    float total = min(h.a + frameWeight, SWELL_TEMPORAL_MAX_WEIGHT);
+    bool water = texelFetch(frameColor, clamp(nearest, ivec2(0), last), 0).a < 0.5;
+    // The history keeps at most the cap less one whole sample's weight: a
+    // sample at the pixel's centre then weighs 1/cap, a farther one less,
+    // however few the frame's samples near the pixel are.
+    float kept = min(h.a, (water ? waterMaxWeight : SWELL_TEMPORAL_MAX_WEIGHT) - 1.0);
+    float total = kept + frameWeight;
     float share = frameWeight / max(total, 1.0e-6);
     resolved = vec4(mix(clipped, current, share), total);
 }

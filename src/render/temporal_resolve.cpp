@@ -44,7 +44,8 @@ GLint uniform(const gl::Program& program, const char* name)
 TemporalPrograms::TemporalPrograms(gl::Program resolve, gl::Program present)
     : resolve_(std::move(resolve)), present_(std::move(present)),
       reprojection_(uniform(resolve_, "reprojection")), jitter_(uniform(resolve_, "jitter_px")),
-      depthToNdc_(uniform(resolve_, "depthToNdc")), historyValid_(uniform(resolve_, "historyValid"))
+      depthToNdc_(uniform(resolve_, "depthToNdc")), historyValid_(uniform(resolve_, "historyValid")),
+      waterMaxWeight_(uniform(resolve_, "waterMaxWeight"))
 {
 }
 
@@ -72,7 +73,8 @@ void TemporalResolve::resize(glm::ivec2 size)
 }
 
 int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
-                             glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc)
+                             glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
+                             double time_s)
 {
     resize(outputSize);
     const glm::dvec2 jitter = jitterEnabled_ ? jitter_px() : glm::dvec2(0.0);
@@ -87,6 +89,9 @@ int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, 
     glProgramUniform2f(resolve, programs.jitter_, float(jitter.x), float(jitter.y));
     glProgramUniform2f(resolve, programs.depthToNdc_, float(depthToNdc.x), float(depthToNdc.y));
     glProgramUniform1f(resolve, programs.historyValid_, previous_ ? 1.0f : 0.0f);
+    const bool wavesMoved = previous_ && time_s != previousTime_s_;
+    glProgramUniform1f(resolve, programs.waterMaxWeight_,
+                       float(wavesMoved ? SWELL_TEMPORAL_WATER_MAX_WEIGHT : SWELL_TEMPORAL_MAX_WEIGHT));
 
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
@@ -111,6 +116,7 @@ int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, 
     glEnable(GL_DEPTH_TEST);
     current_ = 1 - current_;
     previous_ = viewProj;
+    previousTime_s_ = time_s;
     ++frame_;
     return 2;
 }

@@ -37,7 +37,7 @@ public:
 private:
     friend class TemporalResolve;
     gl::Program resolve_, present_;
-    GLint reprojection_ = -1, jitter_ = -1, depthToNdc_ = -1, historyValid_ = -1;
+    GLint reprojection_ = -1, jitter_ = -1, depthToNdc_ = -1, historyValid_ = -1, waterMaxWeight_ = -1;
 };
 
 class TemporalResolve {
@@ -56,10 +56,12 @@ public:
     // framebuffer, `outputSize`). viewProj: the frame's unjittered view and
     // projection, absolute world to clip (double, so kilometres from the
     // origin keep their precision in the reprojection); depthToNdc: the
-    // depth convention's scale and offset. Leaves `output` bound with a
-    // viewport over it. Returns the draw calls made.
+    // depth convention's scale and offset; time_s: the simulated time drawn
+    // (the water keeps a short history when it changed). Leaves `output`
+    // bound with a viewport over it. Returns the draw calls made.
     int resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
-                glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc);
+                glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
+                double time_s);
 
 private:
     struct Target {
@@ -75,6 +77,7 @@ private:
     bool jitterEnabled_ = true;
     // The last frame's unjittered view and projection, while its history is good.
     std::optional<glm::dmat4> previous_;
+    double previousTime_s_ = 0.0;
 };
 
 } // namespace swell::detail

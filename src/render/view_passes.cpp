@@ -339,6 +339,10 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     ++counters.views;
     SceneWorld own(world, programs.meshInAir, programs.mesh, v.poses, v.island, counters);
     SceneWorld* ownWorld = options.sceneWorld ? &own : nullptr;
+    // Drawn for the temporal resolve below the output's size: the water's
+    // detail filtered by the output pixel's footprint (frame.glsl).
+    if (ownsFrame && temporalViewProj && size.x < outputSize.x)
+        v.base.footprintScale = float(double(size.x) / double(outputSize.x));
     const FrameUniforms& base = v.base;
     // The procedural sky is baked into the cubemap when first needed and
     // after the sun or sky changed (the bake reads the frame uniforms).
@@ -418,6 +422,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     // the visible sky's pixels only.
     f = base;
     f.passEncodesSrgb = options.encoding == OutputEncoding::Srgb ? 1 : 0;
+    f.passMarksWater = ownsFrame && temporalViewProj ? 1 : 0;
     // The waterline mask is drawn at the main pass's size, so the main
     // pass (multisampled or not) reads it on the same pixel grid.
     const WaveReach reach = simulatedReach();
@@ -472,7 +477,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
         counters.drawCalls += temporal.resolve(programs.temporal, emptyVao.id(), mainTarget.drawnColor(),
                                                mainTarget.drawnDepth(), outputSize, framebuffer, *temporalViewProj,
-                                               glm::dvec2(v.depth.ndcScale, v.depth.ndcOffset));
+                                               glm::dvec2(v.depth.ndcScale, v.depth.ndcOffset), simulated->time_s);
         notify(false, "temporal resolve");
         return;
     }
