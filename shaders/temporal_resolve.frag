@@ -107,7 +107,7 @@ void main()
         resolved = vec4(current, frameWeight);
         return;
     }
-    vec4 h = texture(history, previousUv);
+    vec4 h = textureLod(history, previousUv, 0.0); // no derivatives: one level
     vec3 clipped = fromYCoCg(clipToBox(toYCoCg(h.rgb), mean, SWELL_TEMPORAL_CLIP_SIGMAS * sigma));
     bool water = texelFetch(frameColor, clamp(nearest, ivec2(0), last), 0).a < 0.5;
     // The history keeps at most the cap less one whole sample's weight: a
