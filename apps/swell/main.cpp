@@ -160,7 +160,7 @@ int main(int argc, char** argv)
                    "--temporal", [&view](const std::string& value) { view.temporal = value == "on"; },
                    "Temporal resolve: each frame jittered and blended into the history at the window's full "
                    "resolution, in place of the scene's antialiasing (default on)")
-        ->type_name("on|off")
+        ->type_name("SWITCH")
         ->check(CLI::IsMember({"on", "off"}));
     CLI::Option* frameTarget = viewCommand->add_option(
                    "--frame-target", view.frameTarget_ms,
