@@ -76,6 +76,16 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     float nearNdcZ;         // NDC z of the near plane (-1, 0, or 1 reversed) and of the far one
     float farNdcZ;
     float projectionFocalY; // the projection's [1][1]: 1 / tan(half the vertical field of view)
+    // The footprint the shading filters the water's detail by, over the
+    // drawn pixel's: the output pixel's share of it (the render scale, below
+    // 1) when a temporal resolve brings the frames to the output's
+    // resolution, so that the jittered frames together hold the detail of
+    // the output's pixels; else 1.
+    float footprintScale;
+    // 1 in a main pass drawn for the temporal resolve: the water writes alpha
+    // 0 (everything else 1), which the resolve reads as "this pixel's
+    // pattern moves with the waves, not with the camera".
+    int passMarksWater;
     GridLevel gridLevels[SWELL_GRID_LEVELS];
     WorldBox worldBoxes[SWELL_MAX_WORLD_BOXES];
     // World objects' ambient light: order-2 spherical harmonics of the sky's

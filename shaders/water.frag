@@ -44,7 +44,7 @@ void main()
     // the water instead of the grid spacing: the model adds to the grid's
     // interpolated derivatives what the two footprints see differently.
 #if SWELL_HAS_TERM(SWELL_TERM_FILTERING)
-    vec2 footprint = fwidth(vRestPoint);
+    vec2 footprint = fwidth(vRestPoint) * footprintScale;
     float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
 #else
     float pixelSize_m = 1e-3; // every wave, however small the pixel sees it
@@ -81,7 +81,7 @@ void main()
     // bright where it breaks now, thinning into lace as it ages, with the
     // same relief; its lattices are anchored to the world at the render
     // origin, where vRestPoint is measured from.
-    vec2 sourceFootprint = fwidth(vRestPoint);
+    vec2 sourceFootprint = fwidth(vRestPoint) * footprintScale;
     FoamLook sourceLook = foamLook(sourceFoamNoise, sourceBreakingFoamAmount, sources.w, vRestPoint,
                                    max(max(sourceFootprint.x, sourceFootprint.y), 1e-3));
     float sourceFoam = sourceLook.cover;
@@ -115,6 +115,7 @@ void main()
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
     if (pixelUnderwater()) {
         fragColor = passOutput(surfaceFromBelow(vPosition, n, viewportUv()));
+        fragColor.a = passMarksWater != 0 ? 0.0 : 1.0;
         return;
     }
 #endif
@@ -152,7 +153,7 @@ void main()
     const float kBubbleDepth_m = 0.6;
     vec3 underRay = refract(-v, n, 1.0 / 1.333);
     vec2 bubblePoint = vRestPoint - gridCenter + underRay.xz / max(-underRay.y, 0.2) * kBubbleDepth_m;
-    vec2 bubbleFootprint = fwidth(vRestPoint);
+    vec2 bubbleFootprint = fwidth(vRestPoint) * footprintScale;
     float bubbles = oceanFoamBelow(bubblePoint, max(1.5, max(bubbleFootprint.x, bubbleFootprint.y)));
 #if SWELL_SURFACE_SOURCES
     // And those a source's breaking drove down (the wake's stern wash), the
@@ -227,4 +228,5 @@ void main()
     color = applyFog(color, distance_m);
 #endif
     fragColor = passOutput(color);
+    fragColor.a = passMarksWater != 0 ? 0.0 : 1.0; // frame.glsl: for the temporal resolve
 }

@@ -134,6 +134,7 @@ int runBench(const BenchOptions& options)
     gl::HeadlessContext context(false);
     Renderer renderer(scene);
     renderer.setRenderScale(options.outputSettings.renderScale);
+    renderer.setTemporalResolve(options.temporal);
     checkGl("creating the renderer");
 
     Results r;
@@ -144,7 +145,8 @@ int runBench(const BenchOptions& options)
     r.passSize = glm::max(glm::ivec2(glm::dvec2(drawSize) * scene.reflection.resolutionScale), glm::ivec2(1));
     r.surface = renderer.waveModel().summary();
     r.output = fmt::format("antialiasing {}, render scale {}{}",
-                           findParameter("antialiasing")->choices[size_t(scene.antialiasing)],
+                           options.temporal ? std::string("temporal resolve")
+                                            : std::string(findParameter("antialiasing")->choices[size_t(scene.antialiasing)]),
                            options.outputSettings.renderScale, options.still ? ", the scene's camera (--still)" : "");
     r.gridCells = int(std::lround(std::sqrt(double(renderer.waterVertexCount())))) - 1;
     r.frames = options.frames;

@@ -59,6 +59,12 @@ struct ViewOptions {
     bool logInput = false;
     int width = 1280, height = 720;
     OutputSettings outputSettings;
+    // The renderer's temporal resolve (Renderer::setTemporalResolve): on by
+    // default in the viewer, where it replaces the scene's antialiasing.
+    bool temporal = true;
+    // Dynamic resolution: the render scale follows the frame time towards
+    // this, ms (viewer/dynamic_scale.h); 0 keeps outputSettings.renderScale.
+    double frameTarget_ms = 100.0;
 };
 int runView(const ViewOptions& options);
 
@@ -78,6 +84,9 @@ struct BenchOptions {
     // Every frame from the scene's own camera (the view `swell view` opens
     // on) instead of the camera path, to compare with the viewer.
     bool still = false;
+    // The renderer's temporal resolve on (as `swell view` draws), in place
+    // of the scene's antialiasing: its pass is "temporal resolve".
+    bool temporal = false;
     std::string scenePath; // the scene benchmarked; empty: the built-in default
 };
 int runBench(const BenchOptions& options);

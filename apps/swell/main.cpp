@@ -156,6 +156,18 @@ int main(int argc, char** argv)
     viewCommand->add_flag("--log-input", view.logInput,
                           "For tests: print on stderr what the panel saw pressed each frame (Enter, Esc, clicks)");
     addOutputOptions(*viewCommand, view.outputSettings);
+    viewCommand->add_option_function<std::string>(
+                   "--temporal", [&view](const std::string& value) { view.temporal = value == "on"; },
+                   "Temporal resolve: each frame jittered and blended into the history at the window's full "
+                   "resolution, in place of the scene's antialiasing (default on)")
+        ->type_name("SWITCH")
+        ->check(CLI::IsMember({"on", "off"}));
+    CLI::Option* frameTarget = viewCommand->add_option(
+                   "--frame-target", view.frameTarget_ms,
+                   "Dynamic resolution: the render scale follows the frame time towards this, ms; 0 keeps the "
+                   "scale fixed (default 100, or 0 when --scale is given)")
+        ->type_name("MS")
+        ->check(numberIn(0.0, 10000.0));
 
     swell::app::RenderOptions render;
     std::string renderSize = "1280x720";
@@ -211,6 +223,8 @@ int main(int argc, char** argv)
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");
+    benchCommand->add_flag("--temporal", bench.temporal,
+                           "Draw with the temporal resolve, as `swell view` does (in place of the antialiasing)");
     benchCommand->add_option("scene", bench.scenePath,
                              "Scene file (TOML) or a preset's name, benchmarked along the same camera path; "
                              "the built-in default when omitted")
@@ -253,6 +267,9 @@ int main(int argc, char** argv)
         const std::filesystem::path presets = swell::app::dataFolders().scenes;
         if (*viewCommand) {
             parseSize(viewSize, view.width, view.height);
+            // A scale asked for is kept, unless a frame target is asked for too.
+            if (viewCommand->get_option("--scale")->count() > 0 && frameTarget->count() == 0)
+                view.frameTarget_ms = 0.0;
             view.scenePath = swell::app::resolveScenePath(view.scenePath, presets);
             return swell::app::runView(view);
         }

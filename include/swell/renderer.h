@@ -190,6 +190,30 @@ public:
     void setRenderScale(double scale);
     double renderScale() const;
 
+    // The temporal resolve, for render() drawn again and again (a viewer;
+    // docs/RENDERING.md "Temporal resolve"). On: each frame's projection
+    // moves by a sub-pixel jitter that changes every frame (Halton 2, 3;
+    // SWELL_TEMPORAL_JITTER_PHASES frames), the frame is drawn at the render
+    // scale without the scene's antialiasing, and it is blended into a
+    // history kept at the output's size: the history reprojected with the
+    // camera's motion (each pixel's depth), clipped to what the frame shows
+    // around the pixel, each new frame weighing about a tenth once the
+    // history is full (SWELL_TEMPORAL_MAX_WEIGHT). A still camera converges
+    // to an anti-aliased image at the output's full resolution whatever the
+    // render scale. The waves' own motion is not reprojected: the clip
+    // bounds how far a moving crest's history lags. Off (the default):
+    // every frame stands alone, as stills and videos need. Turning it on
+    // or off, a new output size, and resetTemporalHistory() start the
+    // history again. draw() never uses it.
+    void setTemporalResolve(bool on);
+    bool temporalResolve() const;
+    // Starts the history again: the next frame stands alone (a host's
+    // camera cut; a jump the reprojection cannot follow).
+    void resetTemporalHistory();
+    // For tests: draw every frame unjittered (at the pixels' centres),
+    // to show what the jitter brings. Default on.
+    void setTemporalJitter(bool on);
+
     // Recompiles every shader from options.shaders (for hot reload). On failure
     // the old programs stay in use and the error is thrown.
     void reloadShaders();

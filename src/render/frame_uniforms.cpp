@@ -53,6 +53,7 @@ FrameUniforms frameUniforms(const Scene& scene, const SkyLight& sky, const GridS
     f.gridCoarseCenterShift = glm::vec2(grid.coarseCenterShift_m);
     f.reflectionFixedDistance_m = float(scene.reflection.fixedDistance_m);
     setViewport(f, size);
+    f.footprintScale = 1.0f; // the temporal resolve's frames set their own (view_passes.cpp)
     return f;
 }
 

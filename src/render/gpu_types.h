@@ -77,6 +77,8 @@ struct alignas(16) FrameUniforms {
     float nearNdcZ;
     float farNdcZ;
     float projectionFocalY;
+    float footprintScale;
+    int passMarksWater;
     GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
     WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
     glm::vec4 ambientSh[9];

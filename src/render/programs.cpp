@@ -204,6 +204,8 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
     p.sky = BlockProgram(build(sources, variant, "sky.vert", "sky.frag"));
     p.waterline = BlockProgram(build(sources, variant, "water.vert", "waterline.frag"));
     p.fxaa = BlockProgram(build(sources, variant, "fullscreen.vert", "fxaa.frag"));
+    p.temporal = TemporalPrograms(build(sources, variant, "fullscreen.vert", "temporal_resolve.frag"),
+                                  build(sources, variant, "fullscreen.vert", "temporal_present.frag"));
     p.underwaterHost = BlockProgram(build(sources, variant, "sky.vert", "underwater_host.frag"));
     p.mesh = MeshProgram(sources, variant);
     p.waterInAir = BlockProgram(build(sources, variant, "water.vert", "water.frag", kInAir));

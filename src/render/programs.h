@@ -5,6 +5,7 @@
 // ShaderVariant, never uniforms used as switches.
 #pragma once
 
+#include "render/temporal_resolve.h"
 #include "swell/gl/shader.h"
 #include "swell/scene.h"
 
@@ -148,6 +149,9 @@ struct Programs {
     CausticsPrograms caustics;
     // The spray (spectral model only: the others have no breaking crests).
     SprayProgram spray;
+    // The temporal resolve (fullscreen.vert + temporal_resolve.frag, then
+    // temporal_present.frag; render/temporal_resolve.h).
+    TemporalPrograms temporal;
 };
 
 // The caustics pass's programs for a variant.

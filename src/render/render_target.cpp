@@ -64,14 +64,15 @@ void RenderTarget::resize(glm::ivec2 size, GLenum colorFormat, int samples)
         throw Error("swell::RenderTarget::resize(): framebuffer incomplete");
 }
 
-GLuint MainTarget::begin(glm::ivec2 drawSize, glm::ivec2 outputSize, GLuint output, Antialiasing antialiasing)
+GLuint MainTarget::begin(glm::ivec2 drawSize, glm::ivec2 outputSize, GLuint output, Antialiasing antialiasing,
+                         bool ownTarget)
 {
     drawSize_ = drawSize;
     outputSize_ = outputSize;
     output_ = output;
     antialiasing_ = antialiasing;
     const bool scaled = drawSize != outputSize;
-    direct_ = antialiasing == Antialiasing::Off && !scaled;
+    direct_ = antialiasing == Antialiasing::Off && !scaled && !ownTarget;
     // The main pass writes display-ready (sRGB-encoded) colour in 0..1, as
     // the output holds it: 8 bits a channel lose nothing the output keeps.
     const bool msaa = antialiasing == Antialiasing::Msaa4;

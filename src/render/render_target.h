@@ -48,7 +48,13 @@ public:
     // Sets up the targets for a frame drawn at `drawSize` (see
     // scaledFrameSize) and shown in `output` at `outputSize`, and returns the
     // framebuffer the main pass draws into.
-    GLuint begin(glm::ivec2 drawSize, glm::ivec2 outputSize, GLuint output, Antialiasing antialiasing);
+    // ownTarget: draw into the target even when nothing would present it
+    // (the temporal resolve reads it instead: drawnColor(), drawnDepth()).
+    GLuint begin(glm::ivec2 drawSize, glm::ivec2 outputSize, GLuint output, Antialiasing antialiasing,
+                 bool ownTarget = false);
+    // The main pass's own single-sampled image and depth (not MSAA).
+    GLuint drawnColor() const { return single_.color(); }
+    GLuint drawnDepth() const { return single_.depth(); }
     // Whether present() has work to do for the frame begun last.
     bool presents() const { return !direct_; }
     // Brings the main pass's image to the output. `fxaa` draws the FXAA

@@ -276,6 +276,17 @@ void Renderer::setRenderScale(double scale)
 
 double Renderer::renderScale() const { return impl_->renderScale; }
 
+void Renderer::setTemporalResolve(bool on)
+{
+    if (on != impl_->temporalOn)
+        impl_->temporal.reset();
+    impl_->temporalOn = on;
+}
+
+bool Renderer::temporalResolve() const { return impl_->temporalOn; }
+void Renderer::resetTemporalHistory() { impl_->temporal.reset(); }
+void Renderer::setTemporalJitter(bool on) { impl_->temporal.setJitterEnabled(on); }
+
 const FrameCounters& Renderer::counters() const { return impl_->counters; }
 void Renderer::setPassObserver(PassObserver* observer) { impl_->observer = observer; }
 

@@ -17,6 +17,7 @@
 #include "render/sky_cubemap.h"
 #include "render/surface_probe.h"
 #include "render/surface_sources.h"
+#include "render/temporal_resolve.h"
 #include "render/view_setup.h"
 #include "render/wake_texture.h"
 #include "render/water_grid.h"
@@ -77,6 +78,13 @@ struct Renderer::Impl {
     // Where the main pass draws when anti-aliased or scaled (render_target.h).
     MainTarget mainTarget;
     double renderScale = 1.0;
+    // The temporal resolve (Renderer::setTemporalResolve): on or off, its
+    // history and jitter, and for the frame render() is drawing its
+    // unjittered view and projection (absolute world to clip), which
+    // drawView() hands to the resolve.
+    bool temporalOn = false;
+    TemporalResolve temporal;
+    std::optional<glm::dmat4> temporalViewProj;
     bool interactive = false; // see Renderer::setInteractive
     FrameCounters counters;
     // Charges the calling thread's CPU time to counters.simulationCpu's

@@ -341,6 +341,10 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     ++counters.views;
     SceneWorld own(world, programs.meshInAir, programs.mesh, v.poses, v.island, counters);
     SceneWorld* ownWorld = options.sceneWorld ? &own : nullptr;
+    // Drawn for the temporal resolve below the output's size: the water's
+    // detail filtered by the output pixel's footprint (frame.glsl).
+    if (ownsFrame && temporalViewProj && size.x < outputSize.x)
+        v.base.footprintScale = float(double(size.x) / double(outputSize.x));
     const FrameUniforms& base = v.base;
     // The procedural sky is baked into the cubemap when first needed and
     // after the sun or sky changed (the bake reads the frame uniforms).
@@ -420,6 +424,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     // the visible sky's pixels only.
     f = base;
     f.passEncodesSrgb = options.encoding == OutputEncoding::Srgb ? 1 : 0;
+    f.passMarksWater = ownsFrame && temporalViewProj ? 1 : 0;
     // The waterline mask is drawn at the main pass's size, so the main
     // pass (multisampled or not) reads it on the same pixel grid.
     const WaveReach reach = simulatedReach();
@@ -431,8 +436,12 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     notify(true, "main");
     GLuint mainFramebuffer = framebuffer;
     glm::ivec4 mainViewport = view.viewport;
+    // The temporal resolve brings its own anti-aliasing (the jitter): the
+    // main pass draws into its target, plain, and the resolve reads it.
+    const bool temporalFrame = ownsFrame && temporalViewProj.has_value();
     if (ownsFrame) {
-        mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer, scene.antialiasing);
+        mainFramebuffer = mainTarget.begin(size, outputSize, framebuffer,
+                                           temporalFrame ? Antialiasing::Off : scene.antialiasing, temporalFrame);
         mainViewport = glm::ivec4(0, 0, size);
     }
     f.viewportOrigin = glm::vec2(mainViewport.x, mainViewport.y);
@@ -465,6 +474,15 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         drawSpray(v, view);
     notify(false, "main");
 
+    if (temporalFrame) {
+        notify(true, "temporal resolve");
+        glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+        counters.drawCalls += temporal.resolve(programs.temporal, emptyVao.id(), mainTarget.drawnColor(),
+                                               mainTarget.drawnDepth(), outputSize, framebuffer, *temporalViewProj,
+                                               glm::dvec2(v.depth.ndcScale, v.depth.ndcOffset), simulated->time_s);
+        notify(false, "temporal resolve");
+        return;
+    }
     // The MSAA resolve, the FXAA filter and the render scale's filtering.
     if (ownsFrame && mainTarget.presents()) {
         notify(true, "present");
@@ -520,7 +538,18 @@ void Renderer::Impl::render(const Camera& camera, double time_s, glm::ivec2 outp
     DrawOptions options;
     options.sceneWorld = true;
     options.sky = true;
-    drawRestoring(viewOf(camera, scaledFrameSize(outputSize, renderScale)), framebuffer, options, true, outputSize);
+    const glm::ivec2 drawSize = scaledFrameSize(outputSize, renderScale);
+    View view = viewOf(camera, drawSize);
+    temporalViewProj.reset();
+    if (temporalOn) {
+        // The frame's projection moved by this frame's sub-pixel jitter;
+        // the resolve reprojects with the unmoved one.
+        temporalViewProj = view.projection * view.view;
+        if (temporal.jitterEnabled())
+            view.projection = jitteredProjection(view.projection, temporal.jitter_px(), drawSize);
+    }
+    drawRestoring(view, framebuffer, options, true, outputSize);
+    temporalViewProj.reset();
 }
 
 } // namespace swell

@@ -106,6 +106,9 @@ ARGUMENTS = [
       for v in ("0", "-1", "5", "abc", "nan", "0.05")],
     *[(f"view_scale_{v}", ["view", "--scale", v], 2, "--scale") for v in ("0", "-1", "5", "abc")],
     ("bench_scale_zero", ["bench", "--scale", "0"], 2, "--scale"),
+    # The viewer's temporal resolve and dynamic resolution.
+    ("view_bad_temporal", ["view", "--temporal", "sometimes"], 2, "--temporal"),
+    *[(f"view_frame_target_{v}", ["view", "--frame-target", v], 2, "--frame-target") for v in ("-5", "abc", "20000")],
     ("bad_antialiasing", ["render", "-o", "x.png", "--antialiasing", "8x"], 2, "--antialiasing"),
     ("view_bad_antialiasing", ["view", "--antialiasing", "on"], 2, "--antialiasing"),
     ("bodies_far_in_time", ["render", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes",

@@ -50,6 +50,7 @@ void main() {
            + vec4(gridLevels[gl_VertexID].coarseSnapOffset_m, gridCoarseCenterShift)
            + vec4(gridLevels[gl_VertexID].coarseFirstRing, gridCoarseGrowth, waveReachVertical_m, float(eyeUnderwater))
            + vec4(viewportOrigin, depthNdcScale, depthNdcOffset) + vec4(depthFar, nearNdcZ, farNdcZ, projectionFocalY)
+           + vec4(footprintScale, float(passMarksWater), 0.0, 0.0)
            + vec4(worldBoxes[gl_VertexID].min_m, 0.0) + vec4(worldBoxes[gl_VertexID].max_m, 0.0)
            + ambientSh[gl_VertexID]
            + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
@@ -120,6 +121,8 @@ TEST_F(UniformLayout, FrameAndGerstnerBlocksMatchTheirCppMirrors)
     SWELL_EXPECT_OFFSET(F, nearNdcZ);
     SWELL_EXPECT_OFFSET(F, farNdcZ);
     SWELL_EXPECT_OFFSET(F, projectionFocalY);
+    SWELL_EXPECT_OFFSET(F, footprintScale);
+    SWELL_EXPECT_OFFSET(F, passMarksWater);
     EXPECT_EQ(offsetOf(p.id(), "gridLevels[0].snapOffset_m"), GLint(offsetof(F, gridLevels)));
     EXPECT_EQ(offsetOf(p.id(), "gridLevels[1].coarseSnapOffset_m"),
               GLint(offsetof(F, gridLevels) + sizeof(swell::detail::GridLevelUniform) +

@@ -52,6 +52,12 @@ struct ViewState {
     // Every pass draws at this fraction of the window's size, scaled up
     // (bilinear) to the window: swell::Renderer::setRenderScale().
     double renderScale = 1.0;
+    // The renderer's temporal resolve (Renderer::setTemporalResolve), and
+    // dynamic resolution: renderScale following the frame time towards
+    // frameTarget_ms (viewer/dynamic_scale.h).
+    bool temporal = true;
+    bool dynamicScale = false;
+    double frameTarget_ms = 100.0;
     bool followSceneCamera = true; // the scene's camera (and its path); false: free flight
     FlyCamera fly;
     PanelMode panel = PanelMode::Full;

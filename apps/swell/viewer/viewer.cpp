@@ -14,6 +14,7 @@
 
 #include "data_folders.h"
 #include "scene_loading.h"
+#include "viewer/dynamic_scale.h"
 #include "viewer/gui.h"
 #include "viewer/panel.h"
 #include "viewer/screenshot.h"
@@ -33,6 +34,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <ctime>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -213,6 +215,11 @@ int run(const ViewOptions& options)
 
     ViewState view;
     view.renderScale = options.outputSettings.renderScale;
+    view.temporal = options.temporal;
+    view.dynamicScale = options.frameTarget_ms > 0.0;
+    if (view.dynamicScale)
+        view.frameTarget_ms = options.frameTarget_ms;
+    std::optional<DynamicScale> dynamic;
     view.fly.setPose(cameraAt(session.scene().camera, 0.0));
     FlyControls controls(window.handle());
     FrameStats stats;
@@ -221,7 +228,7 @@ int run(const ViewOptions& options)
 
     // A scripted run's frame times, from each frame's start to the next's
     // (input, panel, drawing, swap), reported when it ends: wall s, CPU ms.
-    std::vector<double> scriptedFrames_s, scriptedFramesCpu_ms;
+    std::vector<double> scriptedFrames_s, scriptedFramesCpu_ms, scriptedScales;
     double last = glfwGetTime();
     double lastCpu_ms = processCpu_ms();
     for (int frame = 0; !window.shouldClose(); ++frame) {
@@ -242,6 +249,7 @@ int run(const ViewOptions& options)
         if (scripted && frame > 1) {
             scriptedFrames_s.push_back(frame_s);
             scriptedFramesCpu_ms.push_back(cpu_ms - lastCpu_ms);
+            scriptedScales.push_back(view.renderScale);
         }
         lastCpu_ms = cpu_ms;
 
@@ -292,7 +300,18 @@ int run(const ViewOptions& options)
         // The panel may have changed the scene or the camera: draw with what it left.
         const Camera camera = frameCamera(view, session.scene());
         const glm::ivec2 size = window.framebufferSize();
+        // Dynamic resolution: the scale for this frame from the last one's
+        // time (not frame 1's, which measured the first frame's replay).
+        if (!view.dynamicScale || !dynamic || dynamic->target_ms() != view.frameTarget_ms)
+            dynamic.reset();
+        if (view.dynamicScale) {
+            if (!dynamic)
+                dynamic.emplace(view.frameTarget_ms);
+            else if (frame > 1)
+                view.renderScale = dynamic->next(frame_s * 1000.0, view.renderScale);
+        }
         session.renderer().setRenderScale(view.renderScale);
+        session.renderer().setTemporalResolve(view.temporal);
         session.renderer().setInteractive(true); // (the session may have made a new renderer)
         session.renderer().render(camera, view.time_s, size);
         stats.counters = session.renderer().counters();
@@ -323,9 +342,15 @@ int run(const ViewOptions& options)
         // On stderr, so that stdout keeps only the screenshot's path.
         const glm::ivec2 size = window.framebufferSize();
         std::fprintf(stderr,
-                     "swell view: %zu frames timed at %dx%d, render scale %.2f: median %.1f ms wall, %.1f ms CPU a "
-                     "frame; the longest %.1f ms wall, %.1f ms CPU\n",
-                     scriptedFrames_s.size(), size.x, size.y, view.renderScale, 1000.0 * median(scriptedFrames_s),
+                     "swell view: %zu frames timed at %dx%d, render scale %.2f%s, temporal resolve %s: median "
+                     "%.1f ms wall (%.1f frames a second), %.1f ms CPU a frame; the longest %.1f ms wall, %.1f ms "
+                     "CPU\n",
+                     scriptedFrames_s.size(), size.x, size.y, median(scriptedScales),
+                     view.dynamicScale ? fmt::format(" (median; dynamic, target {:.0f} ms, last {:.2f})",
+                                                     view.frameTarget_ms, view.renderScale).c_str()
+                                       : "",
+                     view.temporal ? "on" : "off", 1000.0 * median(scriptedFrames_s),
+                     1.0 / median(scriptedFrames_s),
                      median(scriptedFramesCpu_ms),
                      1000.0 * *std::max_element(scriptedFrames_s.begin(), scriptedFrames_s.end()),
                      *std::max_element(scriptedFramesCpu_ms.begin(), scriptedFramesCpu_ms.end()));

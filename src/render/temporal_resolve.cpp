@@ -1,0 +1,124 @@
+#include "render/temporal_resolve.h"
+
+#include "swell/error.h"
+#include "swell/shader_constants.h"
+
+#include <glm/matrix.hpp>
+
+namespace swell::detail {
+
+double radicalInverse(std::uint32_t i, std::uint32_t base)
+{
+    double inverse = 1.0 / double(base), scale = inverse, value = 0.0;
+    for (; i > 0; i /= base, scale *= inverse)
+        value += double(i % base) * scale;
+    return value;
+}
+
+glm::dvec2 temporalJitter_px(std::uint64_t frame)
+{
+    const auto index = std::uint32_t(frame % SWELL_TEMPORAL_JITTER_PHASES) + 1;
+    return glm::dvec2(radicalInverse(index, 2), radicalInverse(index, 3)) - 0.5;
+}
+
+glm::dmat4 jitteredProjection(const glm::dmat4& projection, glm::dvec2 jitter_px, glm::ivec2 size)
+{
+    glm::dmat4 shift(1.0);
+    shift[3][0] = 2.0 * jitter_px.x / double(size.x);
+    shift[3][1] = 2.0 * jitter_px.y / double(size.y);
+    return shift * projection;
+}
+
+namespace {
+
+GLint uniform(const gl::Program& program, const char* name)
+{
+    const GLint location = glGetUniformLocation(program.id(), name);
+    if (location < 0)
+        throw Error(std::string("temporal_resolve.frag has no uniform '") + name + "'");
+    return location;
+}
+
+} // namespace
+
+TemporalPrograms::TemporalPrograms(gl::Program resolve, gl::Program present)
+    : resolve_(std::move(resolve)), present_(std::move(present)),
+      reprojection_(uniform(resolve_, "reprojection")), jitter_(uniform(resolve_, "jitter_px")),
+      depthToNdc_(uniform(resolve_, "depthToNdc")), historyValid_(uniform(resolve_, "historyValid")),
+      waterMaxWeight_(uniform(resolve_, "waterMaxWeight"))
+{
+}
+
+void TemporalResolve::resize(glm::ivec2 size)
+{
+    if (size == size_)
+        return;
+    size_ = size;
+    previous_.reset();
+    for (Target& t : history_) {
+        t.framebuffer.reset();
+        t.texture = gl::Texture::create(GLenum(GL_TEXTURE_2D));
+        // Half floats: a blend that moves a pixel by a tenth of the difference
+        // each frame would stall on 8 bits short of what it converges to.
+        glTextureStorage2D(t.texture.id(), 1, GL_RGBA16F, size.x, size.y);
+        glTextureParameteri(t.texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(t.texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(t.texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(t.texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        t.framebuffer = gl::Framebuffer::create();
+        glNamedFramebufferTexture(t.framebuffer.id(), GL_COLOR_ATTACHMENT0, t.texture.id(), 0);
+        if (glCheckNamedFramebufferStatus(t.framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw Error("the temporal resolve's history: framebuffer incomplete");
+    }
+}
+
+int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
+                             glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
+                             double time_s)
+{
+    resize(outputSize);
+    const glm::dvec2 jitter = jitterEnabled_ ? jitter_px() : glm::dvec2(0.0);
+    // This frame's clip space to the last one's, in double: both matrices
+    // carry the eye's absolute position, which single precision would lose.
+    const glm::dmat4 reprojection = previous_ ? *previous_ * glm::inverse(viewProj) : glm::dmat4(1.0);
+    const Target& read = history_[current_];
+    const Target& write = history_[1 - current_];
+    const GLuint resolve = programs.resolve_.id();
+    const glm::mat4 reprojectionF(reprojection);
+    glProgramUniformMatrix4fv(resolve, programs.reprojection_, 1, GL_FALSE, &reprojectionF[0][0]);
+    glProgramUniform2f(resolve, programs.jitter_, float(jitter.x), float(jitter.y));
+    glProgramUniform2f(resolve, programs.depthToNdc_, float(depthToNdc.x), float(depthToNdc.y));
+    glProgramUniform1f(resolve, programs.historyValid_, previous_ ? 1.0f : 0.0f);
+    const bool wavesMoved = previous_ && time_s != previousTime_s_;
+    glProgramUniform1f(resolve, programs.waterMaxWeight_,
+                       float(wavesMoved ? SWELL_TEMPORAL_WATER_MAX_WEIGHT : SWELL_TEMPORAL_MAX_WEIGHT));
+
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glViewport(0, 0, outputSize.x, outputSize.y);
+    glBindVertexArray(emptyVao);
+    glBindFramebuffer(GL_FRAMEBUFFER, write.framebuffer.id());
+    glUseProgram(resolve);
+    glBindTextureUnit(SWELL_UNIT_POST_SOURCE, frameColor);
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_DEPTH, frameDepth);
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, read.texture.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    // The result into the output, opaque.
+    glBindFramebuffer(GL_FRAMEBUFFER, output);
+    glUseProgram(programs.present_.id());
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, write.texture.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_DEPTH, 0);
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, 0);
+    glEnable(GL_DEPTH_TEST);
+    current_ = 1 - current_;
+    previous_ = viewProj;
+    previousTime_s_ = time_s;
+    ++frame_;
+    return 2;
+}
+
+} // namespace swell::detail
