@@ -116,7 +116,7 @@ long long CausticsMap::render(const CausticsPrograms& programs)
     programs.images.use();
     glDispatchCompute(GLuint((kTriangles + SWELL_CAUSTICS_GROUP - 1) / SWELL_CAUSTICS_GROUP), 1, 1);
     glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-    unbindComputeStageProgram();
+    releaseProgramStages();
 
     const float zero = 0.0f;
     glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &zero);

@@ -46,22 +46,16 @@ private:
     GLint program_ = 0;
 };
 
-// Call right after a draw by a program with a geometry stage (the spray's),
-// before any other program is used. Mesa (22.3) keeps,
+// Call right after using a program that has a stage the next program used
+// lacks: after a draw with a geometry stage (the spray's), after compute
+// dispatches followed by a draw (the caustics map's). Mesa (22.3) keeps,
 // per shader stage, a reference to the program that last changed that
-// stage's code, so the next program used, having no geometry shader, would
-// stay referenced by the geometry stage: deleted by a scene change that
-// rebuilds the programs, it lived on in the driver until a geometry stage
-// was bound again (the soak's one program over its baseline, when the
-// caustics map still had a geometry stage;
-// GlResources.AProgramDrawnAfterTheCausticsIsFreedWhenReplaced). Unbinding
-// here clears the stage together with its reference.
-inline void unbindGeometryStageProgram() { glUseProgram(0); }
-
-// The same for the compute stage: call after a compute program's dispatches
-// when a graphics program is used next (the caustics map's steps and draw),
-// or the driver keeps that graphics program referenced for the compute
-// stage until a compute program is used again.
-inline void unbindComputeStageProgram() { glUseProgram(0); }
+// stage's code, so the next program used, lacking the stage, would stay
+// referenced by it: deleted by a scene change that rebuilds the programs,
+// it lived on in the driver until that stage was bound again (the soak's
+// one program over its baseline; GlResources.AProgramDrawnAfterTheCausticsIsFreedWhenReplaced,
+// 21 programs alive against 20 for the compute stage). Unbinding here
+// clears every stage together with its reference.
+inline void releaseProgramStages() { glUseProgram(0); }
 
 } // namespace swell::detail

@@ -217,7 +217,7 @@ void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
     glBindVertexArray(emptyVao.id());
     glDrawArrays(GL_POINTS, 0, SWELL_SPRAY_CELLS * SWELL_SPRAY_CELLS * SWELL_SPRAY_SLOTS);
     ++counters.drawCalls;
-    unbindGeometryStageProgram();
+    releaseProgramStages();
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     notify(false, "spray");
