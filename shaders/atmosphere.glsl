@@ -11,8 +11,10 @@
 
 layout(binding = SWELL_UNIT_SKY_TRANSMITTANCE) uniform sampler2D atmosphereTransmittance;
 layout(binding = SWELL_UNIT_SKY_MULTISCATTER) uniform sampler2D atmosphereMultipleScattering;
-// AtmosphereSettings::mieScale: aerosols over Bruneton 2017's clear air.
+// AtmosphereSettings::mieScale: aerosols over Bruneton 2017's clear air;
+// rayleighScale: air over Bruneton 2017's Earth.
 uniform float atmosphereMieScale;
+uniform float atmosphereRayleighScale;
 
 const float kAtmosphereBottom = SWELL_ATMOSPHERE_BOTTOM_RADIUS_M;
 const float kAtmosphereTop = SWELL_ATMOSPHERE_TOP_RADIUS_M;
@@ -22,7 +24,7 @@ const float kAtmospherePi = 3.14159265358979;
 void atmosphereAt(float altitude_m, out vec3 extinction, out vec4 scattering)
 {
     float h = max(altitude_m, 0.0);
-    float rayleigh = exp(-h / SWELL_RAYLEIGH_SCALE_HEIGHT_M);
+    float rayleigh = atmosphereRayleighScale * exp(-h / SWELL_RAYLEIGH_SCALE_HEIGHT_M);
     float mie = atmosphereMieScale * exp(-h / SWELL_MIE_SCALE_HEIGHT_M);
     float ozone = max(0.0, 1.0 - abs(h - SWELL_OZONE_PEAK_ALTITUDE_M) / SWELL_OZONE_HALF_WIDTH_M);
     vec3 rayleighScattering =

@@ -28,6 +28,7 @@ namespace swell {
 // swell/shader_constants.h).
 struct SWELL_API AtmosphereSettings {
     double mieScale = 1.0;      // aerosol density over Bruneton 2017's clear air, 0..20 (haze)
+    double rayleighScale = 1.0; // air over Bruneton 2017's Earth's at every altitude, 0..10 (thinner or thicker air)
     double groundAlbedo = 0.06; // the surface below, Lambertian, 0..1 (the sea: about 0.06)
     bool operator==(const AtmosphereSettings&) const = default;
 };

@@ -125,7 +125,7 @@ AtmosphereCoefficients atmosphereAt(double altitude_m, const AtmosphereSettings&
     const double h = std::max(altitude_m, 0.0);
     // Exponential profiles of air and aerosols (Bruneton & Neyret 2008,
     // sec. 2.1); ozone's tent (Bruneton 2017's two linear layers).
-    const double rayleigh = std::exp(-h / SWELL_RAYLEIGH_SCALE_HEIGHT_M);
+    const double rayleigh = settings.rayleighScale * std::exp(-h / SWELL_RAYLEIGH_SCALE_HEIGHT_M);
     const double mie = settings.mieScale * std::exp(-h / SWELL_MIE_SCALE_HEIGHT_M);
     const double ozone =
         std::max(0.0, 1.0 - std::abs(h - SWELL_OZONE_PEAK_ALTITUDE_M) / SWELL_OZONE_HALF_WIDTH_M);

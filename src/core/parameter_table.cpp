@@ -337,6 +337,11 @@ std::vector<Parameter> buildTable()
            {.key = "sky.mie_scale", .min = 0.0, .max = 20.0, .sliderMin = 0.0, .sliderMax = 10.0,
             .description = "physical sky: aerosol (haze) density over Bruneton 2017's clear air; the atmosphere's "
                            "tables are built again (0.35 s on one core)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.sky.atmosphere.rayleighScale; },
+           {.key = "sky.rayleigh_scale", .min = 0.0, .max = 10.0, .sliderMin = 0.0, .sliderMax = 3.0,
+            .description = "physical sky: air density over Bruneton 2017's Earth's at every altitude (its Rayleigh "
+                           "scattering: a deeper or paler blue); the atmosphere's tables are built again (0.35 s on "
+                           "one core)"}),
         at([](auto& s, std::size_t) -> auto& { return s.sky.atmosphere.groundAlbedo; },
            {.key = "sky.ground_albedo", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "physical sky: Lambertian albedo of the surface below (the sea: about 0.06); the "

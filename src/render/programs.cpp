@@ -106,6 +106,7 @@ SkyBakeProgram::SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVar
     if (physical) {
         exposure_ = requiredUniform(program_, "skyExposure", "sky_bake.frag");
         mieScale_ = requiredUniform(program_, "atmosphereMieScale", "atmosphere.glsl");
+        rayleighScale_ = requiredUniform(program_, "atmosphereRayleighScale", "atmosphere.glsl");
         cloudCover_ = requiredUniform(program_, "cloudCover", "clouds.glsl");
         cloudAltitude_ = requiredUniform(program_, "cloudAltitude_m", "clouds.glsl");
         cloudOpticalDepth_ = requiredUniform(program_, "cloudOpticalDepth", "clouds.glsl");
@@ -121,10 +122,11 @@ void SkyBakeProgram::setClouds(const CloudSettings& clouds) const
     glProgramUniform1f(program_.id(), cloudScale_, float(clouds.scale_m));
 }
 
-void SkyBakeProgram::setAtmosphere(double exposure, double mieScale) const
+void SkyBakeProgram::setAtmosphere(double exposure, const AtmosphereSettings& atmosphere) const
 {
     glProgramUniform1f(program_.id(), exposure_, float(exposure));
-    glProgramUniform1f(program_.id(), mieScale_, float(mieScale));
+    glProgramUniform1f(program_.id(), mieScale_, float(atmosphere.mieScale));
+    glProgramUniform1f(program_.id(), rayleighScale_, float(atmosphere.rayleighScale));
 }
 
 void SkyBakeProgram::use() const { glUseProgram(program_.id()); }

@@ -72,15 +72,16 @@ public:
     void use() const;
     // 0..5: +x, -x, +y, -y, +z, -z.
     void setFace(int face) const;
-    // The physical sky's only: SkySettings::exposure and AtmosphereSettings::mieScale.
-    void setAtmosphere(double exposure, double mieScale) const;
+    // The physical sky's only: SkySettings::exposure and the atmosphere's
+    // densities (the ground's albedo is in the tables the C++ model builds).
+    void setAtmosphere(double exposure, const AtmosphereSettings& atmosphere) const;
     // The physical sky's only: its cloud layer (shaders/clouds.glsl).
     void setClouds(const CloudSettings& clouds) const;
 
 private:
     gl::Program program_;
     GLint face_ = -1;
-    GLint exposure_ = -1, mieScale_ = -1;
+    GLint exposure_ = -1, mieScale_ = -1, rayleighScale_ = -1;
     GLint cloudCover_ = -1, cloudAltitude_ = -1, cloudOpticalDepth_ = -1, cloudScale_ = -1;
 };
 

@@ -357,7 +357,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
             if (!atmosphereTextures.transmittance)
                 atmosphereTextures.upload(*atmosphere);
             atmosphereTextures.bind();
-            physicalSkyBake.setAtmosphere(scene.sky.exposure, scene.sky.atmosphere.mieScale);
+            physicalSkyBake.setAtmosphere(scene.sky.exposure, scene.sky.atmosphere);
             physicalSkyBake.setClouds(scene.sky.clouds);
             bakeProceduralSky(physicalSkyBake, world.skyCube, emptyVao.id());
             glBindTextureUnit(SWELL_UNIT_SKY_TRANSMITTANCE, 0);

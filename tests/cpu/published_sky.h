@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace swell::test {
 
@@ -105,6 +106,112 @@ inline SkyColour preethamSky(double theta, double gamma, double thetaSun, double
                 * perez(0.1787 * T - 1.4630, -0.3554 * T + 0.4275, -0.0227 * T + 5.3251, 0.1206 * T - 2.5771, -0.0670 * T + 0.3703),
             zenithX * perez(-0.0193 * T - 0.2592, -0.0665 * T + 0.0008, -0.0004 * T + 0.2125, -0.0641 * T - 0.8989, -0.0033 * T + 0.0452),
             zenithy * perez(-0.0167 * T - 0.2608, -0.0950 * T + 0.0092, -0.0079 * T + 0.2102, -0.0441 * T - 1.6537, -0.0109 * T + 0.0529)};
+}
+
+// Exact radiative transfer in a Rayleigh atmosphere: published radiances
+// of the sky seen from the ground, by solvers of the polarised equation to
+// five or more digits (the intensity I; the physical sky's model is scalar
+// and approximates multiple scattering, which is what tests hold it to).
+// Each row: the sun's zenith angle, the view's zenith angle and its azimuth
+// from the sun's (0: towards the sun), all in degrees, and the radiance per
+// unit of the sun's irradiance on a plane normal to its rays (1/sr).
+struct RayleighSkyRow {
+    double sunZenith_deg, viewZenith_deg, azimuthFromSun_deg, radiance_per_sr;
+};
+struct RayleighSkyCase {
+    const char* source;
+    double opticalDepth;   // the layer's Rayleigh optical thickness
+    double groundAlbedo;   // Lambertian
+    double depolarisation; // the molecules' depolarisation factor (the model has 0)
+    std::vector<RayleighSkyRow> rows;
+};
+
+// The tables' units turned into radiance per unit irradiance normal to the
+// sun's rays: IPRT's I / F0 is that already; Kokhanovsky et al. tabulate
+// pi I / (mu0 F0); Natraj et al. tabulate I for an incident flux pi F0 = pi.
+inline double fromKokhanovsky(double value, double sunZenith_deg)
+{
+    return value * std::cos(sunZenith_deg * std::numbers::pi / 180.0) / std::numbers::pi;
+}
+inline double fromNatraj(double value) { return value / std::numbers::pi; }
+inline double zenithOfCosine(double mu) { return std::acos(mu) * 180.0 / std::numbers::pi; }
+
+// The sun 30 to 90 degrees up, in layers as thick as the Earth's air at
+// 440 nm (0.26) and thinner and thicker:
+// - IPRT phase A (Emde et al. 2015, JQSRT 164, 8-36), the model PSTAR's
+//   results: case A1 (one Rayleigh layer of optical thickness 0.5, black
+//   ground; sun at the zenith with no depolarisation, and 30 degrees from it
+//   with 0.03) and case A2 (optical thickness 0.1 over a Lambertian ground
+//   of albedo 0.3, depolarisation 0.03, the sun 50 degrees from the zenith).
+// - Kokhanovsky et al. 2010 (JQSRT 111, 1931-1946), the molecular layer's
+//   transmitted light (Table A1): optical thickness 0.3262, the sun 60
+//   degrees from the zenith, black ground.
+// Views from the zenith to 10 degrees above the horizon.
+inline std::vector<RayleighSkyCase> rayleighSkyBenchmarks()
+{
+    const double k = 60.0; // Kokhanovsky et al.'s sun
+    return {
+        {"IPRT A1, sun at the zenith", 0.5, 0.0, 0.0,
+         {{0.0, 0.0, 0.0, 5.829094e-2}, {0.0, 20.0, 0.0, 5.794367e-2}, {0.0, 60.0, 0.0, 6.200341e-2}}},
+        {"IPRT A1, sun 30 degrees from the zenith", 0.5, 0.0, 0.03,
+         {{30.0, 0.0, 0.0, 4.944388e-2},
+          {30.0, 20.0, 65.0, 5.300881e-2},
+          {30.0, 20.0, 120.0, 4.650063e-2},
+          {30.0, 20.0, 180.0, 4.345636e-2},
+          {30.0, 60.0, 0.0, 8.061241e-2},
+          {30.0, 60.0, 65.0, 6.691916e-2},
+          {30.0, 60.0, 120.0, 5.409492e-2},
+          {30.0, 60.0, 180.0, 5.179994e-2}}},
+        {"IPRT A2", 0.1, 0.3, 0.03,
+         {{50.0, 0.0, 0.0, 1.139551e-2},
+          {50.0, 30.0, 0.0, 1.618379e-2},
+          {50.0, 30.0, 45.0, 1.491217e-2},
+          {50.0, 30.0, 90.0, 1.249049e-2},
+          {50.0, 30.0, 135.0, 1.098560e-2},
+          {50.0, 30.0, 180.0, 1.063078e-2},
+          {50.0, 60.0, 45.0, 2.441616e-2},
+          {50.0, 60.0, 90.0, 1.887249e-2},
+          {50.0, 60.0, 135.0, 1.789589e-2},
+          {50.0, 60.0, 180.0, 1.882903e-2},
+          {50.0, 80.0, 0.0, 6.213985e-2},
+          {50.0, 80.0, 45.0, 5.375838e-2},
+          {50.0, 80.0, 90.0, 4.356350e-2},
+          {50.0, 80.0, 135.0, 4.756701e-2},
+          {50.0, 80.0, 180.0, 5.338393e-2}}},
+        {"Kokhanovsky et al. 2010, molecular layer", 0.3262, 0.0, 0.0,
+         {{k, 0.0, 0.0, fromKokhanovsky(0.1396923, k)},
+          {k, 40.0, 0.0, fromKokhanovsky(0.2590920, k)},
+          {k, 40.0, 90.0, fromKokhanovsky(0.1689676, k)},
+          {k, 40.0, 180.0, fromKokhanovsky(0.1509949, k)}}},
+    };
+}
+
+// Where a flat layer is not the round Earth, or the sun is low: the same
+// molecular layer of Kokhanovsky et al. (2010, Table A1) seen 1 degree
+// above the horizon, where a flat layer's line of sight crosses 57 times
+// its thickness and a round atmosphere's about 27; and Natraj, Li & Yung
+// (2009, ApJ 691, 1909; their corrected Coulson, Dave & Sekera tables),
+// optical thickness 0.5, black ground, the sun at mu0 = 0.2 (11.5 degrees
+// up), views from mu = 0.1 (5.7 degrees up) to the zenith.
+inline std::vector<RayleighSkyCase> rayleighSkyHorizonAndLowSun()
+{
+    const double k = 60.0;
+    const double sun = zenithOfCosine(0.2);
+    auto row = [sun](double mu, double azimuth, double value) {
+        return RayleighSkyRow{sun, zenithOfCosine(mu), azimuth, fromNatraj(value)};
+    };
+    return {
+        {"Kokhanovsky et al. 2010, 1 degree above the horizon", 0.3262, 0.0, 0.0,
+         {{k, 89.0, 0.0, fromKokhanovsky(0.5599639, k)},
+          {k, 89.0, 90.0, fromKokhanovsky(0.3617355, k)},
+          {k, 89.0, 180.0, fromKokhanovsky(0.5515021, k)}}},
+        {"Natraj et al. 2009, sun 11.5 degrees up", 0.5, 0.0, 0.0,
+         {row(0.10, 0.0, 0.13485741), row(0.10, 90.0, 0.08801144), row(0.10, 180.0, 0.13070302),
+          row(0.20, 0.0, 0.15838610), row(0.20, 90.0, 0.10033646), row(0.20, 180.0, 0.14846675),
+          row(0.52, 0.0, 0.12178394), row(0.52, 90.0, 0.07796226), row(0.52, 180.0, 0.10282324),
+          row(0.84, 0.0, 0.07348081), row(0.84, 90.0, 0.05534670), row(0.84, 180.0, 0.05854240),
+          row(1.00, 0.0, 0.04682203)}},
+    };
 }
 
 } // namespace swell::test

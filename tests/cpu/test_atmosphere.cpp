@@ -12,7 +12,9 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <vector>
 
 namespace {
 
@@ -38,6 +40,30 @@ glm::dvec3 skyAt(double elevation_deg, double azimuthFromSun_deg)
 {
     const double e = elevation_deg * kPi / 180.0, a = azimuthFromSun_deg * kPi / 180.0;
     return {std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e)};
+}
+
+// The model's radiance at 440 nm over each of a benchmark's rows
+// (published_sky.h), for the model's air made the benchmark's layer: its
+// density scaled to the layer's optical thickness, no aerosols, the
+// benchmark's ground. Printed, for the figures quoted below.
+std::vector<double> rayleighSkyRatios(const swell::test::RayleighSkyCase& c)
+{
+    const double column440 = SWELL_RAYLEIGH_SCATTERING_B * SWELL_RAYLEIGH_SCALE_HEIGHT_M
+        * (1.0 - std::exp(-(SWELL_ATMOSPHERE_TOP_RADIUS_M - kBottom_m) / SWELL_RAYLEIGH_SCALE_HEIGHT_M));
+    swell::AtmosphereSettings settings;
+    settings.rayleighScale = c.opticalDepth / column440;
+    settings.mieScale = 0.0;
+    settings.groundAlbedo = c.groundAlbedo;
+    const Atmosphere air(settings);
+    std::vector<double> ratios;
+    for (const swell::test::RayleighSkyRow& row : c.rows) {
+        const glm::dvec3 sun = sunAt(90.0 - row.sunZenith_deg);
+        const glm::dvec3 view = skyAt(90.0 - row.viewZenith_deg, row.azimuthFromSun_deg);
+        ratios.push_back(air.skyRadiance(view, sun, 400).z / row.radiance_per_sr);
+        std::printf("%s: sun %.1f, view %.1f at %.0f from the sun: model / published %.3f\n", c.source,
+                    row.sunZenith_deg, row.viewZenith_deg, row.azimuthFromSun_deg, ratios.back());
+    }
+    return ratios;
 }
 
 double relativeError(double value, double reference) { return std::abs(value / reference - 1.0); }
@@ -304,6 +330,51 @@ TEST(Atmosphere, AbsoluteLuminanceAgainstPreetham1999IsHeldWhereItIs)
                                                    << " cd/m2, Preetham " << reference;
             EXPECT_LT(luminance / reference, 1.10) << "sun " << sunElevation << ", view " << view.y;
         }
+    }
+}
+
+// Published reference: the radiance of a Rayleigh sky from exact solutions
+// of radiative transfer (published_sky.h: IPRT phase A's cases A1 and A2,
+// Kokhanovsky et al. 2010's molecular layer), the sun 30 to 90 degrees up,
+// views from the zenith to 10 degrees above the horizon, layers 0.1 to 0.5
+// thick (the Earth's air is 0.26 at 440 nm, 0.11 at 550 nm). The model's
+// air is made the benchmark's (rayleighSkyRatios). Within 10% everywhere;
+// measured, model over published: A1 with the sun at the zenith 0.943 to
+// 1.054, 30 degrees from it 0.948 to 1.081; A2 0.917 to 0.972 (lowest 10
+// degrees up); Kokhanovsky et al. 0.926 to 1.062.
+// The model differs from the benchmarks where it approximates: light
+// scattered twice or more is Hillaire's (2020) isotropic estimate, the
+// radiance is scalar (the benchmarks' intensity comes from the polarised
+// equation), the molecules do not depolarise (0.03 in two of the cases),
+// and the Earth is round where the benchmarks' layer is flat. Broken on
+// purpose: without the multiple scattering the model reaches 0.34 to 0.70;
+// with A2's ground black, 0.66 to 0.78 there; with an isotropic phase
+// function for the air, 0.73 to 1.26.
+// At the horizon and under a low sun (rayleighSkyHorizonAndLowSun) the
+// model is further off, held within 22%: 1 degree above the horizon 0.898
+// to 0.960, where a flat layer's line of sight is twice a round
+// atmosphere's; the sun 11.5 degrees up (Natraj et al.) 0.802 to 1.132,
+// lowest near the horizon towards and away from the sun, where most of the
+// light has been scattered more than once.
+TEST(Atmosphere, SkyRadianceAgainstExactRayleighTransfer)
+{
+    for (const swell::test::RayleighSkyCase& c : swell::test::rayleighSkyBenchmarks()) {
+        const std::vector<double> ratios = rayleighSkyRatios(c);
+        for (size_t i = 0; i < ratios.size(); ++i)
+            EXPECT_LT(std::abs(ratios[i] - 1.0), 0.10)
+                << c.source << ": sun " << c.rows[i].sunZenith_deg << ", view " << c.rows[i].viewZenith_deg << " at "
+                << c.rows[i].azimuthFromSun_deg << " degrees from the sun: model / published " << ratios[i];
+    }
+}
+
+TEST(Atmosphere, SkyRadianceAgainstExactRayleighTransferAtTheHorizonAndALowSun)
+{
+    for (const swell::test::RayleighSkyCase& c : swell::test::rayleighSkyHorizonAndLowSun()) {
+        const std::vector<double> ratios = rayleighSkyRatios(c);
+        for (size_t i = 0; i < ratios.size(); ++i)
+            EXPECT_LT(std::abs(ratios[i] - 1.0), 0.22)
+                << c.source << ": sun " << c.rows[i].sunZenith_deg << ", view " << c.rows[i].viewZenith_deg << " at "
+                << c.rows[i].azimuthFromSun_deg << " degrees from the sun: model / published " << ratios[i];
     }
 }
 

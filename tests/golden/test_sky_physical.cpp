@@ -109,6 +109,13 @@ TEST_F(SkyPhysical, FollowsTheSunAndTheExposure)
     scene.sky.exposure = 16.0;
     renderer.setScene(scene);
     EXPECT_LE(skyError(renderer, scene, "sky_physical_changed").worstLevels, 2) << "the cubemap was not baked again";
+    // Thicker air and more haze: the C++ tables are built again and the
+    // bake's own march must use the same densities (a march at the old air
+    // over the new tables is off by tens of levels).
+    scene.sky.atmosphere.rayleighScale = 2.0;
+    scene.sky.atmosphere.mieScale = 3.0;
+    renderer.setScene(scene);
+    EXPECT_LE(skyError(renderer, scene, "sky_physical_thick_air").worstLevels, 2) << "the bake ignored the air's density";
 }
 
 } // namespace
