@@ -91,6 +91,11 @@ layout(std140, binding = SWELL_BINDING_FRAME) uniform Frame {
     // World objects' ambient light: order-2 spherical harmonics of the sky's
     // irradiance (rgb; Ramamoorthi & Hanrahan 2001), see skyAmbient() in lighting.glsl.
     vec4 ambientSh[9];
+    // Aerial perspective (fog.model = "atmosphere"; fog.glsl): the clear
+    // air's extinction at the sea, 1/m per channel (0 without the physical
+    // sky), and 1 when the fog takes the sky's colour at the horizon.
+    vec3 fogExtinction_per_m;
+    int fogFromSky;
 };
 
 // The point the real camera sees at texture coordinate uv and window depth.

@@ -47,7 +47,7 @@ void main()
 #endif
     // Fog measured from the real eye, also in the mirrored pass (where the
     // mirrored point is as far from the eye as the real one's reflection).
-    color = applyFog(color, distance(vPosition, eyePosition));
+    color = applyFog(color, distance(vPosition, eyePosition), vPosition - eyePosition);
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
     // Underwater hook: seen from below the surface, the water's absorption
     // and in-scattering replace the air's fog (underwater.glsl).

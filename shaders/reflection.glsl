@@ -160,7 +160,7 @@ const int kShowUnsettled = 2;
 vec3 reflectRayMarch(vec3 surface, vec3 direction, bool skyOnly)
 {
     vec3 skyUnfogged = skyRadiance(direction);
-    vec3 sky = applyFog(skyUnfogged, skyDistance(direction));
+    vec3 sky = applySkyFog(skyUnfogged, direction);
     // Only the stretch of the ray inside the world's boxes can meet anything.
     vec2 span = worldSpan(surface, direction);
     float tNear = max(span.x, 0.05), tFar = min(span.y, 1e6);

@@ -34,7 +34,7 @@ void main()
         writeLabels(infinity, vec3(0.0), SWELL_LABEL_SKY, 0u);
     return;
 #endif
-    vec3 color = applyFog(skyRadianceFiltered(direction), skyDistance(direction));
+    vec3 color = applySkyFog(skyRadianceFiltered(direction), direction);
     // Underwater hook: below the surface, what no geometry covers is the
     // water's depths (underwater.glsl), and the shafts of light in them.
     if (pixelUnderwater())

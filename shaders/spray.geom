@@ -43,7 +43,7 @@ vec3 sprayColor(vec3 p)
     vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
     vec3 skyLight = 0.5 * (skyAmbient(vec3(0.0, 1.0, 0.0)) + skyAmbient(vec3(0.0, -1.0, 0.0)));
     vec3 light = sunLight * (0.6 + 0.4 * forward * forward) + max(skyLight, vec3(0.0));
-    return passOutput(applyFog(light, distance(p, eyePosition))).rgb;
+    return passOutput(applyFog(light, distance(p, eyePosition), p - eyePosition)).rgb;
 }
 
 void main()

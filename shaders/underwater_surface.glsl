@@ -27,7 +27,7 @@ vec3 lightFromAbove(vec3 p, vec3 normalUp, vec3 t, vec2 screenUv)
     // the world below instead while the eye is above the water).
     if (depthHasGeometry(depth) && worldFromScreen(uv, depth).y <= p.y)
         world = vec4(0.0);
-    return world.rgb + applyFog(skyRadiance(t), skyDistance(t)) * (1.0 - world.a);
+    return world.rgb + applySkyFog(skyRadiance(t), t) * (1.0 - world.a);
 }
 
 // The colour of the surface at p, seen from the eye below it; normalUp is

@@ -225,7 +225,7 @@ void main()
     color = mix(vec3(1.0, 0.2, 0.1), vec3(0.1, 0.3, 1.0), clamp(level, 0.0, 1.0)) * (0.75 + 0.25 * fract(level * 10.0));
 #endif
 #if (SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED || SWELL_DEBUG_VIEW == SWELL_VIEW_REFLECTION || SWELL_DEBUG_VIEW == SWELL_VIEW_REFRACTION) && SWELL_HAS_TERM(SWELL_TERM_FOG)
-    color = applyFog(color, distance_m);
+    color = applyFog(color, distance_m, -toEye);
 #endif
     fragColor = passOutput(color);
     fragColor.a = passMarksWater != 0 ? 0.0 : 1.0; // frame.glsl: for the temporal resolve

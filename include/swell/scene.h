@@ -113,10 +113,18 @@ struct SWELL_API SkySettings {
     CloudSettings clouds;          // physical: a layer of cloud ([sky.clouds]; swell/clouds.h)
 };
 
+// How distance veils what is drawn (shaders/fog.glsl).
+enum class FogModel {
+    Linear,     // the paper's: a linear ramp from start_m to end_m towards `color`
+    Atmosphere, // aerial perspective: the veil takes the sky's colour at the horizon in each view's
+                // azimuth, and with the physical sky the clear air's extinction is added to the ramp
+};
+
 struct SWELL_API FogSettings {
     double start_m = 1200.0;               // fog begins, m from the camera, >= 0
     double end_m = 6000.0;                 // fog is complete, m, > start
-    glm::dvec3 color{0.70, 0.80, 0.90};    // linear RGB, 0..1
+    glm::dvec3 color{0.70, 0.80, 0.90};    // linear RGB, 0..1 (linear model only)
+    FogModel model = FogModel::Linear;     // last, so that {start, end, color} still initialises the rest
 };
 
 struct SWELL_API WaterSettings {

@@ -51,6 +51,8 @@ static_assert(static_cast<int>(Antialiasing::Off) == 0 && static_cast<int>(Antia
               && static_cast<int>(Antialiasing::Fxaa) == 2);
 
 constexpr std::array<std::string_view, 2> kSkyModels{"gradient", "physical"};
+constexpr std::array<std::string_view, 2> kFogModels{"linear", "atmosphere"};
+static_assert(static_cast<int>(FogModel::Linear) == 0 && static_cast<int>(FogModel::Atmosphere) == 1);
 static_assert(static_cast<int>(SkyModel::Gradient) == 0 && static_cast<int>(SkyModel::Physical) == 1);
 
 constexpr std::array<std::string_view, 2> kSpreadings{"mitsuyasu", "donelan-banner"};
@@ -364,6 +366,13 @@ std::vector<Parameter> buildTable()
             .sliderMax = 20000.0, .logarithmic = true,
             .description = "physical sky: the size of the cloud layer's largest shapes; the sky is baked again"}),
         // [fog]
+        at([](auto& s, std::size_t) -> auto& { return s.fog.model; },
+           {.key = "fog.model", .kind = K::Choice, .min = 0.0, .max = kFogModels.size() - 1.0, .sliderMin = 0.0,
+            .sliderMax = kFogModels.size() - 1.0,
+            .description = "linear: the paper's ramp towards fog.color; atmosphere: aerial perspective, the veil "
+                           "coloured by the sky at the horizon in each view's azimuth (fog.color unused) and, with "
+                           "the physical sky, the clear air's extinction added to the ramp",
+            .choices = kFogModels}),
         at([](auto& s, std::size_t) -> auto& { return s.fog.start_m; },
            {.key = "fog.start_m", .unit = "m", .min = 0.0, .max = kWorldLimit_m, .sliderMin = 0.0, .sliderMax = 20000.0,
             .description = "distance from the camera where fog begins"}),
@@ -372,7 +381,7 @@ std::vector<Parameter> buildTable()
             .description = "distance where fog is complete; > start_m"}),
         at([](auto& s, std::size_t) -> auto& { return s.fog.color; },
            {.key = "fog.color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
-            .description = "fog colour, linear RGB"}),
+            .description = "fog colour, linear RGB (fog.model = \"linear\")"}),
         // [water]
         at([](auto& s, std::size_t) -> auto& { return s.water.deepColor; },
            {.key = "water.deep_color", .kind = K::Colour, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,

@@ -25,6 +25,14 @@ FrameUniforms frameUniforms(const Scene& scene, const SkyLight& sky, const GridS
     f.fogColor = glm::vec3(scene.fog.color);
     f.fogStart_m = float(scene.fog.start_m);
     f.fogEnd_m = float(scene.fog.end_m);
+    if (scene.fog.model == FogModel::Atmosphere) {
+        f.fogFromSky = 1;
+        // The air's extinction where the eye is (Rayleigh, aerosols and
+        // ozone; swell/atmosphere.h), constant along a near-level ray.
+        if (usesPhysicalSky(scene))
+            f.fogExtinction_per_m =
+                glm::vec3(atmosphereAt(SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M, scene.sky.atmosphere).extinction);
+    }
     f.skyZenith = glm::vec3(sky.zenith);
     f.skyHorizon = glm::vec3(sky.horizon);
     for (size_t i = 0; i < sky.ambientSh.size(); ++i)

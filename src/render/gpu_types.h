@@ -82,6 +82,8 @@ struct alignas(16) FrameUniforms {
     GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
     WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
     glm::vec4 ambientSh[9];
+    glm::vec3 fogExtinction_per_m;
+    int fogFromSky;
 };
 
 } // namespace swell::detail

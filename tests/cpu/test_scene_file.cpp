@@ -243,7 +243,7 @@ TEST(SceneFile, EverythingRoundTrips)
     s.sun = {{0.25, 0.5, -1.0}, {1.0, 0.5, 1.0 / 3.0}, 7.5};
     s.sky.cubemapFaces = {"sky/px.png", "sky/nx.png", "sky/py.png", "sky/ny.png", "sky/pz.png", "sky/nz.png"};
     s.sky.zenithColor = {0.0, 0.0, 0.0};
-    s.fog = {0.0, 123456.0, {0.5, 0.25, 0.125}};
+    s.fog = {0.0, 123456.0, {0.5, 0.25, 0.125}, FogModel::Atmosphere};
     s.water = {{0.1, 0.2, 0.3}, {99.0, 0.0, 1.5}, 0.05, 1.0, 10.0, 0.0};
     s.reflection = {ReflectionMode::FixedDistance, 1e-3, 0.1, 0.0};
     s.objects.push_back({"models/boat.glb", {1.5, -2.0, 1e5}, -3600.0, 1e4, true});

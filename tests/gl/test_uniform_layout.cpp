@@ -52,7 +52,7 @@ void main() {
            + vec4(viewportOrigin, depthNdcScale, depthNdcOffset) + vec4(depthFar, nearNdcZ, farNdcZ, projectionFocalY)
            + vec4(footprintScale, float(passMarksWater), 0.0, 0.0)
            + vec4(worldBoxes[gl_VertexID].min_m, 0.0) + vec4(worldBoxes[gl_VertexID].max_m, 0.0)
-           + ambientSh[gl_VertexID]
+           + ambientSh[gl_VertexID] + vec4(fogExtinction_per_m, float(fogFromSky))
            + waveShape[gl_VertexID] + wavePhase[gl_VertexID] + vec4(waveCount);
     gl_Position = s;
 }
@@ -140,6 +140,8 @@ TEST_F(UniformLayout, FrameAndGerstnerBlocksMatchTheirCppMirrors)
     EXPECT_EQ(offsetOf(p.id(), "ambientSh[0]"), GLint(offsetof(F, ambientSh)));
     // (a vec4 array's stride is 16 bytes in std140, as glm::vec4's size)
     static_assert(sizeof(F::ambientSh) == 9 * 16);
+    SWELL_EXPECT_OFFSET(F, fogExtinction_per_m);
+    SWELL_EXPECT_OFFSET(F, fogFromSky);
     EXPECT_EQ(offsetOf(p.id(), "waveShape[0]"), GLint(offsetof(W, waveShape)));
     EXPECT_EQ(offsetOf(p.id(), "wavePhase[0]"), GLint(offsetof(W, wavePhase)));
     SWELL_EXPECT_OFFSET(W, waveCount);

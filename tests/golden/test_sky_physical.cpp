@@ -118,4 +118,68 @@ TEST_F(SkyPhysical, FollowsTheSunAndTheExposure)
     EXPECT_LE(skyError(renderer, scene, "sky_physical_thick_air").worstLevels, 2) << "the bake ignored the air's density";
 }
 
+// fog.model = "atmosphere" (shaders/fog.glsl): aerial perspective over a
+// calm sea. Each water pixel seen 1500 m up, drawn with the veil and
+// without it (the linear fog pushed out of reach in both), must be the
+// clear pixel times the air's transmittance over its distance plus the
+// sky's horizon radiance in its azimuth times the rest, with the
+// extinction of the C++ model at the sea (swell::atmosphereAt) and the
+// horizon from its skyRadiance(). 3 levels of 255: the two images' 8-bit
+// rounding (1 each) and the baked horizon against the C++ sky (1);
+// measured 1 at worst, the veil reaching 34 levels. Broken on purpose:
+// without the extinction 34 levels off; the horizon looked up in one
+// azimuth for every ray, 18.
+TEST_F(SkyPhysical, AerialPerspectiveVeilsTheSeaByTheAirsTransmittance)
+{
+    const double e = glm::radians(25.0);
+    swell::Scene clear = physicalSky({0.6 * std::cos(e), std::sin(e), -0.8 * std::cos(e)}, 10.0);
+    clear.camera.position_m = {0.0, 1500.0, 0.0};
+    clear.camera.pitch_deg = -30.0;
+    clear.camera.yaw_deg = 30.0;
+    clear.camera.far_m = 40000.0;
+    // The water tested: up to 7 km away (about 9 km of water is drawn, with
+    // the sky's veil past it).
+    constexpr double kReach_m = 7000.0;
+    swell::Scene veiled = clear;
+    veiled.fog.model = swell::FogModel::Atmosphere;
+    swell::Renderer clearRenderer(clear), veiledRenderer(veiled);
+    const swell::Camera camera = swell::cameraAt(clear.camera, 0.0);
+    const swell::Image a = clearRenderer.renderImage(camera, 0.0, kSize);
+    const swell::Image b = veiledRenderer.renderImage(camera, 0.0, kSize);
+
+    const swell::Atmosphere atmosphere(clear.sky.atmosphere);
+    const glm::dvec3 extinction =
+        swell::atmosphereAt(SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M, clear.sky.atmosphere).extinction;
+    const glm::dvec3 sun = glm::normalize(clear.sun.direction);
+    int worst = 0, checked = 0, veil = 0;
+    for (int y = 0; y < kSize.y; ++y)
+        for (int x = 0; x < kSize.x; ++x) {
+            const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+            const double t = clear.camera.position_m.y / -d.y;
+            // Water only, within the drawn grid's reach.
+            if (d.y > -0.01 || t > kReach_m)
+                continue;
+            const glm::dvec3 level = glm::normalize(glm::dvec3(d.x, 0.0, d.z));
+            const glm::dvec3 horizon = clear.sky.exposure * atmosphere.skyRadiance(level, sun);
+            for (int c = 0; c < 3; ++c) {
+                if (a.pixel(x, y)[c] >= 250)
+                    continue; // the glint, clipped
+                const double transmittance = std::exp(-extinction[c] * t);
+                const double expected =
+                    swell::test::srgbToLinear(a.pixel(x, y)[c]) * transmittance + horizon[c] * (1.0 - transmittance);
+                const int error = int(std::lround(std::abs(double(b.pixel(x, y)[c]) - srgbLevel(expected))));
+                worst = std::max(worst, error);
+                veil = std::max(veil, std::abs(int(b.pixel(x, y)[c]) - int(a.pixel(x, y)[c])));
+                ++checked;
+            }
+        }
+    std::printf("aerial perspective: %d water channels, worst %d levels from the formula, veil up to %d levels\n",
+                checked, worst, veil);
+    if (worst > 3)
+        swell::test::saveTestImage(b, "aerial_perspective.actual");
+    EXPECT_GT(checked, 30000) << "too little water was checked";
+    EXPECT_GT(veil, 30) << "the far sea is hardly veiled";
+    EXPECT_LE(worst, 3);
+}
+
 } // namespace
