@@ -323,6 +323,11 @@ void Renderer::Impl::drawGeometry(PassKind kind, SceneWorld* own, PassGeometry* 
     const glm::dvec4 plane(f.clipPlane);
     pass.clipPlane_m = glm::dvec4(glm::dvec3(plane), plane.w - plane.y * level());
     glFrontFace(mirrored ? GL_CW : GL_CCW);
+    // The world is drawn before the sky and the water, which bind the sky
+    // cubemap for themselves; its fog looks the sky up too (fog.glsl's
+    // aerial perspective), and the unit may hold nothing yet (a bake leaves
+    // it empty) or what another frame left there.
+    glBindTextureUnit(SWELL_UNIT_SKY, world.skyCube.id());
     if (own)
         own->drawPass(pass);
     if (host)
