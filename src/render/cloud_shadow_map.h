@@ -35,7 +35,7 @@ struct alignas(16) CloudShadowUniforms {
 };
 static_assert(sizeof(CloudShadowUniforms) == 16, "the CloudShadow block is 16 bytes in std140");
 
-// Texels of the map per side and their width, m.
+// The width of the map's texels, m.
 inline constexpr double kCloudShadowTexel_m = SWELL_CLOUD_SHADOW_EXTENT_M / SWELL_CLOUD_SHADOW_SIZE;
 
 class CloudShadowMap {
