@@ -140,6 +140,17 @@ float cloudTransmittance(vec3 direction)
     return exp(-cloudOpticalDepthAt(hit.xz_m, hit.footprint_m) / hit.cosZenith);
 }
 
+// swell::cloudShadowTransmittance: the layer's direct transmittance along
+// the sun's ray from a world point (x, z world metres; y over the mean level).
+float cloudShadowTransmittance(vec3 point_m, vec3 sun, float footprint_m)
+{
+    if (cloudCover <= 0.0 || point_m.y >= cloudAltitude_m)
+        return 1.0;
+    float up = max(sun.y, float(SWELL_CLOUD_SHADOW_MIN_SUN_Y));
+    vec2 crossing = point_m.xz + sun.xz * ((cloudAltitude_m - point_m.y) / up);
+    return exp(-cloudOpticalDepthAt(crossing, footprint_m) / up);
+}
+
 float cloudHenyeyGreenstein(float cosAngle, float g)
 {
     return (1.0 - g * g) / (4.0 * kAtmospherePi * pow(1.0 + g * g - 2.0 * g * cosAngle, 1.5));

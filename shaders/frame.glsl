@@ -12,6 +12,13 @@
 #define SWELL_LABEL_PASS 0
 #endif
 
+// 1 where the cloud layer's shadow map shades the sun's light point by
+// point (cloud_shadow.glsl; the physical sky with clouds); 0: the frame's
+// sunIntensity alone.
+#ifndef SWELL_CLOUD_SHADOWS
+#define SWELL_CLOUD_SHADOWS 0
+#endif
+
 // A box holding world geometry, relative to the render origin, m.
 struct WorldBox {
     vec3 min_m;

@@ -4,6 +4,9 @@
 #include "lighting.glsl"
 #include "underwater.glsl"
 #include "caustics.glsl"
+#if SWELL_CLOUD_SHADOWS
+#include "cloud_shadow.glsl"
+#endif
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -39,6 +42,11 @@ void main()
         float footprint_m = 2.0 * distance(vPosition, eyePosition) / (viewportSize.y * projectionFocalY);
         sun = causticsSunlight(n, vPosition, waterAbsorption, log2(max(footprint_m / causticsTexel_m(), 1.0)));
     }
+#endif
+#if SWELL_CLOUD_SHADOWS
+    // The cloud layer's shadow (cloud_shadow.glsl), over the pixel's
+    // footprint at its distance.
+    sun *= cloudShadowAt(vPosition, 2.0 * distance(vPosition, eyePosition) / (viewportSize.y * projectionFocalY));
 #endif
     vec3 light = ambient + sunColor * sunIntensity * sun;
     vec3 color = vColor * light;

@@ -3,6 +3,9 @@
 #ifndef SWELL_SKY_GLSL
 #define SWELL_SKY_GLSL
 #include "frame.glsl"
+#if SWELL_CLOUD_SHADOWS
+#include "cloud_shadow.glsl"
+#endif
 
 layout(binding = SWELL_UNIT_SKY) uniform samplerCube skyCube;
 
@@ -13,7 +16,14 @@ layout(binding = SWELL_UNIT_SKY) uniform samplerCube skyCube;
 vec3 sunDisc(vec3 d)
 {
     float disk = smoothstep(0.99996, 0.99999, dot(d, sunDirection));
+#if SWELL_CLOUD_SHADOWS
+    // The frame's sun is the one above the layer (the shadow map shades
+    // it point by point); the disc is seen through the layer from the
+    // sky's observer, as the baked sky around it is.
+    return sunColor * (sunIntensity * cloudShadowSkySun) * disk * 20.0;
+#else
     return sunColor * sunIntensity * disk * 20.0;
+#endif
 }
 
 // Linear sky radiance along a direction, from mip level 0. For callers in

@@ -11,6 +11,9 @@
 #include "fog.glsl"
 #include "lighting.glsl"
 #include "spray.glsl"
+#if SWELL_CLOUD_SHADOWS
+#include "cloud_shadow.glsl"
+#endif
 
 layout(points) in;
 layout(triangle_strip, max_vertices = 40) out; // SWELL_SPRAY_DROPS ribbons of 4 point pairs
@@ -40,7 +43,14 @@ vec3 sprayColor(vec3 p)
 {
     vec3 toEye = normalize(eyePosition - p);
     float forward = max(dot(-toEye, sunDirection), 0.0);
+#if SWELL_CLOUD_SHADOWS
+    // In the cloud layer's shadow or not (cloud_shadow.glsl): a pixel's
+    // footprint at its distance.
+    float cloudSun = cloudShadowAt(p, 2.0 * distance(p, eyePosition) / (viewportSize.y * projectionFocalY));
+    vec3 sunLight = sunColor * (sunIntensity * cloudSun) * max(sunDirection.y, 0.0);
+#else
     vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
+#endif
     vec3 skyLight = 0.5 * (skyAmbient(vec3(0.0, 1.0, 0.0)) + skyAmbient(vec3(0.0, -1.0, 0.0)));
     vec3 light = sunLight * (0.6 + 0.4 * forward * forward) + max(skyLight, vec3(0.0));
     return passOutput(applyFog(light, distance(p, eyePosition), p - eyePosition)).rgb;

@@ -13,6 +13,9 @@
 #define SWELL_UNDERWATER_GLSL
 #include "frame.glsl"
 #include "light_shafts.glsl"
+#if SWELL_CLOUD_SHADOWS
+#include "cloud_shadow.glsl"
+#endif
 
 // 0 in the programs built for passes in which no pixel looks out from below
 // the water (render/programs.h): pixelUnderwater() is then false, so the
@@ -137,7 +140,14 @@ vec3 underwaterBackground(vec3 d, float depth_m)
 // by each caller from the eye; a fragment shader's (the pixel's dither).
 vec3 underwaterShafts(vec3 start, vec3 d, float path_m)
 {
-    return shaftsInscatter(start, d, path_m, waterAbsorption, sunColor * sunIntensity,
+#if SWELL_CLOUD_SHADOWS
+    // The cloud layer's shadow where the shafts start (they reach
+    // SWELL_SHAFTS_REACH_M, a texel of the shadow map: cloud_shadow.glsl).
+    vec3 sun = sunColor * (sunIntensity * cloudShadowAt(start, 0.0));
+#else
+    vec3 sun = sunColor * sunIntensity;
+#endif
+    return shaftsInscatter(start, d, path_m, waterAbsorption, sun,
                            2.0 / (viewportSize.y * projectionFocalY), shaftsDither(gl_FragCoord.xy));
 }
 

@@ -12,6 +12,9 @@
 #include "ocean.glsl"
 #include "underwater_surface.glsl"
 #include "subsurface.glsl"
+#if SWELL_CLOUD_SHADOWS
+#include "cloud_shadow.glsl"
+#endif
 #if SWELL_SURFACE_SOURCES
 #include "surface_sources.glsl"
 #endif
@@ -38,6 +41,16 @@ out vec4 fragColor;
 
 void main()
 {
+    // The sun's direct light here: the cloud layer's shadow shades it
+    // (cloud_shadow.glsl), averaged over the pixel's footprint on the
+    // water (taken here, in uniform control flow, for its derivatives).
+#if SWELL_CLOUD_SHADOWS
+    vec2 shadowFootprint = fwidth(vPosition.xz) * footprintScale;
+    float cloudSun = cloudShadowAt(vPosition, max(shadowFootprint.x, shadowFootprint.y));
+    vec3 directSun = sunColor * (sunIntensity * cloudSun);
+#else
+    vec3 directSun = sunColor * sunIntensity;
+#endif
 #if SWELL_HAS_TERM(SWELL_TERM_WAVE_NORMALS)
     // The grid carries only the waves it can sample; the shading normal takes
     // every wave this pixel can resolve, filtered by the pixel's footprint on
@@ -139,7 +152,20 @@ void main()
     float fresnel = fresnelSchlick(dot(n, v), fresnelF0);
 #if SWELL_HAS_TERM(SWELL_TERM_LIGHTING)
     // Phong diffuse lights the light scattered inside the water.
+#if SWELL_CLOUD_SHADOWS
+    // The water's own colour (waterDeep) is the scene's, chosen for its
+    // prevailing light, which the sun's intensity never entered: the
+    // layer's shadows scale the sun's share of it by the sun reaching here
+    // against the layer's mean, capped at the clear sky's (cloud_shadow.glsl).
+    // So under scattered clouds a patch in a gap is lit as under a clear
+    // sky and one in a cloud's shadow keeps little more than the sky's
+    // share, while a deck that lets through under 2% of the sun anywhere
+    // (the storm's) leaves it as it was.
+    float bodySun = min((cloudSun + 0.02) / (cloudShadowMean() + 0.02), 1.0);
+    float lit = 0.35 + 0.65 * phongDiffuse(n) * bodySun;
+#else
     float lit = 0.35 + 0.65 * phongDiffuse(n);
+#endif
     refracted *= mix(1.0, lit, 1.0 - exp(-0.2 * min(path_m, 100.0)));
 #endif
 #if SWELL_HAS_TERM(SWELL_TERM_FOAM)
@@ -163,7 +189,7 @@ void main()
     bubbles = max(bubbles, sourceBelow * sourceBelow);
 #endif
     bubbles *= step(kBubbleDepth_m, path_m);
-    vec3 bubbleLight = (sunColor * sunIntensity * max(sunDirection.y, 0.0) + max(skyAmbient(vec3(0.0, 1.0, 0.0)), vec3(0.0))) *
+    vec3 bubbleLight = (directSun * max(sunDirection.y, 0.0) + max(skyAmbient(vec3(0.0, 1.0, 0.0)), vec3(0.0))) *
                        exp(-2.0 * kBubbleDepth_m * waterAbsorption);
     refracted = mix(refracted, 0.5 * bubbleLight, 0.8 * clamp(bubbles, 0.0, 1.0));
 #endif
@@ -176,13 +202,17 @@ void main()
     // normals; Bruneton et al. 2010, sec. 4.2, for waves). The lobe's
     // normalisation keeps its energy.
     float spreadShininess = shininess / (1.0 + 2.0 * shininess * slopeVariance);
-    color += sunColor * sunIntensity * specularStrength * phongSpecular(n, v, spreadShininess, fresnelF0) * step(0.0, sunDirection.y);
+    color += directSun * specularStrength * phongSpecular(n, v, spreadShininess, fresnelF0) * step(0.0, sunDirection.y);
 #endif
 
 #if SWELL_HAS_TERM(SWELL_TERM_SUBSURFACE)
     // Thin, backlit crests glow blue-green (subsurface.glsl); the light
     // leaves through the surface, so what Fresnel reflects does not.
+#if SWELL_CLOUD_SHADOWS
+    color += (1.0 - fresnel) * crestGlow(vPosition.y, v) * cloudSun;
+#else
     color += (1.0 - fresnel) * crestGlow(vPosition.y, v);
+#endif
 #endif
 
 #if SWELL_HAS_TERM(SWELL_TERM_FOAM)
@@ -201,7 +231,7 @@ void main()
     // 12, a quarter of the sun's light at its peak: chosen by eye).
     float foamCover = clamp(foam, 0.0, 1.0); // the share of the pixel foam covers
     vec3 foamNormal = normalize(n / max(n.y, 0.1) - vec3(foamSlope.x, 0.0, foamSlope.y));
-    vec3 sunLight = sunColor * sunIntensity * max(sunDirection.y, 0.0);
+    vec3 sunLight = directSun * max(sunDirection.y, 0.0);
     vec3 foamLight = sunLight * (0.6 + 0.4 * phongDiffuse(foamNormal)) + max(skyAmbient(foamNormal), vec3(0.0));
     float sheen = 0.25 * pow(max(dot(reflect(-sunDirection, foamNormal), v), 0.0), 12.0);
     color = mix(color, foamAlbedo * foamLight + sheen * sunLight, foamCover);

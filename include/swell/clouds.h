@@ -76,6 +76,19 @@ SWELL_API CloudHit cloudHit(const CloudSettings& settings, glm::vec3 direction);
 // the sky behind) after the layer. 1 for cover 0.
 SWELL_API float cloudTransmittance(const CloudSettings& settings, glm::vec3 direction);
 
+// The layer's direct transmittance along the sun's ray from a world point
+// (x, z world metres as cloudSample takes them; y metres over the sea's
+// mean level), towards the sun (unit): the shadow the layer casts there.
+// The ray crosses the layer's altitude at xz + sun.xz (altitude - y) /
+// sun.y, on a flat layer (a shadow falls a few kilometres from its cloud,
+// where the Earth's curve lowers the layer by a metre or so), and the
+// beam's path through it is tau / sun.y, with tau filtered over
+// footprint_m. The sun is taken no lower than
+// SWELL_CLOUD_SHADOW_MIN_SUN_Y (below it the atmosphere has put the sun
+// out anyway). 1 for cover 0 and for a point at or over the layer.
+SWELL_API float cloudShadowTransmittance(const CloudSettings& settings, glm::vec3 point_m, glm::vec3 sun,
+                                         float footprint_m);
+
 // The sky's radiance along a unit direction with the layer in it, per unit
 // solar irradiance (1/sr), from the clear sky's radiance in that direction
 // (Atmosphere::skyRadiance): the cloud's light seen through the air in

@@ -245,6 +245,26 @@
 // Angular width of the sky bake's texel, rad (90 degrees over 256): the
 // footprint below which the layer's octaves are averaged away.
 #define SWELL_CLOUD_TEXEL_RAD 0.00614
+// The layer's shadows on the sea and the world (shaders/cloud_shadow.glsl,
+// src/render/cloud_shadow_map.h): its transmittance along the sun's ray,
+// baked per point of the sea's mean level into a camera-following map
+// (R32F, mipmapped: the mip chain averages the transmittance itself, as a
+// pixel's footprint does) when the sky or the sun changes or the camera
+// has moved SWELL_CLOUD_SHADOW_REBAKE of the map's side from its centre.
+// 16 km across: the sea to the haze from a boat, the horizon's first
+// kilometres from a mast; 512 texels of 31 m, under the finest octave of
+// a 3 km layer (94 m) and about the penumbra of a cloud 3 km up (the
+// sun's 0.53 degrees: 28 m). Beyond it, the map's mean.
+#define SWELL_CLOUD_SHADOW_EXTENT_M 16000.0
+#define SWELL_CLOUD_SHADOW_SIZE 512
+#define SWELL_CLOUD_SHADOW_REBAKE 0.125
+// The lowest sun the shadows are cast for (sin of 2.9 degrees): a lower
+// one's ray crosses the layer tens of kilometres away, and the air has
+// dimmed its light to little anyway.
+#define SWELL_CLOUD_SHADOW_MIN_SUN_Y 0.05
+// The map's texture unit and uniform block (the CloudShadow block of cloud_shadow.glsl).
+#define SWELL_UNIT_CLOUD_SHADOW 20
+#define SWELL_BINDING_CLOUD_SHADOW 5
 
 // Caustics (shaders/caustics.glsl, src/render/caustics_map.h): the sun's
 // light refracted by the drawn surface onto horizontal slices under it,

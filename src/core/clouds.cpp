@@ -172,6 +172,16 @@ float cloudTransmittance(const CloudSettings& settings, glm::vec3 direction)
     return std::exp(-cloudOpticalDepth(settings, hit.xz_m, hit.footprint_m) / hit.cosZenith);
 }
 
+float cloudShadowTransmittance(const CloudSettings& settings, glm::vec3 point_m, glm::vec3 sun, float footprint_m)
+{
+    const float altitude_m = float(settings.altitude_m);
+    if (settings.cover <= 0.0 || point_m.y >= altitude_m)
+        return 1.0f;
+    const float up = std::max(sun.y, float(SWELL_CLOUD_SHADOW_MIN_SUN_Y));
+    const glm::vec2 crossing = glm::vec2(point_m.x, point_m.z) + glm::vec2(sun.x, sun.z) * ((altitude_m - point_m.y) / up);
+    return std::exp(-cloudOpticalDepth(settings, crossing, footprint_m) / up);
+}
+
 glm::dvec3 cloudySkyRadiance(const Atmosphere& atmosphere, const CloudSettings& settings, glm::dvec3 direction,
                              glm::dvec3 sunDirection, glm::dvec3 clear)
 {

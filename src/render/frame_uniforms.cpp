@@ -17,8 +17,11 @@ FrameUniforms frameUniforms(const Scene& scene, const SkyLight& sky, const GridS
     f.clipPlane = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     f.eyePosition = glm::vec3(eye_m - origin);
     f.sunDirection = glm::vec3(glm::normalize(scene.sun.direction));
-    f.sunIntensity = float(sky.sunIntensity);
-    f.sunColor = glm::vec3(sky.sunColor);
+    // With the cloud layer's shadow map the layer is left out of the sun's
+    // light here: the map shades it at each point (cloud_shadow_map.h).
+    const bool shadowMap = cloudShadowsOn(scene);
+    f.sunIntensity = float(shadowMap ? sky.clearSunIntensity : sky.sunIntensity);
+    f.sunColor = glm::vec3(shadowMap ? sky.clearSunColor : sky.sunColor);
     // The sky's fog layer: the height at which a ray at the fog's end distance has
     // risen by 2% of it, so the sky stays clear a few degrees above the horizon.
     f.fogSkyLayer_m = float(0.02 * scene.fog.end_m);

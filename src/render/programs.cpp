@@ -1,6 +1,7 @@
 // Building the renderer's programs for a variant, and their typed setters.
 #include "render/programs.h"
 
+#include "render/sky_light.h"
 #include "render/spray_kinematics.h"
 #include "render/surface_sources.h"
 #include "swell/shader_constants.h"
@@ -59,7 +60,7 @@ ShaderVariant shaderVariantOf(const Scene& scene, std::string oceanFile, unsigne
                               std::vector<std::string> surfaceSources)
 {
     return {scene.debugView, scene.reflection.mode, scene.grid.layout, std::move(oceanFile), omittedWaterTerms,
-            std::move(surfaceSources), scene.water.caustics, scene.water.shafts};
+            std::move(surfaceSources), scene.water.caustics, scene.water.shafts, cloudShadowsOn(scene)};
 }
 
 std::vector<std::string> definesOf(const ShaderVariant& v)
@@ -74,6 +75,7 @@ std::vector<std::string> definesOf(const ShaderVariant& v)
         fmt::format("SWELL_SURFACE_SOURCES {}", v.surfaceSources.size()),
         fmt::format("SWELL_CAUSTICS {}", v.caustics ? 1 : 0),
         fmt::format("SWELL_SHAFTS {}", v.shafts ? 1 : 0),
+        fmt::format("SWELL_CLOUD_SHADOWS {}", v.cloudShadows ? 1 : 0),
     };
 }
 
@@ -127,6 +129,31 @@ void SkyBakeProgram::setAtmosphere(double exposure, const AtmosphereSettings& at
     glProgramUniform1f(program_.id(), exposure_, float(exposure));
     glProgramUniform1f(program_.id(), mieScale_, float(atmosphere.mieScale));
     glProgramUniform1f(program_.id(), rayleighScale_, float(atmosphere.rayleighScale));
+}
+
+CloudShadowBakeProgram::CloudShadowBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
+    : program_(build(sources, variant, "fullscreen.vert", "cloud_shadow_bake.frag")),
+      cloudCover_(requiredUniform(program_, "cloudCover", "clouds.glsl")),
+      cloudAltitude_(requiredUniform(program_, "cloudAltitude_m", "clouds.glsl")),
+      cloudOpticalDepth_(requiredUniform(program_, "cloudOpticalDepth", "clouds.glsl")),
+      cloudScale_(requiredUniform(program_, "cloudScale_m", "clouds.glsl")),
+      corner_(requiredUniform(program_, "bakeCorner_m", "cloud_shadow_bake.frag")),
+      texel_(requiredUniform(program_, "bakeTexel_m", "cloud_shadow_bake.frag")),
+      sun_(requiredUniform(program_, "bakeSun", "cloud_shadow_bake.frag"))
+{
+}
+
+void CloudShadowBakeProgram::use() const { glUseProgram(program_.id()); }
+
+void CloudShadowBakeProgram::set(const CloudSettings& clouds, glm::vec2 corner_m, float texel_m, glm::vec3 sun) const
+{
+    glProgramUniform1f(program_.id(), cloudCover_, float(clouds.cover));
+    glProgramUniform1f(program_.id(), cloudAltitude_, float(clouds.altitude_m));
+    glProgramUniform1f(program_.id(), cloudOpticalDepth_, float(clouds.opticalDepth));
+    glProgramUniform1f(program_.id(), cloudScale_, float(clouds.scale_m));
+    glProgramUniform2f(program_.id(), corner_, corner_m.x, corner_m.y);
+    glProgramUniform1f(program_.id(), texel_, texel_m);
+    glProgramUniform3f(program_.id(), sun_, sun.x, sun.y, sun.z);
 }
 
 void SkyBakeProgram::use() const { glUseProgram(program_.id()); }

@@ -30,6 +30,9 @@ struct ShaderVariant {
     std::vector<std::string> surfaceSources{};
     bool caustics = true;                              // SWELL_CAUSTICS: the caustics map drawn and read (water.caustics)
     bool shafts = true;                                // SWELL_SHAFTS: the sun's light scattered in the water column (water.shafts)
+    // SWELL_CLOUD_SHADOWS: the sun's light shaded point by point by the
+    // cloud layer's shadow map (physical sky with clouds; render/cloud_shadow_map.h)
+    bool cloudShadows = false;
     bool operator==(const ShaderVariant&) const = default;
 };
 
@@ -83,6 +86,25 @@ private:
     GLint face_ = -1;
     GLint exposure_ = -1, mieScale_ = -1, rayleighScale_ = -1;
     GLint cloudCover_ = -1, cloudAltitude_ = -1, cloudOpticalDepth_ = -1, cloudScale_ = -1;
+};
+
+// The cloud layer's shadow map's bake (fullscreen.vert +
+// cloud_shadow_bake.frag; render/cloud_shadow_map.h): the layer's
+// settings, where the map's texel (0, 0) lies and the sun.
+class CloudShadowBakeProgram {
+public:
+    CloudShadowBakeProgram() = default;
+    CloudShadowBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
+    explicit operator bool() const { return bool(program_); }
+    void use() const;
+    // corner_m: texel (0, 0)'s outer corner, absolute world x, z, m;
+    // texel_m: a texel's width, m; sun: towards it, unit.
+    void set(const CloudSettings& clouds, glm::vec2 corner_m, float texel_m, glm::vec3 sun) const;
+
+private:
+    gl::Program program_;
+    GLint cloudCover_ = -1, cloudAltitude_ = -1, cloudOpticalDepth_ = -1, cloudScale_ = -1;
+    GLint corner_ = -1, texel_ = -1, sun_ = -1;
 };
 
 // Programs with no uniforms of their own (all from the Frame block): the sky

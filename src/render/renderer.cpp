@@ -304,6 +304,8 @@ void Renderer::reloadShaders()
     s.labelPrograms.reset(); // built again from the new sources when next asked for
     s.bakedSky.reset(); // the bake shader may have changed
     s.physicalSkyBake = {};
+    s.cloudShadowBake = {};
+    s.cloudShadow.forget();
 }
 
 void Renderer::advanceTo(double time_s, glm::dvec3 viewpoint_m)

@@ -7,6 +7,7 @@
 #include "swell/renderer.h"
 
 #include "render/caustics_map.h"
+#include "render/cloud_shadow_map.h"
 #include "render/cpu_parts.h"
 #include "render/frame_uniforms.h"
 #include "render/host_depth.h"
@@ -113,6 +114,12 @@ struct Renderer::Impl {
     // across variants, which it does not depend on; empty until then, after
     // a shader reload and while the sky is not physical.
     SkyBakeProgram physicalSkyBake;
+    // The cloud layer's shadows on what the sun lights (cloud_shadow_map.h)
+    // and their bake's program: built when a scene first has clouds, kept
+    // across variants (it reads none of their defines); used while
+    // variant.cloudShadows.
+    CloudShadowMap cloudShadow;
+    CloudShadowBakeProgram cloudShadowBake;
     // The sky's light for the scene, found again when the sun or sky changed.
     const SkyLight& currentSkyLight();
 

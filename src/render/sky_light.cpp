@@ -27,6 +27,8 @@ SkyLight skyLightOf(const Scene& scene, const Atmosphere* atmosphere)
     if (!usesPhysicalSky(scene) || atmosphere == nullptr) {
         light.sunColor = scene.sun.color;
         light.sunIntensity = scene.sun.intensity;
+        light.clearSunColor = light.sunColor;
+        light.clearSunIntensity = light.sunIntensity;
         light.zenith = scene.sky.zenithColor;
         light.horizon = scene.sky.horizonColor;
         // The gradient's ambient, 0.45 mix(horizon, zenith, n.y / 2 + 1/2),
@@ -51,6 +53,12 @@ SkyLight skyLightOf(const Scene& scene, const Atmosphere* atmosphere)
     const glm::dvec3 sunLight = exposure / std::numbers::pi * cloudSun * atmosphere->sunTransmittance(sun);
     light.sunIntensity = std::max({sunLight.x, sunLight.y, sunLight.z});
     light.sunColor = light.sunIntensity > 0.0 ? sunLight / light.sunIntensity : glm::dvec3(0.0);
+    // ...and without the layer, for the frame that shades the sun by the
+    // layer's shadow at each point instead (cloud_shadow_map.h).
+    const glm::dvec3 clearSun = exposure / std::numbers::pi * atmosphere->sunTransmittance(sun);
+    light.sunCloudTransmittance = cloudSun;
+    light.clearSunIntensity = std::max({clearSun.x, clearSun.y, clearSun.z});
+    light.clearSunColor = light.clearSunIntensity > 0.0 ? clearSun / light.clearSunIntensity : glm::dvec3(0.0);
     // The sky the clouds leave (their light and what they hide), wherever
     // the frame looks at the sky's radiance.
     auto seen = [&](glm::dvec3 d, glm::dvec3 clear) { return cloudySkyRadiance(*atmosphere, clouds, d, sun, clear); };

@@ -21,6 +21,14 @@ struct SkyLight {
     // mesh.frag's ambient light on a surface facing n: sum_i ambientSh[i] * Y_i(n)
     // (swell::shHarmonics), the light an albedo of 1 reflects, displayed.
     std::array<glm::dvec3, 9> ambientSh{};
+    // The cloud layer's transmittance towards the sun from the sky's
+    // observer (cloudTransmittance; 1 without clouds), which sunIntensity
+    // holds, and the sun's light without it: where the layer's shadow map
+    // shades the sun point by point (cloudShadowsOn), the frame takes the
+    // latter and the map the layer.
+    double sunCloudTransmittance = 1.0;
+    glm::dvec3 clearSunColor{0.0};
+    double clearSunIntensity = 0.0;
 };
 
 // The atmosphere for these settings: built once per process per settings
@@ -35,6 +43,13 @@ SkyLight skyLightOf(const Scene& scene, const Atmosphere* atmosphere);
 inline bool usesPhysicalSky(const Scene& scene)
 {
     return scene.sky.cubemapFaces.empty() && scene.sky.model == SkyModel::Physical;
+}
+
+// Whether the sun's light is shaded point by point by the cloud layer's
+// shadow map (render/cloud_shadow_map.h): the physical sky with clouds.
+inline bool cloudShadowsOn(const Scene& scene)
+{
+    return usesPhysicalSky(scene) && scene.sky.clouds.cover > 0.0;
 }
 
 } // namespace swell::detail

@@ -373,6 +373,20 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         counters.drawCalls += kSkyFaces;
         bakedSky = skyBakeKeyOf(scene);
     }
+    // The cloud layer's shadows, baked again only when the clouds, the sun
+    // or the camera's neighbourhood changed; before every pass that reads them.
+    if (variant.cloudShadows) {
+        if (!cloudShadowBake)
+            cloudShadowBake = CloudShadowBakeProgram(sources, variant);
+        notify(true, "cloud shadows");
+        if (cloudShadow.update(cloudShadowBake, emptyVao.id(), scene.sky.clouds, base.sunDirection, v.origin,
+                               float(currentSkyLight().sunCloudTransmittance))) {
+            ++counters.drawCalls;
+            ++counters.viewsGpu.mipmaps;
+        }
+        notify(false, "cloud shadows");
+        cloudShadow.bind();
+    }
     // The sun's light under the water, before every pass that draws the world.
     drawCaustics(v, ownWorld != nullptr);
     const glm::ivec2 scaled = glm::max(glm::ivec2(glm::dvec2(size) * scene.reflection.resolutionScale), glm::ivec2(1));

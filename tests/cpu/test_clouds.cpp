@@ -3,7 +3,9 @@
 // whole yet textured (not a flat grey), that it has no cells (its
 // periodogram has no isolated peak), that cover 0 leaves the sky as it was,
 // and what its light must do (a thicker deck is darker below; a thin cloud
-// shines towards the sun; a deck is grey where the clear sky is blue).
+// shines towards the sun; a deck is grey where the clear sky is blue), and
+// where its shadow falls (the sun's ray from a point crosses the layer
+// where the geometry says, and is dimmed by the optical depth there).
 #include "swell/atmosphere.h"
 #include "swell/clouds.h"
 
@@ -278,6 +280,44 @@ TEST(CloudLayer, PeriodogramHasNoCellPeaks)
         }
     std::printf("highest peak: %.2f times its ring's mean at (%d, %d) cycles over %d samples\n", worst, worstX, worstY, n);
     EXPECT_LT(worst, kPeakRatio);
+}
+
+// The shadow at a point is the layer's optical depth where the point's ray
+// to the sun crosses the layer's altitude, over the slant path: straight
+// up under an overhead sun; for a sun 40 degrees up, 1.19 km of the way
+// towards it for each km of height between the point and the layer (a
+// ray cast from the observer, or at the wrong altitude, misses the
+// crossing); and every point along one ray under the layer shares it.
+// Nothing is shaded without a layer or over it.
+TEST(CloudLayer, ShadowIsTheDepthWhereTheSunRayCrossesTheLayer)
+{
+    CloudSettings clouds;
+    clouds.cover = 0.5;
+    clouds.scale_m = 1500.0;
+    clouds.altitude_m = 2000.0;
+    const glm::vec2 xz(731.0f, -412.0f);
+    const float overhead = swell::cloudShadowTransmittance(clouds, glm::vec3(xz.x, 0.0f, xz.y), glm::vec3(0.0f, 1.0f, 0.0f), 30.0f);
+    EXPECT_FLOAT_EQ(overhead, std::exp(-swell::cloudOpticalDepth(clouds, xz, 30.0f)));
+    const float elevation = float(40.0 * kPi / 180.0), azimuth = 0.7f;
+    const glm::vec3 sun(std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth));
+    int shaded = 0;
+    for (int k = 0; k < 200; ++k) {
+        const glm::vec3 p(37.0f * float(k) - 3000.0f, float(k % 7) * 40.0f, 23.0f * float(k));
+        const float run = (2000.0f - p.y) / std::tan(elevation);
+        const glm::vec2 crossing = glm::vec2(p.x, p.z) + run * glm::vec2(sun.x, sun.z) / glm::length(glm::vec2(sun.x, sun.z));
+        const float t = swell::cloudShadowTransmittance(clouds, p, sun, 30.0f);
+        EXPECT_NEAR(t, std::exp(-swell::cloudOpticalDepth(clouds, crossing, 30.0f) / std::sin(elevation)), 1e-4f);
+        // 300 m further up the same ray.
+        const glm::vec3 up = p + sun * (300.0f / sun.y);
+        EXPECT_NEAR(swell::cloudShadowTransmittance(clouds, up, sun, 30.0f), t, 1e-4f);
+        shaded += t < 0.1f;
+    }
+    EXPECT_GT(shaded, 20);
+    EXPECT_LT(shaded, 180);
+    EXPECT_EQ(swell::cloudShadowTransmittance(clouds, glm::vec3(0.0f, 2500.0f, 0.0f), sun, 30.0f), 1.0f);
+    CloudSettings none = clouds;
+    none.cover = 0.0;
+    EXPECT_EQ(swell::cloudShadowTransmittance(none, glm::vec3(xz.x, 0.0f, xz.y), sun, 30.0f), 1.0f);
 }
 
 } // namespace

@@ -55,7 +55,9 @@ TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
 // Without the wake or any surface source (wake.enabled = false; the variants above have the wake), with
 // every model and debug view, and without the caustics (water.caustics = false: the world's
 // shading reads no map, and the caustics pass is not built); the shafts of light
-// (water.shafts) on and off in turn, by debug view, the caustics' mean alone when on.
+// (water.shafts) on and off in turn, by debug view, the caustics' mean alone when on;
+// the cloud layer's shadows (render/cloud_shadow_map.h) with the debug views that
+// have no shafts.
 TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
 {
     swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
@@ -69,8 +71,9 @@ TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
             variant.surfaceSources.clear();
             variant.caustics = false;
             variant.shafts = int(view) % 2 == 0;
+            variant.cloudShadows = !variant.shafts;
             SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake, no caustics, shafts " +
-                         std::to_string(int(variant.shafts)));
+                         std::to_string(int(variant.shafts)) + ", cloud shadows " + std::to_string(int(variant.cloudShadows)));
             swell::detail::Programs programs;
             EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
             EXPECT_TRUE(programs.water && programs.capture);

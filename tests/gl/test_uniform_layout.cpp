@@ -1,6 +1,7 @@
 // The C++ mirrors of the std140 blocks must match what the driver lays out.
 #include "ocean/gerstner/gerstner_uniforms.h"
 #include "render/caustics_map.h"
+#include "render/cloud_shadow_map.h"
 #include "render/gpu_types.h"
 #include "render/surface_sources.h"
 #include "render/wake_texture.h"
@@ -179,6 +180,31 @@ TEST_F(UniformLayout, CausticsBlockMatchesItsCppMirror)
     EXPECT_EQ(offsetOf(p.id(), "causticsCells"), GLint(offsetof(C, cells)));
     EXPECT_EQ(offsetOf(p.id(), "causticsSliceDepth_m"), GLint(offsetof(C, sliceDepth_m)));
     EXPECT_EQ(blockSize(p.id(), "Caustics"), GLint(sizeof(C)));
+}
+
+// The CloudShadow block (cloud_shadow.glsl), every field used.
+const char* kCloudShadowProbe = R"(#include "cloud_shadow.glsl"
+void main() {
+    gl_Position = vec4(cloudShadowCorner_m, cloudShadowSize_m, cloudShadowSkySun);
+}
+)";
+
+TEST_F(UniformLayout, CloudShadowBlockMatchesItsCppMirror)
+{
+    auto files = std::map<std::string, std::string>();
+    const swell::gl::ShaderSources embedded = swell::gl::ShaderSources::embedded();
+    for (const std::string& f : embedded.fileNames())
+        files[f] = embedded.file(f);
+    files["probe.vert"] = kCloudShadowProbe;
+    files["probe.frag"] = "out vec4 c; void main() { c = vec4(1.0); }\n";
+    swell::gl::Program p = swell::gl::buildProgram(swell::gl::ShaderSources::fromMap(files),
+                                                   {{GL_VERTEX_SHADER, "probe.vert"}, {GL_FRAGMENT_SHADER, "probe.frag"}},
+                                                   {"SWELL_CLOUD_SHADOWS 1"});
+    using C = swell::detail::CloudShadowUniforms;
+    EXPECT_EQ(offsetOf(p.id(), "cloudShadowCorner_m"), GLint(offsetof(C, corner_m)));
+    EXPECT_EQ(offsetOf(p.id(), "cloudShadowSize_m"), GLint(offsetof(C, size_m)));
+    EXPECT_EQ(offsetOf(p.id(), "cloudShadowSkySun"), GLint(offsetof(C, skySun)));
+    EXPECT_EQ(blockSize(p.id(), "CloudShadow"), GLint(sizeof(C)));
 }
 
 // The surface sources' block (with the lattices of their foam's texture)
