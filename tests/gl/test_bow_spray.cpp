@@ -155,7 +155,7 @@ TEST_F(BowSpray, NoneBelowBeaufortSeven)
 {
     // 13.8 m/s: Beaufort 6, just below 7's 13.9; the sea with its crests.
     const Scene off = gale(13.8, false, 5.0, true), on = gale(13.8, true, 5.0, true);
-    const Camera camera = cameraAt(on.camera, kTime_s);
+    const Camera camera = overTheBow(on);
     const Added a = addedBy(still(off, camera), still(on, camera), {0.0, 0.0}, {1.0, 0.0});
     EXPECT_EQ(a.pixels, 0) << "spray drawn below Beaufort 7 from a hull under way";
 }
