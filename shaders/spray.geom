@@ -23,6 +23,12 @@ in vec3 vWind[];
 in float vAge_s[];
 in flat uint vKey[];
 in float vOpacity[];
+#ifdef SWELL_BOW_SPRAY
+// The bow's sheets (spray.vert built with SWELL_BOW_SPRAY): their launch
+// and drops are the bow's, their flight the same closed form.
+in vec4 vBow[];
+in vec2 vForward[];
+#endif
 
 out vec2 gRibbon;     // x: 0 at the streak's tail to 1 at its head; y: -1..1 across
 out vec3 gColor;      // lit and fogged, in the pass's output encoding
@@ -65,10 +71,16 @@ void main()
     float pixelSpread = 2.0 / (projectionFocalY * viewportSize.y);
     for (uint drop = 0u; drop < uint(SWELL_SPRAY_DROPS); ++drop) {
         bool mist = drop < uint(SWELL_SPRAY_MIST_DROPS);
+#ifdef SWELL_BOW_SPRAY
+        float tau_s = bowSprayTau_s(vKey[0], drop);
+        vec3 launch_mps = bowSprayLaunch(vKey[0], drop, vForward[0], vBow[0].xy, vBow[0].z, vBow[0].w);
+        float trail_s = mist ? float(SWELL_SPRAY_MIST_TRAIL_S) : float(SWELL_BOW_SPRAY_SHEET_TRAIL_S);
+#else
         float tau_s = sprayTau_s(vKey[0], drop);
         vec3 launch_mps = sprayLaunch(vKey[0], drop, vWind[0].xy, vWind[0].z);
-        vec3 air_mps = sprayAir(vKey[0], drop, vWind[0].xy, vWind[0].z);
         float trail_s = mist ? float(SWELL_SPRAY_MIST_TRAIL_S) : float(SWELL_SPRAY_DROP_TRAIL_S);
+#endif
+        vec3 air_mps = sprayAir(vKey[0], drop, vWind[0].xy, vWind[0].z);
         float tail_s = max(age_s - trail_s, 0.0);
         vec3 points[4];
         for (int k = 0; k < 4; ++k)
@@ -77,7 +89,13 @@ void main()
         float opacity = vOpacity[0] * smoothstep(-0.3, 0.3, points[3].y - vBirth[0].y);
         // Mist spreads as it flies (turbulent diffusion, chosen by eye),
         // fainter as it spreads; a drop stays a drop.
+#ifdef SWELL_BOW_SPRAY
+        // A sheet's drop stands for a ligament of the torn sheet, wider
+        // than the crest's drops (chosen by eye).
+        float halfWidth_m = mist ? 0.03 + 0.08 * age_s : 0.08;
+#else
         float halfWidth_m = mist ? 0.03 + 0.08 * age_s : 0.012;
+#endif
         opacity *= mist ? 0.6 * sqrt(0.03 / halfWidth_m) : 0.9;
         float pixel_m = distance(eyePosition, points[3]) * pixelSpread;
         float drawn_m = max(halfWidth_m, 0.6 * pixel_m);

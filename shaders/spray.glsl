@@ -118,4 +118,63 @@ vec3 sprayDropOffset(vec3 launch_mps, vec3 air_mps, float tau_s, float age_s)
     return terminal * age_s + (launch_mps - terminal) * tau_s * (1.0 - exp(-age_s / tau_s));
 }
 
+// The bow's spray (spray.vert built with SWELL_BOW_SPRAY): its lives are
+// the crest spray's (sprayLife, keyed by the body and the slot); what
+// follows is what differs.
+
+// The sample of the hull's history (newest first, one every
+// 1 / SWELL_BOW_SPRAY_SAMPLES_PER_S s, the newest lag_s before now) that
+// holds the hull at a life's birth, age_s ago: the last sample before it.
+int bowSpraySample(float age_s, float lag_s)
+{
+    return max(int(ceil((age_s - lag_s) * float(SWELL_BOW_SPRAY_SAMPLES_PER_S))), 0);
+}
+
+// Whether a life is drawn: a share of the slots, the hull's at its birth
+// (objects/bow_spray.h).
+bool bowSprayLives(uint key, float share) { return sprayUnit(key, 1u) < share; }
+
+// A sheet drop's fall speed in still air, m/s, for its diameter: Gunn and
+// Kinzer 1949 (J. Meteorol. 6, "The terminal velocity of fall for water
+// droplets in stagnant air", table 2) measured 2.06 m/s at 0.5 mm and
+// 4.03 m/s at 1.0 mm, close to a line through the origin over 0.4 to
+// 1.0 mm (within 3%): 4.03 m/s per mm. Stokes' drag (sprayTau_s) would
+// have such drops fall 30 m/s and more: their Reynolds numbers are in the
+// hundreds.
+float bowSprayFallSpeed_mps(float diameter_m) { return 4030.0 * diameter_m; }
+
+// A drop's response time, s: the mist's as the crest's (sprayTau_s), the
+// sheet's drops of 0.4 to 1.0 mm with the drag that gives their measured
+// fall speed, linearised: tau = fall speed / g.
+float bowSprayTau_s(uint key, uint drop)
+{
+    if (drop < uint(SWELL_SPRAY_MIST_DROPS))
+        return sprayTau_s(key, drop);
+    float d_m = (400.0 + 600.0 * sprayUnit(key, 10u + drop)) * 1e-6;
+    return bowSprayFallSpeed_mps(d_m) / 9.81;
+}
+
+// A bow drop's launch velocity, m/s, in the earth's frame. The water the
+// bow meets rises up it at about the hull's speed U through the water
+// (relative to the hull the flow meets the stem at U, and its stagnation
+// head U^2 / 2g lifts the bow wave) and leaves the flare as a sheet thrown
+// up and outward; a bow plunging into a wave throws it faster, the water
+// running up the flare faster than the two close (Wagner 1932, ZAMM 12,
+// "Ueber Stoss- und Gleitvorgaenge an der Oberflaeche von
+// Fluessigkeiten"). So the sheet leaves at 0.5 to 1 U plus 0.5 to 1
+// times the plunge's speed, outward, its rise 0.45 to 0.9 of that; of the hull's
+// own speed it keeps 0.3 to 0.6 forward (the sheet is turned aft along
+// the hull), so the hull overtakes it and it falls back beside the bow
+// and astern; each drop scattered 0.25 m/s about its clump's, so that a
+// clump's drops fly together as a piece of the sheet (chosen by eye). forward, outward: unit, horizontal (x, z).
+vec3 bowSprayLaunch(uint key, uint drop, vec2 forward, vec2 outward, float speed_mps, float plunge_mps)
+{
+    float sheet_mps = speed_mps * (0.5 + 0.5 * sprayUnit(key, 70u)) + plunge_mps * (0.5 + 0.5 * sprayUnit(key, 71u));
+    float rise = 0.45 + 0.45 * sprayUnit(key, 72u);
+    vec2 level = outward * (sheet_mps * sqrt(1.0 - rise * rise)) +
+                 forward * (speed_mps * (0.3 + 0.3 * sprayUnit(key, 73u)));
+    vec3 scatter = vec3(sprayUnit(key, 80u + drop), sprayUnit(key, 90u + drop), sprayUnit(key, 100u + drop)) - 0.5;
+    return vec3(level.x, sheet_mps * rise, level.y) + 0.5 * scatter;
+}
+
 #endif

@@ -155,6 +155,24 @@ public:
     const BodyState& state() const { return next_; }
     const BodyState& previousState() const { return previous_; }
 
+    // A point of the shape (its own frame, m) at the last step (state()):
+    // where it is and how fast it moves, world frame. Between the steps'
+    // states, as poseAt() is.
+    struct PointMotion {
+        glm::dvec3 position_m{0.0};
+        glm::dvec3 velocity_m_per_s{0.0};
+    };
+    PointMotion pointAt(glm::dvec3 shapePoint_m) const;
+    // The water the steps float the body on at world x, z near it (within
+    // its reach of the centre of mass), at the last step: its height, m, and
+    // how fast it rises there, m/s (the samples' interpolation in time the
+    // steps use). Both 0 before the first step.
+    struct WaterMotion {
+        double height_m = 0.0;
+        double rise_m_per_s = 0.0;
+    };
+    WaterMotion waterAt(glm::dvec2 xz_m) const;
+
     double mass_kg() const { return mass_kg_; }
     double volume_m3() const { return volume_m3_; }
     // The linear damping coefficients used: heave, N s/m; roll and pitch (body x, z), N m s.

@@ -345,6 +345,29 @@
 #define SWELL_SPRAY_MIST_DROPS 3
 #define SWELL_SPRAY_MIST_TRAIL_S 0.2
 #define SWELL_SPRAY_DROP_TRAIL_S 0.1
+// Spray from the bow of a hull under way (shaders/spray.vert built with
+// SWELL_BOW_SPRAY 1; objects/bow_spray.h): the first SWELL_BOW_SPRAY_HULLS
+// bodies under way, SWELL_BOW_SPRAY_SLOTS slots each (even slots to
+// starboard, odd to port), living as the crest spray's clumps do
+// (SWELL_SPRAY_LIFETIME_S), born on the bow's waterline from the stem aft
+// over SWELL_BOW_SPRAY_REACH of its length, given as SWELL_BOW_SPRAY_STATIONS
+// points a side. Whether a life is drawn and how fast its sheet leaves
+// follow the hull at its birth: SWELL_BOW_SPRAY_HISTORY samples of it, one
+// a water sample of the bodies' steps (SWELL_BOW_SPRAY_SAMPLES_PER_S),
+// newest first, longer together than a life. A life's cell key is
+// (its body's index, SWELL_BOW_SPRAY_CELL_Y): no lattice cell of the crest
+// spray lies there (5000 km from the origin).
+#define SWELL_BOW_SPRAY_HULLS 2
+#define SWELL_BOW_SPRAY_SLOTS 256
+#define SWELL_BOW_SPRAY_STATIONS 5
+#define SWELL_BOW_SPRAY_REACH 0.3
+#define SWELL_BOW_SPRAY_HISTORY 56
+#define SWELL_BOW_SPRAY_SAMPLES_PER_S 30
+#define SWELL_BOW_SPRAY_CELL_Y (-2000000)
+// Its drops (shaders/spray.glsl, bowSprayTau_s): the first
+// SWELL_SPRAY_MIST_DROPS mist as the crest's, the rest the sheet's drops of
+// 0.4 to 1.2 mm, drawn as streaks of SWELL_BOW_SPRAY_SHEET_TRAIL_S.
+#define SWELL_BOW_SPRAY_SHEET_TRAIL_S 0.2
 
 // The temporal resolve (shaders/temporal_resolve.frag, render/temporal_resolve.h,
 // docs/RENDERING.md "Temporal resolve"): the main pass's depth and the

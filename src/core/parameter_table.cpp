@@ -417,7 +417,8 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.water.spray; },
            {.key = "water.spray", .kind = K::Flag, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
             .description = "spray torn from the breaking crests and carried downwind, from Beaufort 7 (13.9 m/s) "
-                           "up, growing with the wind to Beaufort 10 (spectral model only); off: none"}),
+                           "up, growing with the wind to Beaufort 10 (spectral model only), and thrown from the "
+                           "bows of rigid bodies under way (any model); off: none"}),
         // [reflection]
         at([](auto& s, std::size_t) -> auto& { return s.reflection.mode; },
            {.key = "reflection.mode", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kReflectionModes.size() - 1.0,

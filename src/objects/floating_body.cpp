@@ -377,6 +377,32 @@ void FloatingBody::step()
     ++stepsTaken_;
 }
 
+FloatingBody::PointMotion FloatingBody::pointAt(glm::dvec3 shapePoint_m) const
+{
+    // The velocity the last step moved it with: its path between the two
+    // states, as poseAt() interpolates it (rigid: the centre of mass's
+    // velocity plus the turn's, but exactly what the drawn poses do).
+    auto place = [&](const BodyState& s) { return s.centerOfMass_m + s.orientation * (shapePoint_m - centerOfMassInShape_m_); };
+    PointMotion m;
+    m.position_m = place(next_);
+    if (next_.step > previous_.step)
+        m.velocity_m_per_s = (m.position_m - place(previous_)) / (double(next_.step - previous_.step) * kBodyStep_s);
+    return m;
+}
+
+FloatingBody::WaterMotion FloatingBody::waterAt(glm::dvec2 xz_m) const
+{
+    // The samples bracket the last step's start (step() sampled for it):
+    // its end lies within them too, at most at `to`.
+    const detail::BodyWater& w = *water_;
+    if (w.firstStep < 0)
+        return {};
+    const double sample_s = kBodyStepsPerWaterSample * kBodyStep_s;
+    const double within = std::clamp(double(next_.step - w.firstStep) / kBodyStepsPerWaterSample, 0.0, 1.0);
+    const double from = w.from.heightAt(xz_m), to = w.to.heightAt(xz_m);
+    return {from + (to - from) * within, (to - from) / sample_s};
+}
+
 std::int64_t FloatingBody::lastStepFor(double time_s)
 {
     // The step whose end is the first after time_s: state k covers

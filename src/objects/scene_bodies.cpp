@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -138,6 +139,26 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
                 hi = glm::max(hi, glm::dvec2(p.x, p.z));
             }
             footprints_.back() = {0.5 * (hi.x - lo.x), 0.5 * (hi.y - lo.y), settings.mass_kg / settings.waterDensity_kg_per_m3};
+            // Under way, its bow: the heading of travel turned into the
+            // shape's frame (yaw_deg turns it about +y).
+            const glm::dvec2 travel(o.velocity_m_per_s.x, o.velocity_m_per_s.z);
+            if (glm::length(travel) > 0.0) {
+                const glm::dquat yaw = glm::angleAxis(glm::radians(o.yaw_deg), glm::dvec3(0.0, 1.0, 0.0));
+                const glm::dvec3 forward = glm::inverse(yaw) * glm::dvec3(travel.x, 0.0, travel.y);
+                if (std::optional<BowLine> line =
+                        bowLineOf(shape, settings.mass_kg, settings.waterDensity_kg_per_m3, forward,
+                                  glm::length(travel))) {
+                    Bow b;
+                    b.line = *line;
+                    for (int side = 0; side < 2; ++side)
+                        for (int k = 0; k < SWELL_BOW_SPRAY_STATIONS; ++k)
+                            b.stationsInModel[side][k] = line->stations[side][k] / o.scale;
+                    b.velocity_m_per_s = travel;
+                    b.samples.assign(SWELL_BOW_SPRAY_HISTORY, {-1, BowSample{}});
+                    bows_.resize(i + 1);
+                    bows_[i] = std::move(b);
+                }
+            }
         } catch (const InputError& e) {
             // The key to change: the mass the object gave, or its inertia;
             // the shape's problems are its path's.
@@ -223,9 +244,45 @@ void SceneBodies::advanceTo(double sceneTime_s)
         for (const auto& b : bodies_)
             if (b && b->state().step < n)
                 b->advanceToStep(n);
+        sampleBows(n);
     }
     if (wake_)
         advanceWakeFor(last - 1); // the frame's wake: the states that bracket time_s
+}
+
+void SceneBodies::sampleBows(std::int64_t step)
+{
+    // Every water sample: the steps there have the water at its time
+    // (FloatingBody::waterAt), not a blend.
+    if (step % kBodyStepsPerWaterSample != 0)
+        return;
+    const std::int64_t index = step / kBodyStepsPerWaterSample;
+    for (std::size_t i = 0; i < bows_.size(); ++i)
+        if (bows_[i] && bodies_[i] && bodies_[i]->state().step == step)
+            bows_[i]->samples[std::size_t(index % SWELL_BOW_SPRAY_HISTORY)] = {
+                index, bowSampleOf(*bodies_[i], bows_[i]->line, bows_[i]->velocity_m_per_s)};
+}
+
+std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> SceneBodies::bowHistory(std::size_t i, double time_s, double& lag_s) const
+{
+    static_assert(SWELL_BOW_SPRAY_SAMPLES_PER_S * kBodyStepsPerWaterSample == kBodyStepsPerSecond,
+                  "a bow sample is a water sample of the steps");
+    std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> history{};
+    const double clock = clock_s(time_s);
+    const std::int64_t newest = std::int64_t(std::floor(clock * SWELL_BOW_SPRAY_SAMPLES_PER_S));
+    lag_s = clock - double(newest) / SWELL_BOW_SPRAY_SAMPLES_PER_S;
+    const Bow* b = bow(i);
+    if (!b)
+        return history;
+    for (int j = 0; j < SWELL_BOW_SPRAY_HISTORY; ++j) {
+        const std::int64_t index = newest - j;
+        if (index < 0)
+            break;
+        const auto& [kept, sample] = b->samples[std::size_t(index % SWELL_BOW_SPRAY_HISTORY)];
+        if (kept == index)
+            history[std::size_t(j)] = sample;
+    }
+    return history;
 }
 
 std::optional<glm::dmat4> SceneBodies::poseAt(std::size_t i, double time_s)

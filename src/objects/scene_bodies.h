@@ -4,12 +4,14 @@
 #pragma once
 
 #include "assets/mesh_data.h"
+#include "objects/bow_spray.h"
 #include "objects/scene_wake.h"
 #include "swell/floating_body.h"
 #include "swell/scene.h"
 
 #include <glm/mat4x4.hpp>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -67,7 +69,26 @@ public:
     // The wall time those steps took, ms (for the benchmark; never read by the simulation).
     double wakeSteps_ms() const { return wakeSteps_ms_; }
 
+    // A body under way's bow (objects/bow_spray.h), for the bow's spray.
+    struct Bow {
+        BowLine line; // in the body's shape frame (the object's scaled)
+        // line.stations in the object's model frame: what its pose (poseAt) places.
+        std::array<std::array<glm::dvec3, SWELL_BOW_SPRAY_STATIONS>, 2> stationsInModel{};
+        glm::dvec2 velocity_m_per_s{0.0}; // over the ground, x, z
+        // Its samples, one a water sample of the steps, each kept with its
+        // index (a step of SWELL_BOW_SPRAY_SAMPLES_PER_S) in slot index % size.
+        std::vector<std::pair<std::int64_t, BowSample>> samples;
+    };
+    // Object i's bow when it is a body under way (else null).
+    const Bow* bow(std::size_t i) const { return i < bows_.size() && bows_[i] ? &*bows_[i] : nullptr; }
+    // Its samples at scene time time_s, newest first, one every
+    // 1 / SWELL_BOW_SPRAY_SAMPLES_PER_S s (a sample not taken yet, before
+    // the bodies' start, holds nothing); lag_s: the newest one's age at time_s.
+    std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> bowHistory(std::size_t i, double time_s, double& lag_s) const;
+
 private:
+    // Samples each bow at body step `step` when it is a water sample's.
+    void sampleBows(std::int64_t step);
     // What each body's footprint on the wake is, besides where it stands.
     struct Footprint {
         double halfLength_m = 0.0, halfBeam_m = 0.0, volume_m3 = 0.0;
@@ -91,6 +112,7 @@ private:
     std::int64_t wakeStepsTaken_ = 0;
     double wakeSteps_ms_ = 0.0;
     std::vector<std::unique_ptr<FloatingBody>> bodies_; // null for objects that are not bodies
+    std::vector<std::optional<Bow>> bows_;             // per object: set for bodies under way
     std::vector<double> scale_;
     std::size_t count_ = 0;
 };

@@ -190,6 +190,45 @@ void SprayProgram::set(double time_s, glm::ivec2 firstCell, glm::vec2 corner_m, 
     glProgramUniform1f(program_.id(), amount_, amount);
 }
 
+BowSprayProgram::BowSprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
+    : program_(gl::buildProgram(
+          sources, {{GL_VERTEX_SHADER, "spray.vert"}, {GL_GEOMETRY_SHADER, "spray.geom"}, {GL_FRAGMENT_SHADER, "spray.frag"}},
+          [&] {
+              std::vector<std::string> defines = definesOf(variant);
+              defines.push_back("SWELL_BOW_SPRAY 1");
+              return defines;
+          }())),
+      time_(requiredUniform(program_, "sprayTime_s", "spray.vert")),
+      windDirection_(requiredUniform(program_, "bowWindDirection", "spray.vert")),
+      wind_(requiredUniform(program_, "sprayWindSpeed_mps", "spray.vert")),
+      hulls_(requiredUniform(program_, "bowHulls", "spray.vert")),
+      body_(requiredUniform(program_, "bowBody", "spray.vert")),
+      motion_(requiredUniform(program_, "bowMotion", "spray.vert")),
+      across_(requiredUniform(program_, "bowAcross", "spray.vert")),
+      stations_(requiredUniform(program_, "bowStations", "spray.vert")),
+      history_(requiredUniform(program_, "bowHistory", "spray.vert")),
+      lag_(requiredUniform(program_, "bowHistoryLag_s", "spray.vert"))
+{
+}
+
+void BowSprayProgram::use() const { glUseProgram(program_.id()); }
+
+void BowSprayProgram::set(double time_s, glm::vec2 windDirection, float windSpeed_mps, const BowSprayHulls& h) const
+{
+    const GLuint id = program_.id();
+    const glm::vec2 t = sprayPeriodTime(time_s); // as the crest spray's (SprayProgram::set)
+    glProgramUniform2f(id, time_, t.x, t.y);
+    glProgramUniform2f(id, windDirection_, windDirection.x, windDirection.y);
+    glProgramUniform1f(id, wind_, windSpeed_mps);
+    glProgramUniform1i(id, hulls_, h.count);
+    glProgramUniform1iv(id, body_, GLsizei(h.body.size()), h.body.data());
+    glProgramUniform4fv(id, motion_, GLsizei(h.motion.size()), glm::value_ptr(h.motion[0]));
+    glProgramUniform4fv(id, across_, GLsizei(h.across.size()), glm::value_ptr(h.across[0]));
+    glProgramUniform2fv(id, stations_, GLsizei(h.stations.size()), glm::value_ptr(h.stations[0]));
+    glProgramUniform4fv(id, history_, GLsizei(h.history.size()), glm::value_ptr(h.history[0]));
+    glProgramUniform1f(id, lag_, h.historyLag_s);
+}
+
 void BlockProgram::use() const { glUseProgram(program_.id()); }
 
 LabelProgram::LabelProgram(gl::Program program)
@@ -245,6 +284,7 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
         p.caustics = buildCausticsPrograms(sources, variant);
     if (variant.oceanFile == "ocean/spectral.glsl")
         p.spray = SprayProgram(sources, variant);
+    p.bowSpray = BowSprayProgram(sources, variant);
     p.capture = BlockProgram(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "water.vert"}}, definesOf(variant),
                                               {"vRestPoint", "vPosition", "vNormal"}));
     p.probe = BlockProgram(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "surface_probe.comp"}}, definesOf(variant)));

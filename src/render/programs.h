@@ -8,11 +8,14 @@
 #include "render/temporal_resolve.h"
 #include "swell/gl/shader.h"
 #include "swell/scene.h"
+#include "swell/shader_constants.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -152,6 +155,34 @@ private:
     GLint time_ = -1, firstCell_ = -1, corner_ = -1, cornerFromGrid_ = -1, wind_ = -1, amount_ = -1;
 };
 
+// The bow's spray (the spray's files built with SWELL_BOW_SPRAY): the
+// hulls under way for the frame (objects/bow_spray.h, spray.vert's uniforms).
+struct BowSprayHulls {
+    int count = 0;
+    std::array<int, SWELL_BOW_SPRAY_HULLS> body{};        // object indices
+    std::array<glm::vec4, SWELL_BOW_SPRAY_HULLS> motion{}; // velocity (x, z), m/s; heading (x, z)
+    std::array<glm::vec4, SWELL_BOW_SPRAY_HULLS> across{}; // towards the first side (x, z); speed, m/s
+    std::array<glm::vec2, SWELL_BOW_SPRAY_HULLS * 2 * SWELL_BOW_SPRAY_STATIONS> stations{}; // relative to the render origin, m
+    std::array<glm::vec4, SWELL_BOW_SPRAY_HULLS * SWELL_BOW_SPRAY_HISTORY> history{};     // share, plunge m/s, the sheet's height m
+    float historyLag_s = 0.0f;
+};
+
+class BowSprayProgram {
+public:
+    BowSprayProgram() = default;
+    BowSprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
+    void use() const;
+    explicit operator bool() const { return bool(program_); }
+    // time_s: the simulated time; the wind's direction (x, z, unit) and
+    // speed at 10 m (m/s); the hulls.
+    void set(double time_s, glm::vec2 windDirection, float windSpeed_mps, const BowSprayHulls& hulls) const;
+
+private:
+    gl::Program program_;
+    GLint time_ = -1, windDirection_ = -1, wind_ = -1, hulls_ = -1, body_ = -1, motion_ = -1, across_ = -1,
+          stations_ = -1, history_ = -1, lag_ = -1;
+};
+
 struct Programs {
     BlockProgram water, sky, waterline, fxaa, capture, probe;
     // The host's geometry seen from under the water (sky.vert + underwater_host.frag).
@@ -172,6 +203,9 @@ struct Programs {
     CausticsPrograms caustics;
     // The spray (spectral model only: the others have no breaking crests).
     SprayProgram spray;
+    // The spray from the bows of hulls under way (any wave model: it needs
+    // the wind alone).
+    BowSprayProgram bowSpray;
     // The temporal resolve (fullscreen.vert + temporal_resolve.frag, then
     // temporal_present.frag; render/temporal_resolve.h).
     TemporalPrograms temporal;

@@ -283,7 +283,13 @@ struct Renderer::Impl {
     void drawCaustics(const ViewFrame& v, bool ownWorld);
 
     void drawWater(bool inAir);
+    // The spray (shaders/spray.vert): over the finished frame, blended,
+    // depth-tested against the world and the water, writing no depth; none
+    // below Beaufort 7. The crests' (its amount growing with the wind) and
+    // the bows' of the bodies under way.
     void drawSpray(const ViewFrame& v, const View& view);
+    void drawCrestSpray(const ViewFrame& v, const View& view);
+    void drawBowSpray(const ViewFrame& v);
 
     // The waterline mask for the main pass (render/waterline.h): drawn from
     // the water grid when the near plane can lie on either side of the

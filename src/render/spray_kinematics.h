@@ -2,7 +2,8 @@
 // line and in float as the shader computes: which slot of the lattice
 // lives when and where in its cell, whether the crest signal (the
 // whitecaps' foam there) lets it live, its launch, the air its drops meet
-// and each drop's flight. tests/gl/test_spray_kinematics.cpp runs the
+// and each drop's flight; and the bow spray's (the hull's sample at a
+// life's birth, its launch, its drops). tests/gl/test_spray_kinematics.cpp runs the
 // shader's functions and these over a set of seeds and times.
 #pragma once
 
@@ -98,6 +99,37 @@ inline glm::vec3 sprayDropOffset(glm::vec3 launch_mps, glm::vec3 air_mps, float 
 {
     const glm::vec3 terminal = air_mps + glm::vec3(0.0f, -9.81f * tau_s, 0.0f);
     return terminal * age_s + (launch_mps - terminal) * tau_s * (1.0f - std::exp(-age_s / tau_s));
+}
+
+// The bow's spray (spray.glsl, after sprayDropOffset).
+inline int bowSpraySample(float age_s, float lag_s)
+{
+    return std::max(int(std::ceil((age_s - lag_s) * float(SWELL_BOW_SPRAY_SAMPLES_PER_S))), 0);
+}
+
+inline bool bowSprayLives(std::uint32_t key, float share) { return sprayUnit(key, 1u) < share; }
+
+inline float bowSprayFallSpeed_mps(float diameter_m) { return 4030.0f * diameter_m; }
+
+inline float bowSprayTau_s(std::uint32_t key, std::uint32_t drop)
+{
+    if (drop < std::uint32_t(SWELL_SPRAY_MIST_DROPS))
+        return sprayTau_s(key, drop);
+    const float d_m = (400.0f + 600.0f * sprayUnit(key, 10u + drop)) * 1e-6f;
+    return bowSprayFallSpeed_mps(d_m) / 9.81f;
+}
+
+inline glm::vec3 bowSprayLaunch(std::uint32_t key, std::uint32_t drop, glm::vec2 forward, glm::vec2 outward,
+                                float speed_mps, float plunge_mps)
+{
+    const float sheet_mps =
+        speed_mps * (0.5f + 0.5f * sprayUnit(key, 70u)) + plunge_mps * (0.5f + 0.5f * sprayUnit(key, 71u));
+    const float rise = 0.45f + 0.45f * sprayUnit(key, 72u);
+    const glm::vec2 level = outward * (sheet_mps * std::sqrt(1.0f - rise * rise)) +
+                            forward * (speed_mps * (0.3f + 0.3f * sprayUnit(key, 73u)));
+    const glm::vec3 scatter =
+        glm::vec3(sprayUnit(key, 80u + drop), sprayUnit(key, 90u + drop), sprayUnit(key, 100u + drop)) - 0.5f;
+    return glm::vec3(level.x, sheet_mps * rise, level.y) + 0.5f * scatter;
 }
 
 } // namespace swell::detail

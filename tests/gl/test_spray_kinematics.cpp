@@ -2,7 +2,8 @@
 // (src/render/spray_kinematics.h): a compute probe runs the shader's
 // functions for a set of seeds (cells, slots, times, foam) and the C++
 // twin must give the same lives, keys and ages, and the same drop places
-// within a millimetre (float's exp and rounding).
+// within a millimetre (float's exp and rounding). The bow's spray likewise:
+// the sample a life reads, whether it lives, its launch and its drops.
 #include "render/spray_kinematics.h"
 #include "support/gl_test.h"
 #include "support/shader_probe.h"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace {
@@ -35,6 +37,13 @@ struct Result {
 };
 
 constexpr float kWind_mps = 20.0f;
+
+std::uint32_t floatBitsOf(float x)
+{
+    std::uint32_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    return bits;
+}
 constexpr float kYoungFoam = 0.6f;
 const glm::vec2 kWindDirection(std::cos(200.0f * 0.0174532925f), std::sin(200.0f * 0.0174532925f));
 
@@ -141,6 +150,108 @@ TEST_F(SprayKinematicsTwin, ShaderAndCppAgreeForEverySeed)
     EXPECT_GT(compared, int(seeds.size()) * 9 / 10);
     EXPECT_GT(living, 10);
     EXPECT_LT(living, compared - 10);
+}
+
+struct BowSeed {
+    glm::vec4 forwardOutward; // x, y: heading; z, w: outward
+    glm::vec4 motion;         // x: speed m/s; y: plunge m/s; z: share; w: the history's lag, s
+    glm::uvec4 keyAge;        // x: key; y: the age's bits
+};
+
+struct BowResult {
+    glm::ivec4 sampleLives; // x: sample; y: lives
+    glm::vec4 drops[SWELL_SPRAY_DROPS];
+    glm::vec4 launch[SWELL_SPRAY_DROPS];
+};
+
+const char* const kBowProbe = R"(
+#include "spray.glsl"
+layout(local_size_x = 1) in;
+struct BowSeed { vec4 forwardOutward; vec4 motion; uvec4 keyAge; };
+struct BowResult { ivec4 sampleLives; vec4 drops[SWELL_SPRAY_DROPS]; vec4 launch[SWELL_SPRAY_DROPS]; };
+layout(std430, binding = 0) readonly buffer Seeds { BowSeed seeds[]; };
+layout(std430, binding = 1) writeonly buffer Results { BowResult results[]; };
+uniform vec2 windDirection;
+uniform float windSpeed_mps;
+void main()
+{
+    BowSeed s = seeds[gl_GlobalInvocationID.x];
+    uint key = s.keyAge.x;
+    float age_s = uintBitsToFloat(s.keyAge.y);
+    BowResult r;
+    r.sampleLives = ivec4(bowSpraySample(age_s, s.motion.w), bowSprayLives(key, s.motion.z) ? 1 : 0, 0, 0);
+    for (uint d = 0u; d < uint(SWELL_SPRAY_DROPS); ++d) {
+        vec3 launch = bowSprayLaunch(key, d, s.forwardOutward.xy, s.forwardOutward.zw, s.motion.x, s.motion.y);
+        vec3 air = sprayAir(key, d, windDirection, windSpeed_mps);
+        float tau_s = bowSprayTau_s(key, d);
+        r.drops[d] = vec4(sprayDropOffset(launch, air, tau_s, age_s), tau_s);
+        r.launch[d] = vec4(launch, 0.0);
+    }
+    results[gl_GlobalInvocationID.x] = r;
+}
+)";
+
+TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
+{
+    static_assert(sizeof(BowResult) == 16 + 2 * 16 * SWELL_SPRAY_DROPS, "std430 layout");
+    static_assert(sizeof(BowSeed) == 48, "std430 layout");
+    std::vector<BowSeed> seeds;
+    // Headings all round, either side, speeds from a crawl to 8 m/s,
+    // plunges from none to a slam's, shares from none to all, ages over a
+    // life and lags over a sample.
+    for (int n = 0; n < 240; ++n) {
+        const float heading = 0.37f * float(n);
+        const glm::vec2 forward(std::cos(heading), std::sin(heading));
+        const float side = n % 2 == 0 ? 1.0f : -1.0f;
+        const glm::vec2 outward = glm::normalize(side * glm::vec2(-forward.y, forward.x) + 0.3f * float(n % 3) * forward);
+        const float age_s = float(SWELL_SPRAY_LIFETIME_S) * float((n * 37) % 101) / 101.0f + 0.003f;
+        seeds.push_back({glm::vec4(forward, outward),
+                         glm::vec4(0.5f + 0.03f * float(n), 0.02f * float(n % 90), float(n % 11) / 10.0f,
+                                   float(n % 7) / 7.0f / float(SWELL_BOW_SPRAY_SAMPLES_PER_S)),
+                         glm::uvec4(sprayHash(std::uint32_t(n) * 2654435761u), floatBitsOf(age_s), 0u, 0u)});
+    }
+    const swell::gl::Program program = swell::test::buildShaderProbe(kBowProbe);
+    swell::gl::Buffer in = swell::gl::Buffer::create(), out = swell::gl::Buffer::create();
+    glNamedBufferData(in.id(), GLsizeiptr(seeds.size() * sizeof(BowSeed)), seeds.data(), GL_STATIC_DRAW);
+    glNamedBufferData(out.id(), GLsizeiptr(seeds.size() * sizeof(BowResult)), nullptr, GL_DYNAMIC_READ);
+    const GLuint id = program.id();
+    glUseProgram(id);
+    glProgramUniform2f(id, glGetUniformLocation(id, "windDirection"), kWindDirection.x, kWindDirection.y);
+    glProgramUniform1f(id, glGetUniformLocation(id, "windSpeed_mps"), kWind_mps);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    glDispatchCompute(GLuint(seeds.size()), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<BowResult> gpu(seeds.size());
+    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(gpu.size() * sizeof(BowResult)), gpu.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+    glUseProgram(0);
+    int living = 0;
+    for (std::size_t i = 0; i < seeds.size(); ++i) {
+        const BowSeed& s = seeds[i];
+        const std::uint32_t key = s.keyAge.x;
+        float age_s;
+        std::memcpy(&age_s, &s.keyAge.y, sizeof age_s);
+        const glm::vec2 forward(s.forwardOutward.x, s.forwardOutward.y), outward(s.forwardOutward.z, s.forwardOutward.w);
+        EXPECT_EQ(gpu[i].sampleLives.x, bowSpraySample(age_s, s.motion.w)) << "seed " << i;
+        const bool lives = bowSprayLives(key, s.motion.z);
+        living += lives;
+        EXPECT_EQ(gpu[i].sampleLives.y != 0, lives) << "seed " << i;
+        for (std::uint32_t d = 0; d < SWELL_SPRAY_DROPS; ++d) {
+            const glm::vec3 launch = bowSprayLaunch(key, d, forward, outward, s.motion.x, s.motion.y);
+            EXPECT_LT(glm::length(glm::vec3(gpu[i].launch[d]) - launch), 1e-5f * (1.0f + glm::length(launch)))
+                << "seed " << i << " drop " << d;
+            const float tau_s = bowSprayTau_s(key, d);
+            EXPECT_NEAR(gpu[i].drops[d].w, tau_s, 1e-6f * tau_s) << "seed " << i << " drop " << d;
+            const glm::vec3 air = sprayAir(key, d, kWindDirection, kWind_mps);
+            const glm::vec3 offset = sprayDropOffset(launch, air, tau_s, age_s);
+            EXPECT_LT(glm::length(glm::vec3(gpu[i].drops[d]) - offset), 1e-3f) << "seed " << i << " drop " << d;
+        }
+    }
+    // Both outcomes of the share met.
+    EXPECT_GT(living, 20);
+    EXPECT_LT(living, int(seeds.size()) - 20);
 }
 
 } // namespace
