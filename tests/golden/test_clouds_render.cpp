@@ -7,6 +7,7 @@
 //   where the mirrored rays meet them;
 // - its shadows (render/cloud_shadow_map.h) fall on the sea and the world
 //   where the C++ model's sun rays are blocked, point by point.
+#include "support/statistics.h"
 #include "support/camera_rays.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
@@ -181,25 +182,6 @@ double linearBlueness(const std::uint8_t* p)
     return swell::test::srgbToLinear(p[2]) - swell::test::srgbToLinear(p[0]);
 }
 
-// Pearson's correlation of two series.
-double correlation(const std::vector<double>& a, const std::vector<double>& b)
-{
-    double ma = 0.0, mb = 0.0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        ma += a[i];
-        mb += b[i];
-    }
-    ma /= double(a.size());
-    mb /= double(b.size());
-    double ab = 0.0, aa = 0.0, bb = 0.0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        ab += (a[i] - ma) * (b[i] - mb);
-        aa += (a[i] - ma) * (a[i] - ma);
-        bb += (b[i] - mb) * (b[i] - mb);
-    }
-    return ab / std::sqrt(std::max(aa * bb, 1e-30));
-}
-
 // The sea seen from 120 m up, looking down, under scattered clouds: how
 // much each water pixel's brightness changed against the same sea under
 // the clear sky (linear luminance) follows the C++ model's transmittance
@@ -259,7 +241,7 @@ TEST_F(CloudsRender, ShadowsFallWhereTheModelSays)
         shade += t < 0.1;
         sun += t > 0.9;
     }
-    const double r = correlation(change, predicted);
+    const double r = swell::test::correlation(change, predicted);
     std::printf("%zu water pixels, %d in shadow, %d in sun: correlation of the change with the transmittance %.3f\n",
                 change.size(), shade, sun, r);
     // The frame holds both.

@@ -9,6 +9,7 @@
 #include "ocean/spectral/spectral_field.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
+#include "support/statistics.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "swell/renderer.h"
@@ -69,25 +70,6 @@ double renderedCover(double windSpeed_mps)
             ++total;
         }
     return white / double(total);
-}
-
-// Pearson's correlation of two equally long series.
-double correlation(const std::vector<double>& a, const std::vector<double>& b)
-{
-    double ma = 0.0, mb = 0.0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        ma += a[i];
-        mb += b[i];
-    }
-    ma /= double(a.size());
-    mb /= double(b.size());
-    double ab = 0.0, aa = 0.0, bb = 0.0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        ab += (a[i] - ma) * (b[i] - mb);
-        aa += (a[i] - ma) * (a[i] - ma);
-        bb += (b[i] - mb) * (b[i] - mb);
-    }
-    return ab / std::sqrt(aa * bb);
 }
 
 // The largest Pearson correlation of two top-down views over every
@@ -268,7 +250,7 @@ TEST_F(Whitecaps, FoamDoesNotRepeatWithThePatches)
         for (size_t k = 0; k < views.size(); ++k) {
             const glm::dvec2 at = places[k] + shift_m;
             const std::vector<double> there = foamFrom300m(renderer, scene, at.x, at.y, 60.0);
-            exact += correlation(views[k], there) / double(views.size());
+            exact += swell::test::correlation(views[k], there) / double(views.size());
             best += largestShiftedCorrelation(views[k], there, maxShift) / double(views.size());
         }
         std::printf("%s, shift (%.1f, %.1f) m: correlation %.3f, best within 60 m %.3f (means of 3 places)\n", what,
