@@ -450,6 +450,11 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         }
         notify(false, "cloud shadows");
         cloudShadow.bind();
+    } else if (cloudShadow.texture() != 0) {
+        // No layer now: the map and its bake program are given back, as the
+        // physical sky's are (a scene may drop its clouds for good).
+        cloudShadow = {};
+        cloudShadowBake = {};
     }
     // The sun's light under the water, before every pass that draws the world.
     drawCaustics(v, ownWorld != nullptr);
