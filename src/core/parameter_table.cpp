@@ -5,6 +5,8 @@
 #include "swell/parameters.h"
 #include "swell/scene_file.h"
 
+#include "core/parameter_fields.h"
+
 #include "swell/shader_constants.h"
 #include "swell/sun_position.h"
 
@@ -58,116 +60,8 @@ static_assert(static_cast<int>(SkyModel::Gradient) == 0 && static_cast<int>(SkyM
 constexpr std::array<std::string_view, 2> kSpreadings{"mitsuyasu", "donelan-banner"};
 static_assert(static_cast<int>(SpreadingModel::Mitsuyasu) == 0 && static_cast<int>(SpreadingModel::DonelanBanner) == 1);
 
-// The wind settings, for reading (defaults when the wind is not set) and for
-// writing (setting a wind parameter turns the wind on).
-const WindSettings& wind(const Scene& s)
-{
-    static const WindSettings none;
-    return s.waves.wind ? *s.waves.wind : none;
-}
-WindSettings& wind(Scene& s)
-{
-    if (!s.waves.wind)
-        s.waves.wind.emplace();
-    return *s.waves.wind;
-}
-
-// The swell, likewise: setting a swell parameter turns the wind and the swell on.
-const SwellSettings& swellOf(const Scene& s)
-{
-    static const SwellSettings none;
-    return s.waves.wind && s.waves.wind->swell ? *s.waves.wind->swell : none;
-}
-SwellSettings& swellOf(Scene& s)
-{
-    WindSettings& w = wind(s);
-    if (!w.swell)
-        w.swell.emplace();
-    return *w.swell;
-}
-
-template <class T>
-ParameterValue toValue(const T& x)
-{
-    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, double>)
-        return x;
-    else if constexpr (std::is_enum_v<T> || std::is_integral_v<T>)
-        return static_cast<std::int64_t>(x);
-    else
-        return x; // glm::dvec2, glm::dvec3
-}
-
-template <class T>
-T fromValue(const ParameterValue& v)
-{
-    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, double>)
-        return std::get<T>(v);
-    else if constexpr (std::is_enum_v<T> || std::is_integral_v<T>)
-        return static_cast<T>(std::get<std::int64_t>(v));
-    else
-        return std::get<T>(v);
-}
-
-// Ref is a capture-less generic lambda (auto& scene, size_t item) -> auto&
-// naming the field, so one lambda serves both the const get and the set.
-template <class Ref>
-struct Field {
-    static ParameterValue get(const Scene& s, std::size_t i) { return toValue(Ref{}(s, i)); }
-    static void set(Scene& s, std::size_t i, const ParameterValue& v)
-    {
-        auto& ref = Ref{}(s, i);
-        ref = fromValue<std::remove_cvref_t<decltype(ref)>>(v);
-    }
-};
-
-template <class Ref>
-Parameter at(Ref, Parameter p)
-{
-    p.get = &Field<Ref>::get;
-    p.set = &Field<Ref>::set;
-    return p;
-}
-
-// The sun's place and time, for reading (defaults when the sun is given by
-// its direction) and for writing (setting one places the sun).
-const SunPlace& placeOf(const Scene& s)
-{
-    static const SunPlace none;
-    return s.sun.place ? *s.sun.place : none;
-}
-SunPlace& placeOf(Scene& s)
-{
-    if (!s.sun.place)
-        s.sun.place.emplace();
-    return *s.sun.place;
-}
-
-// A field of the sun's place: setting it moves the sun there and then, so
-// sun.direction, which everything downstream reads (and whose change
-// bakes the sky again), never disagrees with the place.
-template <class Ref>
-struct PlaceField {
-    static void set(Scene& s, std::size_t i, const ParameterValue& v)
-    {
-        Field<Ref>::set(s, i, v);
-        const SunPlace& place = *s.sun.place;
-        s.sun.direction = sunDirectionOf(solarPosition(place.time_s, place.latitude_deg, place.longitude_deg));
-    }
-};
-
-template <class Ref>
-Parameter placing(Ref, Parameter p)
-{
-    p.get = &Field<Ref>::get;
-    p.set = &PlaceField<Ref>::set;
-    return p;
-}
-
-bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
-bool sunIsPlaced(const Scene& s) { return s.sun.place.has_value(); }
-bool sunIsNotPlaced(const Scene& s) { return !s.sun.place.has_value(); }
-bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
-bool swellIsSet(const Scene& s) { return s.waves.wind && s.waves.wind->swell; }
+// Where each parameter lives in Scene: core/parameter_fields.h.
+using namespace parameter_fields;
 
 using K = ParameterKind;
 using L = ParameterList;

@@ -1,0 +1,129 @@
+// How the scene parameter table (core/parameter_table.cpp) binds a key to
+// its place in Scene: a field reached by a small generic lambda (at()), a
+// field of the sun's optional place (placing()), the wind and swell that a
+// write switches on, and the predicates that say when a key applies.
+// Internal to the table.
+#pragma once
+
+#include "swell/parameters.h"
+#include "swell/scene.h"
+#include "swell/sun_position.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+namespace swell::parameter_fields {
+
+// The wind settings, for reading (defaults when the wind is not set) and for
+// writing (setting a wind parameter turns the wind on).
+inline const WindSettings& wind(const Scene& s)
+{
+    static const WindSettings none;
+    return s.waves.wind ? *s.waves.wind : none;
+}
+inline WindSettings& wind(Scene& s)
+{
+    if (!s.waves.wind)
+        s.waves.wind.emplace();
+    return *s.waves.wind;
+}
+
+// The swell, likewise: setting a swell parameter turns the wind and the swell on.
+inline const SwellSettings& swellOf(const Scene& s)
+{
+    static const SwellSettings none;
+    return s.waves.wind && s.waves.wind->swell ? *s.waves.wind->swell : none;
+}
+inline SwellSettings& swellOf(Scene& s)
+{
+    WindSettings& w = wind(s);
+    if (!w.swell)
+        w.swell.emplace();
+    return *w.swell;
+}
+
+template <class T>
+ParameterValue toValue(const T& x)
+{
+    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, double>)
+        return x;
+    else if constexpr (std::is_enum_v<T> || std::is_integral_v<T>)
+        return static_cast<std::int64_t>(x);
+    else
+        return x; // glm::dvec2, glm::dvec3
+}
+
+template <class T>
+T fromValue(const ParameterValue& v)
+{
+    if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, double>)
+        return std::get<T>(v);
+    else if constexpr (std::is_enum_v<T> || std::is_integral_v<T>)
+        return static_cast<T>(std::get<std::int64_t>(v));
+    else
+        return std::get<T>(v);
+}
+
+// Ref is a capture-less generic lambda (auto& scene, size_t item) -> auto&
+// naming the field, so one lambda serves both the const get and the set.
+template <class Ref>
+struct Field {
+    static ParameterValue get(const Scene& s, std::size_t i) { return toValue(Ref{}(s, i)); }
+    static void set(Scene& s, std::size_t i, const ParameterValue& v)
+    {
+        auto& ref = Ref{}(s, i);
+        ref = fromValue<std::remove_cvref_t<decltype(ref)>>(v);
+    }
+};
+
+template <class Ref>
+Parameter at(Ref, Parameter p)
+{
+    p.get = &Field<Ref>::get;
+    p.set = &Field<Ref>::set;
+    return p;
+}
+
+// The sun's place and time, for reading (defaults when the sun is given by
+// its direction) and for writing (setting one places the sun).
+inline const SunPlace& placeOf(const Scene& s)
+{
+    static const SunPlace none;
+    return s.sun.place ? *s.sun.place : none;
+}
+inline SunPlace& placeOf(Scene& s)
+{
+    if (!s.sun.place)
+        s.sun.place.emplace();
+    return *s.sun.place;
+}
+
+// A field of the sun's place: setting it moves the sun there and then, so
+// sun.direction, which everything downstream reads (and whose change
+// bakes the sky again), never disagrees with the place.
+template <class Ref>
+struct PlaceField {
+    static void set(Scene& s, std::size_t i, const ParameterValue& v)
+    {
+        Field<Ref>::set(s, i, v);
+        const SunPlace& place = *s.sun.place;
+        s.sun.direction = sunDirectionOf(solarPosition(place.time_s, place.latitude_deg, place.longitude_deg));
+    }
+};
+
+template <class Ref>
+Parameter placing(Ref, Parameter p)
+{
+    p.get = &Field<Ref>::get;
+    p.set = &PlaceField<Ref>::set;
+    return p;
+}
+
+inline bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
+inline bool sunIsPlaced(const Scene& s) { return s.sun.place.has_value(); }
+inline bool sunIsNotPlaced(const Scene& s) { return !s.sun.place.has_value(); }
+inline bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
+inline bool swellIsSet(const Scene& s) { return s.waves.wind && s.waves.wind->swell; }
+
+} // namespace swell::parameter_fields

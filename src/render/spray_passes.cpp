@@ -1,0 +1,122 @@
+// The spray passes (Renderer::Impl, render/renderer_impl.h): the spray torn
+// from the breaking crests and thrown from the bows of hulls under way,
+// drawn inside the main pass after the water.
+#include "render/renderer_impl.h"
+
+#include "render/gl_state.h"
+
+#include "swell/shader_constants.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swell {
+
+// The spray (shaders/spray.vert), over the finished frame: blended,
+// depth-tested against the world and the water, writing no depth. None
+// below Beaufort 7. Every particle is a function of the simulated time
+// (and, for the bows' spray, of the bodies' steps up to it).
+void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
+{
+    if (!scene.water.spray || !scene.waves.wind || scene.debugView != DebugView::Shaded ||
+        scene.waves.wind->windSpeed_mps < SWELL_SPRAY_ONSET_WIND_MPS)
+        return;
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(emptyVao.id());
+    drawCrestSpray(v, view);
+    drawBowSpray(v);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+// The spray torn from the breaking crests: its amount grows with the wind
+// from Beaufort 7 to Beaufort 10.
+void Renderer::Impl::drawCrestSpray(const ViewFrame& v, const View& view)
+{
+    const double wind_mps = scene.waves.wind->windSpeed_mps;
+    const double amount = std::clamp((wind_mps - SWELL_SPRAY_ONSET_WIND_MPS) /
+                                         (SWELL_SPRAY_FULL_WIND_MPS - SWELL_SPRAY_ONSET_WIND_MPS), 0.0, 1.0);
+    if (!programs.spray || amount <= 0.0)
+        return;
+    notify(true, "spray");
+    // The lattice, its cells fixed in the world, ahead of the eye: its
+    // centre 0.45 of its width along the view's heading (level), so that it
+    // reaches just behind the eye and most of its slots lie in view.
+    const double cell_m = SWELL_SPRAY_CELL_M;
+    const glm::dvec2 eye(v.origin.x, v.origin.z);
+    const glm::dvec2 forward(-view.view[0][2], -view.view[2][2]);
+    const double level = glm::length(forward);
+    const glm::dvec2 ahead = level > 1e-6 ? forward / level * (0.45 * SWELL_SPRAY_CELLS * cell_m) : glm::dvec2(0.0);
+    const glm::dvec2 first = glm::floor((eye + ahead) / cell_m) - glm::dvec2(SWELL_SPRAY_CELLS / 2);
+    const glm::vec2 corner_m(first * cell_m - eye);
+    programs.spray.set(simulated->time_s, glm::ivec2(first), corner_m, corner_m - v.base.gridCenter, float(wind_mps),
+                       float(amount));
+    programs.spray.use();
+    modelGpu->bind();
+    glDrawArrays(GL_POINTS, 0, SWELL_SPRAY_CELLS * SWELL_SPRAY_CELLS * SWELL_SPRAY_SLOTS);
+    ++counters.drawCalls;
+    releaseProgramStages();
+    notify(false, "spray");
+}
+
+// The spray thrown from the bows of the first SWELL_BOW_SPRAY_HULLS bodies
+// under way (objects/bow_spray.h): their bows' waterlines where the frame's
+// poses put them, and each hull's samples over the last lifetime; nothing
+// when no body is under way.
+void Renderer::Impl::drawBowSpray(const ViewFrame& v)
+{
+    if (!programs.bowSpray)
+        return;
+    BowSprayHulls hulls;
+    double lag_s = 0.0;
+    const glm::dmat4 fromSea = glm::translate(glm::dmat4(1.0), -v.origin);
+    for (std::size_t i = 0; i < seaScene.objects.size() && hulls.count < SWELL_BOW_SPRAY_HULLS; ++i) {
+        const SceneBodies::Bow* bow = bodies.bow(i);
+        if (!bow || i >= simulated->poses.size())
+            continue;
+        const int h = hulls.count++;
+        const glm::dmat4 pose = fromSea * simulated->poses[i];
+        glm::dvec2 side[2];
+        for (int s = 0; s < 2; ++s)
+            for (int k = 0; k < SWELL_BOW_SPRAY_STATIONS; ++k) {
+                const glm::dvec3 p(pose * glm::dvec4(bow->stationsInModel[s][k], 1.0));
+                hulls.stations[std::size_t((h * 2 + s) * SWELL_BOW_SPRAY_STATIONS + k)] = glm::vec2(p.x, p.z);
+                side[s] = glm::dvec2(p.x, p.z);
+            }
+        // Out from the keel towards the first side: across the hull at its
+        // last station, level, as the pose has it now.
+        const glm::dvec2 out = side[0] - side[1];
+        const double speed_mps = glm::length(bow->velocity_m_per_s);
+        const glm::dvec2 heading = bow->velocity_m_per_s / speed_mps;
+        const glm::dvec2 across = glm::length(out) > 1e-6 ? out / glm::length(out) : glm::dvec2(-heading.y, heading.x);
+        hulls.body[std::size_t(h)] = int(i);
+        hulls.motion[std::size_t(h)] = glm::vec4(glm::vec2(bow->velocity_m_per_s), glm::vec2(heading));
+        hulls.across[std::size_t(h)] = glm::vec4(glm::vec2(across), float(speed_mps), 0.0f);
+        const std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> history = bodies.bowHistory(i, simulated->time_s, lag_s);
+        for (int j = 0; j < SWELL_BOW_SPRAY_HISTORY; ++j) {
+            const BowSample& b = history[std::size_t(j)];
+            hulls.history[std::size_t(h * SWELL_BOW_SPRAY_HISTORY + j)] = glm::vec4(b.share, b.plunge_mps, b.leaves_m, 0.0f);
+        }
+    }
+    if (hulls.count == 0)
+        return;
+    hulls.historyLag_s = float(lag_s);
+    notify(true, "bow spray");
+    const WindSettings& wind = *scene.waves.wind;
+    const double direction_rad = glm::radians(wind.windDirection_deg);
+    programs.bowSpray.set(simulated->time_s, glm::vec2(std::cos(direction_rad), std::sin(direction_rad)),
+                          float(wind.windSpeed_mps), hulls);
+    programs.bowSpray.use();
+    glDrawArrays(GL_POINTS, 0, hulls.count * SWELL_BOW_SPRAY_SLOTS);
+    ++counters.drawCalls;
+    releaseProgramStages();
+    notify(false, "bow spray");
+}
+
+} // namespace swell
