@@ -43,11 +43,15 @@ layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
 };
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
-// Layers 0 .. SWELL_FFT_CASCADES - 1: dDy/dx, dDy/dz, dDx/dx, dDz/dz; the
-// next SWELL_FFT_CASCADES layers the slopes' second moments, mipmapped
-// with them: (dDy/dx)^2, (dDy/dz)^2, their product.
+// For shading, layers 0 .. SWELL_FFT_CASCADES - 1: dDy/dx, dDy/dz, dDx/dx,
+// dDz/dz; the next SWELL_FFT_CASCADES layers the slopes' second moments,
+// mipmapped with them: (dDy/dx)^2, (dDy/dz)^2, their product; all in half
+// floats.
 layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;
 layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1, a layer a level
+// The same derivatives in the full floats the FFT made, its base level
+// alone: what the foam's folding reads, as the CPU twin's foam does.
+layout(binding = SWELL_UNIT_OCEAN3) uniform sampler2DArray oceanFoldDerivatives;
 
 // swell::spectral::cascadeWeight.
 float cascadeWeight(float shortestWavelength_m, float footprint_m)
@@ -98,7 +102,7 @@ float foldJacobian(vec2 restOffset_m, int cascadeCount)
         mat2 jacobian;
         vec2 s = warpedTexels(c, restOffset_m, jacobian);
         float dxz = bilinearDisplacement(s, c).w;
-        vec4 d = bilinearFetch(oceanDerivatives, s, c);
+        vec4 d = bilinearFetch(oceanFoldDerivatives, s, c);
         vec2 alongDx = vec2(d.z, dxz), alongDz = vec2(dxz, d.w);
         for (int j = 0; j < 2; ++j) {
             gradDx[j] += dot(alongDx, jacobian[j]);

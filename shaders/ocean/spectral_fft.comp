@@ -28,6 +28,10 @@ layout(local_size_x = SWELL_FFT_QUARTER) in;
 #if SWELL_FFT_VERTICAL
 layout(binding = 2, rgba32f) uniform image2DArray spectrumA;
 layout(binding = 3, rgba32f) uniform image2DArray spectrumB;
+// The shading's copy of the derivatives (layers 0 .. SWELL_FFT_CASCADES - 1)
+// and the slopes' second moments (the next SWELL_FFT_CASCADES), in half
+// floats: what the water's pixels filter (src/ocean/spectral/spectral_model.cpp).
+layout(binding = 4, rgba16f) uniform writeonly image2DArray slopes;
 #else
 layout(binding = 2, rgba32f) uniform writeonly image2DArray spectrumA;
 layout(binding = 3, rgba32f) uniform writeonly image2DArray spectrumB;
@@ -159,14 +163,16 @@ void main()
         imageStore(spectrumA, p, bufferA[i]);
         imageStore(spectrumB, p, bufferB[i]);
 #if SWELL_FFT_VERTICAL
-        // The column pass ends with the fields themselves: the slopes'
-        // second moments go beside them, in layers SWELL_FFT_CASCADES and
-        // up of the derivatives' image, so one mip chain filters both
-        // (LEAN mapping: Olano & Baker 2010, "LEAN Mapping", I3D, sec. 3:
-        // over any footprint, E[s^2] - E[s]^2 from the two is the slope
-        // variance the footprint's mean slope leaves out).
+        // The column pass ends with the fields themselves: the derivatives
+        // again for shading, and the slopes' second moments beside them, in
+        // layers SWELL_FFT_CASCADES and up of the slopes' image, so one mip
+        // chain filters both (LEAN mapping: Olano & Baker 2010, "LEAN
+        // Mapping", I3D, sec. 3: over any footprint, E[s^2] - E[s]^2 from
+        // the two is the slope variance the footprint's mean slope leaves
+        // out).
         vec2 slope = bufferB[i].xy; // dDy/dx, dDy/dz
-        imageStore(spectrumB, ivec3(p.xy, p.z + SWELL_FFT_CASCADES),
+        imageStore(slopes, p, bufferB[i]);
+        imageStore(slopes, ivec3(p.xy, p.z + SWELL_FFT_CASCADES),
                    vec4(slope.x * slope.x, slope.y * slope.y, slope.x * slope.y, 0.0));
 #endif
     }

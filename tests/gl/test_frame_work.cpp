@@ -50,9 +50,9 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     ASSERT_EQ(c.foamSteps, 1);
 
     // The step: transform the rows (evolving the spectra as they are read),
-    // then the columns (in place, writing the slopes' second moments beside
-    // the derivatives), step the foam; a barrier after each; then mipmaps of
-    // the derivatives with the moments, and of the foam, by compute
+    // then the columns (in place, writing the shading's half-float copy of
+    // the derivatives with the slopes' second moments), step the foam; a
+    // barrier after each; then mipmaps of that copy, and of the foam, by compute
     // dispatches and a barrier after each (gl/mip_downsample.h): on a GPU
     // from shared memory, each chain by dispatches of up to
     // SWELL_DOWNSAMPLE_LEVELS levels (a 256^2 chain's 8 levels: 2); on a
@@ -61,7 +61,7 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     // water queries (render/surface_probe.h), one dispatch and its barrier.
     const long long n = 1 << SWELL_FFT_LOG2_SIZE, cascades = SWELL_FFT_CASCADES;
     const long long foamSize = 1 << SWELL_FOAM_LOG2_SIZE, foamLevels = SWELL_FOAM_LEVELS;
-    constexpr long long kRgba32f = 16, kR16f = 2; // bytes a texel
+    constexpr long long kRgba32f = 16, kRgba16f = 8, kR16f = 2; // bytes a texel
     const auto dispatchesOfChain = [](long long log2Size, int levelsADispatch) {
         return int((log2Size + levelsADispatch - 1) / levelsADispatch);
     };
@@ -78,18 +78,19 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     EXPECT_EQ(c.simulationGpu.mipmaps, 0) << "no glGenerateTextureMipmap";
     const long long spectra = 2 * n * n * cascades * kRgba32f; // the displacement's and the derivatives' images
     const long long transforms = 2 * spectra;                  // written by each FFT pass
-    const long long moments = n * n * cascades * kRgba32f;     // written by the column pass
-    const long long derivativeMips = mipLevelsAboveBase(n, 2 * cascades) * kRgba32f; // the moments' layers too
+    // Written by the column pass: the derivatives' copy and the moments.
+    const long long slopes = 2 * n * n * cascades * kRgba16f;
+    const long long slopeMips = mipLevelsAboveBase(n, 2 * cascades) * kRgba16f; // the moments' layers too
     const long long foam = foamSize * foamSize * foamLevels * kR16f + mipLevelsAboveBase(foamSize, foamLevels) * kR16f;
     // Each query's answer: 3 vec4s and the 8 x 8 block's vertices; this
     // open sea floats nothing, so the viewpoint's alone.
     const long long queries = (3 + SWELL_PROBE_BLOCK * SWELL_PROBE_BLOCK) * 16;
-    EXPECT_EQ(c.simulationGpu.bytesWritten, transforms + moments + derivativeMips + foam + queries);
+    EXPECT_EQ(c.simulationGpu.bytesWritten, transforms + slopes + slopeMips + foam + queries);
     // The same by hand for today's 4 cascades of 256^2 and 2 foam levels of
-    // 256^2: 16 MiB of spectra, 4 MiB of moments, 2 x 1398080 bytes of the
-    // derivatives' and moments' mipmaps, 256 KiB of foam and 87380 bytes of
-    // its mipmaps, 1072 bytes of the answer.
-    EXPECT_EQ(c.simulationGpu.bytesWritten, 24118276);
+    // 256^2: 16 MiB of spectra, 4 MiB of the shading's copy (2 MiB of
+    // derivatives, 2 MiB of moments), 1398080 bytes of its mipmaps, 256 KiB
+    // of foam and 87380 bytes of its mipmaps, 1072 bytes of the answer.
+    EXPECT_EQ(c.simulationGpu.bytesWritten, 22720196);
 
     // A view simulates nothing: the spectral model's views write no image.
     EXPECT_EQ(c.viewsGpu.dispatches, 0);

@@ -1,10 +1,12 @@
 // The spectral model's GPU fields against its CPU twin's, texel by texel:
 // every cascade's displacement (Dx, Dy, Dz, dDx/dz) and derivatives
-// (dDy/dx, dDy/dz, dDx/dx, dDz/dz) with the slopes' second moments, after the GPU's evolution and inverse
-// FFT, at a time long after 0 (where the phases are large). Queries on the
-// drawn surface (the displacement) and its shading (the derivatives) stand
-// on these fields; a difference in one field shows here by cascade and
-// field, before any lookup, warp or filtering mixes them.
+// (dDy/dx, dDy/dz, dDx/dx, dDz/dz) after the GPU's evolution and inverse
+// FFT, at a time long after 0 (where the phases are large), and the
+// shading's half-float copy of the derivatives with the slopes' second
+// moments. Queries on the drawn surface (the displacement), the foam's
+// folding (the derivatives) and the shading (their copy) stand on these
+// fields; a difference in one field shows here by cascade and field,
+// before any lookup, warp or filtering mixes them.
 #include "support/gl_test.h"
 
 #include "ocean/spectral/spectral_cpu.h"
@@ -19,6 +21,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <glm/gtc/packing.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -31,8 +35,8 @@ using namespace swell;
 
 class SpectralFields : public test::GlTest {};
 
-// The RGBA32F array texture bound to a texture unit, level 0, every layer
-// (`layers` of them).
+// The array texture bound to a texture unit, level 0, every layer
+// (`layers` of them), as floats.
 std::vector<float> boundArray(GLuint unit, int layers)
 {
     GLint name = 0;
@@ -45,6 +49,15 @@ std::vector<float> boundArray(GLuint unit, int layers)
     return texels;
 }
 
+// One unit in the last place of a half float near |x| (its 11 significant
+// bits; subnormal below 2^-14): what rounding a value to half moves it by,
+// at most half of it, and two values a rounding apart, one of it.
+double halfUlp(double x)
+{
+    const double magnitude = std::max(std::abs(x), std::ldexp(1.0, -14));
+    return std::ldexp(1.0, std::ilogb(magnitude) - 10);
+}
+
 TEST_F(SpectralFields, TheGpusFieldsAreTheCpuTwins)
 {
     SpectralSettings settings;
@@ -55,10 +68,11 @@ TEST_F(SpectralFields, TheGpusFieldsAreTheCpuTwins)
     gpu->prepareFrame({0.0, 0.0}, kTime_s);
     gpu->bind();
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-    // The derivatives' image holds each cascade's slope moments after its
-    // derivatives (shaders/ocean/spectral.glsl).
+    // The FFTs' full floats; the shading's half floats hold each cascade's
+    // slope moments after its derivatives (shaders/ocean/spectral.glsl).
     const std::vector<float> displacement = boundArray(SWELL_UNIT_OCEAN0, SWELL_FFT_CASCADES),
-                             derivatives = boundArray(SWELL_UNIT_OCEAN1, 2 * SWELL_FFT_CASCADES);
+                             derivatives = boundArray(SWELL_UNIT_OCEAN3, SWELL_FFT_CASCADES),
+                             slopes = boundArray(SWELL_UNIT_OCEAN1, 2 * SWELL_FFT_CASCADES);
 
     // The twin, from the same field the model makes.
     const spectral::CpuSurface twin(std::make_shared<const spectral::SpectralField>(
@@ -99,21 +113,43 @@ TEST_F(SpectralFields, TheGpusFieldsAreTheCpuTwins)
                                                << errorSum / double(n * n) << ", worst at " << worstX << ", " << worstZ
                                                << ";" << along;
         }
-    // The slopes' second moments: (dDy/dx)^2, (dDy/dz)^2 and their product,
-    // against the twin's slopes, to the same share of their rms.
+    // The shading's copy: the derivatives, then the slopes' second moments
+    // ((dDy/dx)^2, (dDy/dz)^2 and their product), each texel the twin's
+    // value rounded to a half float: within one half-float unit of it (the
+    // GPU's float, 1e-4 of the rms off the twin's, may round the other way)
+    // and the float FFTs' difference (1e-4 of the rms; 3e-4 for a product).
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         const std::vector<float>& sx = fields.values[size_t(c)][4];
         const std::vector<float>& sz = fields.values[size_t(c)][5];
-        for (int m = 0; m < 3; ++m) {
-            double worst = 0.0, sumSq = 0.0;
-            for (size_t i = 0; i < size_t(n) * n; ++i) {
-                const double cpu = m == 0 ? double(sx[i]) * sx[i] : m == 1 ? double(sz[i]) * sz[i] : double(sx[i]) * sz[i];
-                const double gpuMoment = derivatives[((size_t(c + SWELL_FFT_CASCADES) * n * n) + i) * 4 + size_t(m)];
-                worst = std::max(worst, std::abs(gpuMoment - cpu));
-                sumSq += cpu * cpu;
-            }
+        for (int f = 0; f < 7; ++f) {
+            const bool moment = f >= 4;
+            const int m = f - 4;
+            auto cpuAt = [&](size_t i) {
+                if (!moment)
+                    return double(fields.values[size_t(c)][size_t(4 + f)][i]);
+                return m == 0 ? double(sx[i]) * sx[i] : m == 1 ? double(sz[i]) * sz[i] : double(sx[i]) * sz[i];
+            };
+            const size_t layer = moment ? size_t(c + SWELL_FFT_CASCADES) : size_t(c);
+            double sumSq = 0.0;
+            for (size_t i = 0; i < size_t(n) * n; ++i)
+                sumSq += cpuAt(i) * cpuAt(i);
             const double rms = std::sqrt(sumSq / double(n * n));
-            EXPECT_LE(worst, 3e-4 * rms + 1e-12) << "cascade " << c << ", moment " << m << ": rms " << rms;
+            double worst = 0.0, worstOfUlp = 0.0;
+            for (size_t i = 0; i < size_t(n) * n; ++i) {
+                const double cpu = cpuAt(i), shaded = slopes[(layer * n * n + i) * 4 + size_t(moment ? m : f)];
+                const double rounded = glm::unpackHalf1x16(glm::packHalf1x16(float(cpu)));
+                const double error = std::abs(shaded - rounded);
+                worst = std::max(worst, error);
+                worstOfUlp = std::max(worstOfUlp, error / halfUlp(cpu));
+                EXPECT_LE(error, halfUlp(cpu) + (moment ? 3e-4 : 1e-4) * rms + 1e-12)
+                    << "cascade " << c << ", " << (moment ? "moment " : "derivative ") << (moment ? m : f) << " at texel "
+                    << i << ": the twin's " << cpu << " (as a half " << rounded << "), the GPU's " << shaded;
+                if (error > halfUlp(cpu) + (moment ? 3e-4 : 1e-4) * rms + 1e-12)
+                    return; // one texel's message says it
+            }
+            std::printf("cascade %d shading %s %d: rms %.3e, worst difference from the rounded twin %.3e (%.2f of a "
+                        "half's unit)\n",
+                        c, moment ? "moment" : "derivative", moment ? m : f, rms, worst, worstOfUlp);
         }
     }
 }

@@ -1,8 +1,8 @@
 // SpectralModel: the spectral field behind swell::WaveModel, with its CPU
 // twin for queries and its GPU half: each frame at a new time, compute
 // shaders transform rows, evolving the spectra as they read them, then
-// columns (shaders/ocean/spectral_fft.comp), which also write the slopes'
-// second moments, and mipmap the slopes with their moments.
+// columns (shaders/ocean/spectral_fft.comp), which also write the slopes
+// and their second moments in half floats for shading, and mipmap those.
 #include "swell/spectral_model.h"
 
 #include "gl/mip_downsample.h"
@@ -75,10 +75,17 @@ constexpr int kLongestFoamShift = kFoamSize / 4;
 // layout qualifiers name the same.
 constexpr GLenum kInitialFormat = GL_RGBA32F;  // h0(k) and conj(h0(-k))
 constexpr GLenum kOmegaFormat = GL_RG32UI;     // w(k) as a double's two words
-// The displacement's and the derivatives' spectra, then fields; the
-// derivatives' image also holds the slopes' second moments (as many layers
-// again), so one mip chain filters both.
+// The displacement's and the derivatives' spectra, then fields: the FFTs
+// work in place on these, in full float (the queries' millimetre stands on
+// the displacement; the foam's steps read the derivatives' base level).
 constexpr GLenum kSpectrumFormat = GL_RGBA32F;
+// The shading's copy of the derivatives, with the slopes' second moments
+// (as many layers again) so that one mip chain filters both: what every
+// water pixel filters four times over. Half floats halve the bytes each
+// filtered fetch reads and the chain's; their 11 significant bits hold a
+// slope to 1/2048 of itself, far below what a normal or a highlight's
+// spread shows (tests/gl/test_spectral_fields.cpp holds them to that).
+constexpr GLenum kSlopeFormat = GL_RGBA16F;
 constexpr GLenum kFoamFormat = GL_R16F;
 
 // Bytes a texel of `format` takes (the formats above).
@@ -87,13 +94,14 @@ constexpr long long texelBytes(GLenum format)
     switch (format) {
     case GL_RGBA32F: return 16;
     case GL_RG32UI: return 8;
+    case GL_RGBA16F: return 8;
     case GL_R16F: return 2;
     default: return 0;
     }
 }
 
 static_assert(texelBytes(kInitialFormat) > 0 && texelBytes(kOmegaFormat) > 0 && texelBytes(kSpectrumFormat) > 0 &&
-              texelBytes(kFoamFormat) > 0);
+              texelBytes(kSlopeFormat) > 0 && texelBytes(kFoamFormat) > 0);
 
 // Texels of the levels `first` .. `levels` - 1 of a square mip chain of
 // `size`^2 at its base, each with `layers` layers.
@@ -142,7 +150,8 @@ public:
         initial_ = array(kInitialFormat, 1);
         omega_ = array(kOmegaFormat, 1);
         displacement_ = array(kSpectrumFormat, 1);
-        derivatives_ = array(kSpectrumFormat, kFieldLevels, kDerivativeLayers);
+        derivatives_ = array(kSpectrumFormat, 1);
+        slopes_ = array(kSlopeFormat, kFieldLevels, kSlopeLayers);
         foam_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
         glTextureStorage3D(foam_.id(), kFoamFieldLevels, kFoamFormat, kFoamSize, kFoamSize, kFoamLevels);
         glTextureParameteri(foam_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -151,9 +160,11 @@ public:
         work_ = {}; // not a frame's work
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        for (const gl::Texture* t : {&displacement_, &derivatives_, &foam_}) {
+        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(derivatives_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTextureParameteri(slopes_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(slopes_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        for (const gl::Texture* t : {&displacement_, &derivatives_, &slopes_, &foam_}) {
             glTextureParameteri(t->id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
             glTextureParameteri(t->id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
         }
@@ -253,8 +264,9 @@ public:
     {
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, uniforms_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN0, displacement_.id());
-        glBindTextureUnit(SWELL_UNIT_OCEAN1, derivatives_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN1, slopes_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN2, foam_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN3, derivatives_.id());
     }
 
 private:
@@ -385,6 +397,7 @@ private:
         glBindImageTexture(1, omega_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kOmegaFormat);
         glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kSpectrumFormat);
         glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kSpectrumFormat);
+        glBindImageTexture(4, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, kSlopeFormat);
         ++work_.transforms;
         // One workgroup per row (then column) of each cascade, writing the
         // line of both images (displacement, derivatives).
@@ -393,15 +406,17 @@ private:
         dispatch(kSize, GLuint(cascades), 1, twoSpectra * kSize);
         barrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         endStage("fft rows");
-        // The columns also write the slopes' second moments.
+        // The columns also write the shading's copy of the derivatives and
+        // the slopes' second moments.
         beginStage("fft columns");
         glUseProgram(fftColumns_.id());
-        dispatch(kSize, GLuint(cascades), 1, (twoSpectra + texelBytes(kSpectrumFormat)) * kSize);
+        dispatch(kSize, GLuint(cascades), 1, (twoSpectra + 2 * texelBytes(kSlopeFormat)) * kSize);
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         endStage("fft columns");
         slopeMipmapsStale_ = slopeMipmapsStale_ || cascades == kCascades;
         for (GLuint unit = 0; unit < 4; ++unit)
             glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, kSlopeFormat);
         glUseProgram(0);
         transformed_ = true;
         time_s_ = time_s;
@@ -428,7 +443,7 @@ private:
     // rasteriser).
     void buildMipmaps()
     {
-        const gl::MipDownsampler::Chain slopes{&derivatives_, kSpectrumFormat, kSize, kFieldLevels, kDerivativeLayers};
+        const gl::MipDownsampler::Chain slopes{&slopes_, kSlopeFormat, kSize, kFieldLevels, kSlopeLayers};
         const gl::MipDownsampler::Chain foam{&foam_, kFoamFormat, kFoamSize, kFoamFieldLevels, kFoamLevels};
         if (!slopeMipmapsStale_ && !foamMipmapsStale_)
             return;
@@ -442,7 +457,7 @@ private:
         work_.barriers += work.barriers;
         // Levels 1 and up of each chain built, in its own format.
         if (slopeMipmapsStale_)
-            work_.bytesWritten += texelBytes(kSpectrumFormat) * mipTexels(kSize, kFieldLevels, kDerivativeLayers, 1);
+            work_.bytesWritten += texelBytes(kSlopeFormat) * mipTexels(kSize, kFieldLevels, kSlopeLayers, 1);
         if (foamMipmapsStale_)
             work_.bytesWritten += texelBytes(kFoamFormat) * mipTexels(kFoamSize, kFoamFieldLevels, kFoamLevels, 1);
         slopeMipmapsStale_ = foamMipmapsStale_ = false;
@@ -458,8 +473,8 @@ private:
 
     // Mip levels of the cascades' fields and of the foam's windows.
     static constexpr int kFieldLevels = SWELL_FFT_LOG2_SIZE + 1;
-    // The derivatives' image: each cascade's derivatives, then each one's slope moments.
-    static constexpr int kDerivativeLayers = 2 * kCascades;
+    // The slopes' image: each cascade's derivatives, then each one's slope moments.
+    static constexpr int kSlopeLayers = 2 * kCascades;
     static constexpr int kFoamFieldLevels = SWELL_FOAM_LOG2_SIZE + 1;
 
     std::shared_ptr<const SpectralField> field_;
@@ -481,7 +496,7 @@ private:
     GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
     GLint windowOriginLocation_ = -1, previousOriginLocation_ = -1, centreIndexLocation_ = -1;
     GLint centreFractionLocation_ = -1, texelLocation_ = -1;
-    gl::Texture initial_, omega_, displacement_, derivatives_, foam_;
+    gl::Texture initial_, omega_, displacement_, derivatives_, slopes_, foam_;
     gl::Buffer uniforms_;
     bool transformed_ = false;
     double time_s_ = 0.0;
