@@ -100,6 +100,22 @@ void MeshProgram::setModel(const glm::mat4& model) const
     glProgramUniformMatrix4fv(program_.id(), model_, 1, GL_FALSE, glm::value_ptr(model));
 }
 
+CloudUniforms::CloudUniforms(const gl::Program& program)
+    : cover_(requiredUniform(program, "cloudCover", "clouds.glsl")),
+      altitude_(requiredUniform(program, "cloudAltitude_m", "clouds.glsl")),
+      opticalDepth_(requiredUniform(program, "cloudOpticalDepth", "clouds.glsl")),
+      scale_(requiredUniform(program, "cloudScale_m", "clouds.glsl"))
+{
+}
+
+void CloudUniforms::set(const gl::Program& program, const CloudSettings& clouds) const
+{
+    glProgramUniform1f(program.id(), cover_, float(clouds.cover));
+    glProgramUniform1f(program.id(), altitude_, float(clouds.altitude_m));
+    glProgramUniform1f(program.id(), opticalDepth_, float(clouds.opticalDepth));
+    glProgramUniform1f(program.id(), scale_, float(clouds.scale_m));
+}
+
 SkyBakeProgram::SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant, bool physical)
     : program_(build(sources, variant, "fullscreen.vert", "sky_bake.frag",
                      {physical ? "SWELL_SKY_PHYSICAL 1" : "SWELL_SKY_PHYSICAL 0"})),
@@ -109,20 +125,11 @@ SkyBakeProgram::SkyBakeProgram(const gl::ShaderSources& sources, const ShaderVar
         exposure_ = requiredUniform(program_, "skyExposure", "sky_bake.frag");
         mieScale_ = requiredUniform(program_, "atmosphereMieScale", "atmosphere.glsl");
         rayleighScale_ = requiredUniform(program_, "atmosphereRayleighScale", "atmosphere.glsl");
-        cloudCover_ = requiredUniform(program_, "cloudCover", "clouds.glsl");
-        cloudAltitude_ = requiredUniform(program_, "cloudAltitude_m", "clouds.glsl");
-        cloudOpticalDepth_ = requiredUniform(program_, "cloudOpticalDepth", "clouds.glsl");
-        cloudScale_ = requiredUniform(program_, "cloudScale_m", "clouds.glsl");
+        clouds_ = CloudUniforms(program_);
     }
 }
 
-void SkyBakeProgram::setClouds(const CloudSettings& clouds) const
-{
-    glProgramUniform1f(program_.id(), cloudCover_, float(clouds.cover));
-    glProgramUniform1f(program_.id(), cloudAltitude_, float(clouds.altitude_m));
-    glProgramUniform1f(program_.id(), cloudOpticalDepth_, float(clouds.opticalDepth));
-    glProgramUniform1f(program_.id(), cloudScale_, float(clouds.scale_m));
-}
+void SkyBakeProgram::setClouds(const CloudSettings& clouds) const { clouds_.set(program_, clouds); }
 
 void SkyBakeProgram::setAtmosphere(double exposure, const AtmosphereSettings& atmosphere) const
 {
@@ -133,10 +140,7 @@ void SkyBakeProgram::setAtmosphere(double exposure, const AtmosphereSettings& at
 
 CloudShadowBakeProgram::CloudShadowBakeProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
     : program_(build(sources, variant, "fullscreen.vert", "cloud_shadow_bake.frag")),
-      cloudCover_(requiredUniform(program_, "cloudCover", "clouds.glsl")),
-      cloudAltitude_(requiredUniform(program_, "cloudAltitude_m", "clouds.glsl")),
-      cloudOpticalDepth_(requiredUniform(program_, "cloudOpticalDepth", "clouds.glsl")),
-      cloudScale_(requiredUniform(program_, "cloudScale_m", "clouds.glsl")),
+      clouds_(program_),
       corner_(requiredUniform(program_, "bakeCorner_m", "cloud_shadow_bake.frag")),
       texel_(requiredUniform(program_, "bakeTexel_m", "cloud_shadow_bake.frag")),
       sun_(requiredUniform(program_, "bakeSun", "cloud_shadow_bake.frag"))
@@ -147,10 +151,7 @@ void CloudShadowBakeProgram::use() const { glUseProgram(program_.id()); }
 
 void CloudShadowBakeProgram::set(const CloudSettings& clouds, glm::vec2 corner_m, float texel_m, glm::vec3 sun) const
 {
-    glProgramUniform1f(program_.id(), cloudCover_, float(clouds.cover));
-    glProgramUniform1f(program_.id(), cloudAltitude_, float(clouds.altitude_m));
-    glProgramUniform1f(program_.id(), cloudOpticalDepth_, float(clouds.opticalDepth));
-    glProgramUniform1f(program_.id(), cloudScale_, float(clouds.scale_m));
+    clouds_.set(program_, clouds);
     glProgramUniform2f(program_.id(), corner_, corner_m.x, corner_m.y);
     glProgramUniform1f(program_.id(), texel_, texel_m);
     glProgramUniform3f(program_.id(), sun_, sun.x, sun.y, sun.z);

@@ -67,6 +67,18 @@ private:
     GLint label_ = -1; // the label pass's programs only
 };
 
+// The cloud layer's uniforms (shaders/clouds.glsl) in a program that
+// includes it: found once, set from the scene's CloudSettings.
+class CloudUniforms {
+public:
+    CloudUniforms() = default;
+    explicit CloudUniforms(const gl::Program& program);
+    void set(const gl::Program& program, const CloudSettings& clouds) const;
+
+private:
+    GLint cover_ = -1, altitude_ = -1, opticalDepth_ = -1, scale_ = -1;
+};
+
 // One face of the procedural sky cubemap: fullscreen.vert + sky_bake.frag,
 // the gradient sky, or with physical set (SWELL_SKY_PHYSICAL 1) the
 // atmosphere (atmosphere.glsl).
@@ -88,7 +100,7 @@ private:
     gl::Program program_;
     GLint face_ = -1;
     GLint exposure_ = -1, mieScale_ = -1, rayleighScale_ = -1;
-    GLint cloudCover_ = -1, cloudAltitude_ = -1, cloudOpticalDepth_ = -1, cloudScale_ = -1;
+    CloudUniforms clouds_;
 };
 
 // The cloud layer's shadow map's bake (fullscreen.vert +
@@ -106,7 +118,7 @@ public:
 
 private:
     gl::Program program_;
-    GLint cloudCover_ = -1, cloudAltitude_ = -1, cloudOpticalDepth_ = -1, cloudScale_ = -1;
+    CloudUniforms clouds_;
     GLint corner_ = -1, texel_ = -1, sun_ = -1;
 };
 
