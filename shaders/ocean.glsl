@@ -9,6 +9,14 @@
 // and
 //   float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
 // for the bubbles a breaking drove under the surface there (0 for models without foam).
+// A model may also hand the water's pixels work its vertices did: it then
+// defines SWELL_OCEAN_VERTEX_DATA (a count of vec4s) and
+//   void oceanVertexData(vec2 restOffset_m, out vec4 data[SWELL_OCEAN_VERTEX_DATA])
+//   SurfacePoint oceanShadingFromVertices(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m,
+//                                         vec3 gridAlongX, vec3 gridAlongZ, float heightScale,
+//                                         vec4 data[SWELL_OCEAN_VERTEX_DATA], float cellSize_m)
+// and the water's fragment shader calls the latter with the data
+// interpolated over the triangle and the grid's cell size there (m).
 // The renderer builds them with SWELL_OCEAN_FILE naming the model's GLSL
 // file (src/render/wave_model_gpu.h), so no water shader names a model.
 #ifndef SWELL_OCEAN_GLSL

@@ -29,6 +29,9 @@ in float vHeightScale;
 #if SWELL_SURFACE_SOURCES
 in vec2 vSourceSlope;
 #endif
+#ifdef SWELL_OCEAN_VERTEX_DATA
+in vec4 vOceanData[SWELL_OCEAN_VERTEX_DATA];
+#endif
 #if SWELL_LABEL_PASS
 #define SWELL_LABEL_RAYS
 #include "labels.glsl"
@@ -62,7 +65,12 @@ void main()
 #else
     float pixelSize_m = 1e-3; // every wave, however small the pixel sees it
 #endif
+#ifdef SWELL_OCEAN_VERTEX_DATA
+    SurfacePoint surface = oceanShadingFromVertices(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ,
+                                                    vHeightScale, vOceanData, vCellSize);
+#else
     SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ, vHeightScale);
+#endif
     vec3 n = surface.normal;
     float foam = surface.foam;
     float breakingFoam = surface.breakingFoam;

@@ -11,6 +11,9 @@ out float vHeightScale; // horizon fade, 0..1
 #if SWELL_SURFACE_SOURCES
 out vec2 vSourceSlope; // the surface sources' slopes at the vertex, d/dx and d/dz (the fragment's own replace them)
 #endif
+#ifdef SWELL_OCEAN_VERTEX_DATA
+out vec4 vOceanData[SWELL_OCEAN_VERTEX_DATA]; // the wave model's, for its pixels (ocean.glsl)
+#endif
 
 void main()
 {
@@ -24,6 +27,9 @@ void main()
     vHeightScale = w.heightScale;
 #if SWELL_SURFACE_SOURCES
     vSourceSlope = w.sourceSlope;
+#endif
+#ifdef SWELL_OCEAN_VERTEX_DATA
+    oceanVertexData(w.rest - gridCenter, vOceanData);
 #endif
     gl_Position = passViewProj * vec4(vPosition, 1.0);
 }

@@ -31,6 +31,14 @@
 // spectral_warp.h): enough directions that every wave direction and every
 // shift is decorrelated, few enough to cost little per vertex and pixel.
 #define SWELL_FFT_WARP_WAVES 6
+// The water's pixels take each cascade's warp (its lookup point and
+// Jacobian) interpolated from the grid's vertices where a grid cell is at
+// most 1/SWELL_FFT_WARP_CELLS_PER_WAVELENGTH of the warp's shortest
+// sinusoid, and evaluate it themselves elsewhere: a sinusoid sampled 20
+// times a wavelength is off its linear interpolation by at most
+// (pi/20)^2/2 = 1.2% of its amplitude, a fraction of a texel of the
+// lookup (docs/RENDERING.md, "The spectral ocean").
+#define SWELL_FFT_WARP_CELLS_PER_WAVELENGTH 20
 // The spectral model's whitecap foam lives in the world, not in the periodic
 // cascades (whose foam would repeat with their patches): SWELL_FOAM_LEVELS
 // camera-following windows of SWELL_FOAM_SIZE^2 texels, each level's texels

@@ -27,6 +27,7 @@ struct SpectralCascade {
     vec2 originTexels;          // the grid centre modulo the patch, texels
     float texelsPerMetre;       // N / L
     float shortestWavelength_m; // the shortest wave the cascade holds, m
+    float vertexWarpCell_m;     // grid cells up to this (m) take the warp interpolated from their vertices
     SpectralWarpWave warp[SWELL_FFT_WARP_WAVES];
 };
 
@@ -165,20 +166,76 @@ float worldFoam(vec2 restOffset_m, float footprint_m, bool bSpline)
     return foam;
 }
 
+// Where each cascade is looked up at a rest point and the Jacobian of the
+// lookup (warpedTexels).
+struct CascadeLookups {
+    vec2 texels[SWELL_FFT_CASCADES];
+    mat2 jacobian[SWELL_FFT_CASCADES];
+};
+
+CascadeLookups warpedLookups(vec2 restOffset_m)
+{
+    CascadeLookups l;
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c)
+        l.texels[c] = warpedTexels(c, restOffset_m, l.jacobian[c]);
+    return l;
+}
+
+// The water's vertices hand their pixels each cascade's lookup
+// (ocean.glsl's optional SWELL_OCEAN_VERTEX_DATA): per cascade c, data[c]
+// holds its texel position and its Jacobian's first column, and the second
+// column sits in data[SWELL_FFT_CASCADES + c / 2] (xy for even c, zw for
+// odd). The warp's sinusoids are each 4.5 patches or more long, so over
+// a small cell the lookup is nearly linear: interpolated across it, it is
+// what the pixel would evaluate (SWELL_FFT_WARP_CELLS_PER_WAVELENGTH), for
+// 6 vector additions instead of 12 sines and cosines a cascade.
+#define SWELL_OCEAN_VERTEX_DATA (SWELL_FFT_CASCADES + SWELL_FFT_CASCADES / 2)
+
+void oceanVertexData(vec2 restOffset_m, out vec4 data[SWELL_OCEAN_VERTEX_DATA])
+{
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
+        mat2 jacobian;
+        vec2 s = warpedTexels(c, restOffset_m, jacobian);
+        data[c] = vec4(s, jacobian[0]);
+        if ((c & 1) == 0)
+            data[SWELL_FFT_CASCADES + c / 2].xy = jacobian[1];
+        else
+            data[SWELL_FFT_CASCADES + c / 2].zw = jacobian[1];
+    }
+}
+
+// The lookups a pixel takes: the vertices' interpolated (data) for the
+// cascades whose warp the pixel's cell (cellSize_m) samples finely enough,
+// its own for the rest.
+CascadeLookups interpolatedLookups(vec2 restOffset_m, vec4 data[SWELL_OCEAN_VERTEX_DATA], float cellSize_m)
+{
+    CascadeLookups l;
+    for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
+        if (cellSize_m <= cascades[c].vertexWarpCell_m) {
+            vec4 second = data[SWELL_FFT_CASCADES + c / 2];
+            l.texels[c] = data[c].xy;
+            l.jacobian[c] = mat2(data[c].zw, (c & 1) == 0 ? second.xy : second.zw);
+        } else {
+            l.texels[c] = warpedTexels(c, restOffset_m, l.jacobian[c]);
+        }
+    }
+    return l;
+}
+
 // The normal at a footprint (the displacement left zero, the foam left to
 // oceanShading): the slopes through their mipmaps. The slope variance the mipmaps
 // average away comes back from the second moments (LEAN mapping, Olano &
 // Baker 2010: E[s^2] - E[s]^2 over the footprint), with that of the waves no
 // cascade holds (Elfouhaily et al. 1997), as the highlight's spread.
-SurfacePoint spectralSlopes(vec2 restOffset_m, float footprint_m, float heightScale)
+SurfacePoint spectralSlopes(CascadeLookups lookups, float footprint_m, float heightScale)
 {
     // Gradients along rest x and z, each (d/dx, d/dz).
     vec2 gradDx = vec2(0.0), gradDy = vec2(0.0), gradDz = vec2(0.0);
     float slopeVariance = 0.0;
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         SpectralCascade cascade = cascades[c];
-        mat2 jacobian;
-        vec2 s = warpedTexels(c, restOffset_m, jacobian);
+        mat2 jacobian = lookups.jacobian[c];
+        vec2 s = lookups.texels[c];
         float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
         // Sample centres sit at integer texels: shift by half a texel for the
         // hardware's filter, and pick the mip the footprint covers.
@@ -219,7 +276,7 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
             displacement += weight * bilinearDisplacement(warpedTexels(c, restOffset_m, jacobian), c);
         }
     }
-    SurfacePoint p = spectralSlopes(restOffset_m, footprint_m, heightScale);
+    SurfacePoint p = spectralSlopes(warpedLookups(restOffset_m), footprint_m, heightScale);
     p.displacement = displacement.xyz * heightScale;
     return p;
 }
@@ -227,16 +284,31 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
 // The slope textures hold every wave the pixel resolves, at the cost of one
 // filtered fetch per cascade: the grid's normal adds nothing. The foam is
 // the pixel's alone (the vertices have no use for it).
-SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m, vec3 gridAlongX,
-                          vec3 gridAlongZ, float heightScale)
+SurfacePoint spectralShading(CascadeLookups lookups, vec2 restOffset_m, float pixelFootprint_m, float heightScale)
 {
-    SurfacePoint p = spectralSlopes(restOffset_m, pixelFootprint_m, heightScale);
+    SurfacePoint p = spectralSlopes(lookups, pixelFootprint_m, heightScale);
     FoamLook foam = foamLook(foamNoise, breakingFoamAmount, heightScale * worldFoam(restOffset_m, pixelFootprint_m, true),
                              restOffset_m, pixelFootprint_m);
     p.foam = foam.cover;
     p.breakingFoam = foam.breaking;
     p.foamSlope = foam.slope;
     return p;
+}
+
+SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m, vec3 gridAlongX,
+                          vec3 gridAlongZ, float heightScale)
+{
+    return spectralShading(warpedLookups(restOffset_m), restOffset_m, pixelFootprint_m, heightScale);
+}
+
+// oceanShading with what the pixel's vertices handed it (oceanVertexData,
+// interpolated) and the grid's cell there, m.
+SurfacePoint oceanShadingFromVertices(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m,
+                                      vec3 gridAlongX, vec3 gridAlongZ, float heightScale,
+                                      vec4 vertexData[SWELL_OCEAN_VERTEX_DATA], float cellSize_m)
+{
+    return spectralShading(interpolatedLookups(restOffset_m, vertexData, cellSize_m), restOffset_m,
+                           pixelFootprint_m, heightScale);
 }
 
 // The bubbles under the whitecaps: a breaking crest drives a plume of them

@@ -62,13 +62,15 @@ struct Probed {
     double slopeVariance = 0.0;
 };
 
-std::vector<Probed> runProbes(const swell::Scene& scene, double time_s, const std::vector<glm::vec4>& probes)
+// The probes run through `probeShader` (kProbe's inputs and outputs).
+std::vector<Probed> runProbes(const swell::Scene& scene, double time_s, const std::vector<glm::vec4>& probes,
+                              const char* probeShader = kProbe)
 {
     const swell::gl::ShaderSources embedded = swell::gl::ShaderSources::embedded();
     std::map<std::string, std::string> files;
     for (const std::string& name : embedded.fileNames())
         files[name] = embedded.file(name);
-    files["shading_probe.vert"] = kProbe;
+    files["shading_probe.vert"] = probeShader;
     const swell::gl::ShaderSources sources = swell::gl::ShaderSources::fromMap(files);
 
     const std::unique_ptr<swell::WaveModel> model = swell::makeWaveModel(scene);
@@ -284,6 +286,83 @@ TEST_F(ShadingNormals, GerstnerKeepsItsSlopeVarianceAtEveryFootprint)
         const double footprint_m = footprints[f], mss = rendered[f];
         std::printf("pixel %5.3f m: rendered mean square slope %.5f, the waves' %.5f\n", footprint_m, mss, expected);
         EXPECT_NEAR(mss / expected, 1.0, 0.1) << "pixel " << footprint_m << " m";
+    }
+}
+
+// The spectral model's pixels take each cascade's warped lookup
+// interpolated from their triangle's vertices where the grid's cell is at
+// most 1/SWELL_FFT_WARP_CELLS_PER_WAVELENGTH of the warp's shortest
+// sinusoid, and evaluate it themselves on larger cells
+// (oceanShadingFromVertices). Here a point at barycentric (0.2, 0.5, 0.3) of
+// a grid triangle with legs of the cell size: its normal from the three
+// vertices' oceanVertexData, interpolated as the rasteriser does, against
+// the per-pixel warp's (fullNormal), at pixel footprints of the cell and a
+// tenth of it (level 0 of the finest cascades).
+const char* kVertexWarpProbe = R"(
+#include "ocean.glsl"
+layout(location = 0) in vec4 probe;
+out vec3 fullNormal;
+out vec3 shadedNormal;
+out float shadedSlopeVariance;
+void main()
+{
+    float cell_m = probe.z;
+    vec2 p = probe.xy;
+    vec2 v0 = p - cell_m * vec2(0.5, 0.3);
+    vec4 d0[SWELL_OCEAN_VERTEX_DATA], d1[SWELL_OCEAN_VERTEX_DATA], d2[SWELL_OCEAN_VERTEX_DATA];
+    vec4 d[SWELL_OCEAN_VERTEX_DATA];
+    oceanVertexData(v0, d0);
+    oceanVertexData(v0 + vec2(cell_m, 0.0), d1);
+    oceanVertexData(v0 + vec2(0.0, cell_m), d2);
+    for (int i = 0; i < SWELL_OCEAN_VERTEX_DATA; ++i)
+        d[i] = 0.2 * d0[i] + 0.5 * d1[i] + 0.3 * d2[i];
+    SurfacePoint grid = oceanSurface(p, cell_m, 1.0);
+    fullNormal = oceanShading(p, probe.w, cell_m, grid.alongX, grid.alongZ, 1.0).normal;
+    SurfacePoint shaded = oceanShadingFromVertices(p, probe.w, cell_m, grid.alongX, grid.alongZ, 1.0, d, cell_m);
+    shadedNormal = shaded.normal;
+    shadedSlopeVariance = shaded.slopeVariance;
+    gl_Position = vec4(0.0);
+}
+)";
+
+// At 20 m/s (the storm's sea; its cascades' warps are 99 m to 14 km long,
+// interpolated on cells up to 4.9 m to 740 m), on every cell size the two
+// normals differ by half what the GPU's shading normal may differ from the
+// CPU twin's (SpectralNormalAtAFineFootprintIsTheCpuTwins: 3e-3 rad rms,
+// 2e-2 at worst, the 8-bit filter weights' share), and on cells too large
+// for any cascade to take the vertices' lookup, by float rounding alone.
+// Measured: 1.2e-4 to 1.3e-3 rad rms, 6.9e-4 to 5.8e-3 at worst (the
+// same filter weights' rounding of lookups a fraction of a texel apart).
+// Interpolating on cells 16 times too large went red.
+TEST_F(ShadingNormals, SpectralPixelsInterpolateTheWarpOnlyWhereItIsNearlyLinear)
+{
+    const swell::Scene scene = windScene(20.0, swell::WaveModelKind::Spectral);
+    std::vector<glm::vec4> probes;
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> offset(-1500.0f, 1500.0f);
+    const std::vector<float> cells_m = {0.05f, 0.5f, 2.0f, 4.0f, 16.0f, 64.0f, 256.0f, 1024.0f};
+    for (const float cell_m : cells_m)
+        for (const float pixelOverCell : {0.1f, 1.0f})
+            for (int i = 0; i < 200; ++i)
+                probes.push_back({offset(random), offset(random), cell_m, cell_m * pixelOverCell});
+    const std::vector<Probed> probed = runProbes(scene, 1.0e3, probes, kVertexWarpProbe);
+    constexpr double kRms_rad = 1.5e-3, kWorst_rad = 1.0e-2;
+    for (size_t k = 0; k < cells_m.size(); ++k) {
+        double worst = 0.0, sumSq = 0.0;
+        const size_t first = k * 400, last = first + 400;
+        for (size_t i = first; i < last; ++i) {
+            const double angle = std::acos(std::clamp(
+                glm::dot(glm::normalize(probed[i].fullNormal), glm::normalize(probed[i].shadedNormal)), -1.0, 1.0));
+            worst = std::max(worst, angle);
+            sumSq += angle * angle;
+        }
+        std::printf("cell %7.2f m: the interpolated warp's normal off the pixel's by %.2e rad rms, %.2e at worst\n",
+                    cells_m[k], std::sqrt(sumSq / 400.0), worst);
+        EXPECT_LT(std::sqrt(sumSq / 400.0), kRms_rad) << "cells of " << cells_m[k] << " m";
+        EXPECT_LT(worst, kWorst_rad) << "cells of " << cells_m[k] << " m";
+        if (cells_m[k] >= 1024.0f) {
+            EXPECT_LT(worst, 2.0e-5) << "cells too large for any cascade's vertex warp took it";
+        }
     }
 }
 

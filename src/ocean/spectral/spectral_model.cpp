@@ -21,7 +21,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 namespace swell {
@@ -41,9 +43,11 @@ struct alignas(16) CascadeUniform {
     glm::vec2 originTexels;     // the grid centre modulo the patch, in texels
     float texelsPerMetre;       // N / L
     float shortestWavelength_m; // what the LOD weight tests
+    float vertexWarpCell_m;     // the largest grid cell whose pixels interpolate the warp, m
     WarpWaveUniform warp[kWarpWaves];
 };
-static_assert(sizeof(CascadeUniform) == 16 + 32 * kWarpWaves);
+static_assert(sizeof(CascadeUniform) == 32 + 32 * kWarpWaves);
+static_assert(offsetof(CascadeUniform, warp) == 32);
 // One lattice of the foam's texture (swell::spectral::FoamNoiseMap).
 struct alignas(16) FoamNoiseUniform {
     glm::vec4 map; // column-major: cells per metre along x, then along z
@@ -233,10 +237,15 @@ public:
             uc.originTexels = glm::vec2(origin * scale);
             uc.texelsPerMetre = float(scale);
             uc.shortestWavelength_m = float(cascade.shortestWavelength_m());
+            double shortestWarp_m = std::numeric_limits<double>::infinity();
             for (int i = 0; i < kWarpWaves; ++i) {
                 const WarpWave& w = field_->warps[size_t(c)][size_t(i)];
                 uc.warp[i] = {glm::vec2(w.wavevector_radpm), glm::vec2(w.amplitude_m), float(warpPhaseAt(w, gridCenter_m))};
+                const double k = glm::length(w.wavevector_radpm);
+                if (k > 0.0)
+                    shortestWarp_m = std::min(shortestWarp_m, kTwoPi / k);
             }
+            uc.vertexWarpCell_m = float(std::min(shortestWarp_m / SWELL_FFT_WARP_CELLS_PER_WAVELENGTH, 1e30));
         }
         const double wind_rad = settings_.wind.windDirection_deg * kPi / 180.0;
         u.windDirection = glm::vec2(std::cos(wind_rad), std::sin(wind_rad));
