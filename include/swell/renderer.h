@@ -214,6 +214,12 @@ public:
     // to show what the jitter brings. Default on.
     void setTemporalJitter(bool on);
 
+    // For tests and the benchmark: the largest error, in each pass's own
+    // pixels, that the built-in island's level of detail may show (docs/
+    // RENDERING.md "The island's levels of detail"); 0 draws its full grid
+    // in every pass. Default 0.5. Throws swell::InputError below 0.
+    void setIslandTolerance(double tolerance_px);
+
     // Recompiles every shader from options.shaders (for hot reload). On failure
     // the old programs stay in use and the error is thrown.
     void reloadShaders();

@@ -64,6 +64,7 @@ void Renderer::Impl::drawLabelPass(const Camera& camera, const View& view, glm::
     SceneWorld own(world, p.mesh, p.mesh, v.poses, v.island, counters);
     own.setLabels(glm::uvec2(SWELL_LABEL_TERRAIN, 0u), std::move(objectLabels));
     own.setMainPassInAir(false);
+    own.setIslandTolerance(islandTolerance_px);
     drawGeometry(PassKind::Main, &own, nullptr, view, PassMain, f, labelTarget.framebuffer(), viewport);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     drawGeometry(PassKind::WaterMask, &own, nullptr, view, PassMain, f, labelTarget.framebuffer(), viewport);

@@ -33,4 +33,12 @@ void GpuMesh::draw() const
     glDrawElements(GL_TRIANGLES, GLsizei(indexCount_), GL_UNSIGNED_INT, nullptr);
 }
 
+void GpuMesh::drawRanges(const std::vector<GLsizei>& counts, const std::vector<const void*>& offsets) const
+{
+    if (counts.empty())
+        return;
+    glBindVertexArray(vao_.id());
+    glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(counts.size()));
+}
+
 } // namespace swell::detail

@@ -287,6 +287,13 @@ bool Renderer::temporalResolve() const { return impl_->temporalOn; }
 void Renderer::resetTemporalHistory() { impl_->temporal.reset(); }
 void Renderer::setTemporalJitter(bool on) { impl_->temporal.setJitterEnabled(on); }
 
+void Renderer::setIslandTolerance(double tolerance_px)
+{
+    if (!(tolerance_px >= 0.0))
+        throw InputError({"island tolerance"}, fmt::format("{} pixels is below 0", tolerance_px));
+    impl_->islandTolerance_px = tolerance_px;
+}
+
 const FrameCounters& Renderer::counters() const { return impl_->counters; }
 void Renderer::setPassObserver(PassObserver* observer) { impl_->observer = observer; }
 

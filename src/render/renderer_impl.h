@@ -87,6 +87,7 @@ struct Renderer::Impl {
     TemporalResolve temporal;
     std::optional<glm::dmat4> temporalViewProj;
     bool interactive = false; // see Renderer::setInteractive
+    double islandTolerance_px = kIslandLodTolerance_px; // see Renderer::setIslandTolerance
     FrameCounters counters;
     // Charges the calling thread's CPU time to counters.simulationCpu's
     // parts; paused while the observer runs.

@@ -1,5 +1,11 @@
 #include "render/scene_world.h"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cstddef>
+
 namespace swell::detail {
 
 SceneWorld::SceneWorld(const World& world, const MeshProgram& meshInAir, const MeshProgram& mesh,
@@ -16,19 +22,90 @@ void SceneWorld::drawPass(const PassView& pass)
     if (pass.pass == PassKind::WaterMask)
         drawHullVolumes(program);
     else
-        drawObjects(program);
+        drawObjects(program, pass);
 }
 
-void SceneWorld::drawObjects(const MeshProgram& program)
+namespace {
+
+// Whether the box (absolute world, m) lies wholly outside the pass: behind
+// its clip plane, or beyond one of the four sides of its frustum.
+bool outsidePass(const PassView& pass, const glm::dmat4& viewProj, glm::dvec3 lo, glm::dvec3 hi)
+{
+    int behindPlane = 0, left = 0, right = 0, below = 0, above = 0, behindEye = 0;
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+        behindPlane += glm::dot(pass.clipPlane_m, glm::dvec4(p, 1.0)) < 0.0;
+        const glm::dvec4 q = viewProj * glm::dvec4(p, 1.0);
+        left += q.x < -q.w;
+        right += q.x > q.w;
+        below += q.y < -q.w;
+        above += q.y > q.w;
+        behindEye += q.w <= 0.0;
+    }
+    return behindPlane == 8 || left == 8 || right == 8 || below == 8 || above == 8 || behindEye == 8;
+}
+
+// Distance from p to the box, m (0 inside).
+double distanceToBox(glm::dvec3 p, glm::dvec3 lo, glm::dvec3 hi)
+{
+    return glm::length(glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0)));
+}
+
+} // namespace
+
+// Each tile of the island in view at the coarsest level whose error
+// projects to the tolerance or less from the nearest point of its box, in
+// this pass's own pixels (the reduced reflection and refraction passes take
+// coarser levels than the main pass), with its skirt along each side whose
+// neighbour took another level. One draw call.
+void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
+{
+    const IslandLevels& levels = world_.islandLevels;
+    if (levels.levels.empty())
+        return;
+    const double focal_px = 0.5 * double(pass.viewport.w) * pass.projection[1][1];
+    const glm::dmat4 viewProj = pass.projection * pass.view;
+    const std::size_t tiles = levels.boxLo.size();
+    tileLevels_.assign(tiles, -1);
+    for (std::size_t t = 0; t < tiles; ++t) {
+        const glm::dvec3 lo = kIslandPosition_m + glm::dvec3(levels.boxLo[t]);
+        const glm::dvec3 hi = kIslandPosition_m + glm::dvec3(levels.boxHi[t]);
+        if (!outsidePass(pass, viewProj, lo, hi))
+            tileLevels_[t] = int(islandTileLevel(levels, t, distanceToBox(pass.eye_m, lo, hi), focal_px, islandTolerance_px_));
+    }
+    tileCounts_.clear();
+    tileOffsets_.clear();
+    long long triangles = 0;
+    auto add = [&](const IndexRange& range) {
+        tileCounts_.push_back(GLsizei(range.count));
+        tileOffsets_.push_back(reinterpret_cast<const void*>(std::size_t(range.first) * sizeof(std::uint32_t)));
+        triangles += range.count / 3;
+    };
+    for (std::size_t t = 0; t < tiles; ++t) {
+        if (tileLevels_[t] < 0)
+            continue;
+        const IslandTile& tile = levels.levels[std::size_t(tileLevels_[t])].tiles[t];
+        add(tile.cells);
+        // A neighbour out of the pass hides nothing: the gap lies inside its box.
+        for (int side = 0; side < kTileSides; ++side) {
+            const int across = levels.neighbours[t][std::size_t(side)];
+            if (across >= 0 && tileLevels_[std::size_t(across)] >= 0 && tileLevels_[std::size_t(across)] != tileLevels_[t])
+                add(tile.skirts[std::size_t(side)]);
+        }
+    }
+    if (tileCounts_.empty())
+        return;
+    program.setModel(island_);
+    program.setLabel(islandLabel_);
+    world_.island.drawRanges(tileCounts_, tileOffsets_);
+    counters_.worldTriangles += triangles;
+    ++counters_.drawCalls;
+}
+
+void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
 {
     program.use();
-    if (world_.island.indexCount() > 0) {
-        program.setModel(island_);
-        program.setLabel(islandLabel_);
-        world_.island.draw();
-        counters_.worldTriangles += world_.island.indexCount() / 3;
-        ++counters_.drawCalls;
-    }
+    drawIsland(program, pass);
     for (std::size_t i = 0; i < world_.meshes.size() && i < poses_.size(); ++i) {
         program.setModel(poses_[i]);
         if (i < objectLabels_.size())

@@ -27,6 +27,9 @@ public:
     // Whether the next Main pass may have pixels that look out from below
     // the water (the main pass's waterline mask decides per pixel then).
     void setMainPassInAir(bool inAir) { mainInAir_ = inAir; }
+    // The island's largest error a pass may show, in its pixels; 0 draws
+    // its full grid in every pass (default kIslandLodTolerance_px).
+    void setIslandTolerance(double tolerance_px) { islandTolerance_px_ = tolerance_px; }
 
     void drawPass(const PassView& pass) override;
 
@@ -39,7 +42,8 @@ public:
     }
 
 private:
-    void drawObjects(const MeshProgram& program);
+    void drawObjects(const MeshProgram& program, const PassView& pass);
+    void drawIsland(const MeshProgram& program, const PassView& pass);
     void drawHullVolumes(const MeshProgram& program);
 
     const World& world_;
@@ -48,6 +52,12 @@ private:
     glm::mat4 island_;
     FrameCounters& counters_;
     bool mainInAir_ = true;
+    double islandTolerance_px_ = kIslandLodTolerance_px;
+    // The island's tiles' levels (-1: out of the pass) and the index ranges
+    // drawn, kept between passes to reuse their storage.
+    std::vector<int> tileLevels_;
+    std::vector<GLsizei> tileCounts_;
+    std::vector<const void*> tileOffsets_;
     glm::uvec2 islandLabel_{0};
     std::vector<glm::uvec2> objectLabels_;
 };

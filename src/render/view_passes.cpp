@@ -306,6 +306,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     ViewFrame v = prepareView(view, size, options.geometry != nullptr);
     ++counters.views;
     SceneWorld own(world, programs.meshInAir, programs.mesh, v.poses, v.island, counters);
+    own.setIslandTolerance(islandTolerance_px);
     SceneWorld* ownWorld = options.sceneWorld ? &own : nullptr;
     // Drawn for the temporal resolve below the output's size: the water's
     // detail filtered by the output pixel's footprint (frame.glsl).

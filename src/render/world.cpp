@@ -20,8 +20,13 @@ World buildWorld(const Scene& from)
     // Every file is read and checked on the CPU first (assets/scene_assets.h); only uploads here.
     const SceneAssets assets = loadSceneAssets(from);
     World world;
-    if (from.showTerrain)
-        world.island = GpuMesh(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution));
+    if (from.showTerrain) {
+        world.islandLevels =
+            makeIslandLevels(makeIsland(kIslandSize_m, kIslandPeak_m, kIslandResolution), kIslandResolution, kIslandTileCells);
+        world.island = GpuMesh(world.islandLevels.mesh);
+        // The GPU holds them now; the tiles' ranges and boxes are all the frame needs.
+        world.islandLevels.mesh = {};
+    }
     for (const ObjectAssets& o : assets.objects) {
         world.meshes.push_back(std::make_unique<GpuMesh>(*o.mesh));
         world.meshReach_m.push_back(o.reach_m);

@@ -7,6 +7,7 @@
 #include "render/gpu_types.h"
 #include "render/mesh.h"
 #include "render/surface_probe.h"
+#include "assets/island_levels.h"
 #include "assets/mesh_data.h"
 #include "objects/scene_bodies.h"
 #include "swell/drawn_surface.h"
@@ -25,9 +26,19 @@ inline constexpr double kIslandSize_m = 1400.0;
 inline constexpr double kIslandPeak_m = 70.0;
 inline constexpr int kIslandResolution = 192;
 inline constexpr glm::dvec3 kIslandPosition_m{-700.0, 0.0, -1700.0};
+// Its levels of detail (assets/island_levels.h): tiles of 24 of the full
+// grid's cells a side (8 x 8 tiles; levels of step 1, 2, 4 and 8), and the
+// largest error a tile may show, in the pass's own pixels (docs/RENDERING.md
+// "The island's levels of detail").
+inline constexpr int kIslandTileCells = 16;
+inline constexpr double kIslandLodTolerance_px = 0.5;
 
 struct World {
+    // The island's vertices and every level's triangles and skirts
+    // (islandLevels' mesh, emptied once uploaded): drawn a tile at a time,
+    // each at its own level, never whole.
     GpuMesh island;
+    IslandLevels islandLevels;
     std::vector<std::unique_ptr<GpuMesh>> meshes;
     // Per scene object, the farthest any vertex lies from the model's origin, m (unscaled).
     std::vector<double> meshReach_m;
