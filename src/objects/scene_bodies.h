@@ -65,6 +65,8 @@ public:
     // a time, or one more than kMaxStepAhead_s past it, is clamped there;
     // nothing runs ahead of a time the next frame then goes back before
     // (the bodies would start again, as they do when time goes back).
+    // Until the next advanceTo(), poses and the wake's frame are asked for
+    // at that time or later (the bows' histories at any time drawn since).
     void stepAheadTo(double time_s);
     // How far ahead of the last advanceTo() the worker may step, s: the
     // bows keep their samples that much longer (bowHistory).
