@@ -190,6 +190,9 @@ int runBench(const BenchOptions& options)
                                             : pathCamera(scene.camera, measured ? double(k) / double(options.frames) : 0.0);
         FrameSample frame = recorder.recordFrame([&] { renderer.render(camera, t, r.size, output.framebuffer.id()); });
         checkGl("rendering a frame");
+        // As a video does (`swell render`): the bodies step towards the
+        // next frame on their own thread meanwhile (Renderer::anticipate).
+        renderer.anticipate(double(i + 1) * kFrameStep_s);
         if (measured) {
             r.real.push_back(std::move(frame));
             r.realTimes_s.push_back(t);

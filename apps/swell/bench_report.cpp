@@ -287,7 +287,7 @@ void printReport(const Results& r)
         wake_ms += r.wakeSteps_ms[f];
     }
     if (wakeSteps > 0)
-        std::printf("  wake: %lld steps of 1/30 s over the measured frames (within \"bodies\"), %.2f ms a step, "
+        std::printf("  wake: %lld steps of 1/30 s over the measured frames (within \"bodies\" or on the bodies' worker), %.2f ms a step, "
                     "%.2f ms a frame on average (wall)\n",
                     wakeSteps, wake_ms / double(wakeSteps), wake_ms / double(r.wakeSteps.size()));
     else

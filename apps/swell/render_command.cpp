@@ -150,6 +150,9 @@ int runRender(const RenderOptions& options)
         const Camera camera = renderer.sceneCameraAt(t);
         // Through the camera's lens and sensor (swell/sensor.h).
         const SensorFrame sensor = renderSensorFrame(renderer, camera, t, size, options.labels);
+        // The bodies step towards the next frame while this one is written.
+        if (i + 1 < frames)
+            renderer.anticipate(options.time_s + double(i + 1) / options.fps);
         const fs::path frame = options.duration_s ? sequencePath(output, i) : output;
         if (video)
             videoWriter->write(sensor.image);

@@ -109,9 +109,16 @@ struct SWELL_API FrameCounters {
     int views = 0;             // views drawn since the last advanceTo()
     int simulationSteps = 0;   // 1 when the last advanceTo() moved the simulation to a new time or viewpoint
     int floatingBodies = 0;  // rigid bodies in the scene (swell/floating_body.h)
-    long long bodySteps = 0; // their integration steps taken for this frame (1/120 s each, all bodies)
-    long long wakeSteps = 0; // steps of their wake field taken for this frame (1/30 s each)
-    double wakeSteps_ms = 0.0; // the wall time those steps took, ms (part of the "bodies" pass)
+    // Their integration steps taken for this frame (1/120 s each, all
+    // bodies), and their wake's (1/30 s each), since the last advanceTo():
+    // those anticipate() had taken ahead included.
+    long long bodySteps = 0;
+    long long wakeSteps = 0;
+    double wakeSteps_ms = 0.0; // the wall time the wake's steps took, ms, on whichever thread took them
+    // The CPU time the bodies' worker thread spent stepping ahead of this
+    // frame (anticipate()) since the last advanceTo(), ms, its own clock:
+    // Swell's CPU time, but not the calling thread's, so not in simulationCpu.
+    double bodiesAheadCpu_ms = 0.0;
     int oceanTransforms = 0;   // the wave model's sets of inverse FFTs for this frame (spectral model)
     int foamSteps = 0;         // its foam's steps for this frame: more than one is a replay of its history
     // The frame's own queries of the water (each floating object's, the
@@ -246,6 +253,19 @@ public:
     // viewport, a projection that cannot be inverted, a framebuffer that is
     // incomplete or has no depth, or a callback that leaves a GL error.
     void draw(const View& view, unsigned framebuffer, const DrawOptions& options = {});
+
+    // For a host that knows its next frame's time (a video, the benchmark):
+    // the floating rigid bodies and their wake step towards nextTime_s on a
+    // worker thread of their own while this frame is drawn, and the next
+    // advanceTo() waits for them and takes the steps left. They take the
+    // same steps in the same order either way, so every pose, wake and
+    // query is the same bit for bit whether or when this was called. Times
+    // before the simulated one are ignored; a next advanceTo() before
+    // nextTime_s starts the bodies again from their start, as time going
+    // back does. The bodies query the wave model and the host's surface
+    // sources from that thread: their CPU queries must be thread-safe
+    // (Swell's models' are).
+    void anticipate(double nextTime_s);
 
     // Swell owns the frame: advances to time_s at the camera and draws one
     // frame of `size` pixels into `framebuffer` (0: the default one),

@@ -1,6 +1,7 @@
 // A scene's floating bodies (scene_bodies.h).
 #include "objects/scene_bodies.h"
 
+#include "core/thread_cpu.h"
 #include "swell/wave_model_gpu.h" // the waves' GPU half, handed on
 #include "swell/error.h"
 #include "swell/grid.h"
@@ -14,6 +15,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <utility>
 
 namespace swell::detail {
 
@@ -46,6 +53,12 @@ bool sameBodies(const Scene& a, const Scene& b)
 }
 
 namespace {
+
+// The samples a bow keeps: the spray's history, and those the worker may
+// have taken ahead of the frame drawn (SceneBodies::kMaxStepAhead_s), so a
+// step ahead never overwrites one the frame still reads.
+constexpr std::size_t kBowSamplesKept =
+    SWELL_BOW_SPRAY_HISTORY + std::size_t(SceneBodies::kMaxStepAhead_s * SWELL_BOW_SPRAY_SAMPLES_PER_S) + 2;
 
 // The scene's waves on the bodies' clock: their time t is the scene's
 // t + start_s, so the bodies step from 0 whenever the history starts.
@@ -80,13 +93,164 @@ private:
 
 } // namespace
 
+// One thread that runs one task at a time, started on the first step ahead.
+class SceneBodies::Ahead {
+public:
+    Ahead() : thread_([this] { run(); }) {}
+    ~Ahead()
+    {
+        {
+            const std::lock_guard lock(mutex_);
+            quit_ = true;
+        }
+        changed_.notify_all();
+        thread_.join(); // after the task in hand, if any
+    }
+    Ahead(const Ahead&) = delete;
+    Ahead& operator=(const Ahead&) = delete;
+
+    void start(std::function<void()> task)
+    {
+        wait();
+        {
+            const std::lock_guard lock(mutex_);
+            task_ = std::move(task);
+            busy_ = true;
+        }
+        changed_.notify_all();
+    }
+    // Until the task in hand is done; its error, if it threw, is kept for rethrow().
+    void wait()
+    {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return !busy_; });
+    }
+    void rethrow()
+    {
+        wait();
+        if (std::exception_ptr e = std::exchange(error_, nullptr))
+            std::rethrow_exception(e);
+    }
+    double cpu_ms()
+    {
+        wait();
+        return cpu_ms_;
+    }
+
+private:
+    void run()
+    {
+        std::unique_lock lock(mutex_);
+        for (;;) {
+            changed_.wait(lock, [&] { return quit_ || busy_; });
+            if (busy_) {
+                std::function<void()> task = std::move(task_);
+                lock.unlock();
+                const double before_ms = threadCpu_ms();
+                std::exception_ptr error;
+                try {
+                    task();
+                } catch (...) {
+                    error = std::current_exception();
+                }
+                const double spent_ms = threadCpu_ms() - before_ms;
+                lock.lock();
+                cpu_ms_ += spent_ms;
+                if (error)
+                    error_ = error;
+                busy_ = false;
+                changed_.notify_all();
+            } else if (quit_) {
+                return;
+            }
+        }
+    }
+
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::function<void()> task_;
+    bool busy_ = false, quit_ = false;
+    std::exception_ptr error_;
+    double cpu_ms_ = 0.0;
+    std::thread thread_; // last: it starts once the rest is there
+};
+
+SceneBodies::AheadHandle::AheadHandle(AheadHandle&& other) noexcept : ahead(std::move(other.ahead))
+{
+    if (ahead)
+        ahead->wait(); // the worker writes to the bodies being moved from until it is done
+}
+
+SceneBodies::AheadHandle& SceneBodies::AheadHandle::operator=(AheadHandle&& other) noexcept
+{
+    // Both workers stop writing to their bodies before any other member is
+    // assigned (this handle is the first member); this one's is joined as it goes.
+    if (this != &other) {
+        if (ahead)
+            ahead->wait();
+        if (other.ahead)
+            other.ahead->wait();
+        ahead = std::move(other.ahead);
+    }
+    return *this;
+}
+
+SceneBodies::AheadHandle::AheadHandle() = default;
+SceneBodies::AheadHandle::~AheadHandle() = default;
+
 SceneBodies::SceneBodies(SceneBodies&&) noexcept = default;
 SceneBodies& SceneBodies::operator=(SceneBodies&&) noexcept = default;
-SceneBodies::~SceneBodies() = default;
+
+SceneBodies::~SceneBodies()
+{
+    // Before any member goes: the worker may be stepping them.
+    if (ahead_.ahead)
+        ahead_.ahead->wait();
+}
+
+void SceneBodies::settle() const
+{
+    if (ahead_.ahead)
+        ahead_.ahead->rethrow();
+}
+
+double SceneBodies::aheadCpu_ms() const { return ahead_.ahead ? ahead_.ahead->cpu_ms() : 0.0; }
+
+void SceneBodies::stepAheadTo(double time_s)
+{
+    settle();
+    // Never before the last time asked (that would start the bodies
+    // again), never further past it than the bows keep samples for.
+    const double target_s = std::min(time_s, lastAsked_s_ + kMaxStepAhead_s);
+    if (!(target_s > lastAsked_s_) || bodies_.empty() || count_ == 0)
+        return;
+    if (!ahead_.ahead)
+        ahead_.ahead = std::make_unique<Ahead>();
+    ahead_.ahead->start([this, target_s] {
+        advanceNow(target_s);
+        // The frame there too, which the next advanceTo() would otherwise blend on the calling thread.
+        if (wake_) {
+            aheadFrame_ = std::make_shared<const WakeFrame>(wake_->frameAt(clock_s(target_s)));
+            aheadFrameTime_s_ = target_s;
+        }
+    });
+}
 
 double SceneBodies::clock_s(double time_s) const { return std::max(0.0, time_s - start_s_); }
 
-WakeFrame SceneBodies::wakeFrameAt(double time_s) const { return wake_->frameAt(clock_s(time_s)); }
+WakeFrame SceneBodies::wakeFrameAt(double time_s) const
+{
+    settle();
+    return wake_->frameAt(clock_s(time_s));
+}
+
+std::shared_ptr<const WakeFrame> SceneBodies::sharedWakeFrameAt(double time_s) const
+{
+    settle();
+    if (aheadFrame_ && aheadFrameTime_s_ == time_s)
+        return aheadFrame_;
+    return std::make_shared<const WakeFrame>(wake_->frameAt(clock_s(time_s)));
+}
 
 SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& sceneWaves)
     : start_s_(bodiesStart_s(scene)), waves_(std::make_unique<WavesOnTheBodiesClock>(sceneWaves, start_s_))
@@ -154,7 +318,7 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
                         for (int k = 0; k < SWELL_BOW_SPRAY_STATIONS; ++k)
                             b.stationsInModel[side][k] = line->stations[side][k] / o.scale;
                     b.velocity_m_per_s = travel;
-                    b.samples.assign(SWELL_BOW_SPRAY_HISTORY, {-1, BowSample{}});
+                    b.samples.assign(kBowSamplesKept, {-1, BowSample{}});
                     bows_.resize(i + 1);
                     bows_[i] = std::move(b);
                 }
@@ -222,9 +386,27 @@ void SceneBodies::advanceWakeFor(std::int64_t bodyStep)
 
 void SceneBodies::advanceTo(double sceneTime_s)
 {
+    settle();
+    lastAsked_s_ = sceneTime_s;
+    advanceNow(sceneTime_s);
+}
+
+void SceneBodies::advanceNow(double sceneTime_s)
+{
     const double time_s = clock_s(sceneTime_s);
     // In lockstep, step by step: every body asks for the water at the same
     // sample times one after another (see FloatingBody::advanceToStep).
+    // A frame made ahead holds while the wake takes no step.
+    const std::int64_t wakeStepsBefore = wakeStepsTaken_;
+    struct ForgetFrameOnStep {
+        SceneBodies& bodies;
+        std::int64_t before;
+        ~ForgetFrameOnStep()
+        {
+            if (bodies.wakeStepsTaken_ != before)
+                bodies.aheadFrame_.reset();
+        }
+    } forget{*this, wakeStepsBefore};
     const std::int64_t last = FloatingBody::lastStepFor(time_s);
     std::int64_t from = last;
     bool wentBack = false;
@@ -236,8 +418,10 @@ void SceneBodies::advanceTo(double sceneTime_s)
                 b->advanceToStep(0); // time went back: all start again from t = 0
             from = std::min(from, b->state().step);
         }
-    if (wake_ && (wentBack || wake_->steps() == 0))
+    if (wake_ && (wentBack || wake_->steps() == 0)) {
         wake_->reset(wakeFocus());
+        aheadFrame_.reset();
+    }
     for (std::int64_t n = from + 1; n <= last; ++n) {
         if (wake_)
             advanceWakeFor(n - 1);
@@ -259,12 +443,13 @@ void SceneBodies::sampleBows(std::int64_t step)
     const std::int64_t index = step / kBodyStepsPerWaterSample;
     for (std::size_t i = 0; i < bows_.size(); ++i)
         if (bows_[i] && bodies_[i] && bodies_[i]->state().step == step)
-            bows_[i]->samples[std::size_t(index % SWELL_BOW_SPRAY_HISTORY)] = {
+            bows_[i]->samples[std::size_t(index % kBowSamplesKept)] = {
                 index, bowSampleOf(*bodies_[i], bows_[i]->line, bows_[i]->velocity_m_per_s)};
 }
 
 std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> SceneBodies::bowHistory(std::size_t i, double time_s, double& lag_s) const
 {
+    settle();
     static_assert(SWELL_BOW_SPRAY_SAMPLES_PER_S * kBodyStepsPerWaterSample == kBodyStepsPerSecond,
                   "a bow sample is a water sample of the steps");
     std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> history{};
@@ -278,7 +463,7 @@ std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> SceneBodies::bowHistory(std::size
         const std::int64_t index = newest - j;
         if (index < 0)
             break;
-        const auto& [kept, sample] = b->samples[std::size_t(index % SWELL_BOW_SPRAY_HISTORY)];
+        const auto& [kept, sample] = b->samples[std::size_t(index % kBowSamplesKept)];
         if (kept == index)
             history[std::size_t(j)] = sample;
     }
@@ -287,6 +472,7 @@ std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> SceneBodies::bowHistory(std::size
 
 std::optional<glm::dmat4> SceneBodies::poseAt(std::size_t i, double time_s)
 {
+    settle();
     if (i >= bodies_.size() || !bodies_[i])
         return std::nullopt;
     return bodies_[i]->poseAt(clock_s(time_s)) * glm::scale(glm::dmat4(1.0), glm::dvec3(scale_[i]));
@@ -294,6 +480,7 @@ std::optional<glm::dmat4> SceneBodies::poseAt(std::size_t i, double time_s)
 
 std::int64_t SceneBodies::stepsTaken() const
 {
+    settle();
     std::int64_t steps = 0;
     for (const auto& b : bodies_)
         if (b)

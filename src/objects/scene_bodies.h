@@ -1,6 +1,13 @@
 // The floating rigid bodies of a scene (SceneObject::isRigidBody()), one
 // swell::FloatingBody each, built from the objects' closed shapes and kept
 // stepping by the renderer, which asks for their poses once a frame.
+//
+// Their steps, the wake's and the water samples they take can run ahead on
+// a worker thread of their own (stepAheadTo) while the frame is drawn: the
+// same steps in the same order as advanceTo() takes them, each a function
+// of the scene and its step number alone, so what any call returns does not
+// depend on whether or when they ran ahead. Every other call waits for the
+// worker first; only one thread calls a SceneBodies.
 #pragma once
 
 #include "assets/mesh_data.h"
@@ -13,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -49,6 +57,23 @@ public:
     std::size_t count() const { return count_; }
     // Steps every body to time_s together (see FloatingBody::advanceToStep).
     void advanceTo(double time_s);
+    // Starts advanceTo(time_s) on the worker thread and returns at once:
+    // for a host that knows the next frame's time, to step towards it while
+    // this frame is drawn. The next call of any other kind waits for it
+    // (and throws what it threw). Asking for a time before the last
+    // advanceTo()'s would start the bodies again from their start, so such
+    // a time, or one more than kMaxStepAhead_s past it, is clamped there;
+    // nothing runs ahead of a time the next frame then goes back before
+    // (the bodies would start again, as they do when time goes back).
+    // Until the next advanceTo(), poses and the wake's frame are asked for
+    // at that time or later (the bows' histories at any time drawn since).
+    void stepAheadTo(double time_s);
+    // How far ahead of the last advanceTo() the worker may step, s: the
+    // bows keep their samples that much longer (bowHistory).
+    static constexpr double kMaxStepAhead_s = 0.5;
+    // The CPU time the worker thread has spent so far, ms (its own clock,
+    // CLOCK_THREAD_CPUTIME_ID; for the benchmark).
+    double aheadCpu_ms() const;
     // Object i's transform from model space (scale included) to the world at
     // time_s, stepping its body there; nothing when it is not a rigid body.
     std::optional<glm::dmat4> poseAt(std::size_t i, double time_s);
@@ -57,17 +82,33 @@ public:
 
     // The wake, when the scene has one (wake on, a body under way); else null.
     // It runs on the bodies' own clock, from 0 at their start (startTime_s()).
-    const SceneWake* wake() const { return wake_.get(); }
+    const SceneWake* wake() const
+    {
+        settle();
+        return wake_.get();
+    }
     // The wake's frame at scene time time_s (the wake must exist).
     WakeFrame wakeFrameAt(double time_s) const;
+    // The same, shared: the one the worker made after its step ahead when
+    // that was to time_s (the same numbers: the wake has not stepped since),
+    // else made now.
+    std::shared_ptr<const WakeFrame> sharedWakeFrameAt(double time_s) const;
     // When the bodies and the wake start, scene time, s (swell::bodiesStart_s):
     // each starts from rest there, at its position_m less velocity times the
     // time until t = 0, so that it passes position_m at t = 0.
     double startTime_s() const { return start_s_; }
     // Wake steps taken so far (restarts included), for the benchmark.
-    std::int64_t wakeStepsTaken() const { return wakeStepsTaken_; }
+    std::int64_t wakeStepsTaken() const
+    {
+        settle();
+        return wakeStepsTaken_;
+    }
     // The wall time those steps took, ms (for the benchmark; never read by the simulation).
-    double wakeSteps_ms() const { return wakeSteps_ms_; }
+    double wakeSteps_ms() const
+    {
+        settle();
+        return wakeSteps_ms_;
+    }
 
     // A body under way's bow (objects/bow_spray.h), for the bow's spray.
     struct Bow {
@@ -76,17 +117,46 @@ public:
         std::array<std::array<glm::dvec3, SWELL_BOW_SPRAY_STATIONS>, 2> stationsInModel{};
         glm::dvec2 velocity_m_per_s{0.0}; // over the ground, x, z
         // Its samples, one a water sample of the steps, each kept with its
-        // index (a step of SWELL_BOW_SPRAY_SAMPLES_PER_S) in slot index % size.
+        // index (a step of SWELL_BOW_SPRAY_SAMPLES_PER_S) in slot index % size
+        // (the spray's SWELL_BOW_SPRAY_HISTORY, and those taken ahead).
         std::vector<std::pair<std::int64_t, BowSample>> samples;
     };
     // Object i's bow when it is a body under way (else null).
-    const Bow* bow(std::size_t i) const { return i < bows_.size() && bows_[i] ? &*bows_[i] : nullptr; }
+    const Bow* bow(std::size_t i) const
+    {
+        settle();
+        return i < bows_.size() && bows_[i] ? &*bows_[i] : nullptr;
+    }
     // Its samples at scene time time_s, newest first, one every
     // 1 / SWELL_BOW_SPRAY_SAMPLES_PER_S s (a sample not taken yet, before
     // the bodies' start, holds nothing); lag_s: the newest one's age at time_s.
     std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> bowHistory(std::size_t i, double time_s, double& lag_s) const;
 
+    // Waits for the worker (a no-op when none runs); rethrows what its
+    // step ahead threw. Every other call does this first.
+    void settle() const;
+
 private:
+    // The worker thread and what it was given; declared first, so that a
+    // move waits for the worker before any other member moves.
+    class Ahead;
+    struct AheadHandle {
+        std::unique_ptr<Ahead> ahead;
+        AheadHandle();
+        AheadHandle(AheadHandle&& other) noexcept;
+        AheadHandle& operator=(AheadHandle&& other) noexcept;
+        ~AheadHandle();
+    };
+    AheadHandle ahead_;
+    // The time of the last advanceTo() (-inf before any), s, scene time.
+    double lastAsked_s_ = -std::numeric_limits<double>::infinity();
+    // The wake's frame the worker made at the time it stepped ahead to
+    // (null when the wake has stepped since, or there is none).
+    std::shared_ptr<const WakeFrame> aheadFrame_;
+    double aheadFrameTime_s_ = 0.0;
+
+    // advanceTo() without the wait, on whichever thread.
+    void advanceNow(double time_s);
     // Samples each bow at body step `step` when it is a water sample's.
     void sampleBows(std::int64_t step);
     // What each body's footprint on the wake is, besides where it stands.

@@ -134,11 +134,15 @@ WakeFrame SceneWake::frameAt(double time_s) const
     frame.texels.resize(current.size());
     const float toSlope = float(0.5 / frame.cellSize_m);
     auto at = [&](int i, int j) { return height[std::size_t(std::clamp(i, 0, n - 1)) + std::size_t(std::clamp(j, 0, n - 1)) * n]; };
+    float reach_m = 0.0f;
     for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
+        for (int i = 0; i < n; ++i) {
             frame.texels[std::size_t(i) + std::size_t(j) * n] = glm::vec4(
                 at(i, j), (at(i + 1, j) - at(i - 1, j)) * toSlope, (at(i, j + 1) - at(i, j - 1)) * toSlope,
                 foam[std::size_t(i) + std::size_t(j) * n]);
+            reach_m = std::max(reach_m, std::abs(at(i, j)));
+        }
+    frame.reach_m = double(reach_m);
     return frame;
 }
 

@@ -35,6 +35,10 @@ struct WakeFrame {
     // Per cell, row-major (i + j * cells, i along x): height, m; its slopes
     // d/dx and d/dz (central differences); foam, 0..1.
     std::vector<glm::vec4> texels;
+    // The largest |height| of its cells, m: how far it raises or lowers the
+    // water (the grid's culling pads by it). Found where the frame is made,
+    // on the bodies' worker when they step ahead (objects/scene_bodies.h).
+    double reach_m = 0.0;
 
     // World x, z of cell (0, 0)'s centre, m.
     glm::dvec2 corner_m() const { return glm::dvec2(cornerCell) * cellSize_m; }

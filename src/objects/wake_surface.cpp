@@ -8,8 +8,7 @@ namespace swell::detail {
 WakeSurfaceSource::WakeSurfaceSource(std::shared_ptr<const WakeFrame> frame) : frame_(std::move(frame))
 {
     if (frame_)
-        for (const glm::vec4& texel : frame_->texels)
-            reach_m_ = std::max(reach_m_, double(std::abs(texel.x)));
+        reach_m_ = frame_->reach_m;
 }
 
 glm::dvec3 WakeSurfaceSource::heightAt(glm::dvec2 restPoint_m, double) const

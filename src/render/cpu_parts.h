@@ -5,17 +5,9 @@
 // CPU cost. Library-internal.
 #pragma once
 
-#include <time.h>
+#include "core/thread_cpu.h"
 
 namespace swell::detail {
-
-// CLOCK_THREAD_CPUTIME_ID, ms.
-inline double threadCpu_ms()
-{
-    timespec t{};
-    ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
 
 class CpuParts {
 public:

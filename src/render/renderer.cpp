@@ -64,15 +64,18 @@ void Renderer::Impl::advanceTo(double time_s, glm::dvec3 viewpointWorld)
     notify(false, "ocean");
     notify(true, "bodies");
     cpuParts.switchTo(&cpu.bodies_ms);
-    const std::int64_t stepsBefore = bodies.stepsTaken(), wakeStepsBefore = bodies.wakeStepsTaken();
-    const double wakeBefore_ms = bodies.wakeSteps_ms();
+    // What the bodies' worker did ahead of this frame (anticipate()) is
+    // waited for here, counted with the steps taken now.
     bodies.advanceTo(time_s);
     if (bodies.wake())
-        next.wake = std::make_shared<const WakeFrame>(bodies.wakeFrameAt(time_s));
+        next.wake = bodies.sharedWakeFrameAt(time_s);
+    const BodiesTally tally{bodies.stepsTaken(), bodies.wakeStepsTaken(), bodies.wakeSteps_ms(), bodies.aheadCpu_ms()};
     counters.floatingBodies = int(bodies.count());
-    counters.bodySteps = bodies.stepsTaken() - stepsBefore;
-    counters.wakeSteps = bodies.wakeStepsTaken() - wakeStepsBefore;
-    counters.wakeSteps_ms = bodies.wakeSteps_ms() - wakeBefore_ms;
+    counters.bodySteps = tally.steps - bodiesTally.steps;
+    counters.wakeSteps = tally.wakeSteps - bodiesTally.wakeSteps;
+    counters.wakeSteps_ms = tally.wake_ms - bodiesTally.wake_ms;
+    counters.bodiesAheadCpu_ms = tally.ahead_ms - bodiesTally.ahead_ms;
+    bodiesTally = tally;
     notify(false, "bodies");
     // The wake's frame: blended, its slopes found and uploaded. It raises
     // and lowers the water beyond the waves' reach: the grid's tiles are
@@ -146,6 +149,8 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
            std::shared_ptr<const WaveModel> nextOverride, bool first,
            std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources)
 {
+    // The bodies' worker may be querying the model and sources replaced here.
+    bodies.settle();
     const std::shared_ptr<const WaveModel>& nextModelPtr = nextOverride ? nextOverride : nextSceneModel;
     const WaveModel& nextModel = *nextModelPtr;
     const bool modelChanged = first || &nextModel != &model();
@@ -200,7 +205,8 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
     }
     hostSources = std::move(nextHostSources);
     if (bodiesChanged) {
-        bodies = std::move(nextBodies);
+        bodies = std::move(nextBodies); // after the worker of the bodies before is done
+        bodiesTally = {};
         bodyModel = std::move(nextBodyModel);
         queryBodies.reset();
     }
@@ -320,6 +326,13 @@ void Renderer::advanceTo(double time_s, glm::dvec3 viewpoint_m)
     if (!std::isfinite(time_s) || !std::isfinite(viewpoint_m.x + viewpoint_m.y + viewpoint_m.z))
         throw Error(fmt::format("advanceTo: the time ({}) and the viewpoint must be finite", time_s));
     impl_->advanceTo(time_s, viewpoint_m);
+}
+
+void Renderer::anticipate(double nextTime_s)
+{
+    Impl& s = *impl_;
+    if (s.simulated && std::isfinite(nextTime_s) && nextTime_s > s.simulated->time_s)
+        s.bodies.stepAheadTo(nextTime_s);
 }
 
 std::optional<double> Renderer::simulatedTime_s() const

@@ -144,6 +144,12 @@ struct Renderer::Impl {
     std::optional<Simulated> simulated;
     // The floating rigid bodies, stepped to the simulated time (objects/scene_bodies.h).
     SceneBodies bodies;
+    // What the bodies had done by the last advanceTo(), for its counters.
+    struct BodiesTally {
+        std::int64_t steps = 0, wakeSteps = 0;
+        double wake_ms = 0.0, ahead_ms = 0.0;
+    };
+    BodiesTally bodiesTally;
     // Bodies of drawnSurface()'s queries at times other than the simulated
     // one: stepped apart from those drawn, so a query changes no frame.
     mutable std::optional<SceneBodies> queryBodies;
