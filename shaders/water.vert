@@ -29,7 +29,11 @@ void main()
     vSourceSlope = w.sourceSlope;
 #endif
 #ifdef SWELL_OCEAN_VERTEX_DATA
-    oceanVertexData(w.rest - gridCenter, vOceanData);
+    // Through a local array: outputs written through a function's out
+    // array are "too complex" an lvalue for NVIDIA's compiler.
+    vec4 oceanData[SWELL_OCEAN_VERTEX_DATA];
+    oceanVertexData(w.rest - gridCenter, oceanData);
+    vOceanData = oceanData;
 #endif
     gl_Position = passViewProj * vec4(vPosition, 1.0);
 }

@@ -193,15 +193,20 @@ CascadeLookups warpedLookups(vec2 restOffset_m)
 
 void oceanVertexData(vec2 restOffset_m, out vec4 data[SWELL_OCEAN_VERTEX_DATA])
 {
+    // Whole vec4s into a local array (NVIDIA's compiler refuses a swizzled
+    // write through a computed index of an out array: "lvalue in
+    // assignment too complex"), handed out at once.
+    vec4 d[SWELL_OCEAN_VERTEX_DATA];
+    vec2 second[SWELL_FFT_CASCADES];
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         mat2 jacobian;
         vec2 s = warpedTexels(c, restOffset_m, jacobian);
-        data[c] = vec4(s, jacobian[0]);
-        if ((c & 1) == 0)
-            data[SWELL_FFT_CASCADES + c / 2].xy = jacobian[1];
-        else
-            data[SWELL_FFT_CASCADES + c / 2].zw = jacobian[1];
+        d[c] = vec4(s, jacobian[0]);
+        second[c] = jacobian[1];
     }
+    for (int i = 0; i < SWELL_FFT_CASCADES / 2; ++i)
+        d[SWELL_FFT_CASCADES + i] = vec4(second[2 * i], second[2 * i + 1]);
+    data = d;
 }
 
 // The lookups a pixel takes: the vertices' interpolated (data) for the
