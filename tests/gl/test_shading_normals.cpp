@@ -31,13 +31,17 @@ namespace {
 
 class ShadingNormals : public swell::test::GlTest {};
 
-// xy: rest offset from the grid centre, m; z: pixel footprint, m; w: grid footprint, m.
-const char* kProbe = R"(
+// What every probe shader reads and writes (runProbes puts it first).
+const char* kProbeInterface = R"(
 #include "ocean.glsl"
 layout(location = 0) in vec4 probe;
 out vec3 fullNormal;
 out vec3 shadedNormal;
 out float shadedSlopeVariance;
+)";
+
+// xy: rest offset from the grid centre, m; z: pixel footprint, m; w: grid footprint, m.
+const char* kProbe = R"(
 void main()
 {
     SurfacePoint grid = oceanSurface(probe.xy, probe.w, 1.0);
@@ -62,7 +66,7 @@ struct Probed {
     double slopeVariance = 0.0;
 };
 
-// The probes run through `probeShader` (kProbe's inputs and outputs).
+// The probes run through `probeShader` (after kProbeInterface).
 std::vector<Probed> runProbes(const swell::Scene& scene, double time_s, const std::vector<glm::vec4>& probes,
                               const char* probeShader = kProbe)
 {
@@ -70,7 +74,7 @@ std::vector<Probed> runProbes(const swell::Scene& scene, double time_s, const st
     std::map<std::string, std::string> files;
     for (const std::string& name : embedded.fileNames())
         files[name] = embedded.file(name);
-    files["shading_probe.vert"] = probeShader;
+    files["shading_probe.vert"] = std::string(kProbeInterface) + probeShader;
     const swell::gl::ShaderSources sources = swell::gl::ShaderSources::fromMap(files);
 
     const std::unique_ptr<swell::WaveModel> model = swell::makeWaveModel(scene);
@@ -299,11 +303,6 @@ TEST_F(ShadingNormals, GerstnerKeepsItsSlopeVarianceAtEveryFootprint)
 // the per-pixel warp's (fullNormal), at pixel footprints of the cell and a
 // tenth of it (level 0 of the finest cascades).
 const char* kVertexWarpProbe = R"(
-#include "ocean.glsl"
-layout(location = 0) in vec4 probe;
-out vec3 fullNormal;
-out vec3 shadedNormal;
-out float shadedSlopeVariance;
 void main()
 {
     float cell_m = probe.z;
