@@ -1,5 +1,7 @@
 #include "render/scene_world.h"
 
+#include "core/grid_tiles.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -27,22 +29,16 @@ void SceneWorld::drawPass(const PassView& pass)
 
 namespace {
 
-// Whether the box (absolute world, m) lies wholly outside the pass: behind
-// its clip plane, or beyond one of the four sides of its frustum.
-bool outsidePass(const PassView& pass, const glm::dmat4& viewProj, glm::dvec3 lo, glm::dvec3 hi)
+// The planes a tile of the island must not lie wholly behind: the four
+// sides of the pass's frustum, its clip plane and the eye's own plane
+// (clip w >= 0), absolute world. Near and far are left out (a reversed or
+// infinite depth range needs no special case here).
+Frustum passPlanes(const PassView& pass, const glm::dmat4& viewProj)
 {
-    int behindPlane = 0, left = 0, right = 0, below = 0, above = 0, behindEye = 0;
-    for (int c = 0; c < 8; ++c) {
-        const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-        behindPlane += glm::dot(pass.clipPlane_m, glm::dvec4(p, 1.0)) < 0.0;
-        const glm::dvec4 q = viewProj * glm::dvec4(p, 1.0);
-        left += q.x < -q.w;
-        right += q.x > q.w;
-        below += q.y < -q.w;
-        above += q.y > q.w;
-        behindEye += q.w <= 0.0;
-    }
-    return behindPlane == 8 || left == 8 || right == 8 || below == 8 || above == 8 || behindEye == 8;
+    Frustum planes = frustumPlanes(viewProj);
+    planes[4] = pass.clipPlane_m;
+    planes[5] = 0.5 * (planes[0] + planes[1]); // row 3 of viewProj: clip w
+    return planes;
 }
 
 // Distance from p to the box, m (0 inside).
@@ -64,13 +60,13 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
     if (levels.levels.empty())
         return;
     const double focal_px = 0.5 * double(pass.viewport.w) * pass.projection[1][1];
-    const glm::dmat4 viewProj = pass.projection * pass.view;
+    const FrustumTest inPass(passPlanes(pass, pass.projection * pass.view), glm::dvec3(0.0));
     const std::size_t tiles = levels.boxLo.size();
     tileLevels_.assign(tiles, -1);
     for (std::size_t t = 0; t < tiles; ++t) {
         const glm::dvec3 lo = kIslandPosition_m + glm::dvec3(levels.boxLo[t]);
         const glm::dvec3 hi = kIslandPosition_m + glm::dvec3(levels.boxHi[t]);
-        if (!outsidePass(pass, viewProj, lo, hi))
+        if (inPass(centred(Bounds{lo, hi})) != Containment::Outside)
             tileLevels_[t] = int(islandTileLevel(levels, t, distanceToBox(pass.eye_m, lo, hi), focal_px, islandTolerance_px_));
     }
     tileCounts_.clear();
