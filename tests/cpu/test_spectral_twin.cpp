@@ -1,6 +1,7 @@
 // The CPU twin transforms the derivative fields only when a query needs
-// them: the displacement it gives without them, and the fields it ends up
-// with, are exactly those of a twin that transforms everything at once.
+// them, and only the columns of texels a query reads: the displacement it
+// gives without them, and the fields it ends up with, are exactly those of a
+// twin that transforms everything at once.
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
 #include "swell/spectrum.h"
@@ -45,6 +46,53 @@ TEST(SpectralTwin, DisplacementWithoutDerivativesEqualsTheFullQuery)
             for (int v = 0; v < 8; ++v)
                 EXPECT_EQ(lazy.fieldsAt(time_s).values[size_t(c)][size_t(v)], eager.fieldsAt(time_s).values[size_t(c)][size_t(v)]);
     }
+}
+
+// A query transforms only the texel columns its bilinear samples read, of
+// the cascades its filter weighs, once a time: what keeps the floating
+// bodies' water samples cheap. Its answers do not depend on what was made
+// before them.
+TEST(SpectralTwin, AQueryTransformsOnlyTheColumnsItReads)
+{
+    const auto field = testField();
+    const swell::SurfaceFilter filter{0.5, 1.0};
+    int weighed = 0;
+    for (const Cascade& cascade : field->cascades)
+        weighed += cascadeWeight(cascade, filter.footprint_m) > 0.0 ? 1 : 0;
+    ASSERT_GT(weighed, 0);
+    ASSERT_LT(weighed, kCascades) << "the test needs a cascade the filter leaves out";
+
+    const glm::dvec2 a(13.7, -250.2), b(-40.0, 77.0);
+    const double time_s = 12.5;
+    CpuSurface first(field), second(field), eager(field);
+    // Its two columns (x0 and x0 + 1) of the two displacement pairs of each cascade it weighs.
+    const glm::dvec3 da = first.displacementAt(a, time_s, filter);
+    EXPECT_EQ(first.columnsTransformed(), weighed * 2 * 2);
+    // Asked again, nothing more is made; a normal makes the two derivative pairs' columns.
+    EXPECT_EQ(first.displacementAt(a, time_s, filter), da);
+    EXPECT_EQ(first.columnsTransformed(), weighed * 2 * 2);
+    const swell::SurfacePoint na = first.surfaceAt(a, time_s, filter);
+    EXPECT_EQ(first.columnsTransformed(), weighed * 4 * 2);
+    const swell::SurfacePoint nb = first.surfaceAt(b, time_s, filter);
+
+    // The other order, and every field made first: the same answers, bit for bit.
+    const swell::SurfacePoint nb2 = second.surfaceAt(b, time_s, filter);
+    const swell::SurfacePoint na2 = second.surfaceAt(a, time_s, filter);
+    eager.fieldsAt(time_s);
+    const swell::SurfacePoint na3 = eager.surfaceAt(a, time_s, filter), nb3 = eager.surfaceAt(b, time_s, filter);
+    EXPECT_EQ(na.displacement_m, na2.displacement_m);
+    EXPECT_EQ(na.normal, na2.normal);
+    EXPECT_EQ(nb.displacement_m, nb2.displacement_m);
+    EXPECT_EQ(nb.normal, nb2.normal);
+    EXPECT_EQ(na.displacement_m, na3.displacement_m);
+    EXPECT_EQ(na.normal, na3.normal);
+    EXPECT_EQ(nb.normal, nb3.normal);
+    EXPECT_EQ(eager.columnsTransformed(), kCascades * 4 * kSize);
+
+    // A new time starts again from nothing.
+    const std::int64_t before = first.columnsTransformed();
+    first.displacementAt(a, time_s + 1.0, filter);
+    EXPECT_EQ(first.columnsTransformed() - before, weighed * 2 * 2);
 }
 
 } // namespace

@@ -2,12 +2,13 @@
 
 #include "swell/waves.h"
 
-#include <kiss_fftnd.h>
+#include <kiss_fft.h>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace swell::spectral {
 
@@ -18,8 +19,8 @@ double cascadeWeight(const Cascade& cascade, double footprint_m)
 
 CpuSurface::CpuSurface(std::shared_ptr<const SpectralField> field) : field_(std::move(field))
 {
-    const int dims[2] = {kSize, kSize};
-    fft_ = kiss_fftnd_alloc(dims, 2, 1, nullptr, nullptr);
+    fft_ = kiss_fft_alloc(kSize, 1, nullptr, nullptr);
+    fields_.time_s = std::numeric_limits<double>::quiet_NaN();
 }
 
 CpuSurface::~CpuSurface() { kiss_fft_free(fft_); }
@@ -28,42 +29,78 @@ const CpuSurface::Fields& CpuSurface::fieldsAt(double time_s) const { return fie
 
 const CpuSurface::Fields& CpuSurface::displacementFieldsAt(double time_s) const { return fieldsFor(time_s, false); }
 
-const CpuSurface::Fields& CpuSurface::fieldsFor(double time_s, bool derivatives) const
+std::int64_t CpuSurface::columnsTransformed() const
 {
-    if (!fields_ || fields_->time_s != time_s) {
-        fields_ = std::make_unique<Fields>();
-        fields_->time_s = time_s;
-        for (int c = 0; c < kCascades; ++c)
-            evolve(*field_, c, time_s, spectra_[size_t(c)]);
-        // (Dx, Dy) and (Dz, dDx/dz): the displacement.
-        transform(0, 2);
-    }
-    if (derivatives && !fields_->hasDerivatives) {
-        // (dDy/dx, dDy/dz) and (dDx/dx, dDz/dz): the normal.
-        transform(2, 4);
-        fields_->hasDerivatives = true;
-    }
-    return *fields_;
+    std::lock_guard lock(mutex_);
+    return columnsTransformed_;
 }
 
-void CpuSurface::transform(int firstPacked, int lastPacked) const
+void CpuSurface::startTime(double time_s) const
 {
-    std::vector<std::complex<float>> spatial(size_t(kSize) * kSize);
-    static_assert(sizeof(kiss_fft_cpx) == sizeof(std::complex<float>));
+    fields_.time_s = time_s;
+    fields_.hasDerivatives = false;
+    for (CascadeState& state : cascades_) {
+        state.evolved = false;
+        state.rowsDone = {};
+        for (std::vector<std::uint8_t>& done : state.columnDone)
+            done.assign(size_t(kSize), 0);
+    }
+}
+
+const CpuSurface::Fields& CpuSurface::fieldsFor(double time_s, bool derivatives) const
+{
+    if (!(fields_.time_s == time_s))
+        startTime(time_s);
+    // (Dx, Dy) and (Dz, dDx/dz): the displacement; (dDy/dx, dDy/dz) and
+    // (dDx/dx, dDz/dz): the normal.
+    makeAll(0, derivatives ? 4 : 2);
+    fields_.hasDerivatives = fields_.hasDerivatives || derivatives;
+    return fields_;
+}
+
+void CpuSurface::makeAll(int firstPacked, int lastPacked) const
+{
     for (int c = 0; c < kCascades; ++c)
-        for (int p = firstPacked; p < lastPacked; ++p) {
-            kiss_fftnd(static_cast<kiss_fftnd_cfg>(fft_),
-                       reinterpret_cast<const kiss_fft_cpx*>(spectra_[size_t(c)].packed[size_t(p)].data()),
-                       reinterpret_cast<kiss_fft_cpx*>(spatial.data()));
-            std::vector<float>& re = fields_->values[size_t(c)][size_t(2 * p)];
-            std::vector<float>& im = fields_->values[size_t(c)][size_t(2 * p + 1)];
-            re.resize(spatial.size());
-            im.resize(spatial.size());
-            for (size_t i = 0; i < spatial.size(); ++i) {
-                re[i] = spatial[i].real();
-                im[i] = spatial[i].imag();
-            }
-        }
+        for (int p = firstPacked; p < lastPacked; ++p)
+            for (int column = 0; column < kSize; ++column)
+                makeColumn(c, p, column);
+}
+
+void CpuSurface::makeColumn(int c, int p, int column) const
+{
+    CascadeState& state = cascades_[size_t(c)];
+    if (state.columnDone[size_t(p)][size_t(column)])
+        return;
+    static_assert(sizeof(kiss_fft_cpx) == sizeof(std::complex<float>));
+    const auto cfg = static_cast<kiss_fft_cfg>(fft_);
+    if (!state.evolved) {
+        evolve(*field_, c, fields_.time_s, state.spectra);
+        state.evolved = true;
+    }
+    std::vector<std::complex<float>>& rows = state.rows[size_t(p)];
+    if (!state.rowsDone[size_t(p)]) {
+        // The first pass: each row of the spectrum (one kz) along x.
+        const std::vector<std::complex<float>>& spectrum = state.spectra.packed[size_t(p)];
+        rows.resize(spectrum.size());
+        for (int kz = 0; kz < kSize; ++kz)
+            kiss_fft(cfg, reinterpret_cast<const kiss_fft_cpx*>(spectrum.data() + size_t(kz) * kSize),
+                     reinterpret_cast<kiss_fft_cpx*>(rows.data() + size_t(kz) * kSize));
+        state.rowsDone[size_t(p)] = true;
+    }
+    // The second pass for this column alone: along z, every kSize-th value.
+    std::array<std::complex<float>, kSize> texels;
+    kiss_fft_stride(cfg, reinterpret_cast<const kiss_fft_cpx*>(rows.data() + column), reinterpret_cast<kiss_fft_cpx*>(texels.data()),
+                    kSize);
+    std::vector<float>& re = fields_.values[size_t(c)][size_t(2 * p)];
+    std::vector<float>& im = fields_.values[size_t(c)][size_t(2 * p + 1)];
+    re.resize(size_t(kSize) * kSize);
+    im.resize(size_t(kSize) * kSize);
+    for (int row = 0; row < kSize; ++row) {
+        re[size_t(row) * kSize + size_t(column)] = texels[size_t(row)].real();
+        im[size_t(row) * kSize + size_t(column)] = texels[size_t(row)].imag();
+    }
+    state.columnDone[size_t(p)][size_t(column)] = 1;
+    ++columnsTransformed_;
 }
 
 namespace {
@@ -72,6 +109,7 @@ namespace {
 // repeating every kSize texels.
 struct Bilinear {
     size_t i00, i01, i10, i11; // (row, column) 00, 01, 10, 11
+    int column0, column1;
     double fx, fz;
     Bilinear(double sx, double sz)
     {
@@ -80,6 +118,8 @@ struct Bilinear {
         fz = sz - z0;
         auto wrap = [](double v) { return int(v - kSize * std::floor(v / kSize)); };
         const int c0 = wrap(x0), c1 = (c0 + 1) % kSize, r0 = wrap(z0), r1 = (r0 + 1) % kSize;
+        column0 = c0;
+        column1 = c1;
         i00 = size_t(r0) * kSize + size_t(c0);
         i01 = size_t(r0) * kSize + size_t(c1);
         i10 = size_t(r1) * kSize + size_t(c0);
@@ -95,9 +135,12 @@ struct Bilinear {
 
 } // namespace
 
-void CpuSurface::sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
+void CpuSurface::sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
                         Sample& out, int cascadeCount) const
 {
+    if (!(fields_.time_s == time_s))
+        startTime(time_s);
+    const Fields& f = fields_;
     out = Sample{};
     for (int c = 0; c < std::min(cascadeCount, kCascades); ++c) {
         const Cascade& cascade = field_->cascades[size_t(c)];
@@ -110,6 +153,11 @@ void CpuSurface::sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFi
         const double scale = kSize / cascade.patch_m;
         const glm::dvec2 s = (restPoint_m + warp.offset_m) * scale;
         const Bilinear at(s.x, s.y);
+        // The two columns it reads, of the pairs it reads.
+        for (int p = 0; p < (derivatives ? 4 : 2); ++p) {
+            makeColumn(c, p, at.column0);
+            makeColumn(c, p, at.column1);
+        }
         const auto& v = f.values[size_t(c)];
         out.displacement_m += weight * glm::dvec3(at(v[0]), at(v[1]), at(v[2]));
         if (!derivatives)
@@ -134,7 +182,7 @@ SurfacePoint CpuSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const 
 {
     std::lock_guard lock(mutex_);
     Sample sum;
-    sample(fieldsFor(time_s, true), restPoint_m, filter, true, sum);
+    sample(time_s, restPoint_m, filter, true, sum);
     SurfacePoint p;
     p.displacement_m = sum.displacement_m;
     // The displaced surface's tangents along rest x and rest z.
@@ -148,7 +196,7 @@ glm::dvec3 CpuSurface::displacementAt(glm::dvec2 restPoint_m, double time_s, con
 {
     std::lock_guard lock(mutex_);
     Sample sum;
-    sample(fieldsFor(time_s, false), restPoint_m, filter, false, sum);
+    sample(time_s, restPoint_m, filter, false, sum);
     return sum.displacement_m;
 }
 
@@ -157,7 +205,7 @@ double CpuSurface::foldJacobianAt(glm::dvec2 restPoint_m, double time_s, const S
 {
     std::lock_guard lock(mutex_);
     Sample sum;
-    sample(fieldsFor(time_s, true), restPoint_m, filter, true, sum, cascadeCount);
+    sample(time_s, restPoint_m, filter, true, sum, cascadeCount);
     return (1.0 + sum.gradDx.x) * (1.0 + sum.gradDz.y) - sum.gradDx.y * sum.gradDz.x;
 }
 

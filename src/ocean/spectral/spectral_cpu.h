@@ -1,15 +1,25 @@
 // The spectral ocean's CPU twin: the same spectra the GPU evolves, inverse
 // transformed with kissfft, sampled with the same bilinear weights and the
 // same per-cascade LOD weights as shaders/ocean/spectral.glsl, each cascade
-// at its anti-tiling warp's point (spectral_warp.h). The fields
-// for one time are computed when first asked for and kept until another
-// time is asked for; the derivative fields (for normals) only when a query
-// needs them, which halves the cost of a frame whose queries are heights.
+// at its anti-tiling warp's point (spectral_warp.h).
+//
+// Only what a query reads is computed, and kept until another time is
+// asked for. A 2D inverse transform is two passes of 1D transforms: every
+// row of the spectrum along x, then each column along z; a column of the
+// second pass gives one column of texels, all rows. So a query transforms
+// the rows of the cascades it weighs (none of a cascade its filter leaves
+// out) and then only the columns its bilinear samples touch: for floating
+// bodies, whose water is a few metres across, a small part of a coarse
+// cascade's 256. The derivative fields (for normals) likewise only when a
+// query needs them. Every texel is made the same way whichever query asks
+// first, so an answer never depends on the queries before it.
 #pragma once
 
 #include "ocean/spectral/spectral_field.h"
 #include "swell/wave_model.h"
 
+#include <complex>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 
@@ -56,26 +66,47 @@ public:
     // Only fields 0..3 (Dx, Dy, Dz, dDx/dz) are sure to be there.
     const Fields& displacementFieldsAt(double time_s) const;
 
+    // Texel columns transformed since the twin was made (every packed pair
+    // of every cascade, one column of kSize texels each): what the queries
+    // cost, for tests and the benchmark.
+    std::int64_t columnsTransformed() const;
+
 private:
     std::shared_ptr<const SpectralField> field_;
     mutable std::mutex mutex_;
-    mutable std::unique_ptr<Fields> fields_;
-    // The frame's spectra, kept so the derivative fields can be transformed
-    // later in the frame without evolving again.
-    mutable std::array<Spectra, kCascades> spectra_;
+    // The fields at fields_.time_s (NaN before the first time asked), each
+    // vector kSize * kSize once any of its columns is made.
+    mutable Fields fields_;
+    // What of each cascade is made for fields_.time_s.
+    struct CascadeState {
+        bool evolved = false;
+        Spectra spectra;
+        // Per packed pair: its rows transformed along x (kSize * kSize, row = kz),
+        // and which of its texel columns are made.
+        std::array<bool, 4> rowsDone{};
+        std::array<std::vector<std::complex<float>>, 4> rows;
+        std::array<std::vector<std::uint8_t>, 4> columnDone;
+    };
+    mutable std::array<CascadeState, kCascades> cascades_;
+    mutable std::int64_t columnsTransformed_ = 0;
+    // Starts a new time: nothing of it is made yet (the buffers are kept).
+    void startTime(double time_s) const;
+    // Makes packed pair p's texel column `column` of cascade c at fields_.time_s.
+    void makeColumn(int c, int p, int column) const;
+    // Makes every column of packed pairs [firstPacked, lastPacked) of every cascade.
+    void makeAll(int firstPacked, int lastPacked) const;
     const Fields& fieldsFor(double time_s, bool derivatives) const;
-    // Inverse-transforms packed spectra [first, last) of every cascade into fields_.
-    void transform(int firstPacked, int lastPacked) const;
     // The displacement at a rest point and, with derivatives, its gradients
     // along rest x and z: every cascade's bilinear sample at its warped
     // point, LOD weights applied, gradients through the warp's Jacobian.
+    // Makes the columns it reads.
     struct Sample {
         glm::dvec3 displacement_m{0.0};                       // Dx, Dy, Dz, m
         glm::dvec2 gradDx{0.0}, gradDy{0.0}, gradDz{0.0}; // (d/dx, d/dz), dimensionless
     };
-    void sample(const Fields& f, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
-                Sample& out, int cascadeCount = kCascades) const;
-    void* fft_ = nullptr; // kiss_fftnd_cfg
+    void sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives, Sample& out,
+                int cascadeCount = kCascades) const;
+    void* fft_ = nullptr; // kiss_fft_cfg: 1D inverse, kSize
 };
 
 } // namespace swell::spectral
