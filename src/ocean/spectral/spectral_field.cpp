@@ -165,8 +165,10 @@ SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::
 void evolve(const SpectralField& field, int cascade, double time_s, Spectra& out)
 {
     const size_t n = size_t(kSize) * kSize;
+    // Sized once: every sample is written below (the modes outside the band
+    // as zero), so a buffer kept from the time before is not cleared first.
     for (auto& p : out.packed)
-        p.assign(n, {});
+        p.resize(n);
     const double dk = kTwoPi / field.cascades[size_t(cascade)].patch_m;
     const auto& h0 = field.h0[size_t(cascade)];
     const auto& h0mc = field.h0MinusConj[size_t(cascade)];
@@ -177,8 +179,11 @@ void evolve(const SpectralField& field, int cascade, double time_s, Spectra& out
     for (int row = 0; row < kSize; ++row)
         for (int col = 0; col < kSize; ++col) {
             const size_t s = size_t(row) * kSize + size_t(col);
-            if (omega[s] == 0.0)
+            if (omega[s] == 0.0) {
+                for (auto& p : out.packed)
+                    p[s] = {};
                 continue;
+            }
             const float phase = float(std::fmod(omega[s] * time_s, kTwoPi));
             const C e(std::cos(phase), std::sin(phase));
             const C h = h0[s] * std::conj(e) + h0mc[s] * e;
