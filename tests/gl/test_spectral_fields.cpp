@@ -11,6 +11,7 @@
 
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
+#include "swell/gl/context.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/shader_constants.h"
 #include "swell/spectral_model.h"
@@ -152,6 +153,66 @@ TEST_F(SpectralFields, TheGpusFieldsAreTheCpuTwins)
                         c, moment ? "moment" : "derivative", moment ? m : f, rms, worst, worstOfUlp);
         }
     }
+}
+
+// A software rasteriser's interactive view takes the fields from the CPU's
+// FFTs (src/ocean/spectral/field_texels.h) instead of the passes: every
+// texel the passes write, within their float rounding of each other (1e-4
+// of a field's rms, as above; for the half-float copy one half's unit more).
+// On a GPU both views run the passes, and must be the same.
+TEST_F(SpectralFields, AnInteractiveViewOnASoftwareRasteriserUploadsThePassesFields)
+{
+    SpectralSettings settings;
+    settings.wind.windSpeed_mps = 14.0;
+    const SpectralModel model(settings);
+    constexpr double kTime_s = 731.5;
+    struct Drawn {
+        std::vector<float> displacement, derivatives, slopes;
+        int dispatches = 0;
+    };
+    auto draw = [&](bool interactive) {
+        const std::unique_ptr<WaveModelGpu> gpu = model.createGpu(gl::ShaderSources::embedded());
+        gpu->setInteractive(interactive);
+        gpu->prepareFrame({0.0, 0.0}, kTime_s);
+        Drawn d;
+        d.dispatches = gpu->takeWork().dispatches;
+        gpu->bind();
+        glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+        d.displacement = boundArray(SWELL_UNIT_OCEAN0, SWELL_FFT_CASCADES);
+        d.derivatives = boundArray(SWELL_UNIT_OCEAN3, SWELL_FFT_CASCADES);
+        d.slopes = boundArray(SWELL_UNIT_OCEAN1, 2 * SWELL_FFT_CASCADES);
+        return d;
+    };
+    const Drawn passes = draw(false), uploaded = draw(true);
+    // The FFTs' two passes are not run for the view that uploads.
+    EXPECT_EQ(uploaded.dispatches, gl::isSoftwareRasterizer() ? passes.dispatches - 2 : passes.dispatches);
+
+    const size_t layerFloats = size_t(SWELL_FFT_SIZE) * SWELL_FFT_SIZE * 4;
+    auto expectClose = [&](const std::vector<float>& a, const std::vector<float>& b, int layers, bool half,
+                           const char* name) {
+        ASSERT_EQ(a.size(), b.size());
+        for (int layer = 0; layer < layers; ++layer)
+            for (size_t f = 0; f < 4; ++f) {
+                // A slope moment is a product: 3e-4 of its rms, as above.
+                const bool moments = half && layer >= SWELL_FFT_CASCADES;
+                double sumSq = 0.0;
+                for (size_t i = 0; i < layerFloats; i += 4)
+                    sumSq += double(a[layer * layerFloats + i + f]) * a[layer * layerFloats + i + f];
+                const double rms = std::sqrt(sumSq / double(layerFloats / 4));
+                double worst = 0.0;
+                for (size_t i = 0; i < layerFloats; i += 4) {
+                    const double x = a[layer * layerFloats + i + f], y = b[layer * layerFloats + i + f];
+                    const double allowed = (half ? halfUlp(x) : 0.0) + (moments ? 3e-4 : 1e-4) * rms + 1e-9;
+                    worst = std::max(worst, std::abs(x - y) / allowed);
+                }
+                std::printf("%s layer %d component %zu: rms %.3e, worst difference %.2f of what is allowed\n", name,
+                            layer, f, rms, worst);
+                EXPECT_LE(worst, 1.0) << name << " layer " << layer << " component " << f;
+            }
+    };
+    expectClose(passes.displacement, uploaded.displacement, SWELL_FFT_CASCADES, false, "displacement");
+    expectClose(passes.derivatives, uploaded.derivatives, SWELL_FFT_CASCADES, false, "derivatives");
+    expectClose(passes.slopes, uploaded.slopes, 2 * SWELL_FFT_CASCADES, true, "slopes");
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include "swell/spectral_model.h"
 
 #include "gl/mip_downsample.h"
+#include "ocean/spectral/field_texels.h"
 #include "ocean/spectral/foam_texture.h"
 #include "ocean/spectral/foam_replay.h"
 #include "ocean/spectral/spectral_cpu.h"
@@ -391,8 +392,36 @@ private:
 
     // The fields of cascades 0 .. cascades - 1 at time_s; their derivatives'
     // mipmaps only when every cascade is transformed (a full frame's fields).
+    // A software rasteriser's interactive view takes the fields from the
+    // CPU's FFTs (field_texels.h: the column pass's texels, within its float
+    // rounding; tests/gl/test_spectral_fields.cpp), at about a tenth of the
+    // passes' cost there. Stills, videos and the benchmark keep the passes.
+    void uploadFields(double time_s, int cascades)
+    {
+        beginStage("fields on the cpu");
+        if (!fieldTwin_)
+            fieldTwin_ = std::make_unique<CpuSurface>(field_);
+        fieldTexels(fieldTwin_->fieldsAt(time_s), cascades, texels_);
+        const GLsizei n = kSize;
+        glTextureSubImage3D(displacement_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_FLOAT, texels_.displacement.data());
+        glTextureSubImage3D(derivatives_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_FLOAT, texels_.derivatives.data());
+        glTextureSubImage3D(slopes_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_FLOAT, texels_.derivatives.data());
+        glTextureSubImage3D(slopes_.id(), 0, 0, 0, kCascades, n, n, cascades, GL_RGBA, GL_FLOAT,
+                            texels_.slopeMoments.data());
+        work_.bytesWritten += (2 * texelBytes(kSpectrumFormat) + 2 * texelBytes(kSlopeFormat)) * n * n * cascades;
+        ++work_.transforms;
+        slopeMipmapsStale_ = slopeMipmapsStale_ || cascades == kCascades;
+        transformed_ = true;
+        time_s_ = time_s;
+        endStage("fields on the cpu");
+    }
+
     void transform(double time_s, int cascades = kCascades)
     {
+        if (interactive_ && cpuReplay_) {
+            uploadFields(time_s, cascades);
+            return;
+        }
         // The row pass evolves the spectra as it reads them (no image of
         // them is written first), then transforms every row in place.
         glUseProgram(fftRows_.id());
@@ -498,6 +527,9 @@ private:
     glm::dvec2 gridCenter_m_{0.0}; // this frame's
     // The replay's steps before the last on the CPU: only on a software rasteriser.
     std::unique_ptr<FoamReplay> cpuReplay_;
+    // The fields' CPU twin and texels for uploadFields(), made when first used.
+    std::unique_ptr<CpuSurface> fieldTwin_;
+    FieldTexels texels_;
     gl::Program fftRows_, fftColumns_, foamStep_;
     gl::MipDownsampler downsampler_;
     // Uniform locations, looked up once.
