@@ -135,6 +135,7 @@ int runBench(const BenchOptions& options)
     Renderer renderer(scene);
     renderer.setRenderScale(options.outputSettings.renderScale);
     renderer.setTemporalResolve(options.temporal);
+    renderer.setInteractive(options.interactive);
     checkGl("creating the renderer");
 
     Results r;
@@ -144,10 +145,11 @@ int runBench(const BenchOptions& options)
     const glm::ivec2 drawSize = scaledFrameSize(r.size, options.outputSettings.renderScale);
     r.passSize = glm::max(glm::ivec2(glm::dvec2(drawSize) * scene.reflection.resolutionScale), glm::ivec2(1));
     r.surface = renderer.waveModel().summary();
-    r.output = fmt::format("antialiasing {}, render scale {}{}",
+    r.output = fmt::format("antialiasing {}, render scale {}{}{}",
                            options.temporal ? std::string("temporal resolve")
                                             : std::string(findParameter("antialiasing")->choices[size_t(scene.antialiasing)]),
-                           options.outputSettings.renderScale, options.still ? ", the scene's camera (--still)" : "");
+                           options.outputSettings.renderScale, options.still ? ", the scene's camera (--still)" : "",
+                           options.interactive ? ", interactive (--interactive)" : "");
     r.gridCells = int(std::lround(std::sqrt(double(renderer.waterVertexCount())))) - 1;
     r.frames = options.frames;
     r.warmup = options.warmup;

@@ -87,6 +87,10 @@ struct BenchOptions {
     // The renderer's temporal resolve on (as `swell view` draws), in place
     // of the scene's antialiasing: its pass is "temporal resolve".
     bool temporal = false;
+    // The renderer interactive (Renderer::setInteractive), as `swell view`
+    // draws: no frame replays the foam's history, and on a software
+    // rasteriser the spectral fields come from the CPU's FFTs.
+    bool interactive = false;
     std::string scenePath; // the scene benchmarked; empty: the built-in default
 };
 int runBench(const BenchOptions& options);

@@ -225,6 +225,9 @@ int main(int argc, char** argv)
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");
     benchCommand->add_flag("--temporal", bench.temporal,
                            "Draw with the temporal resolve, as `swell view` does (in place of the antialiasing)");
+    benchCommand->add_flag("--interactive", bench.interactive,
+                           "Draw as `swell view` does: no frame replays the foam's history, and on a software "
+                           "rasteriser the spectral fields come from the CPU's FFTs");
     benchCommand->add_option("scene", bench.scenePath,
                              "Scene file (TOML) or a preset's name, benchmarked along the same camera path; "
                              "the built-in default when omitted")
