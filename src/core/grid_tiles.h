@@ -99,15 +99,27 @@ public:
     }
     Containment operator()(const CentredBox& box) const
     {
-        bool inside = true;
+        unsigned planes = kAllPlanes;
+        return (*this)(box, planes);
+    }
+    // The same, testing only the planes whose bits are set in `planes`
+    // (bit k: plane k), and clearing the bits of those the box lies wholly
+    // inside: a box within this one lies inside them too, so testing its
+    // children with what is left gives what testing every plane would.
+    static constexpr unsigned kAllPlanes = 0x3f;
+    Containment operator()(const CentredBox& box, unsigned& planes) const
+    {
         for (size_t k = 0; k < planes_.size(); ++k) {
+            if (!(planes & (1u << k)))
+                continue;
             const double distance = glm::dot(glm::dvec3(planes_[k]), box.centre) + planes_[k].w;
             const double radius = glm::dot(absNormals_[k], box.half) + padRadius_[k];
             if (distance + radius < 0.0)
                 return Containment::Outside;
-            inside = inside && distance - radius >= 0.0;
+            if (distance - radius >= 0.0)
+                planes &= ~(1u << k);
         }
-        return inside ? Containment::Inside : Containment::Partly;
+        return planes == 0 ? Containment::Inside : Containment::Partly;
     }
 
     // The pad's larger horizontal half.

@@ -56,7 +56,8 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
     for (size_t b = 0; b < grid_.blocks.size(); ++b) {
         const GridTile& block = grid_.blocks[b];
         ++boxesTested_;
-        const Containment c = test(blockBoxes_[b]);
+        unsigned planes = FrustumTest::kAllPlanes;
+        const Containment c = test(blockBoxes_[b], planes);
         if (c == Containment::Outside)
             continue;
         if (c == Containment::Inside) {
@@ -66,7 +67,7 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
         std::uint64_t mask = 0;
         for (int ny = 0; ny < 2; ++ny)
             for (int nx = 0; nx < 2; ++nx)
-                chooseTiles(test, b, 0, nx, ny, mask);
+                chooseTiles(test, planes, b, 0, nx, ny, mask);
         // In the buffer's order (row by row), so touching tiles merge.
         const int width = tilesAcross(block);
         while (mask != 0) {
@@ -105,7 +106,8 @@ void WaterGrid::computeNodeBoxes(const std::vector<Bounds>& tiles)
     }
 }
 
-void WaterGrid::chooseTiles(const FrustumTest& test, size_t b, int level, int nx, int ny, std::uint64_t& mask)
+void WaterGrid::chooseTiles(const FrustumTest& test, unsigned planes, size_t b, int level, int nx, int ny,
+                            std::uint64_t& mask)
 {
     const GridTile& block = grid_.blocks[b];
     const int width = tilesAcross(block), height = tilesDown(block);
@@ -114,7 +116,7 @@ void WaterGrid::chooseTiles(const FrustumTest& test, size_t b, int level, int nx
         if (nx >= width || ny >= height)
             return;
         ++boxesTested_;
-        if (test(tileBoxes_[size_t(block.firstTile + ny * width + nx)]) != Containment::Outside)
+        if (test(tileBoxes_[size_t(block.firstTile + ny * width + nx)], planes) != Containment::Outside)
             mask |= std::uint64_t(1) << (ny * kBlockTiles + nx);
         return;
     }
@@ -123,7 +125,7 @@ void WaterGrid::chooseTiles(const FrustumTest& test, size_t b, int level, int nx
     if (node.empty)
         return;
     ++boxesTested_;
-    const Containment c = test(node.box);
+    const Containment c = test(node.box, planes);
     if (c == Containment::Outside)
         return;
     // A node whose box is mostly the waves' reach (its tiles far smaller
@@ -139,7 +141,7 @@ void WaterGrid::chooseTiles(const FrustumTest& test, size_t b, int level, int nx
     }
     for (int cy = 0; cy < 2; ++cy)
         for (int cx = 0; cx < 2; ++cx)
-            chooseTiles(test, b, level + 1, 2 * nx + cx, 2 * ny + cy, mask);
+            chooseTiles(test, planes, b, level + 1, 2 * nx + cx, 2 * ny + cy, mask);
 }
 
 void WaterGrid::choose(std::uint32_t firstIndex, std::uint32_t indexCount)

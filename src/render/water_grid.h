@@ -52,7 +52,8 @@ private:
     // Marks in `mask` (bit ty * kBlockTiles + tx) the tiles of block b's node
     // (level, nx, ny) that reach the frustum (level kNodeLevels: the tile
     // at nx, ny), tested in the grid centre's frame.
-    void chooseTiles(const FrustumTest& test, size_t b, int level, int nx, int ny, std::uint64_t& mask);
+    // planes: those the block or node above left to test (FrustumTest).
+    void chooseTiles(const FrustumTest& test, unsigned planes, size_t b, int level, int nx, int ny, std::uint64_t& mask);
     // A block's tiles in a row and in a column.
     static int tilesAcross(const GridTile& block);
     static int tilesDown(const GridTile& block);
