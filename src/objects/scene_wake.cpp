@@ -79,7 +79,7 @@ void SceneWake::reset(glm::dvec2 focus_m)
 
 void SceneWake::step(const std::vector<WakeSource>& sources, glm::dvec2 focus_m)
 {
-    previousHeights_ = field_.heights();
+    field_.heightsInto(previousHeights_); // into the storage it had: no allocation a step
     previousFoam_ = field_.foam();
     previousCorner_ = field_.cornerCell();
     field_.recentre(focus_m);
@@ -117,10 +117,11 @@ WakeFrame SceneWake::frameAt(double time_s) const
     frame.cellSize_m = field_.cellSize_m();
     frame.cornerCell = field_.cornerCell();
     const float f = float(blendAt(time_s));
-    const std::vector<float> current = field_.heights();
     const std::vector<float>& currentFoam = field_.foam();
     const glm::ivec2 shift = frame.cornerCell - previousCorner_;
-    std::vector<float> height(current.size()), foam(current.size());
+    // The blended heights and foam go straight into the texels (x and w),
+    // the slopes from those heights after.
+    frame.texels.resize(currentFoam.size());
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const std::size_t m = std::size_t(i) + std::size_t(j) * n;
@@ -128,19 +129,20 @@ WakeFrame SceneWake::frameAt(double time_s) const
             const bool inPrevious = pi >= 0 && pj >= 0 && pi < n && pj < n;
             const std::size_t pm = inPrevious ? std::size_t(pi) + std::size_t(pj) * n : 0;
             const float hp = inPrevious ? previousHeights_[pm] : 0.0f, fp = inPrevious ? previousFoam_[pm] : 0.0f;
-            height[m] = f >= 1.0f ? current[m] : f <= 0.0f ? hp : (1.0f - f) * hp + f * current[m];
-            foam[m] = f >= 1.0f ? currentFoam[m] : f <= 0.0f ? fp : (1.0f - f) * fp + f * currentFoam[m];
+            const float current = field_.heightOfCell(m);
+            glm::vec4& texel = frame.texels[m];
+            texel.x = f >= 1.0f ? current : f <= 0.0f ? hp : (1.0f - f) * hp + f * current;
+            texel.w = f >= 1.0f ? currentFoam[m] : f <= 0.0f ? fp : (1.0f - f) * fp + f * currentFoam[m];
         }
-    frame.texels.resize(current.size());
     const float toSlope = float(0.5 / frame.cellSize_m);
-    auto at = [&](int i, int j) { return height[std::size_t(std::clamp(i, 0, n - 1)) + std::size_t(std::clamp(j, 0, n - 1)) * n]; };
+    auto at = [&](int i, int j) { return frame.texels[std::size_t(std::clamp(i, 0, n - 1)) + std::size_t(std::clamp(j, 0, n - 1)) * n].x; };
     float reach_m = 0.0f;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            frame.texels[std::size_t(i) + std::size_t(j) * n] = glm::vec4(
-                at(i, j), (at(i + 1, j) - at(i - 1, j)) * toSlope, (at(i, j + 1) - at(i, j - 1)) * toSlope,
-                foam[std::size_t(i) + std::size_t(j) * n]);
-            reach_m = std::max(reach_m, std::abs(at(i, j)));
+            glm::vec4& texel = frame.texels[std::size_t(i) + std::size_t(j) * n];
+            texel.y = (at(i + 1, j) - at(i - 1, j)) * toSlope;
+            texel.z = (at(i, j + 1) - at(i, j - 1)) * toSlope;
+            reach_m = std::max(reach_m, std::abs(texel.x));
         }
     frame.reach_m = double(reach_m);
     return frame;

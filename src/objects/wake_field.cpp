@@ -3,7 +3,6 @@
 
 #include "objects/wake_frame.h"
 
-#include "swell/constants.h"
 #include "swell/shader_constants.h"
 
 #include <glm/common.hpp>
@@ -11,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <type_traits>
 
 namespace swell::detail {
@@ -71,7 +69,7 @@ struct WakeField::Transforms {
 
 int wakeCellOf(double x_m, double cellSize_m) { return int(std::floor(x_m / cellSize_m)); }
 
-WakeField::WakeField(const WakeFieldSettings& settings) : settings_(settings)
+WakeField::WakeField(const WakeFieldSettings& settings) : settings_(settings), modes_(settings)
 {
     const int n = settings_.cells;
     const std::size_t count = std::size_t(n) * std::size_t(n);
@@ -80,30 +78,9 @@ WakeField::WakeField(const WakeFieldSettings& settings) : settings_(settings)
     draftChange_.assign(count, 0.0f);
     spectrum_.resize(count);
     turned_.resize(count);
-    cosStep_.resize(count);
-    sinStep_.resize(count);
-    kOverOmega_.resize(count);
-    gOverOmega_.resize(count);
-    const double dk = 2.0 * std::numbers::pi / (n * settings_.cellSize_m);
-    for (int q = 0; q < n; ++q)
-        for (int p = 0; p < n; ++p) {
-            const double kx = dk * (p < n / 2 ? p : p - n), kz = dk * (q < n / 2 ? q : q - n);
-            const double k = std::hypot(kx, kz);
-            // Linear waves over depth d: omega^2 = g k tanh(k d) (Lamb 1932,
-            // sec. 228); the dispersion-free stand-in: omega = c k.
-            const double bigK = k > 0.0 ? k * std::tanh(k * settings_.depth_m) : 0.0; // tanh(inf) = 1: deep water
-            const double omega = settings_.dispersive ? std::sqrt(kGravity * bigK)
-                                                      : settings_.dispersionFreeSpeed_m_per_s * k;
-            const std::size_t m = std::size_t(p) + std::size_t(q) * n;
-            cosStep_[m] = float(std::cos(omega * kWakeStep_s));
-            sinStep_[m] = float(std::sin(omega * kWakeStep_s));
-            // The plain wave equation keeps d(phi)/dt = -g eta, so its K is omega^2 / g.
-            const double kUsed = settings_.dispersive ? bigK : omega * omega / kGravity;
-            kOverOmega_[m] = omega > 0.0 ? float(kUsed / omega) : 0.0f;
-            gOverOmega_[m] = omega > 0.0 ? float(kGravity / omega) : 0.0f;
-        }
     spongeOfIndex_.assign(n, 1.0f);
     const int width = std::clamp(settings_.spongeCells, 1, n / 4);
+    spongeWidth_ = width;
     for (int i = 0; i < n; ++i) {
         const int fromEdge = std::min(i, n - 1 - i);
         if (fromEdge < width) {
@@ -193,11 +170,20 @@ void WakeField::addFootprints(const std::vector<WakeSource>& sources, double sig
 
 void WakeField::absorbAtBorder()
 {
-    const int n = settings_.cells;
+    // Only the sponge's cells: inside it both factors are 1, and a cell times 1 is itself.
+    const int n = settings_.cells, width = spongeWidth_;
+    auto absorb = [&](int i, int j, float sj) { field_[std::size_t(i) + std::size_t(j) * n] *= sj * spongeOfIndex_[i]; };
     for (int j = 0; j < n; ++j) {
         const float sj = spongeOfIndex_[j];
-        for (int i = 0; i < n; ++i)
-            field_[std::size_t(i) + std::size_t(j) * n] *= sj * spongeOfIndex_[i];
+        if (j < width || j >= n - width) {
+            for (int i = 0; i < n; ++i)
+                absorb(i, j, sj);
+            continue;
+        }
+        for (int i = 0; i < width; ++i)
+            absorb(i, j, sj);
+        for (int i = n - width; i < n; ++i)
+            absorb(i, j, sj);
     }
 }
 
@@ -216,24 +202,9 @@ void WakeField::step(const std::vector<WakeSource>& sources)
     const int n = settings_.cells;
     auto* in = reinterpret_cast<kiss_fft_cpx*>(field_.data());
     kiss_fftnd(fft_->forward, in, reinterpret_cast<kiss_fft_cpx*>(spectrum_.data()));
-    // C = F(E + i phi): E^ = (C(k) + conj C(-k)) / 2, phi^ = (C(k) - conj C(-k)) / 2i.
-    // Each mode turns as a free oscillator: E' = E cos + (K/w) phi sin,
-    // phi' = phi cos - (g/w) E sin (Tessendorf 2004, eq. 3 solved over dt).
-    // The inverse transform is unnormalised: 1 / n^2 goes in here.
-    const float norm = 1.0f / float(n) / float(n);
-    for (int q = 0; q < n; ++q)
-        for (int p = 0; p < n; ++p) {
-            const std::size_t m = std::size_t(p) + std::size_t(q) * n;
-            const std::size_t mirror = std::size_t((n - p) % n) + std::size_t((n - q) % n) * n;
-            const std::complex<float> c = spectrum_[m], cm = std::conj(spectrum_[mirror]);
-            const std::complex<float> e = 0.5f * (c + cm);
-            const std::complex<float> phi = std::complex<float>(0.0f, -0.5f) * (c - cm);
-            const float cs = cosStep_[m], sn = sinStep_[m];
-            const std::complex<float> e1 = e * cs + phi * (kOverOmega_[m] * sn);
-            // The mean potential has no effect on the waves; it is kept at 0.
-            const std::complex<float> phi1 = m == 0 ? std::complex<float>(0.0f) : phi * cs - e * (gOverOmega_[m] * sn);
-            turned_[m] = norm * (e1 + std::complex<float>(0.0f, 1.0f) * phi1);
-        }
+    // Each mode turned over the step (WakeModes::turn); the inverse
+    // transform is unnormalised: 1 / n^2 goes in there.
+    modes_.turn(spectrum_.data(), 1.0f / float(n) / float(n), turned_.data());
     kiss_fftnd(fft_->inverse, reinterpret_cast<kiss_fft_cpx*>(turned_.data()), in);
     absorbAtBorder();
     updateFoam();
@@ -245,25 +216,57 @@ void WakeField::updateFoam()
     const int n = settings_.cells;
     const float keep = float(std::exp(-kWakeStep_s / kFoamLifetime_s));
     const float toSlope = float(0.5 / settings_.cellSize_m);
-    auto e = [&](int i, int j) { return field_[std::size_t(std::clamp(i, 0, n - 1)) + std::size_t(std::clamp(j, 0, n - 1)) * n].real(); };
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const float sx = (e(i + 1, j) - e(i - 1, j)) * toSlope, sz = (e(i, j + 1) - e(i, j - 1)) * toSlope;
-            const double slope = std::sqrt(double(sx) * sx + double(sz) * sz);
-            const float breaking = float(std::clamp((slope - kFoamOnsetSlope) / (kFoamFullSlope - kFoamOnsetSlope), 0.0, 1.0));
-            const double leaving_m_per_s = -draftChange_[std::size_t(i) + std::size_t(j) * n] / kWakeStep_s;
-            const float wash = float(std::clamp((leaving_m_per_s - kWashOnset_m_per_s) / (kWashFull_m_per_s - kWashOnset_m_per_s), 0.0, 1.0));
-            float& f = foam_[std::size_t(i) + std::size_t(j) * n];
-            f = std::max(f * keep, std::max(breaking, wash));
+    // Cell (i, j) from its neighbours' E (west, east, south, north).
+    // Most cells are gentler than the onset and under no hull that left
+    // them: there both amounts are 0 without the square root, and the
+    // margin keeps the cells at the onset itself on the exact path.
+    const double gentleSlopeSquared = kFoamOnsetSlope * kFoamOnsetSlope * (1.0 - 1e-9);
+    auto foamAt = [&](std::size_t m, float west, float east, float south, float north) {
+        const float sx = (east - west) * toSlope, sz = (north - south) * toSlope;
+        const double slopeSquared = double(sx) * sx + double(sz) * sz;
+        float breaking = 0.0f, wash = 0.0f;
+        if (!(slopeSquared < gentleSlopeSquared)) {
+            const double slope = std::sqrt(slopeSquared);
+            breaking = float(std::clamp((slope - kFoamOnsetSlope) / (kFoamFullSlope - kFoamOnsetSlope), 0.0, 1.0));
         }
+        if (draftChange_[m] < 0.0f) {
+            const double leaving_m_per_s = -draftChange_[m] / kWakeStep_s;
+            wash = float(std::clamp((leaving_m_per_s - kWashOnset_m_per_s) / (kWashFull_m_per_s - kWashOnset_m_per_s), 0.0, 1.0));
+        }
+        float& f = foam_[m];
+        f = std::max(f * keep, std::max(breaking, wash));
+    };
+    // Along the border the neighbour beyond the grid is the border cell itself.
+    auto e = [&](int i, int j) { return field_[std::size_t(std::clamp(i, 0, n - 1)) + std::size_t(std::clamp(j, 0, n - 1)) * n].real(); };
+    auto clamped = [&](int i, int j) { foamAt(std::size_t(i) + std::size_t(j) * n, e(i - 1, j), e(i + 1, j), e(i, j - 1), e(i, j + 1)); };
+    for (int j = 0; j < n; ++j) {
+        if (j == 0 || j == n - 1) {
+            for (int i = 0; i < n; ++i)
+                clamped(i, j);
+            continue;
+        }
+        clamped(0, j);
+        const std::size_t row = std::size_t(j) * n;
+        for (int i = 1; i < n - 1; ++i) {
+            const std::size_t m = row + std::size_t(i);
+            foamAt(m, field_[m - 1].real(), field_[m + 1].real(), field_[m - n].real(), field_[m + n].real());
+        }
+        clamped(n - 1, j);
+    }
 }
 
 std::vector<float> WakeField::heights() const
 {
-    std::vector<float> out(field_.size());
+    std::vector<float> out;
+    heightsInto(out);
+    return out;
+}
+
+void WakeField::heightsInto(std::vector<float>& out) const
+{
+    out.resize(field_.size());
     for (std::size_t m = 0; m < field_.size(); ++m)
         out[m] = field_[m].real();
-    return out;
 }
 
 double WakeField::heightAt(glm::dvec2 world_m) const

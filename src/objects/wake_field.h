@@ -53,6 +53,22 @@ struct WakeFieldSettings {
     double dispersionFreeSpeed_m_per_s = 3.0;
 };
 
+// The wake's Fourier modes on an n x n grid (row-major, FFT order: index
+// p + q n, wavenumber index p - n for p >= n/2) and their exact turn over
+// one step of kWakeStep_s (wake_modes.cpp).
+struct WakeModes {
+    explicit WakeModes(const WakeFieldSettings& settings);
+
+    // From C = F(E + i phi) (n * n modes) to norm * F(E' + i phi') a step
+    // later, into `turned` (not overlapping `spectrum`).
+    void turn(const std::complex<float>* spectrum, float norm, std::complex<float>* turned) const;
+
+    int cells = 0;
+    // Per mode: cos and sin of omega dt, K / omega and g / omega. A mode
+    // and its mirror -k have the same (omega depends on |k| only).
+    std::vector<float> cosStep, sinStep, kOverOmega, gOverOmega;
+};
+
 // A body's footprint on the water: a smooth hollow of volume volume_m3,
 // D = D0 (1 - u^2)^2 (1 - v^2)^2 for |u|, |v| < 1, u along the heading over
 // halfLength_m and v across it over halfBeam_m (a Wigley-like hull whose
@@ -90,6 +106,10 @@ public:
     glm::ivec2 cornerCell() const { return cornerCell_; }
     // The wave height E per cell, m, row-major (index i + j * cells, i along x).
     std::vector<float> heights() const;
+    // The same into `out`, reusing its storage.
+    void heightsInto(std::vector<float>& out) const;
+    // The wave height E of cell m (= i + j * cells), m.
+    float heightOfCell(std::size_t m) const { return field_[m].real(); }
     // Height at a world point, m, bilinear between cell centres (0 outside).
     double heightAt(glm::dvec2 world_m) const;
     // The foam per cell, 0..1, laid out as heights(): made where the wake's
@@ -106,9 +126,9 @@ private:
     std::int64_t steps_ = 0;
     // Per cell, E + i phi (m, m^2/s): one complex transform carries both.
     std::vector<std::complex<float>> field_, spectrum_, turned_;
-    // Per mode (row-major, FFT order): cos and sin of omega dt, K / omega and g / omega.
-    std::vector<float> cosStep_, sinStep_, kOverOmega_, gOverOmega_;
+    WakeModes modes_;
     std::vector<float> spongeOfIndex_; // per row or column index, the factor a step keeps
+    int spongeWidth_ = 1; // cells along each border where spongeOfIndex_ is below 1
     std::vector<float> foam_;
     std::vector<float> draftChange_; // per cell, how much the footprints' draft changed this step, m
     std::vector<WakeSource> lastSources_; // the footprints in E, taken out again next step
