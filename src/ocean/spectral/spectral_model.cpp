@@ -390,12 +390,10 @@ private:
         foamStepped_ = true;
     }
 
-    // The fields of cascades 0 .. cascades - 1 at time_s; their derivatives'
-    // mipmaps only when every cascade is transformed (a full frame's fields).
     // A software rasteriser's interactive view takes the fields from the
     // CPU's FFTs (field_texels.h: the column pass's texels, within its float
-    // rounding; tests/gl/test_spectral_fields.cpp), at about a tenth of the
-    // passes' cost there. Stills, videos and the benchmark keep the passes.
+    // rounding; tests/gl/test_spectral_fields.cpp), at about a third of the
+    // passes' CPU there. Stills, videos and the benchmark keep the passes.
     void uploadFields(double time_s, int cascades)
     {
         beginStage("fields on the cpu");
@@ -416,6 +414,8 @@ private:
         endStage("fields on the cpu");
     }
 
+    // The fields of cascades 0 .. cascades - 1 at time_s; their derivatives'
+    // mipmaps only when every cascade is transformed (a full frame's fields).
     void transform(double time_s, int cascades = kCascades)
     {
         if (interactive_ && cpuReplay_) {
