@@ -68,7 +68,7 @@ public:
 
     // Texel columns transformed since the twin was made (every packed pair
     // of every cascade, one column of kSize texels each): what the queries
-    // cost, for tests and the benchmark.
+    // cost, for tests.
     std::int64_t columnsTransformed() const;
 
 private:

@@ -527,7 +527,8 @@ private:
     glm::dvec2 gridCenter_m_{0.0}; // this frame's
     // The replay's steps before the last on the CPU: only on a software rasteriser.
     std::unique_ptr<FoamReplay> cpuReplay_;
-    // The fields' CPU twin and texels for uploadFields(), made when first used.
+    // uploadFields()'s own twin (the model's serves the bodies' worker
+    // thread meanwhile) and texels, made when first used.
     std::unique_ptr<CpuSurface> fieldTwin_;
     FieldTexels texels_;
     gl::Program fftRows_, fftColumns_, foamStep_;
