@@ -3,14 +3,15 @@
 // baked (sky_bake.frag with SWELL_SKY_PHYSICAL 1). It reads the two tables
 // the C++ model builds: transmittance to the top of the atmosphere
 // (Bruneton 2017's parametrisation) and Hillaire's (2020, sec. 5.5)
-// multiple scattering. Formulas and their sources: swell/atmosphere.h and
+// multiple scattering with the air's order-2 part. Formulas and their sources: swell/atmosphere.h and
 // atmosphere.cpp; tests/golden/test_sky_physical.cpp checks the two agree.
 #ifndef SWELL_ATMOSPHERE_GLSL
 #define SWELL_ATMOSPHERE_GLSL
 #include "swell/shader_constants.h"
 
 layout(binding = SWELL_UNIT_SKY_TRANSMITTANCE) uniform sampler2D atmosphereTransmittance;
-layout(binding = SWELL_UNIT_SKY_MULTISCATTER) uniform sampler2D atmosphereMultipleScattering;
+// Layer 0: Psi_ms; layers 1 to 3: the air's order-2 harmonics.
+layout(binding = SWELL_UNIT_SKY_MULTISCATTER) uniform sampler2DArray atmosphereMultipleScattering;
 // AtmosphereSettings::mieScale: aerosols over Bruneton 2017's clear air;
 // rayleighScale: air over Bruneton 2017's Earth.
 uniform float atmosphereMieScale;
@@ -67,10 +68,30 @@ vec3 atmosphereTransmittanceTo(float r, float altitude, float mu)
                    atmosphereTexel(x, vec2(SWELL_TRANSMITTANCE_MU_SIZE, SWELL_TRANSMITTANCE_R_SIZE))).rgb;
 }
 
-vec3 atmosphereMultipleScatteringAt(float altitude, float muSun)
+vec2 atmosphereMultipleScatteringTexel(float altitude, float muSun)
 {
     vec2 x = vec2(muSun * 0.5 + 0.5, altitude / (kAtmosphereTop - kAtmosphereBottom));
-    return texture(atmosphereMultipleScattering, atmosphereTexel(x, vec2(SWELL_MULTISCATTER_SIZE))).rgb;
+    return atmosphereTexel(x, vec2(SWELL_MULTISCATTER_SIZE));
+}
+
+vec3 atmosphereMultipleScatteringAt(float altitude, float muSun)
+{
+    return texture(atmosphereMultipleScattering, vec3(atmosphereMultipleScatteringTexel(altitude, muSun), 0.0)).rgb;
+}
+
+// Atmosphere::rayleighMultipleScatteringOrder2: the order-2 harmonics
+// (sunFrameHarmonics) at the view, whose zenith cosine is muView and whose
+// angle to the sun has cosine cosAngle.
+vec3 atmosphereRayleighOrder2At(float altitude, float muSun, float muView, float cosAngle)
+{
+    float horizontal = sqrt(max(1.0 - muSun * muSun, 0.0));
+    float x = horizontal > 1.0e-6 ? clamp((cosAngle - muSun * muView) / horizontal, -1.0, 1.0) : 0.0;
+    float y = muView;
+    float zz = max(1.0 - x * x - y * y, 0.0);
+    vec2 uv = atmosphereMultipleScatteringTexel(altitude, muSun);
+    return 1.092548 * x * y * texture(atmosphereMultipleScattering, vec3(uv, 1.0)).rgb
+        + 0.315392 * (3.0 * y * y - 1.0) * texture(atmosphereMultipleScattering, vec3(uv, 2.0)).rgb
+        + 0.546274 * (x * x - zz) * texture(atmosphereMultipleScattering, vec3(uv, 3.0)).rgb;
 }
 
 float atmosphereRayleighPhase(float c)
@@ -112,14 +133,16 @@ vec3 atmosphereSkyRadiance(vec3 direction, vec3 sun)
         float r = sqrt(r0 * r0 + t * (2.0 * r0 * d.y + t));
         float altitude = (t * (2.0 * r0 * d.y + t) + h0 * (2.0 * kAtmosphereBottom + h0)) / (r + kAtmosphereBottom);
         float muSun = (r0 * sun.y + t * cosAngle) / r;
+        float muView = (r0 * d.y + t) / r;
         vec3 extinction;
         vec4 scattering;
         atmosphereAt(altitude, extinction, scattering);
         vec3 toEye = exp(-(depth + 0.5 * dt * extinction));
         vec3 sunLight = atmosphereTransmittanceTo(r, altitude, muSun);
         vec3 multiple = atmosphereMultipleScatteringAt(altitude, muSun);
+        vec3 rayleighOrder2 = atmosphereRayleighOrder2At(altitude, muSun, muView, cosAngle);
         vec3 single = sunLight * (scattering.rgb * phaseRayleigh + vec3(scattering.a * phaseMie));
-        radiance += toEye * (single + (scattering.rgb + vec3(scattering.a)) * multiple) * dt;
+        radiance += toEye * (single + scattering.rgb * (multiple + rayleighOrder2) + vec3(scattering.a) * multiple) * dt;
         depth += dt * extinction;
     }
     return radiance;

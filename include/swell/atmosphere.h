@@ -71,6 +71,12 @@ public:
     // Hillaire 2020's Psi_ms at radius r_m for the sun at zenith cosine muSun:
     // the radiance scattered twice or more, per unit of scattering coefficient.
     glm::dvec3 multipleScattering(double r_m, double muSun) const;
+    // What the air's Rayleigh phase function adds to that, per unit of its
+    // scattering coefficient, for light scattered towards a view whose zenith
+    // cosine is muView and whose angle to the sun has cosine cosAngle: the
+    // table's order-2 harmonics at the view (atmosphere.cpp,
+    // buildMultipleScattering).
+    glm::dvec3 rayleighMultipleScatteringOrder2(double r_m, double muSun, double muView, double cosAngle) const;
 
     // The sky's radiance seen from SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M along
     // a unit direction (y up) with the sun towards a unit sunDirection, 1/sr
@@ -101,7 +107,8 @@ public:
 
     // Row-major RGB floats as uploaded: the transmittance table
     // (SWELL_TRANSMITTANCE_MU_SIZE x SWELL_TRANSMITTANCE_R_SIZE) and the
-    // multiple-scattering one (SWELL_MULTISCATTER_SIZE square).
+    // multiple-scattering one (SWELL_MULTISCATTER_LAYERS layers of
+    // SWELL_MULTISCATTER_SIZE square, one after the other).
     const std::vector<float>& transmittanceTable() const { return transmittanceTable_; }
     const std::vector<float>& multipleScatteringTable() const { return multiScatteringTable_; }
 

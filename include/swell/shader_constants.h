@@ -219,8 +219,10 @@
 #define SWELL_TRANSMITTANCE_MU_SIZE 256
 #define SWELL_TRANSMITTANCE_R_SIZE 64
 // Hillaire 2020's multiple-scattering table (sec. 5.5): (sun zenith
-// cosine, altitude), 32 x 32 as in the paper.
+// cosine, altitude), 32 x 32 as in the paper, in layers: Psi_ms, then the
+// three order-2 harmonics of the air's share (swell/atmosphere.h).
 #define SWELL_MULTISCATTER_SIZE 32
+#define SWELL_MULTISCATTER_LAYERS 4
 // Their texture units (the physical sky's bake only).
 #define SWELL_UNIT_SKY_TRANSMITTANCE 14
 #define SWELL_UNIT_SKY_MULTISCATTER 15

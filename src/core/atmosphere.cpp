@@ -25,6 +25,8 @@ constexpr double kTop_m = SWELL_ATMOSPHERE_TOP_RADIUS_M;
 constexpr int kMuSize = SWELL_TRANSMITTANCE_MU_SIZE;
 constexpr int kRSize = SWELL_TRANSMITTANCE_R_SIZE;
 constexpr int kMsSize = SWELL_MULTISCATTER_SIZE;
+constexpr int kMsLayers = SWELL_MULTISCATTER_LAYERS;
+constexpr size_t kMsLayerFloats = size_t(3 * kMsSize * kMsSize);
 // Hillaire 2020, sec. 5.5: 64 directions around each point of the
 // multiple-scattering table, 20 steps along each.
 constexpr int kMsDirectionsPerAxis = 8;
@@ -78,13 +80,13 @@ void radiusAndMuOf(glm::dvec2 x, double& r, double& mu)
 // Bilinear lookup of a row-major RGB float table of w x h texels at
 // coordinates x in 0..1 that map linearly onto texel centres 0..w-1 (what
 // GL's linear filter does at u = 0.5/w + x (1 - 1/w)), clamped at the edges.
-glm::dvec3 lookup(const std::vector<float>& table, int w, int h, glm::dvec2 x)
+glm::dvec3 lookup(const float* table, int w, int h, glm::dvec2 x)
 {
     const double fx = std::clamp(x.x, 0.0, 1.0) * (w - 1), fy = std::clamp(x.y, 0.0, 1.0) * (h - 1);
     const int x0 = std::min(int(fx), w - 2), y0 = std::min(int(fy), h - 2);
     const double ax = fx - x0, ay = fy - y0;
     auto at = [&](int i, int j) {
-        const float* p = &table[3 * (size_t(j) * size_t(w) + size_t(i))];
+        const float* p = table + 3 * (size_t(j) * size_t(w) + size_t(i));
         return glm::dvec3(p[0], p[1], p[2]);
     };
     return (at(x0, y0) * (1.0 - ax) + at(x0 + 1, y0) * ax) * (1.0 - ay)
@@ -105,17 +107,29 @@ glm::dvec2 multiScatteringCoordinates(double r, double muSun)
     return {muSun * 0.5 + 0.5, std::clamp((r - kBottom_m) / (kTop_m - kBottom_m), 0.0, 1.0)};
 }
 
+// The three real spherical harmonics of order 2 that light scattered
+// around a point can have, at a unit direction (x, y, z) in the frame whose
+// y is the point's zenith and whose x points at the sun's azimuth: the
+// light is mirror-symmetric about the sun's vertical plane (z to -z), so
+// Y_2-1 and Y_21, odd in z, are 0. Ramamoorthi & Hanrahan's (2001, sec. 2)
+// Y_2-2, Y_20 and Y_22 in this frame; z enters squared, as 1 - x^2 - y^2.
+std::array<double, 3> sunFrameHarmonics(double x, double y)
+{
+    const double zz = std::max(1.0 - x * x - y * y, 0.0);
+    return {1.092548 * x * y, 0.315392 * (3.0 * y * y - 1.0), 0.546274 * (x * x - zz)};
+}
+
 // The scattering a sample adds towards the eye, per unit solar irradiance
 // and unit length: sunlight scattered once (Hillaire 2020, sec. 4, the
-// in-scattering term with the phase functions), plus Psi_ms times the scattering coefficient
-// (Hillaire 2020, sec. 5.5, the multiple-scattering term added to the
-// in-scattering integrand).
+// in-scattering term with the phase functions), plus the light scattered
+// twice or more: the scattering coefficients times Psi_ms (Hillaire 2020,
+// sec. 5.5), the air's with its order-2 part `rayleighOrder2` (see
+// buildMultipleScattering).
 glm::dvec3 inScattering(const AtmosphereCoefficients& c, glm::dvec3 sunTransmittance, glm::dvec3 multiple,
-                        double phaseRayleigh, double phaseMie)
+                        glm::dvec3 rayleighOrder2, double phaseRayleigh, double phaseMie)
 {
-    const glm::dvec3 scattering = c.rayleighScattering + glm::dvec3(c.mieScattering);
     return sunTransmittance * (c.rayleighScattering * phaseRayleigh + glm::dvec3(c.mieScattering * phaseMie))
-        + scattering * multiple;
+        + c.rayleighScattering * (multiple + rayleighOrder2) + glm::dvec3(c.mieScattering) * multiple;
 }
 
 } // namespace
@@ -164,7 +178,7 @@ double miePhase(double cosAngle, double g)
 
 Atmosphere::Atmosphere(const AtmosphereSettings& settings)
     : settings_(settings), transmittanceTable_(size_t(3 * kMuSize * kRSize)),
-      multiScatteringTable_(size_t(3 * kMsSize * kMsSize))
+      multiScatteringTable_(kMsLayers * kMsLayerFloats)
 {
     for (int j = 0; j < kRSize; ++j)
         for (int i = 0; i < kMuSize; ++i) {
@@ -179,25 +193,55 @@ glm::dvec3 Atmosphere::transmittance(double r_m, double mu) const
 {
     if (meetsGround(r_m, mu))
         return glm::dvec3(0.0);
-    return lookup(transmittanceTable_, kMuSize, kRSize, transmittanceCoordinates(r_m, mu));
+    return lookup(transmittanceTable_.data(), kMuSize, kRSize, transmittanceCoordinates(r_m, mu));
 }
 
 glm::dvec3 Atmosphere::multipleScattering(double r_m, double muSun) const
 {
-    return lookup(multiScatteringTable_, kMsSize, kMsSize, multiScatteringCoordinates(r_m, muSun));
+    return lookup(multiScatteringTable_.data(), kMsSize, kMsSize, multiScatteringCoordinates(r_m, muSun));
+}
+
+glm::dvec3 Atmosphere::rayleighMultipleScatteringOrder2(double r_m, double muSun, double muView, double cosAngle) const
+{
+    // The view's cosine to the sun's azimuth: its projection on the
+    // horizontal towards the sun. With the sun at the zenith (no azimuth)
+    // the harmonics that need one are 0 in the table.
+    const double horizontal = std::sqrt(std::max(1.0 - muSun * muSun, 0.0));
+    const double x = horizontal > 1.0e-6 ? std::clamp((cosAngle - muSun * muView) / horizontal, -1.0, 1.0) : 0.0;
+    const std::array<double, 3> harmonics = sunFrameHarmonics(x, muView);
+    const glm::dvec2 at = multiScatteringCoordinates(r_m, muSun);
+    glm::dvec3 sum(0.0);
+    for (size_t m = 0; m < 3; ++m)
+        sum += harmonics[m] * lookup(multiScatteringTable_.data() + (m + 1) * kMsLayerFloats, kMsSize, kMsSize, at);
+    return sum;
 }
 
 // Hillaire 2020, sec. 5.5: around a point, the light scattered towards it
-// once from every direction with an isotropic phase function (its
-// second-order radiance L_2ndorder, the sun's light scattered along each ray
-// plus the ground's reflection where the ray meets it), and the fraction
-// f_ms of isotropic light scattered back to it; light scattered any number
-// of times more is the geometric series L_2ndorder (1 + f_ms + f_ms^2 ...)
-// = L_2ndorder / (1 - f_ms), Psi_ms.
+// once from every direction (L_2ndorder's integrand: the sun's light
+// scattered along each ray, plus the ground's reflection where the ray
+// meets it), and the fraction f_ms of isotropic light scattered back to it;
+// light scattered any number of times more is the geometric series
+// L_2ndorder (1 + f_ms + f_ms^2 ...) = L_2ndorder / (1 - f_ms), Psi_ms.
+//
+// Two departures from the paper, both for a low sun, where most of the
+// sky's light has been scattered more than once and arrives near the
+// horizon:
+// - The sunlight scattered along each ray takes the air's and the aerosols'
+//   phase functions, not an isotropic one.
+// - The air scatters that light on with Rayleigh's phase function, not an
+//   isotropic one. Rayleigh's is (1 + P_2(cos) / 2) / (4 pi), so the light
+//   it scatters into a direction w from a field L is the mean of L plus
+//   (1/10) sum_m c_2m Y_2m(w), where c_2m are L's order-2 harmonics (by the
+//   addition theorem, P_2(w.w') = 4 pi / 5 sum_m Y_2m(w) Y_2m(w')): orders
+//   0 and 2 carry all of it. Layers 1 to 3 of the table keep those
+//   harmonics (sunFrameHarmonics) over 1 - f_ms, as if every further order
+//   had the second's shape. The aerosols keep the isotropic estimate: their
+//   forward peak needs far more than order 2.
 void Atmosphere::buildMultipleScattering()
 {
     const double isotropic = 1.0 / (4.0 * kPi);
     const int directions = kMsDirectionsPerAxis * kMsDirectionsPerAxis;
+    const double solidAngle = 4.0 * kPi / directions;
     for (int j = 0; j < kMsSize; ++j)
         for (int i = 0; i < kMsSize; ++i) {
             const double muSun = 2.0 * i / (kMsSize - 1) - 1.0;
@@ -205,6 +249,7 @@ void Atmosphere::buildMultipleScattering()
             const glm::dvec3 origin(0.0, r0, 0.0);
             const glm::dvec3 sun(std::sqrt(std::max(1.0 - muSun * muSun, 0.0)), muSun, 0.0);
             glm::dvec3 secondOrder(0.0), transfer(0.0);
+            std::array<glm::dvec3, 3> order2{};
             // Equal-area strata of the sphere: cos(theta) and phi uniform.
             for (int a = 0; a < kMsDirectionsPerAxis; ++a)
                 for (int b = 0; b < kMsDirectionsPerAxis; ++b) {
@@ -212,6 +257,9 @@ void Atmosphere::buildMultipleScattering()
                     const double sinTheta = std::sqrt(std::max(1.0 - cosTheta * cosTheta, 0.0));
                     const double phi = 2.0 * kPi * (b + 0.5) / kMsDirectionsPerAxis;
                     const glm::dvec3 d(sinTheta * std::cos(phi), cosTheta, sinTheta * std::sin(phi));
+                    const double cosAngle = glm::dot(d, sun);
+                    const double phaseRayleigh = rayleighPhase(cosAngle);
+                    const double phaseMie = miePhase(cosAngle, SWELL_MIE_ASYMMETRY);
                     const bool ground = meetsGround(r0, cosTheta);
                     const double length = ground ? distanceToGround(r0, cosTheta) : distanceToTop(r0, cosTheta);
                     const double dt = length / kMsSteps;
@@ -222,8 +270,9 @@ void Atmosphere::buildMultipleScattering()
                         const AtmosphereCoefficients c = atmosphereAt(r - kBottom_m, settings_);
                         const glm::dvec3 toEye = glm::exp(-(depth + 0.5 * dt * c.extinction));
                         const glm::dvec3 scattering = c.rayleighScattering + glm::dvec3(c.mieScattering);
-                        light += toEye * scattering * transmittance(r, glm::dot(p, sun) / r) * isotropic * dt;
-                        fraction += toEye * scattering * dt;
+                        light += toEye * (c.rayleighScattering * phaseRayleigh + glm::dvec3(c.mieScattering * phaseMie))
+                            * transmittance(r, glm::dot(p, sun) / r) * dt;
+                        fraction += toEye * scattering * isotropic * dt;
                         depth += dt * c.extinction;
                     }
                     if (ground) {
@@ -233,13 +282,18 @@ void Atmosphere::buildMultipleScattering()
                         light += glm::exp(-depth) * transmittance(kBottom_m, muGround) * std::max(muGround, 0.0)
                             * settings_.groundAlbedo / kPi;
                     }
-                    // The integral over the sphere with the isotropic phase
-                    // function is the mean over equal-area directions.
-                    secondOrder += light / double(directions);
-                    transfer += fraction / double(directions);
+                    // Integrals over the sphere: sums over equal-area cells.
+                    secondOrder += light * isotropic * solidAngle;
+                    transfer += fraction * solidAngle;
+                    const std::array<double, 3> y = sunFrameHarmonics(d.x, d.y);
+                    for (size_t m = 0; m < 3; ++m)
+                        order2[m] += light * y[m] * solidAngle;
                 }
-            const glm::dvec3 psi = secondOrder / (glm::dvec3(1.0) - transfer);
-            put(multiScatteringTable_, size_t(j) * kMsSize + size_t(i), psi);
+            const glm::dvec3 series = glm::dvec3(1.0) / (glm::dvec3(1.0) - transfer);
+            const size_t texel = size_t(j) * kMsSize + size_t(i);
+            put(multiScatteringTable_, texel, secondOrder * series);
+            for (size_t m = 0; m < 3; ++m)
+                put(multiScatteringTable_, (m + 1) * size_t(kMsSize * kMsSize) + texel, 0.1 * order2[m] * series);
         }
 }
 
@@ -270,7 +324,11 @@ glm::dvec3 Atmosphere::skyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection
         const AtmosphereCoefficients c = atmosphereAt(r - kBottom_m, settings_);
         const double muSun = glm::dot(p, sun) / r;
         const glm::dvec3 toEye = glm::exp(-(depth + 0.5 * dt * c.extinction));
-        radiance += toEye * inScattering(c, transmittance(r, muSun), multipleScattering(r, muSun), phaseRayleigh, phaseMie) * dt;
+        radiance += toEye
+            * inScattering(c, transmittance(r, muSun), multipleScattering(r, muSun),
+                           rayleighMultipleScatteringOrder2(r, muSun, glm::dot(p, d) / r, cosAngle), phaseRayleigh,
+                           phaseMie)
+            * dt;
         depth += dt * c.extinction;
     }
     return radiance;

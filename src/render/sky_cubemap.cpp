@@ -30,6 +30,19 @@ gl::Texture tableTexture(int width, int height, const std::vector<float>& rgb)
     return t;
 }
 
+// The same as layers of an array texture, so that no filter mixes them.
+gl::Texture layeredTableTexture(int width, int height, int layers, const std::vector<float>& rgb)
+{
+    gl::Texture t = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
+    glTextureStorage3D(t.id(), 1, GL_RGB32F, width, height, layers);
+    glTextureSubImage3D(t.id(), 0, 0, 0, 0, width, height, layers, GL_RGB, GL_FLOAT, rgb.data());
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
 } // namespace
 
 void AtmosphereTextures::upload(const Atmosphere& atmosphere)
@@ -39,7 +52,8 @@ void AtmosphereTextures::upload(const Atmosphere& atmosphere)
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     transmittance = tableTexture(SWELL_TRANSMITTANCE_MU_SIZE, SWELL_TRANSMITTANCE_R_SIZE, atmosphere.transmittanceTable());
-    multipleScattering = tableTexture(SWELL_MULTISCATTER_SIZE, SWELL_MULTISCATTER_SIZE, atmosphere.multipleScatteringTable());
+    multipleScattering = layeredTableTexture(SWELL_MULTISCATTER_SIZE, SWELL_MULTISCATTER_SIZE, SWELL_MULTISCATTER_LAYERS,
+                                             atmosphere.multipleScatteringTable());
     glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
 }
 

@@ -41,7 +41,8 @@ SkyBakeKey skyBakeKeyOf(const Scene& scene);
 void bakeProceduralSky(const SkyBakeProgram& program, gl::Texture& cube, GLuint emptyVao);
 
 // The physical sky's two tables (Atmosphere::transmittanceTable and
-// multipleScatteringTable) as RGB32F textures, linear, clamped; made when
+// multipleScatteringTable, the second in layers of a 2D array) as RGB32F
+// textures, linear, clamped; made when
 // empty. Bound to SWELL_UNIT_SKY_TRANSMITTANCE and SWELL_UNIT_SKY_MULTISCATTER
 // by the caller for the bake.
 struct AtmosphereTextures {

@@ -6,6 +6,7 @@
 #include "swell/atmosphere.h"
 
 #include "published_sky.h"
+#include "rayleigh_layer_transfer.h"
 
 #include <gtest/gtest.h>
 
@@ -42,11 +43,11 @@ glm::dvec3 skyAt(double elevation_deg, double azimuthFromSun_deg)
     return {std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e)};
 }
 
-// The model's radiance at 440 nm over each of a benchmark's rows
+// The model's radiance at 440 nm along each of a benchmark's rows
 // (published_sky.h), for the model's air made the benchmark's layer: its
 // density scaled to the layer's optical thickness, no aerosols, the
-// benchmark's ground. Printed, for the figures quoted below.
-std::vector<double> rayleighSkyRatios(const swell::test::RayleighSkyCase& c)
+// benchmark's ground.
+std::vector<double> modelRadiances(const swell::test::RayleighSkyCase& c)
 {
     const double column440 = SWELL_RAYLEIGH_SCATTERING_B * SWELL_RAYLEIGH_SCALE_HEIGHT_M
         * (1.0 - std::exp(-(SWELL_ATMOSPHERE_TOP_RADIUS_M - kBottom_m) / SWELL_RAYLEIGH_SCALE_HEIGHT_M));
@@ -55,15 +56,36 @@ std::vector<double> rayleighSkyRatios(const swell::test::RayleighSkyCase& c)
     settings.mieScale = 0.0;
     settings.groundAlbedo = c.groundAlbedo;
     const Atmosphere air(settings);
-    std::vector<double> ratios;
+    std::vector<double> radiances;
     for (const swell::test::RayleighSkyRow& row : c.rows) {
         const glm::dvec3 sun = sunAt(90.0 - row.sunZenith_deg);
         const glm::dvec3 view = skyAt(90.0 - row.viewZenith_deg, row.azimuthFromSun_deg);
-        ratios.push_back(air.skyRadiance(view, sun, 400).z / row.radiance_per_sr);
-        std::printf("%s: sun %.1f, view %.1f at %.0f from the sun: model / published %.3f\n", c.source,
-                    row.sunZenith_deg, row.viewZenith_deg, row.azimuthFromSun_deg, ratios.back());
+        radiances.push_back(air.skyRadiance(view, sun, 400).z);
+    }
+    return radiances;
+}
+
+// The model over a reference along each row, printed for the figures
+// quoted below.
+std::vector<double> ratiosTo(const swell::test::RayleighSkyCase& c, const std::vector<double>& references,
+                             const char* reference)
+{
+    const std::vector<double> model = modelRadiances(c);
+    std::vector<double> ratios;
+    for (size_t i = 0; i < model.size(); ++i) {
+        ratios.push_back(model[i] / references[i]);
+        std::printf("%s: sun %.1f, view %.1f at %.0f from the sun: model / %s %.3f\n", c.source, c.rows[i].sunZenith_deg,
+                    c.rows[i].viewZenith_deg, c.rows[i].azimuthFromSun_deg, reference, ratios.back());
     }
     return ratios;
+}
+
+std::vector<double> rayleighSkyRatios(const swell::test::RayleighSkyCase& c)
+{
+    std::vector<double> published;
+    for (const swell::test::RayleighSkyRow& row : c.rows)
+        published.push_back(row.radiance_per_sr);
+    return ratiosTo(c, published, "published");
 }
 
 double relativeError(double value, double reference) { return std::abs(value / reference - 1.0); }
@@ -238,7 +260,7 @@ TEST(Atmosphere, RayleighOpticalDepthAgainstHansenAndTravis1974)
 // sun's, chi the angle between them). The model's luminance is
 // 0.2126 R + 0.7152 G + 0.0722 B of its radiance. It meets the standard
 // within 10% high in the sky across from the sun (60 degrees up, 90 degrees
-// in azimuth from it) for the sun 10 to 30 degrees up: +2%, +3%, +5%
+// in azimuth from it) for the sun 10 to 30 degrees up: +3%, +4%, +6%
 // (measured). Elsewhere it does not (docs/RENDERING.md lists the figures):
 // the clear air of Bruneton 2017 has less aerosol than the standard's
 // clear sky, so its glow round the sun is weaker and its horizon brighter.
@@ -269,9 +291,9 @@ TEST(Atmosphere, RelativeLuminanceAgainstTheCieStandardClearSky)
 // three wavelengths becomes XYZ by Bruneton's (2016, sec. 14.3) conversion
 // over the ASTM G-173 solar spectrum that Bruneton 2017 uses
 // (published_sky.h). Within 10% everywhere; measured, x then y: zenith
-// -5.0% -9.8% (sun 10), -3.1% -6.7% (20), -1.6% -4.3% (30), -2.6% -4.6%
-// (45), -5.0% -7.4% (60); horizon -7.5% -7.4%, -7.3% -5.7%, -5.8% -3.6%,
-// -5.7% -3.6%, -7.2% -5.8%: the model's sky is a little bluer than
+// -4.7% -9.3% (sun 10), -2.7% -6.2% (20), -1.2% -3.7% (30), -2.2% -4.0%
+// (45), -4.5% -6.8% (60); horizon -7.8% -7.7%, -7.5% -6.0%, -6.0% -3.8%,
+// -5.7% -3.6%, -7.0% -5.7%: the model's sky is a little bluer than
 // Preetham's hazier one. Air without its 440 nm Rayleigh scattering, or
 // the channels swapped, is off by far more.
 TEST(Atmosphere, ChromaticityAgainstPreetham1999)
@@ -300,8 +322,8 @@ TEST(Atmosphere, ChromaticityAgainstPreetham1999)
 // distribution at turbidity 2: 2.46, 2.95, 3.49, 4.47, 5.89 kcd/m^2 at the
 // zenith for the sun 10, 20, 30, 45, 60 degrees up, and 13.3 to 15.1 kcd/m^2
 // 5 degrees above the horizon 90 degrees from the sun. The model reaches
-// 0.68, 0.91, 1.10, 1.37, 1.69 kcd/m^2 at the zenith (28 to 31% of
-// Preetham's) and 3.8 to 6.2 kcd/m^2 at that horizon (29 to 43%), by
+// 0.67, 0.90, 1.07, 1.34, 1.66 kcd/m^2 at the zenith (27 to 31% of
+// Preetham's) and 3.9 to 6.1 kcd/m^2 at that horizon (29 to 42%), by
 // Bruneton's (2016) conversion with 683 lm/W and the CIE colour matching
 // functions (published_sky.h; the solar spectrum there gives 132.6 klx
 // above the atmosphere). That conversion is not what falls short: the
@@ -338,24 +360,28 @@ TEST(Atmosphere, AbsoluteLuminanceAgainstPreetham1999IsHeldWhereItIs)
 // Kokhanovsky et al. 2010's molecular layer), the sun 30 to 90 degrees up,
 // views from the zenith to 10 degrees above the horizon, layers 0.1 to 0.5
 // thick (the Earth's air is 0.26 at 440 nm, 0.11 at 550 nm). The model's
-// air is made the benchmark's (rayleighSkyRatios). Within 10% everywhere;
-// measured, model over published: A1 with the sun at the zenith 0.943 to
-// 1.054, 30 degrees from it 0.948 to 1.081; A2 0.917 to 0.972 (lowest 10
-// degrees up); Kokhanovsky et al. 0.926 to 1.062.
+// air is made the benchmark's (modelRadiances). Within 10% everywhere;
+// measured, model over published: A1 with the sun at the zenith 0.902 to
+// 1.015, 30 degrees from it 0.938 to 1.048; A2 0.916 to 0.963 (lowest 10
+// degrees up); Kokhanovsky et al. 0.928 to 1.047.
 // The model differs from the benchmarks where it approximates: light
-// scattered twice or more is Hillaire's (2020) isotropic estimate, the
-// radiance is scalar (the benchmarks' intensity comes from the polarised
-// equation), the molecules do not depolarise (0.03 in two of the cases),
-// and the Earth is round where the benchmarks' layer is flat. Broken on
-// purpose: without the multiple scattering the model reaches 0.34 to 0.70;
-// with A2's ground black, 0.66 to 0.78 there; with an isotropic phase
-// function for the air, 0.73 to 1.26.
+// scattered twice or more is estimated (Hillaire 2020, with the air's
+// order-2 part; atmosphere.cpp), the molecules do not depolarise (0.03 in
+// two of the cases), and the Earth is round where the benchmarks' layer is
+// flat; and where it does not try to be the same: its radiance is scalar,
+// the benchmarks' the intensity of the polarised equation. For A1 with the
+// sun at the zenith the exact scalar radiance is itself 0.909 to 1.041 of
+// the polarised (rayleigh_layer_transfer.h). Broken on purpose: without the
+// multiple scattering the model reaches 0.34 to 0.70; with A2's ground black,
+// 0.66 to 0.77 there; with an isotropic phase function for the air,
+// 0.69 to 1.26.
 // At the horizon and under a low sun (rayleighSkyHorizonAndLowSun) the
-// model is further off, held within 22%: 1 degree above the horizon 0.898
-// to 0.960, where a flat layer's line of sight is twice a round
-// atmosphere's; the sun 11.5 degrees up (Natraj et al.) 0.802 to 1.132,
-// lowest near the horizon towards and away from the sun, where most of the
-// light has been scattered more than once.
+// model is further from the polarised tables, held within 17%: 1 degree
+// above the horizon 0.921 to 0.967; the sun 11.5 degrees up (Natraj et al.)
+// 0.841 to 1.094, lowest near the horizon towards and away from the sun
+// and highest at the zenith. That is polarisation's pattern: the exact
+// scalar radiance there is 0.882 to 1.108 of the polarised. Against the
+// scalar (the next test) the model is within 8%.
 TEST(Atmosphere, SkyRadianceAgainstExactRayleighTransfer)
 {
     for (const swell::test::RayleighSkyCase& c : swell::test::rayleighSkyBenchmarks()) {
@@ -372,11 +398,48 @@ TEST(Atmosphere, SkyRadianceAgainstExactRayleighTransferAtTheHorizonAndALowSun)
     for (const swell::test::RayleighSkyCase& c : swell::test::rayleighSkyHorizonAndLowSun()) {
         const std::vector<double> ratios = rayleighSkyRatios(c);
         for (size_t i = 0; i < ratios.size(); ++i)
-            EXPECT_LT(std::abs(ratios[i] - 1.0), 0.22)
+            EXPECT_LT(std::abs(ratios[i] - 1.0), 0.17)
                 << c.source << ": sun " << c.rows[i].sunZenith_deg << ", view " << c.rows[i].viewZenith_deg << " at "
                 << c.rows[i].azimuthFromSun_deg << " degrees from the sun: model / published " << ratios[i];
     }
 }
 
-} // namespace
+// The reference for a scalar model: the same layers' exact scalar radiance
+// (rayleigh_layer_transfer.h), from the solver that reproduces the
+// published polarised tables within 1% (RayleighLayerTransfer.*), with the
+// polarisation left out. Every published case of a black ground and
+// molecules that do not depolarise: IPRT A1 with the sun at the zenith,
+// Kokhanovsky et al.'s layer from the zenith to 1 degree above the horizon,
+// Natraj et al.'s sun 11.5 degrees up. The issue asks for 10%; the test
+// holds 8%, which only the air's order-2 part of the multiple scattering
+// reaches. Measured, model over scalar: A1 0.971 to 0.989; Kokhanovsky et
+// al. 0.973 to 0.987, and 0.952 to 0.978 at 1 degree; Natraj et al. 0.923
+// (5.7 degrees up, 90 degrees from the sun) to 1.002. Broken on purpose:
+// Hillaire's isotropic estimate as published reaches 0.900 to 1.035; with
+// the phase functions along the rays but no order-2 part, 0.911 to 1.041;
+// without the multiple scattering, 0.34 to 0.72.
+TEST(Atmosphere, SkyRadianceAgainstScalarRayleighTransfer)
+{
+    std::vector<swell::test::RayleighSkyCase> cases;
+    for (const auto& set : {swell::test::rayleighSkyBenchmarks(), swell::test::rayleighSkyHorizonAndLowSun()})
+        for (const swell::test::RayleighSkyCase& c : set)
+            if (c.groundAlbedo == 0.0 && c.depolarisation == 0.0)
+                cases.push_back(c);
+    ASSERT_EQ(cases.size(), 4u);
+    for (const swell::test::RayleighSkyCase& c : cases) {
+        std::vector<swell::test::LayerView> views;
+        for (const swell::test::RayleighSkyRow& row : c.rows) {
+            ASSERT_EQ(row.sunZenith_deg, c.rows.front().sunZenith_deg);
+            views.push_back({row.viewZenith_deg, row.azimuthFromSun_deg});
+        }
+        const std::vector<double> scalar =
+            swell::test::rayleighLayerRadiance(c.opticalDepth, c.rows.front().sunZenith_deg, views, false, 400000);
+        const std::vector<double> ratios = ratiosTo(c, scalar, "scalar");
+        for (size_t i = 0; i < ratios.size(); ++i)
+            EXPECT_LT(std::abs(ratios[i] - 1.0), 0.08)
+                << c.source << ": sun " << c.rows[i].sunZenith_deg << ", view " << c.rows[i].viewZenith_deg << " at "
+                << c.rows[i].azimuthFromSun_deg << " degrees from the sun: model / scalar " << ratios[i];
+    }
+}
 
+} // namespace
