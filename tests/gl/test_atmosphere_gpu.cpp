@@ -77,19 +77,8 @@ TEST_F(AtmosphereGpu, MultipleScatteringLookupsAreTheCppModels)
         const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
         glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "atmosphereMieScale"), 1.0f);
         glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "atmosphereRayleighScale"), float(rayleighScale));
-        swell::gl::Buffer pointBuffer = swell::gl::Buffer::create(), resultBuffer = swell::gl::Buffer::create();
-        glNamedBufferData(pointBuffer.id(), GLsizeiptr(in.size() * sizeof(glm::vec4)), in.data(), GL_STATIC_DRAW);
-        glNamedBufferData(resultBuffer.id(), GLsizeiptr(2 * in.size() * sizeof(glm::vec4)), nullptr, GL_DYNAMIC_READ);
-        glUseProgram(program.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pointBuffer.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, resultBuffer.id());
-        glDispatchCompute(GLuint(in.size() / 64), 1, 1);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        std::vector<glm::vec4> out(2 * in.size());
-        glGetNamedBufferSubData(resultBuffer.id(), 0, GLsizeiptr(out.size() * sizeof(glm::vec4)), out.data());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
-        glUseProgram(0);
+        const std::vector<glm::vec4> out =
+            swell::test::runShaderProbe<glm::vec4, glm::vec4>(program, in, 2 * in.size(), GLuint(in.size() / 64));
         glBindTextureUnit(SWELL_UNIT_SKY_TRANSMITTANCE, 0);
         glBindTextureUnit(SWELL_UNIT_SKY_MULTISCATTER, 0);
 

@@ -56,21 +56,8 @@ std::vector<glm::vec4> gpuLayer(const swell::CloudSettings& clouds, const std::v
     uniform("cloudAltitude_m", clouds.altitude_m);
     uniform("cloudOpticalDepth", clouds.opticalDepth);
     uniform("cloudScale_m", clouds.scale_m);
-    const GLsizeiptr bytes = GLsizeiptr(directions.size() * sizeof(glm::vec4));
-    swell::gl::Buffer in = swell::gl::Buffer::create(), out = swell::gl::Buffer::create();
-    glNamedBufferData(in.id(), bytes, directions.data(), GL_STATIC_DRAW);
-    glNamedBufferData(out.id(), bytes, nullptr, GL_DYNAMIC_READ);
-    glUseProgram(program.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-    glDispatchCompute(GLuint(directions.size() / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<glm::vec4> results(directions.size());
-    glGetNamedBufferSubData(out.id(), 0, bytes, results.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
-    glUseProgram(0);
-    return results;
+    return swell::test::runShaderProbe<glm::vec4, glm::vec4>(program, directions, directions.size(),
+                                                              GLuint(directions.size() / 64));
 }
 
 // 64^2 directions all over the sky (uniform in solid angle above the
@@ -286,23 +273,11 @@ TEST_F(CloudsGpu, ShadowLookupIsTheCppModelAtAnyHeight)
                                                      float(texel));
     }
     const swell::gl::Program program = swell::test::buildShaderProbe(kShadowProbe, {"SWELL_CLOUD_SHADOWS 1"});
-    const GLsizeiptr bytes = GLsizeiptr(points.size() * sizeof(glm::vec4));
-    swell::gl::Buffer in = swell::gl::Buffer::create(), out = swell::gl::Buffer::create();
-    glNamedBufferData(in.id(), bytes, points.data(), GL_STATIC_DRAW);
-    glNamedBufferData(out.id(), GLsizeiptr(points.size() * sizeof(float)), nullptr, GL_DYNAMIC_READ);
-    glUseProgram(program.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-    glDispatchCompute(GLuint(points.size() / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<float> got(points.size());
-    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(got.size() * sizeof(float)), got.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+    const std::vector<float> got =
+        swell::test::runShaderProbe<glm::vec4, float>(program, points, points.size(), GLuint(points.size() / 64));
     glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_FRAME, 0);
     glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_CLOUD_SHADOW, 0);
     glBindTextureUnit(SWELL_UNIT_CLOUD_SHADOW, 0);
-    glUseProgram(0);
     double worst = 0.0;
     int shade = 0;
     for (size_t k = 0; k < got.size(); ++k) {
