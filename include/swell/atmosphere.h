@@ -2,7 +2,8 @@
 // Bruneton (2017) describe it (Rayleigh scattering by air, Mie scattering
 // and absorption by aerosols, absorption by ozone), lit by the sun. Single
 // scattering is ray-marched; light scattered more than once comes from
-// Hillaire's (2020, sec. 5.5) isotropic multiple-scattering table.
+// Hillaire's (2020, sec. 5.5) multiple-scattering table, with the part of
+// the air's Rayleigh phase function that his isotropic estimate drops.
 //
 // Everything here is in double precision and depends only on its arguments:
 // the renderer bakes the same model from shaders/atmosphere.glsl (float, on
