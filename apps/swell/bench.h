@@ -251,6 +251,8 @@ void printGpuWork(const Results& results);
 nlohmann::ordered_json simulationCpuJson(const Results& results);
 nlohmann::ordered_json frameSimulationCpuJson(const FrameCounters& counters);
 nlohmann::ordered_json frameGpuWorkJson(const FrameCounters& counters);
+// The views' culling of the frame (FrameCounters::cullBoxesTested): exact.
+nlohmann::ordered_json frameCullingJson(const FrameCounters& counters);
 // The terms' table (nothing when they were not measured), and its JSON.
 void printTermReport(const Results& results);
 nlohmann::ordered_json termsJson(const Results& results);

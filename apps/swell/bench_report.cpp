@@ -482,6 +482,7 @@ void writeJson(const Results& r, const std::string& path)
         if (i < r.counters.size()) {
             frame["simulation_cpu_ms"] = frameSimulationCpuJson(r.counters[i]);
             frame["gpu_work"] = frameGpuWorkJson(r.counters[i]);
+            frame["culling"] = frameCullingJson(r.counters[i]);
         }
         measured.push_back(std::move(frame));
     }

@@ -129,6 +129,11 @@ struct SWELL_API FrameCounters {
     // a query whose drawn triangle lay beyond the GPU's block of vertices).
     int queriesOnGpu = 0;
     int queriesOnCpu = 0;
+    // The boxes the views' culling of the water grid tested against their
+    // frusta (blocks, quadtree nodes, tiles; part of views_ms): exact, the
+    // same in every run, for a figure of the culling's work that no load
+    // moves.
+    long long cullBoxesTested = 0;
     // Every draw call of the views (the sky's bake and the anti-aliasing's
     // filter included) is drawCalls above; the rest of the GPU's work:
     GpuWork simulationGpu; // advanceTo()'s: the wave model's for the frame

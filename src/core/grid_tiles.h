@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -109,9 +110,8 @@ public:
     static constexpr unsigned kAllPlanes = 0x3f;
     Containment operator()(const CentredBox& box, unsigned& planes) const
     {
-        for (size_t k = 0; k < planes_.size(); ++k) {
-            if (!(planes & (1u << k)))
-                continue;
+        for (unsigned left = planes; left != 0; left &= left - 1) {
+            const auto k = size_t(std::countr_zero(left));
             const double distance = glm::dot(glm::dvec3(planes_[k]), box.centre) + planes_[k].w;
             const double radius = glm::dot(absNormals_[k], box.half) + padRadius_[k];
             if (distance + radius < 0.0)

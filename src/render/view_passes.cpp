@@ -74,6 +74,7 @@ Renderer::Impl::ViewFrame Renderer::Impl::prepareView(const View& view, glm::ive
     f.worldBoxCount =
         hostGeometry ? -1 : worldBoxes(world, seaScene, reach, v.origin, simulated->poses, f.worldBoxes);
     waterGrid.cull(gridShape, grid, reach, viewProj, v.depth.zeroToOne(), grid.center_m - glm::dvec2(v.origin.x, v.origin.z));
+    counters.cullBoxesTested += waterGrid.boxesTested();
     return v;
 }
 

@@ -68,13 +68,20 @@ void WaterGrid::cull(const GridShape& shape, const GridPlacement& placement, con
         for (int ny = 0; ny < 2; ++ny)
             for (int nx = 0; nx < 2; ++nx)
                 chooseTiles(test, planes, b, 0, nx, ny, mask);
-        // In the buffer's order (row by row), so touching tiles merge.
+        // In the buffer's order (row by row), a run of chosen tiles at a
+        // time: a block's tiles lie one after another in the buffer, a row
+        // after the row before, so consecutive bits (bits past a narrow
+        // block's width are never set) are one range of indices, which
+        // choose() would have merged tile by tile.
         const int width = tilesAcross(block);
         while (mask != 0) {
             const int bit = std::countr_zero(mask);
-            mask &= mask - 1;
-            const GridTile& tile = grid_.tiles[size_t(block.firstTile + (bit / kBlockTiles) * width + bit % kBlockTiles)];
-            choose(tile.firstIndex, tile.indexCount);
+            const int run = std::countr_one(mask >> bit);
+            mask = bit + run == 64 ? 0 : mask & ~(((std::uint64_t(1) << run) - 1) << bit);
+            const int first = block.firstTile + (bit / kBlockTiles) * width + bit % kBlockTiles;
+            const GridTile& head = grid_.tiles[size_t(first)];
+            const GridTile& tail = grid_.tiles[size_t(first + run - 1)];
+            choose(head.firstIndex, tail.firstIndex + tail.indexCount - head.firstIndex);
         }
     }
 }

@@ -3,7 +3,8 @@
 that everything it counts is identical between the runs: the pipeline
 statistics and samples passed of every pass of every measured frame, their
 totals (real and floor), the water LOD figures, and Swell's own GPU work of
-every frame (dispatches, barriers, mipmaps, bytes written, draw calls).
+every frame (dispatches, barriers, mipmaps, bytes written, draw calls), and
+the boxes the views' culling tested.
 Timings vary and are only checked for being there, the simulation's CPU time
 (second line, and its parts in the JSON) among them. The second run adds --terms: only it may print the
 shading terms' table and the reflection lookups; both print frames per second
@@ -73,6 +74,7 @@ def deterministic(results):
                 "camera": f["camera"],
                 "counters": {name: p["counters"] for name, p in f["passes"].items()},
                 "gpu_work": f["gpu_work"],
+                "culling": f["culling"],
             }
             for f in results["measured_frames"]
         ],
@@ -134,6 +136,10 @@ def main():
         work = f["gpu_work"]
         if work["views"]["draw_calls"] <= 0 or work["simulation"]["dispatches"] != 0:
             problems.append(f"implausible GPU work of frame {f['index']}: {work}")
+        # The views' culling tests every block of the grid at least,
+        # whatever it then keeps.
+        if not f["culling"]["boxes_tested"] > 0:
+            problems.append(f"no box tested by the culling of frame {f['index']}: {f['culling']}")
     for name, p in passes.items():
         if not p["wall_ms"]["median"] > 0.0 or not p["floor_wall_ms"]["median"] > 0.0:
             problems.append(f"pass '{name}' has no wall time")
