@@ -1,4 +1,5 @@
-// The spray's clumps (spray.vert) as SWELL_SPRAY_DROPS drops, each drawn as
+// The spray's clumps (spray.vert) as SWELL_SPRAY_DROPS drops (the bow's:
+// SWELL_BOW_SPRAY_DROPS and a piece of its sheet, sheetPiece), each drawn as
 // a streak of its own path (spray.glsl's closed form) over the last
 // fraction of a second: a ribbon facing the eye through four points of
 // that path, so the fine mist the wind takes up at once shows as thin
@@ -162,7 +163,8 @@ void main()
         // fainter as it spreads; a drop stays a drop.
 #ifdef SWELL_BOW_SPRAY
         // A sheet's drop stands for a ligament of the torn sheet, wider
-        // than the crest's drops (chosen by eye).
+        // than the crest's drops (6 cm: chosen by eye; at 16 cm their
+        // streaks, a few metres long in a head wind, veiled the hull).
         float halfWidth_m = mist ? 0.03 + 0.08 * age_s : 0.03;
 #else
         float halfWidth_m = mist ? 0.03 + 0.08 * age_s : 0.012;
