@@ -154,27 +154,77 @@ float bowSprayTau_s(uint key, uint drop)
     return bowSprayFallSpeed_mps(d_m) / 9.81;
 }
 
-// A bow drop's launch velocity, m/s, in the earth's frame. The water the
-// bow meets rises up it at about the hull's speed U through the water
-// (relative to the hull the flow meets the stem at U, and its stagnation
-// head U^2 / 2g lifts the bow wave) and leaves the flare as a sheet thrown
-// up and outward; a bow plunging into a wave throws it faster, the water
-// running up the flare faster than the two close (Wagner 1932, ZAMM 12,
-// "Ueber Stoss- und Gleitvorgaenge an der Oberflaeche von
-// Fluessigkeiten"). So the sheet leaves at 0.5 to 1 U plus 0.5 to 1
-// times the plunge's speed, outward, its rise 0.45 to 0.9 of that; of the hull's
-// own speed it keeps 0.3 to 0.6 forward (the sheet is turned aft along
-// the hull), so the hull overtakes it and it falls back beside the bow
-// and astern; each drop scattered 0.25 m/s about its clump's, so that a
-// clump's drops fly together as a piece of the sheet (chosen by eye). forward, outward: unit, horizontal (x, z).
-vec3 bowSprayLaunch(uint key, uint drop, vec2 forward, vec2 outward, float speed_mps, float plunge_mps)
+// The speed of the jet a bow's flare throws as it plunges into the water
+// at plunge_mps (the water's rise less the bow's), m/s. Wagner 1932: a
+// wedge whose sides meet the calm water at beta, entering it at V, wets a
+// half-width c(t) = (pi / 2) V t cot(beta), so its spray root runs out
+// along the water at (pi / 2) V cot(beta), and the jet the root throws
+// leaves along the body at twice the root's speed (Faltinsen 2005,
+// "Hydrodynamics of High-Speed Marine Vehicles", ch. 8, Wagner's jet;
+// Zhao and Faltinsen 1993, J. Fluid Mech. 246, "Water entry of
+// two-dimensional bodies"): pi V cot(beta). flareCot: cot(beta) of the
+// bow's flare (objects/bow_spray.h's BowLine::flareCot), at most that of
+// 20 degrees, where Wagner's flat-plate limit would throw it ever faster.
+float bowSlamJet_mps(float plunge_mps, float flareCot)
 {
-    float sheet_mps = speed_mps * (0.5 + 0.5 * sprayUnit(key, 70u)) + plunge_mps * (0.5 + 0.5 * sprayUnit(key, 71u));
+    return 3.14159265 * plunge_mps * clamp(flareCot, 0.0, 2.75);
+}
+
+// A piece of the bow's sheet: its launch velocity, m/s, in the earth's
+// frame. The water the bow meets rises up it at about the hull's speed U
+// through the water (relative to the hull the flow meets the stem at U,
+// and its stagnation head U^2 / 2g lifts the bow wave) and leaves the
+// flare as a sheet thrown up and outward; a bow plunging into a wave
+// throws it as Wagner's jet (bowSlamJet_mps). So a piece leaves at 0.5 to
+// 1 U plus the jet's root to tip speed (0.5 to 1 of the jet's), outward,
+// its rise 0.45 to 0.9 of that; of the hull's own speed it keeps 0.3 to
+// 0.6 forward (the sheet is turned aft along the hull), so the hull
+// overtakes it and it falls back beside the bow and astern (the shares
+// chosen by eye). forward, outward: unit, horizontal (x, z).
+vec3 bowSheetLaunch(uint key, vec2 forward, vec2 outward, float speed_mps, float plunge_mps, float flareCot)
+{
+    float sheet_mps = speed_mps * (0.5 + 0.5 * sprayUnit(key, 70u)) +
+                      bowSlamJet_mps(plunge_mps, flareCot) * (0.5 + 0.5 * sprayUnit(key, 71u));
     float rise = 0.45 + 0.45 * sprayUnit(key, 72u);
     vec2 level = outward * (sheet_mps * sqrt(1.0 - rise * rise)) +
                  forward * (speed_mps * (0.3 + 0.3 * sprayUnit(key, 73u)));
+    return vec3(level.x, sheet_mps * rise, level.y);
+}
+
+// A bow drop's launch velocity, m/s: its piece's (bowSheetLaunch), each
+// drop scattered 0.25 m/s about it, so that a clump's drops fly together
+// as the torn piece of the sheet (chosen by eye).
+vec3 bowSprayLaunch(uint key, uint drop, vec2 forward, vec2 outward, float speed_mps, float plunge_mps, float flareCot)
+{
     vec3 scatter = vec3(sprayUnit(key, 80u + drop), sprayUnit(key, 90u + drop), sprayUnit(key, 100u + drop)) - 0.5;
-    return vec3(level.x, sheet_mps * rise, level.y) + 0.5 * scatter;
+    return bowSheetLaunch(key, forward, outward, speed_mps, plunge_mps, flareCot) + 0.5 * scatter;
+}
+
+// The piece of sheet flies as its largest drops do (1 mm; bowSprayTau_s):
+// it is water of their size across, and it tears into them.
+float bowSheetTau_s() { return bowSprayFallSpeed_mps(1.0e-3) / 9.81; }
+
+// How fast a hole in a sheet of water thickness_m thick opens, m/s: the
+// surface tension of its two faces pulls its rim back against the rim's
+// inertia (Taylor 1959, Proc. R. Soc. A 253, "The dynamics of thin sheets
+// of fluid III. Disintegration of fluid sheets"; Culick 1960, J. Appl.
+// Phys. 31, "Comments on a ruptured soap film"): v = sqrt(2 sigma /
+// (rho h)), sea water's sigma = 0.073 N/m, rho = 1025 kg/m^3.
+float bowSheetRetraction_mps(float thickness_m) { return sqrt(2.0 * 0.073 / (1025.0 * thickness_m)); }
+
+// The share of a piece of sheet torn open age_s after it left the bow
+// (0..1): holes SWELL_BOW_SPRAY_HOLE_SPACING_M apart (chosen by eye: a
+// torn piece's size in photographs of bow spray), each opened to a radius
+// r = v age at the Taylor-Culick speed, cover pi r^2 / spacing^2 of it;
+// the piece SWELL_BOW_SPRAY_SHEET_MIN_MM to _MAX_MM thick (its key's). A
+// 1 mm sheet is torn through in 0.22 s, its rims gone to drops.
+float bowSheetTorn(uint key, float age_s)
+{
+    float thickness_m = mix(float(SWELL_BOW_SPRAY_SHEET_MIN_MM), float(SWELL_BOW_SPRAY_SHEET_MAX_MM),
+                            sprayUnit(key, 110u)) * 1e-3;
+    float r_m = bowSheetRetraction_mps(thickness_m) * age_s;
+    float spacing_m = float(SWELL_BOW_SPRAY_HOLE_SPACING_M);
+    return min(3.14159265 * r_m * r_m / (spacing_m * spacing_m), 1.0);
 }
 
 #endif

@@ -47,7 +47,8 @@ uniform int bowHulls;                               // hulls drawn, up to SWELL_
 uniform int bowBody[SWELL_BOW_SPRAY_HULLS];         // each one's object index: its lives' key
 // x, y: its velocity over the ground (x, z), m/s; z, w: its heading of travel, unit (x, z).
 uniform vec4 bowMotion[SWELL_BOW_SPRAY_HULLS];
-// x, y: the unit (x, z) towards the first side's stations, out from the keel; z: its speed, m/s.
+// x, y: the unit (x, z) towards the first side's stations, out from the keel; z: its speed, m/s;
+// w: the cotangent of its bow's flare (BowLine::flareCot).
 uniform vec4 bowAcross[SWELL_BOW_SPRAY_HULLS];
 // Where the sheet leaves the bow now (objects/bow_spray.h's BowLine),
 // relative to the render origin (x, z), m: per hull the first side's
@@ -60,7 +61,7 @@ uniform vec4 bowHistory[SWELL_BOW_SPRAY_HULLS * SWELL_BOW_SPRAY_HISTORY];
 uniform float bowHistoryLag_s;                      // the newest sample's age, s
 uniform vec2 bowWindDirection;                      // the wind's, unit (x, z): any wave model's
 out vec4 vBow;      // x, y: the sheet's outward direction (x, z), unit; z: the hull's speed, m/s; w: the plunge, m/s
-out vec2 vForward;  // the hull's heading of travel (x, z), unit
+out vec3 vForward;  // x, y: the hull's heading of travel (x, z), unit; z: its flare's cotangent
 
 void main()
 {
@@ -70,7 +71,7 @@ void main()
     vAge_s = 0.0;
     vKey = 0u;
     vBow = vec4(0.0);
-    vForward = vec2(0.0);
+    vForward = vec3(0.0);
     gl_Position = vec4(0.0);
     int hull = gl_VertexID / SWELL_BOW_SPRAY_SLOTS;
     int slot = gl_VertexID % SWELL_BOW_SPRAY_SLOTS;
@@ -104,7 +105,7 @@ void main()
     vAge_s = life.age_s;
     vKey = life.key;
     vBow = vec4(outward, bowAcross[hull].z, born.y);
-    vForward = motion.zw;
+    vForward = vec3(motion.zw, bowAcross[hull].w);
     float lifetime_s = float(SWELL_SPRAY_LIFETIME_S);
     vOpacity = smoothstep(0.0, 0.05, life.age_s) * (1.0 - smoothstep(0.5 * lifetime_s, lifetime_s, life.age_s));
     gl_Position = vec4(vBirth, 1.0);

@@ -374,10 +374,21 @@
 #define SWELL_BOW_SPRAY_HISTORY 56
 #define SWELL_BOW_SPRAY_SAMPLES_PER_S 30
 #define SWELL_BOW_SPRAY_CELL_Y (-2000000)
-// Its drops (shaders/spray.glsl, bowSprayTau_s): the first
-// SWELL_SPRAY_MIST_DROPS mist as the crest's, the rest the sheet's drops of
-// 0.4 to 1.2 mm, drawn as streaks of SWELL_BOW_SPRAY_SHEET_TRAIL_S.
+// Its drops (shaders/spray.glsl, bowSprayTau_s): SWELL_BOW_SPRAY_DROPS a
+// clump, the first SWELL_SPRAY_MIST_DROPS mist as the crest's, the rest the
+// sheet's drops of 0.4 to 1.0 mm, drawn as streaks of
+// SWELL_BOW_SPRAY_SHEET_TRAIL_S.
+#define SWELL_BOW_SPRAY_DROPS 8
 #define SWELL_BOW_SPRAY_SHEET_TRAIL_S 0.2
+// Each clump is also a piece of the water sheet itself (spray.glsl,
+// bowSheetTorn): SWELL_BOW_SPRAY_SHEET_MIN_MM to _MAX_MM thick, torn by
+// holes SWELL_BOW_SPRAY_HOLE_SPACING_M apart that open at the
+// Taylor-Culick speed; drawn as a wide streak of its path over the last
+// SWELL_BOW_SPRAY_PIECE_TRAIL_S.
+#define SWELL_BOW_SPRAY_SHEET_MIN_MM 0.5
+#define SWELL_BOW_SPRAY_SHEET_MAX_MM 2.0
+#define SWELL_BOW_SPRAY_HOLE_SPACING_M 0.15
+#define SWELL_BOW_SPRAY_PIECE_TRAIL_S 0.15
 
 // The temporal resolve (shaders/temporal_resolve.frag, render/temporal_resolve.h,
 // docs/RENDERING.md "Temporal resolve"): the main pass's depth and the

@@ -89,7 +89,7 @@ std::optional<BowLine> bowLineOf(const BodyShape& shape, double mass_kg, double 
         aft = std::min({aft, p.x, q.x});
     }
     line.length_m = fore - aft;
-        glm::dvec2 stem(-std::numeric_limits<double>::max(), 0.0);
+    glm::dvec2 stem(-std::numeric_limits<double>::max(), 0.0);
     for (const auto& [p, q] : segments)
         for (const glm::dvec2& c : {p, q})
             if (c.x > stem.x)
@@ -98,23 +98,40 @@ std::optional<BowLine> bowLineOf(const BodyShape& shape, double mass_kg, double 
         const glm::dvec2 xz = f * along + a * side;
         return glm::dvec3(xz.x, y, xz.y);
     };
+    // A cut's outermost point on a side at a station (from `floor` out).
+    auto breadthAt = [](const std::vector<std::pair<glm::dvec2, glm::dvec2>>& cuts, double along, double sign,
+                        double floor) {
+        double breadth = floor;
+        for (const auto& [p, q] : cuts) {
+            if ((p.x - along) * (q.x - along) > 0.0 || p.x == q.x)
+                continue;
+            const double across = p.y + (q.y - p.y) * ((along - p.x) / (q.x - p.x));
+            breadth = std::max(breadth, across * sign);
+        }
+        return breadth;
+    };
+    double outboard_m = 0.0;
+    int outboardStations = 0;
     for (int side = 0; side < 2; ++side) {
         const double sign = side == 0 ? 1.0 : -1.0;
         line.stations[side][0] = toShape(stem.x, stem.y);
         for (int k = 1; k < SWELL_BOW_SPRAY_STATIONS; ++k) {
             const double along =
                 stem.x - SWELL_BOW_SPRAY_REACH * line.length_m * double(k) / (SWELL_BOW_SPRAY_STATIONS - 1);
-            // The waterline's outermost point on that side at this station.
-            double breadth = stem.y * sign;
-            for (const auto& [p, q] : segments) {
-                if ((p.x - along) * (q.x - along) > 0.0 || p.x == q.x)
-                    continue;
-                const double across = p.y + (q.y - p.y) * ((along - p.x) / (q.x - p.x));
-                breadth = std::max(breadth, across * sign);
+            // The cut's outermost point on that side at this station, and
+            // how far it lies outboard of the waterline's.
+            const double breadth = breadthAt(segments, along, sign, stem.y * sign);
+            // (A station ahead of the waterline's fore end has none there.)
+            const double below = breadthAt(waterline, along, sign, -std::numeric_limits<double>::max());
+            if (below > -std::numeric_limits<double>::max()) {
+                outboard_m += breadth - below;
+                ++outboardStations;
             }
             line.stations[side][k] = toShape(along, breadth * sign);
         }
     }
+    if (line.climb_m > 1e-3 && outboardStations > 0)
+        line.flareCot = std::max(outboard_m / outboardStations / line.climb_m, 0.0);
     return line;
 }
 

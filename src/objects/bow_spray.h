@@ -28,6 +28,12 @@ struct BowLine {
     double waterline_m = 0.0;          // the calm waterline's height
     double climb_m = 0.0;              // the cut's height above it
     double length_m = 0.0;             // the waterline's length along `forward`
+    // The cotangent of the bow's flare: how far the cut lies outboard of
+    // the waterline for each metre of the climb, the mean over the
+    // stations aft of the stem (0: wall sided; 0 when there is no climb).
+    // It sets how fast a plunging bow throws its sheet (spray.glsl's
+    // bowSlamJet_mps: Wagner's jet).
+    double flareCot = 0.0;
     // Each side's points on the cut (the first side's, then the other's),
     // from the stem (both sides' first point) aft over
     // SWELL_BOW_SPRAY_REACH of the waterline's length, evenly.

@@ -173,7 +173,7 @@ struct BowSprayHulls {
     int count = 0;
     std::array<int, SWELL_BOW_SPRAY_HULLS> body{};        // object indices
     std::array<glm::vec4, SWELL_BOW_SPRAY_HULLS> motion{}; // velocity (x, z), m/s; heading (x, z)
-    std::array<glm::vec4, SWELL_BOW_SPRAY_HULLS> across{}; // towards the first side (x, z); speed, m/s
+    std::array<glm::vec4, SWELL_BOW_SPRAY_HULLS> across{}; // towards the first side (x, z); speed, m/s; the flare's cotangent
     std::array<glm::vec2, SWELL_BOW_SPRAY_HULLS * 2 * SWELL_BOW_SPRAY_STATIONS> stations{}; // relative to the render origin, m
     std::array<glm::vec4, SWELL_BOW_SPRAY_HULLS * SWELL_BOW_SPRAY_HISTORY> history{};     // share, plunge m/s, the sheet's height m
     float historyLag_s = 0.0f;

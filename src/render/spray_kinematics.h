@@ -119,17 +119,42 @@ inline float bowSprayTau_s(std::uint32_t key, std::uint32_t drop)
     return bowSprayFallSpeed_mps(d_m) / 9.81f;
 }
 
-inline glm::vec3 bowSprayLaunch(std::uint32_t key, std::uint32_t drop, glm::vec2 forward, glm::vec2 outward,
-                                float speed_mps, float plunge_mps)
+inline float bowSlamJet_mps(float plunge_mps, float flareCot)
 {
-    const float sheet_mps =
-        speed_mps * (0.5f + 0.5f * sprayUnit(key, 70u)) + plunge_mps * (0.5f + 0.5f * sprayUnit(key, 71u));
+    return 3.14159265f * plunge_mps * std::clamp(flareCot, 0.0f, 2.75f);
+}
+
+inline glm::vec3 bowSheetLaunch(std::uint32_t key, glm::vec2 forward, glm::vec2 outward, float speed_mps,
+                                float plunge_mps, float flareCot)
+{
+    const float sheet_mps = speed_mps * (0.5f + 0.5f * sprayUnit(key, 70u)) +
+                            bowSlamJet_mps(plunge_mps, flareCot) * (0.5f + 0.5f * sprayUnit(key, 71u));
     const float rise = 0.45f + 0.45f * sprayUnit(key, 72u);
     const glm::vec2 level = outward * (sheet_mps * std::sqrt(1.0f - rise * rise)) +
                             forward * (speed_mps * (0.3f + 0.3f * sprayUnit(key, 73u)));
+    return {level.x, sheet_mps * rise, level.y};
+}
+
+inline glm::vec3 bowSprayLaunch(std::uint32_t key, std::uint32_t drop, glm::vec2 forward, glm::vec2 outward,
+                                float speed_mps, float plunge_mps, float flareCot)
+{
     const glm::vec3 scatter =
         glm::vec3(sprayUnit(key, 80u + drop), sprayUnit(key, 90u + drop), sprayUnit(key, 100u + drop)) - 0.5f;
-    return glm::vec3(level.x, sheet_mps * rise, level.y) + 0.5f * scatter;
+    return bowSheetLaunch(key, forward, outward, speed_mps, plunge_mps, flareCot) + 0.5f * scatter;
+}
+
+inline float bowSheetTau_s() { return bowSprayFallSpeed_mps(1.0e-3f) / 9.81f; }
+
+inline float bowSheetRetraction_mps(float thickness_m) { return std::sqrt(2.0f * 0.073f / (1025.0f * thickness_m)); }
+
+inline float bowSheetTorn(std::uint32_t key, float age_s)
+{
+    const float u = sprayUnit(key, 110u);
+    const float thickness_m =
+        (float(SWELL_BOW_SPRAY_SHEET_MIN_MM) * (1.0f - u) + float(SWELL_BOW_SPRAY_SHEET_MAX_MM) * u) * 1e-3f;
+    const float r_m = bowSheetRetraction_mps(thickness_m) * age_s;
+    const float spacing_m = float(SWELL_BOW_SPRAY_HOLE_SPACING_M);
+    return std::min(3.14159265f * r_m * r_m / (spacing_m * spacing_m), 1.0f);
 }
 
 } // namespace swell::detail

@@ -97,7 +97,7 @@ void Renderer::Impl::drawBowSpray(const ViewFrame& v)
         const glm::dvec2 across = glm::length(out) > 1e-6 ? out / glm::length(out) : glm::dvec2(-heading.y, heading.x);
         hulls.body[std::size_t(h)] = int(i);
         hulls.motion[std::size_t(h)] = glm::vec4(glm::vec2(bow->velocity_m_per_s), glm::vec2(heading));
-        hulls.across[std::size_t(h)] = glm::vec4(glm::vec2(across), float(speed_mps), 0.0f);
+        hulls.across[std::size_t(h)] = glm::vec4(glm::vec2(across), float(speed_mps), float(bow->line.flareCot));
         const std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> history = bodies.bowHistory(i, simulated->time_s, lag_s);
         for (int j = 0; j < SWELL_BOW_SPRAY_HISTORY; ++j) {
             const BowSample& b = history[std::size_t(j)];

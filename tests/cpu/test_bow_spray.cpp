@@ -37,7 +37,7 @@ TEST(BowSpray, SheetDropsFallAtGunnAndKinzersSpeeds)
     EXPECT_NEAR(bowSprayFallSpeed_mps(1.0e-3f), 4.03f, 0.01f * 4.03f);
     // Every sheet drop's response time is that speed over g: 0.16 to 0.42 s.
     for (std::uint32_t key = 1; key < 200; ++key)
-        for (std::uint32_t drop = SWELL_SPRAY_MIST_DROPS; drop < SWELL_SPRAY_DROPS; ++drop) {
+        for (std::uint32_t drop = SWELL_SPRAY_MIST_DROPS; drop < SWELL_BOW_SPRAY_DROPS; ++drop) {
             const float tau_s = bowSprayTau_s(key * 7919u, drop);
             EXPECT_GE(tau_s, bowSprayFallSpeed_mps(0.4e-3f) / 9.81f * 0.999f);
             EXPECT_LE(tau_s, bowSprayFallSpeed_mps(1.0e-3f) / 9.81f * 1.001f);
@@ -55,6 +55,56 @@ TEST(BowSpray, ShareGrowsWithSpeedAndPlungeAndIsNoneAtRest)
     EXPECT_LT(bowSprayShare(4.0, length_m, 0.2), bowSprayShare(4.0, length_m, 0.4));
     EXPECT_DOUBLE_EQ(bowSprayShare(10.0, length_m, 10.0), 1.0);
     EXPECT_LE(bowSprayShare(4.0, length_m, 0.0), 0.2 + 1e-12) << "calm water: a fifth at most";
+}
+
+// Wagner 1932: a wedge of deadrise 30 degrees entering at V wets its
+// half-width at (pi / 2) V cot 30 = 2.72 V, its jet twice that, 5.44 V;
+// at 10 degrees 8.91 V is the root's speed, but the jet is held at 20
+// degrees' (pi cot 20 = 8.63 V); a wall-sided bow throws none.
+TEST(BowSpray, SlamJetIsWagners)
+{
+    EXPECT_NEAR(bowSlamJet_mps(1.0f, 1.0f / std::tan(0.5235988f)), 2.0f * 2.72f, 0.01f);
+    EXPECT_NEAR(bowSlamJet_mps(2.0f, 1.0f / std::tan(0.5235988f)), 4.0f * 2.72f, 0.02f);
+    EXPECT_NEAR(bowSlamJet_mps(1.0f, 1.0f / std::tan(0.1745329f)), 8.63f, 0.01f);
+    EXPECT_EQ(bowSlamJet_mps(3.0f, 0.0f), 0.0f);
+    // A plunging bow adds the jet's root to tip speed (0.5 to 1 of it) to
+    // the sheet's; a wall-sided one throws the sheet as the hull's speed
+    // alone says.
+    for (std::uint32_t key = 1; key < 50; ++key) {
+        const glm::vec2 forward(1.0f, 0.0f), outward(0.0f, 1.0f);
+        const glm::vec3 calm = bowSheetLaunch(key * 7919u, forward, outward, 5.0f, 0.0f, 1.0f);
+        const glm::vec3 slam = bowSheetLaunch(key * 7919u, forward, outward, 5.0f, 2.0f, 1.0f);
+        const float jet_mps = bowSlamJet_mps(2.0f, 1.0f);
+        EXPECT_GE(glm::length(slam - calm), 0.5f * jet_mps * 0.999f);
+        EXPECT_LE(glm::length(slam - calm), jet_mps * 1.001f);
+        EXPECT_GT(slam.y - calm.y, 0.45f * 0.5f * jet_mps * 0.999f) << "the jet is thrown up";
+        EXPECT_EQ(calm, bowSheetLaunch(key * 7919u, forward, outward, 5.0f, 2.0f, 0.0f));
+    }
+}
+
+// Taylor 1959, Culick 1960: a hole in a sheet opens at sqrt(2 sigma / rho
+// h); a soap film of water 1 um thick at about 12 m/s (Culick's 12.0 m/s
+// for sigma = 0.072 N/m, fresh water), a 1 mm sea water sheet at 0.377
+// m/s, so its holes 0.15 m apart have met (pi r^2 = spacing^2) after
+// 0.15 / (0.377 sqrt pi) = 0.22 s.
+TEST(BowSpray, SheetTearsAtTheTaylorCulickSpeed)
+{
+    EXPECT_NEAR(bowSheetRetraction_mps(1e-6f) * std::sqrt((0.072f / 1000.0f) / (0.073f / 1025.0f)), 12.0f, 0.05f);
+    EXPECT_NEAR(bowSheetRetraction_mps(1e-3f), 0.377f, 0.002f);
+    // Every piece whole at its birth, torn more as it flies, torn through
+    // between its thinnest's time and its thickest's.
+    const float spacing_m = float(SWELL_BOW_SPRAY_HOLE_SPACING_M);
+    const float thinnest_s = spacing_m / (bowSheetRetraction_mps(SWELL_BOW_SPRAY_SHEET_MIN_MM * 1e-3f) * std::sqrt(3.14159265f));
+    const float thickest_s = spacing_m / (bowSheetRetraction_mps(SWELL_BOW_SPRAY_SHEET_MAX_MM * 1e-3f) * std::sqrt(3.14159265f));
+    EXPECT_NEAR(thinnest_s, 0.16f, 0.005f);
+    EXPECT_NEAR(thickest_s, 0.32f, 0.005f);
+    for (std::uint32_t key = 1; key < 200; ++key) {
+        const std::uint32_t k = key * 2654435761u;
+        EXPECT_EQ(bowSheetTorn(k, 0.0f), 0.0f);
+        EXPECT_LT(bowSheetTorn(k, 0.1f), bowSheetTorn(k, 0.2f));
+        EXPECT_LT(bowSheetTorn(k, 0.99f * thinnest_s), 1.0f);
+        EXPECT_EQ(bowSheetTorn(k, 1.01f * thickest_s), 1.0f);
+    }
 }
 
 // A box of 4 x 1 x 2 m weighing 2050 kg floats 0.25 m deep: its waterline
@@ -94,6 +144,27 @@ TEST(BowSpray, BoxWaterlineAtItsDraft)
     ASSERT_TRUE(fast);
     EXPECT_NEAR(fast->climb_m, 0.375, 1e-6);
     EXPECT_NEAR(fast->length_m, 4.0, 1e-9);
+    // Wall sided: no flare (a plunging wall throws no Wagner jet); at rest
+    // (no climb) none either.
+    EXPECT_NEAR(slow->flareCot, 0.0, 1e-9);
+    EXPECT_NEAR(fast->flareCot, 0.0, 1e-9);
+    EXPECT_EQ(line->flareCot, 0.0);
+}
+
+// A wedge-sectioned hull flares out at a known angle: a box whose sides
+// lean out 30 degrees from the vertical (cot of the flare to the water:
+// tan 30 = 0.577).
+TEST(BowSpray, FlareOfALeaningSide)
+{
+    // A prism 4 m long whose section is a trapezium: 1 m wide at its keel
+    // (y = -1), 1 + 2 tan 30 wide at its top (y = 1).
+    const double spread = std::tan(0.5235988);
+    swell::BodyShape shape = swell::test::box({4.0, 2.0, 1.0});
+    for (glm::dvec3& p : shape.positions_m)
+        p.z = (p.z > 0.0 ? 1.0 : -1.0) * (0.5 + spread * (p.y + 1.0));
+    const std::optional<BowLine> line = bowLineOf(shape, 2050.0, 1025.0, {1.0, 0.0, 0.0}, 3.0);
+    ASSERT_TRUE(line);
+    EXPECT_NEAR(line->flareCot, spread, 1e-3);
 }
 
 // The built-in boat at its design displacement floats with its origin on
@@ -126,6 +197,11 @@ TEST(BowSpray, BuiltinBoatBowAtItsDesignWaterline)
     EXPECT_NEAR(underWay->length_m, line->length_m, 1e-9);
     for (int k = 1; k < SWELL_BOW_SPRAY_STATIONS; ++k)
         EXPECT_GT(std::abs(underWay->stations[0][k].z), std::abs(line->stations[0][k].z)) << "no flare at " << k;
+    // The boat's bow flares: its sides meet the water at 20 to 70 degrees.
+    EXPECT_GT(underWay->flareCot, 1.0 / std::tan(70.0 * 3.14159265 / 180.0));
+    EXPECT_LT(underWay->flareCot, 1.0 / std::tan(20.0 * 3.14159265 / 180.0));
+    std::printf("built-in boat: flare's cotangent %.3f (%.1f degrees to the water)\n", underWay->flareCot,
+                std::atan(1.0 / underWay->flareCot) * 180.0 / 3.14159265);
     std::printf("built-in boat: waterline %.3f m, %.2f m long, half-breadth %.2f m %.2f m aft of the stem\n",
                 line->waterline_m, line->length_m, std::abs(line->stations[0].back().z),
                 line->stations[0][0].x - line->stations[0].back().x);

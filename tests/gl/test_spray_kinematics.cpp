@@ -155,20 +155,22 @@ TEST_F(SprayKinematicsTwin, ShaderAndCppAgreeForEverySeed)
 struct BowSeed {
     glm::vec4 forwardOutward; // x, y: heading; z, w: outward
     glm::vec4 motion;         // x: speed m/s; y: plunge m/s; z: share; w: the history's lag, s
-    glm::uvec4 keyAge;        // x: key; y: the age's bits
+    glm::uvec4 keyAge;        // x: key; y: the age's bits; z: the flare's cotangent's bits
 };
 
 struct BowResult {
     glm::ivec4 sampleLives; // x: sample; y: lives
-    glm::vec4 drops[SWELL_SPRAY_DROPS];
-    glm::vec4 launch[SWELL_SPRAY_DROPS];
+    glm::vec4 sheet;        // x, y, z: the piece of sheet's place; w: its share torn
+    glm::vec4 sheetLaunch;  // x, y, z: its launch; w: its response time
+    glm::vec4 drops[SWELL_BOW_SPRAY_DROPS];
+    glm::vec4 launch[SWELL_BOW_SPRAY_DROPS];
 };
 
 const char* const kBowProbe = R"(
 #include "spray.glsl"
 layout(local_size_x = 1) in;
 struct BowSeed { vec4 forwardOutward; vec4 motion; uvec4 keyAge; };
-struct BowResult { ivec4 sampleLives; vec4 drops[SWELL_SPRAY_DROPS]; vec4 launch[SWELL_SPRAY_DROPS]; };
+struct BowResult { ivec4 sampleLives; vec4 sheet; vec4 sheetLaunch; vec4 drops[SWELL_BOW_SPRAY_DROPS]; vec4 launch[SWELL_BOW_SPRAY_DROPS]; };
 layout(std430, binding = 0) readonly buffer Seeds { BowSeed seeds[]; };
 layout(std430, binding = 1) writeonly buffer Results { BowResult results[]; };
 uniform vec2 windDirection;
@@ -179,9 +181,14 @@ void main()
     uint key = s.keyAge.x;
     float age_s = uintBitsToFloat(s.keyAge.y);
     BowResult r;
+    float flareCot = uintBitsToFloat(s.keyAge.z);
     r.sampleLives = ivec4(bowSpraySample(age_s, s.motion.w), bowSprayLives(key, s.motion.z) ? 1 : 0, 0, 0);
-    for (uint d = 0u; d < uint(SWELL_SPRAY_DROPS); ++d) {
-        vec3 launch = bowSprayLaunch(key, d, s.forwardOutward.xy, s.forwardOutward.zw, s.motion.x, s.motion.y);
+    vec3 sheetLaunch = bowSheetLaunch(key, s.forwardOutward.xy, s.forwardOutward.zw, s.motion.x, s.motion.y, flareCot);
+    vec3 sheetAir = sprayAir(key, uint(SWELL_SPRAY_MIST_DROPS), windDirection, windSpeed_mps);
+    r.sheet = vec4(sprayDropOffset(sheetLaunch, sheetAir, bowSheetTau_s(), age_s), bowSheetTorn(key, age_s));
+    r.sheetLaunch = vec4(sheetLaunch, bowSheetTau_s());
+    for (uint d = 0u; d < uint(SWELL_BOW_SPRAY_DROPS); ++d) {
+        vec3 launch = bowSprayLaunch(key, d, s.forwardOutward.xy, s.forwardOutward.zw, s.motion.x, s.motion.y, flareCot);
         vec3 air = sprayAir(key, d, windDirection, windSpeed_mps);
         float tau_s = bowSprayTau_s(key, d);
         r.drops[d] = vec4(sprayDropOffset(launch, air, tau_s, age_s), tau_s);
@@ -193,12 +200,13 @@ void main()
 
 TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
 {
-    static_assert(sizeof(BowResult) == 16 + 2 * 16 * SWELL_SPRAY_DROPS, "std430 layout");
+    static_assert(sizeof(BowResult) == 48 + 2 * 16 * SWELL_BOW_SPRAY_DROPS, "std430 layout");
     static_assert(sizeof(BowSeed) == 48, "std430 layout");
     std::vector<BowSeed> seeds;
     // Headings all round, either side, speeds from a crawl to 8 m/s,
     // plunges from none to a slam's, shares from none to all, ages over a
-    // life and lags over a sample.
+    // life (the sheet whole, torn and gone), lags over a sample, flares
+    // from wall sided past the jet's limit.
     for (int n = 0; n < 240; ++n) {
         const float heading = 0.37f * float(n);
         const glm::vec2 forward(std::cos(heading), std::sin(heading));
@@ -208,7 +216,8 @@ TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
         seeds.push_back({glm::vec4(forward, outward),
                          glm::vec4(0.5f + 0.03f * float(n), 0.02f * float(n % 90), float(n % 11) / 10.0f,
                                    float(n % 7) / 7.0f / float(SWELL_BOW_SPRAY_SAMPLES_PER_S)),
-                         glm::uvec4(sprayHash(std::uint32_t(n) * 2654435761u), floatBitsOf(age_s), 0u, 0u)});
+                         glm::uvec4(sprayHash(std::uint32_t(n) * 2654435761u), floatBitsOf(age_s),
+                                    floatBitsOf(0.25f * float(n % 13)), 0u)});
     }
     const swell::gl::Program program = swell::test::buildShaderProbe(kBowProbe);
     swell::gl::Buffer in = swell::gl::Buffer::create(), out = swell::gl::Buffer::create();
@@ -227,7 +236,7 @@ TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
     glUseProgram(0);
-    int living = 0;
+    int living = 0, whole = 0, gone = 0;
     for (std::size_t i = 0; i < seeds.size(); ++i) {
         const BowSeed& s = seeds[i];
         const std::uint32_t key = s.keyAge.x;
@@ -238,8 +247,21 @@ TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
         const bool lives = bowSprayLives(key, s.motion.z);
         living += lives;
         EXPECT_EQ(gpu[i].sampleLives.y != 0, lives) << "seed " << i;
-        for (std::uint32_t d = 0; d < SWELL_SPRAY_DROPS; ++d) {
-            const glm::vec3 launch = bowSprayLaunch(key, d, forward, outward, s.motion.x, s.motion.y);
+        float flareCot;
+        std::memcpy(&flareCot, &s.keyAge.z, sizeof flareCot);
+        const glm::vec3 sheetLaunch = bowSheetLaunch(key, forward, outward, s.motion.x, s.motion.y, flareCot);
+        EXPECT_LT(glm::length(glm::vec3(gpu[i].sheetLaunch) - sheetLaunch), 1e-5f * (1.0f + glm::length(sheetLaunch)))
+            << "seed " << i;
+        EXPECT_NEAR(gpu[i].sheetLaunch.w, bowSheetTau_s(), 1e-6f * bowSheetTau_s());
+        const glm::vec3 sheet = sprayDropOffset(
+            sheetLaunch, sprayAir(key, SWELL_SPRAY_MIST_DROPS, kWindDirection, kWind_mps), bowSheetTau_s(), age_s);
+        EXPECT_LT(glm::length(glm::vec3(gpu[i].sheet) - sheet), 1e-3f) << "seed " << i;
+        const float torn = bowSheetTorn(key, age_s);
+        EXPECT_NEAR(gpu[i].sheet.w, torn, 1e-5f) << "seed " << i;
+        whole += torn < 0.5f;
+        gone += torn >= 1.0f;
+        for (std::uint32_t d = 0; d < SWELL_BOW_SPRAY_DROPS; ++d) {
+            const glm::vec3 launch = bowSprayLaunch(key, d, forward, outward, s.motion.x, s.motion.y, flareCot);
             EXPECT_LT(glm::length(glm::vec3(gpu[i].launch[d]) - launch), 1e-5f * (1.0f + glm::length(launch)))
                 << "seed " << i << " drop " << d;
             const float tau_s = bowSprayTau_s(key, d);
@@ -252,6 +274,9 @@ TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
     // Both outcomes of the share met.
     EXPECT_GT(living, 20);
     EXPECT_LT(living, int(seeds.size()) - 20);
+    // Sheets whole and sheets torn through among them.
+    EXPECT_GT(whole, 20);
+    EXPECT_GT(gone, 20);
 }
 
 } // namespace
