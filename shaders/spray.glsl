@@ -105,7 +105,7 @@ float sprayTau_s(uint key, uint drop)
 {
     float u = sprayUnit(key, 10u + drop);
     float d_m = drop < uint(SWELL_SPRAY_MIST_DROPS) ? (40.0 + 80.0 * u) * 1e-6 : (150.0 + 200.0 * u) * 1e-6;
-    return 1025.0 * d_m * d_m / (18.0 * 1.8e-5);
+    return float(SWELL_SEA_WATER_DENSITY_KG_PER_M3) * d_m * d_m / (18.0 * 1.8e-5);
 }
 
 // A drop's place relative to its birth after age_s, m: under Stokes drag it
@@ -167,7 +167,7 @@ float bowSprayTau_s(uint key, uint drop)
 // 20 degrees, where Wagner's flat-plate limit would throw it ever faster.
 float bowSlamJet_mps(float plunge_mps, float flareCot)
 {
-    return 3.14159265 * plunge_mps * clamp(flareCot, 0.0, 2.75);
+    return 3.14159265 * plunge_mps * clamp(flareCot, 0.0, float(SWELL_BOW_SPRAY_MAX_FLARE_COT));
 }
 
 // A piece of the bow's sheet: its launch velocity, m/s, in the earth's
@@ -209,8 +209,12 @@ float bowSheetTau_s() { return bowSprayFallSpeed_mps(1.0e-3) / 9.81; }
 // inertia (Taylor 1959, Proc. R. Soc. A 253, "The dynamics of thin sheets
 // of fluid III. Disintegration of fluid sheets"; Culick 1960, J. Appl.
 // Phys. 31, "Comments on a ruptured soap film"): v = sqrt(2 sigma /
-// (rho h)), sea water's sigma = 0.073 N/m, rho = 1025 kg/m^3.
-float bowSheetRetraction_mps(float thickness_m) { return sqrt(2.0 * 0.073 / (1025.0 * thickness_m)); }
+// (rho h)), sea water's sigma and rho from swell/shader_constants.h.
+float bowSheetRetraction_mps(float thickness_m)
+{
+    return sqrt(2.0 * float(SWELL_SEA_WATER_SURFACE_TENSION_N_PER_M)
+                / (float(SWELL_SEA_WATER_DENSITY_KG_PER_M3) * thickness_m));
+}
 
 // The share of a piece of sheet torn open age_s after it left the bow
 // (0..1): holes SWELL_BOW_SPRAY_HOLE_SPACING_M apart (chosen by eye: a

@@ -389,6 +389,14 @@
 #define SWELL_BOW_SPRAY_SHEET_MAX_MM 2.0
 #define SWELL_BOW_SPRAY_HOLE_SPACING_M 0.15
 #define SWELL_BOW_SPRAY_PIECE_TRAIL_S 0.15
+// Sea water as the sheet tears (Taylor-Culick, bowSheetRetraction_mps) and
+// drops fall (Stokes drag, sprayTau_s): surface tension, N/m, and
+// density, kg/m^3. A slamming bow's flare is taken no flatter than 20
+// degrees (bowSlamJet_mps): its cotangent, where Wagner's jet would grow
+// without bound.
+#define SWELL_SEA_WATER_SURFACE_TENSION_N_PER_M 0.073
+#define SWELL_SEA_WATER_DENSITY_KG_PER_M3 1025.0
+#define SWELL_BOW_SPRAY_MAX_FLARE_COT 2.75
 
 // The temporal resolve (shaders/temporal_resolve.frag, render/temporal_resolve.h,
 // docs/RENDERING.md "Temporal resolve"): the main pass's depth and the

@@ -92,7 +92,7 @@ inline float sprayTau_s(std::uint32_t key, std::uint32_t drop)
     const float u = sprayUnit(key, 10u + drop);
     const float d_m = drop < std::uint32_t(SWELL_SPRAY_MIST_DROPS) ? (40.0f + 80.0f * u) * 1e-6f
                                                                     : (150.0f + 200.0f * u) * 1e-6f;
-    return 1025.0f * d_m * d_m / (18.0f * 1.8e-5f);
+    return float(SWELL_SEA_WATER_DENSITY_KG_PER_M3) * d_m * d_m / (18.0f * 1.8e-5f);
 }
 
 inline glm::vec3 sprayDropOffset(glm::vec3 launch_mps, glm::vec3 air_mps, float tau_s, float age_s)
@@ -121,7 +121,7 @@ inline float bowSprayTau_s(std::uint32_t key, std::uint32_t drop)
 
 inline float bowSlamJet_mps(float plunge_mps, float flareCot)
 {
-    return 3.14159265f * plunge_mps * std::clamp(flareCot, 0.0f, 2.75f);
+    return 3.14159265f * plunge_mps * std::clamp(flareCot, 0.0f, float(SWELL_BOW_SPRAY_MAX_FLARE_COT));
 }
 
 inline glm::vec3 bowSheetLaunch(std::uint32_t key, glm::vec2 forward, glm::vec2 outward, float speed_mps,
@@ -145,7 +145,11 @@ inline glm::vec3 bowSprayLaunch(std::uint32_t key, std::uint32_t drop, glm::vec2
 
 inline float bowSheetTau_s() { return bowSprayFallSpeed_mps(1.0e-3f) / 9.81f; }
 
-inline float bowSheetRetraction_mps(float thickness_m) { return std::sqrt(2.0f * 0.073f / (1025.0f * thickness_m)); }
+inline float bowSheetRetraction_mps(float thickness_m)
+{
+    return std::sqrt(2.0f * float(SWELL_SEA_WATER_SURFACE_TENSION_N_PER_M)
+                     / (float(SWELL_SEA_WATER_DENSITY_KG_PER_M3) * thickness_m));
+}
 
 inline float bowSheetTorn(std::uint32_t key, float age_s)
 {
