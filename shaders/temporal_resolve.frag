@@ -2,18 +2,24 @@
 // drawn at the render scale with its projection jittered by a sub-pixel
 // offset that changes every frame, is blended into the history of the frames
 // before it at the output's full size. Each output pixel:
-//   1. the frame's own estimate there: its 3x3 drawn samples nearest the
-//      pixel, each weighted by its distance to the pixel's centre in output
-//      pixels (a Gaussian fit to Blackman-Harris, exp(-2.29 d^2): Karis 2014,
-//      "High-quality temporal supersampling", SIGGRAPH course);
+//   1. the frame's own estimate there: its drawn samples nearest the pixel,
+//      each weighted by its distance to the pixel's centre in output pixels
+//      (a Gaussian fit to Blackman-Harris, exp(-2.29 d^2): Karis 2014,
+//      "High-quality temporal supersampling", SIGGRAPH course). Drawn at
+//      half the output's size or less (the program built with
+//      SWELL_TEMPORAL_HALF_SIZE_OR_LESS), the 2x2 samples about the pixel:
+//      the next are 2 output pixels away or more along an axis, where the
+//      weight is at most exp(-9.16), 1.05e-4; above that the 3x3 about the
+//      nearest;
 //   2. where the pixel's point was in the last frame: its depth (the drawn
 //      sample nearest the pixel) unprojected, reprojected with the last
 //      frame's view and projection (`reprojection`); the water's own motion
 //      is not followed (see RENDERING.md): the clip below bounds it;
-//   3. the history there (bilinear), clipped towards the frame's 3x3 mean
-//      in YCoCg to a box of SWELL_TEMPORAL_CLIP_SIGMAS standard deviations
-//      (Salvi 2016, variance clipping), so that what the frame no longer
-//      shows (a disocclusion, a moved crest, a camera cut) does not linger;
+//   3. the history there (bilinear), clipped to the box of the nearest
+//      drawn sample's 3x3 neighbourhood in YCoCg
+//      (shaders/temporal_neighbourhood.frag, gathered once per drawn
+//      pixel), so that what the frame no longer shows (a disocclusion, a
+//      moved crest, a camera cut) does not linger;
 //   4. blended by weight: the history carries the weight of the frames in
 //      it (alpha, at most SWELL_TEMPORAL_MAX_WEIGHT; on the water, while the
 //      waves move, SWELL_TEMPORAL_WATER_MAX_WEIGHT), the frame the weight of
@@ -22,10 +28,14 @@
 // Colours are the main pass's display-ready (sRGB-encoded) values, in which
 // the clip's box and the blend are perceptually even.
 #include "swell/shader_constants.h"
+#include "temporal_colour.glsl"
 
 layout(binding = SWELL_UNIT_POST_SOURCE) uniform sampler2D frameColor;
-layout(binding = SWELL_UNIT_TEMPORAL_DEPTH) uniform sampler2D frameDepth;
 layout(binding = SWELL_UNIT_TEMPORAL_HISTORY) uniform sampler2D history;
+// Per drawn pixel (temporal_neighbourhood.frag): the clip box's centre and
+// the pixel's water mark; the box's half extent and the pixel's depth.
+layout(binding = SWELL_UNIT_TEMPORAL_BOX_CENTRE) uniform sampler2D boxCentre;
+layout(binding = SWELL_UNIT_TEMPORAL_BOX_EXTENT) uniform sampler2D boxExtent;
 
 // This frame's clip space (unjittered) to the last frame's (unjittered).
 uniform mat4 reprojection;
@@ -42,16 +52,6 @@ uniform float historyValid;
 uniform float waterMaxWeight;
 
 layout(location = 0) out vec4 resolved;
-
-vec3 toYCoCg(vec3 c)
-{
-    return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
-}
-
-vec3 fromYCoCg(vec3 y)
-{
-    return vec3(y.x + y.y - y.z, y.x + y.z, y.x - y.y - y.z);
-}
 
 // Moves `h` along the line to the box's centre until it lies in the box
 // (clipping rather than clamping each channel keeps the hue).
@@ -75,8 +75,24 @@ void main()
     ivec2 nearest = ivec2(floor(q + 0.5));
     ivec2 last = inSize - 1;
 
-    vec3 sum = vec3(0.0), m1 = vec3(0.0), m2 = vec3(0.0);
+    // Chosen when the program is built, not by a branch here: a software
+    // rasteriser runs both sides of a branch for a block of pixels.
+    vec3 sum = vec3(0.0);
     float weights = 0.0;
+#ifdef SWELL_TEMPORAL_HALF_SIZE_OR_LESS
+    ivec2 first = ivec2(floor(q));
+    vec2 d0 = (vec2(first) - q) / drawnPerOutput; // output pixels
+    vec2 d1 = d0 + 1.0 / drawnPerOutput;
+    vec2 w0 = exp(-2.29 * d0 * d0), w1 = exp(-2.29 * d1 * d1);
+    for (int dy = 0; dy <= 1; ++dy) {
+        for (int dx = 0; dx <= 1; ++dx) {
+            vec3 c = texelFetch(frameColor, clamp(first + ivec2(dx, dy), ivec2(0), last), 0).rgb;
+            float w = (dx == 0 ? w0.x : w1.x) * (dy == 0 ? w0.y : w1.y);
+            sum += c * w;
+            weights += w;
+        }
+    }
+#else
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 at = nearest + ivec2(dx, dy);
@@ -85,16 +101,14 @@ void main()
             float w = exp(-2.29 * dot(d, d));
             sum += c * w;
             weights += w;
-            vec3 y = toYCoCg(c);
-            m1 += y;
-            m2 += y * y;
         }
     }
+#endif
     vec3 current = sum / max(weights, 1.0e-6);
-    vec3 mean = m1 / 9.0;
-    vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
-
-    float depth = texelFetch(frameDepth, clamp(nearest, ivec2(0), last), 0).r;
+    ivec2 drawn = clamp(nearest, ivec2(0), last);
+    vec4 centre = texelFetch(boxCentre, drawn, 0);
+    vec4 extent = texelFetch(boxExtent, drawn, 0);
+    float depth = extent.a;
     vec4 previous = reprojection * vec4(uv * 2.0 - 1.0, depth * depthToNdc.x + depthToNdc.y, 1.0);
     vec2 previousUv = previous.xy / previous.w * 0.5 + 0.5;
     bool onScreen = previous.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0)))
@@ -108,8 +122,8 @@ void main()
         return;
     }
     vec4 h = textureLod(history, previousUv, 0.0); // no derivatives: one level
-    vec3 clipped = fromYCoCg(clipToBox(toYCoCg(h.rgb), mean, SWELL_TEMPORAL_CLIP_SIGMAS * sigma));
-    bool water = texelFetch(frameColor, clamp(nearest, ivec2(0), last), 0).a < 0.5;
+    vec3 clipped = fromYCoCg(clipToBox(toYCoCg(h.rgb), centre.rgb, extent.rgb));
+    bool water = centre.a < 0.5;
     // The history keeps at most the cap less one whole sample's weight: a
     // sample at the pixel's centre then weighs 1/cap, a farther one less,
     // however few the frame's samples near the pixel are.

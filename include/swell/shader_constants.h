@@ -403,6 +403,11 @@
 // accumulated history it reads (the frame's colour: SWELL_UNIT_POST_SOURCE).
 #define SWELL_UNIT_TEMPORAL_DEPTH 18
 #define SWELL_UNIT_TEMPORAL_HISTORY 19
+// The clip box per drawn pixel the resolve reads (its centre and the pixel's
+// water mark; its half extent and the pixel's depth), gathered at the drawn
+// size by shaders/temporal_neighbourhood.frag.
+#define SWELL_UNIT_TEMPORAL_BOX_CENTRE 21
+#define SWELL_UNIT_TEMPORAL_BOX_EXTENT 22
 // The most weight the history holds, in frames of a sample at the pixel's
 // centre: a still view ends up averaging about the last this many frames
 // (each new one weighs 1/this), which is what hides the jitter's steps and

@@ -273,7 +273,10 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
     p.sky = BlockProgram(build(sources, variant, "sky.vert", "sky.frag"));
     p.waterline = BlockProgram(build(sources, variant, "water.vert", "waterline.frag"));
     p.fxaa = BlockProgram(build(sources, variant, "fullscreen.vert", "fxaa.frag"));
-    p.temporal = TemporalPrograms(build(sources, variant, "fullscreen.vert", "temporal_resolve.frag"),
+    p.temporal = TemporalPrograms(build(sources, variant, "fullscreen.vert", "temporal_neighbourhood.frag"),
+                                  build(sources, variant, "fullscreen.vert", "temporal_resolve.frag",
+                                        {"SWELL_TEMPORAL_HALF_SIZE_OR_LESS 1"}),
+                                  build(sources, variant, "fullscreen.vert", "temporal_resolve.frag"),
                                   build(sources, variant, "fullscreen.vert", "temporal_present.frag"));
     p.underwaterHost = BlockProgram(build(sources, variant, "sky.vert", "underwater_host.frag"));
     p.mesh = MeshProgram(sources, variant);

@@ -218,8 +218,9 @@ struct Programs {
     // The spray from the bows of hulls under way (any wave model: it needs
     // the wind alone).
     BowSprayProgram bowSpray;
-    // The temporal resolve (fullscreen.vert + temporal_resolve.frag, then
-    // temporal_present.frag; render/temporal_resolve.h).
+    // The temporal resolve (fullscreen.vert + temporal_neighbourhood.frag,
+    // temporal_resolve.frag, then temporal_present.frag;
+    // render/temporal_resolve.h).
     TemporalPrograms temporal;
 };
 

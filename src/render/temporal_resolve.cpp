@@ -41,11 +41,17 @@ GLint uniform(const gl::Program& program, const char* name)
 
 } // namespace
 
-TemporalPrograms::TemporalPrograms(gl::Program resolve, gl::Program present)
-    : resolve_(std::move(resolve)), present_(std::move(present)),
-      reprojection_(uniform(resolve_, "reprojection")), jitter_(uniform(resolve_, "jitter_px")),
-      depthToNdc_(uniform(resolve_, "depthToNdc")), historyValid_(uniform(resolve_, "historyValid")),
-      waterMaxWeight_(uniform(resolve_, "waterMaxWeight"))
+TemporalResolveProgram::TemporalResolveProgram(gl::Program built)
+    : program(std::move(built)), reprojection(uniform(program, "reprojection")), jitter(uniform(program, "jitter_px")),
+      depthToNdc(uniform(program, "depthToNdc")), historyValid(uniform(program, "historyValid")),
+      waterMaxWeight(uniform(program, "waterMaxWeight"))
+{
+}
+
+TemporalPrograms::TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess,
+                                   gl::Program resolveAboveHalf, gl::Program present)
+    : neighbourhood_(std::move(neighbourhood)), halfOrLess_(std::move(resolveHalfOrLess)),
+      aboveHalf_(std::move(resolveAboveHalf)), present_(std::move(present))
 {
 }
 
@@ -72,25 +78,51 @@ void TemporalResolve::resize(glm::ivec2 size)
     }
 }
 
+void TemporalResolve::resizeBoxes(glm::ivec2 drawnSize)
+{
+    if (drawnSize == drawnSize_)
+        return;
+    drawnSize_ = drawnSize;
+    boxes_.reset();
+    // Full floats: the box and the depth the reprojection unprojects are
+    // read as the resolve computed them before they were gathered here.
+    for (gl::Texture* t : {&boxCentre_, &boxExtent_}) {
+        *t = gl::Texture::create(GLenum(GL_TEXTURE_2D));
+        glTextureStorage2D(t->id(), 1, GL_RGBA32F, drawnSize.x, drawnSize.y);
+        glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    boxes_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(boxes_.id(), GL_COLOR_ATTACHMENT0, boxCentre_.id(), 0);
+    glNamedFramebufferTexture(boxes_.id(), GL_COLOR_ATTACHMENT1, boxExtent_.id(), 0);
+    const GLenum outputs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(boxes_.id(), 2, outputs);
+    if (glCheckNamedFramebufferStatus(boxes_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw Error("the temporal resolve's clip boxes: framebuffer incomplete");
+}
+
 int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
-                             glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
+                             glm::ivec2 drawnSize, glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
                              double time_s)
 {
     resize(outputSize);
+    resizeBoxes(drawnSize);
     const glm::dvec2 jitter = jitterEnabled_ ? jitter_px() : glm::dvec2(0.0);
     // This frame's clip space to the last one's, in double: both matrices
     // carry the eye's absolute position, which single precision would lose.
     const glm::dmat4 reprojection = previous_ ? *previous_ * glm::inverse(viewProj) : glm::dmat4(1.0);
     const Target& read = history_[current_];
     const Target& write = history_[1 - current_];
-    const GLuint resolve = programs.resolve_.id();
+    const TemporalResolveProgram& program =
+        2 * drawnSize.x <= outputSize.x && 2 * drawnSize.y <= outputSize.y ? programs.halfOrLess_ : programs.aboveHalf_;
+    const GLuint resolve = program.program.id();
     const glm::mat4 reprojectionF(reprojection);
-    glProgramUniformMatrix4fv(resolve, programs.reprojection_, 1, GL_FALSE, &reprojectionF[0][0]);
-    glProgramUniform2f(resolve, programs.jitter_, float(jitter.x), float(jitter.y));
-    glProgramUniform2f(resolve, programs.depthToNdc_, float(depthToNdc.x), float(depthToNdc.y));
-    glProgramUniform1f(resolve, programs.historyValid_, previous_ ? 1.0f : 0.0f);
+    glProgramUniformMatrix4fv(resolve, program.reprojection, 1, GL_FALSE, &reprojectionF[0][0]);
+    glProgramUniform2f(resolve, program.jitter, float(jitter.x), float(jitter.y));
+    glProgramUniform2f(resolve, program.depthToNdc, float(depthToNdc.x), float(depthToNdc.y));
+    glProgramUniform1f(resolve, program.historyValid, previous_ ? 1.0f : 0.0f);
     const bool wavesMoved = previous_ && time_s != previousTime_s_;
-    glProgramUniform1f(resolve, programs.waterMaxWeight_,
+    glProgramUniform1f(resolve, program.waterMaxWeight,
                        float(wavesMoved ? SWELL_TEMPORAL_WATER_MAX_WEIGHT : SWELL_TEMPORAL_MAX_WEIGHT));
 
     glDisable(GL_SCISSOR_TEST);
@@ -98,27 +130,37 @@ int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, 
     glDisable(GL_BLEND);
     glDisable(GL_FRAMEBUFFER_SRGB);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glViewport(0, 0, outputSize.x, outputSize.y);
     glBindVertexArray(emptyVao);
+    glBindTextureUnit(SWELL_UNIT_POST_SOURCE, frameColor);
+    // Each drawn pixel's clip box, at the drawn size.
+    glViewport(0, 0, drawnSize.x, drawnSize.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, boxes_.id());
+    glUseProgram(programs.neighbourhood_.id());
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_DEPTH, frameDepth);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_DEPTH, 0);
+    // The history resolved at the output's size.
+    glViewport(0, 0, outputSize.x, outputSize.y);
     glBindFramebuffer(GL_FRAMEBUFFER, write.framebuffer.id());
     glUseProgram(resolve);
-    glBindTextureUnit(SWELL_UNIT_POST_SOURCE, frameColor);
-    glBindTextureUnit(SWELL_UNIT_TEMPORAL_DEPTH, frameDepth);
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_BOX_CENTRE, boxCentre_.id());
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_BOX_EXTENT, boxExtent_.id());
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, read.texture.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_BOX_CENTRE, 0);
+    glBindTextureUnit(SWELL_UNIT_TEMPORAL_BOX_EXTENT, 0);
     // The result into the output, opaque.
     glBindFramebuffer(GL_FRAMEBUFFER, output);
     glUseProgram(programs.present_.id());
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, write.texture.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindTextureUnit(SWELL_UNIT_TEMPORAL_DEPTH, 0);
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, 0);
     glEnable(GL_DEPTH_TEST);
     current_ = 1 - current_;
     previous_ = viewProj;
     previousTime_s_ = time_s;
     ++frame_;
-    return 2;
+    return 3;
 }
 
 } // namespace swell::detail

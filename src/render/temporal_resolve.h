@@ -1,8 +1,10 @@
 // The temporal resolve (swell/renderer.h setTemporalResolve, docs/RENDERING.md
 // "Temporal resolve"): each frame's projection jittered by a sub-pixel
 // offset from a Halton (2, 3) sequence, and the frame, drawn at the render
-// scale, blended into a history kept at the output's size
-// (shaders/temporal_resolve.frag). Library-internal.
+// scale, blended into a history kept at the output's size: the clip box of
+// each drawn pixel's neighbourhood gathered at the drawn size
+// (shaders/temporal_neighbourhood.frag), then the history resolved at the
+// output's (shaders/temporal_resolve.frag). Library-internal.
 #pragma once
 
 #include "swell/gl/handle.h"
@@ -27,17 +29,28 @@ glm::dvec2 temporalJitter_px(std::uint64_t frame);
 // the image moves by that much (clip x, y += offset * w).
 glm::dmat4 jitteredProjection(const glm::dmat4& projection, glm::dvec2 jitter_px, glm::ivec2 size);
 
-// The resolve's program and its uniforms.
+// temporal_resolve.frag built one way and its uniforms.
+struct TemporalResolveProgram {
+    TemporalResolveProgram() = default;
+    explicit TemporalResolveProgram(gl::Program built);
+    gl::Program program;
+    GLint reprojection = -1, jitter = -1, depthToNdc = -1, historyValid = -1, waterMaxWeight = -1;
+};
+
+// The resolve's programs. The resolve comes built twice: for frames drawn
+// at half the output's size or less (2x2 samples a pixel) and above.
 class TemporalPrograms {
 public:
     TemporalPrograms() = default;
-    TemporalPrograms(gl::Program resolve, gl::Program present);
-    explicit operator bool() const { return bool(resolve_); }
+    TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess, gl::Program resolveAboveHalf,
+                     gl::Program present);
+    explicit operator bool() const { return bool(present_); }
 
 private:
     friend class TemporalResolve;
-    gl::Program resolve_, present_;
-    GLint reprojection_ = -1, jitter_ = -1, depthToNdc_ = -1, historyValid_ = -1, waterMaxWeight_ = -1;
+    gl::Program neighbourhood_;
+    TemporalResolveProgram halfOrLess_, aboveHalf_;
+    gl::Program present_;
 };
 
 class TemporalResolve {
@@ -51,16 +64,16 @@ public:
     void setJitterEnabled(bool enabled) { jitterEnabled_ = enabled; }
     bool jitterEnabled() const { return jitterEnabled_; }
 
-    // Resolves the frame just drawn (its colour and depth textures, its
-    // size) into the history and draws the result into `output` (its
-    // framebuffer, `outputSize`). viewProj: the frame's unjittered view and
+    // Resolves the frame just drawn (its colour and depth textures, their
+    // size `drawnSize`) into the history and draws the result into `output`
+    // (its framebuffer, `outputSize`). viewProj: the frame's unjittered view and
     // projection, absolute world to clip (double, so kilometres from the
     // origin keep their precision in the reprojection); depthToNdc: the
     // depth convention's scale and offset; time_s: the simulated time drawn
     // (the water keeps a short history when it changed). Leaves `output`
     // bound with a viewport over it. Returns the draw calls made.
     int resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
-                glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
+                glm::ivec2 drawnSize, glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
                 double time_s);
 
 private:
@@ -69,8 +82,14 @@ private:
         gl::Framebuffer framebuffer;
     };
     void resize(glm::ivec2 size);
+    void resizeBoxes(glm::ivec2 drawnSize);
 
     Target history_[2];
+    // Per drawn pixel: the clip box's centre and half extent
+    // (temporal_neighbourhood.frag's two outputs), one framebuffer.
+    gl::Texture boxCentre_, boxExtent_;
+    gl::Framebuffer boxes_;
+    glm::ivec2 drawnSize_{0};
     int current_ = 0; // the history written last
     glm::ivec2 size_{0};
     std::uint64_t frame_ = 0;

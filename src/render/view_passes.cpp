@@ -465,7 +465,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         notify(true, "temporal resolve");
         glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
         counters.drawCalls += temporal.resolve(programs.temporal, emptyVao.id(), mainTarget.drawnColor(),
-                                               mainTarget.drawnDepth(), outputSize, framebuffer, *temporalViewProj,
+                                               mainTarget.drawnDepth(), size, outputSize, framebuffer, *temporalViewProj,
                                                glm::dvec2(v.depth.ndcScale, v.depth.ndcOffset), simulated->time_s);
         notify(false, "temporal resolve");
         return;
