@@ -52,6 +52,8 @@ uniform float historyValid;
 uniform float waterMaxWeight;
 
 layout(location = 0) out vec4 resolved;
+// The same colour for the output, opaque (8 bits: blitted into the output).
+layout(location = 1) out vec4 display;
 
 // Moves `h` along the line to the box's centre until it lies in the box
 // (clipping rather than clamping each channel keeps the hue).
@@ -119,6 +121,7 @@ void main()
     float frameWeight = min(weights, 1.0);
     if (historyValid < 0.5 || !onScreen) {
         resolved = vec4(current, frameWeight);
+        display = vec4(current, 1.0);
         return;
     }
     vec4 h = textureLod(history, previousUv, 0.0); // no derivatives: one level
@@ -131,4 +134,5 @@ void main()
     float total = kept + frameWeight;
     float share = frameWeight / max(total, 1.0e-6);
     resolved = vec4(mix(clipped, current, share), total);
+    display = vec4(resolved.rgb, 1.0);
 }

@@ -219,8 +219,7 @@ struct Programs {
     // the wind alone).
     BowSprayProgram bowSpray;
     // The temporal resolve (fullscreen.vert + temporal_neighbourhood.frag,
-    // temporal_resolve.frag, then temporal_present.frag;
-    // render/temporal_resolve.h).
+    // then temporal_resolve.frag; render/temporal_resolve.h).
     TemporalPrograms temporal;
 };
 

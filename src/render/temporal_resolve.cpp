@@ -49,9 +49,9 @@ TemporalResolveProgram::TemporalResolveProgram(gl::Program built)
 }
 
 TemporalPrograms::TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess,
-                                   gl::Program resolveAboveHalf, gl::Program present)
+                                   gl::Program resolveAboveHalf)
     : neighbourhood_(std::move(neighbourhood)), halfOrLess_(std::move(resolveHalfOrLess)),
-      aboveHalf_(std::move(resolveAboveHalf)), present_(std::move(present))
+      aboveHalf_(std::move(resolveAboveHalf))
 {
 }
 
@@ -71,8 +71,19 @@ void TemporalResolve::resize(glm::ivec2 size)
         glTextureParameteri(t.texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTextureParameteri(t.texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         glTextureParameteri(t.texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    display_ = gl::Texture::create(GLenum(GL_TEXTURE_2D));
+    glTextureStorage2D(display_.id(), 1, GL_RGBA8, size.x, size.y);
+    displayFramebuffer_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(displayFramebuffer_.id(), GL_COLOR_ATTACHMENT0, display_.id(), 0);
+    if (glCheckNamedFramebufferStatus(displayFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw Error("the temporal resolve's display: framebuffer incomplete");
+    for (Target& t : history_) {
         t.framebuffer = gl::Framebuffer::create();
         glNamedFramebufferTexture(t.framebuffer.id(), GL_COLOR_ATTACHMENT0, t.texture.id(), 0);
+        glNamedFramebufferTexture(t.framebuffer.id(), GL_COLOR_ATTACHMENT1, display_.id(), 0);
+        const GLenum outputs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(t.framebuffer.id(), 2, outputs);
         if (glCheckNamedFramebufferStatus(t.framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw Error("the temporal resolve's history: framebuffer incomplete");
     }
@@ -149,18 +160,20 @@ int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, 
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_BOX_CENTRE, 0);
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_BOX_EXTENT, 0);
-    // The result into the output, opaque.
+    // The result into the output, opaque: a blit of the 8-bit copy the
+    // resolve wrote beside the history. On llvmpipe it costs less than the
+    // full-screen pass that read the half-float history into the output
+    // (docs/PERFORMANCE.md).
+    glBlitNamedFramebuffer(displayFramebuffer_.id(), output, 0, 0, outputSize.x, outputSize.y, 0, 0, outputSize.x,
+                           outputSize.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, output);
-    glUseProgram(programs.present_.id());
-    glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, write.texture.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, 0);
     glEnable(GL_DEPTH_TEST);
     current_ = 1 - current_;
     previous_ = viewProj;
     previousTime_s_ = time_s;
     ++frame_;
-    return 3;
+    return 2;
 }
 
 } // namespace swell::detail

@@ -42,15 +42,13 @@ struct TemporalResolveProgram {
 class TemporalPrograms {
 public:
     TemporalPrograms() = default;
-    TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess, gl::Program resolveAboveHalf,
-                     gl::Program present);
-    explicit operator bool() const { return bool(present_); }
+    TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess, gl::Program resolveAboveHalf);
+    explicit operator bool() const { return bool(neighbourhood_); }
 
 private:
     friend class TemporalResolve;
     gl::Program neighbourhood_;
     TemporalResolveProgram halfOrLess_, aboveHalf_;
-    gl::Program present_;
 };
 
 class TemporalResolve {
@@ -85,6 +83,10 @@ private:
     void resizeBoxes(glm::ivec2 drawnSize);
 
     Target history_[2];
+    // The output's colour, 8 bits, opaque: the resolve's second output,
+    // blitted into the output.
+    gl::Texture display_;
+    gl::Framebuffer displayFramebuffer_;
     // Per drawn pixel: the clip box's centre and half extent
     // (temporal_neighbourhood.frag's two outputs), one framebuffer.
     gl::Texture boxCentre_, boxExtent_;
