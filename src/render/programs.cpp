@@ -276,7 +276,8 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
     p.temporal = TemporalPrograms(build(sources, variant, "fullscreen.vert", "temporal_neighbourhood.frag"),
                                   build(sources, variant, "fullscreen.vert", "temporal_resolve.frag",
                                         {"SWELL_TEMPORAL_HALF_SIZE_OR_LESS 1"}),
-                                  build(sources, variant, "fullscreen.vert", "temporal_resolve.frag"));
+                                  build(sources, variant, "fullscreen.vert", "temporal_resolve.frag"),
+                                  build(sources, variant, "fullscreen.vert", "temporal_present.frag"));
     p.underwaterHost = BlockProgram(build(sources, variant, "sky.vert", "underwater_host.frag"));
     p.mesh = MeshProgram(sources, variant);
     p.waterInAir = BlockProgram(build(sources, variant, "water.vert", "water.frag", kInAir));

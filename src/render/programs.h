@@ -219,7 +219,8 @@ struct Programs {
     // the wind alone).
     BowSprayProgram bowSpray;
     // The temporal resolve (fullscreen.vert + temporal_neighbourhood.frag,
-    // then temporal_resolve.frag; render/temporal_resolve.h).
+    // then temporal_resolve.frag, and temporal_present.frag for an output
+    // a blit does not suit; render/temporal_resolve.h).
     TemporalPrograms temporal;
 };
 

@@ -49,11 +49,42 @@ TemporalResolveProgram::TemporalResolveProgram(gl::Program built)
 }
 
 TemporalPrograms::TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess,
-                                   gl::Program resolveAboveHalf)
+                                   gl::Program resolveAboveHalf, gl::Program present)
     : neighbourhood_(std::move(neighbourhood)), halfOrLess_(std::move(resolveHalfOrLess)),
-      aboveHalf_(std::move(resolveAboveHalf))
+      aboveHalf_(std::move(resolveAboveHalf)), present_(std::move(present))
 {
 }
+
+namespace {
+
+// Whether a blit of the resolve's 8-bit copy fills `output` as the
+// full-screen pass would: one colour buffer, single-sampled (a blit into a
+// multisampled buffer needs the same format on both sides), of 8-bit
+// normalized channels (a float buffer would lose the history's precision).
+// Asked each frame: a host may attach other buffers to the same framebuffer.
+bool outputTakesTheBlit(GLuint output)
+{
+    GLint sampleBuffers = 0;
+    glGetNamedFramebufferParameteriv(output, GL_SAMPLE_BUFFERS, &sampleBuffers);
+    if (sampleBuffers != 0)
+        return false;
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, output);
+    GLint first = GL_NONE, second = GL_NONE;
+    glGetIntegerv(GL_DRAW_BUFFER0, &first);
+    glGetIntegerv(GL_DRAW_BUFFER1, &second);
+    if (first == GL_NONE || second != GL_NONE)
+        return false;
+    // A default framebuffer's buffers are named by their left halves.
+    const GLenum attachment = first == GL_BACK ? GL_BACK_LEFT : first == GL_FRONT ? GL_FRONT_LEFT : GLenum(first);
+    GLint red = 0, green = 0, blue = 0, type = GL_NONE;
+    glGetNamedFramebufferAttachmentParameteriv(output, attachment, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE, &red);
+    glGetNamedFramebufferAttachmentParameteriv(output, attachment, GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE, &green);
+    glGetNamedFramebufferAttachmentParameteriv(output, attachment, GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE, &blue);
+    glGetNamedFramebufferAttachmentParameteriv(output, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+    return red == 8 && green == 8 && blue == 8 && type == GL_UNSIGNED_NORMALIZED;
+}
+
+} // namespace
 
 void TemporalResolve::resize(glm::ivec2 size)
 {
@@ -160,20 +191,29 @@ int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, 
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_BOX_CENTRE, 0);
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_BOX_EXTENT, 0);
-    // The result into the output, opaque: a blit of the 8-bit copy the
-    // resolve wrote beside the history. On llvmpipe it costs less than the
-    // full-screen pass that read the half-float history into the output
-    // (docs/PERFORMANCE.md).
-    glBlitNamedFramebuffer(displayFramebuffer_.id(), output, 0, 0, outputSize.x, outputSize.y, 0, 0, outputSize.x,
-                           outputSize.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, output);
+    // The result into the output, opaque: where it suits, a blit of the
+    // 8-bit copy the resolve wrote beside the history, which on llvmpipe
+    // costs next to nothing where a full-screen pass reading the history
+    // costs one pass over every output pixel (docs/PERFORMANCE.md).
+    int drawCalls = 2;
+    if (outputTakesTheBlit(output)) {
+        glBlitNamedFramebuffer(displayFramebuffer_.id(), output, 0, 0, outputSize.x, outputSize.y, 0, 0,
+                               outputSize.x, outputSize.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, output);
+    } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, output);
+        glUseProgram(programs.present_.id());
+        glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, write.texture.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        ++drawCalls;
+    }
     glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, 0);
     glEnable(GL_DEPTH_TEST);
     current_ = 1 - current_;
     previous_ = viewProj;
     previousTime_s_ = time_s;
     ++frame_;
-    return 2;
+    return drawCalls;
 }
 
 } // namespace swell::detail

@@ -42,13 +42,17 @@ struct TemporalResolveProgram {
 class TemporalPrograms {
 public:
     TemporalPrograms() = default;
-    TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess, gl::Program resolveAboveHalf);
+    TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess, gl::Program resolveAboveHalf,
+                     gl::Program present);
     explicit operator bool() const { return bool(neighbourhood_); }
 
 private:
     friend class TemporalResolve;
     gl::Program neighbourhood_;
     TemporalResolveProgram halfOrLess_, aboveHalf_;
+    // The history into an output the blit does not suit
+    // (temporal_present.frag; outputTakesTheBlit in temporal_resolve.cpp).
+    gl::Program present_;
 };
 
 class TemporalResolve {
@@ -64,7 +68,9 @@ public:
 
     // Resolves the frame just drawn (its colour and depth textures, their
     // size `drawnSize`) into the history and draws the result into `output`
-    // (its framebuffer, `outputSize`). viewProj: the frame's unjittered view and
+    // (its framebuffer, `outputSize`): a blit where the output is one
+    // single-sampled 8-bit colour buffer (a window's, most hosts'), else a
+    // full-screen pass. viewProj: the frame's unjittered view and
     // projection, absolute world to clip (double, so kilometres from the
     // origin keep their precision in the reprojection); depthToNdc: the
     // depth convention's scale and offset; time_s: the simulated time drawn
