@@ -1,0 +1,44 @@
+// One persistent thread that shares a piece of work with the calling
+// thread: run(theirs, mine) hands `theirs` to the worker, runs `mine` on
+// the calling thread, and returns when both are done. The thread is made
+// once and waits between calls (no thread is created per frame). The work
+// is split by the caller, not by the scheduling, so a split whose halves
+// write disjoint data gives the same bits however the two threads run.
+// Library-internal.
+#pragma once
+
+#include <condition_variable>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+
+namespace swell::detail {
+
+class SplitWorker {
+public:
+    SplitWorker();
+    ~SplitWorker();
+    SplitWorker(const SplitWorker&) = delete;
+    SplitWorker& operator=(const SplitWorker&) = delete;
+
+    // Runs `theirs` on the worker and `mine` here, both to their end; an
+    // exception from either is rethrown here (the calling thread's first).
+    void run(const std::function<void()>& theirs, const std::function<void()>& mine);
+
+    // CPU time the worker has spent on tasks, ms (for the frame's counters).
+    double cpu_ms() const;
+
+private:
+    void loop();
+
+    mutable std::mutex mutex_;
+    std::condition_variable changed_;
+    const std::function<void()>* task_ = nullptr; // while busy_
+    bool busy_ = false, quit_ = false;
+    std::exception_ptr error_;
+    double cpu_ms_ = 0.0;
+    std::thread thread_; // last: it starts once the rest is there
+};
+
+} // namespace swell::detail
