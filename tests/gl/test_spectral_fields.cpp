@@ -9,6 +9,7 @@
 // before any lookup, warp or filtering mixes them.
 #include "support/gl_test.h"
 
+#include "ocean/spectral/field_texels.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
 #include "swell/gl/context.h"
@@ -234,11 +235,10 @@ TEST_F(SpectralFields, AnInteractiveViewOnASoftwareRasteriserUploadsThePassesFie
 }
 
 // The interactive view's fields are made on two threads (the cascades
-// shared with a worker) and the slopes' half floats converted there
-// (spectral::halfFloatBits); what it uploads must be, bit for bit, what one
-// thread's twin makes and the upload of floats stored: the fields as
-// floats, and the slopes' copy as the GL's own conversion of the same
-// floats to half floats. Two frames, so the worker
+// shared with a worker) and their texels converted there; what it uploads
+// must be, bit for bit, what one thread's twin makes and the old upload
+// stored: the fields as floats, and the slopes' copy as the GL's own
+// conversion of the same floats to half floats. Two frames, so the worker
 // serves more than its first. Only a software rasteriser's view uploads.
 TEST_F(SpectralFields, AnInteractiveViewUploadsTheOneThreadsTexelsBitForBit)
 {
@@ -263,22 +263,8 @@ TEST_F(SpectralFields, AnInteractiveViewUploadsTheOneThreadsTexelsBitForBit)
                                  derivatives = boundArray(SWELL_UNIT_OCEAN3, layers);
         const std::vector<std::uint16_t> slopes = boundHalves(SWELL_UNIT_OCEAN1, 2 * layers);
 
-        // The column pass's texels from the one thread's fields, in floats.
-        const spectral::CpuSurface::Fields& fields = twin.fieldsAt(time_s);
-        struct {
-            std::vector<float> displacement, derivatives, slopeMoments;
-        } expected;
-        for (int c = 0; c < layers; ++c)
-            for (size_t i = 0; i < size_t(n) * n; ++i) {
-                const auto& v = fields.values[size_t(c)];
-                for (size_t f = 0; f < 4; ++f) {
-                    expected.displacement.push_back(v[f][i]);
-                    expected.derivatives.push_back(v[4 + f][i]);
-                }
-                const float sx = v[4][i], sz = v[5][i];
-                for (float moment : {sx * sx, sz * sz, sx * sz, 0.0f})
-                    expected.slopeMoments.push_back(moment);
-            }
+        spectral::FieldTexels expected;
+        spectral::fieldTexels(twin.fieldsAt(time_s), layers, expected);
         glTextureSubImage3D(reference.id(), 0, 0, 0, 0, n, n, layers, GL_RGBA, GL_FLOAT, expected.derivatives.data());
         glTextureSubImage3D(reference.id(), 0, 0, 0, layers, n, n, layers, GL_RGBA, GL_FLOAT,
                             expected.slopeMoments.data());

@@ -409,16 +409,14 @@ private:
         sizeFieldTexels(cascades, texels_);
         fieldTwin_->fieldsAt(time_s, *fieldWorker_, [&](const CpuSurface::Fields& fields, int c) {
             if (c < cascades)
-                cascadeTexels(fields, c, cascades, texels_);
+                cascadeTexels(fields, c, texels_);
         });
         const GLsizei n = kSize;
         glTextureSubImage3D(displacement_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_FLOAT, texels_.displacement.data());
         glTextureSubImage3D(derivatives_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_FLOAT, texels_.derivatives.data());
-        // The slopes' half floats as the texture stores them: a copy.
-        const size_t layers = size_t(4) * n * n * size_t(cascades);
-        glTextureSubImage3D(slopes_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_HALF_FLOAT, texels_.slopes.data());
-        glTextureSubImage3D(slopes_.id(), 0, 0, 0, kCascades, n, n, cascades, GL_RGBA, GL_HALF_FLOAT,
-                            texels_.slopes.data() + layers);
+        glTextureSubImage3D(slopes_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_FLOAT, texels_.derivatives.data());
+        glTextureSubImage3D(slopes_.id(), 0, 0, 0, kCascades, n, n, cascades, GL_RGBA, GL_FLOAT,
+                            texels_.slopeMoments.data());
         work_.bytesWritten += (2 * texelBytes(kSpectrumFormat) + 2 * texelBytes(kSlopeFormat)) * n * n * cascades;
         ++work_.transforms;
         slopeMipmapsStale_ = slopeMipmapsStale_ || cascades == kCascades;
