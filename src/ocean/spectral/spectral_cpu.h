@@ -69,13 +69,13 @@ public:
         std::array<std::array<std::vector<float>, 8>, kCascades> values;
     };
     const Fields& fieldsAt(double time_s) const;
-    // The same fields, the cascades shared between `worker` (the first
-    // kCascades / 2) and the calling thread (the rest): each cascade is made
-    // on one thread exactly as fieldsAt() makes it, so every float is
-    // fieldsAt()'s, bit for bit, however the two threads run. `made(c)` runs
-    // on the thread that made cascade c as soon as its fields are there (so
-    // what the caller does with a cascade's fields shares the split). Not
-    // thread-safe, as fieldsAt(); what an interactive view uploads on a
+    // The same fields, the cascades shared between `worker` and the calling
+    // thread (each takes the next cascade not yet taken): each cascade is
+    // made on one thread exactly as fieldsAt() makes it, so every float is
+    // fieldsAt()'s, bit for bit, whichever thread made it. `made(fields, c)`
+    // runs on the thread that made cascade c as soon as its fields are there
+    // (so what the caller does with a cascade's fields shares the split).
+    // Not thread-safe, as fieldsAt(); what an interactive view uploads on a
     // software rasteriser (spectral_model.cpp), whose other core is idle
     // while one thread transforms.
     const Fields& fieldsAt(double time_s, detail::SplitWorker& worker,
