@@ -39,16 +39,18 @@ const CpuSurface::Fields& CpuSurface::fieldsAt(double time_s, detail::SplitWorke
     if (!(fields_.time_s == time_s))
         startTime(time_s);
     // Each cascade's state, spectra and fields are its own, and each thread
-    // has its own transform: the two halves share nothing they write but the
-    // atomic count.
-    constexpr int kWorkers = kCascades / 2;
-    auto cascades = [&](int first, int last, void* fft) {
-        for (int c = first; c < last; ++c) {
+    // has its own transform: the two threads share nothing they write but
+    // the atomic counts. Each takes the next cascade not yet taken, so a
+    // worker that wakes late (the cores busy with other work) takes fewer,
+    // and the caller never waits for more than the one in the worker's hands.
+    std::atomic<int> next = 0;
+    auto take = [&](void* fft) {
+        for (int c = next++; c < kCascades; c = next++) {
             makeCascade(c, 4, fft);
             made(fields_, c);
         }
     };
-    worker.run([&] { cascades(0, kWorkers, workerFft_); }, [&] { cascades(kWorkers, kCascades, fft_); });
+    worker.run([&] { take(workerFft_); }, [&] { take(fft_); });
     fields_.hasDerivatives = true;
     return fields_;
 }
