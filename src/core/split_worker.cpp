@@ -1,7 +1,5 @@
 #include "core/split_worker.h"
 
-#include "core/thread_cpu.h"
-
 #include <utility>
 
 namespace swell::detail {
@@ -45,12 +43,6 @@ void SplitWorker::run(const std::function<void()>& theirs, const std::function<v
         std::rethrow_exception(theirError);
 }
 
-double SplitWorker::cpu_ms() const
-{
-    const std::lock_guard lock(mutex_);
-    return cpu_ms_;
-}
-
 void SplitWorker::loop()
 {
     std::unique_lock lock(mutex_);
@@ -60,16 +52,13 @@ void SplitWorker::loop()
             return; // quit_, with nothing in hand
         const std::function<void()>& task = *task_;
         lock.unlock();
-        const double before_ms = threadCpu_ms();
         std::exception_ptr error;
         try {
             task();
         } catch (...) {
             error = std::current_exception();
         }
-        const double spent_ms = threadCpu_ms() - before_ms;
         lock.lock();
-        cpu_ms_ += spent_ms;
         error_ = error;
         task_ = nullptr;
         busy_ = false;

@@ -1,10 +1,11 @@
 // One persistent thread that shares a piece of work with the calling
 // thread: run(theirs, mine) hands `theirs` to the worker, runs `mine` on
 // the calling thread, and returns when both are done. The thread is made
-// once and waits between calls (no thread is created per frame). The work
-// is split by the caller, not by the scheduling, so a split whose halves
-// write disjoint data gives the same bits however the two threads run.
-// Library-internal.
+// once and waits between calls (no thread is created per frame). Which
+// thread does which part may follow the scheduling (the spectral twin's
+// threads each take the next cascade not taken); parts that are each made
+// the same way on either thread, into data of their own, give the same
+// bits however the two threads run. Library-internal.
 #pragma once
 
 #include <condition_variable>
@@ -26,18 +27,14 @@ public:
     // exception from either is rethrown here (the calling thread's first).
     void run(const std::function<void()>& theirs, const std::function<void()>& mine);
 
-    // CPU time the worker has spent on tasks, ms (for the frame's counters).
-    double cpu_ms() const;
-
 private:
     void loop();
 
-    mutable std::mutex mutex_;
+    std::mutex mutex_;
     std::condition_variable changed_;
     const std::function<void()>* task_ = nullptr; // while busy_
     bool busy_ = false, quit_ = false;
     std::exception_ptr error_;
-    double cpu_ms_ = 0.0;
     std::thread thread_; // last: it starts once the rest is there
 };
 
