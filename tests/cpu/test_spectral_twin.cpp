@@ -2,15 +2,23 @@
 // them, and only the columns of texels a query reads: the displacement it
 // gives without them, and the fields it ends up with, are exactly those of a
 // twin that transforms everything at once.
+#include "core/split_worker.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
 #include "swell/spectrum.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
 
 namespace {
 
@@ -93,6 +101,81 @@ TEST(SpectralTwin, AQueryTransformsOnlyTheColumnsItReads)
     const std::int64_t before = first.columnsTransformed();
     first.displacementAt(a, time_s + 1.0, filter);
     EXPECT_EQ(first.columnsTransformed() - before, weighed * 2 * 2);
+}
+
+// An interactive view's twin shares each time's transforms with a worker
+// thread (CpuSurface::fieldsAt with a SplitWorker): whichever thread takes
+// a cascade, every field is the one thread's fieldsAt(), bit for bit, at
+// every time; each cascade is handed over once, complete, on the calling
+// thread or the worker's. The caller waits in its first handover until the
+// worker has handed one over, so that both threads make cascades in every
+// call whatever the scheduling (each takes the next cascade not taken).
+TEST(SpectralTwin, FieldsSplitAcrossTwoThreadsAreTheOneThreadsBitForBit)
+{
+    const auto field = testField();
+    CpuSurface split(field), one(field);
+    swell::detail::SplitWorker worker;
+    const std::thread::id caller = std::this_thread::get_id();
+    for (double time_s : {0.0, 731.5, 731.5 + 1.0 / 60.0, 1.0e6}) {
+        const CpuSurface::Fields& expected = one.fieldsAt(time_s);
+        const std::int64_t before = split.columnsTransformed();
+        std::array<std::atomic<int>, kCascades> handed{};
+        std::array<std::atomic<bool>, kCascades> complete{};
+        std::mutex mutex;
+        std::condition_variable workerHanded;
+        int byCaller = 0, byWorker = 0;
+        const CpuSurface::Fields& fields =
+            split.fieldsAt(time_s, worker, [&](const CpuSurface::Fields& f, int c) {
+                ++handed[size_t(c)];
+                bool same = true;
+                for (int v = 0; v < 8; ++v)
+                    same = same && f.values[size_t(c)][size_t(v)] == expected.values[size_t(c)][size_t(v)];
+                complete[size_t(c)] = same;
+                std::unique_lock lock(mutex);
+                if (std::this_thread::get_id() != caller) {
+                    ++byWorker;
+                    workerHanded.notify_all();
+                } else if (++byCaller == 1) {
+                    EXPECT_TRUE(workerHanded.wait_for(lock, std::chrono::seconds(60), [&] { return byWorker > 0; }))
+                        << "the worker made no cascade";
+                }
+            });
+        EXPECT_EQ(fields.time_s, time_s);
+        EXPECT_TRUE(fields.hasDerivatives);
+        EXPECT_EQ(split.columnsTransformed() - before, kCascades * 4 * kSize);
+        EXPECT_GE(byCaller, 1);
+        EXPECT_GE(byWorker, 1);
+        EXPECT_EQ(byCaller + byWorker, kCascades);
+        for (int c = 0; c < kCascades; ++c) {
+            EXPECT_EQ(handed[size_t(c)], 1) << "cascade " << c;
+            EXPECT_TRUE(complete[size_t(c)]) << "cascade " << c << " at " << time_s << " s, when handed over";
+            for (int v = 0; v < 8; ++v)
+                EXPECT_EQ(fields.values[size_t(c)][size_t(v)], expected.values[size_t(c)][size_t(v)])
+                    << "cascade " << c << ", field " << v << " at " << time_s << " s";
+        }
+    }
+}
+
+// The worker runs its half to the end whatever the calling thread's half
+// does, and an exception from either half reaches the caller; the worker
+// serves the next call after one.
+TEST(SplitWorker, RunsBothHalvesAndRethrowsEithersError)
+{
+    swell::detail::SplitWorker worker;
+    std::atomic<int> theirs = 0;
+    int mine = 0;
+    std::thread::id where;
+    worker.run([&] { ++theirs, where = std::this_thread::get_id(); }, [&] { ++mine; });
+    EXPECT_EQ(theirs, 1);
+    EXPECT_EQ(mine, 1);
+    EXPECT_NE(where, std::this_thread::get_id());
+    EXPECT_THROW(worker.run([] { throw std::runtime_error("theirs"); }, [&] { ++mine; }), std::runtime_error);
+    EXPECT_EQ(mine, 2);
+    EXPECT_THROW(worker.run([&] { ++theirs; }, [] { throw std::logic_error("mine"); }), std::logic_error);
+    EXPECT_EQ(theirs, 2); // it ran although the caller's half threw
+    worker.run([&] { ++theirs; }, [&] { ++mine; });
+    EXPECT_EQ(theirs, 3);
+    EXPECT_EQ(mine, 3);
 }
 
 } // namespace

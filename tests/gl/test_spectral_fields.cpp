@@ -9,9 +9,11 @@
 // before any lookup, warp or filtering mixes them.
 #include "support/gl_test.h"
 
+#include "ocean/spectral/field_texels.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
 #include "swell/gl/context.h"
+#include "swell/gl/handle.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/shader_constants.h"
 #include "swell/spectral_model.h"
@@ -25,9 +27,11 @@
 #include <glm/gtc/packing.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -47,6 +51,21 @@ std::vector<float> boundArray(GLuint unit, int layers)
     EXPECT_NE(name, 0) << "nothing bound to unit " << unit;
     std::vector<float> texels(size_t(SWELL_FFT_SIZE) * SWELL_FFT_SIZE * size_t(layers) * 4);
     glGetTextureImage(GLuint(name), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+    return texels;
+}
+
+// The raw half floats of the array texture bound to a texture unit, level 0,
+// every layer (`layers` of them): what the shading filters, bit for bit.
+std::vector<std::uint16_t> boundHalves(GLuint unit, int layers)
+{
+    GLint name = 0;
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &name);
+    glActiveTexture(GL_TEXTURE0);
+    EXPECT_NE(name, 0) << "nothing bound to unit " << unit;
+    std::vector<std::uint16_t> texels(size_t(SWELL_FFT_SIZE) * SWELL_FFT_SIZE * size_t(layers) * 4);
+    glGetTextureImage(GLuint(name), 0, GL_RGBA, GL_HALF_FLOAT, GLsizei(texels.size() * sizeof(std::uint16_t)),
+                      texels.data());
     return texels;
 }
 
@@ -213,6 +232,67 @@ TEST_F(SpectralFields, AnInteractiveViewOnASoftwareRasteriserUploadsThePassesFie
     expectClose(passes.displacement, uploaded.displacement, SWELL_FFT_CASCADES, false, "displacement");
     expectClose(passes.derivatives, uploaded.derivatives, SWELL_FFT_CASCADES, false, "derivatives");
     expectClose(passes.slopes, uploaded.slopes, 2 * SWELL_FFT_CASCADES, true, "slopes");
+}
+
+// The interactive view's fields are made on two threads (the cascades
+// shared with a worker) and their texels converted there; what it uploads
+// must be, bit for bit, what one thread's twin makes and the old upload
+// stored: the fields as floats, and the slopes' copy as the GL's own
+// conversion of the same floats to half floats. Two frames, so the worker
+// serves more than its first. Only a software rasteriser's view uploads.
+TEST_F(SpectralFields, AnInteractiveViewUploadsTheOneThreadsTexelsBitForBit)
+{
+    if (!gl::isSoftwareRasterizer())
+        GTEST_SKIP() << "a GPU runs the FFT passes in every view";
+    SpectralSettings settings;
+    settings.wind.windSpeed_mps = 20.0;
+    const SpectralModel model(settings);
+    const spectral::CpuSurface twin(std::make_shared<const spectral::SpectralField>(
+        spectral::makeSpectralField(SeaSpectrum(settings.wind), settings.choppiness, settings.seed)));
+    const std::unique_ptr<WaveModelGpu> gpu = model.createGpu(gl::ShaderSources::embedded());
+    gpu->setInteractive(true);
+    const int n = SWELL_FFT_SIZE, layers = SWELL_FFT_CASCADES;
+    // The old upload's half floats: the single thread's floats through glTextureSubImage3D.
+    gl::Texture reference = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
+    glTextureStorage3D(reference.id(), 1, GL_RGBA16F, n, n, 2 * layers);
+    for (double time_s : {731.5, 731.5 + 1.0 / 30.0}) {
+        gpu->prepareFrame({12.0, -7.0}, time_s);
+        gpu->bind();
+        glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+        const std::vector<float> displacement = boundArray(SWELL_UNIT_OCEAN0, layers),
+                                 derivatives = boundArray(SWELL_UNIT_OCEAN3, layers);
+        const std::vector<std::uint16_t> slopes = boundHalves(SWELL_UNIT_OCEAN1, 2 * layers);
+
+        spectral::FieldTexels expected;
+        spectral::fieldTexels(twin.fieldsAt(time_s), layers, expected);
+        glTextureSubImage3D(reference.id(), 0, 0, 0, 0, n, n, layers, GL_RGBA, GL_FLOAT, expected.derivatives.data());
+        glTextureSubImage3D(reference.id(), 0, 0, 0, layers, n, n, layers, GL_RGBA, GL_FLOAT,
+                            expected.slopeMoments.data());
+        std::vector<std::uint16_t> expectedSlopes(slopes.size());
+        glGetTextureImage(reference.id(), 0, GL_RGBA, GL_HALF_FLOAT,
+                          GLsizei(expectedSlopes.size() * sizeof(std::uint16_t)), expectedSlopes.data());
+        auto firstDifference = [](const auto& a, const auto& b) {
+            size_t i = 0;
+            while (i < a.size() && i < b.size() && a[i] == b[i])
+                ++i;
+            return i;
+        };
+        const size_t layerValues = size_t(n) * n * 4;
+        // (Compared as whole vectors first: 8 million values; the message names the first that differs.)
+        for (auto [name, got, want] : {std::tuple{"displacement", &displacement, &expected.displacement},
+                                       std::tuple{"derivatives", &derivatives, &expected.derivatives}}) {
+            ASSERT_EQ(got->size(), want->size());
+            const size_t i = firstDifference(*got, *want);
+            EXPECT_EQ(i, got->size()) << name << " at " << time_s << " s differs first in layer " << i / layerValues
+                                      << ", value " << i % layerValues << ": " << (*got)[i] << " against "
+                                      << (*want)[i];
+        }
+        ASSERT_EQ(slopes.size(), expectedSlopes.size());
+        const size_t i = firstDifference(slopes, expectedSlopes);
+        EXPECT_EQ(i, slopes.size()) << "slopes at " << time_s << " s differ first in layer " << i / layerValues
+                                    << ", value " << i % layerValues << ": half 0x" << std::hex << slopes[i]
+                                    << " against 0x" << expectedSlopes[i];
+    }
 }
 
 } // namespace

@@ -23,5 +23,10 @@ struct FieldTexels {
     std::vector<float> displacement, derivatives, slopeMoments;
 };
 void fieldTexels(const CpuSurface::Fields& fields, int cascades, FieldTexels& out);
+// The same in two steps, for a caller that makes the cascades' texels on
+// more than one thread: sizes `out` for `cascades` cascades (first, on one
+// thread), then writes cascade c's texels alone (each cascade on any thread).
+void sizeFieldTexels(int cascades, FieldTexels& out);
+void cascadeTexels(const CpuSurface::Fields& fields, int cascade, FieldTexels& out);
 
 } // namespace swell::spectral

@@ -1,5 +1,6 @@
 #include "ocean/spectral/spectral_cpu.h"
 
+#include "core/split_worker.h"
 #include "swell/waves.h"
 
 #include <kiss_fft.h>
@@ -20,12 +21,39 @@ double cascadeWeight(const Cascade& cascade, double footprint_m)
 CpuSurface::CpuSurface(std::shared_ptr<const SpectralField> field) : field_(std::move(field))
 {
     fft_ = kiss_fft_alloc(kSize, 1, nullptr, nullptr);
+    workerFft_ = kiss_fft_alloc(kSize, 1, nullptr, nullptr);
     fields_.time_s = std::numeric_limits<double>::quiet_NaN();
 }
 
-CpuSurface::~CpuSurface() { kiss_fft_free(fft_); }
+CpuSurface::~CpuSurface()
+{
+    kiss_fft_free(fft_);
+    kiss_fft_free(workerFft_);
+}
 
 const CpuSurface::Fields& CpuSurface::fieldsAt(double time_s) const { return fieldsFor(time_s, true); }
+
+const CpuSurface::Fields& CpuSurface::fieldsAt(double time_s, detail::SplitWorker& worker,
+                                                const std::function<void(const Fields&, int)>& made) const
+{
+    if (!(fields_.time_s == time_s))
+        startTime(time_s);
+    // Each cascade's state, spectra and fields are its own, and each thread
+    // has its own transform: the two threads share nothing they write but
+    // the atomic counts. Each takes the next cascade not yet taken, so a
+    // worker that wakes late (the cores busy with other work) takes fewer,
+    // and the caller never waits for more than the one in the worker's hands.
+    std::atomic<int> next = 0;
+    auto take = [&](void* fft) {
+        for (int c = next++; c < kCascades; c = next++) {
+            makeCascade(c, 4, fft);
+            made(fields_, c);
+        }
+    };
+    worker.run([&] { take(workerFft_); }, [&] { take(fft_); });
+    fields_.hasDerivatives = true;
+    return fields_;
+}
 
 const CpuSurface::Fields& CpuSurface::displacementFieldsAt(double time_s) const { return fieldsFor(time_s, false); }
 
@@ -66,13 +94,20 @@ void CpuSurface::makeAll(int firstPacked, int lastPacked) const
                 makeColumn(c, p, column);
 }
 
-void CpuSurface::makeColumn(int c, int p, int column) const
+void CpuSurface::makeCascade(int c, int lastPacked, void* fft) const
+{
+    for (int p = 0; p < lastPacked; ++p)
+        for (int column = 0; column < kSize; ++column)
+            makeColumn(c, p, column, fft);
+}
+
+void CpuSurface::makeColumn(int c, int p, int column, void* fft) const
 {
     CascadeState& state = cascades_[size_t(c)];
     if (state.columnDone[size_t(p)][size_t(column)])
         return;
     static_assert(sizeof(kiss_fft_cpx) == sizeof(std::complex<float>));
-    const auto cfg = static_cast<kiss_fft_cfg>(fft_);
+    const auto cfg = static_cast<kiss_fft_cfg>(fft);
     if (!state.evolved) {
         evolve(*field_, c, fields_.time_s, state.spectra);
         state.evolved = true;

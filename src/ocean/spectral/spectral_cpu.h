@@ -18,10 +18,16 @@
 #include "ocean/spectral/spectral_field.h"
 #include "swell/wave_model.h"
 
+#include <atomic>
 #include <complex>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
+
+namespace swell::detail {
+class SplitWorker;
+}
 
 namespace swell::spectral {
 
@@ -63,6 +69,17 @@ public:
         std::array<std::array<std::vector<float>, 8>, kCascades> values;
     };
     const Fields& fieldsAt(double time_s) const;
+    // The same fields, the cascades shared between `worker` and the calling
+    // thread (each takes the next cascade not yet taken): each cascade is
+    // made on one thread exactly as fieldsAt() makes it, so every float is
+    // fieldsAt()'s, bit for bit, whichever thread made it. `made(fields, c)`
+    // runs on the thread that made cascade c as soon as its fields are there
+    // (so what the caller does with a cascade's fields shares the split).
+    // Not thread-safe, as fieldsAt(); what an interactive view uploads on a
+    // software rasteriser (spectral_model.cpp), whose other core is idle
+    // while one thread transforms.
+    const Fields& fieldsAt(double time_s, detail::SplitWorker& worker,
+                           const std::function<void(const Fields& fields, int cascade)>& made) const;
     // Only fields 0..3 (Dx, Dy, Dz, dDx/dz) are sure to be there.
     const Fields& displacementFieldsAt(double time_s) const;
 
@@ -88,11 +105,17 @@ private:
         std::array<std::vector<std::uint8_t>, 4> columnDone;
     };
     mutable std::array<CascadeState, kCascades> cascades_;
-    mutable std::int64_t columnsTransformed_ = 0;
+    // Atomic: the split fieldsAt() counts from two threads.
+    mutable std::atomic<std::int64_t> columnsTransformed_ = 0;
     // Starts a new time: nothing of it is made yet (the buffers are kept).
     void startTime(double time_s) const;
-    // Makes packed pair p's texel column `column` of cascade c at fields_.time_s.
-    void makeColumn(int c, int p, int column) const;
+    // Makes packed pair p's texel column `column` of cascade c at
+    // fields_.time_s, with the 1D transform `fft` (kiss_fft_cfg: fft_, or
+    // workerFft_ on the split's worker; both the same inverse of kSize).
+    void makeColumn(int c, int p, int column, void* fft) const;
+    void makeColumn(int c, int p, int column) const { makeColumn(c, p, column, fft_); }
+    // Makes every column of packed pairs [0, lastPacked) of cascade c.
+    void makeCascade(int c, int lastPacked, void* fft) const;
     // Makes every column of packed pairs [firstPacked, lastPacked) of every cascade.
     void makeAll(int firstPacked, int lastPacked) const;
     const Fields& fieldsFor(double time_s, bool derivatives) const;
@@ -106,7 +129,8 @@ private:
     };
     void sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives, Sample& out,
                 int cascadeCount = kCascades) const;
-    void* fft_ = nullptr; // kiss_fft_cfg: 1D inverse, kSize
+    void* fft_ = nullptr;       // kiss_fft_cfg: 1D inverse, kSize
+    void* workerFft_ = nullptr; // the same, the split's worker's own
 };
 
 } // namespace swell::spectral

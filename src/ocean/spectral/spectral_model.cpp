@@ -5,6 +5,7 @@
 // and their second moments in half floats for shading, and mipmap those.
 #include "swell/spectral_model.h"
 
+#include "core/split_worker.h"
 #include "gl/mip_downsample.h"
 #include "ocean/spectral/field_texels.h"
 #include "ocean/spectral/foam_texture.h"
@@ -394,12 +395,22 @@ private:
     // CPU's FFTs (field_texels.h: the column pass's texels, within its float
     // rounding; tests/gl/test_spectral_fields.cpp), at about a third of the
     // passes' CPU there. Stills, videos and the benchmark keep the passes.
+    // The rasteriser's threads are idle meanwhile, so the cascades' FFTs and
+    // texels are shared with one persistent worker (CpuSurface::fieldsAt
+    // with a SplitWorker: the same floats as on one thread, bit for bit);
+    // the uploads stay on this thread, the context's.
     void uploadFields(double time_s, int cascades)
     {
         beginStage("fields on the cpu");
-        if (!fieldTwin_)
+        if (!fieldTwin_) {
             fieldTwin_ = std::make_unique<CpuSurface>(field_);
-        fieldTexels(fieldTwin_->fieldsAt(time_s), cascades, texels_);
+            fieldWorker_ = std::make_unique<detail::SplitWorker>();
+        }
+        sizeFieldTexels(cascades, texels_);
+        fieldTwin_->fieldsAt(time_s, *fieldWorker_, [&](const CpuSurface::Fields& fields, int c) {
+            if (c < cascades)
+                cascadeTexels(fields, c, texels_);
+        });
         const GLsizei n = kSize;
         glTextureSubImage3D(displacement_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_FLOAT, texels_.displacement.data());
         glTextureSubImage3D(derivatives_.id(), 0, 0, 0, 0, n, n, cascades, GL_RGBA, GL_FLOAT, texels_.derivatives.data());
@@ -528,8 +539,10 @@ private:
     // The replay's steps before the last on the CPU: only on a software rasteriser.
     std::unique_ptr<FoamReplay> cpuReplay_;
     // uploadFields()'s own twin (the model's serves the bodies' worker
-    // thread meanwhile) and texels, made when first used.
+    // thread meanwhile), the thread it shares the transforms with, and
+    // texels, made when first used.
     std::unique_ptr<CpuSurface> fieldTwin_;
+    std::unique_ptr<detail::SplitWorker> fieldWorker_;
     FieldTexels texels_;
     gl::Program fftRows_, fftColumns_, foamStep_;
     gl::MipDownsampler downsampler_;
