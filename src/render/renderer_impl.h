@@ -301,6 +301,9 @@ struct Renderer::Impl {
     void drawSpray(const ViewFrame& v, const View& view);
     void drawCrestSpray(const ViewFrame& v, const View& view);
     void drawBowSpray(const ViewFrame& v);
+    // Gives back the spray's buffers a scene that draws no such spray
+    // does not need (the crests' 39 MB of streaks among them).
+    void releaseUnusedSpray();
     void drawSprayClumps(const SprayPasses& passes, SprayBuffers& buffers, long long slots, long long capacity,
                          long long recordBytes, int strips);
 

@@ -58,6 +58,16 @@ void Renderer::Impl::drawSprayClumps(const SprayPasses& passes, SprayBuffers& bu
     counters.viewsGpu.bytesWritten += work.bytesWritten;
 }
 
+void Renderer::Impl::releaseUnusedSpray()
+{
+    const bool sprayOn = scene.water.spray && scene.waves.wind && scene.debugView == DebugView::Shaded &&
+                         scene.waves.wind->windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
+    if (!sprayOn || !programs.spray)
+        crestSprayBuffers = {};
+    if (!sprayOn || scene.objects.empty())
+        bowSprayBuffers = {};
+}
+
 // The spray (shaders/spray_clumps.comp, spray.vert), over the finished
 // frame: blended, depth-tested against the world and the water, writing no
 // depth. None below Beaufort 7. Every particle is a function of the
