@@ -1,4 +1,4 @@
-// The spray's kinematics (spray.vert, spray.geom): which slot of the
+// The spray's kinematics (spray_clumps.comp, spray_streaks.comp): which slot of the
 // lattice lives when, where its clump leaves the crest, how its drops fly.
 // Every value is a function of the slot, the simulated time and the wind
 // alone. The C++ twin is src/render/spray_kinematics.h, line for line;
@@ -118,7 +118,7 @@ vec3 sprayDropOffset(vec3 launch_mps, vec3 air_mps, float tau_s, float age_s)
     return terminal * age_s + (launch_mps - terminal) * tau_s * (1.0 - exp(-age_s / tau_s));
 }
 
-// The bow's spray (spray.vert built with SWELL_BOW_SPRAY): its lives are
+// The bow's spray (the spray's passes built with SWELL_BOW_SPRAY): its lives are
 // the crest spray's (sprayLife, keyed by the body and the slot); what
 // follows is what differs.
 

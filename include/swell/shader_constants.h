@@ -397,6 +397,23 @@
 #define SWELL_SEA_WATER_SURFACE_TENSION_N_PER_M 0.073
 #define SWELL_SEA_WATER_DENSITY_KG_PER_M3 1025.0
 #define SWELL_BOW_SPRAY_MAX_FLARE_COT 2.75
+// The spray's passes (src/render/spray_passes.cpp): spray_clumps.comp
+// evaluates every slot's clump in workgroups of SWELL_SPRAY_GROUP,
+// spray_list.comp lists the living ones in one workgroup of
+// SWELL_SPRAY_LIST_GROUP, spray_streaks.comp evaluates each living clump's
+// streaks (workgroups of SWELL_SPRAY_GROUP, as many as the list says), and
+// spray.vert draws them as triangle strips of SWELL_SPRAY_STRIP_VERTICES
+// vertices (4 point pairs and the first and last again, joining the strips
+// without a gap: one draw of them all). Their shader storage bindings: the
+// clumps, the list, the commands of the streaks' dispatch and draw (which
+// the list writes), and the streaks.
+#define SWELL_SPRAY_GROUP 64
+#define SWELL_SPRAY_LIST_GROUP 256
+#define SWELL_SPRAY_STRIP_VERTICES 10
+#define SWELL_STORAGE_SPRAY_CLUMPS 4
+#define SWELL_STORAGE_SPRAY_LIST 5
+#define SWELL_STORAGE_SPRAY_COMMANDS 6
+#define SWELL_STORAGE_SPRAY_STREAKS 7
 
 // The temporal resolve (shaders/temporal_resolve.frag, render/temporal_resolve.h,
 // docs/RENDERING.md "Temporal resolve"): the main pass's depth and the

@@ -1,6 +1,6 @@
 // Where a hull under way throws spray from its bow, and how much
-// (docs/RENDERING.md "Spray"; drawn by shaders/spray.vert built with
-// SWELL_BOW_SPRAY). The bow's waterline is found once from the closed hull;
+// (docs/RENDERING.md "Spray"; drawn by the spray's passes built with
+// SWELL_BOW_SPRAY: shaders/spray_clumps.comp to spray.vert). The bow's waterline is found once from the closed hull;
 // the hull's share of spray is sampled from its body's steps, so, like the
 // poses, it is a function of the scene and the time alone.
 #pragma once

@@ -47,8 +47,8 @@ private:
 };
 
 // Call right after using a program that has a stage the next program used
-// lacks: after a draw with a geometry stage (the spray's), after compute
-// dispatches followed by a draw (the caustics map's). Mesa (22.3) keeps,
+// lacks: after a draw with a geometry stage, after compute dispatches
+// followed by a draw (the caustics map's, the spray's). Mesa (22.3) keeps,
 // per shader stage, a reference to the program that last changed that
 // stage's code, so the next program used, lacking the stage, would stay
 // referenced by it: deleted by a scene change that rebuilds the programs,

@@ -161,20 +161,38 @@ void SkyBakeProgram::use() const { glUseProgram(program_.id()); }
 
 void SkyBakeProgram::setFace(int face) const { glProgramUniform1i(program_.id(), face_, face); }
 
-SprayProgram::SprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
-    : program_(gl::buildProgram(
-          sources, {{GL_VERTEX_SHADER, "spray.vert"}, {GL_GEOMETRY_SHADER, "spray.geom"}, {GL_FRAGMENT_SHADER, "spray.frag"}},
-          definesOf(variant))),
-      time_(requiredUniform(program_, "sprayTime_s", "spray.vert")),
-      firstCell_(requiredUniform(program_, "sprayFirstCell", "spray.vert")),
-      corner_(requiredUniform(program_, "sprayCorner_m", "spray.vert")),
-      cornerFromGrid_(requiredUniform(program_, "sprayCornerFromGrid_m", "spray.vert")),
-      wind_(requiredUniform(program_, "sprayWindSpeed_mps", "spray.vert")),
-      amount_(requiredUniform(program_, "sprayAmount", "spray.vert"))
+SprayPasses::SprayPasses(const gl::ShaderSources& sources, const std::vector<std::string>& defines)
+    : clumps_(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "spray_clumps.comp"}}, defines)),
+      list_(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "spray_list.comp"}}, defines)),
+      streaks_(gl::buildProgram(sources, {{GL_COMPUTE_SHADER, "spray_streaks.comp"}}, defines)),
+      draw_(gl::buildProgram(sources, {{GL_VERTEX_SHADER, "spray.vert"}, {GL_FRAGMENT_SHADER, "spray.frag"}},
+                             defines)),
+      listSlots_(requiredUniform(list_, "sprayListSlots", "spray_list.comp"))
 {
 }
 
-void SprayProgram::use() const { glUseProgram(program_.id()); }
+void SprayPasses::useClumps() const { glUseProgram(clumps_.id()); }
+
+void SprayPasses::useList(int slots) const
+{
+    glProgramUniform1i(list_.id(), listSlots_, slots);
+    glUseProgram(list_.id());
+}
+
+void SprayPasses::useStreaks() const { glUseProgram(streaks_.id()); }
+
+void SprayPasses::useDraw() const { glUseProgram(draw_.id()); }
+
+SprayProgram::SprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
+    : SprayPasses(sources, definesOf(variant)),
+      time_(requiredUniform(clumps(), "sprayTime_s", "spray_clumps.comp")),
+      firstCell_(requiredUniform(clumps(), "sprayFirstCell", "spray_clumps.comp")),
+      corner_(requiredUniform(clumps(), "sprayCorner_m", "spray_clumps.comp")),
+      cornerFromGrid_(requiredUniform(clumps(), "sprayCornerFromGrid_m", "spray_clumps.comp")),
+      wind_(requiredUniform(clumps(), "sprayWindSpeed_mps", "spray_clumps.comp")),
+      amount_(requiredUniform(clumps(), "sprayAmount", "spray_clumps.comp"))
+{
+}
 
 void SprayProgram::set(double time_s, glm::ivec2 firstCell, glm::vec2 corner_m, glm::vec2 cornerFromGridCentre_m,
                        float windSpeed_mps, float amount) const
@@ -183,40 +201,44 @@ void SprayProgram::set(double time_s, glm::ivec2 firstCell, glm::vec2 corner_m, 
     // a float holds it to the microsecond where the absolute time (hours)
     // would not.
     const glm::vec2 t = sprayPeriodTime(time_s);
-    glProgramUniform2f(program_.id(), time_, t.x, t.y);
-    glProgramUniform2i(program_.id(), firstCell_, firstCell.x, firstCell.y);
-    glProgramUniform2f(program_.id(), corner_, corner_m.x, corner_m.y);
-    glProgramUniform2f(program_.id(), cornerFromGrid_, cornerFromGridCentre_m.x, cornerFromGridCentre_m.y);
-    glProgramUniform1f(program_.id(), wind_, windSpeed_mps);
-    glProgramUniform1f(program_.id(), amount_, amount);
+    const GLuint id = clumps().id();
+    glProgramUniform2f(id, time_, t.x, t.y);
+    glProgramUniform2i(id, firstCell_, firstCell.x, firstCell.y);
+    glProgramUniform2f(id, corner_, corner_m.x, corner_m.y);
+    glProgramUniform2f(id, cornerFromGrid_, cornerFromGridCentre_m.x, cornerFromGridCentre_m.y);
+    glProgramUniform1f(id, wind_, windSpeed_mps);
+    glProgramUniform1f(id, amount_, amount);
 }
+
+namespace {
+
+std::vector<std::string> bowSprayDefines(const ShaderVariant& variant)
+{
+    std::vector<std::string> defines = definesOf(variant);
+    defines.push_back("SWELL_BOW_SPRAY 1");
+    return defines;
+}
+
+} // namespace
 
 BowSprayProgram::BowSprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant)
-    : program_(gl::buildProgram(
-          sources, {{GL_VERTEX_SHADER, "spray.vert"}, {GL_GEOMETRY_SHADER, "spray.geom"}, {GL_FRAGMENT_SHADER, "spray.frag"}},
-          [&] {
-              std::vector<std::string> defines = definesOf(variant);
-              defines.push_back("SWELL_BOW_SPRAY 1");
-              return defines;
-          }())),
-      time_(requiredUniform(program_, "sprayTime_s", "spray.vert")),
-      windDirection_(requiredUniform(program_, "bowWindDirection", "spray.vert")),
-      wind_(requiredUniform(program_, "sprayWindSpeed_mps", "spray.vert")),
-      hulls_(requiredUniform(program_, "bowHulls", "spray.vert")),
-      body_(requiredUniform(program_, "bowBody", "spray.vert")),
-      motion_(requiredUniform(program_, "bowMotion", "spray.vert")),
-      across_(requiredUniform(program_, "bowAcross", "spray.vert")),
-      stations_(requiredUniform(program_, "bowStations", "spray.vert")),
-      history_(requiredUniform(program_, "bowHistory", "spray.vert")),
-      lag_(requiredUniform(program_, "bowHistoryLag_s", "spray.vert"))
+    : SprayPasses(sources, bowSprayDefines(variant)),
+      time_(requiredUniform(clumps(), "sprayTime_s", "spray_clumps.comp")),
+      windDirection_(requiredUniform(clumps(), "bowWindDirection", "spray_clumps.comp")),
+      wind_(requiredUniform(clumps(), "sprayWindSpeed_mps", "spray_clumps.comp")),
+      hulls_(requiredUniform(clumps(), "bowHulls", "spray_clumps.comp")),
+      body_(requiredUniform(clumps(), "bowBody", "spray_clumps.comp")),
+      motion_(requiredUniform(clumps(), "bowMotion", "spray_clumps.comp")),
+      across_(requiredUniform(clumps(), "bowAcross", "spray_clumps.comp")),
+      stations_(requiredUniform(clumps(), "bowStations", "spray_clumps.comp")),
+      history_(requiredUniform(clumps(), "bowHistory", "spray_clumps.comp")),
+      lag_(requiredUniform(clumps(), "bowHistoryLag_s", "spray_clumps.comp"))
 {
 }
-
-void BowSprayProgram::use() const { glUseProgram(program_.id()); }
 
 void BowSprayProgram::set(double time_s, glm::vec2 windDirection, float windSpeed_mps, const BowSprayHulls& h) const
 {
-    const GLuint id = program_.id();
+    const GLuint id = clumps().id();
     const glm::vec2 t = sprayPeriodTime(time_s); // as the crest spray's (SprayProgram::set)
     glProgramUniform2f(id, time_, t.x, t.y);
     glProgramUniform2f(id, windDirection_, windDirection.x, windDirection.y);

@@ -147,14 +147,33 @@ struct CausticsPrograms {
     explicit operator bool() const { return bool(splat); }
 };
 
-// The spray's particles (spray.vert, .geom, .frag): its own uniforms are
-// the simulated time, the wind and the lattice's place.
-class SprayProgram {
+// The spray's passes (render/spray_passes.cpp), for the crests' spray or
+// the bows': every slot's clump (spray_clumps.comp), the list of the
+// living (spray_list.comp), their streaks (spray_streaks.comp) and the
+// draw of them (spray.vert, spray.frag).
+class SprayPasses {
+public:
+    SprayPasses() = default;
+    SprayPasses(const gl::ShaderSources& sources, const std::vector<std::string>& defines);
+    explicit operator bool() const { return bool(clumps_); }
+    const gl::Program& clumps() const { return clumps_; }
+    void useClumps() const;
+    // slots: the records spray_clumps.comp wrote.
+    void useList(int slots) const;
+    void useStreaks() const;
+    void useDraw() const;
+
+private:
+    gl::Program clumps_, list_, streaks_, draw_;
+    GLint listSlots_ = -1;
+};
+
+// The crests' spray: its clumps' own uniforms are the simulated time, the
+// wind and the lattice's place.
+class SprayProgram : public SprayPasses {
 public:
     SprayProgram() = default;
     SprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
-    void use() const;
-    explicit operator bool() const { return bool(program_); }
     // time_s: the simulated time (the particles are a function of it alone);
     // firstCell: the world index of the lattice's first cell, its corner
     // relative to the render origin (m) and to the grid centre (m);
@@ -163,12 +182,11 @@ public:
              float windSpeed_mps, float amount) const;
 
 private:
-    gl::Program program_;
     GLint time_ = -1, firstCell_ = -1, corner_ = -1, cornerFromGrid_ = -1, wind_ = -1, amount_ = -1;
 };
 
 // The bow's spray (the spray's files built with SWELL_BOW_SPRAY): the
-// hulls under way for the frame (objects/bow_spray.h, spray.vert's uniforms).
+// hulls under way for the frame (objects/bow_spray.h, spray_clumps.comp's uniforms).
 struct BowSprayHulls {
     int count = 0;
     std::array<int, SWELL_BOW_SPRAY_HULLS> body{};        // object indices
@@ -179,18 +197,15 @@ struct BowSprayHulls {
     float historyLag_s = 0.0f;
 };
 
-class BowSprayProgram {
+class BowSprayProgram : public SprayPasses {
 public:
     BowSprayProgram() = default;
     BowSprayProgram(const gl::ShaderSources& sources, const ShaderVariant& variant);
-    void use() const;
-    explicit operator bool() const { return bool(program_); }
     // time_s: the simulated time; the wind's direction (x, z, unit) and
     // speed at 10 m (m/s); the hulls.
     void set(double time_s, glm::vec2 windDirection, float windSpeed_mps, const BowSprayHulls& hulls) const;
 
 private:
-    gl::Program program_;
     GLint time_ = -1, windDirection_ = -1, wind_ = -1, hulls_ = -1, body_ = -1, motion_ = -1, across_ = -1,
           stations_ = -1, history_ = -1, lag_ = -1;
 };

@@ -216,6 +216,7 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
     simulated.reset();
     if (first || hasEffect(effects, ParameterEffect::Grid))
         buildGrid();
+    releaseUnusedSpray();
 }
 
 Renderer::Renderer(const Scene& scene, RendererOptions options) : impl_(std::make_unique<Impl>(std::move(options)))

@@ -15,6 +15,7 @@
 #include "render/programs.h"
 #include "render/render_target.h"
 #include "render/scene_world.h"
+#include "render/spray_buffers.h"
 #include "render/sky_cubemap.h"
 #include "render/surface_probe.h"
 #include "render/surface_sources.h"
@@ -156,6 +157,9 @@ struct Renderer::Impl {
     WakeTexture wakeTexture;
     // The sun's light under the water, drawn once per view (caustics_map.h).
     CausticsMap caustics;
+    // The spray's clumps, their list and their draw's command, the crests'
+    // and the bows' (spray_buffers.h).
+    SprayBuffers crestSprayBuffers, bowSprayBuffers;
     SurfaceSourceParametersBuffer sourceParameters;
     SurfaceProbe surfaceProbe;
     HostDepthCopy hostDepth; // draw()'s copy of the host's depth, for its geometry under the water
@@ -290,13 +294,18 @@ struct Renderer::Impl {
     void drawCaustics(const ViewFrame& v, bool ownWorld);
 
     void drawWater(bool inAir);
-    // The spray (shaders/spray.vert): over the finished frame, blended,
+    // The spray (shaders/spray_clumps.comp, spray.vert): over the finished frame, blended,
     // depth-tested against the world and the water, writing no depth; none
     // below Beaufort 7. The crests' (its amount growing with the wind) and
     // the bows' of the bodies under way.
     void drawSpray(const ViewFrame& v, const View& view);
     void drawCrestSpray(const ViewFrame& v, const View& view);
     void drawBowSpray(const ViewFrame& v);
+    // Gives back the spray's buffers a scene that draws no such spray
+    // does not need (the crests' 39 MB of streaks among them).
+    void releaseUnusedSpray();
+    void drawSprayClumps(const SprayPasses& passes, SprayBuffers& buffers, long long slots, long long capacity,
+                         long long recordBytes, int strips);
 
     // The waterline mask for the main pass (render/waterline.h): drawn from
     // the water grid when the near plane can lie on either side of the

@@ -4,6 +4,7 @@
 #include "render/renderer_impl.h"
 
 #include "render/gl_state.h"
+#include "render/spray_buffers.h"
 
 #include "swell/shader_constants.h"
 
@@ -15,10 +16,62 @@
 
 namespace swell {
 
-// The spray (shaders/spray.vert), over the finished frame: blended,
-// depth-tested against the world and the water, writing no depth. None
-// below Beaufort 7. Every particle is a function of the simulated time
-// (and, for the bows' spray, of the bodies' steps up to it).
+namespace {
+
+// The crests' slots: every cell's of the lattice, in whole workgroups.
+constexpr long long kCrestSlots = SWELL_SPRAY_CELLS * SWELL_SPRAY_CELLS * SWELL_SPRAY_SLOTS;
+static_assert(kCrestSlots % SWELL_SPRAY_GROUP == 0 && SWELL_BOW_SPRAY_SLOTS % SWELL_SPRAY_GROUP == 0);
+// The streaks a living clump draws: its drops' (the bow's: its piece of
+// sheet's too; spray_clump.glsl's SPRAY_STRIPS).
+constexpr int kCrestStrips = SWELL_SPRAY_DROPS;
+constexpr int kBowStrips = SWELL_BOW_SPRAY_DROPS + 1;
+
+} // namespace
+
+// A spray pass's steps, its clumps' uniforms set (render/spray_buffers.h):
+// every slot's clump, the list of the living and the commands, the living
+// clumps' streaks, then one draw of their strips. The GPU alone knows how
+// many live; the commands it wrote say.
+void Renderer::Impl::drawSprayClumps(const SprayPasses& passes, SprayBuffers& buffers, long long slots,
+                                     long long capacity, long long recordBytes, int strips)
+{
+    buffers.bind(capacity, recordBytes, strips);
+    passes.useClumps();
+    glDispatchCompute(GLuint(slots / SWELL_SPRAY_GROUP), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    passes.useList(int(slots));
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    passes.useStreaks();
+    glDispatchComputeIndirect(GLintptr(kSprayDispatchOffset));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    releaseProgramStages(); // compute, then a draw (render/gl_state.h)
+    passes.useDraw();
+    glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+    ++counters.drawCalls;
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    releaseProgramStages();
+    const GpuWork work = sprayPassWork(slots, recordBytes);
+    counters.viewsGpu.dispatches += work.dispatches;
+    counters.viewsGpu.barriers += work.barriers;
+    counters.viewsGpu.bytesWritten += work.bytesWritten;
+}
+
+void Renderer::Impl::releaseUnusedSpray()
+{
+    const bool sprayOn = scene.water.spray && scene.waves.wind && scene.debugView == DebugView::Shaded &&
+                         scene.waves.wind->windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
+    if (!sprayOn || !programs.spray)
+        crestSprayBuffers = {};
+    if (!sprayOn || scene.objects.empty())
+        bowSprayBuffers = {};
+}
+
+// The spray (shaders/spray_clumps.comp, spray.vert), over the finished
+// frame: blended, depth-tested against the world and the water, writing no
+// depth. None below Beaufort 7. Every particle is a function of the
+// simulated time (and, for the bows' spray, of the bodies' steps up to it).
 void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
 {
     if (!scene.water.spray || !scene.waves.wind || scene.debugView != DebugView::Shaded ||
@@ -57,11 +110,8 @@ void Renderer::Impl::drawCrestSpray(const ViewFrame& v, const View& view)
     const glm::vec2 corner_m(first * cell_m - eye);
     programs.spray.set(simulated->time_s, glm::ivec2(first), corner_m, corner_m - v.base.gridCenter, float(wind_mps),
                        float(amount));
-    programs.spray.use();
     modelGpu->bind();
-    glDrawArrays(GL_POINTS, 0, SWELL_SPRAY_CELLS * SWELL_SPRAY_CELLS * SWELL_SPRAY_SLOTS);
-    ++counters.drawCalls;
-    releaseProgramStages();
+    drawSprayClumps(programs.spray, crestSprayBuffers, kCrestSlots, kCrestSlots, kSprayClumpBytes, kCrestStrips);
     notify(false, "spray");
 }
 
@@ -112,10 +162,8 @@ void Renderer::Impl::drawBowSpray(const ViewFrame& v)
     const double direction_rad = glm::radians(wind.windDirection_deg);
     programs.bowSpray.set(simulated->time_s, glm::vec2(std::cos(direction_rad), std::sin(direction_rad)),
                           float(wind.windSpeed_mps), hulls);
-    programs.bowSpray.use();
-    glDrawArrays(GL_POINTS, 0, hulls.count * SWELL_BOW_SPRAY_SLOTS);
-    ++counters.drawCalls;
-    releaseProgramStages();
+    drawSprayClumps(programs.bowSpray, bowSprayBuffers, hulls.count * SWELL_BOW_SPRAY_SLOTS,
+                    SWELL_BOW_SPRAY_HULLS * SWELL_BOW_SPRAY_SLOTS, kBowSprayClumpBytes, kBowStrips);
     notify(false, "bow spray");
 }
 

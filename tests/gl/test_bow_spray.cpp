@@ -1,4 +1,4 @@
-// Spray from the bow of a hull under way (issue 25, shaders/spray.vert built
+// Spray from the bow of a hull under way (issue 25, the spray's passes built
 // with SWELL_BOW_SPRAY; objects/bow_spray.h): scenes/gale-under-way.toml's
 // boat at 5 m/s in a gale throws white sheets from its bow, on both sides,
 // carried downwind; none below Beaufort 7, none from the same hull at rest,
@@ -193,7 +193,7 @@ int whiteWaterNear(const Image& off, const Image& on, glm::dvec2 at, double radi
 // At a slam the bow bursts into sheets of white water at once: seen from
 // off its lee bow, the spray lays bright white (at least 60 of 255
 // lighter, to at least 150) over the frame about the stem, from the sheet
-// pieces (spray.geom), not a faint veil of streaks blown aft that shows
+// pieces (spray_streaks.comp), not a faint veil of streaks blown aft that shows
 // only once its drops have flown. Measured at 320 x 180: 676 such pixels
 // in the disc 2 m about the stem; the drops alone (before the sheet
 // pieces, main at 17d8988) 226.

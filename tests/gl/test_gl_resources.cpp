@@ -68,8 +68,8 @@ TEST_F(GlResources, RenderTargetResizeStormLeaksNothing)
     EXPECT_EQ(liveNames(), before);
 }
 
-// A program with a geometry stage (the caustics map's, when it had one; the
-// spray's) may leave the driver keeping a reference for that stage to
+// A program with a geometry stage (the caustics map's and the spray's,
+// when they had one) may leave the driver keeping a reference for that stage to
 // whichever program is used next (Mesa does), so a program used after the
 // caustics and then replaced by a scene change lived on, deleted but not
 // freed, until caustics were drawn again: found by the soak with shafts of
