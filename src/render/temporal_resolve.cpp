@@ -144,8 +144,8 @@ void TemporalResolve::resizeBoxes(glm::ivec2 drawnSize)
 }
 
 int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
-                             glm::ivec2 drawnSize, glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
-                             double time_s)
+                             glm::ivec2 drawnSize, glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj,
+                             glm::dvec2 depthToNdc, double time_s)
 {
     resize(outputSize);
     resizeBoxes(drawnSize);

@@ -77,8 +77,8 @@ public:
     // (the water keeps a short history when it changed). Leaves `output`
     // bound with a viewport over it. Returns the draw calls made.
     int resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
-                glm::ivec2 drawnSize, glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj, glm::dvec2 depthToNdc,
-                double time_s);
+                glm::ivec2 drawnSize, glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj,
+                glm::dvec2 depthToNdc, double time_s);
 
 private:
     struct Target {
