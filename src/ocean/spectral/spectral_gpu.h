@@ -1,0 +1,20 @@
+// The spectral model's GPU half (spectral_gpu_model.cpp), for
+// SpectralModel::createGpu. Library-internal.
+#pragma once
+
+#include "ocean/spectral/spectral_field.h"
+#include "swell/gl/shader_sources.h"
+#include "swell/spectral_model.h"
+#include "swell/wave_model_gpu.h"
+
+#include <memory>
+
+namespace swell::spectral {
+
+// The GPU half of a spectral model: its textures, passes and foam steps for
+// `field`, whitecaps where the fold passes `foldThreshold`.
+std::unique_ptr<WaveModelGpu> makeSpectralGpu(std::shared_ptr<const SpectralField> field,
+                                              const SpectralSettings& settings, float foldThreshold,
+                                              const gl::ShaderSources& shaders);
+
+} // namespace swell::spectral
