@@ -1,5 +1,5 @@
 // The calling thread's CPU time: what the frame's parts (render/cpu_parts.h)
-// and the bodies' worker thread (objects/scene_bodies.h) are measured with.
+// and a worker thread's tasks (core/worker.h) are measured with.
 // Library-internal.
 #pragma once
 

@@ -1,7 +1,7 @@
 // A scene's floating bodies (scene_bodies.h).
 #include "objects/scene_bodies.h"
 
-#include "core/thread_cpu.h"
+#include "core/worker.h"
 #include "swell/wave_model_gpu.h" // the waves' GPU half, handed on
 #include "swell/error.h"
 #include "swell/grid.h"
@@ -15,11 +15,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <exception>
 #include <functional>
-#include <mutex>
-#include <thread>
 #include <utility>
 
 namespace swell::detail {
@@ -93,88 +90,6 @@ private:
 
 } // namespace
 
-// One thread that runs one task at a time, started on the first step ahead.
-class SceneBodies::Ahead {
-public:
-    Ahead() : thread_([this] { run(); }) {}
-    ~Ahead()
-    {
-        {
-            const std::lock_guard lock(mutex_);
-            quit_ = true;
-        }
-        changed_.notify_all();
-        thread_.join(); // after the task in hand, if any
-    }
-    Ahead(const Ahead&) = delete;
-    Ahead& operator=(const Ahead&) = delete;
-
-    void start(std::function<void()> task)
-    {
-        wait();
-        {
-            const std::lock_guard lock(mutex_);
-            task_ = std::move(task);
-            busy_ = true;
-        }
-        changed_.notify_all();
-    }
-    // Until the task in hand is done; its error, if it threw, is kept for rethrow().
-    void wait()
-    {
-        std::unique_lock lock(mutex_);
-        changed_.wait(lock, [&] { return !busy_; });
-    }
-    void rethrow()
-    {
-        wait();
-        if (std::exception_ptr e = std::exchange(error_, nullptr))
-            std::rethrow_exception(e);
-    }
-    double cpu_ms()
-    {
-        wait();
-        return cpu_ms_;
-    }
-
-private:
-    void run()
-    {
-        std::unique_lock lock(mutex_);
-        for (;;) {
-            changed_.wait(lock, [&] { return quit_ || busy_; });
-            if (busy_) {
-                std::function<void()> task = std::move(task_);
-                lock.unlock();
-                const double before_ms = threadCpu_ms();
-                std::exception_ptr error;
-                try {
-                    task();
-                } catch (...) {
-                    error = std::current_exception();
-                }
-                const double spent_ms = threadCpu_ms() - before_ms;
-                lock.lock();
-                cpu_ms_ += spent_ms;
-                if (error)
-                    error_ = error;
-                busy_ = false;
-                changed_.notify_all();
-            } else if (quit_) {
-                return;
-            }
-        }
-    }
-
-    std::mutex mutex_;
-    std::condition_variable changed_;
-    std::function<void()> task_;
-    bool busy_ = false, quit_ = false;
-    std::exception_ptr error_;
-    double cpu_ms_ = 0.0;
-    std::thread thread_; // last: it starts once the rest is there
-};
-
 SceneBodies::AheadHandle::AheadHandle(AheadHandle&& other) noexcept : ahead(std::move(other.ahead))
 {
     if (ahead)
@@ -225,7 +140,7 @@ void SceneBodies::stepAheadTo(double time_s)
     if (!(target_s > lastAsked_s_) || bodies_.empty() || count_ == 0)
         return;
     if (!ahead_.ahead)
-        ahead_.ahead = std::make_unique<Ahead>();
+        ahead_.ahead = std::make_unique<Worker>();
     ahead_.ahead->start([this, target_s] {
         advanceNow(target_s);
         // The frame there too, which the next advanceTo() would otherwise blend on the calling thread.

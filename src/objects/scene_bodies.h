@@ -27,6 +27,8 @@
 
 namespace swell::detail {
 
+class Worker;
+
 // The surface bodies float on: the one the water grid draws next to the
 // camera (the filter of its finest cells at scale 1), without the horizon
 // fade. From the scene's settings alone, so a body's motion does not depend
@@ -137,11 +139,11 @@ public:
     void settle() const;
 
 private:
-    // The worker thread and what it was given; declared first, so that a
-    // move waits for the worker before any other member moves.
-    class Ahead;
+    // The worker thread (core/worker.h), started on the first step ahead;
+    // declared first, so that a move waits for the worker before any other
+    // member moves.
     struct AheadHandle {
-        std::unique_ptr<Ahead> ahead;
+        std::unique_ptr<Worker> ahead;
         AheadHandle();
         AheadHandle(AheadHandle&& other) noexcept;
         AheadHandle& operator=(AheadHandle&& other) noexcept;

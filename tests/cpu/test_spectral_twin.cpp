@@ -2,7 +2,7 @@
 // them, and only the columns of texels a query reads: the displacement it
 // gives without them, and the fields it ends up with, are exactly those of a
 // twin that transforms everything at once.
-#include "core/split_worker.h"
+#include "core/worker.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
 #include "swell/spectrum.h"
@@ -104,7 +104,7 @@ TEST(SpectralTwin, AQueryTransformsOnlyTheColumnsItReads)
 }
 
 // An interactive view's twin shares each time's transforms with a worker
-// thread (CpuSurface::fieldsAt with a SplitWorker): whichever thread takes
+// thread (CpuSurface::fieldsAt with a Worker): whichever thread takes
 // a cascade, every field is the one thread's fieldsAt(), bit for bit, at
 // every time; each cascade is handed over once, complete, on the calling
 // thread or the worker's. The caller waits in its first handover until the
@@ -114,7 +114,7 @@ TEST(SpectralTwin, FieldsSplitAcrossTwoThreadsAreTheOneThreadsBitForBit)
 {
     const auto field = testField();
     CpuSurface split(field), one(field);
-    swell::detail::SplitWorker worker;
+    swell::detail::Worker worker;
     const std::thread::id caller = std::this_thread::get_id();
     for (double time_s : {0.0, 731.5, 731.5 + 1.0 / 60.0, 1.0e6}) {
         const CpuSurface::Fields& expected = one.fieldsAt(time_s);
@@ -159,9 +159,9 @@ TEST(SpectralTwin, FieldsSplitAcrossTwoThreadsAreTheOneThreadsBitForBit)
 // The worker runs its half to the end whatever the calling thread's half
 // does, and an exception from either half reaches the caller; the worker
 // serves the next call after one.
-TEST(SplitWorker, RunsBothHalvesAndRethrowsEithersError)
+TEST(Worker, RunsBothHalvesAndRethrowsEithersError)
 {
-    swell::detail::SplitWorker worker;
+    swell::detail::Worker worker;
     std::atomic<int> theirs = 0;
     int mine = 0;
     std::thread::id where;

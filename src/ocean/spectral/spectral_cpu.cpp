@@ -1,6 +1,6 @@
 #include "ocean/spectral/spectral_cpu.h"
 
-#include "core/split_worker.h"
+#include "core/worker.h"
 #include "swell/waves.h"
 
 #include <kiss_fft.h>
@@ -33,7 +33,7 @@ CpuSurface::~CpuSurface()
 
 const CpuSurface::Fields& CpuSurface::fieldsAt(double time_s) const { return fieldsFor(time_s, true); }
 
-const CpuSurface::Fields& CpuSurface::fieldsAt(double time_s, detail::SplitWorker& worker,
+const CpuSurface::Fields& CpuSurface::fieldsAt(double time_s, detail::Worker& worker,
                                                 const std::function<void(const Fields&, int)>& made) const
 {
     if (!(fields_.time_s == time_s))

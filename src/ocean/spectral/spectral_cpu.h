@@ -26,7 +26,7 @@
 #include <mutex>
 
 namespace swell::detail {
-class SplitWorker;
+class Worker;
 }
 
 namespace swell::spectral {
@@ -78,7 +78,7 @@ public:
     // Not thread-safe, as fieldsAt(); what an interactive view uploads on a
     // software rasteriser (spectral_gpu_model.cpp), whose other core is idle
     // while one thread transforms.
-    const Fields& fieldsAt(double time_s, detail::SplitWorker& worker,
+    const Fields& fieldsAt(double time_s, detail::Worker& worker,
                            const std::function<void(const Fields& fields, int cascade)>& made) const;
     // Only fields 0..3 (Dx, Dy, Dz, dDx/dz) are sure to be there.
     const Fields& displacementFieldsAt(double time_s) const;

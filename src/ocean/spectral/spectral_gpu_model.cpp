@@ -7,7 +7,7 @@
 // Named *_model.cpp so that it builds with the GL half (src/CMakeLists.txt).
 #include "ocean/spectral/spectral_gpu.h"
 
-#include "core/split_worker.h"
+#include "core/worker.h"
 #include "gl/mip_downsample.h"
 #include "ocean/spectral/field_texels.h"
 #include "ocean/spectral/foam_texture.h"
@@ -399,14 +399,14 @@ private:
     // passes' CPU there. Stills, videos and the benchmark keep the passes.
     // The rasteriser's threads are idle meanwhile, so the cascades' FFTs and
     // texels are shared with one persistent worker (CpuSurface::fieldsAt
-    // with a SplitWorker: the same floats as on one thread, bit for bit);
+    // with a Worker: the same floats as on one thread, bit for bit);
     // the uploads stay on this thread, the context's.
     void uploadFields(double time_s, int cascades)
     {
         beginStage("fields on the cpu");
         if (!fieldTwin_) {
             fieldTwin_ = std::make_unique<CpuSurface>(field_);
-            fieldWorker_ = std::make_unique<detail::SplitWorker>();
+            fieldWorker_ = std::make_unique<detail::Worker>();
         }
         sizeFieldTexels(cascades, texels_);
         fieldTwin_->fieldsAt(time_s, *fieldWorker_, [&](const CpuSurface::Fields& fields, int c) {
@@ -544,7 +544,7 @@ private:
     // thread meanwhile), the thread it shares the transforms with, and
     // texels, made when first used.
     std::unique_ptr<CpuSurface> fieldTwin_;
-    std::unique_ptr<detail::SplitWorker> fieldWorker_;
+    std::unique_ptr<detail::Worker> fieldWorker_;
     FieldTexels texels_;
     gl::Program fftRows_, fftColumns_, foamStep_;
     gl::MipDownsampler downsampler_;
