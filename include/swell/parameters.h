@@ -54,6 +54,11 @@ enum class ParameterKind {
 //   Colour, Direction3, Vector3: glm::dvec3; Direction2: glm::dvec2.
 using ParameterValue = std::variant<double, std::int64_t, bool, glm::dvec2, glm::dvec3>;
 
+// The most scene objects a scene may hold (the [[objects]] list, and so the
+// range of camera.mount_object): each object is a draw call per pass, and
+// this many stay interactive.
+inline constexpr std::size_t kMaxSceneObjects = 256;
+
 // Where a parameter lives: a single value in the scene, or one per item of an
 // array of tables (the accessor's `item` argument picks the item).
 enum class ParameterList {

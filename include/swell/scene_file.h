@@ -10,6 +10,7 @@
 
 #include "swell/export.h"
 
+#include "swell/parameters.h"
 #include "swell/scene.h"
 #include "swell/shader_constants.h"
 
@@ -25,9 +26,9 @@ namespace swell {
 inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{4} << 20; // 4 MiB
 
 // Longest arrays a scene file may hold. Waves are capped by the shader's
-// uniform block (SWELL_MAX_WAVES); the others by what stays interactive:
-// each object is a draw call per pass, each camera key a line of the file.
-inline constexpr std::size_t kMaxSceneObjects = 256;
+// uniform block (SWELL_MAX_WAVES), objects by kMaxSceneObjects
+// (swell/parameters.h); camera keys by what stays interactive: each is a
+// line of the file.
 inline constexpr std::size_t kMaxCameraKeys = 10000;
 
 // Structural limits checked before the TOML parser sees the text, because

@@ -3,7 +3,6 @@
 // get/set pair), its unit, range, default and what a change to it costs.
 // The checks and formatting built on it are parameters.cpp.
 #include "swell/parameters.h"
-#include "swell/scene_file.h"
 
 #include "core/parameter_fields.h"
 
