@@ -10,7 +10,7 @@
 #include "swell/error.h"
 #include "swell/export.h"
 
-#include "swell/spectrum.h"
+#include "swell/sea_state.h"
 #include "swell/waves.h"
 
 #include <glm/vec3.hpp>

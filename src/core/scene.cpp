@@ -1,6 +1,7 @@
 // The built-in scene and the step from a scene's wave source to the wave set
 // the renderer sums.
 #include "swell/scene.h"
+#include "swell/spectrum.h"
 
 namespace swell {
 
