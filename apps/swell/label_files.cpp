@@ -177,13 +177,13 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
                            {"box3d_m", box3d}});
     }
     j["objects"] = objects;
-    Json sea = {{"level_m", scene.water.level_m}, {"significant_wave_height_m", significantHeight_m}};
-    if (scene.waves.wind) {
-        sea["wind_speed_mps"] = scene.waves.wind->windSpeed_mps;
-        sea["wind_direction_deg"] = scene.waves.wind->windDirection_deg;
-        sea["fetch_km"] = scene.waves.wind->fetch_km;
+    Json sea = {{"level_m", scene.sea.level_m}, {"significant_wave_height_m", significantHeight_m}};
+    if (scene.sea.wind) {
+        sea["wind_speed_mps"] = scene.sea.wind->windSpeed_mps;
+        sea["wind_direction_deg"] = scene.sea.wind->windDirection_deg;
+        sea["fetch_km"] = scene.sea.wind->fetch_km;
         // The peak period of the wind sea's JONSWAP spectrum (and the swell's).
-        const SeaSpectrum spectrum(*scene.waves.wind);
+        const SeaSpectrum spectrum(*scene.sea.wind);
         const std::span<const SeaComponent> parts = spectrum.components();
         if (!parts.empty())
             sea["peak_period_s"] = 2.0 * 3.14159265358979323846 / parts[0].spectrum.peakFrequency_radps;

@@ -40,7 +40,7 @@ swell::Scene mirrorScene(double level_m)
     swell::Scene scene = swell::defaultScene();
     scene.showTerrain = false;
     scene.objects.clear();
-    scene.water.level_m = level_m;
+    scene.sea.level_m = level_m;
     scene.water.fresnelF0 = 1.0;
     scene.water.specularStrength = 0.0;
     scene.fog.start_m = 90000.0;

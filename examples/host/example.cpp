@@ -34,11 +34,11 @@ swell::Scene harbourScene()
     swellFromAbeam.period_s = 9.0;
     swellFromAbeam.direction_deg = 0.0;
     wind.swell = swellFromAbeam;
-    scene.waves.wind = wind;
+    scene.sea.wind = wind;
     return scene;
 }
 
-Example::Example(const swell::Scene& scene) : scene_(scene), renderer_(scene), harbour_(scene.water.level_m)
+Example::Example(const swell::Scene& scene) : scene_(scene), renderer_(scene), harbour_(scene.sea.level_m)
 {
     // The host lights its boxes with Swell's sun and sky, so the two agree.
     boxes_.light.towardsSun = glm::normalize(glm::vec3(scene.sun.direction));

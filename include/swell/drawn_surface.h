@@ -34,7 +34,7 @@ public:
     // The surface `model` draws on the grid `shape` for a camera at eye_m
     // (relative to the water's mean level, m: the sea's frame) at time_s,
     // plus the heights of `sources` (as this frame draws them). Answers in
-    // the world's frame: with the mean level level_m (Scene::water.level_m)
+    // the world's frame: with the mean level level_m (Scene::sea.level_m)
     // added to every height. Keeps a reference to `model`: it must outlive
     // this object.
     DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,

@@ -63,7 +63,7 @@ inline constexpr std::size_t kMaxSceneObjects = 256;
 // array of tables (the accessor's `item` argument picks the item).
 enum class ParameterList {
     None,       // one value per scene; `item` is ignored
-    Waves,      // [[waves.list]]  -> Scene::waves.listed.waves[item]
+    Waves,      // [[waves.list]]  -> Scene::waves.listed[item]
     Objects,    // [[objects]]     -> Scene::objects[item]
     CameraPath, // [[camera.path]] -> Scene::camera.path[item]
 };

@@ -48,13 +48,35 @@ enum class WaveModelKind {
     Spectral, // the wind's spectrum on FFT cascades (swell/spectral_model.h); needs the wind
 };
 
-// Where the waves come from: listed by hand, or generated from the wind.
+// The sea itself, whatever model draws its waves: where its surface rests,
+// how deep it is and the wind over it. The scene file keeps these keys
+// where the waves and the water are described (water.level_m,
+// waves.depth_m, [waves.wind]; docs/SCENE.md).
+struct SWELL_API SeaSettings {
+    // The water's mean level: the height of the surface at rest, absolute
+    // world y, m (a lake in the hills lies at hundreds of metres). Wave
+    // models and their queries work relative to it; DrawnSurface, the
+    // floating objects and the renderer add it. Key water.level_m.
+    double level_m = 0.0;
+    // The water's depth below level_m, m, > 0; infinity is deep water. The
+    // waves travel in it (listed, generated and spectral alike: the
+    // dispersion relation), and so does the wake. Key waves.depth_m.
+    // (Room for a seabed: once the sea has a floor, the depth at a place is
+    // level_m less the seabed's height there, and this stays the depth
+    // where no seabed is given.)
+    double depth_m = std::numeric_limits<double>::infinity();
+    // The wind, when the waves are generated from it ([waves.wind]); the
+    // spectral model needs it. Unset: the waves are WaveSource::listed.
+    std::optional<WindSettings> wind;
+};
+
+// How the sea's waves are made: which model draws them, and the waves
+// listed by hand when there is no wind (Scene::sea).
 struct SWELL_API WaveSource {
     WaveModelKind model = WaveModelKind::Gerstner;
     double choppiness = 1.0; // spectral model: lambda, 0..2 (SpectralSettings::choppiness)
     double foamLifetime_s = 3.85; // spectral model: whitecap foam's e-folding time, s, 0..60; 0: no foam
-    std::optional<WindSettings> wind; // when set, waves are generated and `listed` is ignored
-    WaveSet listed;                   // hand-listed waves (and the water depth for both)
+    std::vector<Wave> listed;     // hand-listed waves ([[waves.list]]); ignored when the sea has a wind
 };
 
 // How the grid's lines are spaced away from the camera (see shaders/grid.glsl).
@@ -134,11 +156,6 @@ struct SWELL_API WaterSettings {
     double shininess = 400.0;                     // Phong specular exponent, 1..10000
     double specularStrength = 1.0;                // 0..10
     double refractionDistortion = 0.05;           // how much the normal bends the refraction lookup, 0..1
-    // The water's mean level: the height of the surface at rest, absolute
-    // world y, m (a lake in the hills lies at hundreds of metres). Wave
-    // models and their queries work relative to it; DrawnSurface, the
-    // floating objects and the renderer add it.
-    double level_m = 0.0;
     // Caustics: the sun's light focused by the waves on what lies under the
     // water, drawn each frame into a map around the camera (off: the light
     // under a level surface everywhere).
@@ -246,6 +263,7 @@ struct SWELL_API AssetReference {
 };
 
 struct SWELL_API Scene {
+    SeaSettings sea;
     WaveSource waves;
     GridSettings grid;
     SunSettings sun;
@@ -290,9 +308,9 @@ inline double bodiesStart_s(const Scene& scene)
 // The built-in default scene: an open ocean under a trade wind, with an island.
 SWELL_API Scene defaultScene();
 
-// The wave set the scene describes at load time: generateWaves(*source.wind)
-// when the wind is set, else source.listed. Either way the water depth is
-// source.listed.depth_m (the wind's own depth_m is overridden by it).
-SWELL_API WaveSet resolveWaves(const WaveSource& source);
+// The wave set the scene describes at load time: generateWaves(*sea.wind)
+// when the sea has a wind, else waves.listed. Either way the water depth is
+// sea.depth_m (the wind's own depth_m is overridden by it).
+SWELL_API WaveSet resolveWaves(const Scene& scene);
 
 } // namespace swell

@@ -40,7 +40,7 @@ struct SWELL_API WindSettings {
     double minWavelength_m = 0.5;     // shortest wave generated, m, > 0
     std::uint32_t seed = 1;           // random seed
     double steepness = 0.6;           // overall choppiness, 0..1 (scaled to stay fold-free)
-    double depth_m = std::numeric_limits<double>::infinity(); // water depth, m
+    double depth_m = std::numeric_limits<double>::infinity(); // water depth, m (a scene's is Scene::sea.depth_m)
     SpreadingModel spreading = SpreadingModel::Mitsuyasu;
     std::optional<SwellSettings> swell; // a distant swell on top of the wind sea
 };

@@ -238,7 +238,7 @@ public:
         finiteTime(time_s);
         use();
         const WaveModel& model = renderer_->waveModel();
-        const double level_m = renderer_->scene().water.level_m;
+        const double level_m = renderer_->scene().sea.level_m;
         return mapXZ(x_m, z_m, [&](double x, double z) { return level_m + model.heightAt({x, z}, time_s); });
     }
 

@@ -20,20 +20,20 @@ namespace swell::parameter_fields {
 inline const WindSettings& wind(const Scene& s)
 {
     static const WindSettings none;
-    return s.waves.wind ? *s.waves.wind : none;
+    return s.sea.wind ? *s.sea.wind : none;
 }
 inline WindSettings& wind(Scene& s)
 {
-    if (!s.waves.wind)
-        s.waves.wind.emplace();
-    return *s.waves.wind;
+    if (!s.sea.wind)
+        s.sea.wind.emplace();
+    return *s.sea.wind;
 }
 
 // The swell, likewise: setting a swell parameter turns the wind and the swell on.
 inline const SwellSettings& swellOf(const Scene& s)
 {
     static const SwellSettings none;
-    return s.waves.wind && s.waves.wind->swell ? *s.waves.wind->swell : none;
+    return s.sea.wind && s.sea.wind->swell ? *s.sea.wind->swell : none;
 }
 inline SwellSettings& swellOf(Scene& s)
 {
@@ -120,10 +120,10 @@ Parameter placing(Ref, Parameter p)
     return p;
 }
 
-inline bool windIsSet(const Scene& s) { return s.waves.wind.has_value(); }
+inline bool windIsSet(const Scene& s) { return s.sea.wind.has_value(); }
 inline bool sunIsPlaced(const Scene& s) { return s.sun.place.has_value(); }
 inline bool sunIsNotPlaced(const Scene& s) { return !s.sun.place.has_value(); }
 inline bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
-inline bool swellIsSet(const Scene& s) { return s.waves.wind && s.waves.wind->swell; }
+inline bool swellIsSet(const Scene& s) { return s.sea.wind && s.sea.wind->swell; }
 
 } // namespace swell::parameter_fields

@@ -83,7 +83,7 @@ std::vector<Parameter> buildTable()
            {.key = "waves.foam_lifetime_s", .effect = E::Waves, .unit = "s", .min = 0.0, .max = 60.0, .sliderMin = 0.0,
             .sliderMax = 20.0, .description = "spectral model: e-folding time of whitecap foam (salt water: 3.85); 0: no foam",
             .present = isSpectral}),
-        at([](auto& s, std::size_t) -> auto& { return s.waves.listed.depth_m; },
+        at([](auto& s, std::size_t) -> auto& { return s.sea.depth_m; },
            {.key = "waves.depth_m", .effect = E::Waves, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
             .sliderMin = 1.0, .sliderMax = 500.0, .logarithmic = true,
             .description = "water depth for listed and wind waves; inf is deep water"}),
@@ -147,21 +147,21 @@ std::vector<Parameter> buildTable()
             .sliderMin = 1.0, .sliderMax = SWELL_MAX_WAVES - 1.0,
             .description = "how many swell waves, on top of waves.wind.count (together at most 64)", .present = swellIsSet}),
         // [[waves.list]]
-        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].direction; },
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed[i].direction; },
            {.key = "waves.list.direction", .kind = K::Direction2, .list = L::Waves, .effect = E::Waves,
             .min = -kDirectionLimit, .max = kDirectionLimit, .sliderMin = -1.0, .sliderMax = 1.0,
             .description = "direction of travel [x, z]"}),
-        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].wavelength_m; },
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed[i].wavelength_m; },
            {.key = "waves.list.wavelength_m", .list = L::Waves, .effect = E::Waves, .unit = "m", .min = 0.0,
             .max = 10000.0, .minExclusive = true, .sliderMin = 0.1, .sliderMax = 500.0, .logarithmic = true,
             .description = "crest to crest"}),
-        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].amplitude_m; },
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed[i].amplitude_m; },
            {.key = "waves.list.amplitude_m", .list = L::Waves, .effect = E::Waves, .unit = "m", .min = 0.0,
             .max = 100.0, .sliderMin = 0.0, .sliderMax = 5.0, .description = "crest height above rest"}),
-        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].steepness; },
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed[i].steepness; },
            {.key = "waves.list.steepness", .list = L::Waves, .effect = E::Waves, .min = 0.0, .max = 1.0,
             .sliderMin = 0.0, .sliderMax = 1.0, .description = "Gerstner Q: 0 is a sine wave, 1 the sharpest crest"}),
-        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed.waves[i].phase_rad; },
+        at([](auto& s, std::size_t i) -> auto& { return s.waves.listed[i].phase_rad; },
            {.key = "waves.list.phase_rad", .list = L::Waves, .effect = E::Waves, .unit = "rad", .min = -1000.0,
             .max = 1000.0, .sliderMin = -kPi, .sliderMax = kPi, .description = "phase offset"}),
         // [grid]
@@ -294,7 +294,7 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.water.refractionDistortion; },
            {.key = "water.refraction_distortion", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.3,
             .description = "how far the normal bends the refraction lookup"}),
-        at([](auto& s, std::size_t) -> auto& { return s.water.level_m; },
+        at([](auto& s, std::size_t) -> auto& { return s.sea.level_m; },
            {.key = "water.level_m", .unit = "m", .min = -1.0e4, .max = 1.0e4, .sliderMin = -10.0, .sliderMax = 500.0,
             .description = "the water's mean level: the height of the surface at rest (a lake at 300 m)"}),
         at([](auto& s, std::size_t) -> auto& { return s.water.caustics; },
@@ -471,8 +471,8 @@ std::vector<Parameter> buildTable()
     // Defaults come from the member initialisers: a default Scene with one
     // item in every list and the wind switched on.
     Scene prototype;
-    prototype.waves.wind.emplace();
-    prototype.waves.listed.waves.emplace_back();
+    prototype.sea.wind.emplace();
+    prototype.waves.listed.emplace_back();
     prototype.objects.emplace_back();
     prototype.camera.path.emplace_back();
     for (Parameter& p : t)

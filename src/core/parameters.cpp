@@ -136,7 +136,7 @@ std::size_t listSize(const Scene& scene, ParameterList list)
 {
     switch (list) {
     case L::None: return 1;
-    case L::Waves: return scene.waves.listed.waves.size();
+    case L::Waves: return scene.waves.listed.size();
     case L::Objects: return scene.objects.size();
     case L::CameraPath: return scene.camera.path.size();
     }

@@ -24,7 +24,7 @@ Scene defaultScene()
     wind.minWavelength_m = 0.5;
     wind.seed = 1;
     wind.steepness = 0.6;
-    scene.waves.wind = wind;
+    scene.sea.wind = wind;
 
     // A buoy riding the swell in the foreground and a rock further out,
     // both in view of the default camera (6 m up, looking along -z).
@@ -45,13 +45,17 @@ Scene defaultScene()
     return scene;
 }
 
-WaveSet resolveWaves(const WaveSource& source)
+WaveSet resolveWaves(const Scene& scene)
 {
-    if (!source.wind)
-        return source.listed;
-    // The depth is the scene's, whichever way the waves are made.
-    WindSettings wind = *source.wind;
-    wind.depth_m = source.listed.depth_m;
+    if (!scene.sea.wind) {
+        WaveSet listed;
+        listed.waves = scene.waves.listed;
+        listed.depth_m = scene.sea.depth_m;
+        return listed;
+    }
+    // The depth is the sea's, whichever way the waves are made.
+    WindSettings wind = *scene.sea.wind;
+    wind.depth_m = scene.sea.depth_m;
     return generateWaves(wind);
 }
 

@@ -10,8 +10,8 @@ ParameterEffect sceneChanges(const Scene& before, const Scene& after)
 {
     ParameterEffect effects = ParameterEffect::Frame;
     // The shape of the scene, which no parameter holds.
-    if (before.waves.wind.has_value() != after.waves.wind.has_value() ||
-        before.waves.listed.waves.size() != after.waves.listed.waves.size())
+    if (before.sea.wind.has_value() != after.sea.wind.has_value() ||
+        before.waves.listed.size() != after.waves.listed.size())
         effects |= ParameterEffect::Waves;
     const bool sameObjectFiles = std::equal(
         before.objects.begin(), before.objects.end(), after.objects.begin(), after.objects.end(),

@@ -45,8 +45,8 @@ bool sameBodies(const Scene& a, const Scene& b)
              x.dampingRatio != y.dampingRatio))
             return false;
     }
-    return bodiesStart_s(a) == bodiesStart_s(b) && a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m && a.water.level_m == b.water.level_m &&
-           a.waves.listed.depth_m == b.waves.listed.depth_m; // the wake's dispersion
+    return bodiesStart_s(a) == bodiesStart_s(b) && a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m && a.sea.level_m == b.sea.level_m &&
+           a.sea.depth_m == b.sea.depth_m; // the wake's dispersion
 }
 
 namespace {
@@ -184,7 +184,7 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
         }
     }
     if (scene.wake.enabled && underWay)
-        wake_ = std::make_unique<SceneWake>(scene.wake, scene.waves.listed.depth_m, surface);
+        wake_ = std::make_unique<SceneWake>(scene.wake, scene.sea.depth_m, surface);
     const WaveModel& floatsOn = wake_ ? wake_->surface() : surface;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];

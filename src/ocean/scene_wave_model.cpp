@@ -9,19 +9,19 @@ namespace swell {
 std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene)
 {
     if (scene.waves.model == WaveModelKind::Spectral) {
-        if (!scene.waves.wind)
+        if (!scene.sea.wind)
             throw InputError({}, "waves.model = \"spectral\" needs the wind: add a [waves.wind] table");
         SpectralSettings settings;
-        settings.wind = *scene.waves.wind;
+        settings.wind = *scene.sea.wind;
         // The water depth is the scene's, as for generated Gerstner waves.
-        settings.wind.depth_m = scene.waves.listed.depth_m;
+        settings.wind.depth_m = scene.sea.depth_m;
         settings.choppiness = scene.waves.choppiness;
         settings.foamLifetime_s = scene.waves.foamLifetime_s;
         settings.historyStart_s = scene.historyStart_s;
-        settings.seed = scene.waves.wind->seed;
+        settings.seed = scene.sea.wind->seed;
         return std::make_unique<SpectralModel>(settings);
     }
-    WaveSet waves = resolveWaves(scene.waves);
+    WaveSet waves = resolveWaves(scene);
     limitSteepness(waves);
     return std::make_unique<GerstnerModel>(std::move(waves));
 }

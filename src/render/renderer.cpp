@@ -23,12 +23,12 @@ namespace swell {
 namespace {
 
 // The scene with its objects moved into the sea's frame, in which the
-// water's mean level is y = 0 (Scene::water.level_m).
+// water's mean level is y = 0 (Scene::sea.level_m).
 Scene inSeaFrame(const Scene& scene)
 {
     Scene sea = scene;
     for (SceneObject& object : sea.objects)
-        object.position_m.y -= scene.water.level_m;
+        object.position_m.y -= scene.sea.level_m;
     return sea;
 }
 

@@ -175,7 +175,7 @@ struct Renderer::Impl {
     }
 
     const WaveModel& model() const { return overrideModel ? *overrideModel : *sceneModel; }
-    double level() const { return scene.water.level_m; }
+    double level() const { return scene.sea.level_m; }
     glm::dvec3 toSea(glm::dvec3 world_m) const { return world_m - glm::dvec3(0.0, level(), 0.0); }
 
     // How far the simulated surface can move from rest: the model's reach,

@@ -60,8 +60,8 @@ void Renderer::Impl::drawSprayClumps(const SprayPasses& passes, SprayBuffers& bu
 
 void Renderer::Impl::releaseUnusedSpray()
 {
-    const bool sprayOn = scene.water.spray && scene.waves.wind && scene.debugView == DebugView::Shaded &&
-                         scene.waves.wind->windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
+    const bool sprayOn = scene.water.spray && scene.sea.wind && scene.debugView == DebugView::Shaded &&
+                         scene.sea.wind->windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
     if (!sprayOn || !programs.spray)
         crestSprayBuffers = {};
     if (!sprayOn || scene.objects.empty())
@@ -74,8 +74,8 @@ void Renderer::Impl::releaseUnusedSpray()
 // simulated time (and, for the bows' spray, of the bodies' steps up to it).
 void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
 {
-    if (!scene.water.spray || !scene.waves.wind || scene.debugView != DebugView::Shaded ||
-        scene.waves.wind->windSpeed_mps < SWELL_SPRAY_ONSET_WIND_MPS)
+    if (!scene.water.spray || !scene.sea.wind || scene.debugView != DebugView::Shaded ||
+        scene.sea.wind->windSpeed_mps < SWELL_SPRAY_ONSET_WIND_MPS)
         return;
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
@@ -92,7 +92,7 @@ void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
 // from Beaufort 7 to Beaufort 10.
 void Renderer::Impl::drawCrestSpray(const ViewFrame& v, const View& view)
 {
-    const double wind_mps = scene.waves.wind->windSpeed_mps;
+    const double wind_mps = scene.sea.wind->windSpeed_mps;
     const double amount = std::clamp((wind_mps - SWELL_SPRAY_ONSET_WIND_MPS) /
                                          (SWELL_SPRAY_FULL_WIND_MPS - SWELL_SPRAY_ONSET_WIND_MPS), 0.0, 1.0);
     if (!programs.spray || amount <= 0.0)
@@ -158,7 +158,7 @@ void Renderer::Impl::drawBowSpray(const ViewFrame& v)
         return;
     hulls.historyLag_s = float(lag_s);
     notify(true, "bow spray");
-    const WindSettings& wind = *scene.waves.wind;
+    const WindSettings& wind = *scene.sea.wind;
     const double direction_rad = glm::radians(wind.windDirection_deg);
     programs.bowSpray.set(simulated->time_s, glm::vec2(std::cos(direction_rad), std::sin(direction_rad)),
                           float(wind.windSpeed_mps), hulls);

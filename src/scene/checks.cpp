@@ -120,17 +120,17 @@ void checkObjectPath(const fs::path& base, const fs::path& resolved, const std::
 
 void checkWaves(const Scene& scene, const Places& places)
 {
-    if (scene.waves.model == WaveModelKind::Spectral && !scene.waves.wind)
+    if (scene.waves.model == WaveModelKind::Spectral && !scene.sea.wind)
         fail(places.first({"waves.model", "waves"}),
              "waves.model = \"spectral\" samples the wind's spectrum: add a [waves.wind] table");
-    if (scene.waves.listed.waves.size() > SWELL_MAX_WAVES)
+    if (scene.waves.listed.size() > SWELL_MAX_WAVES)
         fail(places.first({"waves.list", "waves"}),
-             fmt::format("waves.list has {} waves; at most {} are allowed", scene.waves.listed.waves.size(), SWELL_MAX_WAVES));
-    SourcePlace place = scene.waves.wind ? places.first({"waves.wind", "waves"}) : places.first({"waves.list", "waves"});
-    const char* source = scene.waves.wind ? "the waves generated from waves.wind" : "waves.list";
+             fmt::format("waves.list has {} waves; at most {} are allowed", scene.waves.listed.size(), SWELL_MAX_WAVES));
+    SourcePlace place = scene.sea.wind ? places.first({"waves.wind", "waves"}) : places.first({"waves.list", "waves"});
+    const char* source = scene.sea.wind ? "the waves generated from waves.wind" : "waves.list";
     WaveSet waves;
     try {
-        waves = resolveWaves(scene.waves);
+        waves = resolveWaves(scene);
     } catch (const InputError& e) {
         fail(place, fmt::format("{}: {}", source, e.message()));
     } catch (const std::invalid_argument& e) {

@@ -102,8 +102,8 @@ public:
         if (places_.has("waves.swell") && !places_.has("waves.wind"))
             fail(places_.at("waves.swell"),
                  "waves.swell adds a swell to the waves generated from waves.wind; add a [waves.wind] table");
-        if (scene_.waves.wind && scene_.waves.wind->swell) {
-            const int total = scene_.waves.wind->waveCount + scene_.waves.wind->swell->waveCount;
+        if (scene_.sea.wind && scene_.sea.wind->swell) {
+            const int total = scene_.sea.wind->waveCount + scene_.sea.wind->swell->waveCount;
             if (total > SWELL_MAX_WAVES)
                 fail(places_.at("waves.swell"),
                      fmt::format("waves.wind.count + waves.swell.count = {}; at most {} waves in all (SWELL_MAX_WAVES)",
@@ -111,8 +111,8 @@ public:
         }
         checkSunPlace();
         // One depth for both wave sources (see WaveSource).
-        if (scene_.waves.wind)
-            scene_.waves.wind->depth_m = scene_.waves.listed.depth_m;
+        if (scene_.sea.wind)
+            scene_.sea.wind->depth_m = scene_.sea.depth_m;
         return std::move(scene_);
     }
 
@@ -185,13 +185,13 @@ private:
                 places_.add(childShown, node->source());
                 // Present, even when empty, means "generate from the wind" (or
                 // "add a swell"); a swell read first has already set the wind up.
-                if (childSchema == "waves.wind" && !scene_.waves.wind)
-                    scene_.waves.wind.emplace();
+                if (childSchema == "waves.wind" && !scene_.sea.wind)
+                    scene_.sea.wind.emplace();
                 if (childSchema == "waves.swell") {
-                    if (!scene_.waves.wind)
-                        scene_.waves.wind.emplace();
-                    if (!scene_.waves.wind->swell)
-                        scene_.waves.wind->swell.emplace();
+                    if (!scene_.sea.wind)
+                        scene_.sea.wind.emplace();
+                    if (!scene_.sea.wind->swell)
+                        scene_.sea.wind->swell.emplace();
                 }
                 readTable(*node->as_table(), childSchema, childShown, list, item);
                 break;
@@ -316,7 +316,7 @@ private:
                 fail(places_.of(element.source()), fmt::format("{} must be a table, not {}", itemShown, typeName(element)));
             places_.add(itemShown, element.source());
             switch (list) {
-            case ParameterList::Waves: scene_.waves.listed.waves.emplace_back(); break;
+            case ParameterList::Waves: scene_.waves.listed.emplace_back(); break;
             case ParameterList::Objects: scene_.objects.emplace_back(); break;
             case ParameterList::CameraPath: scene_.camera.path.emplace_back(); break;
             case ParameterList::None: break;

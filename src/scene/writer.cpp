@@ -74,15 +74,15 @@ std::string saveScene(const Scene& scene)
 
     out += "\n[waves]\n";
     writeParameters(out, scene, "waves", ParameterList::None, 0);
-    if (scene.waves.wind) {
+    if (scene.sea.wind) {
         out += "\n[waves.wind]\n";
         writeParameters(out, scene, "waves.wind", ParameterList::None, 0);
-        if (scene.waves.wind->swell) {
+        if (scene.sea.wind->swell) {
             out += "\n[waves.swell]\n";
             writeParameters(out, scene, "waves.swell", ParameterList::None, 0);
         }
     } else {
-        for (std::size_t i = 0; i < scene.waves.listed.waves.size(); ++i) {
+        for (std::size_t i = 0; i < scene.waves.listed.size(); ++i) {
             out += "\n[[waves.list]]\n";
             writeParameters(out, scene, "waves.list", ParameterList::Waves, i);
         }

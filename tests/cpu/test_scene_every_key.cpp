@@ -257,7 +257,7 @@ TEST(SceneEveryKey, EveryDocumentedKeyLoadsInEachForm)
             EXPECT_EQ(scene.objects[0].hullNode, "Hull");
             EXPECT_EQ(scene.sky.cubemapFaces.size(), 6u);
             ASSERT_EQ(scene.camera.path.size(), 1u);
-            EXPECT_EQ(scene.waves.wind.has_value(), waves == Waves::Wind);
+            EXPECT_EQ(scene.sea.wind.has_value(), waves == Waves::Wind);
             EXPECT_EQ(scene.sun.place.has_value(), waves == Waves::Listed);
             for (const Parameter& p : parameters()) {
                 if (!belongsToOtherSource(p, waves) && isPresent(p, scene)) {

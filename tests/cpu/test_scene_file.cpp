@@ -72,11 +72,11 @@ std::string readFile(const fs::path& path)
 // Every parameter of every item, the lists' lengths and the strings.
 void expectSameScene(const Scene& a, const Scene& b)
 {
-    ASSERT_EQ(a.waves.wind.has_value(), b.waves.wind.has_value());
-    if (a.waves.wind) {
-        EXPECT_EQ(a.waves.wind->depth_m, b.waves.wind->depth_m);
+    ASSERT_EQ(a.sea.wind.has_value(), b.sea.wind.has_value());
+    if (a.sea.wind) {
+        EXPECT_EQ(a.sea.wind->depth_m, b.sea.wind->depth_m);
     }
-    ASSERT_EQ(a.waves.listed.waves.size(), b.waves.listed.waves.size());
+    ASSERT_EQ(a.waves.listed.size(), b.waves.listed.size());
     ASSERT_EQ(a.objects.size(), b.objects.size());
     ASSERT_EQ(a.camera.path.size(), b.camera.path.size());
     EXPECT_EQ(a.sky.cubemapFaces, b.sky.cubemapFaces);
@@ -144,16 +144,16 @@ TEST(Parameters, SetThenGetRoundTrips)
     Scene calm;
     EXPECT_FALSE(isPresent(*speed, calm));
     EXPECT_EQ(std::get<double>(speed->get(calm, 0)), WindSettings{}.windSpeed_mps);
-    EXPECT_FALSE(calm.waves.wind.has_value());
+    EXPECT_FALSE(calm.sea.wind.has_value());
     speed->set(calm, 0, 12.0);
-    ASSERT_TRUE(calm.waves.wind.has_value());
-    EXPECT_EQ(calm.waves.wind->windSpeed_mps, 12.0);
+    ASSERT_TRUE(calm.sea.wind.has_value());
+    EXPECT_EQ(calm.sea.wind->windSpeed_mps, 12.0);
     EXPECT_TRUE(isPresent(*speed, calm));
 
     const Parameter* seed = findParameter("waves.wind.seed");
     ASSERT_NE(seed, nullptr);
     seed->set(calm, 0, std::int64_t{4294967295});
-    EXPECT_EQ(calm.waves.wind->seed, 4294967295u);
+    EXPECT_EQ(calm.sea.wind->seed, 4294967295u);
     EXPECT_THROW(seed->set(calm, 0, 1.0), std::bad_variant_access);
 }
 
@@ -185,8 +185,8 @@ TEST(SceneFile, DefaultsAreValid)
     EXPECT_NO_THROW(validateScene(Scene{}, inlinePath()));
     EXPECT_NO_THROW(validateScene(defaultScene(), inlinePath()));
     Scene scene = defaultScene();
-    ASSERT_TRUE(scene.waves.wind.has_value());
-    EXPECT_NEAR(scene.waves.wind->windSpeed_mps, 8.0, 2.0);
+    ASSERT_TRUE(scene.sea.wind.has_value());
+    EXPECT_NEAR(scene.sea.wind->windSpeed_mps, 8.0, 2.0);
     EXPECT_TRUE(scene.showTerrain);
     EXPECT_GT(scene.camera.position_m.y, 3.0);
     EXPECT_LT(scene.camera.position_m.y, 10.0);
@@ -200,23 +200,23 @@ TEST(SceneFile, EmptyFileIsTheDefaultStruct)
 {
     Scene parsed = parseScene("", inlinePath());
     expectSameScene(parsed, Scene{});
-    EXPECT_FALSE(parsed.waves.wind.has_value());
+    EXPECT_FALSE(parsed.sea.wind.has_value());
     EXPECT_TRUE(parsed.objects.empty());
 }
 
 TEST(SceneFile, ResolveWaves)
 {
     Scene scene = defaultScene();
-    WaveSet generated = resolveWaves(scene.waves);
-    EXPECT_EQ(static_cast<int>(generated.waves.size()), scene.waves.wind->waveCount);
+    WaveSet generated = resolveWaves(scene);
+    EXPECT_EQ(static_cast<int>(generated.waves.size()), scene.sea.wind->waveCount);
     EXPECT_EQ(validate(generated), "");
 
-    scene.waves.listed.depth_m = 20.0;
-    EXPECT_EQ(resolveWaves(scene.waves).depth_m, 20.0); // the scene's depth wins over the wind's own
+    scene.sea.depth_m = 20.0;
+    EXPECT_EQ(resolveWaves(scene).depth_m, 20.0); // the scene's depth wins over the wind's own
 
-    WaveSource listed;
-    listed.listed.waves.push_back(Wave{{1.0, 0.0}, 12.0, 0.2, 0.5, 0.0});
-    listed.listed.depth_m = 30.0;
+    Scene listed;
+    listed.waves.listed.push_back(Wave{{1.0, 0.0}, 12.0, 0.2, 0.5, 0.0});
+    listed.sea.depth_m = 30.0;
     WaveSet resolved = resolveWaves(listed);
     ASSERT_EQ(resolved.waves.size(), 1u);
     EXPECT_EQ(resolved.waves[0].wavelength_m, 12.0);
@@ -236,9 +236,9 @@ TEST(SceneFile, EverythingRoundTrips)
 {
     // Awkward numbers (0.1 + 0.2, tiny, negative zero, large) and every list.
     Scene s;
-    s.waves.listed.depth_m = 17.25;
-    s.waves.listed.waves.push_back(Wave{{0.1 + 0.2, -1.0}, 33.3, 0.123456789012345, 0.7, -3.0});
-    s.waves.listed.waves.push_back(Wave{{-0.0, 1e-7}, 1e-3, 0.0, 0.0, 999.0});
+    s.sea.depth_m = 17.25;
+    s.waves.listed.push_back(Wave{{0.1 + 0.2, -1.0}, 33.3, 0.123456789012345, 0.7, -3.0});
+    s.waves.listed.push_back(Wave{{-0.0, 1e-7}, 1e-3, 0.0, 0.0, 999.0});
     s.grid = {GridLayout::Paper, 512, 3000.5, 1000.0, 2999.0};
     s.sun = {{0.25, 0.5, -1.0}, {1.0, 0.5, 1.0 / 3.0}, 7.5};
     s.sky.cubemapFaces = {"sky/px.png", "sky/nx.png", "sky/py.png", "sky/ny.png", "sky/pz.png", "sky/nz.png"};
@@ -260,11 +260,11 @@ TEST(SceneFile, EverythingRoundTrips)
     EXPECT_EQ(saveScene(back), text);
 
     // And with the wind, which replaces the listed waves.
-    s.waves.wind = WindSettings{};
-    s.waves.wind->windSpeed_mps = 31.5;
-    s.waves.wind->seed = 4294967295u;
-    s.waves.wind->depth_m = s.waves.listed.depth_m;
-    s.waves.listed.waves.clear();
+    s.sea.wind = WindSettings{};
+    s.sea.wind->windSpeed_mps = 31.5;
+    s.sea.wind->seed = 4294967295u;
+    s.sea.wind->depth_m = s.sea.depth_m;
+    s.waves.listed.clear();
     text = saveScene(s);
     back = parseScene(text, inlinePath());
     expectSameScene(back, s);
@@ -294,7 +294,7 @@ TEST(SceneFile, PresetsLoad)
             ADD_FAILURE() << e.what();
             continue;
         }
-        EXPECT_EQ(validate(resolveWaves(scene.waves)), "");
+        EXPECT_EQ(validate(resolveWaves(scene)), "");
         EXPECT_NE(readFile(folder / name).find("# "), std::string::npos) << "presets are commented";
         // Saving and reading back keeps a preset as it was.
         expectSameScene(parseScene(saveScene(scene), folder / name), scene);
@@ -362,14 +362,14 @@ TEST(SceneFile, InlineTablesAndArraysWork)
     Scene s = parseScene("waves = { depth_m = 50.0, list = [ { wavelength_m = 8, direction = [0, 1] } ] }\n"
                          "fog = { start_m = 10, end_m = 20.5 }\n",
                          inlinePath());
-    ASSERT_EQ(s.waves.listed.waves.size(), 1u);
-    EXPECT_EQ(s.waves.listed.waves[0].wavelength_m, 8.0); // integers are accepted for numbers
-    EXPECT_EQ(s.waves.listed.depth_m, 50.0);
+    ASSERT_EQ(s.waves.listed.size(), 1u);
+    EXPECT_EQ(s.waves.listed[0].wavelength_m, 8.0); // integers are accepted for numbers
+    EXPECT_EQ(s.sea.depth_m, 50.0);
     EXPECT_EQ(s.fog.end_m, 20.5);
 
     Scene w = parseScene("[waves]\nwind = {}\ndepth_m = 40.0\n", inlinePath());
-    ASSERT_TRUE(w.waves.wind.has_value()); // an empty wind table means the default wind
-    EXPECT_EQ(w.waves.wind->depth_m, 40.0);
+    ASSERT_TRUE(w.sea.wind.has_value()); // an empty wind table means the default wind
+    EXPECT_EQ(w.sea.wind->depth_m, 40.0);
 }
 
 // ---------------------------------------------------------------------------
@@ -841,7 +841,7 @@ TEST(SceneFile, ValidateSceneNamesTheKey)
     EXPECT_NE(e.message().find("objects[1].scale = -1 is out of range"), std::string::npos) << e.message();
 
     Scene waves;
-    waves.waves.listed.waves.resize(SWELL_MAX_WAVES + 1);
+    waves.waves.listed.resize(SWELL_MAX_WAVES + 1);
     InputError w = expectInputError([&] { validateScene(waves, "edited.toml"); });
     EXPECT_NE(w.message().find("waves.list has 65 waves"), std::string::npos) << w.message();
 }

@@ -42,25 +42,25 @@ TEST(SpectrumScene, SwellAndSpreadingReadAndWriteBack)
                              "spreading_s = 40.0\n"
                              "count = 10\n";
     const Scene scene = parseScene(toml, kPath);
-    ASSERT_TRUE(scene.waves.wind.has_value());
-    EXPECT_EQ(scene.waves.wind->spreading, SpreadingModel::DonelanBanner);
-    ASSERT_TRUE(scene.waves.wind->swell.has_value());
-    const SwellSettings& s = *scene.waves.wind->swell;
+    ASSERT_TRUE(scene.sea.wind.has_value());
+    EXPECT_EQ(scene.sea.wind->spreading, SpreadingModel::DonelanBanner);
+    ASSERT_TRUE(scene.sea.wind->swell.has_value());
+    const SwellSettings& s = *scene.sea.wind->swell;
     EXPECT_EQ(s.height_m, 2.5);
     EXPECT_EQ(s.period_s, 15.0);
     EXPECT_EQ(s.direction_deg, 45.0);
     EXPECT_EQ(s.gamma, 8.0);
     EXPECT_EQ(s.sMax, 40.0);
     EXPECT_EQ(s.waveCount, 10);
-    EXPECT_EQ(resolveWaves(scene.waves).waves.size(), 30u);
+    EXPECT_EQ(resolveWaves(scene).waves.size(), 30u);
 
     const std::string saved = saveScene(scene);
     EXPECT_NE(saved.find("[waves.swell]"), std::string::npos) << saved;
     EXPECT_NE(saved.find("spreading = \"donelan-banner\""), std::string::npos) << saved;
     const Scene back = parseScene(saved, kPath);
-    ASSERT_TRUE(back.waves.wind && back.waves.wind->swell);
-    EXPECT_EQ(back.waves.wind->swell->period_s, 15.0);
-    EXPECT_EQ(back.waves.wind->swell->sMax, 40.0);
+    ASSERT_TRUE(back.sea.wind && back.sea.wind->swell);
+    EXPECT_EQ(back.sea.wind->swell->period_s, 15.0);
+    EXPECT_EQ(back.sea.wind->swell->sMax, 40.0);
     EXPECT_EQ(saveScene(back), saved);
 
     // Without a swell, none is written.
@@ -70,13 +70,13 @@ TEST(SpectrumScene, SwellAndSpreadingReadAndWriteBack)
 TEST(SpectrumScene, SwellBeforeWindKeepsBoth)
 {
     const Scene scene = parseScene("[waves.swell]\nheight_m = 1.5\n[waves.wind]\nspeed_mps = 6.0\n", kPath);
-    ASSERT_TRUE(scene.waves.wind && scene.waves.wind->swell);
-    EXPECT_EQ(scene.waves.wind->swell->height_m, 1.5);
-    EXPECT_EQ(scene.waves.wind->windSpeed_mps, 6.0);
+    ASSERT_TRUE(scene.sea.wind && scene.sea.wind->swell);
+    EXPECT_EQ(scene.sea.wind->swell->height_m, 1.5);
+    EXPECT_EQ(scene.sea.wind->windSpeed_mps, 6.0);
     // An empty swell table is the default swell.
     const Scene empty = parseScene("[waves]\nwind = {}\nswell = {}\n", kPath);
-    ASSERT_TRUE(empty.waves.wind && empty.waves.wind->swell);
-    EXPECT_EQ(empty.waves.wind->swell->period_s, SwellSettings{}.period_s);
+    ASSERT_TRUE(empty.sea.wind && empty.sea.wind->swell);
+    EXPECT_EQ(empty.sea.wind->swell->period_s, SwellSettings{}.period_s);
 }
 
 TEST(SpectrumScene, SwellWithoutWindIsRefused)

@@ -63,9 +63,9 @@ TEST(Sweep, ValuesStayInTheirRangesAndSpreadOverThem)
         ASSERT_GE(s.camera.roll_deg, -15.0);
         ASSERT_LE(s.camera.roll_deg, 15.0);
         sum += s.camera.roll_deg;
-        ASSERT_GE(s.waves.wind->seed, 3u);
-        ASSERT_LE(s.waves.wind->seed, 6u);
-        seeds.insert(s.waves.wind->seed);
+        ASSERT_GE(s.sea.wind->seed, 3u);
+        ASSERT_LE(s.sea.wind->seed, 6u);
+        seeds.insert(s.sea.wind->seed);
         modes.insert(s.reflection.mode);
         const glm::dvec3 sun = glm::normalize(s.sun.direction);
         const double elevation = glm::degrees(std::asin(sun.y));

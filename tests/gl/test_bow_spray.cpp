@@ -37,7 +37,7 @@ const glm::dvec3 kHeading(0.766044443, 0.0, 0.642787610);
 Scene gale(double wind_mps, bool spray, double speed_mps, bool crestSpray = false)
 {
     Scene scene = loadScene(std::filesystem::path(SWELL_SOURCE_DIR) / "scenes" / "gale-under-way.toml");
-    scene.waves.wind->windSpeed_mps = wind_mps;
+    scene.sea.wind->windSpeed_mps = wind_mps;
     scene.water.spray = spray;
     if (!crestSpray)
         scene.waves.foamLifetime_s = 0.0;
@@ -129,7 +129,7 @@ struct FromAbove {
 FromAbove fromAbove(double windTowards_deg)
 {
     Scene off = gale(18.0, false, 5.0), on = gale(18.0, true, 5.0);
-    off.waves.wind->windDirection_deg = on.waves.wind->windDirection_deg = windTowards_deg;
+    off.sea.wind->windDirection_deg = on.sea.wind->windDirection_deg = windTowards_deg;
     const Camera camera = overTheBow(on);
     const glm::dvec3 boat = on.objects.at(0).position_m;
     // The built-in boat's stem and transom on the water, 3.2 m forward and

@@ -114,7 +114,7 @@ TEST_F(DrawnSurfaceTest, SpectralEqualsTheDrawnTriangles)
 {
     swell::Scene scene = plainScene();
     scene.waves.model = swell::WaveModelKind::Spectral;
-    scene.waves.wind->windSpeed_mps = 14.0;
+    scene.sea.wind->windSpeed_mps = 14.0;
     expectDrawnSurface(scene, {3.7, 6.0, -12.2});
 }
 
@@ -122,7 +122,7 @@ TEST_F(DrawnSurfaceTest, SpectralFarFromTheOriginAndHigh)
 {
     swell::Scene scene = plainScene();
     scene.waves.model = swell::WaveModelKind::Spectral;
-    scene.waves.wind->windSpeed_mps = 14.0;
+    scene.sea.wind->windSpeed_mps = 14.0;
     expectDrawnSurface(scene, {1.0e5 + 0.37, 45.0, -1.0e5 - 0.81}, {1.0e6});
 }
 

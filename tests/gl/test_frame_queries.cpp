@@ -42,7 +42,7 @@ swell::Scene withBuoysAround(swell::Scene scene, glm::dvec3 eye_m)
             buoy.path = "builtin:buoy";
             buoy.floats = true;
             const double angle = 2.399963 * k; // the golden angle: no two share a direction
-            buoy.position_m = {eye_m.x + r * std::cos(angle), scene.water.level_m, eye_m.z + r * std::sin(angle)};
+            buoy.position_m = {eye_m.x + r * std::cos(angle), scene.sea.level_m, eye_m.z + r * std::sin(angle)};
             scene.objects.push_back(buoy);
         }
     return scene;
@@ -62,7 +62,7 @@ Agreement compare(swell::Renderer& renderer, const swell::Scene& scene, glm::dve
     renderer.advanceTo(time_s, eye_m);
     const swell::FrameCounters counters = renderer.counters();
     // The viewpoint's side of the water is asked only within the waves' reach.
-    const bool viewpointAsked = std::abs(eye_m.y - scene.water.level_m) <= renderer.waveModel().reach().vertical_m;
+    const bool viewpointAsked = std::abs(eye_m.y - scene.sea.level_m) <= renderer.waveModel().reach().vertical_m;
     EXPECT_EQ(counters.queriesOnGpu, int(scene.objects.size()) + (viewpointAsked ? 1 : 0));
     EXPECT_EQ(counters.queriesOnCpu, 0) << "queries whose triangle lay beyond the GPU's block";
     const std::vector<glm::dmat4> poses = renderer.objectTransforms();
@@ -79,7 +79,7 @@ Agreement compare(swell::Renderer& renderer, const swell::Scene& scene, glm::dve
         }
         ++out.objects;
         // Stands at its own height above the drawn water (both in the world's frame).
-        const double expected_m = o.position_m.y - scene.water.level_m + water->position_m.y;
+        const double expected_m = o.position_m.y - scene.sea.level_m + water->position_m.y;
         out.worstHeight_m = std::max(out.worstHeight_m, std::abs(poses[i][3].y - expected_m));
         const glm::dvec3 normal = model.surfaceAt(model.restPointUnder(at, time_s), time_s).normal;
         const glm::dvec3 up = glm::normalize(glm::mix(glm::dvec3(0.0, 1.0, 0.0), normal, 0.5));
@@ -235,7 +235,7 @@ TEST_F(FrameQueries, AFrameAsksTheWaveModelsCpuQueriesNothing)
     renderer.renderImage(camera, 1.0, {64, 36});
     model->queries = 0;
     // Low over the waves, so the eye's side of the water is asked too.
-    camera.position_m.y = scene.water.level_m + 1.0;
+    camera.position_m.y = scene.sea.level_m + 1.0;
     for (int frame = 0; frame < 3; ++frame) {
         camera.position_m.x += 5.0;
         renderer.renderImage(camera, 2.0 + frame / 60.0, {64, 36});

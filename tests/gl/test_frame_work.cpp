@@ -75,7 +75,7 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     const auto dispatchesOfChain = [](long long log2Size, int levelsADispatch) {
         return int((log2Size + levelsADispatch - 1) / levelsADispatch);
     };
-    ASSERT_LE(std::abs(camera.position_m.y - scene.water.level_m), renderer.waveModel().reach().vertical_m)
+    ASSERT_LE(std::abs(camera.position_m.y - scene.sea.level_m), renderer.waveModel().reach().vertical_m)
         << "the eye within the waves' reach, so its side of the water is asked on the GPU";
     static_assert(SWELL_FFT_LOG2_SIZE == SWELL_FOAM_LOG2_SIZE, "the chains share dispatches when of one size");
     const int chains = gl::isSoftwareRasterizer()

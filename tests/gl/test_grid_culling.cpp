@@ -75,7 +75,7 @@ TEST_P(GridCulling, EveryTriangleThatReachesTheViewIsDrawn)
     scene.showTerrain = false;
     scene.grid.layout = c.layout;
     scene.grid.resolution = 129;
-    scene.waves.wind->windSpeed_mps = c.windSpeed_mps;
+    scene.sea.wind->windSpeed_mps = c.windSpeed_mps;
     swell::Renderer renderer(scene);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.position_m = c.position_m;

@@ -20,8 +20,8 @@ swell::Scene openSea()
     swell::Scene scene = swell::defaultScene();
     scene.objects.clear();
     scene.showTerrain = false;
-    scene.waves.listed = swell::resolveWaves(scene.waves);
-    scene.waves.wind.reset();
+    scene.waves.listed = swell::resolveWaves(scene).waves;
+    scene.sea.wind.reset();
     return scene;
 }
 
@@ -29,9 +29,9 @@ swell::Scene openSea()
 // absorbs k.d.offset and omega.t, computed in double and wrapped.
 swell::Scene shifted(swell::Scene scene, glm::dvec2 offset_m, double time_s)
 {
-    for (swell::Wave& w : scene.waves.listed.waves) {
+    for (swell::Wave& w : scene.waves.listed) {
         const double k = 2.0 * glm::pi<double>() / w.wavelength_m;
-        const double omega = swell::angularFrequency(k, scene.waves.listed.depth_m);
+        const double omega = swell::angularFrequency(k, scene.sea.depth_m);
         const double shift = -k * glm::dot(glm::normalize(w.direction), offset_m) + omega * time_s;
         w.phase_rad = std::remainder(w.phase_rad + shift, 2.0 * glm::pi<double>());
     }

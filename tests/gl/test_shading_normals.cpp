@@ -149,8 +149,8 @@ Comparison compare(const swell::Scene& scene, double time_s)
 swell::Scene windScene(double speed_mps, swell::WaveModelKind kind)
 {
     swell::Scene scene = swell::defaultScene();
-    scene.waves.wind = swell::WindSettings{};
-    scene.waves.wind->windSpeed_mps = speed_mps;
+    scene.sea.wind = swell::WindSettings{};
+    scene.sea.wind->windSpeed_mps = speed_mps;
     scene.waves.model = kind;
     return scene;
 }
@@ -278,7 +278,7 @@ TEST_F(ShadingNormals, SpectralSlopesAreCoxAndMunksAtEveryFootprint)
 TEST_F(ShadingNormals, GerstnerKeepsItsSlopeVarianceAtEveryFootprint)
 {
     const swell::Scene scene = windScene(10.0, swell::WaveModelKind::Gerstner);
-    const swell::WaveSet waves = swell::resolveWaves(scene.waves);
+    const swell::WaveSet waves = swell::resolveWaves(scene);
     double expected = 0.0;
     for (const swell::Wave& w : waves.waves) {
         const double ka = glm::length(swell::wavenumberVector(w)) * w.amplitude_m;

@@ -28,7 +28,7 @@ constexpr double kTime_s = 20.0;
 Scene storm(double wind_mps, bool spray)
 {
     Scene scene = loadScene(std::filesystem::path(SWELL_SOURCE_DIR) / "scenes" / "storm.toml");
-    scene.waves.wind->windSpeed_mps = wind_mps;
+    scene.sea.wind->windSpeed_mps = wind_mps;
     scene.water.spray = spray;
     // In the sun, the storm's overcast deck opened: under it the spray over
     // the whitecaps' foam is about as bright as the foam (measured: 883 of
@@ -144,7 +144,7 @@ double imageWindAt(const Scene& scene, glm::ivec2 size, glm::dvec2 pixel)
     const glm::dvec4 p = inverse * glm::dvec4(ndc, 0.5, 1.0);
     const glm::dvec3 ray = glm::normalize(glm::dvec3(p) / p.w);
     const glm::dvec3 sea = ray * (-camera.position_m.y / ray.y);
-    const double direction_rad = scene.waves.wind->windDirection_deg * 3.14159265358979 / 180.0;
+    const double direction_rad = scene.sea.wind->windDirection_deg * 3.14159265358979 / 180.0;
     const glm::dvec3 downwind = sea + 0.5 * glm::dvec3(std::cos(direction_rad), 0.0, std::sin(direction_rad));
     auto toPixel = [&](glm::dvec3 q) {
         const glm::dvec4 c = viewProj * glm::dvec4(q, 1.0);

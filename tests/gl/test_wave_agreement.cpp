@@ -102,9 +102,9 @@ TEST_F(WaveAgreement, AMillionMetresFromTheOrigin)
 TEST_F(WaveAgreement, FiniteDepthAndHandListedWaves)
 {
     swell::Scene scene = agreementScene();
-    scene.waves.wind.reset();
-    scene.waves.listed.depth_m = 12.0;
-    scene.waves.listed.waves = {{{1.0, 0.3}, 60.0, 0.8, 0.7, 0.2}, {{-0.4, 1.0}, 23.0, 0.3, 0.9, 1.9},
+    scene.sea.wind.reset();
+    scene.sea.depth_m = 12.0;
+    scene.waves.listed = {{{1.0, 0.3}, 60.0, 0.8, 0.7, 0.2}, {{-0.4, 1.0}, 23.0, 0.3, 0.9, 1.9},
                                 {{0.2, -1.0}, 7.5, 0.08, 0.5, -2.0}, {{0.9, 0.9}, 1.2, 0.02, 0.3, 0.0}};
     expectAgreement(scene, {-250.0, 3.0, 90.0}, 512.5);
 }
@@ -113,7 +113,7 @@ swell::Scene spectralScene()
 {
     swell::Scene scene = agreementScene();
     scene.waves.model = swell::WaveModelKind::Spectral;
-    scene.waves.wind->windSpeed_mps = 14.0;
+    scene.sea.wind->windSpeed_mps = 14.0;
     return scene;
 }
 

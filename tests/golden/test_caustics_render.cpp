@@ -55,7 +55,7 @@ TEST_F(CausticsRender, AFloorUnderWavesShowsTheNetWithTheMeanOfFlatWater)
     scene.sun.direction = {0.2, 0.9, 0.3};
     scene.water.absorption_per_m = {0.40, 0.07, 0.09};
     // Ripples 1.5 to 4 m long (slopes a k about 0.16): a net of foci between 3 and 8 m down.
-    scene.waves.listed.waves = {{{1.0, 0.2}, 4.0, 0.10, 0.3, 0.0},
+    scene.waves.listed = {{{1.0, 0.2}, 4.0, 0.10, 0.3, 0.0},
                                 {{0.3, 1.0}, 2.5, 0.06, 0.3, 1.0},
                                 {{-0.7, 0.6}, 1.5, 0.04, 0.3, 2.0}};
     // 1 m down looking straight down, 100 degrees across: 10 m of floor, a

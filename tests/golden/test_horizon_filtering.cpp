@@ -29,7 +29,7 @@ swell::Scene openSea(bool spectral)
     scene.showTerrain = false;
     if (spectral) {
         scene.waves.model = swell::WaveModelKind::Spectral;
-        scene.waves.wind->windSpeed_mps = 10.0;
+        scene.sea.wind->windSpeed_mps = 10.0;
     }
     return scene;
 }

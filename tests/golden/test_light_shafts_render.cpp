@@ -46,7 +46,7 @@ swell::Scene stage()
     scene.sun.direction = {-0.3, 0.8, -0.5};
     scene.water.absorption_per_m = {0.40, 0.07, 0.09};
     // Ripples 1.5 to 4 m long (slopes a k about 0.16), as the caustics' tests.
-    scene.waves.listed.waves = {{{1.0, 0.2}, 4.0, 0.10, 0.3, 0.0},
+    scene.waves.listed = {{{1.0, 0.2}, 4.0, 0.10, 0.3, 0.0},
                                 {{0.3, 1.0}, 2.5, 0.06, 0.3, 1.0},
                                 {{-0.7, 0.6}, 1.5, 0.04, 0.3, 2.0}};
     return scene;

@@ -269,7 +269,7 @@ TEST_P(Reflection, RippledWaterKeepsTheBoxWithinWhatTheSlopesAllow)
     ASSERT_LT(bound_rad, 0.06) << "the ripples are meant to be small";
 
     swell::Scene withBox = stage(GetParam(), true);
-    withBox.waves.listed = set;
+    withBox.waves.listed = set.waves;
     swell::Scene without = withBox;
     without.objects.clear();
     const swell::Camera camera = swell::cameraAt(withBox.camera, 0.0);
@@ -361,7 +361,7 @@ TEST_F(ReflectionRayMarch, EveryReflectedPixelHasAFacetThatSendsItsRayToTheBox)
     swell::WaveSet set = ripples();
     for (swell::Wave& w : set.waves)
         w.amplitude_m *= 4.0; // sum 0.027 m: the box's bottom at 0.05 m stays dry
-    withBox.waves.listed = set;
+    withBox.waves.listed = set.waves;
     withBox.camera.position_m = {0.0, 8.0, 0.0};
     withBox.camera.pitch_deg = -10.0;
     const glm::dvec3 centre_m{0.0, 0.05 + kHalf_m, -30.0};

@@ -22,7 +22,7 @@ swell::Scene sea(glm::dvec3 sunDirection)
     swell::Scene scene = swell::defaultScene();
     scene.objects.clear();
     scene.showTerrain = false;
-    scene.waves.wind->windSpeed_mps = 12.0;
+    scene.sea.wind->windSpeed_mps = 12.0;
     scene.camera.position_m = {0.0, 3.0, 0.0};
     scene.camera.pitch_deg = -8.0;
     scene.sun.direction = glm::normalize(sunDirection);

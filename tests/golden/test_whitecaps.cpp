@@ -34,8 +34,8 @@ Scene foamScene(double windSpeed_mps)
     scene.objects.clear();
     scene.showTerrain = false;
     scene.waves.model = WaveModelKind::Spectral;
-    scene.waves.wind->windSpeed_mps = windSpeed_mps;
-    scene.waves.wind->fetch_km = 3000.0; // fully developed, as Monahan's open-ocean data
+    scene.sea.wind->windSpeed_mps = windSpeed_mps;
+    scene.sea.wind->fetch_km = 3000.0; // fully developed, as Monahan's open-ocean data
     scene.debugView = DebugView::Foam;
     return scene;
 }
@@ -235,7 +235,7 @@ TEST_F(Whitecaps, FoamDoesNotRepeatWithThePatches)
     const double windSpeed_mps = 16.0;
     const Scene scene = foamScene(windSpeed_mps);
     const spectral::SpectralField field =
-        spectral::makeSpectralField(SeaSpectrum(*scene.waves.wind), scene.waves.choppiness, scene.waves.wind->seed);
+        spectral::makeSpectralField(SeaSpectrum(*scene.sea.wind), scene.waves.choppiness, scene.sea.wind->seed);
     Renderer renderer(scene);
     // 346 m across: 1.8 m a pixel.
     const int maxShift = int(std::lround(60.0 / (2.0 * 300.0 * std::tan(30.0 * 3.14159265358979 / 180.0) / kView)));

@@ -159,9 +159,9 @@ double slope(const std::vector<double>& x, const std::vector<double>& y)
 swell::Scene sceneAt(const std::vector<swell::Scene>& presets, int step)
 {
     swell::Scene scene = presets[std::size_t(step / 17) % presets.size()];
-    if (!scene.waves.wind)
-        scene.waves.wind = swell::WindSettings{};
-    scene.waves.wind->seed = std::uint32_t(step / 5);
+    if (!scene.sea.wind)
+        scene.sea.wind = swell::WindSettings{};
+    scene.sea.wind->seed = std::uint32_t(step / 5);
     // Shafts of light in every other stretch: with them the caustics map is
     // drawn in more frames, by the frame's only program with a geometry stage.
     scene.water.shafts = (step / 19) % 2 == 1;

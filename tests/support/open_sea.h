@@ -19,7 +19,7 @@ inline Scene openSpectralStorm()
 {
     Scene scene = openSea();
     scene.waves.model = WaveModelKind::Spectral;
-    scene.waves.wind->windSpeed_mps = 20.0;
+    scene.sea.wind->windSpeed_mps = 20.0;
     return scene;
 }
 

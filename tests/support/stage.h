@@ -11,8 +11,8 @@ namespace swell::test {
 inline Scene emptyStage()
 {
     Scene scene = defaultScene();
-    scene.waves.wind.reset();
-    scene.waves.listed.waves.clear();
+    scene.sea.wind.reset();
+    scene.waves.listed.clear();
     scene.showTerrain = false;
     scene.objects.clear();
     scene.fog.start_m = 1.0e5;

@@ -83,7 +83,7 @@ void Panel::drawList(Session& session, ParameterList list, Scene& edited, bool& 
     }
     if (list != ParameterList::Waves)
         return;
-    std::vector<Wave>& waves = edited.waves.listed.waves;
+    std::vector<Wave>& waves = edited.waves.listed;
     if (remove) {
         waves.erase(waves.begin() + std::ptrdiff_t(*remove));
         staged_.reset();
@@ -117,17 +117,17 @@ void Panel::drawParameters(Session& session, Scene& edited, bool& changed)
                 changed |= editParameter(session, p, 0, edited);
 
         if (section == "waves") {
-            bool wind = edited.waves.wind.has_value();
+            bool wind = edited.sea.wind.has_value();
             if (ImGui::Checkbox("waves from the wind", &wind)) {
                 if (wind) {
-                    edited.waves.wind = lastWind_.value_or(WindSettings{});
+                    edited.sea.wind = lastWind_.value_or(WindSettings{});
                 } else {
-                    lastWind_ = edited.waves.wind;
-                    edited.waves.wind.reset();
+                    lastWind_ = edited.sea.wind;
+                    edited.sea.wind.reset();
                     // Keep the sea as it looks: the generated waves become the list.
-                    std::vector<Wave>& listed = edited.waves.listed.waves;
+                    std::vector<Wave>& listed = edited.waves.listed;
                     if (listed.empty()) {
-                        listed = resolveWaves(edited.waves).waves;
+                        listed = resolveWaves(edited).waves;
                         if (listed.size() > SWELL_MAX_WAVES)
                             listed.resize(SWELL_MAX_WAVES);
                     }
@@ -147,7 +147,7 @@ void Panel::drawParameters(Session& session, Scene& edited, bool& changed)
             const std::string_view key = listKey(list);
             if (key.substr(0, key.find('.')) != section)
                 continue;
-            if (list == ParameterList::Waves && edited.waves.wind)
+            if (list == ParameterList::Waves && edited.sea.wind)
                 continue;
             drawList(session, list, edited, changed);
         }

@@ -253,7 +253,7 @@ std::string itemLabel(ParameterList list, const Scene& scene, std::size_t i)
 {
     switch (list) {
     case ParameterList::Waves: {
-        const Wave& w = scene.waves.listed.waves[i];
+        const Wave& w = scene.waves.listed[i];
         return fmt::format("wave {}: {:.3g} m long, {:.3g} m high", i + 1, w.wavelength_m, w.amplitude_m);
     }
     case ParameterList::Objects: return fmt::format("object {}: {}", i + 1, scene.objects[i].path);
