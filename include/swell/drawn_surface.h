@@ -2,16 +2,15 @@
 // the grid's vertices, each displaced by the waves its cell can carry and
 // faded toward the horizon, raised by the surface sources (swell/surface_source.h:
 // the floating bodies' wake, a host's own) at its rest point, joined by flat
-// triangles. The exact surface
-// (WaveModel::surfaceAt) differs from it by the waves the grid filters out
-// and by the triangles' chords: centimetres near the camera, decimetres far
-// away. Query this one to put things on the water the user sees.
+// triangles. The exact surface (SurfaceQuery::surfaceAt) differs from it by
+// the waves the grid filters out and by the triangles' chords: centimetres
+// near the camera, decimetres far away. Query this one to put things on the
+// water the user sees.
 #pragma once
 
 #include "swell/export.h"
 #include "swell/grid.h"
-#include "swell/wave_model.h"
-#include "swell/surface_source.h"
+#include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -31,14 +30,14 @@ struct SWELL_API DrawnPoint {
 
 class SWELL_API DrawnSurface {
 public:
-    // The surface `model` draws on the grid `shape` for a camera at eye_m
-    // (relative to the water's mean level, m: the sea's frame) at time_s,
-    // plus the heights of `sources` (as this frame draws them). Answers in
-    // the world's frame: with the mean level level_m (Scene::sea.level_m)
-    // added to every height. Keeps a reference to `model`: it must outlive
-    // this object.
-    DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
-                 double time_s, std::vector<std::shared_ptr<const SurfaceSource>> sources = {}, double level_m = 0.0);
+    // What `surface` draws on the grid `shape` for a camera at eye_m
+    // (relative to the water's mean level, m: the sea's frame) at time_s:
+    // the waves with the heights of the sources as this frame draws them
+    // (a swell::ComposedSurface, swell/composed_surface.h). Answers in the
+    // world's frame: with the mean level level_m (Scene::sea.level_m) added
+    // to every height. Shares ownership of `surface` (not null).
+    DrawnSurface(std::shared_ptr<const SurfaceQuery> surface, const GridShape& shape, const HorizonFade& fade,
+                 glm::dvec3 eye_m, double time_s, double level_m = 0.0);
 
     // The drawn water under world point (x, z). Empty only where no triangle
     // covers the point, which happens nowhere on the unbounded grid except
@@ -52,13 +51,12 @@ public:
     const GridPlacement& placement() const { return placement_; }
 
 private:
-    const WaveModel& model_;
+    std::shared_ptr<const SurfaceQuery> surface_;
     GridShape shape_;
     HorizonFade fade_;
     GridPlacement placement_;
     glm::dvec3 eye_m_;
     double time_s_;
-    std::vector<std::shared_ptr<const SurfaceSource>> sources_;
     double level_m_ = 0.0;
 };
 

@@ -1,4 +1,4 @@
-// Rigid bodies floating on a swell::WaveModel: buoyancy from the hydrostatic
+// Rigid bodies floating on a swell::SurfaceQuery: buoyancy from the hydrostatic
 // pressure over the submerged part of a closed mesh, gravity, and linear
 // hydrodynamic damping, integrated with semi-implicit Euler steps of a fixed
 // length (kBodyStep_s) from t = 0. A body's pose at a time depends only on the
@@ -15,7 +15,7 @@
 
 #include "swell/error.h"
 #include "swell/export.h"
-#include "swell/wave_model.h"
+#include "swell/surface_query.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
@@ -132,7 +132,7 @@ public:
     // steps can follow (kMaxBodyOmegaStep). step() throws swell::Error
     // should its state still stop being finite, before the state is used.
     FloatingBody(const BodyShape& shape, const BodySettings& settings, const BodyStart& start,
-                 const WaveModel& surface, const SurfaceFilter& filter = {});
+                 const SurfaceQuery& surface, const SurfaceFilter& filter = {});
     ~FloatingBody();
     FloatingBody(FloatingBody&&) noexcept;
     FloatingBody& operator=(FloatingBody&&) noexcept;
@@ -198,7 +198,7 @@ private:
     // The helm (kHelmPeriod_s), about the vertical: 0 for a moored body.
     double helmStiffness_N_m_per_rad_ = 0.0, helmDamping_N_m_s_ = 0.0;
     BodyStart start_;
-    const WaveModel* surface_ = nullptr;
+    const SurfaceQuery* surface_ = nullptr;
     SurfaceFilter filter_;
     BodyState initial_, previous_, next_;
     // The water sampled round the body at the two sample times that bracket the step.

@@ -9,11 +9,13 @@
 #include "swell/export.h"
 
 #include "swell/spectrum.h"
+#include "swell/surface_query.h"
 #include "swell/wave_model.h"
 
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 
 namespace swell {
 
@@ -40,28 +42,43 @@ struct SWELL_API SpectralSettings {
     double historyStart_s = -std::numeric_limits<double>::infinity();
 };
 
-class SWELL_API SpectralModel final : public WaveModel {
+// The spectral ocean's CPU queries: its field, and the CPU twin that
+// transforms it for each new time asked (all the CPU needs).
+class SWELL_API SpectralSurface : public virtual SurfaceQuery {
 public:
     // Throws std::invalid_argument as SeaSpectrum does for bad settings.
-    explicit SpectralModel(const SpectralSettings& settings);
-    ~SpectralModel() override;
+    explicit SpectralSurface(const SpectralSettings& settings);
+    ~SpectralSurface() override;
 
-    std::string_view name() const override;
-    std::string summary() const override;
+    const SpectralSettings& settings() const { return settings_; }
+
     WaveReach reach() const override;
     // From the CPU twin's height fields at t = 0 (the sea is stationary).
     double heightDeviation_m() const override { return heightDeviation_m_; }
     SurfacePoint surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
     // Transforms only the displacement fields for a new time: half the cost.
     glm::dvec3 displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter = {}) const override;
-    std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
 
-private:
+protected:
     SpectralSettings settings_;
     float foldThreshold_ = 0.0f; // J below which foam is made
     std::shared_ptr<const spectral::SpectralField> field_;
+
+private:
     std::unique_ptr<spectral::CpuSurface> cpu_;
     double heightDeviation_m_ = 0.0;
+};
+
+// SpectralSurface's queries with its GPU half: the same field on the GPU.
+class SWELL_API SpectralModel final : public SpectralSurface, public WaveModel {
+public:
+    // Throws std::invalid_argument as SeaSpectrum does for bad settings.
+    explicit SpectralModel(const SpectralSettings& settings);
+    ~SpectralModel() override;
+
+    std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;
+    std::string_view name() const override;
+    std::string summary() const override;
 };
 
 } // namespace swell

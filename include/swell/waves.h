@@ -1,8 +1,8 @@
 // Gerstner waves on the CPU: the one C++ definition of the wave function,
-// the first wave model (src/ocean/gerstner/; the model class that puts it
-// behind swell::WaveModel is swell/gerstner_model.h). Its GLSL twin is
-// shaders/ocean/gerstner.glsl; tests/gl/test_wave_agreement.cpp
-// proves the two agree within 1 mm.
+// the first wave model (src/ocean/gerstner/; the classes that put it behind
+// swell::SurfaceQuery and swell::WaveModel are in swell/gerstner_model.h).
+// Its GLSL twin is shaders/ocean/gerstner.glsl;
+// tests/gl/test_wave_agreement.cpp proves the two agree within 1 mm.
 //
 // A wave i displaces the rest point x0 (world xz, metres) at time t (s) by
 //   theta_i = k_i * dot(d_i, x0) - omega_i * t + phase_i
@@ -15,7 +15,7 @@
 
 #include "swell/constants.h"
 #include "swell/shader_constants.h"
-#include "swell/wave_model.h"
+#include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

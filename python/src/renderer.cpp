@@ -237,7 +237,7 @@ public:
     {
         finiteTime(time_s);
         use();
-        const WaveModel& model = renderer_->waveModel();
+        const SurfaceQuery& model = renderer_->waveModel();
         const double level_m = renderer_->scene().sea.level_m;
         return mapXZ(x_m, z_m, [&](double x, double z) { return level_m + model.heightAt({x, z}, time_s); });
     }

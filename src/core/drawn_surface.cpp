@@ -1,13 +1,14 @@
 #include "swell/drawn_surface.h"
 
 #include "core/drawn_search.h"
-
+#include "swell/error.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace swell {
 
@@ -111,11 +112,13 @@ std::optional<DrawnPoint> searchDrawnCells(const GridShape& shape, glm::ivec2 st
 
 } // namespace detail
 
-DrawnSurface::DrawnSurface(const WaveModel& model, const GridShape& shape, const HorizonFade& fade, glm::dvec3 eye_m,
-                           double time_s, std::vector<std::shared_ptr<const SurfaceSource>> sources, double level_m)
-    : model_(model), shape_(shape), fade_(fade), placement_(placeGrid(shape, eye_m)), eye_m_(eye_m), time_s_(time_s),
-      sources_(std::move(sources)), level_m_(level_m)
+DrawnSurface::DrawnSurface(std::shared_ptr<const SurfaceQuery> surface, const GridShape& shape, const HorizonFade& fade,
+                           glm::dvec3 eye_m, double time_s, double level_m)
+    : surface_(std::move(surface)), shape_(shape), fade_(fade), placement_(placeGrid(shape, eye_m)), eye_m_(eye_m),
+      time_s_(time_s), level_m_(level_m)
 {
+    if (!surface_)
+        throw Error("DrawnSurface: no surface (null)");
 }
 
 glm::dvec3 DrawnSurface::vertex(int i, int j) const
@@ -127,11 +130,8 @@ glm::dvec3 DrawnSurface::vertex(int i, int j) const
     const glm::dvec2 rest = placement_.center_m + point.offset_m;
     const double distance_m = glm::length(rest - glm::dvec2(eye_m_.x, eye_m_.z));
     const glm::dvec3 d =
-        model_.displacementAt(rest, time_s_, SurfaceFilter{point.cellSize_m, horizonFadeAt(fade_, distance_m)});
-    double sources_m = 0.0;
-    for (const std::shared_ptr<const SurfaceSource>& source : sources_)
-        sources_m += source->heightAt(rest, time_s_).x;
-    return glm::dvec3(rest.x, level_m_ + sources_m, rest.y) + d;
+        surface_->displacementAt(rest, time_s_, SurfaceFilter{point.cellSize_m, horizonFadeAt(fade_, distance_m)});
+    return glm::dvec3(rest.x, level_m_, rest.y) + d;
 }
 
 std::optional<DrawnPoint> DrawnSurface::at(glm::dvec2 p) const
@@ -139,7 +139,7 @@ std::optional<DrawnPoint> DrawnSurface::at(glm::dvec2 p) const
     // Start from the cell over the rest point the exact surface puts under p
     // (the drawn surface's differs from it by the filtered waves), then look
     // in rings of cells around it.
-    const glm::dvec2 rest = model_.restPointUnder(p, time_s_);
+    const glm::dvec2 rest = surface_->restPointUnder(p, time_s_);
     const glm::ivec2 start = detail::restCellOf(shape_, placement_, rest - placement_.center_m);
     return detail::searchDrawnCells(shape_, start, p, detail::kMaxDrawnSearchRings,
                                     [this](int i, int j) { return std::optional<glm::dvec3>(vertex(i, j)); });

@@ -150,7 +150,7 @@ void checkStepFollows(LoadAt loadAt, double waterHere_m, double reach_m, double 
 } // namespace
 
 FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings, const BodyStart& start,
-                           const WaveModel& surface, const SurfaceFilter& filter)
+                           const SurfaceQuery& surface, const SurfaceFilter& filter)
     : start_(start), surface_(&surface), filter_(filter)
 {
     const MassProperties props = massPropertiesOf(shape);

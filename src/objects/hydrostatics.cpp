@@ -27,7 +27,7 @@ WaterPatch blend(const WaterPatch& from, const WaterPatch& to, double f)
     return patch;
 }
 
-WaterPatch sampleWater(const WaveModel& surface, glm::dvec2 centre_m, double halfSize_m, double time_s,
+WaterPatch sampleWater(const SurfaceQuery& surface, glm::dvec2 centre_m, double halfSize_m, double time_s,
                        const SurfaceFilter& filter)
 {
     WaterPatch patch;

@@ -7,7 +7,7 @@
 // Hydromechanics, TU Delft, ch. 6).
 #pragma once
 
-#include "swell/wave_model.h"
+#include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -49,7 +49,7 @@ struct WaterPatch {
 WaterPatch blend(const WaterPatch& from, const WaterPatch& to, double f);
 
 // Samples `surface` at time_s over the square of half-size halfSize_m round centre_m.
-WaterPatch sampleWater(const WaveModel& surface, glm::dvec2 centre_m, double halfSize_m, double time_s,
+WaterPatch sampleWater(const SurfaceQuery& surface, glm::dvec2 centre_m, double halfSize_m, double time_s,
                        const SurfaceFilter& filter);
 
 struct HydrostaticLoad {

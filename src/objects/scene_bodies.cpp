@@ -2,7 +2,7 @@
 #include "objects/scene_bodies.h"
 
 #include "core/worker.h"
-#include "swell/wave_model_gpu.h" // the waves' GPU half, handed on
+#include "swell/composed_surface.h"
 #include "swell/error.h"
 #include "swell/grid.h"
 
@@ -56,37 +56,6 @@ namespace {
 // step ahead never overwrites one the frame still reads.
 constexpr std::size_t kBowSamplesKept =
     SWELL_BOW_SPRAY_HISTORY + std::size_t(SceneBodies::kMaxStepAhead_s * SWELL_BOW_SPRAY_SAMPLES_PER_S) + 2;
-
-// The scene's waves on the bodies' clock: their time t is the scene's
-// t + start_s, so the bodies step from 0 whenever the history starts.
-class WavesOnTheBodiesClock final : public WaveModel {
-public:
-    WavesOnTheBodiesClock(const WaveModel& waves, double start_s) : waves_(waves), start_s_(start_s) {}
-    std::string_view name() const override { return waves_.name(); }
-    std::string summary() const override { return waves_.summary(); }
-    WaveReach reach() const override { return waves_.reach(); }
-    double heightDeviation_m() const override { return waves_.heightDeviation_m(); }
-    SurfacePoint surfaceAt(glm::dvec2 rest, double time_s, const SurfaceFilter& filter) const override
-    {
-        return waves_.surfaceAt(rest, time_s + start_s_, filter);
-    }
-    glm::dvec3 displacementAt(glm::dvec2 rest, double time_s, const SurfaceFilter& filter) const override
-    {
-        return waves_.displacementAt(rest, time_s + start_s_, filter);
-    }
-    glm::dvec2 restPointUnder(glm::dvec2 world, double time_s, const SurfaceFilter& filter) const override
-    {
-        return waves_.restPointUnder(world, time_s + start_s_, filter);
-    }
-    std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override
-    {
-        return waves_.createGpu(shaders);
-    }
-
-private:
-    const WaveModel& waves_;
-    double start_s_;
-};
 
 } // namespace
 
@@ -167,10 +136,10 @@ std::shared_ptr<const WakeFrame> SceneBodies::sharedWakeFrameAt(double time_s) c
     return std::make_shared<const WakeFrame>(wake_->frameAt(clock_s(time_s)));
 }
 
-SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& sceneWaves)
-    : start_s_(bodiesStart_s(scene)), waves_(std::make_unique<WavesOnTheBodiesClock>(sceneWaves, start_s_))
+SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes,
+                         std::shared_ptr<const SurfaceQuery> surface)
+    : start_s_(bodiesStart_s(scene))
 {
-    const WaveModel& surface = *waves_;
     const SurfaceFilter filter = bodySurfaceFilter(scene);
     // A wake when some body is under way; its grid follows the first that is.
     bool underWay = false;
@@ -184,8 +153,15 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
         }
     }
     if (scene.wake.enabled && underWay)
-        wake_ = std::make_unique<SceneWake>(scene.wake, scene.sea.depth_m, surface);
-    const WaveModel& floatsOn = wake_ ? wake_->surface() : surface;
+        wake_ = std::make_unique<SceneWake>(scene.wake, scene.sea.depth_m);
+    // The waves on the bodies' clock (their time t is the scene's t +
+    // start_s, so the bodies step from 0 whenever the history starts), plus
+    // the wake, which runs on that clock.
+    std::vector<std::shared_ptr<const SurfaceSource>> wake;
+    if (wake_)
+        wake.push_back(std::make_shared<const SceneWakeSource>(*wake_));
+    floatsOn_ = std::make_shared<const ComposedSurface>(std::move(surface), std::move(wake), start_s_);
+    const SurfaceQuery& floatsOn = *floatsOn_;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
         scale_.push_back(o.scale);

@@ -44,12 +44,14 @@ class SceneBodies {
 public:
     SceneBodies() = default;
     // shapes[i]: object i's closed shape in model space (its hull volume,
-    // else its mesh); read only for rigid bodies. `surface` must outlive
-    // this. With scene.wake on and a body under way, the bodies stir a wake
-    // field and float on the surface plus it (objects/scene_wake.h).
-    // Throws swell::InputError at the object's path key (or naming the
-    // object) when a body cannot be built.
-    SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes, const WaveModel& surface);
+    // else its mesh); read only for rigid bodies. `surface`: the water on
+    // the scene's clock (the waves, plus a host's sources). With scene.wake
+    // on and a body under way, the bodies stir a wake field and float on the
+    // surface plus it (objects/scene_wake.h). Throws swell::InputError at
+    // the object's path key (or naming the object) when a body cannot be
+    // built.
+    SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes,
+                std::shared_ptr<const SurfaceQuery> surface);
 
     SceneBodies(SceneBodies&&) noexcept;
     SceneBodies& operator=(SceneBodies&&) noexcept;
@@ -81,6 +83,14 @@ public:
     std::optional<glm::dmat4> poseAt(std::size_t i, double time_s);
     // Integration steps taken by all bodies so far.
     std::int64_t stepsTaken() const;
+
+    // What the bodies float on, on their clock (startTime_s() is its 0): the
+    // surface they were given plus the wake.
+    const SurfaceQuery& surface() const
+    {
+        settle();
+        return *floatsOn_;
+    }
 
     // The wake, when the scene has one (wake on, a body under way); else null.
     // It runs on the bodies' own clock, from 0 at their start (startTime_s()).
@@ -175,9 +185,9 @@ private:
     double clock_s(double time_s) const;
 
     double start_s_ = 0.0;
-    // The waves on the bodies' clock (what they and the wake float on).
-    std::unique_ptr<WaveModel> waves_;
     std::unique_ptr<SceneWake> wake_;
+    // The surface on the bodies' clock plus the wake: what the bodies float on.
+    std::shared_ptr<const SurfaceQuery> floatsOn_;
     std::vector<Footprint> footprints_; // per object, as bodies_
     std::size_t leader_ = 0;             // the body the wake's grid follows
     glm::dvec2 leaderDirection_{0.0};    // its heading of travel, unit (0 when it does not travel)

@@ -1,10 +1,7 @@
-// A scene's wake and the surface bodies float on (scene_wake.h).
+// A scene's wake, and the source that adds it to the surface bodies float on (scene_wake.h).
 #include "objects/scene_wake.h"
 
-#include "swell/wave_model_gpu.h" // the waves' GPU half, handed on
-
-
-#include <fmt/format.h>
+#include "objects/wake_surface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,40 +9,6 @@
 namespace swell::detail {
 
 namespace {
-
-// The wave model plus the wake, as heights added at the rest point: the
-// grid's vertex at rest point x0 rises by the wake there (shaders/wake.glsl),
-// so the rest point under a world point is the waves' own.
-class WavesWithWake final : public WaveModel {
-public:
-    WavesWithWake(const WaveModel& waves, const SceneWake& wake) : waves_(waves), wake_(wake) {}
-    std::string_view name() const override { return waves_.name(); }
-    std::string summary() const override { return fmt::format("{} with a wake", waves_.summary()); }
-    WaveReach reach() const override { return waves_.reach(); }
-    double heightDeviation_m() const override { return waves_.heightDeviation_m(); }
-    SurfacePoint surfaceAt(glm::dvec2 rest, double time_s, const SurfaceFilter& filter) const override
-    {
-        SurfacePoint p = waves_.surfaceAt(rest, time_s, filter);
-        p.displacement_m.y += wake_.heightAt(rest, time_s);
-        return p;
-    }
-    glm::dvec3 displacementAt(glm::dvec2 rest, double time_s, const SurfaceFilter& filter) const override
-    {
-        return waves_.displacementAt(rest, time_s, filter) + glm::dvec3(0.0, wake_.heightAt(rest, time_s), 0.0);
-    }
-    glm::dvec2 restPointUnder(glm::dvec2 world, double time_s, const SurfaceFilter& filter) const override
-    {
-        return waves_.restPointUnder(world, time_s, filter);
-    }
-    std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override
-    {
-        return waves_.createGpu(shaders);
-    }
-
-private:
-    const WaveModel& waves_;
-    const SceneWake& wake_;
-};
 
 WakeFieldSettings fieldSettings(const WakeSettings& s, double depth_m)
 {
@@ -61,13 +24,10 @@ WakeFieldSettings fieldSettings(const WakeSettings& s, double depth_m)
 
 } // namespace
 
-SceneWake::SceneWake(const WakeSettings& settings, double depth_m, const WaveModel& waves)
-    : field_(fieldSettings(settings, depth_m)), surface_(std::make_unique<WavesWithWake>(waves, *this))
+SceneWake::SceneWake(const WakeSettings& settings, double depth_m) : field_(fieldSettings(settings, depth_m))
 {
     reset(glm::dvec2(0.0));
 }
-
-SceneWake::~SceneWake() = default;
 
 void SceneWake::reset(glm::dvec2 focus_m)
 {
@@ -147,5 +107,26 @@ WakeFrame SceneWake::frameAt(double time_s) const
     frame.reach_m = double(reach_m);
     return frame;
 }
+
+double SceneWake::reach_m() const
+{
+    double reach_m = 0.0;
+    for (const float h : previousHeights_)
+        reach_m = std::max(reach_m, std::abs(double(h)));
+    for (std::size_t m = 0; m < previousHeights_.size(); ++m)
+        reach_m = std::max(reach_m, std::abs(double(field_.heightOfCell(m))));
+    return reach_m;
+}
+
+glm::dvec3 SceneWakeSource::heightAt(glm::dvec2 restPoint_m, double time_s) const
+{
+    return {wake_.heightAt(restPoint_m, time_s), 0.0, 0.0};
+}
+
+double SceneWakeSource::reach_m(double) const { return wake_.reach_m(); }
+
+std::string SceneWakeSource::glsl() const { return WakeSurfaceSource::code(); }
+
+SurfaceSourceParameters SceneWakeSource::gpuParameters(double, glm::dvec3) const { return {}; }
 
 } // namespace swell::detail

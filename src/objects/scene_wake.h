@@ -1,7 +1,8 @@
 // A scene's wake: one wake field (wake_field.h) stirred by the scene's
 // floating bodies, stepped with them (objects/scene_bodies.h), and the
-// surface the bodies float on: the wave model plus the wake. The renderer
-// draws frameAt() of it; swell::DrawnSurface queries the same frame.
+// source (SceneWakeSource) that adds it to the surface the bodies float on
+// (swell::ComposedSurface). The renderer draws frameAt() of it;
+// swell::DrawnSurface queries the same frame.
 //
 // The wake steps at the bodies' water-sample times (kWakeStep_s = 4 body
 // steps): wake step k -> k + 1 takes the bodies' footprints where they stand
@@ -13,7 +14,7 @@
 #include "objects/wake_field.h"
 #include "objects/wake_frame.h"
 #include "swell/scene.h"
-#include "swell/wave_model.h"
+#include "swell/surface_source.h"
 
 #include <memory>
 #include <vector>
@@ -22,15 +23,10 @@ namespace swell::detail {
 
 class SceneWake {
 public:
-    // The wake of `settings` over water of depth depth_m on `waves`, which
-    // must outlive this.
-    SceneWake(const WakeSettings& settings, double depth_m, const WaveModel& waves);
-    ~SceneWake();
+    // The wake of `settings` over water of depth depth_m.
+    SceneWake(const WakeSettings& settings, double depth_m);
     SceneWake(const SceneWake&) = delete;
     SceneWake& operator=(const SceneWake&) = delete;
-
-    // The waves plus the wake at the query's time: what bodies float on.
-    const WaveModel& surface() const { return *surface_; }
 
     // Flat water at time 0, the grid centred on focus_m.
     void reset(glm::dvec2 focus_m);
@@ -45,6 +41,8 @@ public:
     double heightAt(glm::dvec2 world_m, double time_s) const;
     // The frame the renderer draws at time_s (between the two last states).
     WakeFrame frameAt(double time_s) const;
+    // The largest |height| of the two last states, m: what any time's blend stays within.
+    double reach_m() const;
 
     const WakeField& field() const { return field_; }
 
@@ -56,7 +54,25 @@ private:
     // The state before the current one, on its own grid.
     std::vector<float> previousHeights_, previousFoam_;
     glm::ivec2 previousCorner_{0};
-    std::unique_ptr<WaveModel> surface_;
+};
+
+// The wake as the bodies feel it: heightAt() at its states, blended
+// between them (exact at whole steps, where the bodies sample it), added
+// to the waves by a swell::ComposedSurface on the bodies' clock. Its slopes
+// are left out (0): the bodies read heights alone, never the normal, and
+// the drawn wake's slopes are its frame's (WakeSurfaceSource), which this
+// shares its GLSL with. `wake` must outlive it.
+class SceneWakeSource final : public SurfaceSource {
+public:
+    explicit SceneWakeSource(const SceneWake& wake) : wake_(wake) {}
+
+    glm::dvec3 heightAt(glm::dvec2 restPoint_m, double time_s) const override;
+    double reach_m(double time_s) const override;
+    std::string glsl() const override;
+    SurfaceSourceParameters gpuParameters(double time_s, glm::dvec3 renderOrigin_m) const override;
+
+private:
+    const SceneWake& wake_;
 };
 
 } // namespace swell::detail

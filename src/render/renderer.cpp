@@ -6,7 +6,6 @@
 // swell::WaveModel, never from a particular model.
 #include "render/renderer_impl.h"
 
-#include "ocean/waves_with_sources.h"
 #include "render/gl_state.h"
 #include "render/slope_statistics.h"
 #include "swell/error.h"
@@ -176,13 +175,11 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
     const bool sourcesChanged = nextHostSources != hostSources;
     const bool bodiesChanged = worldChanged || modelChanged || sourcesChanged || !sameBodies(scene, next);
     SceneBodies nextBodies;
-    std::shared_ptr<const WaveModel> nextBodyModel = bodyModel;
+    std::shared_ptr<const SurfaceQuery> nextBodyModel = bodyModel;
     if (bodiesChanged) {
         // The bodies float on the host's sources too.
-        nextBodyModel = nextHostSources.empty()
-            ? nextModelPtr
-            : std::make_shared<const WavesWithSources>(nextModelPtr, nextHostSources);
-        nextBodies = buildBodies(worldChanged ? nextWorld : world, inSeaFrame(next), *nextBodyModel);
+        nextBodyModel = std::make_shared<const ComposedSurface>(nextModelPtr, nextHostSources);
+        nextBodies = buildBodies(worldChanged ? nextWorld : world, inSeaFrame(next), nextBodyModel);
     }
 
     scene = next;
@@ -422,7 +419,7 @@ DrawnSurface Renderer::drawnSurface(const Camera& camera, double time_s) const
     std::shared_ptr<const WakeFrame> wake;
     if (s.bodies.wake()) {
         if (!s.queryBodies)
-            s.queryBodies = buildBodies(s.world, s.seaScene, *s.bodyModel);
+            s.queryBodies = buildBodies(s.world, s.seaScene, s.bodyModel);
         s.queryBodies->advanceTo(time_s);
         wake = std::make_shared<const WakeFrame>(s.queryBodies->wakeFrameAt(time_s));
     }

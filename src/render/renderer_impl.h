@@ -26,6 +26,7 @@
 #include "render/waterline.h"
 #include "render/world.h"
 #include "objects/wake_surface.h"
+#include "swell/composed_surface.h"
 #include "swell/error.h"
 #include "swell/grid.h"
 #include "swell/scene_changes.h"
@@ -62,7 +63,7 @@ struct Renderer::Impl {
     // The host's surface sources (Renderer::addSurfaceSource), drawn after the wake.
     std::vector<std::shared_ptr<const SurfaceSource>> hostSources;
     // What the floating bodies float on: model() plus the host's sources.
-    std::shared_ptr<const WaveModel> bodyModel;
+    std::shared_ptr<const SurfaceQuery> bodyModel;
     std::unique_ptr<WaveModelGpu> modelGpu;
     double seaMeanSquareSlope = 0.0; // of model(), for the reflection's masking (slope_statistics.h)
     GridShape gridShape;
@@ -216,8 +217,8 @@ struct Renderer::Impl {
     DrawnSurface drawnSurfaceAt(glm::dvec3 viewpointSea, double time_s,
                                 std::vector<std::shared_ptr<const SurfaceSource>> drawn, double level_m) const
     {
-        return DrawnSurface(model(), gridShape, horizonFadeFor(scene.grid, gridShape), viewpointSea, time_s,
-                            std::move(drawn), level_m);
+        return DrawnSurface(std::make_shared<const ComposedSurface>(overrideModel ? overrideModel : sceneModel, std::move(drawn)),
+                            gridShape, horizonFadeFor(scene.grid, gridShape), viewpointSea, time_s, level_m);
     }
 
     // The wave model's work, for advanceTo()'s frame (simulationGpu) or

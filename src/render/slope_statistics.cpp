@@ -4,7 +4,7 @@
 
 namespace swell::detail {
 
-double meanSquareSlope(const WaveModel& model)
+double meanSquareSlope(const SurfaceQuery& model)
 {
     constexpr int kSamples = 4096;
     constexpr double kSide_m = 2000.0;

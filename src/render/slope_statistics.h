@@ -2,7 +2,7 @@
 // a reflected ray that leaves the water at a low angle meets another wave.
 #pragma once
 
-#include "swell/wave_model.h"
+#include "swell/surface_query.h"
 
 namespace swell::detail {
 
@@ -10,6 +10,6 @@ namespace swell::detail {
 // directions together) over the surface at time 0: 4096 rest points of a
 // 2 km square, at fixed quasi-random places (the R2 sequence), so the same
 // model always gives the same value. Flat water gives 0.
-double meanSquareSlope(const WaveModel& model);
+double meanSquareSlope(const SurfaceQuery& model);
 
 } // namespace swell::detail

@@ -4,6 +4,7 @@
 #include "swell/shader_constants.h"
 
 #include <epoxy/gl.h>
+#include <glm/vec4.hpp>
 
 #include <array>
 
@@ -22,7 +23,7 @@ static_assert(sizeof(GpuAnswer) == (3 + SWELL_PROBE_BLOCK * SWELL_PROBE_BLOCK) *
 
 } // namespace
 
-std::vector<ProbedPoint> answerOnCpu(const std::vector<glm::dvec2>& points, const WaveModel& model,
+std::vector<ProbedPoint> answerOnCpu(const std::vector<glm::dvec2>& points, const SurfaceQuery& model,
                                      const DrawnSurface& drawn, double time_s)
 {
     std::vector<ProbedPoint> out(points.size());

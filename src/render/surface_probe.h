@@ -18,7 +18,7 @@
 #include "swell/drawn_surface.h"
 #include "swell/gl/handle.h"
 #include "swell/grid.h"
-#include "swell/wave_model.h"
+#include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -41,7 +41,7 @@ struct ProbedPoint {
 
 // The same answers from the CPU: the model's queries and DrawnSurface (for
 // a model whose CPU queries are cheap, WaveModelGpu::answersFrameQueries).
-std::vector<ProbedPoint> answerOnCpu(const std::vector<glm::dvec2>& points, const WaveModel& model,
+std::vector<ProbedPoint> answerOnCpu(const std::vector<glm::dvec2>& points, const SurfaceQuery& model,
                                      const DrawnSurface& drawn, double time_s);
 
 class SurfaceProbe {

@@ -30,7 +30,7 @@ std::array<glm::dvec3, 4> nearPlaneCorners(const glm::dmat4& inverseViewProj, do
     return corners;
 }
 
-bool eyeUnderwater(glm::dvec3 eye_m, const WaveModel& model, double time_s, double reach_m)
+bool eyeUnderwater(glm::dvec3 eye_m, const SurfaceQuery& model, double time_s, double reach_m)
 {
     if (!eyeWithinReach(eye_m, reach_m))
         return eye_m.y < 0.0;

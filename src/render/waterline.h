@@ -7,7 +7,7 @@
 
 #include "render/render_target.h"
 #include "swell/gl/handle.h"
-#include "swell/wave_model.h"
+#include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>
 #include <glm/mat4x4.hpp>
@@ -39,7 +39,7 @@ std::array<glm::dvec3, 4> nearPlaneCorners(const glm::dmat4& inverseViewProj, do
 // refraction pass renders. An eye beyond the waves' reach (`reach_m`, the
 // most the surface moves from the mean level) is answered without asking
 // the model.
-bool eyeUnderwater(glm::dvec3 eye_m, const WaveModel& model, double time_s, double reach_m);
+bool eyeUnderwater(glm::dvec3 eye_m, const SurfaceQuery& model, double time_s, double reach_m);
 
 // Whether the surface under an eye (relative to the mean level, m) must be
 // asked for to tell which side of it the eye is: only within the waves' reach.

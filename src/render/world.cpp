@@ -89,12 +89,12 @@ glm::dmat4 placedObjectPose(const SceneObject& o, glm::dvec3 position_m, const g
            glm::scale(glm::dmat4(1.0), glm::dvec3(o.scale));
 }
 
-SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel& surface)
+SceneBodies buildBodies(const World& world, const Scene& scene, std::shared_ptr<const SurfaceQuery> surface)
 {
     std::vector<const MeshData*> shapes;
     for (const auto& shape : world.bodyShapes)
         shapes.push_back(shape.get());
-    return SceneBodies(scene, shapes, surface);
+    return SceneBodies(scene, shapes, std::move(surface));
 }
 
 std::vector<glm::dvec2> floatingObjectPoints(const Scene& scene)

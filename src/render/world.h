@@ -54,7 +54,7 @@ struct World {
 };
 
 // The floating bodies of `scene` on `surface`, from the world's shapes.
-SceneBodies buildBodies(const World& world, const Scene& scene, const WaveModel& surface);
+SceneBodies buildBodies(const World& world, const Scene& scene, std::shared_ptr<const SurfaceQuery> surface);
 
 // Builds the meshes and sky of `scene` without touching any current world,
 // so a bad asset leaves the renderer as it was. Throws swell::InputError.

@@ -189,7 +189,7 @@ TEST(FloatingBody, RidesTheWavesAndIsCarriedAlong)
 // times); each still moves exactly as it would alone.
 TEST(FloatingBody, SceneBodiesInLockstepMoveAsEachAlone)
 {
-    const TestWater waves(0.4, 30.0);
+    const auto waves = std::make_shared<const TestWater>(0.4, 30.0);
     const swell::BodyShape shape = box(kBox);
     const swell::detail::MeshData mesh = meshOf(shape);
     swell::Scene scene;
@@ -212,7 +212,7 @@ TEST(FloatingBody, SceneBodiesInLockstepMoveAsEachAlone)
         const swell::SceneObject& o = scene.objects[i];
         swell::BodySettings settings;
         settings.mass_kg = o.density_kg_per_m3 * kBox.x * kBox.y * kBox.z;
-        swell::FloatingBody alone(shape, settings, {o.position_m, o.yaw_deg, o.velocity_m_per_s}, waves, filter);
+        swell::FloatingBody alone(shape, settings, {o.position_m, o.yaw_deg, o.velocity_m_per_s}, *waves, filter);
         for (double t : {0.7, 3.3, 2.0, 9.1}) {
             bodies.advanceTo(t);
             EXPECT_EQ(*bodies.poseAt(i, t), alone.poseAt(t)) << "object " << i << " at " << t << " s";
@@ -224,7 +224,7 @@ TEST(FloatingBody, SceneBodiesInLockstepMoveAsEachAlone)
 // maps model space (scale included) to the world.
 TEST(FloatingBody, AScaledObjectFloatsAsTheBiggerBody)
 {
-    const TestWater flat;
+    const auto flat = std::make_shared<const TestWater>();
     const swell::BodyShape shape = box(kBox);
     const swell::detail::MeshData mesh = meshOf(shape);
     swell::Scene scene;

@@ -22,9 +22,9 @@ using namespace swell;
 namespace {
 
 // A long swell a metre high, so every body heaves and heels.
-const test::TestWater& swellWater()
+std::shared_ptr<const test::TestWater> swellWater()
 {
-    static const test::TestWater water(1.0, 60.0);
+    static const auto water = std::make_shared<const test::TestWater>(1.0, 60.0);
     return water;
 }
 

@@ -45,7 +45,7 @@ struct Meshes {
 
 TEST(WakeBodies, SameSceneAndTimesGiveTheSamePosesAndWakeBitForBit)
 {
-    const TestWater waves(0.3, 25.0);
+    const auto waves = std::make_shared<const TestWater>(0.3, 25.0);
     const Meshes meshes;
     const swell::Scene scene = twoBoxes();
     swell::detail::SceneBodies jumped(scene, meshes.list(), waves), framed(scene, meshes.list(), waves);
@@ -126,7 +126,7 @@ TEST(WakeBodies, StepsTakenAheadOnTheWorkerGiveTheSameFramesBitForBit)
     // One set of bodies steps each frame on the calling thread; the other,
     // after each frame, steps towards the next on its worker (as
     // Renderer::anticipate has it) while the frame's bows are read.
-    const TestWater waves(0.3, 25.0);
+    const auto waves = std::make_shared<const TestWater>(0.3, 25.0);
     const Meshes meshes;
     swell::Scene scene = twoBoxes();
     // Steps before t = 0, so the bows have a full history to read.
@@ -160,7 +160,7 @@ TEST(WakeBodies, StepsAheadStayWithinTheirReach)
 {
     // Never before the last time asked (the bodies would start again),
     // never more than kMaxStepAhead_s past it (the bows keep no more).
-    const TestWater waves(0.3, 25.0);
+    const auto waves = std::make_shared<const TestWater>(0.3, 25.0);
     const Meshes meshes;
     swell::detail::SceneBodies bodies(twoBoxes(), meshes.list(), waves);
     bodies.stepAheadTo(1.0); // before any advanceTo(): nothing to step from
@@ -185,7 +185,7 @@ TEST(WakeBodies, ABodyAtRestRidesThePassingWake)
 {
     // On flat water the buoy lies still; the boat's wake, passing it, moves
     // it. With the wake off it does not move at all.
-    const TestWater flat;
+    const auto flat = std::make_shared<const TestWater>();
     const Meshes meshes;
     swell::Scene scene = twoBoxes();
     swell::detail::SceneBodies with(scene, meshes.list(), flat);
@@ -210,7 +210,7 @@ TEST(WakeBodies, TheDrawnFrameIsTheWaterBodiesSample)
 {
     // At a wake step's time the frame holds that step's heights exactly, so
     // what is drawn there is what the bodies floated on.
-    const TestWater flat;
+    const auto flat = std::make_shared<const TestWater>();
     const Meshes meshes;
     swell::detail::SceneBodies bodies(twoBoxes(), meshes.list(), flat);
     const double t = 200.0 / swell::detail::kWakeStepsPerSecond;
@@ -222,7 +222,7 @@ TEST(WakeBodies, TheDrawnFrameIsTheWaterBodiesSample)
         for (double x = -15.0; x <= 15.0; x += 0.9) {
             const double h = wake.heightAt({x, z}, t);
             EXPECT_EQ(frame.heightAt({x, z}), h) << x << ", " << z;
-            EXPECT_EQ(wake.surface().heightAt({x, z}, t), h) << x << ", " << z;
+            EXPECT_EQ(bodies.surface().heightAt({x, z}, t), h) << x << ", " << z;
             nonZero += std::abs(h) > 1e-3;
         }
     EXPECT_GT(nonZero, 100);

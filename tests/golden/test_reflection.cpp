@@ -326,7 +326,7 @@ bool rayMeetsBox(glm::dvec3 origin, glm::dvec3 r, glm::dvec3 centre_m, double ha
 // height move the point by decimetres, a good part of a ripple. So every
 // height in the band is tried (in steps of an eighth of the band): some
 // (everyHeight: every) one of them must send the ray to the box.
-bool facetSendsRayToBox(const swell::WaveModel& waves, const swell::Camera& camera, double time_s,
+bool facetSendsRayToBox(const swell::SurfaceQuery& waves, const swell::Camera& camera, double time_s,
                         const std::vector<glm::dvec3>& plane, double band_m, int x, int y, glm::dvec3 centre_m,
                         double half_m, bool everyHeight)
 {

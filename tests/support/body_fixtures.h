@@ -3,10 +3,9 @@
 #pragma once
 
 #include "assets/mesh_data.h"
-#include "swell/wave_model_gpu.h" // only to return no GPU half from the test water
 #include "swell/constants.h"
 #include "swell/floating_body.h"
-#include "swell/wave_model.h"
+#include "swell/surface_query.h"
 
 #include <glm/geometric.hpp>
 
@@ -19,15 +18,13 @@ namespace swell::test {
 // Water as a test wants it: flat, or one long-crested sine wave of height
 // amplitude_m moving along +x (vertical displacement only, so the default
 // restPointUnder() is exact).
-class TestWater final : public swell::WaveModel {
+class TestWater final : public swell::SurfaceQuery {
 public:
     explicit TestWater(double amplitude_m = 0.0, double wavelength_m = 40.0) : amplitude_m_(amplitude_m)
     {
         k_ = swell::kTwoPi / wavelength_m;
         omega_ = std::sqrt(swell::kGravity * k_); // deep water: omega^2 = g k
     }
-    std::string_view name() const override { return "test"; }
-    std::string summary() const override { return "test water"; }
     swell::WaveReach reach() const override { return {amplitude_m_, 0.0}; }
     swell::SurfacePoint surfaceAt(glm::dvec2 rest, double t, const swell::SurfaceFilter& filter) const override
     {
@@ -36,10 +33,6 @@ public:
         p.displacement_m.y = filter.heightScale * amplitude_m_ * std::sin(phase);
         p.normal = glm::normalize(glm::dvec3(-filter.heightScale * amplitude_m_ * k_ * std::cos(phase), 1.0, 0.0));
         return p;
-    }
-    std::unique_ptr<swell::WaveModelGpu> createGpu(const swell::gl::ShaderSources&) const override
-    {
-        return nullptr;
     }
 
 private:

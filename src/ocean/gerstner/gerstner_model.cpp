@@ -83,7 +83,7 @@ private:
 
 } // namespace
 
-GerstnerModel::GerstnerModel(WaveSet waves) : waves_(std::move(waves))
+GerstnerSurface::GerstnerSurface(WaveSet waves) : waves_(std::move(waves))
 {
     if (const std::string problem = validate(waves_); !problem.empty())
         throw InputError({}, "waves: " + problem);
@@ -94,26 +94,29 @@ GerstnerModel::GerstnerModel(WaveSet waves) : waves_(std::move(waves))
     heightDeviation_m_ = std::sqrt(variance);
 }
 
+GerstnerModel::GerstnerModel(WaveSet waves) : GerstnerSurface(std::move(waves)) {}
+
 std::string_view GerstnerModel::name() const { return "gerstner"; }
 
 std::string GerstnerModel::summary() const
 {
-    if (waves_.waves.empty())
+    const WaveSet& set = waves();
+    if (set.waves.empty())
         return "no waves";
-    double shortest = waves_.waves.front().wavelength_m, longest = shortest;
-    for (const Wave& w : waves_.waves) {
+    double shortest = set.waves.front().wavelength_m, longest = shortest;
+    for (const Wave& w : set.waves) {
         shortest = std::min(shortest, w.wavelength_m);
         longest = std::max(longest, w.wavelength_m);
     }
-    return fmt::format("{} Gerstner waves, {:.3g} .. {:.3g} m", waves_.waves.size(), shortest, longest);
+    return fmt::format("{} Gerstner waves, {:.3g} .. {:.3g} m", set.waves.size(), shortest, longest);
 }
 
-SurfacePoint GerstnerModel::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+SurfacePoint GerstnerSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     return swell::surfaceAt(waves_, restPoint_m, time_s, filter);
 }
 
-glm::dvec2 GerstnerModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
+glm::dvec2 GerstnerSurface::restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     const bool exact = filter.footprint_m <= 0.0 && filter.heightScale == 1.0;
     return swell::restPointUnder(exact ? waves_ : filteredWaves(waves_, filter), worldPoint_m, time_s);
@@ -121,7 +124,7 @@ glm::dvec2 GerstnerModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s,
 
 std::unique_ptr<WaveModelGpu> GerstnerModel::createGpu(const gl::ShaderSources&) const
 {
-    return std::make_unique<GerstnerGpu>(waves_);
+    return std::make_unique<GerstnerGpu>(waves());
 }
 
 } // namespace swell

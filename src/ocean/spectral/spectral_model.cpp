@@ -16,7 +16,7 @@ namespace swell {
 
 using namespace spectral;
 
-SpectralModel::SpectralModel(const SpectralSettings& settings)
+SpectralSurface::SpectralSurface(const SpectralSettings& settings)
     : settings_(settings),
       field_(std::make_shared<const SpectralField>(
           makeSpectralField(SeaSpectrum(settings.wind), settings.choppiness, settings.seed))),
@@ -39,6 +39,10 @@ SpectralModel::SpectralModel(const SpectralSettings& settings)
     foldThreshold_ = foldThresholdFor(*cpu_, *field_, breakingFraction(settings.wind.windSpeed_mps));
 }
 
+SpectralSurface::~SpectralSurface() = default;
+
+SpectralModel::SpectralModel(const SpectralSettings& settings) : SpectralSurface(settings) {}
+
 SpectralModel::~SpectralModel() = default;
 
 std::string_view SpectralModel::name() const { return "spectral"; }
@@ -50,14 +54,14 @@ std::string SpectralModel::summary() const
                        settings_.wind.windSpeed_mps);
 }
 
-WaveReach SpectralModel::reach() const { return {field_->verticalReach_m, field_->horizontalReach_m}; }
+WaveReach SpectralSurface::reach() const { return {field_->verticalReach_m, field_->horizontalReach_m}; }
 
-SurfacePoint SpectralModel::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+SurfacePoint SpectralSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     return cpu_->surfaceAt(restPoint_m, time_s, filter);
 }
 
-glm::dvec3 SpectralModel::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+glm::dvec3 SpectralSurface::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     return cpu_->displacementAt(restPoint_m, time_s, filter);
 }

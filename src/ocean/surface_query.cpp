@@ -1,21 +1,23 @@
-// What every wave model shares: the rest-point inverse for models without
-// analytic derivatives, and the height query built on it.
+// What every surface query shares: the rest-point inverse for surfaces
+// without analytic derivatives, and the height query built on it.
+#include "swell/surface_query.h"
 #include "swell/wave_model.h"
 
 #include <glm/geometric.hpp>
 
 namespace swell {
 
+SurfaceQuery::~SurfaceQuery() = default;
 WaveModel::~WaveModel() = default;
 
-double WaveModel::heightDeviation_m() const { return 0.25 * reach().vertical_m; }
+double SurfaceQuery::heightDeviation_m() const { return 0.25 * reach().vertical_m; }
 
-glm::dvec3 WaveModel::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+glm::dvec3 SurfaceQuery::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     return surfaceAt(restPoint_m, time_s, filter).displacement_m;
 }
 
-glm::dvec2 WaveModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
+glm::dvec2 SurfaceQuery::restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     // Fixed-point iteration x0 <- p - Dxz(x0): a contraction wherever the
     // surface does not fold (|dDxz/dx0| < 1), converging linearly. Stops
@@ -32,7 +34,7 @@ glm::dvec2 WaveModel::restPointUnder(glm::dvec2 worldPoint_m, double time_s, con
     return rest;
 }
 
-double WaveModel::heightAt(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
+double SurfaceQuery::heightAt(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
 {
     return displacementAt(restPointUnder(worldPoint_m, time_s, filter), time_s, filter).y;
 }
