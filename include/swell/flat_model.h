@@ -1,6 +1,6 @@
 // Flat water: the ocean at rest, a perfect mirror. The simplest wave model;
 // useful for mirror-reflection checks and as the example of adding a model
-// (this header, src/ocean/flat/flat_model.cpp and shaders/ocean/flat.glsl).
+// (this header, src/ocean/flat/gpu/flat_model.cpp and shaders/ocean/flat.glsl).
 #pragma once
 
 #include "swell/export.h"

@@ -1,5 +1,5 @@
 // Flat water: the surface at rest, a perfect mirror. The GLSL twin of
-// swell::FlatModel (src/ocean/flat/flat_model.cpp).
+// swell::FlatModel (src/ocean/flat/gpu/flat_model.cpp).
 #ifndef SWELL_OCEAN_FLAT_GLSL
 #define SWELL_OCEAN_FLAT_GLSL
 

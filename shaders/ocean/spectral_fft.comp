@@ -30,7 +30,7 @@ layout(binding = 2, rgba32f) uniform image2DArray spectrumA;
 layout(binding = 3, rgba32f) uniform image2DArray spectrumB;
 // The shading's copy of the derivatives (layers 0 .. SWELL_FFT_CASCADES - 1)
 // and the slopes' second moments (the next SWELL_FFT_CASCADES), in half
-// floats: what the water's pixels filter (src/ocean/spectral/spectral_model.cpp).
+// floats: what the water's pixels filter (src/ocean/spectral/gpu/spectral_gpu.cpp).
 layout(binding = 4, rgba16f) uniform writeonly image2DArray slopes;
 #else
 layout(binding = 2, rgba32f) uniform writeonly image2DArray spectrumA;

@@ -1,5 +1,5 @@
 // The C++ mirrors of the std140 blocks must match what the driver lays out.
-#include "ocean/gerstner/gerstner_uniforms.h"
+#include "ocean/gerstner/gpu/gerstner_uniforms.h"
 #include "render/caustics_map.h"
 #include "render/cloud_shadow_map.h"
 #include "render/gpu_types.h"

@@ -76,7 +76,7 @@ public:
     // runs on the thread that made cascade c as soon as its fields are there
     // (so what the caller does with a cascade's fields shares the split).
     // Not thread-safe, as fieldsAt(); what an interactive view uploads on a
-    // software rasteriser (spectral_gpu_model.cpp), whose other core is idle
+    // software rasteriser (spectral/gpu/spectral_gpu.cpp), whose other core is idle
     // while one thread transforms.
     const Fields& fieldsAt(double time_s, detail::Worker& worker,
                            const std::function<void(const Fields& fields, int cascade)>& made) const;

@@ -1,10 +1,10 @@
-// GerstnerModel: the Gerstner sum behind swell::WaveModel, and its GPU half,
-// which uploads the waves longest first with their phases at the grid centre.
+// GerstnerModel: the Gerstner sum's GPU half, which uploads the waves
+// longest first with their phases at the grid centre; its CPU queries are
+// GerstnerSurface's (ocean/gerstner/gerstner_surface.cpp).
 #include "swell/gerstner_model.h"
 
-#include "ocean/gerstner/gerstner_uniforms.h"
+#include "ocean/gerstner/gpu/gerstner_uniforms.h"
 #include "swell/wave_model_gpu.h"
-#include "swell/error.h"
 #include "swell/gl/handle.h"
 
 #include <fmt/format.h>
@@ -83,17 +83,6 @@ private:
 
 } // namespace
 
-GerstnerSurface::GerstnerSurface(WaveSet waves) : waves_(std::move(waves))
-{
-    if (const std::string problem = validate(waves_); !problem.empty())
-        throw InputError({}, "waves: " + problem);
-    reach_ = waveReach(waves_);
-    double variance = 0.0;
-    for (const Wave& w : waves_.waves)
-        variance += 0.5 * w.amplitude_m * w.amplitude_m;
-    heightDeviation_m_ = std::sqrt(variance);
-}
-
 GerstnerModel::GerstnerModel(WaveSet waves) : GerstnerSurface(std::move(waves)) {}
 
 std::string_view GerstnerModel::name() const { return "gerstner"; }
@@ -109,17 +98,6 @@ std::string GerstnerModel::summary() const
         longest = std::max(longest, w.wavelength_m);
     }
     return fmt::format("{} Gerstner waves, {:.3g} .. {:.3g} m", set.waves.size(), shortest, longest);
-}
-
-SurfacePoint GerstnerSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
-{
-    return swell::surfaceAt(waves_, restPoint_m, time_s, filter);
-}
-
-glm::dvec2 GerstnerSurface::restPointUnder(glm::dvec2 worldPoint_m, double time_s, const SurfaceFilter& filter) const
-{
-    const bool exact = filter.footprint_m <= 0.0 && filter.heightScale == 1.0;
-    return swell::restPointUnder(exact ? waves_ : filteredWaves(waves_, filter), worldPoint_m, time_s);
 }
 
 std::unique_ptr<WaveModelGpu> GerstnerModel::createGpu(const gl::ShaderSources&) const

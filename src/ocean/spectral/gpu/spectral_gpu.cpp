@@ -4,8 +4,8 @@
 // slopes and their second moments in half floats for shading, and mipmap
 // those; then the whitecaps' foam steps. On a software rasteriser in an
 // interactive frame the fields come from the CPU twin's FFTs instead.
-// Named *_model.cpp so that it builds with the GL half (src/CMakeLists.txt).
-#include "ocean/spectral/spectral_gpu.h"
+// In a gpu/ folder, so it builds with the GL half (src/CMakeLists.txt).
+#include "ocean/spectral/gpu/spectral_gpu.h"
 
 #include "core/worker.h"
 #include "gl/mip_downsample.h"

@@ -1,4 +1,4 @@
-// The spectral model's GPU half (spectral_gpu_model.cpp), for
+// The spectral model's GPU half (spectral_gpu.cpp), for
 // SpectralModel::createGpu. Library-internal.
 #pragma once
 

@@ -1,0 +1,53 @@
+// SpectralSurface: the spectral field behind swell::SurfaceQuery, queried
+// through its CPU twin (spectral_cpu.h); the fold threshold its whitecaps
+// are made below, from the field itself.
+#include "swell/spectral_model.h"
+
+#include "ocean/spectral/spectral_cpu.h"
+#include "ocean/spectral/whitecaps.h"
+#include "ocean/spectral/world_foam.h"
+
+#include <cmath>
+
+namespace swell {
+
+using namespace spectral;
+
+SpectralSurface::SpectralSurface(const SpectralSettings& settings)
+    : settings_(settings),
+      field_(std::make_shared<const SpectralField>(
+          makeSpectralField(SeaSpectrum(settings.wind), settings.choppiness, settings.seed))),
+      cpu_(std::make_unique<CpuSurface>(field_))
+{
+    // (fieldsAt is not thread-safe; nothing else can reach cpu_ while it is
+    // being built.)
+    const CpuSurface::Fields& fields = cpu_->fieldsAt(0.0);
+    // The cascades' bands are disjoint, so their height variances add.
+    double variance = 0.0;
+    for (int c = 0; c < kCascades; ++c) {
+        double sum = 0.0;
+        for (const float h : fields.values[size_t(c)][1])
+            sum += double(h) * double(h);
+        variance += sum / double(fields.values[size_t(c)][1].size());
+    }
+    heightDeviation_m_ = std::sqrt(variance);
+    // The fold threshold from the field itself, at t = 0: its J
+    // distribution is stationary, so any time would do.
+    foldThreshold_ = foldThresholdFor(*cpu_, *field_, breakingFraction(settings.wind.windSpeed_mps));
+}
+
+SpectralSurface::~SpectralSurface() = default;
+
+WaveReach SpectralSurface::reach() const { return {field_->verticalReach_m, field_->horizontalReach_m}; }
+
+SurfacePoint SpectralSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    return cpu_->surfaceAt(restPoint_m, time_s, filter);
+}
+
+glm::dvec3 SpectralSurface::displacementAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
+{
+    return cpu_->displacementAt(restPoint_m, time_s, filter);
+}
+
+} // namespace swell
