@@ -3,7 +3,7 @@
 // spectral.glsl) and the surface sources' foam (the bodies' wake: its
 // stern wash and breaking crests; surface_sources.glsl) alike. Its texture
 // is gradient noise on lattices turned from one another and warped
-// (src/ocean/spectral/foam_texture.h: no cells, seams or repetition at any
+// (src/ocean/foam/foam_texture.h: no cells, seams or repetition at any
 // distance), anchored to the world at the rest point, so it rides the
 // water's own horizontal motion with the waves; each octave fades into its
 // mean where the pixel no longer resolves it. Each caller passes its own

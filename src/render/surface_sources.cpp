@@ -1,7 +1,6 @@
 #include "render/surface_sources.h"
 
-#include "ocean/spectral/foam_texture.h"
-#include "ocean/spectral/whitecaps.h"
+#include "ocean/foam/foam_texture.h"
 #include "swell/error.h"
 #include "swell/shader_constants.h"
 
@@ -69,14 +68,14 @@ void SurfaceSourceParametersBuffer::upload(const std::vector<std::shared_ptr<con
     // is relative to it), so the foam's texture stays on the water however
     // the origin moves; no streaks (a wake's foam lies along the course,
     // not the wind).
-    const auto maps = spectral::foamNoiseMaps(glm::dvec2(renderOrigin_m.x, renderOrigin_m.z), glm::dvec2(1.0, 0.0), 1.0);
+    const auto maps = foam::foamNoiseMaps(glm::dvec2(renderOrigin_m.x, renderOrigin_m.z), glm::dvec2(1.0, 0.0), 1.0);
     for (std::size_t i = 0; i < maps.size(); ++i) {
         const glm::mat2& m = maps[i].map;
         u.foamNoise[i].map = glm::vec4(m[0][0], m[0][1], m[1][0], m[1][1]);
         u.foamNoise[i].offset_cells = maps[i].offset_cells;
         u.foamNoise[i].cyclesPerMetre = maps[i].cyclesPerMetre;
     }
-    u.breakingFoamAmount = float(std::exp(-spectral::kBreakingFoamAge_s / SWELL_SOURCE_FOAM_LIFETIME_S));
+    u.breakingFoamAmount = float(std::exp(-foam::kBreakingFoamAge_s / SWELL_SOURCE_FOAM_LIFETIME_S));
     if (!buffer_) {
         buffer_ = gl::Buffer::create();
         glNamedBufferStorage(buffer_.id(), sizeof(u), nullptr, GL_DYNAMIC_STORAGE_BIT);

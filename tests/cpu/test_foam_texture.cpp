@@ -1,5 +1,5 @@
-// The lattices of the whitecaps' texture (src/ocean/spectral/foam_texture.h).
-#include "ocean/spectral/foam_texture.h"
+// The lattices of the whitecaps' texture (src/ocean/foam/foam_texture.h).
+#include "ocean/foam/foam_texture.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 namespace {
 
 using namespace swell;
-using namespace swell::spectral;
+using namespace swell::foam;
 
 // A lattice cell index modulo the noise's period, in 0..period.
 double wrapped(double cells)

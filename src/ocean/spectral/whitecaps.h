@@ -27,12 +27,6 @@ namespace swell::spectral {
 // Monahan's cover it reads as noise).
 inline constexpr int kFoamCascades = 2;
 
-// Foam younger than this is the breaking's own: the crest folding now and
-// the second after it (a spilling breaker's active phase lasts about a
-// wave period's fraction, a second or two at the wavelengths of cascades 0
-// and 1), drawn dense and bright over the older foam thinning into lace.
-inline constexpr double kBreakingFoamAge_s = 1.0;
-
 // How many times its active area a breaking whitens once its foam has
 // spread and faded (3.85 s lifetime), as the mean covered share the shading
 // draws. Measured on rendered frames with a fixed factor of 2.8: 6.51, 2.81,

@@ -10,7 +10,7 @@
 #include "core/worker.h"
 #include "gl/mip_downsample.h"
 #include "ocean/spectral/field_texels.h"
-#include "ocean/spectral/foam_texture.h"
+#include "ocean/foam/foam_texture.h"
 #include "ocean/spectral/foam_replay.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/whitecaps.h"
@@ -52,7 +52,7 @@ struct alignas(16) CascadeUniform {
 };
 static_assert(sizeof(CascadeUniform) == 32 + 32 * kWarpWaves);
 static_assert(offsetof(CascadeUniform, warp) == 32);
-// One lattice of the foam's texture (swell::spectral::FoamNoiseMap).
+// One lattice of the foam's texture (swell::foam::FoamNoiseMap).
 struct alignas(16) FoamNoiseUniform {
     glm::vec4 map; // column-major: cells per metre along x, then along z
     glm::vec2 offset_cells;
@@ -65,8 +65,8 @@ struct alignas(16) SpectralUniforms {
     float foamStreak;
     float unresolvedSlopeVariance; // of the waves shorter than the last cascade's
     glm::vec4 foamLevels[kFoamLevels]; // the grid centre in texels modulo N (x, y), texels per metre
-    FoamNoiseUniform foamNoise[kFoamNoiseMaps];
-    float breakingFoamAmount; // foam above this amount is a breaking's own (kBreakingFoamAge_s)
+    FoamNoiseUniform foamNoise[foam::kFoamNoiseMaps];
+    float breakingFoamAmount; // foam above this amount is a breaking's own (foam::kBreakingFoamAge_s)
 };
 
 // Foam fades out over this much J above the threshold, a fifth of the
@@ -262,14 +262,14 @@ public:
         for (int level = 0; level < kFoamLevels; ++level)
             u.foamLevels[level] =
                 glm::vec4(windows_[size_t(level)].originTexels, float(1.0 / foamTexel_m(*field_, level)), 0.0f);
-        const auto noise = foamNoiseMaps(gridCenter_m, glm::dvec2(u.windDirection), double(u.foamStreak));
-        for (int i = 0; i < kFoamNoiseMaps; ++i) {
-            const FoamNoiseMap& m = noise[size_t(i)];
+        const auto noise = foam::foamNoiseMaps(gridCenter_m, glm::dvec2(u.windDirection), double(u.foamStreak));
+        for (int i = 0; i < foam::kFoamNoiseMaps; ++i) {
+            const foam::FoamNoiseMap& m = noise[size_t(i)];
             u.foamNoise[i] = {glm::vec4(m.map[0], m.map[1]), m.offset_cells, m.cyclesPerMetre};
         }
         // Foam decays as exp(-age / lifetime) from 1 where the crest folds.
         const double lifetime = settings_.foamLifetime_s > 0.0 ? settings_.foamLifetime_s : 1.0;
-        u.breakingFoamAmount = float(std::exp(-kBreakingFoamAge_s / lifetime));
+        u.breakingFoamAmount = float(std::exp(-foam::kBreakingFoamAge_s / lifetime));
         glNamedBufferSubData(uniforms_.id(), 0, sizeof(u), &u);
     }
 

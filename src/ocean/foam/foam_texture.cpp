@@ -1,8 +1,9 @@
-#include "ocean/spectral/foam_texture.h"
+// The whitecaps' texture lattices (foam_texture.h).
+#include "ocean/foam/foam_texture.h"
 
 #include <cmath>
 
-namespace swell::spectral {
+namespace swell::foam {
 
 namespace {
 
@@ -42,4 +43,4 @@ std::array<FoamNoiseMap, kFoamNoiseMaps> foamNoiseMaps(glm::dvec2 gridCenter_m, 
     return maps;
 }
 
-} // namespace swell::spectral
+} // namespace swell::foam
