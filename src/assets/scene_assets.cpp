@@ -133,4 +133,18 @@ SceneAssets loadSceneAssets(const Scene& scene)
     return assets;
 }
 
+SceneShapes::SceneShapes(const SceneAssets& assets)
+{
+    for (const ObjectAssets& o : assets.objects)
+        objects.push_back(o.hullVolume->indices.empty() ? o.mesh : o.hullVolume);
+}
+
+std::vector<const MeshData*> SceneShapes::list() const
+{
+    std::vector<const MeshData*> shapes;
+    for (const std::shared_ptr<const MeshData>& shape : objects)
+        shapes.push_back(shape.get());
+    return shapes;
+}
+
 } // namespace swell::detail

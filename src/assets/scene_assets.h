@@ -37,4 +37,16 @@ struct SceneAssets {
 // the file itself, "FILE: objects[2].path: problem".
 SceneAssets loadSceneAssets(const Scene& scene);
 
+// The closed shapes a scene's floating rigid bodies are built from (CPU
+// data, model space), apart from what the GPU draws: per scene object, its
+// hull volume when it has one, else its model.
+struct SceneShapes {
+    std::vector<std::shared_ptr<const MeshData>> objects; // one per Scene::objects entry, in order
+
+    SceneShapes() = default;
+    explicit SceneShapes(const SceneAssets& assets);
+    // The shapes as SceneBodies takes them (owned here), in order.
+    std::vector<const MeshData*> list() const;
+};
+
 } // namespace swell::detail

@@ -1,9 +1,9 @@
 // The ocean renderer: owns the GPU state of a scene (render/renderer_impl.h).
 // This file: the public calls, the simulation (advanceTo) and scene changes
 // (apply); one view's passes are render/view_passes.cpp. Programs are
-// render/programs.*, the world's assets and poses render/world.*, the shared
-// uniforms render/frame_uniforms.*; the surface comes from a
-// swell::WaveModel, never from a particular model.
+// render/programs.*, the world's assets render/world.* (its objects' poses
+// objects/placement.*), the shared uniforms render/frame_uniforms.*; the
+// surface comes from a swell::WaveModel, never from a particular model.
 #include "render/renderer_impl.h"
 
 #include "render/gl_state.h"
@@ -169,8 +169,12 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
     }
     const bool worldChanged = first || hasEffect(effects, ParameterEffect::World);
     World nextWorld;
-    if (worldChanged)
-        nextWorld = buildWorld(next);
+    SceneShapes nextShapes;
+    if (worldChanged) {
+        const SceneAssets assets = loadSceneAssets(next);
+        nextWorld = buildWorld(next, assets);
+        nextShapes = SceneShapes(assets);
+    }
     // Bodies start again from their start when what moves them changed.
     const bool sourcesChanged = nextHostSources != hostSources;
     const bool bodiesChanged = worldChanged || modelChanged || sourcesChanged || !sameBodies(scene, next);
@@ -179,7 +183,7 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
     if (bodiesChanged) {
         // The bodies float on the host's sources too.
         nextBodyModel = std::make_shared<const ComposedSurface>(nextModelPtr, nextHostSources);
-        nextBodies = buildBodies(worldChanged ? nextWorld : world, inSeaFrame(next), nextBodyModel);
+        nextBodies = buildBodies(worldChanged ? nextShapes : shapes, inSeaFrame(next), nextBodyModel);
     }
 
     scene = next;
@@ -198,6 +202,7 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
     }
     if (worldChanged) {
         world = std::move(nextWorld);
+        shapes = std::move(nextShapes);
         bakedSky.reset();
     }
     hostSources = std::move(nextHostSources);
@@ -419,7 +424,7 @@ DrawnSurface Renderer::drawnSurface(const Camera& camera, double time_s) const
     std::shared_ptr<const WakeFrame> wake;
     if (s.bodies.wake()) {
         if (!s.queryBodies)
-            s.queryBodies = buildBodies(s.world, s.seaScene, s.bodyModel);
+            s.queryBodies = buildBodies(s.shapes, s.seaScene, s.bodyModel);
         s.queryBodies->advanceTo(time_s);
         wake = std::make_shared<const WakeFrame>(s.queryBodies->wakeFrameAt(time_s));
     }

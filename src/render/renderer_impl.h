@@ -25,6 +25,7 @@
 #include "render/water_grid.h"
 #include "render/waterline.h"
 #include "render/world.h"
+#include "objects/placement.h"
 #include "objects/wake_surface.h"
 #include "swell/composed_surface.h"
 #include "swell/error.h"
@@ -76,6 +77,7 @@ struct Renderer::Impl {
     gl::VertexArray emptyVao;
     WaterGrid waterGrid;
     World world;
+    SceneShapes shapes; // what the world's rigid bodies are built from
     RenderTarget reflection, refraction, output;
     WaterlineMask waterline;
     // Where the main pass draws when anti-aliased or scaled (render_target.h).

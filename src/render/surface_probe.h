@@ -6,7 +6,7 @@
 // spectral model transform every cascade on the CPU at each new time.
 //
 // For each query point the GPU gives the exact surface's rest point under it
-// (the fixed-point iteration of swell::WaveModel::restPointUnder) with the
+// (the fixed-point iteration of swell::SurfaceQuery::restPointUnder) with the
 // surface there, and the drawn grid's vertices round the cell over that rest
 // point; the CPU picks the triangle under the point from those vertices with
 // DrawnSurface's own search (core/drawn_search.h). Where the triangle lies
@@ -15,6 +15,7 @@
 // Library-internal.
 #pragma once
 
+#include "core/probed_point.h"
 #include "swell/drawn_surface.h"
 #include "swell/gl/handle.h"
 #include "swell/grid.h"
@@ -28,16 +29,6 @@
 #include <vector>
 
 namespace swell::detail {
-
-// One query's answer, in the frame the points were given in (x, z as asked;
-// heights relative to the origin's y).
-struct ProbedPoint {
-    glm::dvec2 rest_m{0.0};           // the exact surface's rest point under the point
-    glm::dvec3 displacement_m{0.0};   // the exact surface's displacement there, m
-    glm::dvec3 normal{0.0, 1.0, 0.0}; // its unit normal
-    std::optional<DrawnPoint> drawn;  // the drawn water under the point
-    bool drawnOnCpu = false;          // answered on the CPU: all of it (answerOnCpu), or its triangle, which lay beyond the GPU's block
-};
 
 // The same answers from the CPU: the model's queries and DrawnSurface (for
 // a model whose CPU queries are cheap, WaveModelGpu::answersFrameQueries).

@@ -1,7 +1,6 @@
-// The world's GPU assets, object poses and reflection bounds.
+// The world's GPU assets and reflection bounds.
 #include "render/world.h"
 
-#include "assets/scene_assets.h"
 #include "swell/error.h"
 #include "swell/image.h"
 
@@ -15,10 +14,9 @@
 
 namespace swell::detail {
 
-World buildWorld(const Scene& from)
+World buildWorld(const Scene& from, const SceneAssets& assets)
 {
-    // Every file is read and checked on the CPU first (assets/scene_assets.h); only uploads here.
-    const SceneAssets assets = loadSceneAssets(from);
+    // Every file was read and checked on the CPU first (assets/scene_assets.h); only uploads here.
     World world;
     if (from.showTerrain) {
         world.islandLevels =
@@ -38,7 +36,6 @@ World buildWorld(const Scene& from)
         }
         world.meshBounds_m.emplace_back(lo, hi);
         world.hullVolumes.push_back(o.hullVolume->indices.empty() ? nullptr : std::make_unique<GpuMesh>(*o.hullVolume));
-        world.bodyShapes.push_back(o.hullVolume->indices.empty() ? o.mesh : o.hullVolume);
     }
     if (!assets.skyFaces.empty()) {
         const std::vector<Image>& faces = assets.skyFaces;
@@ -56,71 +53,6 @@ World buildWorld(const Scene& from)
         glTextureParameteri(world.skyCube.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
     return world;
-}
-
-namespace {
-
-glm::dmat4 objectPose(const SceneObject& o, const ProbedPoint* water)
-{
-    glm::dvec3 position = o.position_m;
-    glm::dmat4 tilt(1.0);
-    if (water) {
-        // On the water the user sees: the grid's triangles, which leave out
-        // the waves their cells cannot carry (the exact surface only where
-        // no triangle is found).
-        position.y += water->drawn ? water->drawn->position_m.y : water->displacement_m.y;
-        // A body larger than the short waves does not follow every ripple:
-        // tilt half way towards the surface normal.
-        const glm::dvec3 up = glm::normalize(glm::mix(glm::dvec3(0, 1, 0), water->normal, 0.5));
-        const glm::dvec3 axis = glm::cross(glm::dvec3(0, 1, 0), up);
-        const double s = glm::length(axis);
-        if (s > 1e-9)
-            tilt = glm::rotate(glm::dmat4(1.0), std::asin(std::min(s, 1.0)), axis / s);
-    }
-    return placedObjectPose(o, position, tilt);
-}
-
-} // namespace
-
-glm::dmat4 placedObjectPose(const SceneObject& o, glm::dvec3 position_m, const glm::dmat4& tilt)
-{
-    return glm::translate(glm::dmat4(1.0), position_m) * tilt *
-           glm::rotate(glm::dmat4(1.0), glm::radians(o.yaw_deg), glm::dvec3(0, 1, 0)) *
-           glm::scale(glm::dmat4(1.0), glm::dvec3(o.scale));
-}
-
-SceneBodies buildBodies(const World& world, const Scene& scene, std::shared_ptr<const SurfaceQuery> surface)
-{
-    std::vector<const MeshData*> shapes;
-    for (const auto& shape : world.bodyShapes)
-        shapes.push_back(shape.get());
-    return SceneBodies(scene, shapes, std::move(surface));
-}
-
-std::vector<glm::dvec2> floatingObjectPoints(const Scene& scene)
-{
-    std::vector<glm::dvec2> points;
-    for (const SceneObject& o : scene.objects)
-        if (o.floats && !o.isRigidBody())
-            points.emplace_back(o.position_m.x, o.position_m.z);
-    return points;
-}
-
-std::vector<glm::dmat4> objectPoses(const Scene& scene, const std::vector<ProbedPoint>& water, SceneBodies& bodies,
-                                    double time_s)
-{
-    std::vector<glm::dmat4> poses;
-    poses.reserve(scene.objects.size());
-    bodies.advanceTo(time_s);
-    std::size_t floating = 0;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& o = scene.objects[i];
-        if (const std::optional<glm::dmat4> body = bodies.poseAt(i, time_s))
-            poses.push_back(*body);
-        else
-            poses.push_back(objectPose(o, o.floats && !o.isRigidBody() ? &water.at(floating++) : nullptr));
-    }
-    return poses;
 }
 
 int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,

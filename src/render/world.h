@@ -1,18 +1,15 @@
 // What the world draws besides the water: the island, one mesh per scene
 // object (and the closed volume of each open hull), and the sky cubemap;
-// where each object stands this frame; and the boxes that bound them all for
-// the reflection march.
+// and the boxes that bound them all for the reflection march. Where each
+// object stands is objects/placement.h's.
 #pragma once
 
 #include "render/gpu_types.h"
 #include "render/mesh.h"
-#include "render/surface_probe.h"
 #include "assets/island_levels.h"
-#include "assets/mesh_data.h"
-#include "objects/scene_bodies.h"
-#include "swell/drawn_surface.h"
+#include "assets/scene_assets.h"
 #include "swell/scene.h"
-#include "swell/wave_model.h"
+#include "swell/surface_query.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -47,37 +44,13 @@ struct World {
     std::vector<std::pair<glm::dvec3, glm::dvec3>> meshBounds_m;
     // Per scene object, the closed volume of its open hull, or null (see Renderer's drawHullVolumes).
     std::vector<std::unique_ptr<GpuMesh>> hullVolumes;
-    // Per scene object, the closed shape a floating rigid body is built from:
-    // its hull volume when it has one, else its mesh (CPU data, model space).
-    std::vector<std::shared_ptr<const MeshData>> bodyShapes;
     gl::Texture skyCube;
 };
 
-// The floating bodies of `scene` on `surface`, from the world's shapes.
-SceneBodies buildBodies(const World& world, const Scene& scene, std::shared_ptr<const SurfaceQuery> surface);
-
-// Builds the meshes and sky of `scene` without touching any current world,
-// so a bad asset leaves the renderer as it was. Throws swell::InputError.
-World buildWorld(const Scene& scene);
-
-// Where the frame asks for the water under its floating objects (those that
-// ride the waves without being rigid bodies), x, z in the sea frame, m, in
-// the scene's object order.
-std::vector<glm::dvec2> floatingObjectPoints(const Scene& scene);
-
-// Each object's transform (object to absolute world, m) at time_s:
-// rigid bodies where `bodies` has stepped them to time_s (on the surface
-// their own filter gives, from the scene alone: swell/floating_body.h);
-// other floating objects sit on the water as drawn (the grid's triangles)
-// at their position, and tilt with the exact surface's normal: `water`
-// holds the frame's answers for floatingObjectPoints(), in its order.
-// Computed once per simulated time; every view and pass draws with them.
-std::vector<glm::dmat4> objectPoses(const Scene& scene, const std::vector<ProbedPoint>& water, SceneBodies& bodies,
-                                    double time_s);
-
-// An object's transform standing at position_m (sea frame), tilted by
-// `tilt`, turned by its yaw and scaled: a fixed object's at its own position.
-glm::dmat4 placedObjectPose(const SceneObject& o, glm::dvec3 position_m, const glm::dmat4& tilt = glm::dmat4(1.0));
+// Uploads the meshes and sky of `scene`, read into `assets`
+// (loadSceneAssets), without touching any current world, so a bad asset
+// leaves the renderer as it was.
+World buildWorld(const Scene& scene, const SceneAssets& assets);
 
 // Fills boxes holding all world geometry, relative to the render origin: a
 // reflected ray that misses them all can only meet the sky. Returns the

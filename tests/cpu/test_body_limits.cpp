@@ -28,7 +28,7 @@ std::shared_ptr<const test::TestWater> swellWater()
     return water;
 }
 
-// The shape a scene gives a built-in's body (render/world.cpp): its hull
+// The shape a scene gives a built-in's body (assets/scene_assets.h, SceneShapes): its hull
 // volume when it has one, else the model.
 detail::MeshData shapeOf(const std::string& path)
 {
