@@ -78,6 +78,8 @@ enum class ParameterEffect : unsigned {
     Grid = 1u << 1,     // the water grid's index buffer is rebuilt
     Programs = 1u << 2, // the shader programs are rebuilt (a #define variant)
     World = 1u << 3,    // meshes and the sky are built again (asset files are read)
+    Bodies = 1u << 4,   // the floating bodies and their wake start again (what moves them changed;
+                        // objects that are bodies in neither scene move none)
 };
 
 constexpr ParameterEffect operator|(ParameterEffect a, ParameterEffect b)

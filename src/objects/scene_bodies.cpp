@@ -5,6 +5,7 @@
 #include "swell/composed_surface.h"
 #include "swell/error.h"
 #include "swell/grid.h"
+#include "swell/parameters.h"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -31,22 +32,27 @@ SurfaceFilter bodySurfaceFilter(const Scene& scene)
 
 bool sameBodies(const Scene& a, const Scene& b)
 {
-    if (a.objects.size() != b.objects.size() || a.grid.resolution != b.grid.resolution ||
-        a.grid.radius_m != b.grid.radius_m || a.grid.layout != b.grid.layout || a.camera.far_m != b.camera.far_m)
+    if (a.objects.size() != b.objects.size())
         return false;
-    for (std::size_t i = 0; i < a.objects.size(); ++i) {
-        const SceneObject &x = a.objects[i], &y = b.objects[i];
-        if (x.isRigidBody() != y.isRigidBody())
+    // What moves the bodies is what the parameter table says it is.
+    for (const Parameter& p : parameters()) {
+        if (!hasEffect(p.effect, ParameterEffect::Bodies))
+            continue;
+        if (p.list == ParameterList::Objects) {
+            for (std::size_t i = 0; i < a.objects.size(); ++i)
+                if ((a.objects[i].isRigidBody() || b.objects[i].isRigidBody()) && p.get(a, i) != p.get(b, i))
+                    return false;
+            continue;
+        }
+        if (isPresent(p, a) != isPresent(p, b) || listSize(a, p.list) != listSize(b, p.list))
             return false;
-        if (x.isRigidBody() &&
-            (x.position_m != y.position_m || x.yaw_deg != y.yaw_deg || x.scale != y.scale || x.mass_kg != y.mass_kg ||
-             x.density_kg_per_m3 != y.density_kg_per_m3 || x.centerOfMassOffset_m != y.centerOfMassOffset_m ||
-             x.inertia_kg_m2 != y.inertia_kg_m2 || x.velocity_m_per_s != y.velocity_m_per_s ||
-             x.dampingRatio != y.dampingRatio))
-            return false;
+        if (!isPresent(p, a))
+            continue;
+        for (std::size_t i = 0; i < listSize(a, p.list); ++i)
+            if (p.get(a, i) != p.get(b, i))
+                return false;
     }
-    return bodiesStart_s(a) == bodiesStart_s(b) && a.wake.enabled == b.wake.enabled && a.wake.cells == b.wake.cells && a.wake.cellSize_m == b.wake.cellSize_m && a.sea.level_m == b.sea.level_m &&
-           a.sea.depth_m == b.sea.depth_m; // the wake's dispersion
+    return true;
 }
 
 namespace {

@@ -35,9 +35,10 @@ class Worker;
 // on where a viewer's camera wanders.
 SurfaceFilter bodySurfaceFilter(const Scene& scene);
 
-// Whether two scenes' objects would move alike: the same rigid bodies, placed
-// and built the same way (paths and hull nodes are compared with the assets),
-// with the same wake.
+// Whether two scenes' objects would move alike: as many objects, and the
+// same values of every parameter the table marks ParameterEffect::Bodies
+// (an object's only where it is a rigid body in either scene). Paths and
+// hull nodes are the assets' (ParameterEffect::World).
 bool sameBodies(const Scene& a, const Scene& b);
 
 class SceneBodies {

@@ -242,3 +242,30 @@ TEST(FloatingBody, AScaledObjectFloatsAsTheBiggerBody)
 }
 
 } // namespace
+
+// The bodies start again when, and only when, a parameter the table marks
+// ParameterEffect::Bodies changes (an object's only where it is a body).
+TEST(FloatingBody, TheParameterTableSaysWhatRestartsTheBodies)
+{
+    swell::Scene scene;
+    scene.objects = {{.path = "a", .position_m = {0.0, 0.0, 0.0}, .floats = true, .density_kg_per_m3 = 500.0},
+                     {.path = "b", .position_m = {9.0, 0.0, 2.0}, .floats = true}}; // a rider, not a body
+    auto changed = [&](auto edit) {
+        swell::Scene next = scene;
+        edit(next);
+        return !swell::detail::sameBodies(scene, next);
+    };
+    EXPECT_FALSE(changed([](swell::Scene&) {}));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.objects[0].mass_kg = 80.0; }));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.objects[0].position_m.x = 1.0; }));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.objects[1].mass_kg = 80.0; })); // the rider becomes a body
+    EXPECT_FALSE(changed([](swell::Scene& s) { s.objects[1].position_m.x = 1.0; }));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.objects.pop_back(); }));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.sea.level_m = 2.0; }));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.sea.depth_m = 30.0; }));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.wake.cells = 128; }));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.historyStart_s = 0.0; }));
+    EXPECT_TRUE(changed([](swell::Scene& s) { s.camera.far_m = 5000.0; })); // the grid's skirt: the bodies' filter
+    EXPECT_FALSE(changed([](swell::Scene& s) { s.fog.start_m = 10.0; }));
+    EXPECT_FALSE(changed([](swell::Scene& s) { s.camera.position_m.y = 40.0; }));
+}
