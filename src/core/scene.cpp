@@ -1,7 +1,6 @@
-// The built-in scene and the step from a scene's wave source to the wave set
-// the renderer sums.
+// The built-in scene (the step from its waves to the wave set the renderer
+// sums, resolveWaves(), is the ocean's: ocean/scene_waves.cpp).
 #include "swell/scene.h"
-#include "swell/spectrum.h"
 
 namespace swell {
 
@@ -43,20 +42,6 @@ Scene defaultScene()
 
     scene.showTerrain = true;
     return scene;
-}
-
-WaveSet resolveWaves(const Scene& scene)
-{
-    if (!scene.sea.wind) {
-        WaveSet listed;
-        listed.waves = scene.waves.listed;
-        listed.depth_m = scene.sea.depth_m;
-        return listed;
-    }
-    // The depth is the sea's, whichever way the waves are made.
-    WindSettings wind = *scene.sea.wind;
-    wind.depth_m = scene.sea.depth_m;
-    return generateWaves(wind);
 }
 
 } // namespace swell
