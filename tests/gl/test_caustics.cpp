@@ -5,6 +5,7 @@
 // and waves move the light about without changing its mean while the
 // pattern's contrast grows with their slope.
 #include "support/caustics_setup.h"
+#include "swell/wave_model.h"
 #include "support/fresnel_reference.h"
 #include "support/gl_test.h"
 #include "swell/flat_model.h"
@@ -74,7 +75,10 @@ void main()
 
 class CausticsRun {
 public:
-    explicit CausticsRun(const swell::WaveModel& model, glm::vec3 sun = kSun) : drawn_(model, sun) {}
+    explicit CausticsRun(const swell::WaveModel& model, glm::vec3 sun = kSun)
+        : drawn_(model.createGpu(swell::gl::ShaderSources::embedded()), sun)
+    {
+    }
 
     long long triangles() const { return drawn_.triangles(); }
 

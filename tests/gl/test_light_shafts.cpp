@@ -6,6 +6,7 @@
 // mean; the light falls with the eye's depth as the beam's absorption says.
 #include "render/light_shafts.h"
 #include "support/caustics_setup.h"
+#include "swell/wave_model.h"
 #include "support/fresnel_reference.h"
 #include "support/gl_test.h"
 #include "swell/flat_model.h"
@@ -69,7 +70,10 @@ void main()
 // A caustics map for a wave model, and the shafts along rays through it.
 class ShaftsRun {
 public:
-    explicit ShaftsRun(const swell::WaveModel& model) : drawn_(model, glm::vec3(kSun)) {}
+    explicit ShaftsRun(const swell::WaveModel& model)
+        : drawn_(model.createGpu(swell::gl::ShaderSources::embedded()), glm::vec3(kSun))
+    {
+    }
 
     std::vector<glm::dvec3> shafts(const std::vector<Ray>& rays) const
     {

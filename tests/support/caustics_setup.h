@@ -1,5 +1,6 @@
-// A wave model's caustics map drawn for a sun at the origin, at time 20 s,
-// as the frame draws it (render/caustics_map.h), and compute probes that
+// The caustics map a wave model's GPU half (which the test makes from the
+// model) draws for a sun at the origin, at time 20 s, as the frame draws it
+// (render/caustics_map.h), and compute probes that
 // read it through the shaders' own functions: what the caustics' and the
 // shafts of light's tests measure. Needs a current GL 4.5 context.
 #pragma once
@@ -9,19 +10,19 @@
 #include "support/shader_probe.h"
 #include "swell/gl/shader.h"
 #include "swell/gl/shader_sources.h"
-#include "swell/wave_model.h"
 #include "swell/wave_model_gpu.h"
 
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace swell::test {
 
 class DrawnCausticsMap {
 public:
-    DrawnCausticsMap(const WaveModel& model, glm::vec3 sunDirection) : sources_(gl::ShaderSources::embedded())
+    DrawnCausticsMap(std::unique_ptr<WaveModelGpu> gpu, glm::vec3 sunDirection)
+        : sources_(gl::ShaderSources::embedded()), gpu_(std::move(gpu))
     {
-        gpu_ = model.createGpu(sources_);
         gpu_->prepareFrame(glm::dvec2(0.0), 20.0);
         gpu_->prepareView(glm::dvec2(0.0));
         gpu_->bind();
