@@ -22,6 +22,10 @@ bad = []
 for s in symbols:
     owner = s.replace("typeinfo for ", "").replace("typeinfo name for ", "").replace("vtable for ", "")
     owner = owner.replace("guard variable for ", "").replace("non-virtual thunk to ", "")
+    # What a virtual base brings (swell::WaveModel's SurfaceQuery): the
+    # table of its vtables, the vtables used while a base is built, and the
+    # thunks that reach the base's functions.
+    owner = owner.replace("VTT for ", "").replace("construction vtable for ", "").replace("virtual thunk to ", "")
     is_swell = owner.startswith("swell::")
     # (a function template's name starts with its return type: "bool std::...")
     is_std_for_swell = re.match(r"^(?:[A-Za-z_][\w:]*\s+)?(?:std|__gnu_cxx)::", owner) is not None
