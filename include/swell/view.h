@@ -95,7 +95,8 @@ enum class PassKind {
     Main,
     // Depth only, just before the water is drawn (colour writes are off):
     // closed volumes the water must not show inside, such as the lid of an
-    // open hull at its gunwale.
+    // open hull at its gunwale. Renderer::render only: before draw(), a
+    // host draws its own volumes into its depth with its scene.
     WaterMask,
 };
 

@@ -130,16 +130,10 @@ FrameLabels LabelRenderer::draw(RenderContext& context, const Camera& camera, gl
     labels.objects = objectLabels(context, labels.classes);
     const View view = viewOf(camera, size);
     {
-        const SavedGlState saved;
-        try {
-            drawPass(context, camera, view, size, labels.objects);
-        } catch (...) {
-            saved.restore();
-            throw;
-        }
-        saved.restore();
+        const HostStateScope hostState;
+        drawPass(context, camera, view, size, labels.objects);
+        target_.read(labels.range_m, labels.normal, labels.semantic, labels.instance);
     }
-    target_.read(labels.range_m, labels.normal, labels.semantic, labels.instance);
     labels.camera = calibrationOf(camera, size);
     labels.horizon = horizonOf(labels.camera);
     const double eyeHeight_m = context.simulation.sea().heightInSea(camera.position_m.y);

@@ -1,5 +1,6 @@
 #include "render/pass_state.h"
 
+#include "render/gl_state.h"
 #include "render/scene_world.h"
 #include "render/simulation.h"
 #include "render/view_frame.h"
@@ -63,6 +64,7 @@ void PassState::begin(const Resources& resources, Telemetry& telemetry, std::opt
 
 void PassState::restore(RenderContext& context) const
 {
+    setFixedState();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     setPassState(viewport, depth);
     glFrontFace(mirrored ? GL_CW : GL_CCW);

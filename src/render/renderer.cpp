@@ -155,11 +155,12 @@ Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size
     image.height = size.y;
     image.rgba.resize(size_t(size.x) * size_t(size.y) * 4);
     std::vector<std::uint8_t> bottomUp(image.rgba.size());
-    GLint packAlignment = 4;
-    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(output.color(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(bottomUp.size()), bottomUp.data());
-    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+    {
+        // A pixel buffer or pack parameters the host left would change the read-back.
+        const HostStateScope hostState;
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glGetTextureImage(output.color(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(bottomUp.size()), bottomUp.data());
+    }
     const size_t row = size_t(size.x) * 4;
     for (int y = 0; y < size.y; ++y)
         std::copy_n(&bottomUp[size_t(size.y - 1 - y) * row], row, &image.rgba[size_t(y) * row]);

@@ -36,7 +36,7 @@ int RendererTesting::captureWaterVertices(Renderer& renderer, const Camera& came
     Renderer::Impl& s = *renderer.impl_;
     size = glm::max(size, glm::ivec2(1));
     s.advanceTo(time_s, camera.position_m);
-    const SavedGlState saved;
+    const HostStateScope hostState;
     RenderContext context = s.context();
     const ViewFrame v = prepareView(context, viewOf(camera, size), size, false);
     s.resources.bindFrame(PassMain, v.base);
@@ -57,7 +57,6 @@ int RendererTesting::captureWaterVertices(Renderer& renderer, const Camera& came
     glDrawArrays(GL_POINTS, 0, count);
     glEndTransformFeedback();
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-    saved.restore();
     return count;
 }
 

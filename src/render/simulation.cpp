@@ -92,9 +92,10 @@ void Simulation::advanceTo(double time_s, glm::dvec3 viewpointWorld, const Scene
     if (simulated_ && simulated_->time_s == time_s && simulated_->viewpoint == viewpoint)
         return;
     telemetry.counters.simulationSteps = 1;
-    // The model's compute passes and the frame's queries use programs of
-    // their own; the host's stays current.
-    const SavedProgram savedProgram;
+    // The model's compute passes and the frame's queries use programs and
+    // buffers of their own, and upload textures: the host's state is put
+    // back, and what it left set that would change them is not used.
+    const HostStateScope hostState;
     // The thread's CPU time, by part (FrameCounters::simulationCpu);
     // the observer's callbacks are outside every part.
     SimulationCpuTime& cpu = telemetry.counters.simulationCpu;

@@ -32,14 +32,8 @@ void Renderer::Impl::drawView(const ViewRequest& request, ViewState& state)
 
 void Renderer::Impl::drawRestoring(const ViewRequest& request, ViewState& state)
 {
-    const SavedGlState saved;
-    try {
-        drawView(request, state);
-    } catch (...) {
-        saved.restore();
-        throw;
-    }
-    saved.restore();
+    const HostStateScope hostState;
+    drawView(request, state);
 }
 
 namespace {
