@@ -21,7 +21,7 @@ namespace {
 void fogHostUnderwater(RenderContext& context, ViewState& state, const PassState& main)
 {
     const ObservedPass observed(context.telemetry, "underwater host");
-    const GLuint copy = state.hostDepth.copy(main.framebuffer, main.viewport);
+    const GLuint copy = state.hostDepth.copyDepth(main.framebuffer, main.viewport);
     glBindFramebuffer(GL_FRAMEBUFFER, main.framebuffer);
     setPassState(main.viewport, main.depth);
     glDisable(GL_DEPTH_TEST);

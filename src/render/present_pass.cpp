@@ -33,8 +33,8 @@ void copyHostPictureIn(RenderContext& context, ViewState& state, const PassState
 {
     const ObservedPass observed(context.telemetry, "host picture");
     const GLenum format = request.options.encoding == OutputEncoding::Linear ? GL_RGBA16F : GL_RGBA8;
-    const GLuint colour = state.hostColour.copy(request.output, request.outputViewport, format);
-    const GLuint depth = state.hostPictureDepth.copy(request.output, request.outputViewport);
+    const GLuint colour = state.hostPictureColour.copyColour(request.output, request.outputViewport, format);
+    const GLuint depth = state.hostPictureDepth.copyDepth(request.output, request.outputViewport);
     glBindFramebuffer(GL_FRAMEBUFFER, main.framebuffer);
     setPassState(main.viewport, main.depth);
     drawCopy(context, colour, depth, main.viewport);

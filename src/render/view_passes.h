@@ -88,7 +88,7 @@ struct PresentPass {
 };
 
 // draw()'s picture under the view's viewport brought into the view's own
-// target before the water is drawn over it (render/host_colour.h), and the
+// target before the water is drawn over it (render/host_copy.h), and the
 // target's depth written back into the host's after it is presented, so
 // the host's later passes (transparent ones) are tested against the water.
 void copyHostPictureIn(RenderContext& context, ViewState& state, const PassState& main, const ViewRequest& request);

@@ -6,8 +6,7 @@
 // DrawOptions::viewId. Library-internal.
 #pragma once
 
-#include "render/host_colour.h"
-#include "render/host_depth.h"
+#include "render/host_copy.h"
 #include "render/render_target.h"
 #include "render/temporal_resolve.h"
 #include "render/waterline.h"
@@ -26,8 +25,7 @@ struct ViewState {
     // draw()'s copies of the host's picture under the viewport: its depth,
     // for its geometry under the water, and its colour and depth drawn into
     // the main target when the view is drawn through it.
-    HostDepthCopy hostDepth, hostPictureDepth;
-    HostColourCopy hostColour;
+    HostCopy hostDepth, hostPictureDepth, hostPictureColour;
     TemporalResolve temporal;
     // Whether the last frame was resolved over time: turning it on or off
     // starts the history again.
