@@ -6,10 +6,13 @@
 #include "swell/shader_constants.h"
 
 layout(binding = SWELL_UNIT_TEMPORAL_HISTORY) uniform sampler2D history;
+// The output viewport's lower-left corner, pixels (draw()'s views may lie
+// anywhere in the host's framebuffer; the history starts at its corner).
+uniform ivec2 presentOrigin;
 
 out vec4 fragColor;
 
 void main()
 {
-    fragColor = vec4(texelFetch(history, ivec2(gl_FragCoord.xy), 0).rgb, 1.0);
+    fragColor = vec4(texelFetch(history, ivec2(gl_FragCoord.xy) - presentOrigin, 0).rgb, 1.0);
 }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "swell/camera.h"
+#include "swell/debug.h"
 #include "swell/gl/handle.h"
 #include "swell/renderer.h"
 
@@ -208,7 +209,7 @@ struct Machine {
 };
 Machine describeMachine();
 
-// The water shading with terms left out (RendererOptions::omittedWaterTerms),
+// The water shading with terms left out (RendererTesting::create),
 // rendered along the same path, each frame right after the full frame of the
 // same camera and time so that both see the same load on the machine.
 struct TermVariant {

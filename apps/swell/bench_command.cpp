@@ -150,7 +150,7 @@ int runBench(const BenchOptions& options)
                                             : std::string(findParameter("antialiasing")->choices[size_t(scene.antialiasing)]),
                            options.outputSettings.renderScale, options.still ? ", the scene's camera (--still)" : "",
                            options.interactive ? ", interactive (--interactive)" : "");
-    r.gridCells = int(std::lround(std::sqrt(double(renderer.waterVertexCount())))) - 1;
+    r.gridCells = int(std::lround(std::sqrt(double(RendererTesting::waterVertexCount(renderer))))) - 1;
     r.frames = options.frames;
     r.warmup = options.warmup;
     r.frameStep_s = kFrameStep_s;
@@ -168,9 +168,7 @@ int runBench(const BenchOptions& options)
         r.terms = termVariants();
     std::vector<std::unique_ptr<Renderer>> termRenderers;
     for (const TermVariant& t : r.terms) {
-        RendererOptions termOptions;
-        termOptions.omittedWaterTerms = t.omitted;
-        termRenderers.push_back(std::make_unique<Renderer>(scene, termOptions));
+        termRenderers.push_back(RendererTesting::create(scene, {}, t.omitted));
         termRenderers.back()->setRenderScale(options.outputSettings.renderScale);
         termRenderers.back()->setPassObserver(&recorder);
     }
@@ -238,7 +236,7 @@ int runBench(const BenchOptions& options)
 
     // The water grid's LOD at a few frames of the path, from the vertices
     // the water shader produces for the same camera and time.
-    const int vertexCount = renderer.waterVertexCount();
+    const int vertexCount = RendererTesting::waterVertexCount(renderer);
     gl::Buffer capture = gl::Buffer::create();
     glNamedBufferStorage(capture.id(), GLsizeiptr(vertexCount) * 8 * GLsizeiptr(sizeof(float)), nullptr, 0);
     std::vector<float> vertices(size_t(vertexCount) * 8);
@@ -252,7 +250,8 @@ int runBench(const BenchOptions& options)
     std::vector<std::uint32_t> triangles;
     for (const int k : lodFrames) {
         const Camera& camera = r.realCameras[size_t(k)];
-        const int count = renderer.captureWaterVertices(camera, r.realTimes_s[size_t(k)], capture.id(), r.size, &triangles);
+        const int count = RendererTesting::captureWaterVertices(renderer, camera, r.realTimes_s[size_t(k)],
+                                                                capture.id(), r.size, &triangles);
         glGetNamedBufferSubData(capture.id(), 0, GLsizeiptr(count) * 8 * GLsizeiptr(sizeof(float)), vertices.data());
         checkGl("capturing the water's vertices");
         const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);

@@ -10,7 +10,9 @@
 #include "swell/error.h"
 #include "swell/export.h"
 
+#include "swell/sea_frame.h"
 #include "swell/sea_state.h"
+#include "swell/view.h"
 #include "swell/waves.h"
 
 #include <glm/vec3.hpp>
@@ -33,14 +35,6 @@ enum class ReflectionMode {
 
 // What the water pass shows: the shaded ocean or one of its ingredients.
 enum class DebugView { Shaded, Normals, Reflection, Refraction, Lod, Wireframe, Foam };
-
-// How the main pass's edges (objects, terrain, the horizon) are smoothed.
-enum class Antialiasing {
-    Off,   // one sample a pixel: hard steps
-    Msaa4, // 4 samples a pixel for coverage and depth, resolved after the pass
-    Fxaa,  // a post-process that blends along luminance edges (FXAA-style; default:
-           // on llvmpipe it costs a fifth of what MSAA does, docs/RENDERING.md)
-};
 
 // Which wave model draws the sea (swell/wave_model.h).
 enum class WaveModelKind {
@@ -307,6 +301,9 @@ inline double bodiesStart_s(const Scene& scene)
 
 // The built-in default scene: an open ocean under a trade wind, with an island.
 SWELL_API Scene defaultScene();
+
+// The scene's sea frame (swell/sea_frame.h): y = 0 at its water's mean level.
+inline SeaFrame seaFrameOf(const Scene& scene) { return SeaFrame(scene.sea.level_m); }
 
 // The wave set the scene describes at load time: generateWaves(*sea.wind)
 // when the sea has a wind, else waves.listed. Either way the water depth is

@@ -12,11 +12,32 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <cstdint>
 #include <optional>
 
 namespace swell {
 
 struct Camera;
+
+// The smallest and largest render scale: below 0.1 a 1280x720 frame is
+// 128x72, too coarse to see anything; 2 draws 4 pixels per output pixel
+// (supersampling), beyond it the linear filter that scales the image down
+// skips pixels and memory grows with the square.
+inline constexpr double kMinRenderScale = 0.1;
+inline constexpr double kMaxRenderScale = 2.0;
+
+// The size every pass draws at for an output of `outputSize` at
+// `renderScale` (each side rounded, at least 1 pixel).
+SWELL_API glm::ivec2 scaledFrameSize(glm::ivec2 outputSize, double renderScale);
+
+// How the main pass's edges (objects, terrain, the horizon) are smoothed.
+enum class Antialiasing {
+    Off,   // one sample a pixel: hard steps
+    Msaa4, // 4 samples a pixel for coverage and depth, resolved after the pass
+    Fxaa,  // a post-process that blends along luminance edges (FXAA-style; the
+           // scene's default: on llvmpipe it costs a fifth of what MSAA does,
+           // docs/RENDERING.md)
+};
 
 // How the host's depth buffer maps distance. Swell draws its passes the same
 // way, tests the water against the host's depth with the matching function,
@@ -74,7 +95,8 @@ enum class PassKind {
     Main,
     // Depth only, just before the water is drawn (colour writes are off):
     // closed volumes the water must not show inside, such as the lid of an
-    // open hull at its gunwale.
+    // open hull at its gunwale. Renderer::render only: before draw(), a
+    // host draws its own volumes into its depth with its scene.
     WaterMask,
 };
 
@@ -119,7 +141,10 @@ enum class OutputEncoding {
     Linear,
 };
 
-// How Renderer::draw composites into the host's frame.
+// How Renderer::draw composites into the host's frame, and how the view is
+// drawn (Filament's per-view settings). Render scale, antialiasing and the
+// temporal resolve draw the view through Swell's own target
+// (Renderer::draw); the defaults draw straight into the host's framebuffer.
 struct SWELL_API DrawOptions {
     // The host's geometry for the reflection, refraction and water-mask
     // passes; null for none. Not owned.
@@ -131,6 +156,31 @@ struct SWELL_API DrawOptions {
     // (at the far plane), after the water.
     bool sky = true;
     OutputEncoding encoding = OutputEncoding::Srgb;
+    // Which of the host's views this is: Swell keeps each id's own targets
+    // and temporal history (split screen: one id a side; a stereo pair: one
+    // an eye). Renderer::releaseView gives an id's back.
+    std::uint32_t viewId = 0;
+    // Draws every pass at this fraction of the viewport's size (each side,
+    // rounded; kMinRenderScale..kMaxRenderScale) and filters the picture
+    // into the viewport: 0.5 costs about a quarter of the pixels, 2
+    // supersamples.
+    double renderScale = 1.0;
+    Antialiasing antialiasing = Antialiasing::Off;
+    // The temporal resolve (docs/RENDERING.md "Temporal resolve"), for a
+    // view drawn again and again: each frame's projection moves by a
+    // sub-pixel jitter that changes every frame (Halton 2, 3;
+    // SWELL_TEMPORAL_JITTER_PHASES frames), the frame is drawn at the
+    // render scale without antialiasing, and it is blended into the view's
+    // history kept at the viewport's size: reprojected with the camera's
+    // motion (each pixel's depth), clipped to what the frame shows around
+    // the pixel, each new frame weighing about a tenth once the history is
+    // full (SWELL_TEMPORAL_MAX_WEIGHT). A still camera converges to an
+    // anti-aliased picture at the viewport's full resolution whatever the
+    // render scale. The waves' own motion is not reprojected: the clip
+    // bounds how far a moving crest's history lags. Off: every frame stands
+    // alone, as stills and videos need. Turning it on or off and a new
+    // viewport size start the view's history again.
+    bool temporal = false;
 };
 
 } // namespace swell

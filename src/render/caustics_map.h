@@ -6,8 +6,8 @@
 // (mesh.frag) looks it up under the water.
 #pragma once
 
+#include "swell/debug.h"
 #include "swell/gl/handle.h"
-#include "swell/renderer.h"
 #include "swell/shader_constants.h"
 
 #include <glm/vec2.hpp>

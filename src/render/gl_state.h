@@ -1,7 +1,12 @@
-// The GL state a draw of the water changes, captured before it and put back
-// after it, so a host's own passes find their state as they left it
-// (docs/LIBRARY.md lists what is restored and what is left bound;
-// tests/gl/test_host_composite.cpp holds it).
+// The host's GL state around Swell's work (docs/LIBRARY.md "The GL state";
+// tests/gl/test_host_state.cpp, tests/gl/test_host_views.cpp hold it):
+// SavedGlState captures everything Swell changes and everything that would
+// change Swell's results if a host left it set, and puts it all back;
+// setFixedState() sets the second kind, which Swell depends on but never
+// changes itself (the stencil test, the logic op, sampler objects, the
+// depth range, polygon offset, the provoking vertex, pixel-store
+// parameters ...), to GL's defaults: at the start of each call of Swell's
+// and again after each host callback, which may change any of it.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -9,6 +14,10 @@
 #include <array>
 
 namespace swell::detail {
+
+// The texture units whose sampler bindings Swell clears: every
+// SWELL_UNIT_* lies below it (swell/shader_constants.h).
+inline constexpr int kSwellTextureUnits = 24;
 
 class SavedGlState {
 public:
@@ -18,6 +27,9 @@ public:
     void restore() const;
 
 private:
+    void readFixed();
+    void restoreFixed() const;
+
     GLint drawFramebuffer_ = 0, readFramebuffer_ = 0, program_ = 0, vertexArray_ = 0, activeTexture_ = 0;
     std::array<GLint, 4> viewport_{}, scissorBox_{};
     std::array<GLboolean, 4> colorMask_{};
@@ -26,24 +38,38 @@ private:
     std::array<GLint, 2> polygonMode_{};
     std::array<GLfloat, 4> clearColor_{};
     GLfloat clearDepth_ = 1.0f;
-    GLint packAlignment_ = 4, unpackAlignment_ = 4;
     std::array<GLint, 6> blend_{}; // source and destination factors (rgb, alpha), equations (rgb, alpha)
-    // The capabilities it turns on or off (kCapabilities in gl_state.cpp).
-    std::array<GLboolean, 9> enabled_{};
+    // The capabilities a pass turns on or off, and those it needs off
+    // (kCapabilities in gl_state.cpp).
+    std::array<GLboolean, 32> enabled_{};
+    // The fixed state's values (setFixedState).
+    std::array<GLdouble, 2> depthRange_{};
+    GLfloat polygonOffsetFactor_ = 0.0f, polygonOffsetUnits_ = 0.0f, lineWidth_ = 1.0f, minSampleShading_ = 0.0f;
+    GLint provokingVertex_ = GL_LAST_VERTEX_CONVENTION, logicOp_ = GL_COPY, sampleMask_ = -1;
+    GLfloat sampleCoverage_ = 1.0f;
+    GLboolean sampleCoverageInvert_ = GL_FALSE;
+    std::array<GLint, kSwellTextureUnits> samplers_{};
+    // Pixel-store parameters (kPixelStore in gl_state.cpp) and the buffers
+    // bound to the generic binding points Swell's calls change or read.
+    std::array<GLint, 16> pixelStore_{};
+    std::array<GLint, 7> buffers_{};
 };
 
-// The current program, put back when it goes out of scope (or 0 when the
-// host deleted it meanwhile): advanceTo()'s compute passes change nothing
-// else a host's passes find.
-class SavedProgram {
+// Sets the state Swell depends on but never changes itself to GL's defaults.
+void setFixedState();
+
+// Around one call of Swell's public API that draws or computes: the host's
+// state saved and the fixed state set at the start, the host's state put
+// back at the end, whatever happens.
+class HostStateScope {
 public:
-    SavedProgram();
-    ~SavedProgram();
-    SavedProgram(const SavedProgram&) = delete;
-    SavedProgram& operator=(const SavedProgram&) = delete;
+    HostStateScope() { setFixedState(); }
+    ~HostStateScope() { saved_.restore(); }
+    HostStateScope(const HostStateScope&) = delete;
+    HostStateScope& operator=(const HostStateScope&) = delete;
 
 private:
-    GLint program_ = 0;
+    SavedGlState saved_;
 };
 
 // Call right after using a program that has a stage the next program used

@@ -254,6 +254,19 @@ void BowSprayProgram::set(double time_s, glm::vec2 windDirection, float windSpee
 
 void BlockProgram::use() const { glUseProgram(program_.id()); }
 
+HostCopyProgram::HostCopyProgram(gl::Program program)
+    : program_(std::move(program)), viewport_(requiredUniform(program_, "copyViewport", "host_copy.frag"))
+{
+}
+
+void HostCopyProgram::use() const { glUseProgram(program_.id()); }
+
+void HostCopyProgram::setViewport(glm::ivec4 viewport) const
+{
+    glProgramUniform4f(program_.id(), viewport_, float(viewport.x), float(viewport.y), 1.0f / float(viewport.z),
+                       1.0f / float(viewport.w));
+}
+
 LabelProgram::LabelProgram(gl::Program program)
     : program_(std::move(program)), rayFromPixel_(glGetUniformLocation(program_.id(), "labelRayFromPixel"))
 {
@@ -301,6 +314,7 @@ Programs buildPrograms(gl::ShaderSources& sources, const ShaderVariant& variant)
                                   build(sources, variant, "fullscreen.vert", "temporal_resolve.frag"),
                                   build(sources, variant, "fullscreen.vert", "temporal_present.frag"));
     p.underwaterHost = BlockProgram(build(sources, variant, "sky.vert", "underwater_host.frag"));
+    p.hostCopy = HostCopyProgram(build(sources, variant, "fullscreen.vert", "host_copy.frag"));
     p.mesh = MeshProgram(sources, variant);
     p.waterInAir = BlockProgram(build(sources, variant, "water.vert", "water.frag", kInAir));
     p.skyInAir = BlockProgram(build(sources, variant, "sky.vert", "sky.frag", kInAir));

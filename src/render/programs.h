@@ -139,6 +139,21 @@ private:
     gl::Program program_;
 };
 
+// draw()'s picture moved between the host's framebuffer and a view's own
+// target (fullscreen.vert + host_copy.frag; render/view_passes.h).
+class HostCopyProgram {
+public:
+    HostCopyProgram() = default;
+    explicit HostCopyProgram(gl::Program program);
+    void use() const;
+    // The viewport drawn (its lower-left corner and size, pixels).
+    void setViewport(glm::ivec4 viewport) const;
+
+private:
+    gl::Program program_;
+    GLint viewport_ = -1;
+};
+
 // The caustics map's pass (render/caustics_map.h): the refracted source
 // grid (caustics_sources.comp, the wave model's GLSL), the slices' triangles
 // (caustics_images.comp), and their draw (caustics.vert, .frag).
@@ -214,6 +229,7 @@ struct Programs {
     BlockProgram water, sky, waterline, fxaa, capture, probe;
     // The host's geometry seen from under the water (sky.vert + underwater_host.frag).
     BlockProgram underwaterHost;
+    HostCopyProgram hostCopy;
     MeshProgram mesh;
     SkyBakeProgram skyBake;
     // water, sky and mesh again, built with SWELL_SEEN_FROM_BELOW 0 for the

@@ -64,34 +64,47 @@ void RenderTarget::resize(glm::ivec2 size, GLenum colorFormat, int samples)
         throw Error("swell::RenderTarget::resize(): framebuffer incomplete");
 }
 
-GLuint MainTarget::begin(glm::ivec2 drawSize, glm::ivec2 outputSize, GLuint output, Antialiasing antialiasing,
-                         bool ownTarget)
+GLuint MainTarget::begin(glm::ivec2 drawSize, glm::ivec4 outputViewport, GLuint output, Antialiasing antialiasing,
+                         bool ownTarget, GLenum colorFormat)
 {
     drawSize_ = drawSize;
-    outputSize_ = outputSize;
+    outputViewport_ = outputViewport;
     output_ = output;
     antialiasing_ = antialiasing;
-    const bool scaled = drawSize != outputSize;
+    const bool scaled = drawSize != glm::ivec2(outputViewport.z, outputViewport.w);
     direct_ = antialiasing == Antialiasing::Off && !scaled && !ownTarget;
     // The main pass writes display-ready (sRGB-encoded) colour in 0..1, as
-    // the output holds it: 8 bits a channel lose nothing the output keeps.
+    // the output holds it: 8 bits a channel lose nothing the output keeps
+    // (a linear output's colour is kept in half floats).
     const bool msaa = antialiasing == Antialiasing::Msaa4;
-    multisampled_.resize(msaa ? drawSize : glm::ivec2(0), GL_RGBA8, kMsaaSamples);
-    single_.resize(direct_ ? glm::ivec2(0) : drawSize, GL_RGBA8);
-    const bool fxaaThenScale = antialiasing == Antialiasing::Fxaa && scaled;
-    filtered_.resize(fxaaThenScale ? drawSize : glm::ivec2(0), GL_RGBA8);
+    multisampled_.resize(msaa ? drawSize : glm::ivec2(0), colorFormat, kMsaaSamples);
+    single_.resize(direct_ ? glm::ivec2(0) : drawSize, colorFormat);
+    // FXAA draws straight into the output only at its size and corner (the
+    // filter reads the pixel it writes by its window position).
+    const bool fxaaDirect = !scaled && outputViewport.x == 0 && outputViewport.y == 0;
+    const bool fxaaThenCopy = antialiasing == Antialiasing::Fxaa && !fxaaDirect;
+    filtered_.resize(fxaaThenCopy ? drawSize : glm::ivec2(0), colorFormat);
     if (direct_)
         return output;
     return msaa ? multisampled_.framebuffer() : single_.framebuffer();
+}
+
+GLuint MainTarget::resolvedDepth()
+{
+    if (antialiasing_ == Antialiasing::Msaa4)
+        glBlitNamedFramebuffer(multisampled_.framebuffer(), single_.framebuffer(), 0, 0, drawSize_.x, drawSize_.y, 0,
+                               0, drawSize_.x, drawSize_.y, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    return single_.depth();
 }
 
 void MainTarget::blitToOutput(const RenderTarget& from) const
 {
     // Equal sizes copy pixel for pixel; a render scale is filtered
     // bilinearly (at scale 2, exactly the mean of each 2x2 block).
-    const GLenum filter = drawSize_ == outputSize_ ? GL_NEAREST : GL_LINEAR;
-    glBlitNamedFramebuffer(from.framebuffer(), output_, 0, 0, drawSize_.x, drawSize_.y, 0, 0, outputSize_.x,
-                           outputSize_.y, GL_COLOR_BUFFER_BIT, filter);
+    const glm::ivec4 o = outputViewport_;
+    const GLenum filter = drawSize_ == glm::ivec2(o.z, o.w) ? GL_NEAREST : GL_LINEAR;
+    glBlitNamedFramebuffer(from.framebuffer(), output_, 0, 0, drawSize_.x, drawSize_.y, o.x, o.y, o.x + o.z, o.y + o.w,
+                           GL_COLOR_BUFFER_BIT, filter);
 }
 
 int MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
@@ -110,8 +123,8 @@ int MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
                                0, drawSize_.x, drawSize_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
     if (antialiasing_ == Antialiasing::Fxaa) {
-        const bool scaled = drawSize_ != outputSize_;
-        glBindFramebuffer(GL_FRAMEBUFFER, scaled ? filtered_.framebuffer() : output_);
+        const bool viaCopy = filtered_.size().x > 0;
+        glBindFramebuffer(GL_FRAMEBUFFER, viaCopy ? filtered_.framebuffer() : output_);
         glViewport(0, 0, drawSize_.x, drawSize_.y);
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
@@ -122,13 +135,13 @@ int MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
         glDrawArrays(GL_TRIANGLES, 0, 3);
         ++draws;
         glEnable(GL_DEPTH_TEST);
-        if (scaled)
+        if (viaCopy)
             blitToOutput(filtered_);
     } else {
         blitToOutput(single_);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, output_);
-    glViewport(0, 0, outputSize_.x, outputSize_.y);
+    glViewport(outputViewport_.x, outputViewport_.y, outputViewport_.z, outputViewport_.w);
     return draws;
 }
 

@@ -46,20 +46,26 @@ inline constexpr int kMsaaSamples = 4;
 class MainTarget {
 public:
     // Sets up the targets for a frame drawn at `drawSize` (see
-    // scaledFrameSize) and shown in `output` at `outputSize`, and returns the
-    // framebuffer the main pass draws into.
-    // ownTarget: draw into the target even when nothing would present it
-    // (the temporal resolve reads it instead: drawnColor(), drawnDepth()).
-    GLuint begin(glm::ivec2 drawSize, glm::ivec2 outputSize, GLuint output, Antialiasing antialiasing,
-                 bool ownTarget = false);
+    // scaledFrameSize) and shown in `output` over `outputViewport` (its
+    // lower-left corner and size, pixels), and returns the framebuffer the
+    // main pass draws into. ownTarget: draw into the target even when
+    // nothing would present it (the temporal resolve reads it instead:
+    // drawnColor(), drawnDepth()). colorFormat: GL_RGBA8 for display-ready
+    // colour, GL_RGBA16F for linear.
+    GLuint begin(glm::ivec2 drawSize, glm::ivec4 outputViewport, GLuint output, Antialiasing antialiasing,
+                 bool ownTarget = false, GLenum colorFormat = GL_RGBA8);
     // The main pass's own single-sampled image and depth (not MSAA).
     GLuint drawnColor() const { return single_.color(); }
     GLuint drawnDepth() const { return single_.depth(); }
+    // The main pass's depth, single-sampled: an MSAA pass's samples
+    // resolved into drawnDepth() first (one sample each).
+    GLuint resolvedDepth();
     // Whether present() has work to do for the frame begun last.
     bool presents() const { return !direct_; }
     // Brings the main pass's image to the output. `fxaa` draws the FXAA
-    // filter with `emptyVao`. Leaves the output framebuffer bound. Returns
-    // the draw calls it made (the filter's; blits are not draws).
+    // filter with `emptyVao`. Leaves the output framebuffer bound with its
+    // viewport set. Returns the draw calls it made (the filter's; blits are
+    // not draws).
     int present(const BlockProgram& fxaa, GLuint emptyVao);
 
 private:
@@ -68,10 +74,11 @@ private:
 
     RenderTarget multisampled_; // MSAA: the main pass's samples
     RenderTarget single_;       // the main pass (off, FXAA) or MSAA's resolve
-    RenderTarget filtered_;     // FXAA's result when it must still be scaled
+    RenderTarget filtered_;     // FXAA's result when it must still be scaled or moved
     bool direct_ = true;        // the main pass draws into the output itself
     GLuint output_ = 0;
-    glm::ivec2 drawSize_{0}, outputSize_{0};
+    glm::ivec2 drawSize_{0};
+    glm::ivec4 outputViewport_{0};
     Antialiasing antialiasing_ = Antialiasing::Off;
 };
 

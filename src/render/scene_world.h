@@ -7,7 +7,7 @@
 
 #include "render/programs.h"
 #include "render/world.h"
-#include "swell/renderer.h"
+#include "swell/debug.h"
 #include "swell/view.h"
 
 #include <glm/mat4x4.hpp>

@@ -202,7 +202,7 @@ SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double t
         if (labels) {
             frame.labels = distortLabels(renderer.renderLabels(pinhole, wide), lens, c);
             frame.labels->trueHorizon_px =
-                trueHorizonOf(c, camera.position_m.y - renderer.scene().sea.level_m);
+                trueHorizonOf(c, seaFrameOf(renderer.scene()).heightInSea(camera.position_m.y));
         }
     }
     exposeAndNoise(frame.image, settings, time_s);

@@ -6,8 +6,8 @@
 // use, for the slots then drawn or more.
 #pragma once
 
+#include "swell/debug.h"
 #include "swell/gl/handle.h"
-#include "swell/renderer.h"
 #include "swell/shader_constants.h"
 
 namespace swell::detail {

@@ -31,11 +31,11 @@ glm::dmat4 jitteredProjection(const glm::dmat4& projection, glm::dvec2 jitter_px
 
 namespace {
 
-GLint uniform(const gl::Program& program, const char* name)
+GLint uniform(const gl::Program& program, const char* name, const char* file = "temporal_resolve.frag")
 {
     const GLint location = glGetUniformLocation(program.id(), name);
     if (location < 0)
-        throw Error(std::string("temporal_resolve.frag has no uniform '") + name + "'");
+        throw Error(std::string(file) + " has no uniform '" + name + "'");
     return location;
 }
 
@@ -51,7 +51,8 @@ TemporalResolveProgram::TemporalResolveProgram(gl::Program built)
 TemporalPrograms::TemporalPrograms(gl::Program neighbourhood, gl::Program resolveHalfOrLess,
                                    gl::Program resolveAboveHalf, gl::Program present)
     : neighbourhood_(std::move(neighbourhood)), halfOrLess_(std::move(resolveHalfOrLess)),
-      aboveHalf_(std::move(resolveAboveHalf)), present_(std::move(present))
+      aboveHalf_(std::move(resolveAboveHalf)), present_(std::move(present)),
+      presentOrigin_(uniform(present_, "presentOrigin", "temporal_present.frag"))
 {
 }
 
@@ -144,9 +145,11 @@ void TemporalResolve::resizeBoxes(glm::ivec2 drawnSize)
 }
 
 int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
-                             glm::ivec2 drawnSize, glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj,
-                             glm::dvec2 depthToNdc, double time_s)
+                             glm::ivec2 drawnSize, glm::ivec4 outputViewport, GLuint output,
+                             const glm::dmat4& viewProj, glm::dvec2 depthToNdc, double time_s)
 {
+    const glm::ivec2 outputSize(outputViewport.z, outputViewport.w);
+    const glm::ivec2 corner(outputViewport.x, outputViewport.y);
     resize(outputSize);
     resizeBoxes(drawnSize);
     const glm::dvec2 jitter = jitterEnabled_ ? jitter_px() : glm::dvec2(0.0);
@@ -197,11 +200,14 @@ int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, 
     // costs one pass over every output pixel (docs/PERFORMANCE.md).
     int drawCalls = 2;
     if (outputTakesTheBlit(output)) {
-        glBlitNamedFramebuffer(displayFramebuffer_.id(), output, 0, 0, outputSize.x, outputSize.y, 0, 0,
-                               outputSize.x, outputSize.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitNamedFramebuffer(displayFramebuffer_.id(), output, 0, 0, outputSize.x, outputSize.y, corner.x, corner.y,
+                               corner.x + outputSize.x, corner.y + outputSize.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, output);
+        glViewport(corner.x, corner.y, outputSize.x, outputSize.y);
     } else {
         glBindFramebuffer(GL_FRAMEBUFFER, output);
+        glViewport(corner.x, corner.y, outputSize.x, outputSize.y);
+        glProgramUniform2i(programs.present_.id(), programs.presentOrigin_, corner.x, corner.y);
         glUseProgram(programs.present_.id());
         glBindTextureUnit(SWELL_UNIT_TEMPORAL_HISTORY, write.texture.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -53,6 +53,7 @@ private:
     // The history into an output the blit does not suit
     // (temporal_present.frag; outputTakesTheBlit in temporal_resolve.cpp).
     gl::Program present_;
+    GLint presentOrigin_ = -1;
 };
 
 class TemporalResolve {
@@ -68,7 +69,8 @@ public:
 
     // Resolves the frame just drawn (its colour and depth textures, their
     // size `drawnSize`) into the history and draws the result into `output`
-    // (its framebuffer, `outputSize`): a blit where the output is one
+    // (its framebuffer, over `outputViewport`: its lower-left corner and
+    // size, pixels): a blit where the output is one
     // single-sampled 8-bit colour buffer (a window's, most hosts'), else a
     // full-screen pass. viewProj: the frame's unjittered view and
     // projection, absolute world to clip (double, so kilometres from the
@@ -77,7 +79,7 @@ public:
     // (the water keeps a short history when it changed). Leaves `output`
     // bound with a viewport over it. Returns the draw calls made.
     int resolve(const TemporalPrograms& programs, GLuint emptyVao, GLuint frameColor, GLuint frameDepth,
-                glm::ivec2 drawnSize, glm::ivec2 outputSize, GLuint output, const glm::dmat4& viewProj,
+                glm::ivec2 drawnSize, glm::ivec4 outputViewport, GLuint output, const glm::dmat4& viewProj,
                 glm::dvec2 depthToNdc, double time_s);
 
 private:

@@ -3,7 +3,6 @@
 #include "swell/error.h"
 
 #include <fmt/format.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
 #include <cmath>
@@ -106,13 +105,6 @@ void checkFramebuffer(GLuint framebuffer, bool needsDepth)
         throw Error(fmt::format("framebuffer {} has no depth buffer: the water is depth-tested against the host's "
                                 "scene, so draw() needs one",
                                 framebuffer));
-}
-
-glm::dmat4 mirrorAbout(double level_m)
-{
-    return glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, level_m, 0.0)) *
-           glm::scale(glm::dmat4(1.0), glm::dvec3(1.0, -1.0, 1.0)) *
-           glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, -level_m, 0.0));
 }
 
 } // namespace swell::detail

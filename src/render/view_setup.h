@@ -32,7 +32,4 @@ void setDepthConvention(FrameUniforms& f, DepthMode mode);
 void checkView(const View& view);
 void checkFramebuffer(GLuint framebuffer, bool needsDepth);
 
-// The reflection about the horizontal plane y = level_m (absolute world, m).
-glm::dmat4 mirrorAbout(double level_m);
-
 } // namespace swell::detail

@@ -28,6 +28,14 @@ std::vector<std::uint8_t> HostTarget::pixels() const
     return rgba;
 }
 
+std::vector<float> HostTarget::depths() const
+{
+    std::vector<float> depth(std::size_t(size_.x) * std::size_t(size_.y));
+    glFinish();
+    glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
+    return depth;
+}
+
 std::vector<float> HostTarget::floatPixels() const
 {
     std::vector<float> rgba(std::size_t(size_.x) * std::size_t(size_.y) * 4);

@@ -33,6 +33,8 @@ public:
     // The colour, bottom row first, 4 bytes a pixel (or 4 floats for a float target).
     std::vector<std::uint8_t> pixels() const;
     std::vector<float> floatPixels() const;
+    // The depth buffer's window depths, bottom row first.
+    std::vector<float> depths() const;
 
 private:
     glm::ivec2 size_;

@@ -4,6 +4,7 @@
 // a buoy, both rigid bodies) is the same bit for bit with and without it,
 // frame by frame, and the steps ahead were taken by the worker.
 #include "support/gl_test.h"
+#include "swell/debug.h"
 #include "swell/renderer.h"
 #include "swell/scene_file.h"
 

@@ -5,6 +5,7 @@
 #include "support/gl_test.h"
 #include "wave_capture.h"
 
+#include "swell/debug.h"
 #include "swell/drawn_surface.h"
 #include "swell/error.h"
 #include "swell/flat_model.h"
@@ -44,11 +45,11 @@ Result compareAtCentroids(const swell::Scene& scene, glm::dvec3 eye_m, double ti
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.position_m = eye_m;
     const glm::ivec2 size(640, 360);
-    const int count = renderer.waterVertexCount();
+    const int count = swell::RendererTesting::waterVertexCount(renderer);
     swell::gl::Buffer buffer = swell::gl::Buffer::create();
     glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
     std::vector<std::uint32_t> triangles;
-    renderer.captureWaterVertices(camera, time_s, buffer.id(), size, &triangles);
+    swell::RendererTesting::captureWaterVertices(renderer, camera, time_s, buffer.id(), size, &triangles);
     std::vector<float> data(size_t(count) * 8);
     glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
     // Which vertices the CPU twin flags as near a snapping tie (either lattice
@@ -172,9 +173,9 @@ TEST_F(DrawnSurfaceTest, TheWakeIsInTheDrawnTrianglesAlike)
         swell::Camera camera = swell::cameraAt(s.camera, 0.0);
         camera.position_m = eye;
         swell::gl::Buffer buffer = swell::gl::Buffer::create();
-        const int count = renderer.waterVertexCount();
+        const int count = swell::RendererTesting::waterVertexCount(renderer);
         glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
-        renderer.captureWaterVertices(camera, 10.0, buffer.id());
+        swell::RendererTesting::captureWaterVertices(renderer, camera, 10.0, buffer.id());
         std::vector<float> data(size_t(count) * 8);
         glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
         return data;
@@ -197,7 +198,7 @@ TEST_F(DrawnSurfaceTest, FloatingObjectsSitOnTheDrawnWater)
     const swell::Scene scene = swell::defaultScene();
     swell::Renderer renderer(scene);
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    const int count = renderer.waterVertexCount();
+    const int count = swell::RendererTesting::waterVertexCount(renderer);
     swell::gl::Buffer buffer = swell::gl::Buffer::create();
     glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
     std::vector<float> data(size_t(count) * 8);
@@ -206,7 +207,7 @@ TEST_F(DrawnSurfaceTest, FloatingObjectsSitOnTheDrawnWater)
     int floating = 0;
     for (const double t : {0.0, 0.7, 3.1, 12.9, 400.0}) {
         SCOPED_TRACE("t = " + std::to_string(t));
-        renderer.captureWaterVertices(camera, t, buffer.id(), {1280, 720}, &triangles);
+        swell::RendererTesting::captureWaterVertices(renderer, camera, t, buffer.id(), {1280, 720}, &triangles);
         glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
         const std::vector<glm::dmat4> transforms = renderer.objectTransforms();
         ASSERT_EQ(transforms.size(), scene.objects.size());

@@ -2,6 +2,7 @@
 // drawn by the same water shaders, lies exactly on the rest plane with its
 // normals straight up, and mirrors the island as a calm sea does.
 #include "support/gl_test.h"
+#include "swell/debug.h"
 #include "swell/flat_model.h"
 #include "swell/gl/handle.h"
 #include "swell/renderer.h"
@@ -21,10 +22,10 @@ TEST_F(FlatModelTest, TheGpuDrawsTheRestPlaneWithNormalsUp)
     Renderer renderer(defaultScene());
     renderer.setWaveModel(std::make_shared<FlatModel>());
     const Camera camera = cameraAt(defaultScene().camera, 10.0);
-    const int count = renderer.waterVertexCount();
+    const int count = swell::RendererTesting::waterVertexCount(renderer);
     gl::Buffer buffer = gl::Buffer::create();
     glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
-    renderer.captureWaterVertices(camera, 10.0, buffer.id());
+    swell::RendererTesting::captureWaterVertices(renderer, camera, 10.0, buffer.id());
     std::vector<float> data(size_t(count) * 8);
     glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
     int off = 0;

@@ -7,6 +7,7 @@
 // queries there cost every cascade's inverse FFTs).
 #include "support/gl_test.h"
 
+#include "swell/debug.h"
 #include "swell/drawn_surface.h"
 #include "swell/renderer.h"
 #include "swell/scene.h"

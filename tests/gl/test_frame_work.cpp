@@ -7,6 +7,7 @@
 // only against the same thread's clock read around the frame.
 #include "support/gl_test.h"
 
+#include "swell/debug.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
 #include "support/open_sea.h"

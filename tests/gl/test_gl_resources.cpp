@@ -5,6 +5,7 @@
 #include "support/gl_objects.h"
 #include "support/gl_test.h"
 #include "swell/camera.h"
+#include "swell/debug.h"
 #include "swell/gl/handle.h"
 #include "swell/renderer.h"
 #include "swell/scene_file.h"

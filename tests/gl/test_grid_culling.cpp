@@ -3,6 +3,7 @@
 // frustum is among the triangles drawn, for both layouts and many cameras.
 #include "support/gl_test.h"
 #include "support/param_names.h"
+#include "swell/debug.h"
 #include "swell/renderer.h"
 
 #include <epoxy/gl.h>
@@ -83,7 +84,7 @@ TEST_P(GridCulling, EveryTriangleThatReachesTheViewIsDrawn)
     camera.pitch_deg = c.pitch_deg;
     const glm::ivec2 size(320, 180);
 
-    const int count = renderer.waterVertexCount();
+    const int count = swell::RendererTesting::waterVertexCount(renderer);
     swell::gl::Buffer buffer = swell::gl::Buffer::create();
     glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
     std::vector<std::uint32_t> drawn;
@@ -93,8 +94,8 @@ TEST_P(GridCulling, EveryTriangleThatReachesTheViewIsDrawn)
     swell::Camera elsewhere = camera;
     elsewhere.position_m += glm::dvec3(317.0, 0.0, -733.0);
     elsewhere.position_m.y = 2.0;
-    renderer.captureWaterVertices(elsewhere, 12.0, buffer.id(), size, &drawn);
-    renderer.captureWaterVertices(camera, 12.0, buffer.id(), size, &drawn);
+    swell::RendererTesting::captureWaterVertices(renderer, elsewhere, 12.0, buffer.id(), size, &drawn);
+    swell::RendererTesting::captureWaterVertices(renderer, camera, 12.0, buffer.id(), size, &drawn);
     std::vector<float> data(size_t(count) * 8);
     glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
 

@@ -6,6 +6,7 @@
 #include "support/gl_test.h"
 
 #include "swell/camera.h"
+#include "swell/debug.h"
 #include "swell/error.h"
 #include "swell/gl/shader.h"
 #include "swell/gl/shader_sources.h"

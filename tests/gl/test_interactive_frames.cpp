@@ -5,6 +5,7 @@
 // replays the foam's history (about 20 transforms). Counted, not timed: the
 // frame counters say how many sets of FFTs and foam steps each frame took.
 #include "support/gl_test.h"
+#include "swell/debug.h"
 #include "swell/renderer.h"
 #include "support/open_sea.h"
 

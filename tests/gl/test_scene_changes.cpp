@@ -4,6 +4,7 @@
 // for the changed scene draws. A parameter declared cheaper than it is (say
 // Frame where the grid must be rebuilt) leaves stale state and fails here.
 #include "support/gl_test.h"
+#include "swell/debug.h"
 #include "swell/error.h"
 #include "swell/flat_model.h"
 #include "swell/gl/handle.h"
@@ -79,10 +80,10 @@ Drawn draw(Renderer& renderer)
     const Camera camera = renderer.sceneCameraAt(kTime_s);
     Drawn d;
     d.image = renderer.renderImage(camera, kTime_s, kSize);
-    const int count = renderer.waterVertexCount();
+    const int count = swell::RendererTesting::waterVertexCount(renderer);
     gl::Buffer buffer = gl::Buffer::create();
     glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
-    renderer.captureWaterVertices(camera, kTime_s, buffer.id(), kSize);
+    swell::RendererTesting::captureWaterVertices(renderer, camera, kTime_s, buffer.id(), kSize);
     d.vertices.resize(size_t(count) * 8);
     glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(d.vertices.size() * 4), d.vertices.data());
     return d;

@@ -1,5 +1,6 @@
 #include "wave_capture.h"
 
+#include "swell/debug.h"
 #include "swell/grid.h"
 
 #include <epoxy/gl.h>
@@ -11,10 +12,10 @@ namespace swell::test {
 
 std::vector<WaterVertex> captureGpu(Renderer& renderer, const Camera& camera, double time_s)
 {
-    const int count = renderer.waterVertexCount();
+    const int count = swell::RendererTesting::waterVertexCount(renderer);
     gl::Buffer buffer = gl::Buffer::create();
     glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
-    renderer.captureWaterVertices(camera, time_s, buffer.id());
+    swell::RendererTesting::captureWaterVertices(renderer, camera, time_s, buffer.id());
     std::vector<float> data(size_t(count) * 8);
     glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * 4), data.data());
     const int lines = int(std::lround(std::sqrt(double(count))));

@@ -5,6 +5,7 @@
 // absolute frame-to-frame change of the far half of the water, filtered
 // against unfiltered (the shading with SWELL_TERM_FILTERING left out).
 #include "support/gl_test.h"
+#include "swell/debug.h"
 #include "swell/renderer.h"
 #include "swell/shader_constants.h"
 
@@ -39,9 +40,8 @@ swell::Scene openSea(bool spectral)
 // down to the bottom of the image.
 double shimmer(const swell::Scene& scene, unsigned omittedTerms)
 {
-    swell::RendererOptions options;
-    options.omittedWaterTerms = omittedTerms;
-    swell::Renderer renderer(scene, options);
+    const std::unique_ptr<swell::Renderer> created = swell::RendererTesting::create(scene, {}, omittedTerms);
+    swell::Renderer& renderer = *created;
     const swell::Camera start = swell::cameraAt(scene.camera, 0.0);
     // The horizon's row: the camera looks pitch_deg below it.
     const double halfHeight = 0.5 * kSize.y;

@@ -8,6 +8,7 @@
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "swell/camera.h"
+#include "swell/debug.h"
 #include "swell/renderer.h"
 
 #include <gtest/gtest.h>
@@ -29,7 +30,7 @@ struct Drawn {
 Drawn draw(const swell::Scene& scene, const swell::Camera& camera, glm::ivec2 size, double tolerance_px)
 {
     swell::Renderer renderer(scene);
-    renderer.setIslandTolerance(tolerance_px);
+    swell::RendererTesting::setIslandTolerance(renderer, tolerance_px);
     Drawn d;
     d.image = renderer.renderImage(camera, 12.0, size);
     d.worldTriangles = renderer.counters().worldTriangles;

@@ -3,6 +3,7 @@
 // the crests; with the sun behind the camera it is all but gone.
 #include "support/gl_test.h"
 #include "support/golden.h"
+#include "swell/debug.h"
 #include "swell/renderer.h"
 #include "swell/shader_constants.h"
 
@@ -37,11 +38,9 @@ struct Added {
 Added addedLight(const swell::Scene& scene)
 {
     swell::Renderer full(scene);
-    swell::RendererOptions options;
-    options.omittedWaterTerms = SWELL_TERM_SUBSURFACE;
-    swell::Renderer without(scene, options);
+    const std::unique_ptr<swell::Renderer> without = swell::RendererTesting::create(scene, {}, SWELL_TERM_SUBSURFACE);
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    const swell::Image a = full.renderImage(camera, 2.0, kSize), b = without.renderImage(camera, 2.0, kSize);
+    const swell::Image a = full.renderImage(camera, 2.0, kSize), b = without->renderImage(camera, 2.0, kSize);
     Added added;
     for (int y = 0; y < kSize.y; ++y)
         for (int x = 0; x < kSize.x; ++x) {

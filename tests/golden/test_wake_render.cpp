@@ -11,6 +11,7 @@
 #include "support/camera_rays.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
+#include "swell/debug.h"
 #include "swell/flat_model.h"
 #include "swell/renderer.h"
 #include "swell/shader_constants.h"
@@ -59,7 +60,8 @@ struct Rendered {
 
 Rendered render(const swell::Scene& scene, unsigned omittedWaterTerms = 0)
 {
-    swell::Renderer renderer(scene, {.omittedWaterTerms = omittedWaterTerms});
+    const std::unique_ptr<swell::Renderer> created = swell::RendererTesting::create(scene, {}, omittedWaterTerms);
+    swell::Renderer& renderer = *created;
     renderer.setWaveModel(std::make_shared<swell::FlatModel>());
     const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
     Rendered r;

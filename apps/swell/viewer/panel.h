@@ -13,6 +13,7 @@
 #include "viewer/frame_times.h"
 #include "viewer/session.h"
 
+#include "swell/debug.h"
 #include "swell/parameters.h"
 #include "swell/renderer.h"
 

@@ -1,4 +1,4 @@
-#include "render/host_depth.h"
+#include "render/host_copy.h"
 
 #include "swell/error.h"
 
@@ -47,23 +47,42 @@ bool hasStencil(GLenum format) { return format == GL_DEPTH24_STENCIL8 || format 
 
 } // namespace
 
-GLuint HostDepthCopy::copy(GLuint framebuffer, glm::ivec4 viewport)
+GLuint HostCopy::copyDepth(GLuint framebuffer, glm::ivec4 viewport)
 {
-    const GLenum format = depthFormatOf(framebuffer);
+    return copy(framebuffer, viewport, depthFormatOf(framebuffer), true);
+}
+
+GLuint HostCopy::copyColour(GLuint framebuffer, glm::ivec4 viewport, GLenum format)
+{
+    return copy(framebuffer, viewport, format, false);
+}
+
+GLuint HostCopy::copy(GLuint framebuffer, glm::ivec4 viewport, GLenum format, bool depth)
+{
     const glm::ivec2 size(viewport.z, viewport.w);
     if (!texture_ || format != format_ || size != size_) {
         texture_ = gl::Texture::create(GLenum(GL_TEXTURE_2D));
         glTextureStorage2D(texture_.id(), 1, format, size.x, size.y);
-        glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        // Depths are never blended; the colour is filtered into another size.
+        const GLint filter = depth ? GL_NEAREST : GL_LINEAR;
+        glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, filter);
+        glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, filter);
+        glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         framebuffer_ = gl::Framebuffer::create();
-        glNamedFramebufferTexture(framebuffer_.id(), hasStencil(format) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
-                                  texture_.id(), 0);
+        const GLenum attachment = !depth ? GL_COLOR_ATTACHMENT0
+                                  : hasStencil(format) ? GL_DEPTH_STENCIL_ATTACHMENT
+                                                       : GL_DEPTH_ATTACHMENT;
+        glNamedFramebufferTexture(framebuffer_.id(), attachment, texture_.id(), 0);
         format_ = format;
         size_ = size;
     }
+    // Colour blits obey the scissor test and the colour mask.
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBlitNamedFramebuffer(framebuffer, framebuffer_.id(), viewport.x, viewport.y, viewport.x + size.x,
-                           viewport.y + size.y, 0, 0, size.x, size.y, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+                           viewport.y + size.y, 0, 0, size.x, size.y,
+                           depth ? GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT, GL_NEAREST);
     return texture_.id();
 }
 

@@ -1,10 +1,7 @@
-// The spray passes (Renderer::Impl, render/renderer_impl.h): the spray torn
-// from the breaking crests and thrown from the bows of hulls under way,
-// drawn inside the main pass after the water.
-#include "render/renderer_impl.h"
+#include "render/spray_renderer.h"
 
 #include "render/gl_state.h"
-#include "render/spray_buffers.h"
+#include "render/view_frame.h"
 
 #include "swell/shader_constants.h"
 
@@ -14,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace swell {
+namespace swell::detail {
 
 namespace {
 
@@ -32,8 +29,8 @@ constexpr int kBowStrips = SWELL_BOW_SPRAY_DROPS + 1;
 // every slot's clump, the list of the living and the commands, the living
 // clumps' streaks, then one draw of their strips. The GPU alone knows how
 // many live; the commands it wrote say.
-void Renderer::Impl::drawSprayClumps(const SprayPasses& passes, SprayBuffers& buffers, long long slots,
-                                     long long capacity, long long recordBytes, int strips)
+void SprayRenderer::drawClumps(Telemetry& telemetry, const SprayPasses& passes, SprayBuffers& buffers,
+                               long long slots, long long capacity, long long recordBytes, int strips)
 {
     buffers.bind(capacity, recordBytes, strips);
     passes.useClumps();
@@ -48,56 +45,58 @@ void Renderer::Impl::drawSprayClumps(const SprayPasses& passes, SprayBuffers& bu
     releaseProgramStages(); // compute, then a draw (render/gl_state.h)
     passes.useDraw();
     glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
-    ++counters.drawCalls;
+    ++telemetry.counters.drawCalls;
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     releaseProgramStages();
-    const GpuWork work = sprayPassWork(slots, recordBytes);
-    counters.viewsGpu.dispatches += work.dispatches;
-    counters.viewsGpu.barriers += work.barriers;
-    counters.viewsGpu.bytesWritten += work.bytesWritten;
+    Telemetry::addWork(sprayPassWork(slots, recordBytes), telemetry.counters.viewsGpu);
 }
 
-void Renderer::Impl::releaseUnusedSpray()
+namespace {
+
+// Whether the scene draws spray at all.
+bool sprayOn(const Scene& scene)
 {
-    const bool sprayOn = scene.water.spray && scene.sea.wind && scene.debugView == DebugView::Shaded &&
-                         scene.sea.wind->windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
-    if (!sprayOn || !programs.spray)
-        crestSprayBuffers = {};
-    if (!sprayOn || scene.objects.empty())
-        bowSprayBuffers = {};
+    return scene.water.spray && scene.sea.wind && scene.debugView == DebugView::Shaded &&
+           scene.sea.wind->windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
 }
 
-// The spray (shaders/spray_clumps.comp, spray.vert), over the finished
-// frame: blended, depth-tested against the world and the water, writing no
-// depth. None below Beaufort 7. Every particle is a function of the
-// simulated time (and, for the bows' spray, of the bodies' steps up to it).
-void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
+} // namespace
+
+void SprayRenderer::releaseUnused(const Scene& scene, const Programs& programs)
 {
-    if (!scene.water.spray || !scene.sea.wind || scene.debugView != DebugView::Shaded ||
-        scene.sea.wind->windSpeed_mps < SWELL_SPRAY_ONSET_WIND_MPS)
+    if (!sprayOn(scene) || !programs.spray)
+        crestBuffers_ = {};
+    if (!sprayOn(scene) || scene.objects.empty())
+        bowBuffers_ = {};
+}
+
+void SprayRenderer::draw(RenderContext& context, const ViewFrame& v, const View& view)
+{
+    if (!sprayOn(context.scene))
         return;
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     glDepthMask(GL_FALSE);
-    glBindVertexArray(emptyVao.id());
-    drawCrestSpray(v, view);
-    drawBowSpray(v);
+    glBindVertexArray(context.resources.emptyVao.id());
+    drawCrests(context, v, view);
+    drawBows(context, v);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
 }
 
 // The spray torn from the breaking crests: its amount grows with the wind
 // from Beaufort 7 to Beaufort 10.
-void Renderer::Impl::drawCrestSpray(const ViewFrame& v, const View& view)
+void SprayRenderer::drawCrests(RenderContext& context, const ViewFrame& v, const View& view)
 {
-    const double wind_mps = scene.sea.wind->windSpeed_mps;
+    const Programs& programs = context.resources.programs;
+    const double wind_mps = context.scene.sea.wind->windSpeed_mps;
     const double amount = std::clamp((wind_mps - SWELL_SPRAY_ONSET_WIND_MPS) /
                                          (SWELL_SPRAY_FULL_WIND_MPS - SWELL_SPRAY_ONSET_WIND_MPS), 0.0, 1.0);
     if (!programs.spray || amount <= 0.0)
         return;
-    notify(true, "spray");
+    const ObservedPass observed(context.telemetry, "spray");
     // The lattice, its cells fixed in the world, ahead of the eye: its
     // centre 0.45 of its width along the view's heading (level), so that it
     // reaches just behind the eye and most of its slots lie in view.
@@ -108,30 +107,34 @@ void Renderer::Impl::drawCrestSpray(const ViewFrame& v, const View& view)
     const glm::dvec2 ahead = level > 1e-6 ? forward / level * (0.45 * SWELL_SPRAY_CELLS * cell_m) : glm::dvec2(0.0);
     const glm::dvec2 first = glm::floor((eye + ahead) / cell_m) - glm::dvec2(SWELL_SPRAY_CELLS / 2);
     const glm::vec2 corner_m(first * cell_m - eye);
-    programs.spray.set(simulated->time_s, glm::ivec2(first), corner_m, corner_m - v.base.gridCenter, float(wind_mps),
-                       float(amount));
-    modelGpu->bind();
-    drawSprayClumps(programs.spray, crestSprayBuffers, kCrestSlots, kCrestSlots, kSprayClumpBytes, kCrestStrips);
-    notify(false, "spray");
+    programs.spray.set(context.simulation.require().time_s, glm::ivec2(first), corner_m, corner_m - v.base.gridCenter,
+                       float(wind_mps), float(amount));
+    context.simulation.gpu().bind();
+    drawClumps(context.telemetry, programs.spray, crestBuffers_, kCrestSlots, kCrestSlots, kSprayClumpBytes,
+               kCrestStrips);
 }
 
 // The spray thrown from the bows of the first SWELL_BOW_SPRAY_HULLS bodies
 // under way (objects/bow_spray.h): their bows' waterlines where the frame's
 // poses put them, and each hull's samples over the last lifetime; nothing
 // when no body is under way.
-void Renderer::Impl::drawBowSpray(const ViewFrame& v)
+void SprayRenderer::drawBows(RenderContext& context, const ViewFrame& v)
 {
+    const Programs& programs = context.resources.programs;
     if (!programs.bowSpray)
         return;
+    const Simulated& simulated = context.simulation.require();
+    const SceneBodies& bodies = context.simulation.bodies();
     BowSprayHulls hulls;
     double lag_s = 0.0;
     const glm::dmat4 fromSea = glm::translate(glm::dmat4(1.0), -v.origin);
-    for (std::size_t i = 0; i < seaScene.objects.size() && hulls.count < SWELL_BOW_SPRAY_HULLS; ++i) {
+    for (std::size_t i = 0; i < context.simulation.seaScene().objects.size() && hulls.count < SWELL_BOW_SPRAY_HULLS;
+         ++i) {
         const SceneBodies::Bow* bow = bodies.bow(i);
-        if (!bow || i >= simulated->poses.size())
+        if (!bow || i >= simulated.poses.size())
             continue;
         const int h = hulls.count++;
-        const glm::dmat4 pose = fromSea * simulated->poses[i];
+        const glm::dmat4 pose = fromSea * simulated.poses[i];
         glm::dvec2 side[2];
         for (int s = 0; s < 2; ++s)
             for (int k = 0; k < SWELL_BOW_SPRAY_STATIONS; ++k) {
@@ -148,7 +151,7 @@ void Renderer::Impl::drawBowSpray(const ViewFrame& v)
         hulls.body[std::size_t(h)] = int(i);
         hulls.motion[std::size_t(h)] = glm::vec4(glm::vec2(bow->velocity_m_per_s), glm::vec2(heading));
         hulls.across[std::size_t(h)] = glm::vec4(glm::vec2(across), float(speed_mps), float(bow->line.flareCot));
-        const std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> history = bodies.bowHistory(i, simulated->time_s, lag_s);
+        const std::array<BowSample, SWELL_BOW_SPRAY_HISTORY> history = bodies.bowHistory(i, simulated.time_s, lag_s);
         for (int j = 0; j < SWELL_BOW_SPRAY_HISTORY; ++j) {
             const BowSample& b = history[std::size_t(j)];
             hulls.history[std::size_t(h * SWELL_BOW_SPRAY_HISTORY + j)] = glm::vec4(b.share, b.plunge_mps, b.leaves_m, 0.0f);
@@ -157,14 +160,13 @@ void Renderer::Impl::drawBowSpray(const ViewFrame& v)
     if (hulls.count == 0)
         return;
     hulls.historyLag_s = float(lag_s);
-    notify(true, "bow spray");
-    const WindSettings& wind = *scene.sea.wind;
+    const ObservedPass observed(context.telemetry, "bow spray");
+    const WindSettings& wind = *context.scene.sea.wind;
     const double direction_rad = glm::radians(wind.windDirection_deg);
-    programs.bowSpray.set(simulated->time_s, glm::vec2(std::cos(direction_rad), std::sin(direction_rad)),
+    programs.bowSpray.set(simulated.time_s, glm::vec2(std::cos(direction_rad), std::sin(direction_rad)),
                           float(wind.windSpeed_mps), hulls);
-    drawSprayClumps(programs.bowSpray, bowSprayBuffers, hulls.count * SWELL_BOW_SPRAY_SLOTS,
-                    SWELL_BOW_SPRAY_HULLS * SWELL_BOW_SPRAY_SLOTS, kBowSprayClumpBytes, kBowStrips);
-    notify(false, "bow spray");
+    drawClumps(context.telemetry, programs.bowSpray, bowBuffers_, hulls.count * SWELL_BOW_SPRAY_SLOTS,
+               SWELL_BOW_SPRAY_HULLS * SWELL_BOW_SPRAY_SLOTS, kBowSprayClumpBytes, kBowStrips);
 }
 
-} // namespace swell
+} // namespace swell::detail

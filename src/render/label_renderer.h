@@ -1,0 +1,44 @@
+// The label pass (swell/labels.h, docs/LABELS.md): the frame's geometry
+// drawn once more, at the output's size with one sample per pixel, by
+// programs that write each pixel's range, normal, class and instance
+// (shaders/labels.glsl) instead of a colour. Same view setup, grid, culling
+// and vertex shaders as the colour frame, so each label lies on the pixel
+// its colour does. Library-internal.
+#pragma once
+
+#include "render/label_target.h"
+#include "render/programs.h"
+#include "render/waterline.h"
+#include "swell/camera.h"
+#include "swell/labels.h"
+#include "swell/view.h"
+
+#include <optional>
+#include <vector>
+
+namespace swell::detail {
+
+struct RenderContext;
+
+class LabelRenderer {
+public:
+    // The labels of `camera`'s frame of `size` pixels at the simulated time.
+    // Throws swell::Error before the first advanceTo(), or for an empty size.
+    FrameLabels draw(RenderContext& context, const Camera& camera, glm::ivec2 size);
+    // The shaders were reloaded: the programs are built again when next asked for.
+    void forgetPrograms() { programs_.reset(); }
+
+private:
+    // Each object's instance, class and 3D box at its pose.
+    std::vector<ObjectLabel> objectLabels(RenderContext& context, const std::vector<std::string>& classes) const;
+    void drawPass(RenderContext& context, const Camera& camera, const View& view, glm::ivec2 size,
+                  const std::vector<ObjectLabel>& objects);
+
+    // Built when first asked for and again when the variant changes.
+    std::optional<LabelPrograms> programs_;
+    ShaderVariant variant_;
+    LabelTarget target_;
+    WaterlineMask waterline_;
+};
+
+} // namespace swell::detail

@@ -1,0 +1,57 @@
+// What the renderer draws with, owned once for all its views (Filament's
+// Engine): the shader programs and the variant they were built for, the
+// water grid, the world's meshes and sky cubemap, the caustics map every
+// view redraws, and the frame uniform buffers. Which of them a scene change
+// rebuilds is decided in render/scene_update.h. Library-internal.
+#pragma once
+
+#include "render/caustics_map.h"
+#include "render/gpu_types.h"
+#include "render/programs.h"
+#include "render/telemetry.h"
+#include "render/water_grid.h"
+#include "render/world.h"
+#include "swell/gl/handle.h"
+#include "swell/gl/shader_sources.h"
+#include "swell/grid.h"
+
+#include <array>
+
+namespace swell::detail {
+
+// The uniform buffer of each kind of pass (Resources::frameUbo).
+// PassProbe: the frame's water queries (render/surface_probe.h).
+enum Pass { PassReflection = 0, PassRefraction = 1, PassMain = 2, PassWaterline = 3, PassProbe = 4, PassCount = 5 };
+
+class Resources {
+public:
+    // shaders: where the programs' sources come from; omittedWaterTerms:
+    // the water shading terms left out (swell/debug.h).
+    Resources(gl::ShaderSources shaders, unsigned omittedWaterTerms);
+
+    // Uploads a pass's frame uniforms into its buffer and binds it.
+    void bindFrame(Pass pass, const FrameUniforms& f) const;
+
+    // The water grid for the scene's grid settings and camera.
+    void buildGrid(const Scene& scene);
+    // The vertices the grid has (the water's vertex capture writes them all).
+    int waterVertexCount() const { return (gridShape.cells + 1) * (gridShape.cells + 1); }
+
+    gl::ShaderSources sources;
+    // Water shading terms left out, for the benchmark (swell/debug.h).
+    unsigned omittedWaterTerms = 0;
+    ShaderVariant variant;
+    Programs programs;
+    gl::VertexArray emptyVao;
+    GridShape gridShape;
+    WaterGrid waterGrid;
+    World world;
+    SceneShapes shapes; // what the world's rigid bodies are built from (the assets' CPU data)
+    // The sun's light under the water, drawn again by each view that needs it (caustics_map.h).
+    CausticsMap caustics;
+
+private:
+    std::array<gl::Buffer, PassCount> frameUbo_;
+};
+
+} // namespace swell::detail

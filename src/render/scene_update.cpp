@@ -1,0 +1,89 @@
+// What a scene change rebuilds (Renderer::Impl::apply): the wave model's
+// GPU half when the model changed, the programs when their variant did,
+// the world when a parameter of its says so (swell/scene_changes.h), the
+// floating bodies when what moves them changed, the grid when its settings
+// did. Everything that can fail is built first (prepare); the renderer
+// changes only when all of it did (commit).
+#include "render/renderer_impl.h"
+
+#include "objects/placement.h"
+#include "render/surface_sources.h"
+#include "swell/composed_surface.h"
+
+namespace swell {
+
+SceneUpdate Renderer::Impl::prepare(const Scene& next, ParameterEffect effects,
+                                    std::shared_ptr<const WaveModel> nextSceneModel,
+                                    std::shared_ptr<const WaveModel> nextOverride,
+                                    std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first)
+{
+    SceneUpdate update;
+    SimulationUpdate& sim = update.simulation;
+    const std::shared_ptr<const WaveModel>& nextModel = nextOverride ? nextOverride : nextSceneModel;
+    const bool modelChanged = first || nextModel.get() != &simulation.model();
+    if (modelChanged)
+        sim.gpu = nextModel->createGpu(resources.sources);
+    const ShaderVariant variant =
+        shaderVariantOf(next, sim.gpu ? sim.gpu->shaderFile() : resources.variant.oceanFile,
+                        resources.omittedWaterTerms, Simulation::sourceCodes(next, nextHostSources));
+    if (first || variant != resources.variant) {
+        try {
+            update.programs = buildPrograms(resources.sources, variant);
+        } catch (...) {
+            // The files of the sources still drawn, for a later reload.
+            setSurfaceSourceFiles(resources.sources, resources.variant.surfaceSources);
+            throw;
+        }
+        update.variant = variant;
+    }
+    if (first || hasEffect(effects, ParameterEffect::World)) {
+        const SceneAssets assets = loadSceneAssets(next);
+        update.world = buildWorld(next, assets);
+        update.shapes = SceneShapes(assets);
+    }
+    // Bodies start again from their start when what moves them changed.
+    const bool sourcesChanged = nextHostSources != simulation.hostSources();
+    if (update.world || modelChanged || sourcesChanged || !sameBodies(scene, next)) {
+        // The bodies float on the host's sources too.
+        sim.bodyModel = std::make_shared<const ComposedSurface>(nextModel, nextHostSources);
+        sim.bodies = buildBodies(update.shapes ? *update.shapes : resources.shapes, Simulation::inSeaFrame(next),
+                                 sim.bodyModel);
+    }
+    update.gridChanged = first || hasEffect(effects, ParameterEffect::Grid);
+    sim.sceneModel = std::move(nextSceneModel);
+    sim.overrideModel = std::move(nextOverride);
+    sim.hostSources = std::move(nextHostSources);
+    return update;
+}
+
+void Renderer::Impl::commit(const Scene& next, SceneUpdate update)
+{
+    scene = next;
+    simulation.commit(scene, std::move(update.simulation), settings.interactive, telemetry.stageRelay());
+    if (update.variant) {
+        resources.variant = std::move(*update.variant);
+        resources.programs = std::move(update.programs);
+    }
+    if (update.world) {
+        resources.world = std::move(*update.world);
+        resources.shapes = std::move(*update.shapes);
+        sky.forgetBake();
+    }
+    if (update.gridChanged) {
+        resources.buildGrid(scene);
+        simulation.setGridShape(resources.gridShape);
+    }
+    spray.releaseUnused(scene, resources.programs);
+}
+
+void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shared_ptr<const WaveModel> nextSceneModel,
+                           std::shared_ptr<const WaveModel> nextOverride,
+                           std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first)
+{
+    // The bodies' worker may be querying the model and sources replaced here.
+    simulation.settle();
+    commit(next, prepare(next, effects, std::move(nextSceneModel), std::move(nextOverride),
+                         std::move(nextHostSources), first));
+}
+
+} // namespace swell
