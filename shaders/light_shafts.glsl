@@ -27,6 +27,8 @@
 // bands become fine, fixed noise (the same in every frame and every run).
 #ifndef SWELL_LIGHT_SHAFTS_GLSL
 #define SWELL_LIGHT_SHAFTS_GLSL
+#include "swell/gpu/underwater.h"
+#include "gpu/constants.glsl"
 #include "caustics.glsl"
 
 // 0: no shafts (water.shafts = false): none of the sun's light scattered
@@ -41,7 +43,7 @@ float shaftsPhase(float cosTheta)
 {
     const float g = SWELL_WATER_PHASE_G;
     float denom = 1.0 + g * g - 2.0 * g * cosTheta;
-    return (1.0 - g * g) / (4.0 * 3.14159265 * denom * sqrt(denom));
+    return (1.0 - g * g) / (4.0 * SWELL_PI * denom * sqrt(denom));
 }
 
 // The integral of exp(-k t) dt from t0 to t1, per channel (k may be

@@ -1,4 +1,5 @@
 // World geometry: Phong diffuse from the sun, the sky's ambient light, fog.
+#include "swell/gpu/variants.h"
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"

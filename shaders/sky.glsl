@@ -2,6 +2,7 @@
 // or the user's six images) plus the sun's disc drawn analytically on top.
 #ifndef SWELL_SKY_GLSL
 #define SWELL_SKY_GLSL
+#include "swell/gpu/bindings.h"
 #include "frame.glsl"
 #if SWELL_CLOUD_SHADOWS
 #include "cloud_shadow.glsl"

@@ -24,6 +24,9 @@
 // as the hull's share at that birth says (its speed through the water and
 // the bow's plunging into the waves, sampled on the CPU from the bodies'
 // steps and handed over as a short history).
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/ocean.h"
+#include "swell/gpu/spray.h"
 #include "frame.glsl"
 #ifndef SWELL_BOW_SPRAY
 #include "ocean.glsl"

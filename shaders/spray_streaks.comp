@@ -12,6 +12,8 @@
 // one, made fainter by as much (its coverage kept), so distant spray thins
 // into a haze instead of sparkling. Here its four points, lit, its path,
 // its width and its opacity, or that it is not drawn.
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/spray.h"
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"

@@ -11,6 +11,7 @@
 // whole frame. Far from the surface the mask is cleared to the eye's side.
 #ifndef SWELL_UNDERWATER_GLSL
 #define SWELL_UNDERWATER_GLSL
+#include "swell/gpu/bindings.h"
 #include "frame.glsl"
 #include "light_shafts.glsl"
 #if SWELL_CLOUD_SHADOWS

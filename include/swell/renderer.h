@@ -20,13 +20,16 @@
 #include "swell/camera.h"
 #include "swell/drawn_surface.h"
 #include "swell/gl/shader_sources.h"
+#include "swell/gpu/limits.h"
+#include "swell/gpu/temporal.h"
+#include "swell/gpu/variants.h"
 #include "swell/image.h"
 #include "swell/labels.h"
 #include "swell/pass_observer.h"
 #include "swell/scene.h"
+#include "swell/surface_source.h"
 #include "swell/view.h"
 #include "swell/wave_model.h"
-#include "swell/surface_source.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -53,7 +56,7 @@ struct SWELL_API RendererOptions {
     // Where shaders come from: the embedded copies, or a folder for hot reload.
     gl::ShaderSources shaders = gl::ShaderSources::embedded();
     // For measuring what each term of the water shading costs (swell bench):
-    // the terms left out, a bitwise or of SWELL_TERM_* (swell/shader_constants.h),
+    // the terms left out, a bitwise or of SWELL_TERM_* (swell/gpu/variants.h),
     // each replaced by its cheapest stand-in. 0 draws the water in full.
     unsigned omittedWaterTerms = 0;
 };

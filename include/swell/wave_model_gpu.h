@@ -13,7 +13,7 @@
 // and SurfacePoint (shaders/ocean.glsl) holds the displacement and the unit
 // normal (with the partial derivatives it came from), and oceanShading() as
 // shaders/ocean.glsl describes. It reads only what prepareFrame() uploaded
-// and bind() bound, at binding points of its own from swell/shader_constants.h.
+// and bind() bound, at binding points of its own from swell/gpu/bindings.h.
 #pragma once
 
 #include "swell/export.h"

@@ -6,6 +6,8 @@
 #include "render/renderer_impl.h"
 
 #include "render/gl_state.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/label_classes.h"
 
 #include <fmt/format.h>
 #include <glm/matrix.hpp>

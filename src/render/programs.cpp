@@ -1,10 +1,11 @@
 // Building the renderer's programs for a variant, and their typed setters.
 #include "render/programs.h"
 
+#include "gl/uniform_location.h"
 #include "render/sky_light.h"
 #include "render/spray_kinematics.h"
 #include "render/surface_sources.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/variants.h"
 
 #include "swell/error.h"
 
@@ -30,15 +31,7 @@ int debugViewDefine(DebugView v)
     return SWELL_VIEW_SHADED;
 }
 
-// A uniform the program must have; a missing one is a shader bug, reported
-// like a compile error rather than left to fail silently at draw time.
-GLint requiredUniform(const gl::Program& program, const char* name, const char* file)
-{
-    const GLint location = glGetUniformLocation(program.id(), name);
-    if (location < 0)
-        throw InputError({file}, fmt::format("program has no uniform '{}'", name));
-    return location;
-}
+using gl::requiredUniform;
 
 gl::Program build(const gl::ShaderSources& sources, const ShaderVariant& variant, const char* vertex,
                   const char* fragment, const std::vector<std::string>& extraDefines = {})
@@ -83,7 +76,7 @@ MeshProgram::MeshProgram(const gl::ShaderSources& sources, const ShaderVariant& 
                          const std::vector<std::string>& extraDefines)
     : program_(build(sources, variant, "mesh.vert", "mesh.frag", extraDefines)),
       model_(requiredUniform(program_, "model", "mesh.vert")),
-      label_(glGetUniformLocation(program_.id(), "label"))
+      label_(gl::optionalUniform(program_, "label"))
 {
 }
 
@@ -255,7 +248,7 @@ void BowSprayProgram::set(double time_s, glm::vec2 windDirection, float windSpee
 void BlockProgram::use() const { glUseProgram(program_.id()); }
 
 LabelProgram::LabelProgram(gl::Program program)
-    : program_(std::move(program)), rayFromPixel_(glGetUniformLocation(program_.id(), "labelRayFromPixel"))
+    : program_(std::move(program)), rayFromPixel_(gl::optionalUniform(program_, "labelRayFromPixel"))
 {
 }
 

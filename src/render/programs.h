@@ -8,7 +8,7 @@
 #include "render/temporal_resolve.h"
 #include "swell/gl/shader.h"
 #include "swell/scene.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/spray.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>

@@ -2,8 +2,8 @@
 
 #include "render/programs.h"
 #include "swell/error.h"
+#include "swell/gpu/bindings.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 #include <fmt/format.h>
 #include <glm/common.hpp>

@@ -11,7 +11,8 @@
 #include "render/slope_statistics.h"
 #include "swell/error.h"
 #include "swell/gl/shader.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/limits.h"
 
 #include <fmt/format.h>
 

@@ -27,9 +27,9 @@
 #include "render/world.h"
 #include "objects/wake_surface.h"
 #include "swell/error.h"
+#include "swell/gpu/bindings.h"
 #include "swell/grid.h"
 #include "swell/scene_changes.h"
-#include "swell/shader_constants.h"
 #include "swell/wave_model_gpu.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -8,7 +8,6 @@
 
 #include "swell/gl/handle.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 namespace swell::detail {
 

@@ -6,13 +6,15 @@
 #include "render/gl_state.h"
 #include "render/spray_buffers.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/spray.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace swell {
 

@@ -6,7 +6,8 @@
 
 #include "render/gl_state.h"
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/underwater.h"
 
 #include <fmt/format.h>
 #include <glm/matrix.hpp>

@@ -5,6 +5,7 @@
 #include "objects/wake_surface.h"
 #include "render/programs.h"
 #include "support/gl_test.h"
+#include "swell/gpu/variants.h"
 
 #include <array>
 #include <string>

@@ -1,7 +1,7 @@
 // The reflection's masking term: the sea's mean square slope the renderer
 // measures, and the GLSL Smith masking function it feeds, each against the
 // formula it implements.
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "render/slope_statistics.h"
 #include "support/gl_test.h"
 #include "support/shader_probe.h"
@@ -9,6 +9,7 @@
 #include "swell/gerstner_model.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
+#include "swell/gpu/bindings.h"
 
 #include <epoxy/gl.h>
 

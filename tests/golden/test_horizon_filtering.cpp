@@ -5,8 +5,8 @@
 // absolute frame-to-frame change of the far half of the water, filtered
 // against unfiltered (the shading with SWELL_TERM_FILTERING left out).
 #include "support/gl_test.h"
+#include "swell/gpu/variants.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 #include <glm/trigonometric.hpp>
 

@@ -3,8 +3,8 @@
 // the crests; with the sun behind the camera it is all but gone.
 #include "support/gl_test.h"
 #include "support/golden.h"
+#include "swell/gpu/variants.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 #include <glm/geometric.hpp>
 

@@ -12,8 +12,8 @@
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "swell/flat_model.h"
+#include "swell/gpu/variants.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 #include <glm/trigonometric.hpp>
 
