@@ -20,7 +20,7 @@
 // 0: no map drawn (water.caustics = false); the light under a level
 // surface everywhere.
 #ifndef SWELL_CAUSTICS
-#define SWELL_CAUSTICS 1
+#error "SWELL_CAUSTICS is given by the program's flags (src/render/programs.h)"
 #endif
 
 // The Caustics block (swell::detail::CausticsUniforms, src/render/gpu/blocks.h).

@@ -11,13 +11,6 @@
 #define SWELL_LABEL_PASS 0
 #endif
 
-// 1 where the cloud layer's shadow map shades the sun's light point by
-// point (cloud_shadow.glsl; the physical sky with clouds); 0: the frame's
-// sunIntensity alone.
-#ifndef SWELL_CLOUD_SHADOWS
-#define SWELL_CLOUD_SHADOWS 0
-#endif
-
 // The Frame block: what each member holds is said in
 // src/render/gpu/blocks.h (swell::detail::FrameUniforms), from which this is
 // generated.

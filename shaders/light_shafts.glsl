@@ -34,7 +34,7 @@
 // 0: no shafts (water.shafts = false): none of the sun's light scattered
 // in the water column.
 #ifndef SWELL_SHAFTS
-#define SWELL_SHAFTS 1
+#error "SWELL_SHAFTS is given by the program's flags (src/render/programs.h)"
 #endif
 
 // Henyey and Greenstein 1941: the share of scattered light per steradian at

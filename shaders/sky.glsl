@@ -4,6 +4,9 @@
 #define SWELL_SKY_GLSL
 #include "swell/gpu/bindings.h"
 #include "frame.glsl"
+#ifndef SWELL_CLOUD_SHADOWS
+#error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
+#endif
 #if SWELL_CLOUD_SHADOWS
 #include "cloud_shadow.glsl"
 #endif

@@ -14,6 +14,9 @@
 #include "ocean.glsl"
 #include "underwater_surface.glsl"
 #include "subsurface.glsl"
+#ifndef SWELL_CLOUD_SHADOWS
+#error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
+#endif
 #if SWELL_CLOUD_SHADOWS
 #include "cloud_shadow.glsl"
 #endif

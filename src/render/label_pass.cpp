@@ -37,10 +37,7 @@ glm::dmat3 rayFromPixel(const Camera& camera, const glm::dmat4& view, glm::ivec2
 void Renderer::Impl::drawLabelPass(const Camera& camera, const View& view, glm::ivec2 size,
                                    const std::vector<ObjectLabel>& objects)
 {
-    if (!labelPrograms || labelVariant != variant) {
-        labelPrograms = buildLabelPrograms(sources, variant);
-        labelVariant = variant;
-    }
+    updateLabelPrograms(sources, labelPrograms, programs.flags);
     const LabelPrograms& p = *labelPrograms;
     ViewFrame v = prepareView(view, size, false);
     // Which side of the surface each pixel looks out from, as the colour

@@ -94,7 +94,7 @@ void MainTarget::blitToOutput(const RenderTarget& from) const
                            outputSize_.y, GL_COLOR_BUFFER_BIT, filter);
 }
 
-int MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
+int MainTarget::present(const FxaaProgram& fxaa, GLuint emptyVao)
 {
     if (direct_)
         return 0;

@@ -156,16 +156,17 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
     const WaveModel& nextModel = *nextModelPtr;
     const bool modelChanged = first || &nextModel != &model();
     std::unique_ptr<WaveModelGpu> gpu = modelChanged ? nextModel.createGpu(sources) : nullptr;
-    const ShaderVariant nextVariant = shaderVariantOf(next, gpu ? gpu->shaderFile() : variant.oceanFile, omittedWaterTerms,
-                                                      sourceCodes(next, nextHostSources));
-    const bool programsChanged = first || nextVariant != variant;
+    const ProgramFlags nextFlags =
+        programFlagsOf(next, gpu ? *gpu : *modelGpu, omittedWaterTerms, sourceCodes(next, nextHostSources));
+    const bool programsChanged = first || nextFlags != programs.flags;
     Programs nextPrograms;
     if (programsChanged) {
         try {
-            nextPrograms = buildPrograms(sources, nextVariant);
+            // Only the programs whose own flags changed.
+            nextPrograms = buildChangedPrograms(sources, programs, nextFlags);
         } catch (...) {
             // The files of the sources still drawn, for a later reload.
-            setSurfaceSourceFiles(sources, variant.surfaceSources);
+            setSurfaceSourceFiles(sources, programs.flags.water.surface.surfaceSources);
             throw;
         }
     }
@@ -197,7 +198,7 @@ void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shar
         seaMeanSquareSlope = meanSquareSlope(model());
     }
     if (programsChanged) {
-        variant = nextVariant;
+        keepUnchangedPrograms(nextPrograms, programs);
         programs = std::move(nextPrograms);
     }
     if (worldChanged) {
@@ -315,7 +316,7 @@ void Renderer::reloadShaders()
 {
     Impl& s = *impl_;
     s.sources.forgetCachedFiles();
-    s.programs = buildPrograms(s.sources, s.variant);
+    s.programs = buildChangedPrograms(s.sources, Programs{}, s.programs.flags);
     s.labelPrograms.reset(); // built again from the new sources when next asked for
     s.bakedSky.reset(); // the bake shader may have changed
     s.physicalSkyBake = {};

@@ -69,8 +69,7 @@ struct Renderer::Impl {
     gl::ShaderSources sources;
     // Water shading terms left out, for the benchmark (RendererOptions).
     unsigned omittedWaterTerms = 0;
-    ShaderVariant variant;
-    Programs programs;
+    Programs programs; // and the flags they were built for
     gl::Buffer frameUbo[PassCount];
     gl::VertexArray emptyVao;
     WaterGrid waterGrid;
@@ -113,13 +112,13 @@ struct Renderer::Impl {
     AtmosphereTextures atmosphereTextures;
     // The physical sky's bake program: built when a scene first asks for it
     // (its ray march is the costliest shader here to compile) and kept
-    // across variants, which it does not depend on; empty until then, after
-    // a shader reload and while the sky is not physical.
+    // across scene changes, whose flags it does not read; empty until then,
+    // after a shader reload and while the sky is not physical.
     SkyBakeProgram physicalSkyBake;
     // The cloud layer's shadows on what the sun lights (cloud_shadow_map.h)
     // and their bake's program: built when a scene first has clouds, kept
-    // across variants (it reads none of their defines); used while
-    // variant.cloudShadows.
+    // across scene changes (it reads no flags); used while the scene's
+    // clouds cast shadows (cloudShadowsOn).
     CloudShadowMap cloudShadow;
     CloudShadowBakeProgram cloudShadowBake;
     // The sky's light for the scene, found again when the sun or sky changed.
@@ -164,9 +163,8 @@ struct Renderer::Impl {
     SurfaceProbe surfaceProbe;
     HostDepthCopy hostDepth; // draw()'s copy of the host's depth, for its geometry under the water
     // The label pass (swell/labels.h): its programs, built when first asked
-    // for and again when the variant changes, and its target.
+    // for and again where the colour programs' flags change, and its target.
     std::optional<LabelPrograms> labelPrograms;
-    ShaderVariant labelVariant;
     LabelTarget labelTarget;
 
     explicit Impl(RendererOptions options)
@@ -287,7 +285,7 @@ struct Renderer::Impl {
     void drawSky(bool inAir, const DepthConvention& depth);
 
     // The caustics map for a view (caustics_map.h): placed always, drawn
-    // when the variant has caustics, the sun is up and either Swell's own
+    // when the scene has caustics, the sun is up and either Swell's own
     // world is drawn and reaches under the water within the map, or the
     // shafts of light (water.shafts) may be seen, the eye below the waves'
     // crests; bound for the passes after it.

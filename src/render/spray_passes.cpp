@@ -28,6 +28,35 @@ static_assert(kCrestSlots % SWELL_SPRAY_GROUP == 0 && SWELL_BOW_SPRAY_SLOTS % SW
 constexpr int kCrestStrips = SWELL_SPRAY_DROPS;
 constexpr int kBowStrips = SWELL_BOW_SPRAY_DROPS + 1;
 
+// Whether a wind of windSpeed_mps tears spray (Beaufort 7 and up), in a
+// scene that shows it.
+bool sprayAt(const Scene& scene, double windSpeed_mps)
+{
+    return scene.water.spray && scene.debugView == DebugView::Shaded && windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
+}
+
+// The wind over the crests' spray: the wave model's, whose crests break
+// (WaveModelGpu::crestSpray); none for a model whose crests do not.
+std::optional<double> crestSprayWind_mps(const Scene& scene, const WaveModelGpu& model)
+{
+    const std::optional<WaveModelGpu::CrestSpray> crests = model.crestSpray();
+    if (!crests || !sprayAt(scene, crests->windSpeed_mps))
+        return std::nullopt;
+    return crests->windSpeed_mps;
+}
+
+// The wind over the bows' spray: the air's, as the scene gives it. The
+// bow's sheet is torn by the wind over it, whatever draws the waves: a
+// Gerstner sum of listed waves or a host's own model has no wind of its
+// own to say, so the scene does (the crests' spray, which only a model
+// whose crests break throws, takes the wind that model was made for).
+std::optional<WindSettings> bowSprayWind(const Scene& scene)
+{
+    if (!scene.waves.wind || !sprayAt(scene, scene.waves.wind->windSpeed_mps))
+        return std::nullopt;
+    return scene.waves.wind;
+}
+
 } // namespace
 
 // A spray pass's steps, its clumps' uniforms set (render/spray_buffers.h):
@@ -62,11 +91,9 @@ void Renderer::Impl::drawSprayClumps(const SprayPasses& passes, SprayBuffers& bu
 
 void Renderer::Impl::releaseUnusedSpray()
 {
-    const bool sprayOn = scene.water.spray && scene.waves.wind && scene.debugView == DebugView::Shaded &&
-                         scene.waves.wind->windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
-    if (!sprayOn || !programs.spray)
+    if (!crestSprayWind_mps(scene, *modelGpu) || !programs.spray)
         crestSprayBuffers = {};
-    if (!sprayOn || scene.objects.empty())
+    if (!bowSprayWind(scene) || scene.objects.empty())
         bowSprayBuffers = {};
 }
 
@@ -76,8 +103,7 @@ void Renderer::Impl::releaseUnusedSpray()
 // simulated time (and, for the bows' spray, of the bodies' steps up to it).
 void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
 {
-    if (!scene.water.spray || !scene.waves.wind || scene.debugView != DebugView::Shaded ||
-        scene.waves.wind->windSpeed_mps < SWELL_SPRAY_ONSET_WIND_MPS)
+    if (!crestSprayWind_mps(scene, *modelGpu) && !bowSprayWind(scene))
         return;
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
@@ -94,10 +120,13 @@ void Renderer::Impl::drawSpray(const ViewFrame& v, const View& view)
 // from Beaufort 7 to Beaufort 10.
 void Renderer::Impl::drawCrestSpray(const ViewFrame& v, const View& view)
 {
-    const double wind_mps = scene.waves.wind->windSpeed_mps;
+    const std::optional<double> wind = crestSprayWind_mps(scene, *modelGpu);
+    if (!programs.spray || !wind)
+        return;
+    const double wind_mps = *wind;
     const double amount = std::clamp((wind_mps - SWELL_SPRAY_ONSET_WIND_MPS) /
                                          (SWELL_SPRAY_FULL_WIND_MPS - SWELL_SPRAY_ONSET_WIND_MPS), 0.0, 1.0);
-    if (!programs.spray || amount <= 0.0)
+    if (amount <= 0.0)
         return;
     notify(true, "spray");
     // The lattice, its cells fixed in the world, ahead of the eye: its
@@ -123,7 +152,8 @@ void Renderer::Impl::drawCrestSpray(const ViewFrame& v, const View& view)
 // when no body is under way.
 void Renderer::Impl::drawBowSpray(const ViewFrame& v)
 {
-    if (!programs.bowSpray)
+    const std::optional<WindSettings> wind = bowSprayWind(scene);
+    if (!programs.bowSpray || !wind)
         return;
     BowSprayHulls hulls;
     double lag_s = 0.0;
@@ -160,10 +190,9 @@ void Renderer::Impl::drawBowSpray(const ViewFrame& v)
         return;
     hulls.historyLag_s = float(lag_s);
     notify(true, "bow spray");
-    const WindSettings& wind = *scene.waves.wind;
-    const double direction_rad = glm::radians(wind.windDirection_deg);
+    const double direction_rad = glm::radians(wind->windDirection_deg);
     programs.bowSpray.set(simulated->time_s, glm::vec2(std::cos(direction_rad), std::sin(direction_rad)),
-                          float(wind.windSpeed_mps), hulls);
+                          float(wind->windSpeed_mps), hulls);
     drawSprayClumps(programs.bowSpray, bowSprayBuffers, hulls.count * SWELL_BOW_SPRAY_SLOTS,
                     SWELL_BOW_SPRAY_HULLS * SWELL_BOW_SPRAY_SLOTS, kBowSprayClumpBytes, kBowStrips);
     notify(false, "bow spray");

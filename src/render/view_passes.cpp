@@ -151,8 +151,9 @@ void Renderer::Impl::drawCaustics(const ViewFrame& v, bool ownWorld)
     const bool wanted = v.base.eyeUnderwater != 0 || worldUnderMap(v.base, caustics.uniforms(), floating);
     // The shafts of light read it along the rays of any pixel under the water, the world drawn or not:
     // wherever the main pass's near plane is not wholly in the air (its programs then have no shafts).
-    const bool shafts = variant.shafts && nearPlaneMedium(nearPlaneCorners(glm::inverse(v.viewProj), v.depth.nearNdcZ),
-                                                          simulatedReach()) != NearPlaneMedium::Air;
+    const bool shafts = programs.flags.water.underwater.shafts &&
+                        nearPlaneMedium(nearPlaneCorners(glm::inverse(v.viewProj), v.depth.nearNdcZ),
+                                        simulatedReach()) != NearPlaneMedium::Air;
     if (programs.caustics && v.base.sunDirection.y > 0.0f && ((ownWorld && wanted) || shafts)) {
         notify(true, "caustics");
         modelGpu->bind();
@@ -322,7 +323,7 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
         glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
         if (usesPhysicalSky(scene)) {
             if (!physicalSkyBake)
-                physicalSkyBake = SkyBakeProgram(sources, variant, true);
+                physicalSkyBake = SkyBakeProgram(sources, true);
             if (!atmosphereTextures.transmittance)
                 atmosphereTextures.upload(*atmosphere);
             atmosphereTextures.bind();
@@ -339,9 +340,9 @@ void Renderer::Impl::drawView(const View& view, GLuint framebuffer, const DrawOp
     }
     // The cloud layer's shadows, baked again only when the clouds, the sun
     // or the camera's neighbourhood changed; before every pass that reads them.
-    if (variant.cloudShadows) {
+    if (programs.flags.water.underwater.cloudShadows) {
         if (!cloudShadowBake)
-            cloudShadowBake = CloudShadowBakeProgram(sources, variant);
+            cloudShadowBake = CloudShadowBakeProgram(sources);
         notify(true, "cloud shadows");
         if (cloudShadow.update(cloudShadowBake, emptyVao.id(), scene.sky.clouds, base.sunDirection, v.origin,
                                float(currentSkyLight().sunCloudTransmittance))) {

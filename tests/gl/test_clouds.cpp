@@ -181,7 +181,7 @@ struct BakedShadowMap {
 void bakeShadowMap(BakedShadowMap& baked, const swell::CloudSettings& clouds)
 {
     const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
-    const swell::detail::CloudShadowBakeProgram program(sources, swell::detail::ShaderVariant{});
+    const swell::detail::CloudShadowBakeProgram program(sources);
     const swell::gl::VertexArray vao = swell::gl::VertexArray::create();
     EXPECT_TRUE(baked.map.update(program, vao.id(), clouds, kShadowSun, kShadowOrigin, 1.0f));
     // The same again: nothing to bake.

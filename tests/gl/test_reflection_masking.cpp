@@ -54,7 +54,8 @@ void main()
     share[gl_GlobalInvocationID.x] = unmaskedShare(vec3(cos(elevation_rad), sin(elevation_rad), 0.0));
 }
 )",
-                                                                      {"SWELL_REFLECTION_MODE SWELL_REFLECTION_RAYMARCH"});
+                                                                      {"SWELL_REFLECTION_MODE SWELL_REFLECTION_RAYMARCH",
+                                                                       "SWELL_CLOUD_SHADOWS 0"});
 
     swell::detail::FrameUniforms frame{};
     const double s2 = 0.05; // about a 9 m/s wind (Cox & Munk 1954: 0.003 + 5.12e-3 U)

@@ -202,6 +202,9 @@ public:
     // The CPU twin's queries transform every cascade at each new time.
     bool answersFrameQueries() const override { return true; }
 
+    // Its whitecaps are where crests break, torn by the wind it was made for.
+    std::optional<CrestSpray> crestSpray() const override { return CrestSpray{settings_.wind.windSpeed_mps}; }
+
     void updateUniforms(glm::dvec2 gridCenter_m)
     {
         SpectralUniforms u{};
