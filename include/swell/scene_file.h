@@ -10,8 +10,8 @@
 
 #include "swell/export.h"
 
+#include "swell/gpu/limits.h"
 #include "swell/scene.h"
-#include "swell/shader_constants.h"
 
 #include <cstddef>
 #include <filesystem>

@@ -3,6 +3,7 @@
 
 #include "assets/scene_assets.h"
 #include "swell/error.h"
+#include "swell/gpu/limits.h"
 #include "swell/image.h"
 
 #include <glm/common.hpp>

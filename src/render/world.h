@@ -4,12 +4,12 @@
 // the reflection march.
 #pragma once
 
-#include "render/gpu_types.h"
-#include "render/mesh.h"
-#include "render/surface_probe.h"
 #include "assets/island_levels.h"
 #include "assets/mesh_data.h"
 #include "objects/scene_bodies.h"
+#include "render/gpu/blocks.h"
+#include "render/mesh.h"
+#include "render/surface_probe.h"
 #include "swell/drawn_surface.h"
 #include "swell/scene.h"
 #include "swell/wave_model.h"
