@@ -9,7 +9,9 @@
 // multiple-scattering look-ups point by point.
 #ifndef SWELL_ATMOSPHERE_GLSL
 #define SWELL_ATMOSPHERE_GLSL
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/sky.h"
+#include "gpu/constants.glsl"
 
 layout(binding = SWELL_UNIT_SKY_TRANSMITTANCE) uniform sampler2D atmosphereTransmittance;
 // Layer 0: Psi_ms; layers 1 to 3: the air's order-2 harmonics.
@@ -21,7 +23,6 @@ uniform float atmosphereRayleighScale;
 
 const float kAtmosphereBottom = SWELL_ATMOSPHERE_BOTTOM_RADIUS_M;
 const float kAtmosphereTop = SWELL_ATMOSPHERE_TOP_RADIUS_M;
-const float kAtmospherePi = 3.14159265358979;
 
 // Extinction, Rayleigh scattering (rgb) and Mie scattering (a) at an altitude.
 void atmosphereAt(float altitude_m, out vec3 extinction, out vec4 scattering)
@@ -98,12 +99,12 @@ vec3 atmosphereRayleighOrder2At(float altitude, float muSun, float muView, float
 
 float atmosphereRayleighPhase(float c)
 {
-    return 3.0 / (16.0 * kAtmospherePi) * (1.0 + c * c);
+    return 3.0 / (16.0 * SWELL_PI) * (1.0 + c * c);
 }
 
 float atmosphereMiePhase(float c, float g)
 {
-    float k = 3.0 / (8.0 * kAtmospherePi) * (1.0 - g * g) / (2.0 + g * g);
+    float k = 3.0 / (8.0 * SWELL_PI) * (1.0 - g * g) / (2.0 + g * g);
     return k * (1.0 + c * c) / pow(1.0 + g * g - 2.0 * g * c, 1.5);
 }
 

@@ -12,26 +12,19 @@
 // its mean (each cell's flux lands somewhere, only spread over another area).
 #ifndef SWELL_CAUSTICS_GLSL
 #define SWELL_CAUSTICS_GLSL
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/underwater.h"
+#include "gpu/constants.glsl"
 #include "water_optics.glsl"
 
 // 0: no map drawn (water.caustics = false); the light under a level
 // surface everywhere.
 #ifndef SWELL_CAUSTICS
-#define SWELL_CAUSTICS 1
+#error "SWELL_CAUSTICS is given by the program's flags (src/render/programs.h)"
 #endif
 
-// Mirrored by swell::detail::CausticsUniforms (src/render/caustics_map.h).
-layout(std140, binding = SWELL_BINDING_CAUSTICS) uniform Caustics {
-    vec3 causticsSun;            // towards the sun, unit (the scene's)
-    float causticsMapSize_m;     // the map's side, m
-    vec2 causticsMapCorner_m;    // its texel (0, 0)'s outer corner relative to the render origin, x, z, m
-    vec2 causticsSourceCorner_m; // the source grid's vertex (0, 0), rest point relative to the render origin, m
-    vec2 causticsGridCenter_m;   // the wave model's grid centre relative to the render origin, m
-    float causticsCellSize_m;    // the source grid's spacing, m
-    int causticsCells;           // source grid cells per side
-    vec4 causticsSliceDepth_m;   // xyz: each slice's depth below the mean level, m
-};
+// The Caustics block (swell::detail::CausticsUniforms, src/render/gpu/blocks.h).
+#include "gpu/caustics_block.glsl"
 
 #if SWELL_CAUSTICS
 layout(binding = SWELL_UNIT_CAUSTICS) uniform sampler2DArray causticsMap;

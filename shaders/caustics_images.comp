@@ -21,6 +21,9 @@
 // and a GPU that blends in the order of the primitives waits on each one
 // touching the texels of the one before (an NVIDIA H100 took 12.2 ms for
 // the pass in the grid's order, 2.1 ms scattered).
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/underwater.h"
+#include "gpu/constants.glsl"
 #include "caustics.glsl"
 
 layout(local_size_x = SWELL_CAUSTICS_GROUP) in;

@@ -3,6 +3,8 @@
 // water's grid is, with the sun's ray refracted there (Snell's law) and the
 // share of its light the surface lets in (Fresnel). Once a point: the
 // triangles (caustics_images.comp) share them.
+#include "swell/gpu/bindings.h"
+#include "gpu/constants.glsl"
 #include "caustics.glsl"
 #include "ocean.glsl"
 

@@ -7,14 +7,12 @@
 // without, the sun's light is the frame's alone, as it always was.
 #ifndef SWELL_CLOUD_SHADOW_GLSL
 #define SWELL_CLOUD_SHADOW_GLSL
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/sky.h"
 #include "frame.glsl"
 
-// Mirrored by swell::detail::CloudShadowUniforms (src/render/cloud_shadow_map.h).
-layout(std140, binding = SWELL_BINDING_CLOUD_SHADOW) uniform CloudShadow {
-    vec2 cloudShadowCorner_m; // the map's texel (0, 0)'s outer corner relative to the render origin, x, z, m
-    float cloudShadowSize_m;  // the map's side, m
-    float cloudShadowSkySun;  // the layer's transmittance towards the sun from the sky's observer (the sun's disc)
-};
+// The CloudShadow block (swell::detail::CloudShadowUniforms, src/render/gpu/blocks.h).
+#include "gpu/cloud_shadow_block.glsl"
 
 layout(binding = SWELL_UNIT_CLOUD_SHADOW) uniform sampler2D cloudShadowMap;
 

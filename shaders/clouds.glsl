@@ -5,7 +5,8 @@
 // agree. Needs atmosphere.glsl (the air's transmittance).
 #ifndef SWELL_CLOUDS_GLSL
 #define SWELL_CLOUDS_GLSL
-#include "swell/shader_constants.h"
+#include "swell/gpu/sky.h"
+#include "gpu/constants.glsl"
 #include "atmosphere.glsl"
 
 // CloudSettings: cover 0..1 (0: no layer), altitude_m, opticalDepth, scale_m.
@@ -153,7 +154,7 @@ float cloudShadowTransmittance(vec3 point_m, vec3 sun, float footprint_m)
 
 float cloudHenyeyGreenstein(float cosAngle, float g)
 {
-    return (1.0 - g * g) / (4.0 * kAtmospherePi * pow(1.0 + g * g - 2.0 * g * cosAngle, 1.5));
+    return (1.0 - g * g) / (4.0 * SWELL_PI * pow(1.0 + g * g - 2.0 * g * cosAngle, 1.5));
 }
 
 // swell::cloudySkyRadiance: the sky with the layer, from the clear sky's
@@ -183,7 +184,7 @@ vec3 cloudySkyRadiance(vec3 direction, vec3 sun, vec3 clear)
     float light = 0.0;
     if (muSun > 0.0) {
         float sunDirect = exp(-tau / muSun);
-        float diffuse = max(total - sunDirect, 0.0) * muSun / kAtmospherePi;
+        float diffuse = max(total - sunDirect, 0.0) * muSun / SWELL_PI;
         float p = cloudHenyeyGreenstein(cosAngle, g);
         float once = abs(muView - muSun) < 1.0e-4 ? p * tau / muSun * sunDirect
                                                     : p * muSun / (muView - muSun) * (direct - sunDirect);

@@ -4,7 +4,7 @@
 // diagonal neighbours and the pixel is replaced by samples taken along the
 // edge, which blends a stair step into a ramp. Reads and writes display-ready
 // (sRGB-encoded) colour, the space in which steps are seen.
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 layout(binding = SWELL_UNIT_POST_SOURCE) uniform sampler2D source;
 

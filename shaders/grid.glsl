@@ -52,6 +52,8 @@
 // scale's lattices are lattices of scale 1.
 #ifndef SWELL_GRID_GLSL
 #define SWELL_GRID_GLSL
+#include "swell/gpu/limits.h"
+#include "swell/gpu/variants.h"
 #include "frame.glsl"
 
 struct GridVertex {

@@ -6,7 +6,7 @@
 // into the host's (colour writes off), so the host's later passes are
 // tested against the water. Bilinear for the colour, the nearest texel for
 // the depth (depths are never blended).
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 layout(binding = SWELL_UNIT_POST_SOURCE) uniform sampler2D copyColour;
 layout(binding = SWELL_UNIT_HOST_DEPTH) uniform sampler2D copyDepth;

@@ -27,12 +27,14 @@
 // bands become fine, fixed noise (the same in every frame and every run).
 #ifndef SWELL_LIGHT_SHAFTS_GLSL
 #define SWELL_LIGHT_SHAFTS_GLSL
+#include "swell/gpu/underwater.h"
+#include "gpu/constants.glsl"
 #include "caustics.glsl"
 
 // 0: no shafts (water.shafts = false): none of the sun's light scattered
 // in the water column.
 #ifndef SWELL_SHAFTS
-#define SWELL_SHAFTS 1
+#error "SWELL_SHAFTS is given by the program's flags (src/render/programs.h)"
 #endif
 
 // Henyey and Greenstein 1941: the share of scattered light per steradian at
@@ -41,7 +43,7 @@ float shaftsPhase(float cosTheta)
 {
     const float g = SWELL_WATER_PHASE_G;
     float denom = 1.0 + g * g - 2.0 * g * cosTheta;
-    return (1.0 - g * g) / (4.0 * 3.14159265 * denom * sqrt(denom));
+    return (1.0 - g * g) / (4.0 * SWELL_PI * denom * sqrt(denom));
 }
 
 // The integral of exp(-k t) dt from t0 to t1, per channel (k may be

@@ -1,6 +1,7 @@
 // Phong diffuse and specular from the sun, and Schlick's Fresnel term.
 #ifndef SWELL_LIGHTING_GLSL
 #define SWELL_LIGHTING_GLSL
+#include "gpu/constants.glsl"
 #include "frame.glsl"
 
 float fresnelSchlick(float cosTheta, float f0)
@@ -33,7 +34,6 @@ float phongSpecular(vec3 normal, vec3 toEye, float shininess, float f0)
 {
     vec3 r = reflect(-sunDirection, normal);
     vec3 h = normalize(sunDirection + toEye);
-    const float pi = 3.14159265;
-    return fresnelSchlick(dot(h, toEye), f0) * pow(max(dot(r, toEye), 0.0), shininess) * (shininess + 2.0) / (8.0 * pi);
+    return fresnelSchlick(dot(h, toEye), f0) * pow(max(dot(r, toEye), 0.0), shininess) * (shininess + 2.0) / (8.0 * SWELL_PI);
 }
 #endif

@@ -1,9 +1,13 @@
 // World geometry: Phong diffuse from the sun, the sky's ambient light, fog.
+#include "swell/gpu/variants.h"
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"
 #include "underwater.glsl"
 #include "caustics.glsl"
+#ifndef SWELL_CLOUD_SHADOWS
+#error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
+#endif
 #if SWELL_CLOUD_SHADOWS
 #include "cloud_shadow.glsl"
 #endif

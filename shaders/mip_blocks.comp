@@ -9,9 +9,9 @@
 // 0.5 ms of its CPU a chain): this pass is two dispatches a 256^2 chain,
 // and builds a second chain of the same size (chain B: another texture,
 // another format) in the same dispatches, its layers after chain A's.
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = SWELL_DOWNSAMPLE_BLOCKS_GROUP, local_size_y = SWELL_DOWNSAMPLE_BLOCKS_GROUP) in;
 
 layout(binding = SWELL_UNIT_DOWNSAMPLE_SOURCE) uniform sampler2DArray sourceA;
 layout(binding = SWELL_UNIT_DOWNSAMPLE_SOURCE_B) uniform sampler2DArray sourceB;

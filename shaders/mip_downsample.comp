@@ -5,7 +5,7 @@
 // block of the source in shared memory, so a 256^2 chain takes two
 // dispatches instead of a draw or blit per level and layer, which measured
 // 0.18 to 0.36 ms a chain on an NVIDIA H200 (docs/PERFORMANCE.md).
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 #define SIDE (1 << (SWELL_DOWNSAMPLE_LEVELS - 1))
 layout(local_size_x = SIDE, local_size_y = SIDE) in;

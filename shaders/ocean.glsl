@@ -18,10 +18,9 @@
 // and the water's fragment shader calls the latter with the data
 // interpolated over the triangle and the grid's cell size there (m).
 // The renderer builds them with SWELL_OCEAN_FILE naming the model's GLSL
-// file (src/render/wave_model_gpu.h), so no water shader names a model.
+// file (include/swell/wave_model_gpu.h), so no water shader names a model.
 #ifndef SWELL_OCEAN_GLSL
 #define SWELL_OCEAN_GLSL
-#include "swell/shader_constants.h"
 
 // Mirrors swell::SurfacePoint (swell/wave_model.h), plus the whitecap
 // foam, which only the GPU tracks.

@@ -1,6 +1,8 @@
 // Looking up what the water reflects in the mirrored-world texture of pass 1.
 #ifndef SWELL_REFLECTION_GLSL
 #define SWELL_REFLECTION_GLSL
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/variants.h"
 #include "frame.glsl"
 #include "fog.glsl"
 #include "sky.glsl"

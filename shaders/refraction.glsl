@@ -2,6 +2,7 @@
 // bent by the normal and absorbed per channel with the path length (Beer-Lambert).
 #ifndef SWELL_REFRACTION_GLSL
 #define SWELL_REFRACTION_GLSL
+#include "swell/gpu/bindings.h"
 #include "frame.glsl"
 
 layout(binding = SWELL_UNIT_REFRACTION_COLOR) uniform sampler2D refractionColor;

@@ -1,4 +1,5 @@
 // The sky behind everything, fogged toward the horizon with the same fog as the water.
+#include "swell/gpu/label_classes.h"
 #include "frame.glsl"
 #include "fog.glsl"
 #include "sky.glsl"

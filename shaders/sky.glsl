@@ -2,7 +2,11 @@
 // or the user's six images) plus the sun's disc drawn analytically on top.
 #ifndef SWELL_SKY_GLSL
 #define SWELL_SKY_GLSL
+#include "swell/gpu/bindings.h"
 #include "frame.glsl"
+#ifndef SWELL_CLOUD_SHADOWS
+#error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
+#endif
 #if SWELL_CLOUD_SHADOWS
 #include "cloud_shadow.glsl"
 #endif

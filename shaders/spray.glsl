@@ -6,7 +6,8 @@
 #ifndef SWELL_SPRAY_GLSL
 #define SWELL_SPRAY_GLSL
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/spray.h"
+#include "gpu/constants.glsl"
 
 // A 32-bit integer hash (Wellons 2018, "lowbias32"): every input bit
 // changes about half the output bits; GLSL's sin-based hashes are not
@@ -167,7 +168,7 @@ float bowSprayTau_s(uint key, uint drop)
 // 20 degrees, where Wagner's flat-plate limit would throw it ever faster.
 float bowSlamJet_mps(float plunge_mps, float flareCot)
 {
-    return 3.14159265 * plunge_mps * clamp(flareCot, 0.0, float(SWELL_BOW_SPRAY_MAX_FLARE_COT));
+    return SWELL_PI * plunge_mps * clamp(flareCot, 0.0, float(SWELL_BOW_SPRAY_MAX_FLARE_COT));
 }
 
 // A piece of the bow's sheet: its launch velocity, m/s, in the earth's
@@ -209,7 +210,7 @@ float bowSheetTau_s() { return bowSprayFallSpeed_mps(1.0e-3) / 9.81; }
 // inertia (Taylor 1959, Proc. R. Soc. A 253, "The dynamics of thin sheets
 // of fluid III. Disintegration of fluid sheets"; Culick 1960, J. Appl.
 // Phys. 31, "Comments on a ruptured soap film"): v = sqrt(2 sigma /
-// (rho h)), sea water's sigma and rho from swell/shader_constants.h.
+// (rho h)), sea water's sigma and rho from swell/constants.h.
 float bowSheetRetraction_mps(float thickness_m)
 {
     return sqrt(2.0 * float(SWELL_SEA_WATER_SURFACE_TENSION_N_PER_M)
@@ -228,7 +229,7 @@ float bowSheetTorn(uint key, float age_s)
                             sprayUnit(key, 110u)) * 1e-3;
     float r_m = bowSheetRetraction_mps(thickness_m) * age_s;
     float spacing_m = float(SWELL_BOW_SPRAY_HOLE_SPACING_M);
-    return min(3.14159265 * r_m * r_m / (spacing_m * spacing_m), 1.0);
+    return min(SWELL_PI * r_m * r_m / (spacing_m * spacing_m), 1.0);
 }
 
 #endif

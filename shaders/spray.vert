@@ -11,6 +11,7 @@
 // the draw through a software rasteriser's slow clipping path). (A geometry shader
 // emitted these ribbons once: docs/PERFORMANCE.md, "The spray without a
 // geometry shader".)
+#include "swell/gpu/spray.h"
 #include "frame.glsl"
 #include "spray_clump.glsl"
 

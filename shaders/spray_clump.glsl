@@ -10,7 +10,8 @@
 #ifndef SWELL_SPRAY_CLUMP_GLSL
 #define SWELL_SPRAY_CLUMP_GLSL
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/spray.h"
 
 #ifdef SWELL_BOW_SPRAY
 #define SPRAY_DROPS SWELL_BOW_SPRAY_DROPS

@@ -7,7 +7,8 @@
 // the first sums the runs in turn, and each lists its run from its sum.
 // Nothing depends on which invocation finishes first, so the draw's order,
 // and with it the blended frame, is the same in every run.
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/spray.h"
 #include "spray_clump.glsl"
 
 layout(local_size_x = SWELL_SPRAY_LIST_GROUP) in;

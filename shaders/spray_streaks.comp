@@ -12,11 +12,16 @@
 // one, made fainter by as much (its coverage kept), so distant spray thins
 // into a haze instead of sparkling. Here its four points, lit, its path,
 // its width and its opacity, or that it is not drawn.
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/spray.h"
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"
 #include "spray.glsl"
 #include "spray_clump.glsl"
+#ifndef SWELL_CLOUD_SHADOWS
+#error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
+#endif
 #if SWELL_CLOUD_SHADOWS
 #include "cloud_shadow.glsl"
 #endif

@@ -19,13 +19,13 @@
 //   light does not reach through the troughs.
 #ifndef SWELL_SUBSURFACE_GLSL
 #define SWELL_SUBSURFACE_GLSL
+#include "gpu/constants.glsl"
 #include "frame.glsl"
 
 float henyeyGreenstein(float cosTheta, float g)
 {
-    const float pi = 3.14159265;
     float d = 1.0 + g * g - 2.0 * g * cosTheta;
-    return (1.0 - g * g) / (4.0 * pi * d * sqrt(d));
+    return (1.0 - g * g) / (4.0 * SWELL_PI * d * sqrt(d));
 }
 
 // Radiance the crest at height height_m (above the mean level) sends to the

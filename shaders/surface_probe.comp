@@ -6,6 +6,7 @@
 // search, src/core/drawn_search.h). One workgroup a query: its first
 // invocation finds the rest point, then each invocation places one vertex
 // of the block.
+#include "swell/gpu/bindings.h"
 #include "water_vertex.glsl"
 
 layout(local_size_x = SWELL_PROBE_BLOCK, local_size_y = SWELL_PROBE_BLOCK) in;

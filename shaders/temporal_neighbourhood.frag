@@ -8,7 +8,8 @@
 // pixels share one drawn sample, so the neighbourhood is gathered once per
 // drawn pixel here instead of once per output pixel there: at a render
 // scale of 0.3 that is 11 times fewer reads.
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/temporal.h"
 #include "temporal_colour.glsl"
 
 layout(binding = SWELL_UNIT_POST_SOURCE) uniform sampler2D frameColor;

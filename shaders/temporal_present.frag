@@ -3,7 +3,7 @@
 // one (a blit there needs the same format on both sides), a float one (it
 // would lose the history's precision), one with several colour buffers.
 // Its colour, opaque (the history's alpha holds its weight).
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 layout(binding = SWELL_UNIT_TEMPORAL_HISTORY) uniform sampler2D history;
 // The output viewport's lower-left corner, pixels (draw()'s views may lie

@@ -27,7 +27,8 @@
 //      frame starts again from the frame alone.
 // Colours are the main pass's display-ready (sRGB-encoded) values, in which
 // the clip's box and the blend are perceptually even.
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/temporal.h"
 #include "temporal_colour.glsl"
 
 layout(binding = SWELL_UNIT_POST_SOURCE) uniform sampler2D frameColor;

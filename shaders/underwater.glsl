@@ -11,8 +11,12 @@
 // whole frame. Far from the surface the mask is cleared to the eye's side.
 #ifndef SWELL_UNDERWATER_GLSL
 #define SWELL_UNDERWATER_GLSL
+#include "swell/gpu/bindings.h"
 #include "frame.glsl"
 #include "light_shafts.glsl"
+#ifndef SWELL_CLOUD_SHADOWS
+#error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
+#endif
 #if SWELL_CLOUD_SHADOWS
 #include "cloud_shadow.glsl"
 #endif
@@ -21,7 +25,7 @@
 // the water (render/programs.h): pixelUnderwater() is then false, so the
 // compiler drops the underwater shading from every caller.
 #ifndef SWELL_SEEN_FROM_BELOW
-#define SWELL_SEEN_FROM_BELOW 1
+#error "SWELL_SEEN_FROM_BELOW is given by the program's flags (src/render/programs.h)"
 #endif
 
 layout(binding = SWELL_UNIT_WATERLINE) uniform sampler2D waterlineMask;

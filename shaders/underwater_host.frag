@@ -5,6 +5,7 @@
 // colour is not read: the pass blends with two outputs (dual-source),
 //   result = inscatter + host colour * transmittance,
 // per channel. Its depth is a copy of the host's (hostDepth).
+#include "swell/gpu/bindings.h"
 #include "frame.glsl"
 #include "underwater.glsl"
 

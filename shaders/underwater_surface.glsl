@@ -5,6 +5,7 @@
 // own colour, seen in the mirror of the surface, surrounds the window.
 #ifndef SWELL_UNDERWATER_SURFACE_GLSL
 #define SWELL_UNDERWATER_SURFACE_GLSL
+#include "gpu/constants.glsl"
 #include "frame.glsl"
 #include "fog.glsl"
 #include "sky.glsl"

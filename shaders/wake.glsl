@@ -7,14 +7,10 @@
 // the drawn surface the CPU queries (swell/drawn_surface.h) is this one.
 #ifndef SWELL_WAKE_GLSL
 #define SWELL_WAKE_GLSL
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
-// Mirrored by swell::detail::WakeUniforms (src/render/wake_texture.h).
-layout(std140, binding = SWELL_BINDING_WAKE) uniform Wake {
-    vec2 wakeCorner_m;    // centre of cell (0, 0) relative to the render origin, x, z, m
-    float wakeCellSize_m; // m
-    int wakeCells;        // per side; 0: no wake this frame
-};
+// The Wake block (swell::detail::WakeUniforms, src/render/gpu/blocks.h).
+#include "gpu/wake_block.glsl"
 layout(binding = SWELL_UNIT_WAKE) uniform sampler2D wakeTexels; // RGBA32F: height m, d/dx, d/dz, foam 0..1
 
 vec4 wakeTexel(ivec2 cell)

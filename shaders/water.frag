@@ -3,7 +3,9 @@
 // light through backlit crests, whitecap foam (the waves' and the bodies'
 // wake's), and fog; seen from below, Snell's window
 // (underwater_surface.glsl). Each term can be left out for the benchmark
-// (SWELL_TERM_* in swell/shader_constants.h).
+// (SWELL_TERM_* in swell/gpu/variants.h).
+#include "swell/gpu/label_classes.h"
+#include "swell/gpu/variants.h"
 #include "frame.glsl"
 #include "fog.glsl"
 #include "lighting.glsl"
@@ -12,6 +14,9 @@
 #include "ocean.glsl"
 #include "underwater_surface.glsl"
 #include "subsurface.glsl"
+#ifndef SWELL_CLOUD_SHADOWS
+#error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
+#endif
 #if SWELL_CLOUD_SHADOWS
 #include "cloud_shadow.glsl"
 #endif
@@ -159,7 +164,16 @@ void main()
 #endif
     float fresnel = fresnelSchlick(dot(n, v), fresnelF0);
 #if SWELL_HAS_TERM(SWELL_TERM_LIGHTING)
-    // Phong diffuse lights the light scattered inside the water.
+    // Phong diffuse lights the light scattered inside the water. The sky
+    // lights it from every side, whatever the surface's facing: 0.35 of it,
+    // so a face turned from the sun keeps a third of the water's colour
+    // rather than going black; the sun's 0.65 follows the facing.
+    // The relighting fades in along the refracted path, at 0.2 per metre
+    // (over its first 5 m, e-folding): what lies close under the surface was
+    // lit by its own pass already and keeps that light, while the water's
+    // own colour, behind a long path, takes the surface's. The path is cut
+    // at 100 m, where the weight is 1 to 2e-9, so the 1e6 m that stands for
+    // "nothing under the water" (refraction.glsl) changes nothing.
 #if SWELL_CLOUD_SHADOWS
     // The water's own colour (waterDeep) is the scene's, chosen for its
     // prevailing light, which the sun's intensity never entered: the

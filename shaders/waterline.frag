@@ -1,6 +1,7 @@
 // The waterline mask (see underwater.glsl): the water surface alone, depth
 // tested against itself, keeps for each pixel the side from which its
 // nearest fragment beyond the near plane is seen.
+#include "swell/gpu/underwater.h"
 #include "frame.glsl"
 #include "underwater.glsl"
 

@@ -11,15 +11,12 @@
 // amount that marks a breaking's own foam.
 #ifndef SWELL_WHITECAP_FOAM_GLSL
 #define SWELL_WHITECAP_FOAM_GLSL
-#include "swell/shader_constants.h"
+#include "swell/gpu/ocean.h"
 
 // One lattice of the foam's texture (swell::spectral::FoamNoiseMap):
-// cells q = map * x + offset_cells for x from the lattices' origin, m.
-struct FoamNoise {
-    vec4 map;            // column-major 2 x 2: cells per metre along x, then along z
-    vec2 offset_cells;   // the origin's cell modulo SWELL_FOAM_NOISE_PERIOD
-    float cyclesPerMetre; // across the streaks: what the footprint filters
-};
+// FoamNoise, cells q = map * x + offset_cells for x from the lattices'
+// origin, m (swell::detail::FoamNoiseUniform, src/ocean/foam/gpu/foam_noise_block.h).
+#include "gpu/foam_noise.glsl"
 
 // A random gradient at a lattice vertex: an integer hash of the vertex
 // modulo the period (multiply-xorshift; GLSL does not specify sin's

@@ -11,7 +11,8 @@ struct EmbeddedFile {
     std::string_view text;
 };
 
-// The GLSL sources and the shared constants header, as they were at build time.
+// The GLSL sources, the constants headers they share with C++ (swell/gpu/*.h)
+// and the files generated from C++ (gpu/*.glsl), as they were at build time.
 std::span<const EmbeddedFile> embeddedShaderFiles();
 
 // The built-in models' glTF files (relative to assets/models/), as

@@ -12,7 +12,6 @@
 #include "swell/parameters.h"
 #include "swell/renderer.h"
 #include "swell/scene.h"
-#include "swell/shader_constants.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>

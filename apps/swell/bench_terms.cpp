@@ -2,7 +2,7 @@
 // the term left out, against the full frame of the same camera and time.
 #include "bench.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/variants.h"
 
 #include <nlohmann/json.hpp>
 

@@ -17,7 +17,7 @@ struct DataFolders {
     std::filesystem::path scenes;  // preset scene files (*.toml)
     std::filesystem::path models;  // example glTF models
     std::filesystem::path shaders; // GLSL sources laid out like shaders/
-    std::filesystem::path include; // holds swell/shader_constants.h for the shaders
+    std::filesystem::path include; // holds swell/gpu/*.h for the shaders
     bool installed = false;        // found beside the executable, not the source tree
 };
 

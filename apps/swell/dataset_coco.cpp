@@ -1,6 +1,7 @@
 #include "dataset_coco.h"
 
 #include "swell/error.h"
+#include "swell/gpu/label_classes.h"
 #include "swell/labels.h"
 #include "swell/sweep.h"
 

@@ -5,6 +5,7 @@
 #include "swell/spectrum.h"
 
 #include "swell/error.h"
+#include "swell/gpu/label_classes.h"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>

@@ -15,7 +15,7 @@
 #pragma once
 
 #include "swell/export.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/sky.h"
 
 #include <glm/vec3.hpp>
 
@@ -26,7 +26,7 @@
 namespace swell {
 
 // What a scene can change in the atmosphere (the rest are the constants of
-// swell/shader_constants.h).
+// swell/constants.h and swell/gpu/sky.h).
 struct SWELL_API AtmosphereSettings {
     double mieScale = 1.0;      // aerosol density over Bruneton 2017's clear air, 0..20 (haze)
     double rayleighScale = 1.0; // air over Bruneton 2017's Earth's at every altitude, 0..10 (thinner or thicker air)

@@ -106,7 +106,7 @@ class SWELL_API RendererTesting {
 public:
     // For measuring what each term of the water shading costs (swell bench):
     // a renderer with the terms left out, a bitwise or of SWELL_TERM_*
-    // (swell/shader_constants.h), each replaced by its cheapest stand-in.
+    // (swell/gpu/variants.h), each replaced by its cheapest stand-in.
     // 0 draws the water in full.
     static std::unique_ptr<Renderer> create(const Scene& scene, RendererOptions options, unsigned omittedWaterTerms);
 

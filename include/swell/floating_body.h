@@ -13,6 +13,7 @@
 // its limits.
 #pragma once
 
+#include "swell/constants.h"
 #include "swell/error.h"
 #include "swell/export.h"
 #include "swell/surface_query.h"
@@ -42,10 +43,6 @@ inline constexpr double kBodyStep_s = 1.0 / kBodyStepsPerSecond;
 // 0.5 s) change little in 1/30 s, and a query of the spectral model's CPU
 // twin at a new time costs a transform of its fields.
 inline constexpr int kBodyStepsPerWaterSample = 4;
-
-// Sea water's density, kg/m^3 (a typical surface value; UNESCO 1981 gives
-// 1020..1030 at 35 PSU and 0..25 degC).
-inline constexpr double kSeaWaterDensity_kg_per_m3 = 1025.0;
 
 // A body under way is steered: a helmsman holds it on the heading it
 // starts with (BodyStart::yaw_deg) by a yaw torque, a critically damped

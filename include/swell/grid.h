@@ -5,8 +5,8 @@
 
 #include "swell/export.h"
 
+#include "swell/gpu/limits.h"
 #include "swell/scene.h"
-#include "swell/shader_constants.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -9,8 +9,8 @@
 #include "swell/export.h"
 
 #include "swell/camera.h"
+#include "swell/gpu/label_classes.h"
 #include "swell/scene.h"
-#include "swell/shader_constants.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

@@ -20,13 +20,16 @@
 #include "swell/camera.h"
 #include "swell/drawn_surface.h"
 #include "swell/gl/shader_sources.h"
+#include "swell/gpu/limits.h"
+#include "swell/gpu/temporal.h"
+#include "swell/gpu/variants.h"
 #include "swell/image.h"
 #include "swell/labels.h"
 #include "swell/pass_observer.h"
 #include "swell/scene.h"
+#include "swell/surface_source.h"
 #include "swell/view.h"
 #include "swell/wave_model.h"
-#include "swell/surface_source.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

@@ -10,9 +10,9 @@
 
 #include "swell/export.h"
 
+#include "swell/gpu/limits.h"
 #include "swell/parameters.h"
 #include "swell/scene.h"
-#include "swell/shader_constants.h"
 
 #include <cstddef>
 #include <filesystem>

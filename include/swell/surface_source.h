@@ -43,14 +43,16 @@ public:
     // to the render origin (the eye's x, z, at the sea level), with the
     // parameters gpuParameters() gave. The foam is an amount, as the
     // whitecaps' is: 1 where the water breaks now, exp(-age /
-    // SWELL_SOURCE_FOAM_LIFETIME_S, swell/shader_constants.h) after; the
+    // SWELL_SOURCE_FOAM_LIFETIME_S, swell/gpu/ocean.h) after; the
     // renderer draws it with the whitecaps' look (a dense sheet above a
     // second's age, then lace and flecks), not as the share of the water it
     // covers.
     // SWELL_SOURCE_FUNCTION is a macro the renderer defines to a name of its
     // own for each source; anything else the code defines must be unique to
-    // it. It must compute what heightAt() does (a test of the host's should
-    // hold them within 1 mm).
+    // it. It may use the constants of swell/gpu/ocean.h and those of
+    // swell/constants.h the shaders share (gpu/constants.glsl: SWELL_PI,
+    // ...). It must compute what heightAt() does (a test of the host's
+    // should hold them within 1 mm).
     virtual std::string glsl() const = 0;
 
     // The parameters the GLSL function reads for a view of time_s drawn

@@ -13,7 +13,7 @@
 // and SurfacePoint (shaders/ocean.glsl) holds the displacement and the unit
 // normal (with the partial derivatives it came from), and oceanShading() as
 // shaders/ocean.glsl describes. It reads only what prepareFrame() uploaded
-// and bind() bound, at binding points of its own from swell/shader_constants.h.
+// and bind() bound, at binding points of its own from swell/gpu/bindings.h.
 #pragma once
 
 #include "swell/export.h"
@@ -21,6 +21,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <optional>
 #include <string>
 
 namespace swell {
@@ -31,6 +32,20 @@ public:
 
     // The GLSL file under shaders/ that defines oceanSurface(), e.g. "ocean/gerstner.glsl".
     virtual std::string shaderFile() const = 0;
+
+    // The spray the wind tears from the model's breaking crests. The
+    // renderer's crest spray (shaders/spray_clumps.comp) finds where crests
+    // broke lately through the model's GLSL file, which must then define
+    //   float worldFoam(vec2 restOffset_m, float footprint_m, bool bSpline)
+    // (the whitecap foam at a rest point, 0..1), and breakingFoamAmount
+    // (foam above it was made by a crest breaking now) and windDirection
+    // (unit, x, z) among its uniforms, as ocean/spectral.glsl does.
+    struct CrestSpray {
+        double windSpeed_mps = 0.0; // at 10 m: how much spray (none below Beaufort 7)
+    };
+    // None (the default): the model's crests do not break, and it draws no
+    // crest spray.
+    virtual std::optional<CrestSpray> crestSpray() const { return std::nullopt; }
 
     // The simulation's step (Renderer::advanceTo): moves what the model
     // simulates to time_s (s) around gridCenter_m (absolute world x,z, m;

@@ -14,7 +14,8 @@
 #include "swell/export.h"
 
 #include "swell/constants.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/limits.h"
+#include "swell/gpu/ocean.h"
 #include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>

@@ -6,6 +6,7 @@
 
 #include "bindings.h"
 #include "convert.h"
+#include "swell/gpu/label_classes.h"
 
 #include <pybind11/stl.h>
 

@@ -3,15 +3,12 @@
 // oceanSurface(). tests/gl/test_wave_agreement.cpp proves they agree within 1 mm.
 #ifndef SWELL_OCEAN_GERSTNER_GLSL
 #define SWELL_OCEAN_GERSTNER_GLSL
-#include "swell/shader_constants.h"
+#include "swell/gpu/ocean.h"
 
-// Mirrored by swell::detail::GerstnerUniforms. Sorted longest wave first.
-layout(std140, binding = SWELL_BINDING_OCEAN) uniform GerstnerWaves {
-    vec4 waveShape[SWELL_MAX_WAVES]; // xy: direction of travel (unit), z: wavenumber k, rad/m, w: amplitude, m
-    vec4 wavePhase[SWELL_MAX_WAVES]; // x: steepness Q, y: phase at the grid centre and this time, rad, z: wavelength, m,
-                                     // w: mean square slope of this wave and every shorter one
-    ivec4 waveCount;                 // x: number of waves in use
-};
+// The GerstnerWaves block (swell::detail::GerstnerUniforms,
+// src/ocean/gerstner/gpu/gerstner_uniforms.h): gerstnerWaves[], sorted longest
+// first, and gerstnerWaveCount.
+#include "gpu/gerstner_block.glsl"
 
 // Weight of a wave of wavelength_m where samples lie footprint_m apart:
 // waves shorter than SWELL_MIN_CELLS_PER_WAVELENGTH samples would alias, so
@@ -30,16 +27,16 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
     // Partial derivatives of the displaced position along rest x and rest z.
     vec3 tangent = vec3(1.0, 0.0, 0.0);
     vec3 binormal = vec3(0.0, 0.0, 1.0);
-    for (int i = 0; i < waveCount.x; ++i) {
-        float weight = waveLodWeight(wavePhase[i].z, footprint_m);
+    for (int i = 0; i < gerstnerWaveCount; ++i) {
+        float weight = waveLodWeight(gerstnerWaves[i].wavelength_m, footprint_m);
         // The waves come longest first: none after this one is resolved either.
         if (weight <= 0.0)
             break;
-        vec2 d = waveShape[i].xy;
-        float k = waveShape[i].z;
-        float amplitude = waveShape[i].w * heightScale * weight;
-        float q = wavePhase[i].x;
-        float theta = k * dot(d, restOffset_m) + wavePhase[i].y;
+        vec2 d = gerstnerWaves[i].direction;
+        float k = gerstnerWaves[i].wavenumber_rad_per_m;
+        float amplitude = gerstnerWaves[i].amplitude_m * heightScale * weight;
+        float q = gerstnerWaves[i].steepness;
+        float theta = k * dot(d, restOffset_m) + gerstnerWaves[i].phase_rad;
         float s = sin(theta);
         float c = cos(theta);
         displacement += vec3(-q * amplitude * d.x * s, amplitude * c, -q * amplitude * d.y * s);
@@ -50,15 +47,15 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
     return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0, tangent, binormal, 0.0, 0.0, vec2(0.0));
 }
 
-// The index of the first wave shorter than length_m, waveCount.x if none
+// The index of the first wave shorter than length_m, gerstnerWaveCount if none
 // is: the waves come longest first, so a binary search finds it in at most
 // log2(SWELL_MAX_WAVES) + 1 look-ups.
 int firstWaveShorterThan(float length_m)
 {
-    int lo = 0, hi = waveCount.x;
+    int lo = 0, hi = gerstnerWaveCount;
     while (lo < hi) {
         int mid = (lo + hi) / 2;
-        bool longer = wavePhase[mid].z >= length_m;
+        bool longer = gerstnerWaves[mid].wavelength_m >= length_m;
         lo = longer ? mid + 1 : lo;
         hi = longer ? hi : mid;
     }
@@ -92,30 +89,30 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
     // in the loop: a software rasteriser (llvmpipe) runs the loop's whole
     // body, masked, for every wave any pixel of a block still iterates over.
     int i = firstWaveShorterThan(bothFull_m);
-    for (; i < waveCount.x; ++i) {
-        float wavelength = wavePhase[i].z;
+    for (; i < gerstnerWaveCount; ++i) {
+        float wavelength = gerstnerWaves[i].wavelength_m;
         // The waves come longest first: none after this one adds anything either.
         if (wavelength <= neither_m)
             break;
         // Negative where the pixel is wider than the grid's cells (far away):
         // the pixel then takes out what it cannot resolve.
         float weight = waveLodWeight(wavelength, pixelFootprint_m) - waveLodWeight(wavelength, gridFootprint_m);
-        vec2 d = waveShape[i].xy;
-        float k = waveShape[i].z;
-        float q = wavePhase[i].x;
-        float theta = k * dot(d, restOffset_m) + wavePhase[i].y;
+        vec2 d = gerstnerWaves[i].direction;
+        float k = gerstnerWaves[i].wavenumber_rad_per_m;
+        float q = gerstnerWaves[i].steepness;
+        float theta = k * dot(d, restOffset_m) + gerstnerWaves[i].phase_rad;
         float s = sin(theta);
         float c = cos(theta);
-        float ka = k * waveShape[i].w * heightScale * weight;
+        float ka = k * gerstnerWaves[i].amplitude_m * heightScale * weight;
         tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
         binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
         float resolved = waveLodWeight(wavelength, pixelFootprint_m);
-        float kaFull = k * waveShape[i].w;
+        float kaFull = k * gerstnerWaves[i].amplitude_m;
         slopeVariance += 0.5 * kaFull * kaFull * fade2 * (1.0 - resolved * resolved);
     }
     // Every shorter wave is wholly unresolved.
-    if (i < waveCount.x)
-        slopeVariance += wavePhase[i].w * fade2;
+    if (i < gerstnerWaveCount)
+        slopeVariance += gerstnerWaves[i].tailSlopeVariance * fade2;
     return SurfacePoint(vec3(0.0), normalize(cross(binormal, tangent)), 0.0, tangent, binormal, slopeVariance, 0.0, vec2(0.0));
 }
 

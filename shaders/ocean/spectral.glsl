@@ -10,38 +10,17 @@
 // through the warp's Jacobian.
 #ifndef SWELL_OCEAN_SPECTRAL_GLSL
 #define SWELL_OCEAN_SPECTRAL_GLSL
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/ocean.h"
 
-// One sinusoid of a cascade's warp: w += amplitude_m * sin(wavevector_radpm . x + phase).
-struct SpectralWarpWave {
-    vec2 wavevector_radpm;
-    vec2 amplitude_m;
-    float phaseAtCentre_rad; // at the grid centre (reduced on the CPU in double)
-};
-
-// The whitecaps' look, and the struct of its lattices (FoamNoise): the
-// block below holds the lattices anchored at the grid centre.
+// The SpectralCascades block (swell::spectral::SpectralUniforms,
+// src/ocean/spectral/gpu/spectral_uniforms.h): each cascade's place and warp
+// (SpectralWarpWave: w += amplitude_m * sin(wavevector_radpm . x + phase)),
+// the wind, each foam level's window and the lattices of the foam's
+// texture anchored at the grid centre.
+#include "gpu/spectral_block.glsl"
+// The whitecaps' look, which the callers give the block's lattices.
 #include "whitecap_foam.glsl"
-
-struct SpectralCascade {
-    vec2 originTexels;          // the grid centre modulo the patch, texels
-    float texelsPerMetre;       // N / L
-    float shortestWavelength_m; // the shortest wave the cascade holds, m
-    float vertexWarpCell_m;     // grid cells up to this (m) take the warp interpolated from their vertices
-    SpectralWarpWave warp[SWELL_FFT_WARP_WAVES];
-};
-
-layout(std140, binding = SWELL_BINDING_OCEAN) uniform SpectralCascades {
-    SpectralCascade cascades[SWELL_FFT_CASCADES];
-    vec2 windDirection;     // unit, x,z: foam is drawn out into streaks along it
-    float foamStreak;       // how far foam streaks are drawn out along the wind, 1 = not at all
-    float unresolvedSlopeVariance; // mean square slope of the waves shorter than the last cascade's
-    // Each foam level's window: x, y the grid centre in texels modulo the
-    // window (as the texture repeats), z texels per metre.
-    vec4 foamLevels[SWELL_FOAM_LEVELS];
-    FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS]; // the octaves, coarsest first, then the warp
-    float breakingFoamAmount; // foam above this amount was made by a crest breaking now (younger than 1 s)
-};
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
 // For shading, layers 0 .. SWELL_FFT_CASCADES - 1: dDy/dx, dDy/dz, dDx/dx,
@@ -147,13 +126,13 @@ float worldFoam(vec2 restOffset_m, float footprint_m, bool bSpline)
 {
     float foam = 0.0, left = 1.0; // the weight the coarser levels still have
     for (int level = 0; level < SWELL_FOAM_LEVELS && left > 0.0; ++level) {
-        vec4 window = foamLevels[level];
-        vec2 texels = restOffset_m * window.z;
+        SpectralFoamLevel window = foamLevels[level];
+        vec2 texels = restOffset_m * window.texelsPerMetre;
         float fromCentre = max(abs(texels.x), abs(texels.y)) / float(SWELL_FOAM_SIZE / 2);
         float inside = 1.0 - smoothstep(0.6, 0.9, fromCentre);
         if (inside > 0.0) {
-            vec2 s = window.xy + texels - 0.5;
-            float lod = log2(max(footprint_m * window.z, 1.0));
+            vec2 s = window.centreTexels + texels - 0.5;
+            float lod = log2(max(footprint_m * window.texelsPerMetre, 1.0));
             float here = textureLod(oceanFoam, vec3((s + 0.5) / float(SWELL_FOAM_SIZE), float(level)), lod).r;
             if (bSpline && lod < 1.0)
                 here = mix(foamBSpline(s, level), here, lod);

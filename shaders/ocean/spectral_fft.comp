@@ -17,7 +17,9 @@
 // twiddles are those of one stage at a time, so the results are the same
 // bits: a table entry's angle is the stage's angle times a power of two
 // over the same power of two, which float arithmetic keeps exact.
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/ocean.h"
+#include "gpu/constants.glsl"
 
 #if SWELL_FFT_LOG2_SIZE % 2 != 0
 #error "the stages go two at a time: SWELL_FFT_SIZE must be a power of 4"
@@ -26,15 +28,15 @@
 layout(local_size_x = SWELL_FFT_QUARTER) in;
 
 #if SWELL_FFT_VERTICAL
-layout(binding = 2, rgba32f) uniform image2DArray spectrumA;
-layout(binding = 3, rgba32f) uniform image2DArray spectrumB;
+layout(binding = SWELL_IMAGE_SPECTRAL_DISPLACEMENT, rgba32f) uniform image2DArray spectrumA;
+layout(binding = SWELL_IMAGE_SPECTRAL_DERIVATIVES, rgba32f) uniform image2DArray spectrumB;
 // The shading's copy of the derivatives (layers 0 .. SWELL_FFT_CASCADES - 1)
 // and the slopes' second moments (the next SWELL_FFT_CASCADES), in half
 // floats: what the water's pixels filter (src/ocean/spectral/gpu/spectral_gpu.cpp).
-layout(binding = 4, rgba16f) uniform writeonly image2DArray slopes;
+layout(binding = SWELL_IMAGE_SPECTRAL_SLOPES, rgba16f) uniform writeonly image2DArray slopes;
 #else
-layout(binding = 2, rgba32f) uniform writeonly image2DArray spectrumA;
-layout(binding = 3, rgba32f) uniform writeonly image2DArray spectrumB;
+layout(binding = SWELL_IMAGE_SPECTRAL_DISPLACEMENT, rgba32f) uniform writeonly image2DArray spectrumA;
+layout(binding = SWELL_IMAGE_SPECTRAL_DERIVATIVES, rgba32f) uniform writeonly image2DArray spectrumB;
 
 // The row pass's samples: the spectra at a time (src/ocean/spectral/
 // spectral_field.h has the formulas; evolve() there is the CPU twin): per
@@ -43,8 +45,10 @@ layout(binding = 3, rgba32f) uniform writeonly image2DArray spectrumB;
 // and the displacement and slope fields packed two real fields to a complex
 // sample, ready for the inverse transform. Evolved as they are read, they
 // are never written out before the transform.
-layout(binding = 0, rgba32f) uniform readonly image2DArray initial;  // h0.re, h0.im, conj(h0(-k)).re, .im
-layout(binding = 1, rg32ui) uniform readonly uimage2DArray omega;    // w, rad/s, as a double's two words
+// h0.re, h0.im, conj(h0(-k)).re, .im
+layout(binding = SWELL_IMAGE_SPECTRAL_INITIAL, rgba32f) uniform readonly image2DArray initial;
+// w, rad/s, as a double's two words
+layout(binding = SWELL_IMAGE_SPECTRAL_OMEGA, rg32ui) uniform readonly uimage2DArray omega;
 
 uniform double time_s;                         // simulation time, s
 uniform float choppiness;                      // lambda
@@ -120,7 +124,7 @@ void main()
 {
     int t = int(gl_LocalInvocationID.x);
     for (int k = t; k < SWELL_FFT_SIZE / 2; k += SWELL_FFT_QUARTER) {
-        float angle = 3.14159265358979 * float(k) / float(SWELL_FFT_SIZE / 2);
+        float angle = SWELL_PI * float(k) / float(SWELL_FFT_SIZE / 2);
         twiddle[k] = vec2(cos(angle), sin(angle));
     }
     for (int i = t; i < SWELL_FFT_SIZE; i += SWELL_FFT_QUARTER) {

@@ -11,13 +11,14 @@
 // The Jacobian is the sum of the cascades' gradients at each one's warped
 // point, exactly as the CPU twin computes it for the threshold
 // (swell::spectral::CpuSurface::foldJacobianAt).
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/ocean.h"
 // Built with SWELL_OCEAN_FILE naming ocean/spectral.glsl.
 #include "ocean.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = SWELL_FOAM_STEP_GROUP, local_size_y = SWELL_FOAM_STEP_GROUP) in;
 
-layout(binding = 4, r16f) uniform image2DArray foam; // 0..1, one layer a level
+layout(binding = SWELL_IMAGE_SPECTRAL_FOAM, r16f) uniform image2DArray foam; // 0..1, one layer a level
 
 uniform float decay;         // exp(-dt/tau) since the last step; 0 starts afresh
 uniform float foldThreshold; // J below which foam is made

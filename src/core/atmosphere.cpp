@@ -2,13 +2,14 @@
 // GPU's twin, used for the baked sky, is shaders/atmosphere.glsl: the same
 // steps in the same order, reading the two tables built here.
 //
-// Geometry: the Earth is a sphere of SWELL_ATMOSPHERE_BOTTOM_RADIUS_M, the
-// air ends at SWELL_ATMOSPHERE_TOP_RADIUS_M; a point is given by its radius r
+// Geometry: the Earth is a sphere of kAtmosphereBottomRadius_m, the
+// air ends at kAtmosphereTopRadius_m; a point is given by its radius r
 // and a direction by the cosine mu of its angle to the point's zenith
 // (Bruneton & Neyret 2008, sec. 4).
 #include "swell/atmosphere.h"
 
-#include "swell/shader_constants.h"
+#include "swell/constants.h"
+#include "swell/gpu/sky.h"
 
 #include <glm/geometric.hpp>
 
@@ -19,9 +20,8 @@
 namespace swell {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kBottom_m = SWELL_ATMOSPHERE_BOTTOM_RADIUS_M;
-constexpr double kTop_m = SWELL_ATMOSPHERE_TOP_RADIUS_M;
+constexpr double kBottom_m = kAtmosphereBottomRadius_m;
+constexpr double kTop_m = kAtmosphereTopRadius_m;
 constexpr int kMuSize = SWELL_TRANSMITTANCE_MU_SIZE;
 constexpr int kRSize = SWELL_TRANSMITTANCE_R_SIZE;
 constexpr int kMsSize = SWELL_MULTISCATTER_SIZE;
@@ -139,16 +139,16 @@ AtmosphereCoefficients atmosphereAt(double altitude_m, const AtmosphereSettings&
     const double h = std::max(altitude_m, 0.0);
     // Exponential profiles of air and aerosols (Bruneton & Neyret 2008,
     // sec. 2.1); ozone's tent (Bruneton 2017's two linear layers).
-    const double rayleigh = settings.rayleighScale * std::exp(-h / SWELL_RAYLEIGH_SCALE_HEIGHT_M);
-    const double mie = settings.mieScale * std::exp(-h / SWELL_MIE_SCALE_HEIGHT_M);
+    const double rayleigh = settings.rayleighScale * std::exp(-h / kRayleighScaleHeight_m);
+    const double mie = settings.mieScale * std::exp(-h / kMieScaleHeight_m);
     const double ozone =
-        std::max(0.0, 1.0 - std::abs(h - SWELL_OZONE_PEAK_ALTITUDE_M) / SWELL_OZONE_HALF_WIDTH_M);
+        std::max(0.0, 1.0 - std::abs(h - kOzonePeakAltitude_m) / kOzoneHalfWidth_m);
     AtmosphereCoefficients c;
     c.rayleighScattering =
-        rayleigh * glm::dvec3(SWELL_RAYLEIGH_SCATTERING_R, SWELL_RAYLEIGH_SCATTERING_G, SWELL_RAYLEIGH_SCATTERING_B);
-    c.mieScattering = mie * SWELL_MIE_SCATTERING;
-    c.extinction = c.rayleighScattering + glm::dvec3(mie * SWELL_MIE_EXTINCTION)
-        + ozone * glm::dvec3(SWELL_OZONE_ABSORPTION_R, SWELL_OZONE_ABSORPTION_G, SWELL_OZONE_ABSORPTION_B);
+        rayleigh * glm::dvec3(kRayleighScatteringRed_per_m, kRayleighScatteringGreen_per_m, kRayleighScatteringBlue_per_m);
+    c.mieScattering = mie * kMieScattering_per_m;
+    c.extinction = c.rayleighScattering + glm::dvec3(mie * kMieExtinction_per_m)
+        + ozone * glm::dvec3(kOzoneAbsorptionRed_per_m, kOzoneAbsorptionGreen_per_m, kOzoneAbsorptionBlue_per_m);
     return c;
 }
 
@@ -259,7 +259,7 @@ void Atmosphere::buildMultipleScattering()
                     const glm::dvec3 d(sinTheta * std::cos(phi), cosTheta, sinTheta * std::sin(phi));
                     const double cosAngle = glm::dot(d, sun);
                     const double phaseRayleigh = rayleighPhase(cosAngle);
-                    const double phaseMie = miePhase(cosAngle, SWELL_MIE_ASYMMETRY);
+                    const double phaseMie = miePhase(cosAngle, kMieAsymmetry);
                     const bool ground = meetsGround(r0, cosTheta);
                     const double length = ground ? distanceToGround(r0, cosTheta) : distanceToTop(r0, cosTheta);
                     const double dt = length / kMsSteps;
@@ -309,7 +309,7 @@ glm::dvec3 Atmosphere::skyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection
     const glm::dvec3 origin(0.0, r0, 0.0);
     const double length = distanceToTop(r0, d.y);
     const double cosAngle = glm::dot(d, sun);
-    const double phaseRayleigh = rayleighPhase(cosAngle), phaseMie = miePhase(cosAngle, SWELL_MIE_ASYMMETRY);
+    const double phaseRayleigh = rayleighPhase(cosAngle), phaseMie = miePhase(cosAngle, kMieAsymmetry);
     // Single scattering along the ray (Hillaire 2020, sec. 4; Bruneton &
     // Neyret 2008, sec. 2), by the midpoint rule on segments whose ends
     // grow as the square of their index.

@@ -4,7 +4,8 @@
 #include "swell/clouds.h"
 
 #include "swell/atmosphere.h"
-#include "swell/shader_constants.h"
+#include "swell/constants.h"
+#include "swell/gpu/sky.h"
 
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
@@ -146,7 +147,7 @@ CloudHit cloudHit(const CloudSettings& settings, glm::vec3 direction)
         const float horizontal = std::sqrt(d.x * d.x + d.z * d.z);
         d = horizontal > 1.0e-6f ? glm::vec3(d.x / horizontal, 0.0f, d.z / horizontal) : glm::vec3(1.0f, 0.0f, 0.0f);
     }
-    const float bottom = float(SWELL_ATMOSPHERE_BOTTOM_RADIUS_M);
+    const float bottom = float(kAtmosphereBottomRadius_m);
     const float h0 = float(SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M);
     const float hc = std::max(float(settings.altitude_m), h0 + 1.0f);
     const float r0 = bottom + h0, rc = bottom + hc;
@@ -190,7 +191,7 @@ glm::dvec3 cloudySkyRadiance(const Atmosphere& atmosphere, const CloudSettings& 
     const glm::dvec3 d = glm::normalize(direction), sun = glm::normalize(sunDirection);
     const CloudHit hit = cloudHit(settings, glm::vec3(d));
     const double tau = cloudOpticalDepth(settings, hit.xz_m, hit.footprint_m);
-    const double bottom = SWELL_ATMOSPHERE_BOTTOM_RADIUS_M;
+    const double bottom = kAtmosphereBottomRadius_m;
     const double r0 = bottom + SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M;
     const double rc = bottom + std::max(settings.altitude_m, SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M + 1.0);
     const double t = hit.distance_m;
@@ -207,7 +208,7 @@ glm::dvec3 cloudySkyRadiance(const Atmosphere& atmosphere, const CloudSettings& 
     const double cosAngle = glm::dot(dh, sun);
     const double muSun = (r0 * sun.y + t * cosAngle) / rc;
     const glm::dvec3 sunlight = muSun > 0.0 ? atmosphere.transmittance(rc, muSun) : glm::dvec3(0.0);
-    const double g = SWELL_CLOUD_ASYMMETRY;
+    const double g = kCloudDropletAsymmetry;
     const double direct = std::exp(-tau / muView);
     // Two-stream theory's transmittance of a non-absorbing slab (Bohren 1987):
     // 1 / (1 + (1 - g) tau / 2); what is not the direct beam leaves its base

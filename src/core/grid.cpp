@@ -1,4 +1,5 @@
 #include "swell/grid.h"
+#include "swell/gpu/limits.h"
 
 #include <glm/common.hpp>
 

@@ -2,6 +2,7 @@
 // calibration, projection, the horizon line, object classes and boxes.
 #include "swell/labels.h"
 
+#include "swell/gpu/label_classes.h"
 #include "swell/sensor.h"
 
 #include <glm/geometric.hpp>

@@ -6,7 +6,8 @@
 
 #include "core/parameter_fields.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/limits.h"
+#include "swell/gpu/variants.h"
 #include "swell/sun_position.h"
 
 #include <fmt/format.h>

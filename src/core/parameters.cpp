@@ -2,7 +2,6 @@
 // (swell/parameters.h; the table itself is parameter_table.cpp).
 #include "swell/parameters.h"
 
-#include "swell/shader_constants.h"
 
 #include <fmt/format.h>
 

@@ -1,9 +1,11 @@
 #include "gl/mip_downsample.h"
 
+#include "gl/uniform_location.h"
+
 #include "swell/error.h"
 #include "swell/gl/context.h"
 #include "swell/gl/shader.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 #include <fmt/format.h>
 
@@ -16,7 +18,7 @@ namespace {
 // The shared-memory pass's workgroup side (one invocation a texel of the
 // first level written); the blocks pass's (one invocation a block).
 constexpr int kSharedGroupSide = 1 << (SWELL_DOWNSAMPLE_LEVELS - 1);
-constexpr int kBlocksGroupSide = 8;
+constexpr int kBlocksGroupSide = SWELL_DOWNSAMPLE_BLOCKS_GROUP;
 
 void check(const MipDownsampler::Chain& c)
 {
@@ -36,11 +38,13 @@ int MipDownsampler::levelsADispatch(Path path)
 MipDownsampler::MipDownsampler(const ShaderSources& shaders, Path path)
     : path_(path != Path::Fastest ? path : isSoftwareRasterizer() ? Path::Blocks : Path::SharedMemory)
 {
-    program_ = buildProgram(
-        shaders, {{GL_COMPUTE_SHADER, path_ == Path::Blocks ? "mip_blocks.comp" : "mip_downsample.comp"}});
-    sourceLevelLocation_ = glGetUniformLocation(program_.id(), "sourceLevel");
-    levelsLocation_ = glGetUniformLocation(program_.id(), "levels");
-    layersALocation_ = glGetUniformLocation(program_.id(), "layersA");
+    const char* file = path_ == Path::Blocks ? "mip_blocks.comp" : "mip_downsample.comp";
+    program_ = buildProgram(shaders, {{GL_COMPUTE_SHADER, file}});
+    sourceLevelLocation_ = requiredUniform(program_, "sourceLevel", file);
+    levelsLocation_ = requiredUniform(program_, "levels", file);
+    // Only the blocks pass builds two chains in one dispatch.
+    if (path_ == Path::Blocks)
+        layersALocation_ = requiredUniform(program_, "layersA", file);
 }
 
 MipDownsampler::Work MipDownsampler::run(const Chain& chain) const

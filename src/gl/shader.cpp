@@ -2,10 +2,12 @@
 
 #include "core/input_file.h"
 #include "embedded_files.h"
+#include "gl/program_count.h"
 #include "swell/error.h"
 
 #include <fmt/format.h>
 
+#include <atomic>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -16,7 +18,11 @@ namespace swell::gl {
 namespace {
 // Largest shader source read from disk: ours are a few KiB each.
 constexpr std::uintmax_t kMaxShaderFileBytes = std::uintmax_t(1) << 20;
+// The programs buildProgram() has built (gl/program_count.h).
+std::atomic<std::uint64_t> builtPrograms{0};
 } // namespace
+
+std::uint64_t programsBuilt() { return builtPrograms.load(); }
 
 ShaderSources ShaderSources::embedded()
 {
@@ -32,6 +38,12 @@ ShaderSources ShaderSources::fromDirectory(std::filesystem::path shaderDir, std:
     s.shaderDir_ = std::move(shaderDir);
     s.includeDir_ = std::move(includeDir);
     s.fromDisk_ = true;
+    // The files generated from the library's C++ at build time (the uniform
+    // blocks' declarations, gpu/*.glsl): no folder has them, and they follow
+    // the C++ structs compiled in, not anything a reload could change.
+    for (const detail::EmbeddedFile& f : detail::embeddedShaderFiles())
+        if (f.path.starts_with("gpu/"))
+            s.loaded_.emplace(std::string(f.path), std::string(f.text));
     return s;
 }
 
@@ -57,7 +69,7 @@ const std::string& ShaderSources::file(const std::string& name) const
     if (fromDisk_) {
         if (auto it = cache_.find(name); it != cache_.end())
             return it->second;
-        // The shared constants header lives with the C++ headers.
+        // The constants headers shared with C++ live with the C++ headers.
         const std::filesystem::path path = name.starts_with("swell/") ? includeDir_ / name : shaderDir_ / name;
         // Read as any other input: regular files only, never blocking, bounded (core/input_file.h).
         std::error_code ec;
@@ -229,6 +241,7 @@ Program buildProgram(const ShaderSources& sources, const std::vector<ShaderStage
                          fmt::format("program {} failed to link:\n{}", names, infoLog(program.id(), true)));
     for (const Shader& s : shaders)
         glDetachShader(program.id(), s.id());
+    ++builtPrograms;
     return program;
 }
 

@@ -3,6 +3,9 @@
 
 #include "render/gl_state.h"
 #include "render/programs.h"
+#include "swell/constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/underwater.h"
 
 #include <glm/common.hpp>
 
@@ -86,7 +89,7 @@ void CausticsMap::place(glm::dvec3 origin_m, glm::vec2 gridCenter_m, glm::vec3 s
     // the source square covers both drifts, with the margin, on whole cells
     // of the world (so the pattern does not swim as the camera moves).
     const glm::dvec3 s = glm::normalize(glm::dvec3(sun));
-    const double sinT = std::sqrt(std::max(1.0 - s.y * s.y, 0.0)) / SWELL_WATER_IOR;
+    const double sinT = std::sqrt(std::max(1.0 - s.y * s.y, 0.0)) / kWaterIor;
     const double tanT = sinT / std::sqrt(1.0 - sinT * sinT);
     const glm::dvec2 along = glm::length(glm::dvec2(s.x, s.z)) > 1e-9 ? -glm::normalize(glm::dvec2(s.x, s.z)) : glm::dvec2(0.0);
     const glm::dvec2 nearDrift = along * tanT * double(kCausticsSliceDepths_m.front());

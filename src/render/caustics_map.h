@@ -6,9 +6,10 @@
 // (mesh.frag) looks it up under the water.
 #pragma once
 
-#include "swell/debug.h"
+#include "render/gpu/blocks.h"
 #include "swell/gl/handle.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/underwater.h"
+#include "swell/debug.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -20,19 +21,6 @@ namespace swell::detail {
 
 struct CausticsPrograms;
 
-// Mirrors the Caustics block of shaders/caustics.glsl (std140);
-// tests/gl/test_uniform_layout.cpp checks each offset with the driver.
-struct alignas(16) CausticsUniforms {
-    glm::vec3 sun{0.0f, 1.0f, 0.0f}; // towards the sun, unit
-    float mapSize_m = float(SWELL_CAUSTICS_EXTENT_M);
-    glm::vec2 mapCorner_m{0.0f};     // texel (0, 0)'s outer corner relative to the render origin, x, z
-    glm::vec2 sourceCorner_m{0.0f};  // the source grid's vertex (0, 0) relative to the render origin
-    glm::vec2 gridCenter_m{0.0f};    // the wave model's grid centre relative to the render origin
-    float cellSize_m = 1.0f;
-    int cells = SWELL_CAUSTICS_CELLS;
-    glm::vec4 sliceDepth_m{0.0f};    // xyz: each slice's depth below the mean level
-};
-static_assert(sizeof(CausticsUniforms) == 64, "the Caustics block is 64 bytes in std140");
 
 // The slices' depths below the mean level, m: 1 m, where the short waves'
 // light comes to its first foci, 3 m and 8 m, where the longer waves' do

@@ -2,6 +2,8 @@
 
 #include "render/programs.h"
 #include "swell/error.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/sky.h"
 
 #include <glm/common.hpp>
 

@@ -11,9 +11,10 @@
 // the sun's ray through their point meets the mean level.
 #pragma once
 
+#include "render/gpu/blocks.h"
 #include "swell/clouds.h"
 #include "swell/gl/handle.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/sky.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -24,16 +25,6 @@ namespace swell::detail {
 
 class CloudShadowBakeProgram;
 
-// Mirrors the CloudShadow block of shaders/cloud_shadow.glsl (std140);
-// tests/gl/test_uniform_layout.cpp checks each offset with the driver.
-struct alignas(16) CloudShadowUniforms {
-    glm::vec2 corner_m{0.0f}; // texel (0, 0)'s outer corner relative to the render origin, x, z
-    float size_m = float(SWELL_CLOUD_SHADOW_EXTENT_M);
-    // The layer's transmittance towards the sun from the baked sky's
-    // observer (cloudTransmittance): the sun's disc the sky shows.
-    float skySun = 1.0f;
-};
-static_assert(sizeof(CloudShadowUniforms) == 16, "the CloudShadow block is 16 bytes in std140");
 
 // The width of the map's texels, m.
 inline constexpr double kCloudShadowTexel_m = SWELL_CLOUD_SHADOW_EXTENT_M / SWELL_CLOUD_SHADOW_SIZE;

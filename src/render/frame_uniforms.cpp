@@ -1,4 +1,6 @@
 #include "render/frame_uniforms.h"
+#include "swell/gpu/sky.h"
+#include "swell/gpu/limits.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>

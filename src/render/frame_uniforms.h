@@ -1,9 +1,9 @@
-// Filling the Frame uniform block (render/gpu_types.h) for a camera: what
+// Filling the Frame uniform block (render/gpu/blocks.h) for a camera: what
 // every pass shares; each pass then sets its own camera, clip plane and
 // output encoding.
 #pragma once
 
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "render/sky_light.h"
 #include "swell/camera.h"
 #include "swell/grid.h"

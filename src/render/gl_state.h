@@ -16,7 +16,7 @@
 namespace swell::detail {
 
 // The texture units whose sampler bindings Swell clears: every
-// SWELL_UNIT_* lies below it (swell/shader_constants.h).
+// SWELL_UNIT_* lies below it (swell/gpu/bindings.h).
 inline constexpr int kSwellTextureUnits = 24;
 
 class SavedGlState {

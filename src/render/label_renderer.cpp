@@ -5,7 +5,8 @@
 #include "render/view_frame.h"
 #include "render/view_passes.h"
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/label_classes.h"
 
 #include <fmt/format.h>
 #include <glm/matrix.hpp>
@@ -36,10 +37,7 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
                              const std::vector<ObjectLabel>& objects)
 {
     Resources& resources = context.resources;
-    if (!programs_ || variant_ != resources.variant) {
-        programs_ = buildLabelPrograms(resources.sources, resources.variant);
-        variant_ = resources.variant;
-    }
+    updateLabelPrograms(resources.sources, programs_, resources.programs.flags);
     const LabelPrograms& p = *programs_;
     ViewFrame v = prepareView(context, view, size, false);
     // Which side of the surface each pixel looks out from, as the colour

@@ -34,9 +34,8 @@ private:
     void drawPass(RenderContext& context, const Camera& camera, const View& view, glm::ivec2 size,
                   const std::vector<ObjectLabel>& objects);
 
-    // Built when first asked for and again when the variant changes.
+    // Built when first asked for and again where the colour programs' flags change.
     std::optional<LabelPrograms> programs_;
-    ShaderVariant variant_;
     LabelTarget target_;
     WaterlineMask waterline_;
 };

@@ -5,7 +5,7 @@
 // a numerical integral (tests/cpu/test_light_shafts.cpp).
 #pragma once
 
-#include "swell/shader_constants.h"
+#include "swell/constants.h"
 
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
@@ -21,7 +21,7 @@ namespace swell::detail {
 // Astrophysical Journal 93, 70): the share of scattered light per
 // steradian at cosTheta from its first direction, 1/sr, normalised over the
 // sphere, its mean cosine g.
-inline double henyeyGreenstein(double cosTheta, double g = SWELL_WATER_PHASE_G)
+inline double henyeyGreenstein(double cosTheta, double g = kWaterPhaseG)
 {
     const double denom = 1.0 + g * g - 2.0 * g * cosTheta;
     return (1.0 - g * g) / (4.0 * std::numbers::pi * denom * std::sqrt(denom));
@@ -32,7 +32,7 @@ inline double henyeyGreenstein(double cosTheta, double g = SWELL_WATER_PHASE_G)
 inline glm::dvec3 levelRefractedRay(glm::dvec3 sun)
 {
     const double sinI = std::sqrt(std::max(1.0 - sun.y * sun.y, 0.0));
-    const double sinT = sinI / SWELL_WATER_IOR;
+    const double sinT = sinI / kWaterIor;
     const double cosT = std::sqrt(1.0 - sinT * sinT);
     const glm::dvec3 horizontal(-sun.x, 0.0, -sun.z);
     const double h = glm::length(horizontal);
@@ -49,7 +49,7 @@ inline glm::dvec3 levelRefractedRay(glm::dvec3 sun)
 // (unit, from the eye), so z(t) = z0 - t d.y; the sun's beam refracted to
 // the angle T from the vertical (cosT) and let in at Fresnel's share
 // `levelTransmittance`, its irradiance normal to itself E sun.y T / cosT,
-// absorbed along its slant path z / cosT; b SWELL_WATER_SCATTERING_PER_M,
+// absorbed along its slant path z / cosT; b kWaterScattering_per_m,
 // P Henyey-Greenstein at the angle between the beam and the ray back to
 // the eye; a the water's absorption per channel, both on the beam and on
 // the way to the eye. The integral, exp(-a z0 / cosT) (1 - exp(-k s)) / k
@@ -70,7 +70,7 @@ inline glm::dvec3 levelShaftsRadiance(glm::dvec3 sun, glm::dvec3 sunIrradiance, 
     for (int c = 0; c < 3; ++c)
         integral[c] = std::abs(k[c] * path_m) < 1e-6 ? path_m : -std::expm1(-k[c] * path_m) / k[c];
     const glm::dvec3 beam = sunIrradiance * (sun.y * levelTransmittance / cosT) * glm::exp(-absorption_per_m * z0 / cosT);
-    return beam * SWELL_WATER_SCATTERING_PER_M * henyeyGreenstein(glm::dot(ray, -d)) * integral;
+    return beam * kWaterScattering_per_m * henyeyGreenstein(glm::dot(ray, -d)) * integral;
 }
 
 } // namespace swell::detail

@@ -6,7 +6,7 @@
 #include "render/scene_world.h"
 #include "render/spray_renderer.h"
 #include "swell/scene.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 #include <glm/matrix.hpp>
 

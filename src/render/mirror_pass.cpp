@@ -5,7 +5,8 @@
 #include "render/view_passes.h"
 
 #include "render/frame_uniforms.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/underwater.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>

@@ -5,7 +5,7 @@
 #include "render/simulation.h"
 #include "render/view_frame.h"
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 #include <fmt/format.h>
 

@@ -5,7 +5,7 @@
 // state, restore() sets it again. Library-internal.
 #pragma once
 
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "render/resources.h"
 #include "render/telemetry.h"
 #include "render/view_setup.h"

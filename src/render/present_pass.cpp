@@ -4,7 +4,7 @@
 // the host's picture brought into the target before and its depth after.
 #include "render/view_passes.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 namespace swell::detail {
 

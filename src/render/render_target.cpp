@@ -2,8 +2,8 @@
 
 #include "render/programs.h"
 #include "swell/error.h"
+#include "swell/gpu/bindings.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
@@ -107,7 +107,7 @@ void MainTarget::blitToOutput(const RenderTarget& from) const
                            GL_COLOR_BUFFER_BIT, filter);
 }
 
-int MainTarget::present(const BlockProgram& fxaa, GLuint emptyVao)
+int MainTarget::present(const FxaaProgram& fxaa, GLuint emptyVao)
 {
     if (direct_)
         return 0;

@@ -11,7 +11,7 @@
 
 namespace swell::detail {
 
-class BlockProgram;
+class FxaaProgram;
 
 class RenderTarget {
 public:
@@ -66,7 +66,7 @@ public:
     // filter with `emptyVao`. Leaves the output framebuffer bound with its
     // viewport set. Returns the draw calls it made (the filter's; blits are
     // not draws).
-    int present(const BlockProgram& fxaa, GLuint emptyVao);
+    int present(const FxaaProgram& fxaa, GLuint emptyVao);
 
 private:
     // Copies `from`'s colour into the output, bilinear where sizes differ.

@@ -4,7 +4,8 @@
 
 #include "render/gl_state.h"
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/limits.h"
 
 #include <fmt/format.h>
 
@@ -101,7 +102,7 @@ void Renderer::reloadShaders()
 {
     Impl& s = *impl_;
     s.resources.sources.forgetCachedFiles();
-    s.resources.programs = buildPrograms(s.resources.sources, s.resources.variant);
+    s.resources.programs = buildChangedPrograms(s.resources.sources, Programs{}, s.resources.programs.flags);
     s.labels.forgetPrograms(); // built again from the new sources when next asked for
     s.sky.forgetPrograms();
 }

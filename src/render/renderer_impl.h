@@ -46,8 +46,8 @@ struct RenderSettings {
 // each part null or empty where it stays as it is.
 struct SceneUpdate {
     SimulationUpdate simulation;
-    std::optional<ShaderVariant> variant;
-    Programs programs;
+    bool programsChanged = false;
+    Programs programs; // those whose flags changed (buildChangedPrograms)
     std::optional<World> world;
     std::optional<SceneShapes> shapes; // with the world: what its rigid bodies are built from
     bool gridChanged = false;

@@ -1,6 +1,6 @@
 #include "render/resources.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 namespace swell::detail {
 

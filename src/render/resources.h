@@ -1,12 +1,12 @@
 // What the renderer draws with, owned once for all its views (Filament's
-// Engine): the shader programs and the variant they were built for, the
+// Engine): the shader programs and the flags they were built for, the
 // water grid, the world's meshes and sky cubemap, the caustics map every
 // view redraws, and the frame uniform buffers. Which of them a scene change
 // rebuilds is decided in render/scene_update.h. Library-internal.
 #pragma once
 
 #include "render/caustics_map.h"
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "render/programs.h"
 #include "render/telemetry.h"
 #include "render/water_grid.h"
@@ -40,8 +40,7 @@ public:
     gl::ShaderSources sources;
     // Water shading terms left out, for the benchmark (swell/debug.h).
     unsigned omittedWaterTerms = 0;
-    ShaderVariant variant;
-    Programs programs;
+    Programs programs; // and the flags they were built for
     gl::VertexArray emptyVao;
     GridShape gridShape;
     WaterGrid waterGrid;

@@ -1,5 +1,5 @@
 // What a scene change rebuilds (Renderer::Impl::apply): the wave model's
-// GPU half when the model changed, the programs when their variant did,
+// GPU half when the model changed, the programs whose own flags changed,
 // the world when a parameter of its says so (swell/scene_changes.h), the
 // floating bodies when what moves them changed, the grid when its settings
 // did. Everything that can fail is built first (prepare); the renderer
@@ -23,18 +23,18 @@ SceneUpdate Renderer::Impl::prepare(const Scene& next, ParameterEffect effects,
     const bool modelChanged = first || nextModel.get() != &simulation.model();
     if (modelChanged)
         sim.gpu = nextModel->createGpu(resources.sources);
-    const ShaderVariant variant =
-        shaderVariantOf(next, sim.gpu ? sim.gpu->shaderFile() : resources.variant.oceanFile,
-                        resources.omittedWaterTerms, Simulation::sourceCodes(next, nextHostSources));
-    if (first || variant != resources.variant) {
+    const ProgramFlags flags = programFlagsOf(next, sim.gpu ? *sim.gpu : simulation.gpu(), resources.omittedWaterTerms,
+                                              Simulation::sourceCodes(next, nextHostSources));
+    if (first || flags != resources.programs.flags) {
         try {
-            update.programs = buildPrograms(resources.sources, variant);
+            // Only the programs whose own flags changed.
+            update.programs = buildChangedPrograms(resources.sources, resources.programs, flags);
         } catch (...) {
             // The files of the sources still drawn, for a later reload.
-            setSurfaceSourceFiles(resources.sources, resources.variant.surfaceSources);
+            setSurfaceSourceFiles(resources.sources, resources.programs.flags.water.surface.surfaceSources);
             throw;
         }
-        update.variant = variant;
+        update.programsChanged = true;
     }
     if (first || hasEffect(effects, ParameterEffect::World)) {
         const SceneAssets assets = loadSceneAssets(next);
@@ -60,8 +60,8 @@ void Renderer::Impl::commit(const Scene& next, SceneUpdate update)
 {
     scene = next;
     simulation.commit(scene, std::move(update.simulation), settings.interactive, telemetry.stageRelay());
-    if (update.variant) {
-        resources.variant = std::move(*update.variant);
+    if (update.programsChanged) {
+        keepUnchangedPrograms(update.programs, resources.programs);
         resources.programs = std::move(update.programs);
     }
     if (update.world) {
@@ -73,7 +73,7 @@ void Renderer::Impl::commit(const Scene& next, SceneUpdate update)
         resources.buildGrid(scene);
         simulation.setGridShape(resources.gridShape);
     }
-    spray.releaseUnused(scene, resources.programs);
+    spray.releaseUnused(scene, simulation.gpu(), resources.programs);
 }
 
 void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shared_ptr<const WaveModel> nextSceneModel,

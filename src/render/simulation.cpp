@@ -7,7 +7,7 @@
 #include "objects/wake_surface.h"
 #include "swell/composed_surface.h"
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

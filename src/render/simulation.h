@@ -7,7 +7,7 @@
 #pragma once
 
 #include "objects/placement.h"
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "render/resources.h"
 #include "render/sky_light.h"
 #include "render/surface_probe.h"

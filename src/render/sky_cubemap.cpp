@@ -2,7 +2,8 @@
 #include "render/sky_cubemap.h"
 
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/sky.h"
 
 namespace swell::detail {
 

@@ -2,6 +2,7 @@
 
 #include "render/resources.h"
 #include "render/telemetry.h"
+#include "swell/gpu/bindings.h"
 
 namespace swell::detail {
 
@@ -36,7 +37,7 @@ void SkySystem::bakeIfStale(const Scene& scene, const FrameUniforms& base, Resou
     World& world = resources.world;
     if (usesPhysicalSky(scene)) {
         if (!physicalBake_)
-            physicalBake_ = SkyBakeProgram(resources.sources, resources.variant, true);
+            physicalBake_ = SkyBakeProgram(resources.sources, true);
         light(scene); // the atmosphere for this scene
         if (!atmosphereTextures_.transmittance)
             atmosphereTextures_.upload(*atmosphere_);
@@ -56,7 +57,7 @@ void SkySystem::bakeIfStale(const Scene& scene, const FrameUniforms& base, Resou
 void SkySystem::updateCloudShadows(const Scene& scene, const FrameUniforms& base, glm::dvec3 origin,
                                    Resources& resources, Telemetry& telemetry)
 {
-    if (!resources.variant.cloudShadows) {
+    if (!resources.programs.flags.water.underwater.cloudShadows) {
         // No layer now: the map and its bake program are given back, as the
         // physical sky's are (a scene may drop its clouds for good).
         if (cloudShadow_.texture() != 0) {
@@ -66,7 +67,7 @@ void SkySystem::updateCloudShadows(const Scene& scene, const FrameUniforms& base
         return;
     }
     if (!cloudShadowBake_)
-        cloudShadowBake_ = CloudShadowBakeProgram(resources.sources, resources.variant);
+        cloudShadowBake_ = CloudShadowBakeProgram(resources.sources);
     {
         const ObservedPass pass(telemetry, "cloud shadows");
         if (cloudShadow_.update(cloudShadowBake_, resources.emptyVao.id(), scene.sky.clouds, base.sunDirection, origin,

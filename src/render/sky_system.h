@@ -57,12 +57,12 @@ private:
     AtmosphereTextures atmosphereTextures_;
     // The physical sky's bake program: built when a scene first asks for it
     // (its ray march is the costliest shader here to compile) and kept
-    // across variants, which it does not depend on; empty until then, after
-    // a shader reload and while the sky is not physical.
+    // across scene changes, whose flags it does not read; empty until then,
+    // after a shader reload and while the sky is not physical.
     SkyBakeProgram physicalBake_;
     // The cloud layer's shadows on what the sun lights (cloud_shadow_map.h)
     // and their bake's program: built when a scene first has clouds, kept
-    // across variants (it reads none of their defines).
+    // across scene changes (it reads no flags).
     CloudShadowMap cloudShadow_;
     CloudShadowBakeProgram cloudShadowBake_;
 };

@@ -1,5 +1,6 @@
 // The buffers between the spray's passes (spray_buffers.h).
 #include "render/spray_buffers.h"
+#include "swell/gpu/bindings.h"
 
 namespace swell::detail {
 

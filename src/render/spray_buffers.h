@@ -8,7 +8,7 @@
 
 #include "swell/debug.h"
 #include "swell/gl/handle.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/spray.h"
 
 namespace swell::detail {
 

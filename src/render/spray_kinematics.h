@@ -7,7 +7,8 @@
 // shader's functions and these over a set of seeds and times.
 #pragma once
 
-#include "swell/shader_constants.h"
+#include "swell/constants.h"
+#include "swell/gpu/spray.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -92,7 +93,7 @@ inline float sprayTau_s(std::uint32_t key, std::uint32_t drop)
     const float u = sprayUnit(key, 10u + drop);
     const float d_m = drop < std::uint32_t(SWELL_SPRAY_MIST_DROPS) ? (40.0f + 80.0f * u) * 1e-6f
                                                                     : (150.0f + 200.0f * u) * 1e-6f;
-    return float(SWELL_SEA_WATER_DENSITY_KG_PER_M3) * d_m * d_m / (18.0f * 1.8e-5f);
+    return float(kSeaWaterDensity_kg_per_m3) * d_m * d_m / (18.0f * 1.8e-5f);
 }
 
 inline glm::vec3 sprayDropOffset(glm::vec3 launch_mps, glm::vec3 air_mps, float tau_s, float age_s)
@@ -147,8 +148,8 @@ inline float bowSheetTau_s() { return bowSprayFallSpeed_mps(1.0e-3f) / 9.81f; }
 
 inline float bowSheetRetraction_mps(float thickness_m)
 {
-    return std::sqrt(2.0f * float(SWELL_SEA_WATER_SURFACE_TENSION_N_PER_M)
-                     / (float(SWELL_SEA_WATER_DENSITY_KG_PER_M3) * thickness_m));
+    return std::sqrt(2.0f * float(kSeaWaterSurfaceTension_N_per_m)
+                     / (float(kSeaWaterDensity_kg_per_m3) * thickness_m));
 }
 
 inline float bowSheetTorn(std::uint32_t key, float age_s)

@@ -3,13 +3,15 @@
 #include "render/gl_state.h"
 #include "render/view_frame.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/spray.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace swell::detail {
 
@@ -22,6 +24,35 @@ static_assert(kCrestSlots % SWELL_SPRAY_GROUP == 0 && SWELL_BOW_SPRAY_SLOTS % SW
 // sheet's too; spray_clump.glsl's SPRAY_STRIPS).
 constexpr int kCrestStrips = SWELL_SPRAY_DROPS;
 constexpr int kBowStrips = SWELL_BOW_SPRAY_DROPS + 1;
+
+// Whether a wind of windSpeed_mps tears spray (Beaufort 7 and up), in a
+// scene that shows it.
+bool sprayAt(const Scene& scene, double windSpeed_mps)
+{
+    return scene.water.spray && scene.debugView == DebugView::Shaded && windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
+}
+
+// The wind over the crests' spray: the wave model's, whose crests break
+// (WaveModelGpu::crestSpray); none for a model whose crests do not.
+std::optional<double> crestSprayWind_mps(const Scene& scene, const WaveModelGpu& model)
+{
+    const std::optional<WaveModelGpu::CrestSpray> crests = model.crestSpray();
+    if (!crests || !sprayAt(scene, crests->windSpeed_mps))
+        return std::nullopt;
+    return crests->windSpeed_mps;
+}
+
+// The wind over the bows' spray: the air's, as the scene gives it. The
+// bow's sheet is torn by the wind over it, whatever draws the waves: a
+// Gerstner sum of listed waves or a host's own model has no wind of its
+// own to say, so the scene does (the crests' spray, which only a model
+// whose crests break throws, takes the wind that model was made for).
+std::optional<WindSettings> bowSprayWind(const Scene& scene)
+{
+    if (!scene.sea.wind || !sprayAt(scene, scene.sea.wind->windSpeed_mps))
+        return std::nullopt;
+    return scene.sea.wind;
+}
 
 } // namespace
 
@@ -52,28 +83,17 @@ void SprayRenderer::drawClumps(Telemetry& telemetry, const SprayPasses& passes, 
     Telemetry::addWork(sprayPassWork(slots, recordBytes), telemetry.counters.viewsGpu);
 }
 
-namespace {
-
-// Whether the scene draws spray at all.
-bool sprayOn(const Scene& scene)
+void SprayRenderer::releaseUnused(const Scene& scene, const WaveModelGpu& model, const Programs& programs)
 {
-    return scene.water.spray && scene.sea.wind && scene.debugView == DebugView::Shaded &&
-           scene.sea.wind->windSpeed_mps >= SWELL_SPRAY_ONSET_WIND_MPS;
-}
-
-} // namespace
-
-void SprayRenderer::releaseUnused(const Scene& scene, const Programs& programs)
-{
-    if (!sprayOn(scene) || !programs.spray)
+    if (!crestSprayWind_mps(scene, model) || !programs.spray)
         crestBuffers_ = {};
-    if (!sprayOn(scene) || scene.objects.empty())
+    if (!bowSprayWind(scene) || scene.objects.empty())
         bowBuffers_ = {};
 }
 
 void SprayRenderer::draw(RenderContext& context, const ViewFrame& v, const View& view)
 {
-    if (!sprayOn(context.scene))
+    if (!crestSprayWind_mps(context.scene, context.simulation.gpu()) && !bowSprayWind(context.scene))
         return;
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
@@ -91,10 +111,13 @@ void SprayRenderer::draw(RenderContext& context, const ViewFrame& v, const View&
 void SprayRenderer::drawCrests(RenderContext& context, const ViewFrame& v, const View& view)
 {
     const Programs& programs = context.resources.programs;
-    const double wind_mps = context.scene.sea.wind->windSpeed_mps;
+    const std::optional<double> wind = crestSprayWind_mps(context.scene, context.simulation.gpu());
+    if (!programs.spray || !wind)
+        return;
+    const double wind_mps = *wind;
     const double amount = std::clamp((wind_mps - SWELL_SPRAY_ONSET_WIND_MPS) /
                                          (SWELL_SPRAY_FULL_WIND_MPS - SWELL_SPRAY_ONSET_WIND_MPS), 0.0, 1.0);
-    if (!programs.spray || amount <= 0.0)
+    if (amount <= 0.0)
         return;
     const ObservedPass observed(context.telemetry, "spray");
     // The lattice, its cells fixed in the world, ahead of the eye: its
@@ -121,7 +144,8 @@ void SprayRenderer::drawCrests(RenderContext& context, const ViewFrame& v, const
 void SprayRenderer::drawBows(RenderContext& context, const ViewFrame& v)
 {
     const Programs& programs = context.resources.programs;
-    if (!programs.bowSpray)
+    const std::optional<WindSettings> wind = bowSprayWind(context.scene);
+    if (!programs.bowSpray || !wind)
         return;
     const Simulated& simulated = context.simulation.require();
     const SceneBodies& bodies = context.simulation.bodies();
@@ -161,10 +185,9 @@ void SprayRenderer::drawBows(RenderContext& context, const ViewFrame& v)
         return;
     hulls.historyLag_s = float(lag_s);
     const ObservedPass observed(context.telemetry, "bow spray");
-    const WindSettings& wind = *context.scene.sea.wind;
-    const double direction_rad = glm::radians(wind.windDirection_deg);
+    const double direction_rad = glm::radians(wind->windDirection_deg);
     programs.bowSpray.set(simulated.time_s, glm::vec2(std::cos(direction_rad), std::sin(direction_rad)),
-                          float(wind.windSpeed_mps), hulls);
+                          float(wind->windSpeed_mps), hulls);
     drawClumps(context.telemetry, programs.bowSpray, bowBuffers_, hulls.count * SWELL_BOW_SPRAY_SLOTS,
                SWELL_BOW_SPRAY_HULLS * SWELL_BOW_SPRAY_SLOTS, kBowSprayClumpBytes, kBowStrips);
 }

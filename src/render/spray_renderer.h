@@ -1,7 +1,8 @@
-// The spray (shaders/spray_clumps.comp, spray.vert), drawn in the main pass
-// after the water: torn from the breaking crests (its amount growing with
-// the wind from Beaufort 7) and thrown from the bows of the bodies under
-// way; none below Beaufort 7. Blended, depth-tested against the world and
+// The spray (shaders/spray_clumps.comp, bow_spray_clumps.comp, spray.vert),
+// drawn in the main pass after the water: torn from the breaking crests of
+// a wave model whose crests break (WaveModelGpu::crestSpray, its amount
+// growing with that model's wind from Beaufort 7) and thrown from the bows
+// of the bodies under way (the scene's wind); none below Beaufort 7. Blended, depth-tested against the world and
 // the water, writing no depth. Every particle is a function of the
 // simulated time (and, for the bows' spray, of the bodies' steps up to it).
 // Library-internal.
@@ -11,6 +12,7 @@
 #include "render/spray_buffers.h"
 #include "swell/scene.h"
 #include "swell/view.h"
+#include "swell/wave_model_gpu.h"
 
 namespace swell::detail {
 
@@ -23,7 +25,7 @@ public:
     void draw(RenderContext& context, const ViewFrame& v, const View& view);
     // Gives back the buffers a scene that draws no such spray does not need
     // (the crests' 39 MB of streaks among them).
-    void releaseUnused(const Scene& scene, const Programs& programs);
+    void releaseUnused(const Scene& scene, const WaveModelGpu& model, const Programs& programs);
 
 private:
     void drawCrests(RenderContext& context, const ViewFrame& v, const View& view);

@@ -1,7 +1,7 @@
 #include "render/surface_probe.h"
 
 #include "core/drawn_search.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 #include <epoxy/gl.h>
 #include <glm/vec4.hpp>

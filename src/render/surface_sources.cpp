@@ -2,7 +2,9 @@
 
 #include "ocean/foam/foam_texture.h"
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/limits.h"
+#include "swell/gpu/ocean.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>
@@ -19,17 +21,16 @@ void setSurfaceSourceFiles(gl::ShaderSources& sources, const std::vector<std::st
     std::string sum = R"(// Written by the renderer from its surface sources (src/render/surface_sources.h).
 #ifndef SWELL_SURFACE_SOURCES_GLSL
 #define SWELL_SURFACE_SOURCES_GLSL
-#include "swell/shader_constants.h"
+// What a source's code may use besides its parameters: the ocean's shared
+// constants and swell/constants.h's.
+#include "swell/gpu/ocean.h"
+#include "gpu/constants.glsl"
 #include "whitecap_foam.glsl"
 
-// Mirrored by swell::detail::SurfaceSourcesUniforms (src/render/surface_sources.h).
-layout(std140, binding = SWELL_BINDING_SURFACE_SOURCES) uniform SurfaceSources {
-    vec4 surfaceSourceParameters[SWELL_MAX_SURFACE_SOURCES * 4];
-    // The sources' foam's texture: the whitecaps' lattices, anchored to the
-    // world at the render origin (p_m = 0), not drawn out along any wind.
-    FoamNoise sourceFoamNoise[SWELL_FOAM_NOISE_MAPS];
-    float sourceBreakingFoamAmount; // source foam above this amount is a breaking's own (1 s old)
-};
+// The sources' parameters, and their foam's texture: the whitecaps'
+// lattices anchored to the world at the render origin (p_m = 0), not drawn
+// out along any wind (swell::detail::SurfaceSourcesUniforms, src/render/gpu/blocks.h).
+#include "gpu/surface_sources_block.glsl"
 
 )";
     for (std::size_t i = 0; i < codes.size(); ++i) {

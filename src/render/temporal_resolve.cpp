@@ -1,7 +1,10 @@
 #include "render/temporal_resolve.h"
 
+#include "gl/uniform_location.h"
+
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/temporal.h"
 
 #include <glm/matrix.hpp>
 
@@ -33,10 +36,7 @@ namespace {
 
 GLint uniform(const gl::Program& program, const char* name, const char* file = "temporal_resolve.frag")
 {
-    const GLint location = glGetUniformLocation(program.id(), name);
-    if (location < 0)
-        throw Error(std::string(file) + " has no uniform '" + name + "'");
-    return location;
+    return gl::requiredUniform(program, name, file);
 }
 
 } // namespace

@@ -3,7 +3,8 @@
 #include "render/frame_uniforms.h"
 #include "render/waterline.h"
 #include "render/world.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/underwater.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
@@ -101,7 +102,7 @@ bool causticsWanted(RenderContext& context, const ViewFrame& v, bool ownWorld)
     // The shafts of light read it along the rays of any pixel under the
     // water, the world drawn or not: wherever the main pass's near plane is
     // not wholly in the air (its programs then have no shafts).
-    const bool shafts = resources.variant.shafts &&
+    const bool shafts = resources.programs.flags.water.underwater.shafts &&
                         nearPlaneMedium(nearPlaneCorners(glm::inverse(v.viewProj), v.depth.nearNdcZ),
                                         context.simulation.reach()) != NearPlaneMedium::Air;
     return resources.programs.caustics && v.base.sunDirection.y > 0.0f && ((ownWorld && wanted) || shafts);

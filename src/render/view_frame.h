@@ -7,7 +7,7 @@
 // Library-internal.
 #pragma once
 
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "render/resources.h"
 #include "render/simulation.h"
 #include "render/sky_system.h"
@@ -56,7 +56,7 @@ ViewFrame prepareView(RenderContext& context, const View& view, glm::ivec2 size,
 
 // The maps the view's passes read, before the first of them: the
 // procedural sky baked when stale, the cloud layer's shadows, and the
-// caustics map (drawn when the variant has caustics, the sun is up and
+// caustics map (drawn when the scene has caustics, the sun is up and
 // either Swell's own world is drawn and reaches under the water within the
 // map, or the shafts of light may be seen). ownWorld: Swell's world is drawn.
 void prepareViewMaps(RenderContext& context, const ViewFrame& v, bool ownWorld);

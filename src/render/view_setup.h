@@ -3,7 +3,7 @@
 // framebuffer the water cannot be drawn with.
 #pragma once
 
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "swell/view.h"
 
 #include <epoxy/gl.h>

@@ -1,7 +1,7 @@
 // The wake's texture and uniform block (wake_texture.h).
 #include "render/wake_texture.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 namespace swell::detail {
 

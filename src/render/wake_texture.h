@@ -5,6 +5,7 @@
 #pragma once
 
 #include "objects/wake_frame.h"
+#include "render/gpu/blocks.h"
 #include "swell/gl/handle.h"
 
 #include <glm/vec2.hpp>
@@ -12,13 +13,6 @@
 
 namespace swell::detail {
 
-// Mirrors the Wake block of shaders/wake.glsl (std140).
-struct WakeUniforms {
-    glm::vec2 corner_m{0.0f}; // centre of cell (0, 0) relative to the render origin, x, z
-    float cellSize_m = 1.0f;
-    int cells = 0;            // 0: no wake this frame
-};
-static_assert(sizeof(WakeUniforms) == 16, "the Wake block is 16 bytes in std140");
 
 class WakeTexture {
 public:

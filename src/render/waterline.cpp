@@ -1,6 +1,6 @@
 #include "render/waterline.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/underwater.h"
 
 #include <algorithm>
 

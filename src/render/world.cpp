@@ -2,6 +2,7 @@
 #include "render/world.h"
 
 #include "swell/error.h"
+#include "swell/gpu/limits.h"
 #include "swell/image.h"
 
 #include <glm/common.hpp>

@@ -4,10 +4,10 @@
 // object stands is objects/placement.h's.
 #pragma once
 
-#include "render/gpu_types.h"
-#include "render/mesh.h"
 #include "assets/island_levels.h"
 #include "assets/scene_assets.h"
+#include "render/gpu/blocks.h"
+#include "render/mesh.h"
 #include "swell/scene.h"
 #include "swell/surface_query.h"
 

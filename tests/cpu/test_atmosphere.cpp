@@ -7,6 +7,7 @@
 
 #include "published_sky.h"
 #include "rayleigh_layer_transfer.h"
+#include "swell/constants.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,7 @@ namespace {
 using swell::Atmosphere;
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kBottom_m = SWELL_ATMOSPHERE_BOTTOM_RADIUS_M;
+constexpr double kBottom_m = swell::kAtmosphereBottomRadius_m;
 
 const Atmosphere& clearAir()
 {
@@ -49,8 +50,8 @@ glm::dvec3 skyAt(double elevation_deg, double azimuthFromSun_deg)
 // benchmark's ground.
 std::vector<double> modelRadiances(const swell::test::RayleighSkyCase& c)
 {
-    const double column440 = SWELL_RAYLEIGH_SCATTERING_B * SWELL_RAYLEIGH_SCALE_HEIGHT_M
-        * (1.0 - std::exp(-(SWELL_ATMOSPHERE_TOP_RADIUS_M - kBottom_m) / SWELL_RAYLEIGH_SCALE_HEIGHT_M));
+    const double column440 = swell::kRayleighScatteringBlue_per_m * swell::kRayleighScaleHeight_m
+        * (1.0 - std::exp(-(swell::kAtmosphereTopRadius_m - kBottom_m) / swell::kRayleighScaleHeight_m));
     swell::AtmosphereSettings settings;
     settings.rayleighScale = c.opticalDepth / column440;
     settings.mieScale = 0.0;
@@ -235,18 +236,18 @@ TEST(Atmosphere, RayleighOpticalDepthAgainstHansenAndTravis1974)
     struct Case {
         double lambda_um, beta_per_m, tolerance;
     };
-    const Case cases[] = {{0.44, SWELL_RAYLEIGH_SCATTERING_B, 0.10},
-                          {0.55, SWELL_RAYLEIGH_SCATTERING_G, 0.14},
-                          {0.68, SWELL_RAYLEIGH_SCATTERING_R, 0.14}};
+    const Case cases[] = {{0.44, swell::kRayleighScatteringBlue_per_m, 0.10},
+                          {0.55, swell::kRayleighScatteringGreen_per_m, 0.14},
+                          {0.68, swell::kRayleighScatteringRed_per_m, 0.14}};
     for (const Case& c : cases) {
         const double l = c.lambda_um;
         const double published = 0.008569 * std::pow(l, -4.0) * (1.0 + 0.0113 * std::pow(l, -2.0) + 0.00013 * std::pow(l, -4.0));
         // The column integral of the model's own profile, 0 to the top.
         double column = 0.0;
         const double dh = 10.0;
-        for (double h = 0.5 * dh; h < SWELL_ATMOSPHERE_TOP_RADIUS_M - kBottom_m; h += dh)
+        for (double h = 0.5 * dh; h < swell::kAtmosphereTopRadius_m - kBottom_m; h += dh)
             column += swell::atmosphereAt(h, {}).rayleighScattering[l < 0.5 ? 2 : l < 0.6 ? 1 : 0] * dh;
-        EXPECT_NEAR(column, c.beta_per_m * SWELL_RAYLEIGH_SCALE_HEIGHT_M, 1.0e-3 * column);
+        EXPECT_NEAR(column, c.beta_per_m * swell::kRayleighScaleHeight_m, 1.0e-3 * column);
         EXPECT_LT(relativeError(column, published), c.tolerance)
             << l * 1000.0 << " nm: model " << column << ", Hansen & Travis " << published;
     }

@@ -6,6 +6,7 @@
 #include "objects/bow_spray.h"
 #include "render/spray_kinematics.h"
 #include "support/body_fixtures.h"
+#include "swell/gpu/spray.h"
 
 #include <gtest/gtest.h>
 

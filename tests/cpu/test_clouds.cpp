@@ -8,6 +8,7 @@
 // where the geometry says, and is dimmed by the optical depth there).
 #include "swell/atmosphere.h"
 #include "swell/clouds.h"
+#include "swell/gpu/sky.h"
 
 #include <gtest/gtest.h>
 

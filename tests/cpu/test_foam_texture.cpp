@@ -1,5 +1,6 @@
 // The lattices of the whitecaps' texture (src/ocean/foam/foam_texture.h).
 #include "ocean/foam/foam_texture.h"
+#include "swell/gpu/ocean.h"
 
 #include <gtest/gtest.h>
 

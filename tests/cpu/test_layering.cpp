@@ -109,9 +109,11 @@ bool mayInclude(Layer from, Layer to)
     return levelOf(to) < levelOf(from);
 }
 
+// A GL half's folder under src/ (ocean/<model>/gpu/, render/gpu/); not the
+// public swell/gpu/ headers, which hold the constants C++ and GLSL share.
 bool inGpuFolder(const fs::path& relative)
 {
-    return std::find(relative.begin(), relative.end(), fs::path("gpu")) != relative.end();
+    return *relative.begin() == "src" && std::find(relative.begin(), relative.end(), fs::path("gpu")) != relative.end();
 }
 
 // Built into swell_core, which links no GL code.

@@ -4,6 +4,7 @@
 // g, and the closed form is the path integral it claims to be, checked by
 // summing the integrand along the ray in small steps.
 #include "render/light_shafts.h"
+#include "swell/constants.h"
 
 #include <gtest/gtest.h>
 
@@ -32,7 +33,7 @@ TEST(LightShaftsModel, ThePhaseFunctionIsADensityWithMeanCosineG)
         meanCosine += swell::detail::henyeyGreenstein(std::cos(theta)) * std::cos(theta) * w;
     }
     EXPECT_NEAR(total, 1.0, 1e-4);
-    EXPECT_NEAR(meanCosine, SWELL_WATER_PHASE_G, 1e-4);
+    EXPECT_NEAR(meanCosine, swell::kWaterPhaseG, 1e-4);
     // Seawater scatters forwards: more than 100 times as much at 5 degrees as at 90.
     EXPECT_GT(swell::detail::henyeyGreenstein(std::cos(5.0 * std::numbers::pi / 180.0)),
               100.0 * swell::detail::henyeyGreenstein(0.0));
@@ -42,7 +43,7 @@ TEST(LightShaftsModel, TheClosedFormIsThePathIntegral)
 {
     const glm::dvec3 ray = swell::detail::levelRefractedRay(kSun);
     // Snell: sin T = sin I / n.
-    EXPECT_NEAR(std::sqrt(1.0 - ray.y * ray.y), std::sqrt(1.0 - kSun.y * kSun.y) / SWELL_WATER_IOR, 1e-12);
+    EXPECT_NEAR(std::sqrt(1.0 - ray.y * ray.y), std::sqrt(1.0 - kSun.y * kSun.y) / swell::kWaterIor, 1e-12);
     const double cosT = -ray.y;
     for (const glm::dvec3 d : {-ray, glm::normalize(glm::dvec3(1.0, 0.0, 0.2)), glm::normalize(glm::dvec3(0.3, 0.9, -0.1)),
                                glm::normalize(glm::dvec3(-0.2, -0.7, 0.5))})
@@ -61,7 +62,7 @@ TEST(LightShaftsModel, TheClosedFormIsThePathIntegral)
                     const double z = depth_m - t * d.y;
                     const glm::dvec3 beam =
                         kSunIrradiance * kSun.y * kTransmittance / cosT * glm::exp(-kAbsorption_per_m * z / cosT);
-                    sum += beam * SWELL_WATER_SCATTERING_PER_M * swell::detail::henyeyGreenstein(glm::dot(ray, -d)) *
+                    sum += beam * swell::kWaterScattering_per_m * swell::detail::henyeyGreenstein(glm::dot(ray, -d)) *
                            glm::exp(-kAbsorption_per_m * t) * dt;
                 }
                 const glm::dvec3 closed = swell::detail::levelShaftsRadiance(kSun, kSunIrradiance, kAbsorption_per_m,

@@ -3,10 +3,10 @@
 // throw InputError at the right file, line and column with a message that
 // names the key, and none of which may crash.
 #include "swell/error.h"
+#include "swell/gpu/limits.h"
 #include "swell/parameters.h"
 #include "swell/scene.h"
 #include "swell/scene_file.h"
-#include "swell/shader_constants.h"
 
 #include <fmt/format.h>
 #include "support/expect_input_error.h"

@@ -4,8 +4,8 @@
 // for it. The item-by-item map of hostile inputs to tests is in
 // docs/TESTING.md.
 #include "swell/error.h"
+#include "swell/gpu/limits.h"
 #include "swell/scene_file.h"
-#include "swell/shader_constants.h"
 
 #include <gtest/gtest.h>
 

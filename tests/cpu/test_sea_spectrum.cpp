@@ -3,6 +3,7 @@
 // spectrum carries the same variance as the frequency spectrum (its
 // Jacobian), the swell has its height, period and direction, and generated
 // directions follow the spreading.
+#include "swell/gpu/limits.h"
 #include "swell/spectrum.h"
 
 #include <glm/geometric.hpp>

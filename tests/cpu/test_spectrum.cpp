@@ -2,6 +2,7 @@
 // and fold-free for any settings, and carrying the energy of the published
 // laws (Pierson-Moskowitz for a fully developed sea, the JONSWAP growth laws
 // for a fetch-limited one) within 5%.
+#include "swell/gpu/limits.h"
 #include "swell/spectrum.h"
 
 #include <glm/geometric.hpp>

@@ -4,7 +4,6 @@
 #include "swell/error.h"
 #include "swell/scene.h"
 #include "swell/scene_file.h"
-#include "swell/shader_constants.h"
 
 #include <gtest/gtest.h>
 

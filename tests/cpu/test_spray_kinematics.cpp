@@ -2,6 +2,7 @@
 // shaders/spray.glsl): a drop's closed-form flight against Stokes drag
 // integrated in small steps, and a slot's lives following one another.
 #include "render/spray_kinematics.h"
+#include "swell/gpu/spray.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // the bodies float on the wake; the frame the renderer draws is the surface
 // the bodies sample.
 #include "objects/scene_bodies.h"
-#include "swell/shader_constants.h"
 #include "support/body_fixtures.h"
+#include "swell/gpu/spray.h"
 
 #include <gtest/gtest.h>
 

@@ -3,6 +3,7 @@
 // precision far from the origin, the fold limit, validation, and WaveSampler
 // against the exact double evaluation.
 #include "support/param_names.h"
+#include "swell/gpu/limits.h"
 #include "swell/spectrum.h"
 #include "swell/waves.h"
 

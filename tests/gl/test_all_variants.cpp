@@ -1,10 +1,16 @@
-// Every program the renderer builds, in every variant: each debug view, each
-// reflection mode, each grid layout, and each wave model's GLSL file (every
-// embedded file under ocean/, so a new model is covered by adding its file).
-// A variant the scenes of the other tests never select still has to compile.
+// Every program the renderer builds, over its own flags (render/
+// program_flags.h): one loop per program, each of its flags taking every
+// value, with every wave model's GLSL file where the program reads the
+// model (every embedded file under ocean/, so a new model is covered by
+// adding its file). A flag combination the scenes of the other tests
+// never select still has to compile: a shader that reads a define its
+// program's flags do not give stops with #error, so these also hold each
+// program's flags to what its shaders read.
 #include "objects/wake_surface.h"
 #include "render/programs.h"
+#include "render/surface_sources.h"
 #include "support/gl_test.h"
+#include "swell/gpu/variants.h"
 
 #include <array>
 #include <string>
@@ -12,13 +18,15 @@
 
 namespace {
 
-using swell::DebugView;
-using swell::GridLayout;
-using swell::ReflectionMode;
+using namespace swell;
+using namespace swell::detail;
 
-class AllVariants : public swell::test::GlTest {};
+class AllVariants : public test::GlTest {};
 
-std::vector<std::string> oceanFiles(const swell::gl::ShaderSources& sources)
+constexpr std::array kViews{DebugView::Shaded, DebugView::Normals,   DebugView::Reflection, DebugView::Refraction,
+                            DebugView::Lod,    DebugView::Wireframe, DebugView::Foam};
+
+std::vector<std::string> oceanFiles(const gl::ShaderSources& sources)
 {
     std::vector<std::string> files;
     for (const std::string& name : sources.fileNames())
@@ -27,99 +35,155 @@ std::vector<std::string> oceanFiles(const swell::gl::ShaderSources& sources)
     return files;
 }
 
-TEST_F(AllVariants, EveryProgramCompilesAndLinksInEveryVariant)
+// The 16 combinations of the underwater flags, by the bits of i.
+UnderwaterFlags underwaterFlags(unsigned i)
 {
-    swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
+    return {(i & 1u) != 0, (i & 2u) != 0, (i & 4u) != 0, (i & 8u) != 0};
+}
+
+// The water's vertex flags: a model, a layout and the surface sources (the
+// wake's, or none), by i.
+SurfaceFlags surfaceFlags(const std::vector<std::string>& models, unsigned i)
+{
+    std::vector<std::string> sources;
+    if (i % 2 == 1)
+        sources.push_back(WakeSurfaceSource::code());
+    return {(i / 2) % 2 == 0 ? GridLayout::Geometric : GridLayout::Paper, models[(i / 4) % models.size()], sources};
+}
+
+std::string traceOf(unsigned i) { return "combination " + std::to_string(i); }
+
+class EveryProgram : public AllVariants {
+protected:
+    void SetUp() override
+    {
+        AllVariants::SetUp();
+        // Gerstner and flat water at least: a glob that found nothing would pass vacuously.
+        ASSERT_GE(models.size(), 2u);
+        // The surface sources' files, written as the renderer writes them.
+        setSurfaceSourceFiles(sources, {WakeSurfaceSource::code()});
+    }
+    gl::ShaderSources sources = gl::ShaderSources::embedded();
     const std::vector<std::string> models = oceanFiles(sources);
-    // Gerstner and flat water at least: a glob that found nothing would pass vacuously.
-    ASSERT_GE(models.size(), 2u);
-    constexpr std::array views{DebugView::Shaded, DebugView::Normals,   DebugView::Reflection, DebugView::Refraction,
-                               DebugView::Lod,    DebugView::Wireframe, DebugView::Foam};
-    int built = 0;
+};
+
+// Every model, debug view, reflection mode and grid layout; the underwater
+// flags, the sources and the label pass through all their values among them.
+TEST_F(EveryProgram, TheWaterCompilesForEachFlag)
+{
+    unsigned i = 0;
     for (const std::string& model : models)
-        for (const DebugView view : views)
+        for (const DebugView view : kViews)
             for (const ReflectionMode reflection : {ReflectionMode::FixedDistance, ReflectionMode::RayMarch})
                 for (const GridLayout layout : {GridLayout::Geometric, GridLayout::Paper}) {
-                    swell::detail::ShaderVariant variant{view, reflection, layout, model};
-                    variant.surfaceSources = {swell::detail::WakeSurfaceSource::code()};
-                    SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", reflection " +
-                                 std::to_string(int(reflection)) + ", layout " + std::to_string(int(layout)));
-                    swell::detail::Programs programs;
-                    EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
-                    EXPECT_TRUE(programs.water && programs.sky && programs.capture && programs.caustics);
-                    ++built;
+                    SurfaceFlags surface = surfaceFlags(models, i);
+                    surface.oceanFile = model;
+                    surface.gridLayout = layout;
+                    const WaterFlags flags{surface, underwaterFlags(i), view, reflection, 0, i % 5 == 2};
+                    SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", " + traceOf(i));
+                    EXPECT_TRUE(WaterProgram(sources, flags));
+                    ++i;
                 }
-    EXPECT_EQ(built, int(models.size()) * int(views.size()) * 2 * 2);
+    EXPECT_EQ(i, models.size() * kViews.size() * 2 * 2);
 }
 
-// Without the wake or any surface source (wake.enabled = false; the variants above have the wake), with
-// every model and debug view, and without the caustics (water.caustics = false: the world's
-// shading reads no map, and the caustics pass is not built); the shafts of light
-// (water.shafts) on and off in turn, by debug view, the caustics' mean alone when on;
-// the cloud layer's shadows (render/cloud_shadow_map.h) with the debug views that
-// have no shafts.
-TEST_F(AllVariants, EveryProgramCompilesWithoutTheWake)
+// The benchmark's variants: each water shading term left out alone, and
+// all of them, with every model and both reflection modes.
+TEST_F(EveryProgram, TheWaterCompilesWithEachTermLeftOut)
 {
-    swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
-    const std::vector<std::string> models = oceanFiles(sources);
-    ASSERT_GE(models.size(), 2u);
-    int built = 0;
-    for (const std::string& model : models)
-        for (const DebugView view : {DebugView::Shaded, DebugView::Normals, DebugView::Reflection, DebugView::Refraction,
-                                     DebugView::Lod, DebugView::Wireframe, DebugView::Foam}) {
-            swell::detail::ShaderVariant variant{view, ReflectionMode::RayMarch, GridLayout::Geometric, model};
-            variant.surfaceSources.clear();
-            variant.caustics = false;
-            variant.shafts = int(view) % 2 == 0;
-            variant.cloudShadows = !variant.shafts;
-            SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", no wake, no caustics, shafts " +
-                         std::to_string(int(variant.shafts)) + ", cloud shadows " + std::to_string(int(variant.cloudShadows)));
-            swell::detail::Programs programs;
-            EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
-            EXPECT_TRUE(programs.water && programs.capture);
-            EXPECT_FALSE(programs.caustics);
-            ++built;
-        }
-    EXPECT_EQ(built, int(models.size()) * 7);
-}
-
-// The benchmark's variants: each water shading term left out alone, and all
-// of them, with every model and both reflection modes.
-TEST_F(AllVariants, EveryWaterTermCanBeLeftOut)
-{
-    swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
-    const std::vector<std::string> models = oceanFiles(sources);
-    ASSERT_GE(models.size(), 2u);
     int built = 0;
     for (const std::string& model : models)
         for (const ReflectionMode reflection : {ReflectionMode::FixedDistance, ReflectionMode::RayMarch})
             for (unsigned term = 1; term <= SWELL_TERM_ALL; term = term == SWELL_TERM_FILTERING ? SWELL_TERM_ALL : term * 2) {
-                swell::detail::ShaderVariant variant{DebugView::Shaded, reflection, GridLayout::Geometric, model};
-                variant.surfaceSources = {swell::detail::WakeSurfaceSource::code()};
-                variant.omittedWaterTerms = term;
-                SCOPED_TRACE(model + ", reflection " + std::to_string(int(reflection)) + ", terms left out " +
-                             std::to_string(term));
-                swell::detail::Programs programs;
-                EXPECT_NO_THROW(programs = swell::detail::buildPrograms(sources, variant));
-                EXPECT_TRUE(programs.water);
+                WaterFlags flags;
+                flags.surface = {GridLayout::Geometric, model, {WakeSurfaceSource::code()}};
+                flags.reflection = reflection;
+                flags.omittedTerms = term;
+                SCOPED_TRACE(model + ", terms left out " + std::to_string(term));
+                EXPECT_TRUE(WaterProgram(sources, flags));
                 ++built;
             }
     // Eight single terms and all of them together.
     EXPECT_EQ(built, int(models.size()) * 2 * 9);
 }
 
-} // namespace
-
-namespace {
-
-// The physical sky's bake, built only when a scene first asks for it
-// (render/programs.h), so no variant above compiles it.
-TEST_F(AllVariants, ThePhysicalSkyBakeCompilesAndLinks)
+TEST_F(EveryProgram, TheWaterlineMaskCompilesForEachFlag)
 {
-    const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
-    swell::detail::SkyBakeProgram program;
-    EXPECT_NO_THROW(program = swell::detail::SkyBakeProgram(sources, swell::detail::ShaderVariant{}, true));
-    EXPECT_TRUE(program);
+    for (unsigned i = 0; i < 16 || i < 4 * models.size(); ++i) {
+        SCOPED_TRACE(traceOf(i));
+        EXPECT_TRUE(WaterlineProgram(sources, {surfaceFlags(models, i), underwaterFlags(i)}));
+    }
+}
+
+TEST_F(EveryProgram, TheWaterVertexCaptureAndTheQueriesCompileForEachFlag)
+{
+    for (unsigned i = 0; i < 4 * models.size(); ++i) {
+        SCOPED_TRACE(traceOf(i));
+        EXPECT_TRUE(WaterCaptureProgram(sources, {surfaceFlags(models, i)}));
+        EXPECT_TRUE(SurfaceProbeProgram(sources, {surfaceFlags(models, i)}));
+    }
+}
+
+TEST_F(EveryProgram, TheSkyCompilesForEachFlag)
+{
+    for (unsigned i = 0; i < 32; ++i) {
+        SCOPED_TRACE(traceOf(i));
+        EXPECT_TRUE(SkyProgram(sources, {underwaterFlags(i), i >= 16}));
+    }
+}
+
+TEST_F(EveryProgram, TheHostsGeometryUnderTheWaterCompilesForEachFlag)
+{
+    for (unsigned i = 0; i < 16; ++i) {
+        SCOPED_TRACE(traceOf(i));
+        EXPECT_TRUE(UnderwaterHostProgram(sources, {underwaterFlags(i)}));
+    }
+}
+
+TEST_F(EveryProgram, TheMeshesCompileForEachFlag)
+{
+    for (unsigned i = 0; i < 2 * kViews.size() * 2; ++i) {
+        SCOPED_TRACE(traceOf(i));
+        EXPECT_TRUE(MeshProgram(sources, {underwaterFlags(i), kViews[i % kViews.size()], (i / kViews.size()) % 2 == 1}));
+    }
+}
+
+TEST_F(EveryProgram, TheCausticsPassCompilesForEachModel)
+{
+    for (const std::string& model : models) {
+        SCOPED_TRACE(model);
+        EXPECT_TRUE(CausticsPrograms(sources, {model}));
+    }
+}
+
+// The crests' spray is built for models whose crests break
+// (WaveModelGpu::crestSpray): the spectral model's.
+TEST_F(EveryProgram, TheSprayCompilesForEachFlag)
+{
+    for (const bool cloudShadows : {false, true}) {
+        SCOPED_TRACE(cloudShadows ? "cloud shadows" : "no cloud shadows");
+        EXPECT_TRUE(SprayProgram(sources, {"ocean/spectral.glsl", cloudShadows}));
+        EXPECT_TRUE(BowSprayProgram(sources, {cloudShadows}));
+    }
+}
+
+// The programs without flags, and the physical sky's bake, built only when
+// a scene first asks for it.
+TEST_F(EveryProgram, TheProgramsWithoutFlagsCompile)
+{
+    EXPECT_TRUE(FxaaProgram(sources, {}));
+    EXPECT_TRUE(CloudShadowBakeProgram(sources));
+    for (const bool physical : {false, true})
+        EXPECT_TRUE(SkyBakeProgram(sources, physical));
+    // The temporal resolve's, with everything else, for the first model's file.
+    detail::ProgramFlags flags;
+    for (WaterFlags* water : {&flags.water, &flags.waterInAir})
+        water->surface.oceanFile = models.front();
+    for (SurfaceFlags* surface : {&flags.waterline.surface, &flags.capture.surface, &flags.probe.surface})
+        surface->oceanFile = models.front();
+    flags.caustics = CausticsFlags{models.front()};
+    const detail::Programs all = buildChangedPrograms(sources, {}, flags);
+    EXPECT_TRUE(all.temporal && all.water && all.caustics && !all.spray);
 }
 
 } // namespace

@@ -8,8 +8,9 @@
 #include "support/gl_test.h"
 #include "support/shader_probe.h"
 #include "swell/atmosphere.h"
+#include "swell/constants.h"
 #include "swell/gl/handle.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 #include <glm/vec4.hpp>
 
@@ -84,7 +85,7 @@ TEST_F(AtmosphereGpu, MultipleScatteringLookupsAreTheCppModels)
 
         double largest = 0.0, worstPsi = 0.0, worstOrder2 = 0.0, largestOrder2 = 0.0;
         for (size_t i = 0; i < in.size(); ++i) {
-            const double r = SWELL_ATMOSPHERE_BOTTOM_RADIUS_M + double(in[i].x);
+            const double r = swell::kAtmosphereBottomRadius_m + double(in[i].x);
             const glm::dvec3 psi = atmosphere.multipleScattering(r, in[i].y);
             const glm::dvec3 order2 = atmosphere.rayleighMultipleScatteringOrder2(r, in[i].y, in[i].z, in[i].w);
             for (int c = 0; c < 3; ++c) {

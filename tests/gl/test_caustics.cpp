@@ -8,9 +8,11 @@
 #include "swell/wave_model.h"
 #include "support/fresnel_reference.h"
 #include "support/gl_test.h"
+#include "swell/constants.h"
 #include "swell/flat_model.h"
 #include "swell/gerstner_model.h"
 #include "swell/gl/shader.h"
+#include "swell/gpu/underwater.h"
 
 #include <glm/geometric.hpp>
 
@@ -34,7 +36,7 @@ using swell::test::fresnelAirToWater;
 // The cosine of the sun's refracted ray from the vertical (Snell's law).
 double refractedCosine(double cosI)
 {
-    const double sinT = std::sqrt(1.0 - cosI * cosI) / SWELL_WATER_IOR;
+    const double sinT = std::sqrt(1.0 - cosI * cosI) / swell::kWaterIor;
     return std::sqrt(1.0 - sinT * sinT);
 }
 

@@ -6,7 +6,7 @@
 // (shaders/cloud_shadow.glsl) against the C++ model's transmittance along
 // the sun's ray from a point (cloudShadowTransmittance).
 #include "render/cloud_shadow_map.h"
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "render/programs.h"
 #include "render/sky_light.h"
 #include "support/gl_test.h"
@@ -15,7 +15,8 @@
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
 #include "swell/gl/shader_sources.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/sky.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
@@ -180,7 +181,7 @@ struct BakedShadowMap {
 void bakeShadowMap(BakedShadowMap& baked, const swell::CloudSettings& clouds)
 {
     const swell::gl::ShaderSources sources = swell::gl::ShaderSources::embedded();
-    const swell::detail::CloudShadowBakeProgram program(sources, swell::detail::ShaderVariant{});
+    const swell::detail::CloudShadowBakeProgram program(sources);
     const swell::gl::VertexArray vao = swell::gl::VertexArray::create();
     EXPECT_TRUE(baked.map.update(program, vao.id(), clouds, kShadowSun, kShadowOrigin, 1.0f));
     // The same again: nothing to bake.

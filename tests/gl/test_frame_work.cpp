@@ -7,11 +7,14 @@
 // only against the same thread's clock read around the frame.
 #include "support/gl_test.h"
 
+#include "support/open_sea.h"
 #include "swell/debug.h"
 #include "swell/gl/context.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/ocean.h"
+#include "swell/gpu/spray.h"
+#include "swell/gpu/underwater.h"
 #include "swell/renderer.h"
-#include "support/open_sea.h"
-#include "swell/shader_constants.h"
 
 #include <gtest/gtest.h>
 

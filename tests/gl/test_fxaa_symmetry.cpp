@@ -8,7 +8,7 @@
 
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
 
 #include <epoxy/gl.h>
 

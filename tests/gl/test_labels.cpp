@@ -6,11 +6,12 @@
 // that box; the colour image changes where the mask says the object is.
 #include "support/gl_test.h"
 
+#include "assets/mesh_data.h"
+#include "support/open_sea.h"
 #include "swell/flat_model.h"
+#include "swell/gpu/label_classes.h"
 #include "swell/labels.h"
 #include "swell/renderer.h"
-#include "support/open_sea.h"
-#include "assets/mesh_data.h"
 #include "swell/scene.h"
 #include "swell/sensor.h"
 

@@ -8,7 +8,7 @@
 
 #include "gl/mip_downsample.h"
 #include "swell/error.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/ocean.h"
 
 #include <gtest/gtest.h>
 
@@ -112,7 +112,7 @@ TEST_F(MipDownsample, EveryLevelIsTheMeanOfTheTwoByTwoBelowIt)
     using Path = gl::MipDownsampler::Path;
     for (const auto path : {Path::SharedMemory, Path::Blocks, Path::Fastest}) {
         SCOPED_TRACE(path == Path::SharedMemory ? "shared memory" : path == Path::Blocks ? "blocks" : "this machine's path");
-        // The spectral fields and moments, and the foam (swell/shader_constants.h).
+        // The spectral fields and moments, and the foam (swell/gpu/ocean.h).
         check({GL_RGBA32F, 1 << SWELL_FFT_LOG2_SIZE, SWELL_FFT_LOG2_SIZE + 1, SWELL_FFT_CASCADES, 4, 1e-6}, path);
         check({GL_R16F, 1 << SWELL_FOAM_LOG2_SIZE, SWELL_FOAM_LOG2_SIZE + 1, SWELL_FOAM_LEVELS, 1, 1e-3}, path);
         // Smaller chains: one dispatch, a dispatch's every level, one level

@@ -1,7 +1,7 @@
 // The reflection's masking term: the sea's mean square slope the renderer
 // measures, and the GLSL Smith masking function it feeds, each against the
 // formula it implements.
-#include "render/gpu_types.h"
+#include "render/gpu/blocks.h"
 #include "render/slope_statistics.h"
 #include "support/gl_test.h"
 #include "support/shader_probe.h"
@@ -9,6 +9,7 @@
 #include "swell/gerstner_model.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
+#include "swell/gpu/bindings.h"
 
 #include <epoxy/gl.h>
 
@@ -53,7 +54,8 @@ void main()
     share[gl_GlobalInvocationID.x] = unmaskedShare(vec3(cos(elevation_rad), sin(elevation_rad), 0.0));
 }
 )",
-                                                                      {"SWELL_REFLECTION_MODE SWELL_REFLECTION_RAYMARCH"});
+                                                                      {"SWELL_REFLECTION_MODE SWELL_REFLECTION_RAYMARCH",
+                                                                       "SWELL_CLOUD_SHADOWS 0"});
 
     swell::detail::FrameUniforms frame{};
     const double s2 = 0.05; // about a 9 m/s wind (Cox & Munk 1954: 0.003 + 5.12e-3 U)

@@ -8,6 +8,7 @@
 #include "support/gl_test.h"
 #include "support/shader_probe.h"
 #include "swell/gl/shader.h"
+#include "swell/gpu/spray.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>

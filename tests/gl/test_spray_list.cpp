@@ -9,7 +9,8 @@
 #include "support/gl_test.h"
 #include "swell/gl/shader.h"
 #include "swell/gl/shader_sources.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/spray.h"
 
 #include <glm/vec4.hpp>
 

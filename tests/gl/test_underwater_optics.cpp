@@ -22,7 +22,7 @@ class UnderwaterOptics : public swell::test::GlTest {};
 // the shader's reflectance from water into air, from air into water at the
 // refracted angle, and the length of GLSL's refracted ray from the water.
 const char* const kProbe = R"(
-#include "swell/shader_constants.h"
+#include "gpu/constants.glsl"
 #include "water_optics.glsl"
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer Probe { float data[]; };

@@ -6,8 +6,8 @@
 // against unfiltered (the shading with SWELL_TERM_FILTERING left out).
 #include "support/gl_test.h"
 #include "swell/debug.h"
+#include "swell/gpu/variants.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 #include <glm/trigonometric.hpp>
 

@@ -7,6 +7,7 @@
 #include "support/golden.h"
 #include "support/stage.h"
 #include "swell/atmosphere.h"
+#include "swell/gpu/sky.h"
 #include "swell/renderer.h"
 #include "swell/scene_file.h"
 

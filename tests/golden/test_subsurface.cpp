@@ -4,8 +4,8 @@
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "swell/debug.h"
+#include "swell/gpu/variants.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 #include <glm/geometric.hpp>
 

@@ -13,8 +13,8 @@
 #include "support/golden.h"
 #include "swell/debug.h"
 #include "swell/flat_model.h"
+#include "swell/gpu/variants.h"
 #include "swell/renderer.h"
-#include "swell/shader_constants.h"
 
 #include <glm/trigonometric.hpp>
 

@@ -20,7 +20,7 @@ version=$("$swell" --version)
 echo "$version"
 grep -qx "presets: $data/scenes" <<<"$version" || { echo "swell does not use the installed presets" >&2; exit 1; }
 grep -qx "shaders: $data/shaders" <<<"$version" || { echo "swell does not use the installed shaders" >&2; exit 1; }
-test -f "$data/include/swell/shader_constants.h"   # the shaders' shared header, for hot reload
+test -f "$data/include/swell/gpu/bindings.h"   # the shaders' shared headers, for hot reload
 test -f "$data/shaders/water.frag"
 
 presets=("$data"/scenes/*.toml)

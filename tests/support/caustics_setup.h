@@ -26,9 +26,7 @@ public:
         gpu_->prepareFrame(glm::dvec2(0.0), 20.0);
         gpu_->prepareView(glm::dvec2(0.0));
         gpu_->bind();
-        detail::ShaderVariant variant;
-        variant.oceanFile = gpu_->shaderFile();
-        const detail::CausticsPrograms program = detail::buildCausticsPrograms(sources_, variant);
+        const detail::CausticsPrograms program(sources_, detail::CausticsFlags{gpu_->shaderFile()});
         map_.place(glm::dvec3(0.0), glm::vec2(0.0f), sunDirection);
         triangles_ = map_.render(program);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -39,10 +37,11 @@ public:
     long long triangles() const { return triangles_; }
 
     // A compute program from `text` that may include any of the shaders'
-    // files (support/shader_probe.h).
+    // files (support/shader_probe.h), built as the programs that read the
+    // map are: with the map drawn and the shafts of light on.
     gl::Program probe(const char* text) const
     {
-        return buildShaderProbe(text);
+        return buildShaderProbe(text, {"SWELL_CAUSTICS 1", "SWELL_SHAFTS 1"});
     }
 
 private:

@@ -2,7 +2,7 @@
 // water_optics.glsl so the two can be held to each other.
 #pragma once
 
-#include "swell/shader_constants.h"
+#include "swell/constants.h"
 
 #include <cmath>
 
@@ -12,7 +12,7 @@ namespace swell::test {
 // cosine of incidence cosI (Hecht, "Optics", 4th ed., eqs. 4.34 and 4.40).
 inline double fresnelAirToWater(double cosI)
 {
-    const double n = SWELL_WATER_IOR;
+    const double n = swell::kWaterIor;
     const double sinT = std::sqrt(1.0 - cosI * cosI) / n;
     const double cosT = std::sqrt(1.0 - sinT * sinT);
     const double rs = (cosI - n * cosT) / (cosI + n * cosT);

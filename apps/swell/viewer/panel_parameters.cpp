@@ -6,7 +6,7 @@
 
 #include "viewer/panel_widgets.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/limits.h"
 
 #include <imgui.h>
 

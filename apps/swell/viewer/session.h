@@ -20,7 +20,7 @@ struct Message {
 };
 
 // Where hot reload reads shaders: the shaders/ folder and the folder that
-// holds swell/shader_constants.h (the repository's include/).
+// holds swell/gpu/*.h (the repository's include/).
 struct ShaderFolders {
     std::filesystem::path shaders;
     std::filesystem::path include;

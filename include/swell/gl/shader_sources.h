@@ -18,8 +18,9 @@ class SWELL_API ShaderSources {
 public:
     // The sources embedded in the library at build time.
     static ShaderSources embedded();
-    // Sources read from a folder laid out like shaders/ (plus swell/shader_constants.h
-    // looked up in includeDir). Files are read when first needed.
+    // Sources read from a folder laid out like shaders/ (plus the headers under swell/gpu/
+    // looked up in includeDir). Files are read when first needed; the files
+    // generated from the library's C++ (gpu/*.glsl) are its embedded copies.
     static ShaderSources fromDirectory(std::filesystem::path shaderDir, std::filesystem::path includeDir);
     // In-memory sources, for tests.
     static ShaderSources fromMap(std::map<std::string, std::string> files);
@@ -33,7 +34,7 @@ public:
     void forgetCachedFiles() { cache_.clear(); }
 
     // The names of the files held in memory (embedded, given or set), sorted;
-    // for sources read from a folder, only those set.
+    // for sources read from a folder, only those set and the generated ones.
     std::vector<std::string> fileNames() const;
 
     // The text of one file. Throws swell::InputError when it does not exist.

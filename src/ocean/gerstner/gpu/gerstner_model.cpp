@@ -4,8 +4,10 @@
 #include "swell/gerstner_model.h"
 
 #include "ocean/gerstner/gpu/gerstner_uniforms.h"
-#include "swell/wave_model_gpu.h"
 #include "swell/gl/handle.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/limits.h"
+#include "swell/wave_model_gpu.h"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -31,6 +33,17 @@ public:
             order_.push_back(&waves_.waves[size_t(i)]);
         std::stable_sort(order_.begin(), order_.end(),
                          [](const Wave* a, const Wave* b) { return a->wavelength_m > b->wavelength_m; });
+        // Mean square slope of each wave and every shorter one: what a pixel
+        // that resolves none of them must add as roughness. A wave of slope
+        // amplitude k*a has slope variance (k*a)^2/2. The waves never
+        // change, so neither does this: found once, not per view.
+        tailSlopeVariance_.assign(order_.size(), 0.0);
+        double tail = 0.0;
+        for (std::size_t i = order_.size(); i-- > 0;) {
+            const double ka = glm::length(wavenumberVector(*order_[i])) * order_[i]->amplitude_m;
+            tail += 0.5 * ka * ka;
+            tailSlopeVariance_[i] = tail;
+        }
     }
 
     std::string shaderFile() const override { return "ocean/gerstner.glsl"; }
@@ -48,27 +61,22 @@ public:
         const double time_s = time_s_;
         detail::GerstnerUniforms u{};
         const int count = int(order_.size());
-        // Mean square slope of each wave and every shorter one: what a pixel
-        // that resolves none of them must add as roughness. A wave of slope
-        // amplitude k*a has slope variance (k*a)^2/2.
-        double tailSlopeVariance = 0.0;
-        std::vector<double> tail(size_t(count), 0.0);
-        for (int i = count - 1; i >= 0; --i) {
-            const double ka = glm::length(wavenumberVector(*order_[size_t(i)])) * order_[size_t(i)]->amplitude_m;
-            tailSlopeVariance += 0.5 * ka * ka;
-            tail[size_t(i)] = tailSlopeVariance;
-        }
         for (int i = 0; i < count; ++i) {
             const Wave& w = *order_[size_t(i)];
             // Exactly the k*d the CPU wave functions use.
             const glm::dvec2 kd = wavenumberVector(w);
             const double k = glm::length(kd);
             const glm::dvec2 d = kd / k;
-            u.waveShape[i] = glm::vec4(glm::dvec4(d.x, d.y, k, w.amplitude_m));
-            u.wavePhase[i] = glm::vec4(
-                glm::dvec4(w.steepness, wrappedPhase(w, waves_.depth_m, gridCenter_m, time_s), w.wavelength_m, tail[size_t(i)]));
+            detail::GerstnerWaveUniform& g = u.waves[i];
+            g.direction = glm::vec2(d);
+            g.wavenumber_rad_per_m = float(k);
+            g.amplitude_m = float(w.amplitude_m);
+            g.steepness = float(w.steepness);
+            g.phase_rad = float(wrappedPhase(w, waves_.depth_m, gridCenter_m, time_s));
+            g.wavelength_m = float(w.wavelength_m);
+            g.tailSlopeVariance = float(tailSlopeVariance_[size_t(i)]);
         }
-        u.waveCount = glm::ivec4(count, 0, 0, 0);
+        u.waveCount = count;
         glNamedBufferSubData(buffer_.id(), 0, sizeof(u), &u);
     }
 
@@ -77,6 +85,7 @@ public:
 private:
     WaveSet waves_;
     std::vector<const Wave*> order_; // into waves_, longest first
+    std::vector<double> tailSlopeVariance_; // of each wave in order_ and every shorter one
     gl::Buffer buffer_;
     double time_s_ = 0.0; // the time prepareFrame() reached, s
 };

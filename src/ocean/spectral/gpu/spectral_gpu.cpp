@@ -9,16 +9,20 @@
 
 #include "core/worker.h"
 #include "gl/mip_downsample.h"
+#include "gl/uniform_location.h"
 #include "ocean/spectral/field_texels.h"
 #include "ocean/foam/foam_texture.h"
 #include "ocean/spectral/foam_replay.h"
 #include "ocean/spectral/spectral_cpu.h"
+#include "ocean/spectral/gpu/spectral_uniforms.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
-#include "swell/wave_model_gpu.h"
 #include "swell/constants.h"
 #include "swell/gl/context.h"
 #include "swell/gl/shader.h"
+#include "swell/gpu/bindings.h"
+#include "swell/gpu/ocean.h"
+#include "swell/wave_model_gpu.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/packing.hpp>
@@ -35,39 +39,6 @@ namespace swell {
 using namespace spectral;
 
 namespace {
-
-// Mirrors the std140 block SpectralCascades in shaders/ocean/spectral.glsl.
-struct alignas(16) WarpWaveUniform {
-    glm::vec2 wavevector_radpm;
-    glm::vec2 amplitude_m;
-    float phaseAtCentre_rad; // at the grid centre, reduced modulo 2*pi in double
-};
-static_assert(sizeof(WarpWaveUniform) == 32);
-struct alignas(16) CascadeUniform {
-    glm::vec2 originTexels;     // the grid centre modulo the patch, in texels
-    float texelsPerMetre;       // N / L
-    float shortestWavelength_m; // what the LOD weight tests
-    float vertexWarpCell_m;     // the largest grid cell whose pixels interpolate the warp, m
-    WarpWaveUniform warp[kWarpWaves];
-};
-static_assert(sizeof(CascadeUniform) == 32 + 32 * kWarpWaves);
-static_assert(offsetof(CascadeUniform, warp) == 32);
-// One lattice of the foam's texture (swell::foam::FoamNoiseMap).
-struct alignas(16) FoamNoiseUniform {
-    glm::vec4 map; // column-major: cells per metre along x, then along z
-    glm::vec2 offset_cells;
-    float cyclesPerMetre;
-};
-static_assert(sizeof(FoamNoiseUniform) == 32);
-struct alignas(16) SpectralUniforms {
-    CascadeUniform cascades[kCascades];
-    glm::vec2 windDirection;
-    float foamStreak;
-    float unresolvedSlopeVariance; // of the waves shorter than the last cascade's
-    glm::vec4 foamLevels[kFoamLevels]; // the grid centre in texels modulo N (x, y), texels per metre
-    FoamNoiseUniform foamNoise[foam::kFoamNoiseMaps];
-    float breakingFoamAmount; // foam above this amount is a breaking's own (foam::kBreakingFoamAge_s)
-};
 
 // Foam fades out over this much J above the threshold, a fifth of the
 // spread of J's lowest percent below its median (about 0.15): the rim of a
@@ -121,9 +92,9 @@ constexpr long long mipTexels(int size, int levels, int layers, int first = 0)
     return texels;
 }
 
-// Local size of the 16 x 16 foam step (spectral_foam.comp), each
-// invocation one texel of every image it writes.
-constexpr int kTile = 16;
+// The foam step's workgroups (spectral_foam.comp): tiles of kTile x kTile
+// texels.
+constexpr int kTile = SWELL_FOAM_STEP_GROUP;
 
 
 class SpectralGpu final : public WaveModelGpu {
@@ -136,18 +107,20 @@ public:
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
         foamStep_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_foam.comp"}},
                                      {"SWELL_OCEAN_FILE \"ocean/spectral.glsl\""});
-        timeLocation_ = glGetUniformLocation(fftRows_.id(), "time_s");
-        choppinessLocation_ = glGetUniformLocation(fftRows_.id(), "choppiness");
-        patchLocation_ = glGetUniformLocation(fftRows_.id(), "patchSize_m");
-        decayLocation_ = glGetUniformLocation(foamStep_.id(), "decay");
-        thresholdLocation_ = glGetUniformLocation(foamStep_.id(), "foldThreshold");
-        softnessLocation_ = glGetUniformLocation(foamStep_.id(), "foldSoftness");
-        foamCascadesLocation_ = glGetUniformLocation(foamStep_.id(), "foamCascades");
-        windowOriginLocation_ = glGetUniformLocation(foamStep_.id(), "windowOrigin");
-        previousOriginLocation_ = glGetUniformLocation(foamStep_.id(), "previousOrigin");
-        centreIndexLocation_ = glGetUniformLocation(foamStep_.id(), "centreIndex");
-        centreFractionLocation_ = glGetUniformLocation(foamStep_.id(), "centreFraction");
-        texelLocation_ = glGetUniformLocation(foamStep_.id(), "texel_m");
+        const char* fft = "ocean/spectral_fft.comp";
+        timeLocation_ = gl::requiredUniform(fftRows_, "time_s", fft);
+        choppinessLocation_ = gl::requiredUniform(fftRows_, "choppiness", fft);
+        patchLocation_ = gl::requiredUniform(fftRows_, "patchSize_m", fft);
+        const char* foam = "ocean/spectral_foam.comp";
+        decayLocation_ = gl::requiredUniform(foamStep_, "decay", foam);
+        thresholdLocation_ = gl::requiredUniform(foamStep_, "foldThreshold", foam);
+        softnessLocation_ = gl::requiredUniform(foamStep_, "foldSoftness", foam);
+        foamCascadesLocation_ = gl::requiredUniform(foamStep_, "foamCascades", foam);
+        windowOriginLocation_ = gl::requiredUniform(foamStep_, "windowOrigin", foam);
+        previousOriginLocation_ = gl::requiredUniform(foamStep_, "previousOrigin", foam);
+        centreIndexLocation_ = gl::requiredUniform(foamStep_, "centreIndex", foam);
+        centreFractionLocation_ = gl::requiredUniform(foamStep_, "centreFraction", foam);
+        texelLocation_ = gl::requiredUniform(foamStep_, "texel_m", foam);
 
         const int n = kSize;
         auto array = [n](GLenum format, int levels, int layers = kCascades) {
@@ -229,6 +202,9 @@ public:
     // The CPU twin's queries transform every cascade at each new time.
     bool answersFrameQueries() const override { return true; }
 
+    // Its whitecaps are where crests break, torn by the wind it was made for.
+    std::optional<CrestSpray> crestSpray() const override { return CrestSpray{settings_.wind.windSpeed_mps}; }
+
     void updateUniforms(glm::dvec2 gridCenter_m)
     {
         SpectralUniforms u{};
@@ -260,8 +236,7 @@ public:
         u.foamStreak = float(1.0 + 3.0 * streak * streak * (3.0 - 2.0 * streak));
         u.unresolvedSlopeVariance = float(field_->unresolvedSlopeVariance);
         for (int level = 0; level < kFoamLevels; ++level)
-            u.foamLevels[level] =
-                glm::vec4(windows_[size_t(level)].originTexels, float(1.0 / foamTexel_m(*field_, level)), 0.0f);
+            u.foamLevels[level] = {windows_[size_t(level)].originTexels, float(1.0 / foamTexel_m(*field_, level)), 0.0f};
         const auto noise = foam::foamNoiseMaps(gridCenter_m, glm::dvec2(u.windDirection), double(u.foamStreak));
         for (int i = 0; i < foam::kFoamNoiseMaps; ++i) {
             const foam::FoamNoiseMap& m = noise[size_t(i)];
@@ -380,14 +355,14 @@ private:
         glUniform1fv(texelLocation_, kFoamLevels, texel_m.data());
         // The cascades, read through the samplers spectral.glsl declares.
         bind();
-        glBindImageTexture(4, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kFoamFormat);
+        glBindImageTexture(SWELL_IMAGE_SPECTRAL_FOAM, foam_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kFoamFormat);
         // Writes every texel of each level's window (the base level).
         beginStage("foam");
         dispatch(kFoamSize / kTile, kFoamSize / kTile, kFoamLevels, texelBytes(kFoamFormat) * kTile * kTile);
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         endStage("foam");
         foamMipmapsStale_ = foamMipmapsStale_ || mipmaps;
-        glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, kFoamFormat);
+        glBindImageTexture(SWELL_IMAGE_SPECTRAL_FOAM, 0, 0, GL_FALSE, 0, GL_READ_ONLY, kFoamFormat);
         glUseProgram(0);
         previousOrigin_ = origin;
         foamStepped_ = true;
@@ -444,11 +419,13 @@ private:
         for (int c = 0; c < kCascades; ++c)
             patches[c] = float(field_->cascades[size_t(c)].patch_m);
         glUniform1fv(patchLocation_, kCascades, patches);
-        glBindImageTexture(0, initial_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kInitialFormat);
-        glBindImageTexture(1, omega_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kOmegaFormat);
-        glBindImageTexture(2, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kSpectrumFormat);
-        glBindImageTexture(3, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, kSpectrumFormat);
-        glBindImageTexture(4, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, kSlopeFormat);
+        glBindImageTexture(SWELL_IMAGE_SPECTRAL_INITIAL, initial_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kInitialFormat);
+        glBindImageTexture(SWELL_IMAGE_SPECTRAL_OMEGA, omega_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, kOmegaFormat);
+        glBindImageTexture(SWELL_IMAGE_SPECTRAL_DISPLACEMENT, displacement_.id(), 0, GL_TRUE, 0, GL_READ_WRITE,
+                           kSpectrumFormat);
+        glBindImageTexture(SWELL_IMAGE_SPECTRAL_DERIVATIVES, derivatives_.id(), 0, GL_TRUE, 0, GL_READ_WRITE,
+                           kSpectrumFormat);
+        glBindImageTexture(SWELL_IMAGE_SPECTRAL_SLOPES, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, kSlopeFormat);
         ++work_.transforms;
         // One workgroup per row (then column) of each cascade, writing the
         // line of both images (displacement, derivatives).
@@ -465,9 +442,9 @@ private:
         barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         endStage("fft columns");
         slopeMipmapsStale_ = slopeMipmapsStale_ || cascades == kCascades;
-        for (GLuint unit = 0; unit < 4; ++unit)
+        for (GLuint unit = SWELL_IMAGE_SPECTRAL_INITIAL; unit <= SWELL_IMAGE_SPECTRAL_DERIVATIVES; ++unit)
             glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, kSlopeFormat);
+        glBindImageTexture(SWELL_IMAGE_SPECTRAL_SLOPES, 0, 0, GL_FALSE, 0, GL_READ_ONLY, kSlopeFormat);
         glUseProgram(0);
         transformed_ = true;
         time_s_ = time_s;

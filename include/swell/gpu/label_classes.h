@@ -1,0 +1,21 @@
+// The label pass's classes (swell/labels.h, shaders/labels.glsl), shared
+// by C++ and GLSL alike, so this file holds only preprocessor lines and
+// comments.
+#ifndef SWELL_GPU_LABEL_CLASSES_H
+#define SWELL_GPU_LABEL_CLASSES_H
+
+// The label pass (swell/labels.h, shaders/labels.glsl; prepended as
+// SWELL_LABEL_PASS 1 in its programs): each pixel's semantic class. The
+// classes of scene objects follow from SWELL_LABEL_FIRST_OBJECT_CLASS on,
+// one per distinct class name in the scene (FrameLabels::classes).
+#define SWELL_LABEL_NONE 0
+#define SWELL_LABEL_SKY 1
+#define SWELL_LABEL_WATER 2
+#define SWELL_LABEL_WHITECAP_FOAM 3
+#define SWELL_LABEL_WAKE_FOAM 4
+#define SWELL_LABEL_TERRAIN 5
+#define SWELL_LABEL_FIRST_OBJECT_CLASS 16
+// A water pixel is labelled foam where foam covers at least this share of it.
+#define SWELL_LABEL_FOAM_COVER 0.5
+
+#endif
