@@ -10,6 +10,7 @@
 
 #include "swell/export.h"
 #include "swell/grid.h"
+#include "swell/sea_frame.h"
 #include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>
@@ -34,10 +35,11 @@ public:
     // (relative to the water's mean level, m: the sea's frame) at time_s:
     // the waves with the heights of the sources as this frame draws them
     // (a swell::ComposedSurface, swell/composed_surface.h). Answers in the
-    // world's frame: with the mean level level_m (Scene::sea.level_m) added
-    // to every height. Shares ownership of `surface` (not null).
+    // world's frame `sea` gives (seaFrameOf(scene): the mean level added to
+    // every height; the default answers in the sea's own). Shares ownership
+    // of `surface` (not null).
     DrawnSurface(std::shared_ptr<const SurfaceQuery> surface, const GridShape& shape, const HorizonFade& fade,
-                 glm::dvec3 eye_m, double time_s, double level_m = 0.0);
+                 glm::dvec3 eye_m, double time_s, SeaFrame sea = {});
 
     // The drawn water under world point (x, z). Empty only where no triangle
     // covers the point, which happens nowhere on the unbounded grid except
@@ -57,7 +59,7 @@ private:
     GridPlacement placement_;
     glm::dvec3 eye_m_;
     double time_s_;
-    double level_m_ = 0.0;
+    SeaFrame sea_;
 };
 
 } // namespace swell

@@ -238,8 +238,9 @@ public:
         finiteTime(time_s);
         use();
         const SurfaceQuery& model = renderer_->waveModel();
-        const double level_m = renderer_->scene().sea.level_m;
-        return mapXZ(x_m, z_m, [&](double x, double z) { return level_m + model.heightAt({x, z}, time_s); });
+        const SeaFrame sea = seaFrameOf(renderer_->scene());
+        return mapXZ(x_m, z_m,
+                     [&](double x, double z) { return sea.heightInWorld(model.heightAt({x, z}, time_s)); });
     }
 
     PyDrawnSurface drawnSurface(py::object self, py::handle viewpoint)

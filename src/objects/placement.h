@@ -6,7 +6,7 @@
 #pragma once
 
 #include "assets/scene_assets.h"
-#include "core/probed_point.h"
+#include "ocean/probed_point.h"
 #include "objects/scene_bodies.h"
 #include "swell/scene.h"
 #include "swell/surface_query.h"

@@ -251,7 +251,7 @@ DrawnSurface Simulation::drawnSurfaceAt(glm::dvec3 viewpointSea, double time_s,
     return DrawnSurface(std::make_shared<const ComposedSurface>(overrideModel_ ? overrideModel_ : sceneModel_,
                                                                 std::move(drawn)),
                         gridShape_, horizonFadeFor(seaScene_.grid, gridShape_), viewpointSea, time_s,
-                        seaFrame ? 0.0 : sea_.level_m());
+                        seaFrame ? SeaFrame() : sea_);
 }
 
 DrawnSurface Simulation::drawnSurface(glm::dvec3 eyeWorld, double time_s, const SceneShapes& shapes) const

@@ -1,6 +1,6 @@
 #include "render/surface_probe.h"
 
-#include "core/drawn_search.h"
+#include "ocean/drawn_search.h"
 #include "swell/gpu/bindings.h"
 
 #include <epoxy/gl.h>

@@ -9,13 +9,13 @@
 // (the fixed-point iteration of swell::SurfaceQuery::restPointUnder) with the
 // surface there, and the drawn grid's vertices round the cell over that rest
 // point; the CPU picks the triangle under the point from those vertices with
-// DrawnSurface's own search (core/drawn_search.h). Where the triangle lies
+// DrawnSurface's own search (ocean/drawn_search.h). Where the triangle lies
 // beyond the block (a point the filtered waves carry more than two cells
 // away), that query alone is answered by the CPU's DrawnSurface.
 // Library-internal.
 #pragma once
 
-#include "core/probed_point.h"
+#include "ocean/probed_point.h"
 #include "swell/drawn_surface.h"
 #include "swell/gl/handle.h"
 #include "swell/grid.h"

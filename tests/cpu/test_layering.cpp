@@ -3,7 +3,7 @@
 // and held to the layers, lowest first:
 //
 //   include/swell   the public API: below everything, includes only itself
-//   core            CPU: grid math, untrusted files, the drawn surface
+//   core            CPU: grid math, untrusted files
 //   gl              GL objects, contexts, programs
 //   scene           scene files
 //   assets          models, images, a scene's assets and body shapes

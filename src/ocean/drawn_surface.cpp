@@ -1,6 +1,6 @@
 #include "swell/drawn_surface.h"
 
-#include "core/drawn_search.h"
+#include "ocean/drawn_search.h"
 #include "swell/error.h"
 
 #include <glm/common.hpp>
@@ -113,9 +113,9 @@ std::optional<DrawnPoint> searchDrawnCells(const GridShape& shape, glm::ivec2 st
 } // namespace detail
 
 DrawnSurface::DrawnSurface(std::shared_ptr<const SurfaceQuery> surface, const GridShape& shape, const HorizonFade& fade,
-                           glm::dvec3 eye_m, double time_s, double level_m)
+                           glm::dvec3 eye_m, double time_s, SeaFrame sea)
     : surface_(std::move(surface)), shape_(shape), fade_(fade), placement_(placeGrid(shape, eye_m)), eye_m_(eye_m),
-      time_s_(time_s), level_m_(level_m)
+      time_s_(time_s), sea_(sea)
 {
     if (!surface_)
         throw Error("DrawnSurface: no surface (null)");
@@ -131,7 +131,7 @@ glm::dvec3 DrawnSurface::vertex(int i, int j) const
     const double distance_m = glm::length(rest - glm::dvec2(eye_m_.x, eye_m_.z));
     const glm::dvec3 d =
         surface_->displacementAt(rest, time_s_, SurfaceFilter{point.cellSize_m, horizonFadeAt(fade_, distance_m)});
-    return glm::dvec3(rest.x, level_m_, rest.y) + d;
+    return sea_.toWorld(glm::dvec3(rest.x, 0.0, rest.y) + d);
 }
 
 std::optional<DrawnPoint> DrawnSurface::at(glm::dvec2 p) const
