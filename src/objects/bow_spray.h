@@ -6,7 +6,7 @@
 #pragma once
 
 #include "swell/floating_body.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/spray.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

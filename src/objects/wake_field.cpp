@@ -3,7 +3,7 @@
 
 #include "objects/wake_frame.h"
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/ocean.h"
 
 #include <glm/common.hpp>
 #include <kiss_fftnd.h>

@@ -5,7 +5,7 @@
 #include "core/input_file.h"
 #include "swell/parameters.h"
 #include "swell/scene_file.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/limits.h"
 
 #include <fmt/format.h>
 

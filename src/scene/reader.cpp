@@ -4,7 +4,7 @@
 #include "scene/suggestions.h"
 #include "swell/parameters.h"
 #include "swell/scene_file.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/limits.h"
 
 #include <fmt/format.h>
 

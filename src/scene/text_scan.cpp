@@ -3,7 +3,7 @@
 
 #include "scene/places.h"
 #include "swell/scene_file.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/limits.h"
 
 #include <fmt/format.h>
 

@@ -11,7 +11,7 @@
 // far it is from the origin.
 #pragma once
 
-#include "swell/shader_constants.h"
+#include "swell/gpu/ocean.h"
 
 #include <glm/mat2x2.hpp>
 #include <glm/vec2.hpp>

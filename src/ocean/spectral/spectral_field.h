@@ -18,7 +18,7 @@
 #pragma once
 
 #include "ocean/spectral/spectral_warp.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/ocean.h"
 #include "swell/spectrum.h"
 
 #include <array>

@@ -9,7 +9,7 @@
 
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
-#include "swell/shader_constants.h"
+#include "swell/gpu/ocean.h"
 
 #include <glm/vec2.hpp>
 
