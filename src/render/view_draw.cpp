@@ -4,6 +4,7 @@
 
 #include "render/gl_state.h"
 #include "render/scene_world.h"
+#include "swell/gpu/bindings.h"
 
 namespace swell {
 
