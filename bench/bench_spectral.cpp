@@ -6,7 +6,7 @@
 // frame's fields exist.
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <benchmark/benchmark.h>
 

@@ -2,8 +2,8 @@
 // (displacement, normal, height under a world point), WaveSampler's fast
 // height queries (one at a time and in batches), and wave generation. Each runs for 16, 32 and 64 waves of a
 // generated set; queries cycle through points scattered over 1 km^2.
-#include "swell/spectrum.h"
-#include "swell/waves.h"
+#include "swell/scene/spectrum.h"
+#include "swell/scene/waves.h"
 
 #include <benchmark/benchmark.h>
 

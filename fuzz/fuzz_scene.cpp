@@ -1,4 +1,4 @@
-// libFuzzer target for the scene parser and validator (swell/scene_file.h).
+// libFuzzer target for the scene parser and validator (swell/scene/scene_file.h).
 // Each input is parsed as scene TOML with parseScene, as if it were the file
 // input.toml in a private temporary folder. InputError is the expected
 // outcome for bad input; a crash, a sanitizer report or any other exception
@@ -9,7 +9,7 @@
 // The folder holds model.gltf and model.glb (empty files: only their
 // existence is checked), so inputs can reach the object-path checks.
 #include "swell/error.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <cstdint>
 #include <cstdio>

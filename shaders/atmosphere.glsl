@@ -4,7 +4,7 @@
 // the C++ model builds: transmittance to the top of the atmosphere
 // (Bruneton 2017's parametrisation) and Hillaire's (2020, sec. 5.5)
 // multiple scattering with the air's order-2 part. Formulas and their
-// sources: swell/atmosphere.h and atmosphere.cpp. tests/golden/test_sky_physical.cpp
+// sources: swell/scene/atmosphere.h and atmosphere.cpp. tests/golden/test_sky_physical.cpp
 // checks that the baked sky agrees, tests/gl/test_atmosphere_gpu.cpp the
 // multiple-scattering look-ups point by point.
 #ifndef SWELL_ATMOSPHERE_GLSL

@@ -1,7 +1,7 @@
 // The cloud layer on the GPU: the twin of src/core/clouds.cpp (the same
 // steps in the same order; its shape in float on both sides), used only
 // where the physical sky is baked (sky_bake.frag). Formulas and sources:
-// swell/clouds.h and clouds.cpp; tests/gl/test_clouds.cpp checks the two
+// swell/scene/clouds.h and clouds.cpp; tests/gl/test_clouds.cpp checks the two
 // agree. Needs atmosphere.glsl (the air's transmittance).
 #ifndef SWELL_CLOUDS_GLSL
 #define SWELL_CLOUDS_GLSL

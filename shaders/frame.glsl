@@ -5,7 +5,7 @@
 #ifndef SWELL_FRAME_GLSL
 #define SWELL_FRAME_GLSL
 
-// 1 in the label pass's programs (swell/labels.h): fragments write labels
+// 1 in the label pass's programs (swell/dataset/labels.h): fragments write labels
 // (labels.glsl) in place of a colour.
 #ifndef SWELL_LABEL_PASS
 #define SWELL_LABEL_PASS 0

@@ -1,4 +1,4 @@
-// The label pass's outputs (swell/labels.h): in place of a colour, each
+// The label pass's outputs (swell/dataset/labels.h): in place of a colour, each
 // fragment writes the distance from the eye along its ray, m, and its unit
 // world normal (attachment 0, 32-bit float), and its semantic class and
 // instance (attachment 1, 16-bit unsigned integers: never filtered or

@@ -9,9 +9,9 @@
 
 #include "swell/error.h"
 #include "swell/gl/context.h"
-#include "swell/parameters.h"
 #include "swell/renderer.h"
-#include "swell/scene.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>

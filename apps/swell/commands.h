@@ -3,7 +3,7 @@
 // main() turns into kExitBadInput and kExitFailure with one message format.
 #pragma once
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <filesystem>
 #include <optional>
@@ -36,7 +36,7 @@ struct RenderOptions {
 int runRender(const RenderOptions& options);
 
 struct DatasetOptions {
-    std::string sweepPath;       // the sweep file (swell/sweep.h)
+    std::string sweepPath;       // the sweep file (swell/dataset/sweep.h)
     std::string out;             // the dataset's folder
     std::string shard = "1/1";   // K/N: this run renders samples i with i % N == K - 1
     std::filesystem::path presets; // where a sweep's scene may be a preset's name

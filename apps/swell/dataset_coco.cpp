@@ -1,9 +1,9 @@
 #include "dataset_coco.h"
 
+#include "swell/dataset/labels.h"
+#include "swell/dataset/sweep.h"
 #include "swell/error.h"
 #include "swell/gpu/label_classes.h"
-#include "swell/labels.h"
-#include "swell/sweep.h"
 
 #include <fmt/format.h>
 

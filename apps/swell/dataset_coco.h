@@ -4,7 +4,7 @@
 
 #include "label_files.h"
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <filesystem>
 #include <string>

@@ -1,5 +1,5 @@
 // `swell dataset SWEEP --out DIR [--shard K/N]`: renders a sweep's samples
-// (swell/sweep.h) into DIR, each file written whole or not at all and each
+// (swell/dataset/sweep.h) into DIR, each file written whole or not at all and each
 // sample's JSON last, so a sample whose JSON exists is done: a run killed
 // at any point and started again renders each missing sample once and
 // nothing twice. DIR/manifest.json records the sweep; DIR/coco.json the
@@ -10,13 +10,13 @@
 #include "progress.h"
 #include "scene_loading.h"
 
-#include "swell/atomic_file.h"
+#include "swell/dataset/atomic_file.h"
+#include "swell/dataset/sensor.h"
+#include "swell/dataset/sweep.h"
 #include "swell/error.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
-#include "swell/sensor.h"
-#include "swell/sweep.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 
@@ -138,7 +138,7 @@ int runDataset(const DatasetOptions& options)
             todo.push_back(i);
     }
     // A run killed while writing leaves its temporary files (".NAME.*.tmp",
-    // swell/atomic_file.h): those of the samples this shard renders again
+    // swell/dataset/atomic_file.h): those of the samples this shard renders again
     // go (no other shard writes them).
     std::set<std::string> again;
     for (int i : todo)

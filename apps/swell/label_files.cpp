@@ -1,8 +1,8 @@
 #include "label_files.h"
 
-#include "swell/atomic_file.h"
+#include "swell/dataset/atomic_file.h"
 #include "swell/image.h"
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include "swell/error.h"
 #include "swell/gpu/label_classes.h"

@@ -1,4 +1,4 @@
-// `swell render --labels`: a frame's ground truth (swell/labels.h) written
+// `swell render --labels`: a frame's ground truth (swell/dataset/labels.h) written
 // beside its colour image NAME.png, each file whole or not at all:
 //   NAME.range.npy     float32 (H, W): metres along each pixel's ray; inf: sky
 //   NAME.normal.npy    float32 (H, W, 3): unit world normal; 0: sky
@@ -9,9 +9,9 @@
 // (docs/LABELS.md describes each field.)
 #pragma once
 
+#include "swell/dataset/labels.h"
 #include "swell/image.h"
-#include "swell/labels.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <nlohmann/json.hpp>
 

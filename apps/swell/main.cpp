@@ -6,8 +6,8 @@
 #include "scene_loading.h"
 
 #include "swell/error.h"
-#include "swell/parameters.h"
 #include "swell/renderer.h"
+#include "swell/scene/parameters.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>

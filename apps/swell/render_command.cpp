@@ -6,10 +6,10 @@
 #include "scene_loading.h"
 
 #include "swell/camera.h"
+#include "swell/dataset/sensor.h"
 #include "swell/error.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
-#include "swell/sensor.h"
 
 #include <fmt/format.h>
 
@@ -148,7 +148,7 @@ int runRender(const RenderOptions& options)
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
         const Camera camera = renderer.sceneCameraAt(t);
-        // Through the camera's lens and sensor (swell/sensor.h).
+        // Through the camera's lens and sensor (swell/dataset/sensor.h).
         const SensorFrame sensor = renderSensorFrame(renderer, camera, t, size, options.labels);
         // The bodies step towards the next frame while this one is written.
         if (i + 1 < frames)

@@ -1,7 +1,7 @@
 #include "scene_loading.h"
 
 #include "swell/error.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 // Loading the scene a command names, or the built-in default.
 #pragma once
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <filesystem>
 #include <string>

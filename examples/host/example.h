@@ -14,7 +14,7 @@
 #include "harbour.h"
 
 #include <swell/renderer.h>
-#include <swell/scene.h>
+#include <swell/scene/scene.h>
 
 #include <memory>
 

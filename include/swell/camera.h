@@ -4,7 +4,7 @@
 
 #include "swell/export.h"
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

@@ -25,7 +25,7 @@ inline constexpr double kWaterIor = 1.333;
 // the floor.
 inline constexpr double kSunAngularDiameter_rad = 0.00925;
 
-// The air (the physical sky: swell/atmosphere.h, src/core/atmosphere.cpp
+// The air (the physical sky: swell/scene/atmosphere.h, src/core/atmosphere.cpp
 // and shaders/atmosphere.glsl; docs/RENDERING.md). Coefficients for the
 // three wavelengths drawn as red, green and blue: 680, 550 and 440 nm
 // (Bruneton 2017's RGB wavelengths).

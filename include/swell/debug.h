@@ -8,7 +8,7 @@
 
 #include "swell/camera.h"
 #include "swell/renderer.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/vec2.hpp>
 

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "swell/export.h"
-#include "swell/grid.h"
+#include "swell/scene/grid.h"
 #include "swell/sea_frame.h"
 #include "swell/surface_query.h"
 

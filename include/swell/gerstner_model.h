@@ -1,4 +1,4 @@
-// The Gerstner sum (swell/waves.h) as a surface and as a wave model: CPU
+// The Gerstner sum (swell/scene/waves.h) as a surface and as a wave model: CPU
 // queries in double (GerstnerSurface, all the CPU needs), and on the GPU a
 // uniform block of up to SWELL_MAX_WAVES waves summed by
 // shaders/ocean/gerstner.glsl (GerstnerModel, which the renderer draws).
@@ -6,9 +6,9 @@
 
 #include "swell/export.h"
 
+#include "swell/scene/waves.h"
 #include "swell/surface_query.h"
 #include "swell/wave_model.h"
-#include "swell/waves.h"
 
 namespace swell {
 

@@ -18,15 +18,15 @@
 #include "swell/export.h"
 
 #include "swell/camera.h"
+#include "swell/dataset/labels.h"
 #include "swell/drawn_surface.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/gpu/limits.h"
 #include "swell/gpu/temporal.h"
 #include "swell/gpu/variants.h"
 #include "swell/image.h"
-#include "swell/labels.h"
 #include "swell/pass_observer.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/surface_source.h"
 #include "swell/view.h"
 #include "swell/wave_model.h"
@@ -60,7 +60,7 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     // Switches to another scene; rebuilds only what its changes require, as
-    // the parameter table declares (swell/scene_changes.h). On failure it
+    // the parameter table declares (swell/scene/scene_changes.h). On failure it
     // throws swell::InputError and keeps the scene it had.
     void setScene(const Scene& scene);
     const Scene& scene() const;
@@ -176,7 +176,7 @@ public:
     Image renderImage(const Camera& camera, double time_s, glm::ivec2 size);
 
     // The ground truth of the frame render() draws for this camera at the
-    // simulated time (swell/labels.h, docs/LABELS.md): per pixel range,
+    // simulated time (swell/dataset/labels.h, docs/LABELS.md): per pixel range,
     // normal, class and instance, aligned with the colour image of `size`
     // pixels (at any render scale or antialiasing), each object's boxes,
     // the camera's calibration and the horizon. Throws swell::Error before

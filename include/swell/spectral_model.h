@@ -1,4 +1,4 @@
-// The spectral ocean: the sea's wave-number spectrum (swell/spectrum.h)
+// The spectral ocean: the sea's wave-number spectrum (swell/scene/spectrum.h)
 // sampled on SWELL_FFT_CASCADES periodic patches of incommensurate sizes,
 // evolved with the dispersion relation and inverse transformed each frame,
 // on the GPU with compute shaders and, for CPU queries of the same frame,
@@ -8,7 +8,7 @@
 
 #include "swell/export.h"
 
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 #include "swell/surface_query.h"
 #include "swell/wave_model.h"
 

@@ -6,7 +6,7 @@
 #include "convert.h"
 
 #include "swell/camera.h"
-#include "swell/parameters.h"
+#include "swell/scene/parameters.h"
 
 
 namespace swell::python {

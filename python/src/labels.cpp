@@ -1,4 +1,4 @@
-// Labels (swell/labels.h, docs/LABELS.md): the per-pixel range, normal,
+// Labels (swell/dataset/labels.h, docs/LABELS.md): the per-pixel range, normal,
 // class and instance as NumPy arrays, each object's class and boxes, the
 // camera's calibration and the horizon; the calibration and the horizon of
 // any camera computed on the CPU too.

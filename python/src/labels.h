@@ -3,7 +3,7 @@
 // gives it.
 #pragma once
 
-#include "swell/labels.h"
+#include "swell/dataset/labels.h"
 
 #include <pybind11/numpy.h>
 

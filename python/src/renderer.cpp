@@ -15,12 +15,12 @@
 #include "labels.h"
 #include "scene.h"
 
+#include "swell/dataset/sensor.h"
 #include "swell/error.h"
 #include "swell/flat_model.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
-#include "swell/sensor.h"
+#include "swell/scene/scene_file.h"
 
 #include <pybind11/stl.h>
 
@@ -180,7 +180,7 @@ public:
         return toPython(std::move(labels));
     }
 
-    // The frame through the scene camera's lens and sensor (swell/sensor.h).
+    // The frame through the scene camera's lens and sensor (swell/dataset/sensor.h).
     py::tuple renderSensor(const Camera& camera, double time_s, py::handle size, bool labels)
     {
         const glm::ivec2 s = imageSize(size);

@@ -1,5 +1,5 @@
 // Scenes: loading (a file, TOML text, the default), every value read and
-// written through the parameter table (swell/parameters.h), keyed as scene
+// written through the parameter table (swell/scene/parameters.h), keyed as scene
 // files and error messages write them ("fog.start_m", "objects[1].scale"),
 // checked against the table's range on the way in; objects added and
 // removed; the checks a renderer relies on; saving.
@@ -8,8 +8,8 @@
 #include "scene.h"
 
 #include "swell/camera.h"
-#include "swell/parameters.h"
-#include "swell/scene_file.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene_file.h"
 
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>

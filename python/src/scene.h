@@ -2,7 +2,7 @@
 // so that the checks made before rendering name that file.
 #pragma once
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <filesystem>
 #include <string>

@@ -5,7 +5,7 @@
 
 #include "assets/mesh_data.h"
 #include "swell/image.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <memory>
 #include <vector>

@@ -1,4 +1,4 @@
-// The physical sky's model in double precision (swell/atmosphere.h). The
+// The physical sky's model in double precision (swell/scene/atmosphere.h). The
 // GPU's twin, used for the baked sky, is shaders/atmosphere.glsl: the same
 // steps in the same order, reading the two tables built here.
 //
@@ -6,7 +6,7 @@
 // air ends at kAtmosphereTopRadius_m; a point is given by its radius r
 // and a direction by the cosine mu of its angle to the point's zenith
 // (Bruneton & Neyret 2008, sec. 4).
-#include "swell/atmosphere.h"
+#include "swell/scene/atmosphere.h"
 
 #include "swell/constants.h"
 #include "swell/gpu/sky.h"

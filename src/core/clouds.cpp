@@ -1,11 +1,11 @@
-// The cloud layer's shape and light (swell/clouds.h). The shape functions
+// The cloud layer's shape and light (swell/scene/clouds.h). The shape functions
 // are float, written step for step as shaders/clouds.glsl writes them; the
 // GPU bakes the layer with those and the C++ twin is what tests compare.
-#include "swell/clouds.h"
+#include "swell/scene/clouds.h"
 
-#include "swell/atmosphere.h"
 #include "swell/constants.h"
 #include "swell/gpu/sky.h"
+#include "swell/scene/atmosphere.h"
 
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>

@@ -1,4 +1,4 @@
-#include "swell/grid.h"
+#include "swell/scene/grid.h"
 #include "swell/gpu/limits.h"
 
 #include <glm/common.hpp>

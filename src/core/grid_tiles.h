@@ -4,8 +4,8 @@
 // a tile is culled only when all of its bounds lie outside one frustum plane.
 #pragma once
 
-#include "swell/grid.h"
-#include "swell/waves.h"
+#include "swell/scene/grid.h"
+#include "swell/scene/waves.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

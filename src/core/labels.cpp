@@ -1,9 +1,9 @@
-// The CPU side of a frame's ground truth (swell/labels.h): the camera's
+// The CPU side of a frame's ground truth (swell/dataset/labels.h): the camera's
 // calibration, projection, the horizon line, object classes and boxes.
-#include "swell/labels.h"
+#include "swell/dataset/labels.h"
 
+#include "swell/dataset/sensor.h"
 #include "swell/gpu/label_classes.h"
-#include "swell/sensor.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

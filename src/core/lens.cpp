@@ -1,5 +1,5 @@
-// Brown-Conrady lens distortion (swell/sensor.h).
-#include "swell/sensor.h"
+// Brown-Conrady lens distortion (swell/dataset/sensor.h).
+#include "swell/dataset/sensor.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,9 +5,9 @@
 // Internal to the table.
 #pragma once
 
-#include "swell/parameters.h"
-#include "swell/scene.h"
-#include "swell/sun_position.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene.h"
+#include "swell/scene/sun_position.h"
 
 #include <cstddef>
 #include <cstdint>

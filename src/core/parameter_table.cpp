@@ -1,14 +1,14 @@
-// The scene parameter table (swell/parameters.h): every parameter, where its
+// The scene parameter table (swell/scene/parameters.h): every parameter, where its
 // value lives in Scene (a small generic lambda that Field<> turns into the
 // get/set pair), its unit, range, default and what a change to it costs.
 // The checks and formatting built on it are parameters.cpp.
-#include "swell/parameters.h"
+#include "swell/scene/parameters.h"
 
 #include "core/parameter_fields.h"
 
 #include "swell/gpu/limits.h"
 #include "swell/gpu/variants.h"
-#include "swell/sun_position.h"
+#include "swell/scene/sun_position.h"
 
 #include <fmt/format.h>
 
@@ -192,7 +192,7 @@ std::vector<Parameter> buildTable()
             .description = "towards the sun [x, y, z], world space (north -z, east +x); not with sun.time",
             .present = sunIsNotPlaced}),
         // The sun placed by the date, the time and the place instead
-        // (swell/sun_position.h, Michalsky 1988): each sets sun.direction.
+        // (swell/scene/sun_position.h, Michalsky 1988): each sets sun.direction.
         placing([](auto& s, std::size_t) -> auto& { return placeOf(s).time_s; },
                 {.key = "sun.time", .kind = K::DateTime, .min = kSolarPositionFirst_s, .max = kSolarPositionLast_s,
                  .sliderMin = 946684800.0, .sliderMax = 1893456000.0,

@@ -1,6 +1,6 @@
 // Checks and formatting built on the scene parameter table
-// (swell/parameters.h; the table itself is parameter_table.cpp).
-#include "swell/parameters.h"
+// (swell/scene/parameters.h; the table itself is parameter_table.cpp).
+#include "swell/scene/parameters.h"
 
 
 #include <fmt/format.h>

@@ -1,6 +1,6 @@
 // The built-in scene (the step from its waves to the wave set the renderer
 // sums, resolveWaves(), is the ocean's: ocean/scene_waves.cpp).
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 namespace swell {
 

@@ -1,6 +1,6 @@
 // sceneChanges(): walks the parameter table, so a parameter's declared effect
 // is the only thing that says what its change costs.
-#include "swell/scene_changes.h"
+#include "swell/scene/scene_changes.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // The sun's position from the date, the time and the place
-// (swell/sun_position.h): Michalsky (1988), the Astronomical Almanac's
+// (swell/scene/sun_position.h): Michalsky (1988), the Astronomical Almanac's
 // low-precision formulas for the sun, step by step as the paper lists them.
-#include "swell/sun_position.h"
+#include "swell/scene/sun_position.h"
 
 #include <algorithm>
 #include <cmath>

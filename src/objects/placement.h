@@ -6,9 +6,9 @@
 #pragma once
 
 #include "assets/scene_assets.h"
-#include "ocean/probed_point.h"
 #include "objects/scene_bodies.h"
-#include "swell/scene.h"
+#include "ocean/probed_point.h"
+#include "swell/scene/scene.h"
 #include "swell/surface_query.h"
 
 #include <glm/mat4x4.hpp>

@@ -4,8 +4,8 @@
 #include "core/worker.h"
 #include "swell/composed_surface.h"
 #include "swell/error.h"
-#include "swell/grid.h"
-#include "swell/parameters.h"
+#include "swell/scene/grid.h"
+#include "swell/scene/parameters.h"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>

@@ -14,7 +14,7 @@
 #include "objects/bow_spray.h"
 #include "objects/scene_wake.h"
 #include "swell/floating_body.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/mat4x4.hpp>
 

@@ -13,7 +13,7 @@
 
 #include "objects/wake_field.h"
 #include "objects/wake_frame.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/surface_source.h"
 
 #include <memory>

@@ -4,7 +4,7 @@
 // naming `function` ("swell::generateWaves()") and the field.
 #pragma once
 
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 namespace swell::detail {
 

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "swell/drawn_surface.h"
-#include "swell/grid.h"
+#include "swell/scene/grid.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -1,8 +1,8 @@
 // The step from a scene's sea and waves to the wave set the Gerstner model
-// sums (swell/scene.h): the listed waves, or those the wind raises
-// (swell/spectrum.h), in the sea's depth.
-#include "swell/scene.h"
-#include "swell/spectrum.h"
+// sums (swell/scene/scene.h): the listed waves, or those the wind raises
+// (swell/scene/spectrum.h), in the sea's depth.
+#include "swell/scene/scene.h"
+#include "swell/scene/spectrum.h"
 
 namespace swell {
 

@@ -1,6 +1,6 @@
 // SeaSpectrum: the wind sea and the swell as one directional spectrum, in
 // frequency and direction or over the wave-vector plane.
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <cmath>
 #include <numbers>

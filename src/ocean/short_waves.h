@@ -4,7 +4,7 @@
 // J. Geophys. Res. 102(C7), 15781-15796. Its short-wave part rises with the
 // wind's friction velocity, which JONSWAP's gravity range cannot do, and it
 // was built to give Cox & Munk's (1954) mean square slopes. Swell samples
-// the long waves from its own spectrum (swell/spectrum.h) and takes from
+// the long waves from its own spectrum (swell/scene/spectrum.h) and takes from
 // this one the slopes of the waves shorter than any it samples, for shading.
 #pragma once
 

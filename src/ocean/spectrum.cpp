@@ -2,7 +2,7 @@
 // parameters from the wind and fetch (growth laws, stopping at the fully
 // developed Pierson-Moskowitz sea), a swell's from its height and period, and
 // the dispersion relation both need.
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <algorithm>
 #include <cmath>

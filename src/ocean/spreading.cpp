@@ -1,7 +1,7 @@
 // Directional spreading D(theta; omega): how a component's energy at one
 // frequency is shared among directions. Each form is normalised in closed
 // form over the full circle, and numerically when it is cut narrower.
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <cmath>
 #include <numbers>

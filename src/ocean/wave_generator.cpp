@@ -3,7 +3,7 @@
 // band's energy, its direction drawn from the spreading at its frequency. The
 // random draws go through distributions written here so that a seed gives the
 // same waves with every standard library.
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <algorithm>
 #include <array>

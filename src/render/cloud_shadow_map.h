@@ -1,6 +1,6 @@
 // The cloud layer's shadows (shaders/cloud_shadow.glsl): the layer's
 // transmittance along the sun's ray from each point of the sea's mean
-// level, baked by the GPU from clouds.glsl (the twin of swell/clouds.h's
+// level, baked by the GPU from clouds.glsl (the twin of swell/scene/clouds.h's
 // cloudShadowTransmittance) into an R32F map that follows the camera,
 // snapped to its texels (a re-bake puts every texel's value back where it
 // was, so nothing jumps as the camera goes on), and mipmapped, so a pixel
@@ -12,9 +12,9 @@
 #pragma once
 
 #include "render/gpu/blocks.h"
-#include "swell/clouds.h"
 #include "swell/gl/handle.h"
 #include "swell/gpu/sky.h"
+#include "swell/scene/clouds.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -33,7 +33,7 @@ FrameUniforms frameUniforms(const Scene& scene, const SkyLight& sky, const GridS
     if (scene.fog.model == FogModel::Atmosphere) {
         f.fogFromSky = 1;
         // The air's extinction where the eye is (Rayleigh, aerosols and
-        // ozone; swell/atmosphere.h), constant along a near-level ray.
+        // ozone; swell/scene/atmosphere.h), constant along a near-level ray.
         if (usesPhysicalSky(scene))
             f.fogExtinction_per_m =
                 glm::vec3(atmosphereAt(SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M, scene.sky.atmosphere).extinction);

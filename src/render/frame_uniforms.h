@@ -6,8 +6,8 @@
 #include "render/gpu/blocks.h"
 #include "render/sky_light.h"
 #include "swell/camera.h"
-#include "swell/grid.h"
-#include "swell/scene.h"
+#include "swell/scene/grid.h"
+#include "swell/scene/scene.h"
 
 #include <glm/mat4x4.hpp>
 

@@ -1,4 +1,4 @@
-// The label pass (swell/labels.h, docs/LABELS.md): the frame's geometry
+// The label pass (swell/dataset/labels.h, docs/LABELS.md): the frame's geometry
 // drawn once more, at the output's size with one sample per pixel, by
 // programs that write each pixel's range, normal, class and instance
 // (shaders/labels.glsl) instead of a colour. Same view setup, grid, culling
@@ -10,7 +10,7 @@
 #include "render/programs.h"
 #include "render/waterline.h"
 #include "swell/camera.h"
-#include "swell/labels.h"
+#include "swell/dataset/labels.h"
 #include "swell/view.h"
 
 #include <optional>

@@ -1,4 +1,4 @@
-// The label pass's target (swell/labels.h): range and normal in 32-bit
+// The label pass's target (swell/dataset/labels.h): range and normal in 32-bit
 // floats, class and instance in 16-bit unsigned integers, and depth; one
 // sample per pixel, so no label is ever a blend of two.
 #pragma once

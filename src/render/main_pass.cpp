@@ -5,8 +5,8 @@
 
 #include "render/scene_world.h"
 #include "render/spray_renderer.h"
-#include "swell/scene.h"
 #include "swell/gpu/bindings.h"
+#include "swell/scene/scene.h"
 
 #include <glm/matrix.hpp>
 

@@ -7,7 +7,7 @@
 // cannot forget a define a shader reads.
 #pragma once
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <string>
 #include <vector>
@@ -61,7 +61,7 @@ struct WaterFlags {
     DebugView debugView = DebugView::Shaded;             // SWELL_DEBUG_VIEW
     ReflectionMode reflection = ReflectionMode::RayMarch; // SWELL_REFLECTION_MODE
     unsigned omittedTerms = 0; // SWELL_OMITTED_TERMS: SWELL_TERM_* bits (the benchmark's; RendererOptions)
-    bool labelPass = false;    // SWELL_LABEL_PASS: writes labels (swell/labels.h), not a colour
+    bool labelPass = false;    // SWELL_LABEL_PASS: writes labels (swell/dataset/labels.h), not a colour
     bool operator==(const WaterFlags&) const = default;
     std::vector<std::string> defines() const;
 };

@@ -9,7 +9,7 @@
 #include "render/shader_programs.h"
 #include "render/temporal_resolve.h"
 #include "swell/gl/shader.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/wave_model_gpu.h"
 
 #include <optional>
@@ -91,7 +91,7 @@ Programs buildChangedPrograms(gl::ShaderSources& sources, const Programs& curren
 // programs of `current` whose flags did not change. Cannot fail.
 void keepUnchangedPrograms(Programs& next, Programs& current) noexcept;
 
-// The label pass's programs (swell/labels.h): water, sky and meshes built
+// The label pass's programs (swell/dataset/labels.h): water, sky and meshes built
 // with SWELL_LABEL_PASS 1, writing each pixel's range, normal, class and
 // instance (shaders/labels.glsl) instead of a colour, for the flags of the
 // colour programs. Built when labels are first asked for, not with every

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "swell/gl/handle.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/vec2.hpp>
 

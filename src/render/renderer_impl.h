@@ -19,7 +19,7 @@
 #include "render/view_passes.h"
 #include "render/view_state.h"
 #include "swell/renderer.h"
-#include "swell/scene_changes.h"
+#include "swell/scene/scene_changes.h"
 
 #include <memory>
 #include <vector>

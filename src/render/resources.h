@@ -13,7 +13,7 @@
 #include "render/world.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader_sources.h"
-#include "swell/grid.h"
+#include "swell/scene/grid.h"
 
 #include <array>
 

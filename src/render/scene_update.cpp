@@ -1,6 +1,6 @@
 // What a scene change rebuilds (Renderer::Impl::apply): the wave model's
 // GPU half when the model changed, the programs whose own flags changed,
-// the world when a parameter of its says so (swell/scene_changes.h), the
+// the world when a parameter of its says so (swell/scene/scene_changes.h), the
 // floating bodies when what moves them changed, the grid when its settings
 // did. Everything that can fail is built first (prepare); the renderer
 // changes only when all of it did (commit).

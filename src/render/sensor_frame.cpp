@@ -1,5 +1,5 @@
-// A frame through the scene camera's lens and sensor (swell/sensor.h).
-#include "swell/sensor.h"
+// A frame through the scene camera's lens and sensor (swell/dataset/sensor.h).
+#include "swell/dataset/sensor.h"
 
 #include "core/counter_random.h"
 #include "swell/error.h"

@@ -9,7 +9,7 @@
 #include "render/program_flags.h"
 #include "swell/gl/shader.h"
 #include "swell/gpu/spray.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -134,7 +134,7 @@ public:
     // Object to render-origin-relative world transform, m.
     void setModel(const glm::mat4& model) const;
     // The label pass's program only (nothing elsewhere): the semantic class
-    // and instance the next draws write (swell/labels.h).
+    // and instance the next draws write (swell/dataset/labels.h).
     void setLabel(glm::uvec2 classAndInstance) const;
 
 private:

@@ -16,7 +16,7 @@
 #include "render/wake_texture.h"
 #include "swell/camera.h"
 #include "swell/drawn_surface.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/sea_frame.h"
 #include "swell/surface_source.h"
 #include "swell/wave_model.h"

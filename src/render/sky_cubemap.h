@@ -5,9 +5,9 @@
 #pragma once
 
 #include "render/programs.h"
-#include "swell/atmosphere.h"
 #include "swell/gl/handle.h"
-#include "swell/scene.h"
+#include "swell/scene/atmosphere.h"
+#include "swell/scene/scene.h"
 
 namespace swell::detail {
 

@@ -46,7 +46,7 @@ SkyLight skyLightOf(const Scene& scene, const Atmosphere* atmosphere)
     // surfaces show exposure a E / pi: the sun's E is its transmittance
     // times the cosine (mesh.frag's phongDiffuse), the sky's the expansion.
     // The cloud layer shades the sun's direct light by its transmittance
-    // along the sun from the observer (swell/clouds.h): the sea and the
+    // along the sun from the observer (swell/scene/clouds.h): the sea and the
     // objects lie in the shadow the sky shows over them.
     const CloudSettings& clouds = scene.sky.clouds;
     const double cloudSun = cloudTransmittance(clouds, glm::vec3(sun));

@@ -2,12 +2,12 @@
 // the zenith and horizon colours a few water terms use, and world objects'
 // ambient light (order-2 spherical harmonics of the irradiance around a
 // normal). The gradient sky takes them from the scene as it always did; the
-// physical sky from its atmosphere (swell/atmosphere.h), once per change of
+// physical sky from its atmosphere (swell/scene/atmosphere.h), once per change of
 // sun or sky, not per frame.
 #pragma once
 
-#include "swell/atmosphere.h"
-#include "swell/scene.h"
+#include "swell/scene/atmosphere.h"
+#include "swell/scene/scene.h"
 
 #include <array>
 #include <memory>

@@ -11,8 +11,8 @@
 #include "render/programs.h"
 #include "render/sky_cubemap.h"
 #include "render/sky_light.h"
-#include "swell/atmosphere.h"
-#include "swell/scene.h"
+#include "swell/scene/atmosphere.h"
+#include "swell/scene/scene.h"
 
 #include <memory>
 #include <optional>

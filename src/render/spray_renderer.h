@@ -10,7 +10,7 @@
 
 #include "render/programs.h"
 #include "render/spray_buffers.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/view.h"
 #include "swell/wave_model_gpu.h"
 

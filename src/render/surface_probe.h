@@ -18,7 +18,7 @@
 #include "ocean/probed_point.h"
 #include "swell/drawn_surface.h"
 #include "swell/gl/handle.h"
-#include "swell/grid.h"
+#include "swell/scene/grid.h"
 #include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>

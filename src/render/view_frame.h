@@ -13,7 +13,7 @@
 #include "render/sky_system.h"
 #include "render/telemetry.h"
 #include "render/view_setup.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/view.h"
 
 #include <glm/mat4x4.hpp>

@@ -8,7 +8,7 @@
 #include "assets/scene_assets.h"
 #include "render/gpu/blocks.h"
 #include "render/mesh.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/surface_query.h"
 
 #include <glm/mat4x4.hpp>

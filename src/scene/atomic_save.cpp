@@ -1,7 +1,7 @@
-// Writing a file atomically (swell/atomic_file.h), and saving a scene file
-// with it (saveSceneFile in swell/scene_file.h).
-#include "swell/atomic_file.h"
-#include "swell/scene_file.h"
+// Writing a file atomically (swell/dataset/atomic_file.h), and saving a scene file
+// with it (saveSceneFile in swell/scene/scene_file.h).
+#include "swell/dataset/atomic_file.h"
+#include "swell/scene/scene_file.h"
 
 #include "scene/places.h"
 #include "swell/error.h"

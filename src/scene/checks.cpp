@@ -3,9 +3,9 @@
 
 #include "core/asset_path.h"
 #include "core/input_file.h"
-#include "swell/parameters.h"
-#include "swell/scene_file.h"
 #include "swell/gpu/limits.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "scene/places.h"
-#include "swell/parameters.h"
-#include "swell/scene.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene.h"
 
 #include <filesystem>
 

@@ -2,9 +2,9 @@
 #include "scene/reader.h"
 
 #include "scene/suggestions.h"
-#include "swell/parameters.h"
-#include "swell/scene_file.h"
 #include "swell/gpu/limits.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 

@@ -1,18 +1,18 @@
-// Scene files (swell/scene_file.h). Loading runs in four steps, each of which
+// Scene files (swell/scene/scene_file.h). Loading runs in four steps, each of which
 // throws InputError at the first problem it finds:
 //   1. size, text and structure: the text is small enough, is UTF-8 without
 //      NUL bytes, and its keys and nesting are shallow enough for the TOML
 //      parser's recursion;
 //   2. TOML syntax (toml++);
 //   3. reading: every key is known, every value has the right type and range
-//      (keys and ranges come from the parameter table, swell/parameters.h),
+//      (keys and ranges come from the parameter table, swell/scene/parameters.h),
 //      and the place of each key is remembered;
 //   4. checking the scene as a whole: cross-field rules, referenced files,
 //      the wave set. validateScene() runs this step alone.
 //
 // Step 1 is scene/text_scan.cpp, 3 scene/reader.cpp (with suggestions.cpp),
 // 4 scene/checks.cpp; saving is scene/writer.cpp and scene/atomic_save.cpp.
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include "core/input_file.h"
 #include "scene/checks.h"
@@ -20,7 +20,7 @@
 #include "scene/reader.h"
 #include "scene/toml_text.h"
 #include "swell/error.h"
-#include "swell/scene_changes.h"
+#include "swell/scene/scene_changes.h"
 
 #include <fmt/format.h>
 

@@ -1,14 +1,14 @@
-// Sweep files (swell/sweep.h): read with the scene files' TOML steps
+// Sweep files (swell/dataset/sweep.h): read with the scene files' TOML steps
 // (scene/toml_text.h), their keys resolved in the parameter table, and each
 // sample drawn from per-key random streams.
-#include "swell/sweep.h"
+#include "swell/dataset/sweep.h"
 
 #include "core/counter_random.h"
 #include "core/input_file.h"
 #include "scene/places.h"
 #include "scene/suggestions.h"
 #include "scene/toml_text.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>

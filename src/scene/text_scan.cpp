@@ -2,8 +2,8 @@
 #include "scene/text_scan.h"
 
 #include "scene/places.h"
-#include "swell/scene_file.h"
 #include "swell/gpu/limits.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 

@@ -10,7 +10,7 @@
 namespace swell::detail::scenefile {
 
 // Checks that `text` is UTF-8 without NUL bytes, and that its keys, headers,
-// nesting and arrays stay within the structural limits of swell/scene_file.h
+// nesting and arrays stay within the structural limits of swell/scene/scene_file.h
 // (the TOML parser's recursion and allocation follow them). Throws InputError
 // at `path`, line and column of the first problem; broken TOML syntax is left
 // for the parser.

@@ -1,9 +1,9 @@
-// Scenes as TOML text (saveScene in swell/scene_file.h), written by hand
+// Scenes as TOML text (saveScene in swell/scene/scene_file.h), written by hand
 // section by section so the file reads like the docs: one key per line with
 // its range in a comment.
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
-#include "swell/parameters.h"
+#include "swell/scene/parameters.h"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 // Published sky measurements and fits that tests check the physical sky
-// (swell/atmosphere.h) against, and the published way to turn its radiance
+// (swell/scene/atmosphere.h) against, and the published way to turn its radiance
 // at three wavelengths into luminance and chromaticity.
 #pragma once
 

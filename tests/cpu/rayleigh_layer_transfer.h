@@ -3,7 +3,7 @@
 // law and absorbs nothing, over a black ground, lit by the sun at the top.
 //
 // Why the tests need it: the published exact solutions (published_sky.h)
-// solve the polarised equation of transfer, and the model (swell/atmosphere.h)
+// solve the polarised equation of transfer, and the model (swell/scene/atmosphere.h)
 // is scalar, like every real-time sky. For the same Rayleigh layer the two
 // differ by up to about 10% at a low sun (Mishchenko, Lacis & Travis 1994,
 // JQSRT 51, 491). This solver does both: polarised, it must reproduce the

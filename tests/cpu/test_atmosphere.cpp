@@ -1,9 +1,9 @@
-// The physical sky's model (swell/atmosphere.h): its numerics (the tables
+// The physical sky's model (swell/scene/atmosphere.h): its numerics (the tables
 // against direct integration, the ray march's steps, the spherical
 // harmonics against the irradiance integral), what it must do to light (the
 // sun reddens and dims towards the horizon; at sunset the sky away from the
 // sun is dim and bluish, issue 28 item 11), and published reference values.
-#include "swell/atmosphere.h"
+#include "swell/scene/atmosphere.h"
 
 #include "published_sky.h"
 #include "rayleigh_layer_transfer.h"

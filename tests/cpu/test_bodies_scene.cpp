@@ -1,7 +1,7 @@
 // The scene keys of floating rigid bodies and dry hulls: read, written back,
 // and refused with the place and the key when they disagree.
 #include "swell/error.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

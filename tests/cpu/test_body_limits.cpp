@@ -6,7 +6,7 @@
 #include "assets/mesh_data.h"
 #include "objects/scene_bodies.h"
 #include "swell/error.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include "support/body_fixtures.h"
 

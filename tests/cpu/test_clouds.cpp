@@ -1,4 +1,4 @@
-// The cloud layer's model (swell/clouds.h): the statistics its cover rests
+// The cloud layer's model (swell/scene/clouds.h): the statistics its cover rests
 // on, that its share of cloud is the scene's cover, that an overcast deck is
 // whole yet textured (not a flat grey), that it has no cells (its
 // periodogram has no isolated peak), that cover 0 leaves the sky as it was,
@@ -6,9 +6,9 @@
 // shines towards the sun; a deck is grey where the clear sky is blue), and
 // where its shadow falls (the sun's ray from a point crosses the layer
 // where the geometry says, and is dimmed by the optical depth there).
-#include "swell/atmosphere.h"
-#include "swell/clouds.h"
+#include "swell/scene/atmosphere.h"
 #include "swell/gpu/sky.h"
+#include "swell/scene/clouds.h"
 
 #include <gtest/gtest.h>
 

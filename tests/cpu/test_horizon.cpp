@@ -1,10 +1,10 @@
-// The horizon of the labels (swell/labels.h): the true horizon's dip for an
+// The horizon of the labels (swell/dataset/labels.h): the true horizon's dip for an
 // eye above a round Earth against the navigators' table (Bowditch 2002,
 // The American Practical Navigator, table 22: the geometric dip is
 // 1.93 arc minutes times the square root of the height in metres), and the
 // true horizon's points in the image looking out at exactly that dip, on
 // the sea's side of the flat sea's line, for a rolled camera.
-#include "swell/labels.h"
+#include "swell/dataset/labels.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

@@ -10,7 +10,7 @@
 
 #include "swell/error.h"
 #include "swell/image.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

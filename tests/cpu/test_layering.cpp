@@ -16,7 +16,7 @@
 //
 // A file includes its own layer and the ones below it, never one above. A
 // public header whose functions one layer defines (the one source file named
-// like it: swell/scene_file.h and src/scene/scene_file.cpp) counts as that
+// like it: swell/scene/scene_file.h and src/scene/scene_file.cpp) counts as that
 // layer's for the files of src/ that include it; the others only declare
 // types and interfaces. Two rules more: the CPU half (core, scene, assets, objects, and ocean outside
 // its gpu/ folders: swell_core) includes none of the GL code (gl/, render/,

@@ -4,9 +4,9 @@
 // once forgot [wake]) fails here the day a parameter is added to it.
 #include "swell/camera.h"
 #include "swell/error.h"
-#include "swell/parameters.h"
-#include "swell/scene.h"
-#include "swell/scene_file.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 

@@ -4,9 +4,9 @@
 // names the key, and none of which may crash.
 #include "swell/error.h"
 #include "swell/gpu/limits.h"
-#include "swell/parameters.h"
-#include "swell/scene.h"
-#include "swell/scene_file.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 #include "support/expect_input_error.h"

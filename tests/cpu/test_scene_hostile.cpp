@@ -5,7 +5,7 @@
 // docs/TESTING.md.
 #include "swell/error.h"
 #include "swell/gpu/limits.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

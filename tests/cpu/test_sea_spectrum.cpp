@@ -4,7 +4,7 @@
 // Jacobian), the swell has its height, period and direction, and generated
 // directions follow the spreading.
 #include "swell/gpu/limits.h"
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -7,7 +7,7 @@
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
 #include "ocean/spectral/spectral_warp.h"
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "core/worker.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // laws (Pierson-Moskowitz for a fully developed sea, the JONSWAP growth laws
 // for a fetch-limited one) within 5%.
 #include "swell/gpu/limits.h"
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // table read, write back, reach the generated waves, and are refused with a
 // place and a reason when they make no sense.
 #include "swell/error.h"
-#include "swell/scene.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

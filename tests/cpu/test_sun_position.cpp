@@ -1,12 +1,12 @@
-// The sun placed by the date, the time and the place (swell/sun_position.h,
+// The sun placed by the date, the time and the place (swell/scene/sun_position.h,
 // Michalsky 1988) against published positions, the world's compass axes,
 // and sun.time, sun.latitude_deg and sun.longitude_deg in scene files: read,
 // written back, and refused with the key's place when wrong.
 #include "swell/camera.h"
 #include "swell/error.h"
-#include "swell/parameters.h"
-#include "swell/scene_file.h"
-#include "swell/sun_position.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene_file.h"
+#include "swell/scene/sun_position.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-// Sweeps (swell/sweep.h): a sample is its (sweep, index) alone, each key's
+// Sweeps (swell/dataset/sweep.h): a sample is its (sweep, index) alone, each key's
 // value drawn from its own stream (adding a key changes no other), within
 // its range (whole numbers reaching both ends), spread evenly over it; a
 // one_of picks each choice; the sun's angles set its direction.
-#include "swell/sweep.h"
+#include "swell/dataset/sweep.h"
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

@@ -3,7 +3,7 @@
 // an array whose closing ']' is missing (the parser only notices on the next
 // line, which it reads as more of the array).
 #include "swell/error.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // against the exact double evaluation.
 #include "support/param_names.h"
 #include "swell/gpu/limits.h"
-#include "swell/spectrum.h"
-#include "swell/waves.h"
+#include "swell/scene/spectrum.h"
+#include "swell/scene/waves.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

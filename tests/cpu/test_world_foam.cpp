@@ -5,7 +5,7 @@
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The physical sky's multiple-scattering lookups in GLSL (shaders/atmosphere.glsl)
-// against their C++ twins (swell/atmosphere.h), on the tables as the
+// against their C++ twins (swell/scene/atmosphere.h), on the tables as the
 // renderer uploads them (render/sky_cubemap.h): Psi_ms, and the air's
 // order-2 part that depends on the view's direction. The baked sky's test
 // (tests/golden/test_sky_physical.cpp) sees the order-2 part only through a
@@ -7,10 +7,10 @@
 #include "render/sky_cubemap.h"
 #include "support/gl_test.h"
 #include "support/shader_probe.h"
-#include "swell/atmosphere.h"
 #include "swell/constants.h"
 #include "swell/gl/handle.h"
 #include "swell/gpu/bindings.h"
+#include "swell/scene/atmosphere.h"
 
 #include <glm/vec4.hpp>
 

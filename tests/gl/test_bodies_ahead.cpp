@@ -6,7 +6,7 @@
 #include "support/gl_test.h"
 #include "swell/debug.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 // alone.
 #include "support/gl_test.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

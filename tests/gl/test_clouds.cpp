@@ -1,5 +1,5 @@
 // The cloud layer's GLSL twin (shaders/clouds.glsl) against the C++ model
-// (swell/clouds.h): the same optical depth and the same transmittance
+// (swell/scene/clouds.h): the same optical depth and the same transmittance
 // along every direction, the one that shades the sun in the frame; and the
 // frame's sunlight and ambient light under the layer (render/sky_light.h);
 // the layer's shadow map (render/cloud_shadow_map.h) and its look-up
@@ -11,12 +11,12 @@
 #include "render/sky_light.h"
 #include "support/gl_test.h"
 #include "support/shader_probe.h"
-#include "swell/clouds.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/gpu/bindings.h"
 #include "swell/gpu/sky.h"
+#include "swell/scene/clouds.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>

@@ -7,7 +7,7 @@
 // the wake's heights) against the same scene without a wake.
 #include "support/gl_test.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

@@ -9,10 +9,10 @@
 #include "swell/drawn_surface.h"
 #include "swell/error.h"
 #include "swell/flat_model.h"
-#include "swell/surface_source.h"
 #include "swell/gl/handle.h"
 #include "swell/renderer.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
+#include "swell/surface_source.h"
 
 #include <epoxy/gl.h>
 #include <glm/geometric.hpp>

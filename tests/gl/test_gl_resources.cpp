@@ -8,7 +8,7 @@
 #include "swell/debug.h"
 #include "swell/gl/handle.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <string>
 

@@ -6,10 +6,10 @@
 // The blocks' quadtree chooses the tiles a test of each tile alone would.
 // The bounds hold every vertex's place, on the CPU, without the waves.
 #include "core/grid_tiles.h"
-#include "support/gl_test.h"
 #include "render/water_grid.h"
-#include "swell/grid.h"
-#include "swell/scene.h"
+#include "support/gl_test.h"
+#include "swell/scene/grid.h"
+#include "swell/scene/scene.h"
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/geometric.hpp>

@@ -10,8 +10,8 @@
 // the next moves vertices by metres; a morph that slides them there over many
 // frames keeps each frame's change small.
 #include "support/gl_test.h"
-#include "swell/grid.h"
 #include "swell/renderer.h"
+#include "swell/scene/grid.h"
 #include "wave_capture.h"
 
 #include <glm/geometric.hpp>

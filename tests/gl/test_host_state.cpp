@@ -13,7 +13,7 @@
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <epoxy/gl.h>
 

@@ -11,7 +11,7 @@
 #include "swell/gl/shader.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <epoxy/gl.h>
 

@@ -1,4 +1,4 @@
-// The label pass (swell/labels.h) against geometry worked out on the CPU:
+// The label pass (swell/dataset/labels.h) against geometry worked out on the CPU:
 // on calm water every water pixel's range is the distance along its ray to
 // the sea's plane, and the sky meets the water on the horizon line, for a
 // camera low and high, rolled; an object's pixels carry its instance, their
@@ -8,12 +8,12 @@
 
 #include "assets/mesh_data.h"
 #include "support/open_sea.h"
+#include "swell/dataset/labels.h"
+#include "swell/dataset/sensor.h"
 #include "swell/flat_model.h"
 #include "swell/gpu/label_classes.h"
-#include "swell/labels.h"
 #include "swell/renderer.h"
-#include "swell/scene.h"
-#include "swell/sensor.h"
+#include "swell/scene/scene.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>

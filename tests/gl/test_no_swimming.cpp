@@ -3,8 +3,8 @@
 // move every vertex sits on a world-fixed lattice point of its LOD level.
 #include "support/gl_test.h"
 #include "support/param_names.h"
-#include "swell/grid.h"
 #include "swell/renderer.h"
+#include "swell/scene/grid.h"
 #include "wave_capture.h"
 
 #include <glm/geometric.hpp>

@@ -3,8 +3,8 @@
 // the field is identical) at 10^6 m and 10^6 s and compare the images.
 #include "support/gl_test.h"
 #include "support/golden.h"
-#include "swell/grid.h"
 #include "swell/renderer.h"
+#include "swell/scene/grid.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

@@ -9,7 +9,7 @@
 #include "render/surface_sources.h"
 #include "support/gl_test.h"
 #include "swell/renderer.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/surface_source.h"
 #include "swell/wave_model.h"
 

@@ -8,10 +8,10 @@
 #include "swell/error.h"
 #include "swell/flat_model.h"
 #include "swell/gl/handle.h"
-#include "swell/parameters.h"
 #include "swell/renderer.h"
-#include "swell/scene_changes.h"
-#include "swell/scene_file.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene_changes.h"
+#include "swell/scene/scene_file.h"
 
 #include <epoxy/gl.h>
 

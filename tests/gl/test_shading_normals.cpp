@@ -6,13 +6,13 @@
 // pixel footprints and grid footprints spread over what a frame draws.
 #include "support/gl_test.h"
 
-#include "swell/wave_model_gpu.h"
+#include "../cpu/published_sea_laws.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
+#include "swell/scene/waves.h"
 #include "swell/wave_model.h"
-#include "swell/waves.h"
-#include "../cpu/published_sea_laws.h"
+#include "swell/wave_model_gpu.h"
 
 #include <epoxy/gl.h>
 #include <glm/geometric.hpp>

@@ -17,8 +17,8 @@
 #include "swell/gl/shader_sources.h"
 #include "swell/gpu/bindings.h"
 #include "swell/gpu/ocean.h"
+#include "swell/scene/spectrum.h"
 #include "swell/spectral_model.h"
-#include "swell/spectrum.h"
 #include "swell/wave_model_gpu.h"
 
 #include <epoxy/gl.h>

@@ -5,7 +5,7 @@
 // before it.
 #include "support/gl_test.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "wave_capture.h"
 
 #include "swell/debug.h"
-#include "swell/grid.h"
+#include "swell/scene/grid.h"
 
 #include <epoxy/gl.h>
 #include <glm/geometric.hpp>

@@ -24,7 +24,7 @@ struct WaterVertex {
 // The GPU's vertices, made absolute with the render origin (camera x,z).
 std::vector<WaterVertex> captureGpu(Renderer& renderer, const Camera& camera, double time_s);
 
-// The same vertices from the CPU: grid lines from swell/grid.h, waves weighted
+// The same vertices from the CPU: grid lines from swell/scene/grid.h, waves weighted
 // by the horizon fade and the wavelength filter, displaced by swell::displacementAt.
 std::vector<WaterVertex> computeCpu(const Renderer& renderer, const Camera& camera, double time_s);
 

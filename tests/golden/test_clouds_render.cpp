@@ -12,10 +12,10 @@
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "support/stage.h"
-#include "swell/atmosphere.h"
-#include "swell/clouds.h"
 #include "swell/flat_model.h"
 #include "swell/renderer.h"
+#include "swell/scene/atmosphere.h"
+#include "swell/scene/clouds.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -35,7 +35,7 @@
 #include "support/golden.h"
 #include "swell/camera.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <kiss_fftnd.h>
 

@@ -18,9 +18,9 @@
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "swell/camera.h"
-#include "swell/parameters.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene_file.h"
 
 #include <glm/trigonometric.hpp>
 

@@ -6,10 +6,10 @@
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "support/stage.h"
-#include "swell/atmosphere.h"
 #include "swell/gpu/sky.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/atmosphere.h"
+#include "swell/scene/scene_file.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -6,9 +6,9 @@
 #include "support/golden.h"
 #include "support/stage.h"
 #include "swell/flat_model.h"
-#include "swell/grid.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/grid.h"
+#include "swell/scene/scene_file.h"
 #include "swell/wave_model.h"
 
 #include <glm/mat4x4.hpp>

@@ -7,7 +7,7 @@
 #include "support/golden.h"
 #include "swell/error.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <glm/common.hpp>
 

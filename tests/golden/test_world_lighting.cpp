@@ -10,7 +10,7 @@
 #include "swell/camera.h"
 #include "swell/flat_model.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <glm/trigonometric.hpp>
 

@@ -38,7 +38,7 @@
 #include "swell/error.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <epoxy/gl.h>
 

@@ -5,7 +5,7 @@
 #include "support/golden.h"
 #include "swell/camera.h"
 #include "swell/renderer.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <cmath>
 #include <cstdio>

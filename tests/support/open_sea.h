@@ -1,7 +1,7 @@
 // Scenes tests start from: the default scene's sea with nothing else in it.
 #pragma once
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 namespace swell::test {
 

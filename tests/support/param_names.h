@@ -5,8 +5,8 @@
 // struct's test name changed from build to build.
 #pragma once
 
-#include "swell/scene.h"
-#include "swell/waves.h"
+#include "swell/scene/scene.h"
+#include "swell/scene/waves.h"
 
 #include <ostream>
 #include <string>

@@ -4,7 +4,7 @@
 // (tests/golden/test_antialiasing.cpp checks the anti-aliasing).
 #pragma once
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 namespace swell::test {
 

@@ -1,7 +1,7 @@
 // The viewer's ImGui panel: frame times, the view (debug view, time, camera),
 // scene files, shader reload, and every scene parameter edited live. Slider
 // ranges, units and descriptions come from the parameter table
-// (swell/parameters.h), so nothing here repeats a range.
+// (swell/scene/parameters.h), so nothing here repeats a range.
 //
 // Every accepted edit reaches the renderer through Session::apply(), since
 // the renderer reads even per-frame values from its own copy of the scene.
@@ -14,8 +14,8 @@
 #include "viewer/session.h"
 
 #include "swell/debug.h"
-#include "swell/parameters.h"
 #include "swell/renderer.h"
+#include "swell/scene/parameters.h"
 
 #include <glm/vec2.hpp>
 

@@ -1,13 +1,13 @@
 // The panel's small parts, shared by its sections: coloured messages, the
 // names and sections the panel derives from parameter keys, and editValue(),
-// one widget for any parameter of the table (swell/parameters.h).
+// one widget for any parameter of the table (swell/scene/parameters.h).
 #pragma once
 
 #include "viewer/session.h"
 
 #include "swell/camera.h"
-#include "swell/parameters.h"
-#include "swell/scene.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene.h"
 
 #include <cstddef>
 #include <string>

@@ -3,7 +3,7 @@
 
 #include "swell/error.h"
 #include "swell/gl/shader.h"
-#include "swell/scene_file.h"
+#include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 

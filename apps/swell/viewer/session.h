@@ -5,7 +5,7 @@
 #pragma once
 
 #include "swell/renderer.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <filesystem>
 #include <memory>

@@ -45,7 +45,7 @@
 // (shaders/mip_blocks.comp), which builds two chains in the same dispatches.
 #define SWELL_UNIT_DOWNSAMPLE_SOURCE 14
 #define SWELL_UNIT_DOWNSAMPLE_SOURCE_B 17
-// The physical sky's tables (swell/atmosphere.h), read by its bake only.
+// The physical sky's tables (swell/scene/atmosphere.h), read by its bake only.
 #define SWELL_UNIT_SKY_TRANSMITTANCE 14
 #define SWELL_UNIT_SKY_MULTISCATTER 15
 // The caustics map (caustics.glsl).

@@ -1,10 +1,10 @@
-// The label pass's classes (swell/labels.h, shaders/labels.glsl), shared
+// The label pass's classes (swell/dataset/labels.h, shaders/labels.glsl), shared
 // by C++ and GLSL alike, so this file holds only preprocessor lines and
 // comments.
 #ifndef SWELL_GPU_LABEL_CLASSES_H
 #define SWELL_GPU_LABEL_CLASSES_H
 
-// The label pass (swell/labels.h, shaders/labels.glsl; prepended as
+// The label pass (swell/dataset/labels.h, shaders/labels.glsl; prepended as
 // SWELL_LABEL_PASS 1 in its programs): each pixel's semantic class. The
 // classes of scene objects follow from SWELL_LABEL_FIRST_OBJECT_CLASS on,
 // one per distinct class name in the scene (FrameLabels::classes).

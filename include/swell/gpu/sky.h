@@ -6,7 +6,7 @@
 #ifndef SWELL_GPU_SKY_H
 #define SWELL_GPU_SKY_H
 
-// The physical sky (swell/atmosphere.h, src/core/atmosphere.cpp and
+// The physical sky (swell/scene/atmosphere.h, src/core/atmosphere.cpp and
 // shaders/atmosphere.glsl share these; docs/RENDERING.md).
 // The eye's altitude for the baked sky, m: a deck's height (the sky hardly
 // changes over the first hundred metres).
@@ -21,11 +21,11 @@
 #define SWELL_TRANSMITTANCE_R_SIZE 64
 // Hillaire 2020's multiple-scattering table (sec. 5.5): (sun zenith
 // cosine, altitude), 32 x 32 as in the paper, in layers: Psi_ms, then the
-// three order-2 harmonics of the air's share (swell/atmosphere.h).
+// three order-2 harmonics of the air's share (swell/scene/atmosphere.h).
 #define SWELL_MULTISCATTER_SIZE 32
 #define SWELL_MULTISCATTER_LAYERS 4
 
-// The cloud layer (swell/clouds.h, src/core/clouds.cpp and shaders/clouds.glsl
+// The cloud layer (swell/scene/clouds.h, src/core/clouds.cpp and shaders/clouds.glsl
 // share these; docs/RENDERING.md, "Clouds"). A thin layer at an altitude,
 // baked into the physical sky's cubemap with it.
 // Octaves of gradient noise in its fractal sum: the coarsest cell is the

@@ -1,5 +1,5 @@
 // WaveSampler: many Gerstner height queries at one time, in float with
-// SIMD (see swell/waves.h).
+// SIMD (see swell/scene/waves.h).
 #include "ocean/gerstner/gerstner_terms.h"
 
 #include <fmt/format.h>

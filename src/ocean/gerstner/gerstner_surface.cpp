@@ -1,5 +1,5 @@
 // GerstnerSurface: the Gerstner sum's CPU queries (swell/gerstner_model.h),
-// the wave functions of swell/waves.h over one wave set.
+// the wave functions of swell/scene/waves.h over one wave set.
 #include "swell/gerstner_model.h"
 
 #include "swell/error.h"

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "swell/constants.h"
-#include "swell/waves.h"
+#include "swell/scene/waves.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

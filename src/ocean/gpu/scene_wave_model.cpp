@@ -1,7 +1,7 @@
 // The wave model a scene asks for.
 #include "swell/error.h"
 #include "swell/gerstner_model.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 #include "swell/spectral_model.h"
 
 namespace swell {

@@ -1,7 +1,7 @@
 #include "ocean/spectral/spectral_cpu.h"
 
 #include "core/worker.h"
-#include "swell/waves.h"
+#include "swell/scene/waves.h"
 
 #include <kiss_fft.h>
 

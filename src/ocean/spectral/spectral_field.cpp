@@ -4,7 +4,7 @@
 #include "ocean/short_waves.h"
 
 #include "swell/constants.h"
-#include "swell/waves.h"
+#include "swell/scene/waves.h"
 
 #include <algorithm>
 #include <cmath>

@@ -19,7 +19,7 @@
 
 #include "ocean/spectral/spectral_warp.h"
 #include "swell/gpu/ocean.h"
-#include "swell/spectrum.h"
+#include "swell/scene/spectrum.h"
 
 #include <array>
 #include <complex>

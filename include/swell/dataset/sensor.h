@@ -16,9 +16,9 @@
 #include "swell/export.h"
 
 #include "swell/camera.h"
+#include "swell/dataset/labels.h"
 #include "swell/image.h"
-#include "swell/labels.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/vec2.hpp>
 

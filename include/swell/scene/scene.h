@@ -1,19 +1,19 @@
 // Everything that describes what Swell renders: waves, grid, sun, sky, fog,
 // water optics, objects and camera. Plain data with units; scene files
-// (swell/scene_file.h) read and write it, and the renderer draws it. The
+// (swell/scene/scene_file.h) read and write it, and the renderer draws it. The
 // ranges that are checked, and shown on sliders, live in one table in
-// swell/parameters.h; the comments below only summarise them.
+// swell/scene/parameters.h; the comments below only summarise them.
 #pragma once
 
-#include "swell/atmosphere.h"
-#include "swell/clouds.h"
 #include "swell/error.h"
 #include "swell/export.h"
+#include "swell/scene/atmosphere.h"
+#include "swell/scene/clouds.h"
 
+#include "swell/scene/sea_state.h"
+#include "swell/scene/waves.h"
 #include "swell/sea_frame.h"
-#include "swell/sea_state.h"
 #include "swell/view.h"
-#include "swell/waves.h"
 
 #include <glm/vec3.hpp>
 
@@ -90,7 +90,7 @@ struct SWELL_API GridSettings {
     double fadeEnd_m = 1900.0;
 };
 
-// The sun placed by an instant and a place on Earth (swell/sun_position.h)
+// The sun placed by an instant and a place on Earth (swell/scene/sun_position.h)
 // instead of by a direction; north is -z, east +x.
 struct SWELL_API SunPlace {
     double time_s = 946728000.0; // seconds since 1970-01-01T00:00:00Z (UTC), 1950..2050; default 2000-01-01T12:00:00Z
@@ -101,7 +101,7 @@ struct SWELL_API SunPlace {
 struct SWELL_API SunSettings {
     // Towards the sun, world space; normalised on use. When `place` is set,
     // the solar position there and then, kept in step by the setters of
-    // sun.time, sun.latitude_deg and sun.longitude_deg (swell/parameters.h).
+    // sun.time, sun.latitude_deg and sun.longitude_deg (swell/scene/parameters.h).
     glm::dvec3 direction{-0.4, 0.35, -0.85};
     glm::dvec3 color{1.0, 0.95, 0.85}; // linear RGB, 0..1
     double intensity = 1.0;            // multiplier, 0..20
@@ -111,7 +111,7 @@ struct SWELL_API SunSettings {
 // What the built-in sky is (when no cubemap faces are given).
 enum class SkyModel {
     Gradient, // a hand-coloured gradient from horizon to zenith and a glow around the sun (the paper's look)
-    Physical, // the atmosphere's scattering of sunlight (swell/atmosphere.h); it also sets the sun's
+    Physical, // the atmosphere's scattering of sunlight (swell/scene/atmosphere.h); it also sets the sun's
               // colour and intensity and the ambient light of world objects
 };
 
@@ -126,7 +126,7 @@ struct SWELL_API SkySettings {
     // irradiance at the top of the atmosphere (1/sr), 0.01..1000.
     double exposure = 10.0;
     AtmosphereSettings atmosphere; // physical: aerosols and the ground's albedo
-    CloudSettings clouds;          // physical: a layer of cloud ([sky.clouds]; swell/clouds.h)
+    CloudSettings clouds;          // physical: a layer of cloud ([sky.clouds]; swell/scene/clouds.h)
 };
 
 // How distance veils what is drawn (shaders/fog.glsl).
@@ -236,7 +236,7 @@ struct SWELL_API CameraSettings {
     // (Renderer::sceneCameraAt). The object must be a rigid body or fixed.
     int mountObject = -1;
     glm::dvec3 mountOffset_m{0.0};
-    // The lens and the sensor (swell/sensor.h), applied to stills, videos
+    // The lens and the sensor (swell/dataset/sensor.h), applied to stills, videos
     // and datasets, and to their labels alike: Brown-Conrady distortion
     // (k1, k2, k3 radial, p1, p2 tangential, OpenCV's order and sign), the
     // exposure, and Gaussian noise on each colour channel.

@@ -1,5 +1,5 @@
 // What changed between two scenes, in the parameter table's terms
-// (swell/parameters.h): the union of the declared effects of every parameter
+// (swell/scene/parameters.h): the union of the declared effects of every parameter
 // whose value differs, plus what the scene's shape asks (objects added or
 // removed or given other files, other sky images, another asset folder, the
 // wind switched on or off, waves added or removed). The renderer and the
@@ -8,7 +8,7 @@
 
 #include "swell/export.h"
 
-#include "swell/parameters.h"
+#include "swell/scene/parameters.h"
 
 namespace swell {
 

@@ -6,7 +6,7 @@
 #include "swell/export.h"
 
 #include "swell/gpu/limits.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -98,7 +98,7 @@ public:
     // irradiance on a surface facing n is sum_i coefficients[i] * Y_i(n),
     // with Y_i in shHarmonics()'s order. Per unit solar irradiance.
     std::array<glm::dvec3, 9> irradianceSh(glm::dvec3 sunDirection) const;
-    // The same with something in the sky (a cloud layer, swell/clouds.h):
+    // The same with something in the sky (a cloud layer, swell/scene/clouds.h):
     // radianceOf(direction, clear) is the radiance seen along a direction
     // above the horizon where the clear sky's is `clear`, and sunScale the
     // share of the sun's direct light that reaches the ground.

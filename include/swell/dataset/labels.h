@@ -10,7 +10,7 @@
 
 #include "swell/camera.h"
 #include "swell/gpu/label_classes.h"
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -33,7 +33,7 @@ struct SWELL_API CameraCalibration {
     double cx_px = 0.0, cy_px = 0.0; // principal point, pixels (image conventions above)
     glm::dmat4 cameraFromWorld{1.0}; // absolute world (m, y up) to camera axes
     glm::dmat4 worldFromCamera{1.0};
-    // The lens's Brown-Conrady coefficients (swell/sensor.h), OpenCV's
+    // The lens's Brown-Conrady coefficients (swell/dataset/sensor.h), OpenCV's
     // order: k1, k2, p1, p2, k3; all 0 for a pinhole.
     double k1 = 0.0, k2 = 0.0, p1 = 0.0, p2 = 0.0, k3 = 0.0;
 };

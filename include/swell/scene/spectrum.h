@@ -13,8 +13,8 @@
 
 #include "swell/export.h"
 
-#include "swell/sea_state.h"
-#include "swell/waves.h"
+#include "swell/scene/sea_state.h"
+#include "swell/scene/waves.h"
 
 #include <cstdint>
 #include <limits>

@@ -1,7 +1,7 @@
 // The sea state a scene asks for: the wind that raises a wind sea, and a
-// distant swell on top of it. Plain data with units; swell/spectrum.h turns
+// distant swell on top of it. Plain data with units; swell/scene/spectrum.h turns
 // them into spectra and Gerstner wave sets, swell/spectral_model.h into a
-// spectral ocean, and Scene::sea holds the scene's (swell/scene.h).
+// spectral ocean, and Scene::sea holds the scene's (swell/scene/scene.h).
 #pragma once
 
 #include "swell/export.h"

@@ -8,8 +8,8 @@
 #include "swell/export.h"
 
 #include "swell/error.h"
-#include "swell/parameters.h"
-#include "swell/scene.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene.h"
 
 #include <glm/vec2.hpp>
 
@@ -48,7 +48,7 @@ struct SWELL_API Sweep {
     std::uint64_t seed = 0;
     glm::ivec2 size{640, 480};  // pixels
     double timeMin_s = 0.0, timeMax_s = 0.0; // each sample's time, uniform in [min, max], s
-    bool labels = true;         // write each sample's ground truth (swell/labels.h)
+    bool labels = true;         // write each sample's ground truth (swell/dataset/labels.h)
     std::vector<SweepKey> vary; // in the file's order
     std::string text;           // the file as read (a dataset's manifest keeps it)
 };

@@ -1,6 +1,6 @@
 // Scene files: TOML in, swell::Scene out, and back. The format is described
 // in docs/SCENE.md; the keys, units and ranges of the values come from the
-// parameter table (swell/parameters.h).
+// parameter table (swell/scene/parameters.h).
 //
 // Loading is all or nothing: a scene that loads is valid in every field
 // (ranges, cross-field rules, referenced files, the wave set), so the
@@ -11,8 +11,8 @@
 #include "swell/export.h"
 
 #include "swell/gpu/limits.h"
-#include "swell/parameters.h"
-#include "swell/scene.h"
+#include "swell/scene/parameters.h"
+#include "swell/scene/scene.h"
 
 #include <cstddef>
 #include <filesystem>
@@ -27,7 +27,7 @@ inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{4} << 20; // 4 MiB
 
 // Longest arrays a scene file may hold. Waves are capped by the shader's
 // uniform block (SWELL_MAX_WAVES), objects by kMaxSceneObjects
-// (swell/parameters.h); camera keys by what stays interactive: each is a
+// (swell/scene/parameters.h); camera keys by what stays interactive: each is a
 // line of the file.
 inline constexpr std::size_t kMaxCameraKeys = 10000;
 

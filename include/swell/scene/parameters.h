@@ -1,6 +1,6 @@
 // The one table of every scalar and vector scene parameter: its TOML key,
 // unit, range, default, a one-line description and an accessor into
-// swell::Scene. Scene files (swell/scene_file.h) check values against it,
+// swell::Scene. Scene files (swell/scene/scene_file.h) check values against it,
 // docs/SCENE.md is generated from it, and the viewer takes its slider ranges
 // and units from it, so a range is written down exactly once.
 //
@@ -20,7 +20,7 @@
 
 #include "swell/export.h"
 
-#include "swell/scene.h"
+#include "swell/scene/scene.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -71,7 +71,7 @@ enum class ParameterList {
 // What a change to the parameter asks of a renderer that is already running:
 // a set of flags, since one parameter may ask for several things. The table
 // is the only place that says it: Renderer::setScene and the viewer act on
-// sceneChanges() (swell/scene_changes.h), which reads these.
+// sceneChanges() (swell/scene/scene_changes.h), which reads these.
 enum class ParameterEffect : unsigned {
     Frame = 0,          // picked up by the next frame (colours, camera, fog, poses)
     Waves = 1u << 0,    // the wave model is built again from the scene's waves
