@@ -1,9 +1,9 @@
-#include <algorithm>
-#include <cmath>
 #include "support/golden.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
