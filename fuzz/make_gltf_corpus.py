@@ -2,7 +2,8 @@
 """Writes the seed corpus for fuzz_gltf into fuzz/corpus/gltf/: small valid
 models covering the loader's features, and invalid ones near its checks.
 Inputs the fuzzer found (crash-*, timeout-*, oom-*) live in the same folder
-and are kept by this script. tests/cpu/test_gltf_loader.cpp loads them all. Standard library only:
+and are kept by this script. tests/cpu/test_gltf_loader_errors.cpp loads them
+all. Standard library only:
 
     python3 fuzz/make_gltf_corpus.py
 """

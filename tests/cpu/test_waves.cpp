@@ -1,71 +1,29 @@
 // Gerstner waves on the CPU: the wave function against hand-written sums and
 // finite differences, the inverse (heightAt) against round trips, phase
-// precision far from the origin, the fold limit, validation, and WaveSampler
-// against the exact double evaluation.
-#include "support/param_names.h"
+// precision far from the origin, the fold limit and validation. WaveSampler
+// against the exact double evaluation is in test_wave_sampler.cpp; the wave
+// sets both use are in wave_test_sets.h.
+#include "wave_test_sets.h"
+
 #include "swell/gpu/limits.h"
-#include "swell/scene/spectrum.h"
 #include "swell/scene/waves.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#include <numbers>
-#include <random>
-#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
 
 using swell::Wave;
 using swell::WaveSet;
+using namespace swell::test::wave_sets;
 
 using swell::kPi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// A small hand-made set: four waves in different directions, with un-normalised
-// directions on purpose.
-WaveSet handSet(double depth_m = kInf)
-{
-    WaveSet set;
-    set.depth_m = depth_m;
-    set.waves = {
-        {{1.0, 0.0}, 40.0, 0.8, 0.7, 0.3},
-        {{3.0, 4.0}, 17.0, 0.35, 0.5, -1.2},
-        {{-1.0, 2.0}, 6.5, 0.12, 0.9, 2.9},
-        {{0.2, -0.7}, 2.3, 0.03, 0.4, 0.0},
-    };
-    return set;
-}
-
-// n random waves, steepness then scaled to the fold limit (foldMeasure = 1).
-// aligned: all within 0.3 rad of +x, which puts cusps on the crests.
-WaveSet randomFoldLimitedSet(int n, std::uint32_t seed, bool aligned)
-{
-    std::mt19937 rng(seed);
-    auto u = [&] { return rng() * (1.0 / 4294967296.0); };
-    WaveSet set;
-    for (int i = 0; i < n; ++i) {
-        Wave w;
-        const double angle = aligned ? 0.3 * u() : 2.0 * kPi * u();
-        w.direction = {std::cos(angle), std::sin(angle)};
-        w.wavelength_m = 1.0 + 99.0 * u();
-        w.amplitude_m = w.wavelength_m / (2.0 * kPi) * u();
-        w.steepness = 1.0;
-        w.phase_rad = 2.0 * kPi * u() - kPi;
-        set.waves.push_back(w);
-    }
-    // Make sure the sum is past the limit, so that limiting lands exactly on it.
-    const double measure = swell::foldMeasure(set);
-    if (measure < 1.5) {
-        for (Wave& w : set.waves)
-            w.amplitude_m *= 1.5 / measure;
-    }
-    swell::limitSteepness(set);
-    return set;
-}
 
 // The displacement written out directly from the definition in waves.h, in
 // plain double: good near the origin and early in time.
@@ -82,23 +40,6 @@ glm::dvec3 naiveDisplacement(const WaveSet& set, glm::dvec2 x0, double t)
                           -w.steepness * w.amplitude_m * d.y * std::sin(theta));
     }
     return sum;
-}
-
-glm::dvec3 displacedPoint(const WaveSet& set, glm::dvec2 x0, double t)
-{
-    return glm::dvec3(x0.x, 0.0, x0.y) + swell::displacementAt(set, x0, t);
-}
-
-std::vector<glm::dvec2> randomPoints(int n, double halfWidth_m, glm::dvec2 centre, std::uint32_t seed)
-{
-    std::mt19937 rng(seed);
-    std::vector<glm::dvec2> points;
-    for (int i = 0; i < n; ++i) {
-        const double x = (rng() * (2.0 / 4294967296.0) - 1.0) * halfWidth_m;
-        const double z = (rng() * (2.0 / 4294967296.0) - 1.0) * halfWidth_m;
-        points.push_back(centre + glm::dvec2(x, z));
-    }
-    return points;
 }
 
 // --- Dispersion ------------------------------------------------------------
@@ -561,138 +502,6 @@ TEST(Extremes, HugeAmplitudeRoundTrip)
         const glm::dvec3 p = displacedPoint(set, x0, 100.0);
         EXPECT_NEAR(swell::heightAt(set, {p.x, p.z}, 100.0), p.y, 1e-6);
     }
-}
-
-// --- WaveSampler --------------------------------------------------------------
-
-TEST(WaveSampler, EmptySamplerIsFlat)
-{
-    const swell::WaveSampler sampler;
-    EXPECT_EQ(sampler.heightAt({1.0, 2.0}), 0.0);
-    const swell::WaveSampler fromEmptySet(WaveSet{}, 3.0, {4.0, 5.0});
-    EXPECT_EQ(fromEmptySet.heightAt({1.0, 2.0}), 0.0);
-    const glm::dvec2 points[2] = {{1.0, 2.0}, {3.0, 4.0}};
-    double heights[2] = {-1.0, -1.0};
-    fromEmptySet.heightsAt(points, heights);
-    EXPECT_EQ(heights[0], 0.0);
-    EXPECT_EQ(heights[1], 0.0);
-}
-
-TEST(WaveSampler, RejectsInvalidSets)
-{
-    WaveSet set = handSet();
-    set.waves[2].wavelength_m = -1.0;
-    try {
-        swell::WaveSampler sampler(set, 0.0, {0.0, 0.0});
-        FAIL() << "no exception";
-    } catch (const std::invalid_argument& e) {
-        EXPECT_STREQ(e.what(), "swell::WaveSampler::WaveSampler(): wave 2: wavelength_m must be > 0 (got -1)");
-    }
-}
-
-class WaveSamplerAgreement : public ::testing::TestWithParam<swell::WaveSampler::Simd> {};
-
-TEST_P(WaveSamplerAgreement, WithinAMillimetreOfTheExactHeight)
-{
-    // Generated seas from calm to storm, 16 to 64 waves, at the fold limit,
-    // with the origin 1e6 m out and t = 1e5 s; points up to 10 km from it.
-    const glm::dvec2 origin(1e6, -2e6);
-    const double t = 1e5;
-    for (int count : {16, 32, 64}) {
-        for (double wind : {5.0, 15.0, 35.0}) {
-            swell::WindSettings settings;
-            settings.windSpeed_mps = wind;
-            settings.waveCount = count;
-            settings.steepness = 1.0;
-            settings.minWavelength_m = 0.2;
-            const WaveSet set = swell::generateWaves(settings);
-            const swell::WaveSampler sampler(set, t, origin, GetParam());
-            EXPECT_EQ(sampler.waveCount(), count);
-            const std::vector<glm::dvec2> points = randomPoints(401, 1e4, origin, 12);
-            std::vector<double> batch(points.size());
-            sampler.heightsAt(points, batch);
-            double worst = 0.0;
-            double worstBatch = 0.0;
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                const double exact = swell::heightAt(set, points[i], t);
-                worst = std::max(worst, std::abs(sampler.heightAt(points[i]) - exact));
-                worstBatch = std::max(worstBatch, std::abs(batch[i] - exact));
-            }
-            // Requirement 1 mm; float arithmetic gives ~1e-5 m.
-            EXPECT_LT(worst, 1e-4) << count << " waves, wind " << wind << " m/s";
-            EXPECT_LT(worstBatch, 1e-4) << count << " waves, wind " << wind << " m/s";
-        }
-    }
-}
-
-TEST_P(WaveSamplerAgreement, RandomSetsAtTheFoldLimit)
-{
-    for (bool aligned : {false, true}) {
-        const WaveSet set = randomFoldLimitedSet(40, 21, aligned);
-        const swell::WaveSampler sampler(set, 50.0, {0.0, 0.0}, GetParam());
-        std::vector<glm::dvec2> world;
-        std::vector<double> expected;
-        for (glm::dvec2 x0 : randomPoints(500, 300.0, {0.0, 0.0}, 13)) {
-            const glm::dvec3 p = displacedPoint(set, x0, 50.0);
-            EXPECT_NEAR(sampler.heightAt({p.x, p.z}), p.y, 1e-4);
-            world.emplace_back(p.x, p.z);
-            expected.push_back(p.y);
-        }
-        std::vector<double> batch(world.size());
-        sampler.heightsAt(world, batch);
-        for (std::size_t i = 0; i < world.size(); ++i)
-            EXPECT_NEAR(batch[i], expected[i], 1e-4);
-    }
-}
-
-TEST_P(WaveSamplerAgreement, NextToACusp)
-{
-    WaveSet set;
-    set.waves = {{{1.0, 0.0}, 20.0, 20.0 / (2.0 * kPi), 1.0, 0.0}};
-    const swell::WaveSampler sampler(set, 0.0, {0.0, 0.0}, GetParam());
-    std::vector<glm::dvec2> world;
-    std::vector<double> expected;
-    for (int i = -400; i <= 400; ++i) {
-        const double x0 = i * 5e-3;
-        const glm::dvec3 p = displacedPoint(set, {x0, 0.0}, 0.0);
-        EXPECT_NEAR(sampler.heightAt({p.x, p.z}), p.y, 1e-3) << "x0=" << x0;
-        world.emplace_back(p.x, p.z);
-        expected.push_back(p.y);
-    }
-    std::vector<double> batch(world.size());
-    sampler.heightsAt(world, batch);
-    for (std::size_t i = 0; i < world.size(); ++i)
-        EXPECT_NEAR(batch[i], expected[i], 1e-3) << "x0=" << (static_cast<double>(i) - 400.0) * 5e-3;
-}
-
-TEST_P(WaveSamplerAgreement, BatchOfAnySizeMatchesSingleQueries)
-{
-    // The batch runs several queries side by side; sizes that do not fill
-    // the last vector must come out the same.
-    const WaveSet set = handSet(9.0);
-    const swell::WaveSampler sampler(set, 2.0, {10.0, 20.0}, GetParam());
-    for (std::size_t count : {0u, 1u, 3u, 8u, 13u, 64u}) {
-        const std::vector<glm::dvec2> points = randomPoints(static_cast<int>(count), 100.0, {10.0, 20.0}, 14);
-        std::vector<double> heights(points.size(), -1.0);
-        sampler.heightsAt(points, heights);
-        for (std::size_t i = 0; i < points.size(); ++i)
-            EXPECT_NEAR(heights[i], sampler.heightAt(points[i]), 2e-5) << "count " << count;
-    }
-    const std::vector<glm::dvec2> points = randomPoints(5, 100.0, {10.0, 20.0}, 14);
-    std::vector<double> tooFew(3);
-    EXPECT_THROW(sampler.heightsAt(points, tooFew), std::invalid_argument);
-}
-
-INSTANTIATE_TEST_SUITE_P(Simd, WaveSamplerAgreement,
-                         ::testing::Values(swell::WaveSampler::Simd::Auto, swell::WaveSampler::Simd::Baseline),
-                         [](const auto& param) { return swell::paramName(param.param); });
-
-TEST(WaveSampler, ReportsThePathItUses)
-{
-    const swell::WaveSampler baseline(handSet(), 0.0, {0.0, 0.0}, swell::WaveSampler::Simd::Baseline);
-    EXPECT_EQ(baseline.simd(), swell::WaveSampler::Simd::Baseline);
-    const swell::WaveSampler automatic(handSet(), 0.0, {0.0, 0.0});
-    EXPECT_NE(automatic.simd(), swell::WaveSampler::Simd::Auto);
 }
 
 } // namespace
