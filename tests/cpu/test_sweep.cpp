@@ -71,8 +71,8 @@ TEST(Sweep, ValuesStayInTheirRangesAndSpreadOverThem)
         const double elevation = glm::degrees(std::asin(sun.y));
         ASSERT_GE(elevation, 10.0 - 1e-9);
         ASSERT_LE(elevation, 30.0 + 1e-9);
-        ASSERT_NEAR(sun.x, 0.0, 1e-12); // azimuth 90: from +x towards +z
-        ASSERT_GT(sun.z, 0.0);
+        ASSERT_NEAR(sun.z, 0.0, 1e-12); // azimuth 90, measured like a heading from -z towards +x: +x (east)
+        ASSERT_GT(sun.x, 0.0);
     }
     // The mean of 1000 uniform draws on [-15, 15]: 0 within 4 standard errors (30/sqrt(12)/sqrt(1000) = 0.27).
     EXPECT_NEAR(sum / sweep.count, 0.0, 4 * 0.27);
