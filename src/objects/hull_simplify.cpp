@@ -87,12 +87,18 @@ BodyShape hydrostaticHull(const BodyShape& shape, double volume_m3, glm::dvec3 c
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    // Cells from a 256th of the hull's longest side up, each try 1.25 times
-    // coarser, until the triangles fit: a closed surface clustered on cells
-    // of size h keeps about its area / h^2 triangles.
+    // A closed surface clustered on cells of size h keeps about 2 area / h^2
+    // triangles: cells from a little finer than that, each try 1.25 times
+    // coarser, until the triangles fit.
+    double area_m2 = 0.0;
+    for (std::size_t t = 0; t + 2 < shape.indices.size(); t += 3) {
+        const glm::dvec3 &a = shape.positions_m[shape.indices[t]], &b = shape.positions_m[shape.indices[t + 1]],
+                         &c = shape.positions_m[shape.indices[t + 2]];
+        area_m2 += 0.5 * glm::length(glm::cross(b - a, c - a));
+    }
     const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-9});
     BodyShape out;
-    for (double cell = longest / 256.0;; cell *= 1.25) {
+    for (double cell = std::max(0.8 * std::sqrt(2.0 * area_m2 / double(maxTriangles)), longest / 1e5);; cell *= 1.25) {
         out = clustered(shape, lo, cell);
         if (out.indices.size() / 3 <= maxTriangles)
             break;
