@@ -202,7 +202,11 @@ std::string sampleNotDone(const fs::path& out, int index, const Sweep& sweep, co
     try {
         json = Json::parse(readFileBytes(jsonPath));
     } catch (const std::exception& e) {
-        return named(jsonPath, fmt::format("not JSON (cut short or emptied?): {}", e.what()));
+        // nlohmann's words without its "[json.exception.parse_error.101] ".
+        const std::string_view why = e.what();
+        const std::size_t tag = why.starts_with("[json.") ? why.find("] ") : std::string_view::npos;
+        return named(jsonPath, fmt::format("not JSON (cut short or emptied?): {}",
+                                           tag == std::string_view::npos ? why : why.substr(tag + 2)));
     }
     Json varied = Json::object();
     for (std::size_t k = 0; k < sweep.vary.size(); ++k)
