@@ -27,6 +27,19 @@ namespace swell::python {
 
 namespace py = pybind11;
 
+// A Python number as a double; TypeError naming `name` for one that will
+// not be one (an int past 1.8e308, an object whose __float__ raises, a
+// complex or empty array).
+inline double numberOf(py::handle value, const std::string& name)
+{
+    try {
+        return value.cast<double>();
+    } catch (const py::cast_error&) {
+        throw py::type_error(name + ": expected a number that is a double (at most 1.8e308 in size), got "
+                             + std::string(py::str(py::type::of(value).attr("__name__"))));
+    }
+}
+
 // The numbers of a sequence of exactly `n`; TypeError naming `name` otherwise.
 inline std::vector<double> numbersOf(py::handle value, std::size_t n, const std::string& name)
 {
@@ -40,7 +53,7 @@ inline std::vector<double> numbersOf(py::handle value, std::size_t n, const std:
         if (py::isinstance<py::bool_>(item) || !(py::isinstance<py::float_>(item) || py::isinstance<py::int_>(item)
                                                   || py::hasattr(item, "__float__")))
             throw py::type_error(name + ": expected numbers, got " + std::string(py::str(py::type::of(item).attr("__name__"))));
-        out.push_back(item.cast<double>());
+        out.push_back(numberOf(item, name));
     }
     return out;
 }

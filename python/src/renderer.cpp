@@ -64,7 +64,13 @@ py::object mapXZ(py::handle x, py::handle z, F f)
     const bool scalars = !py::isinstance<py::array>(x) && !py::isinstance<py::sequence>(x)
                          && !py::isinstance<py::array>(z) && !py::isinstance<py::sequence>(z);
     const py::module_ np = py::module_::import("numpy");
-    const py::tuple both = np.attr("broadcast_arrays")(np.attr("asarray")(x, "float64"), np.attr("asarray")(z, "float64"));
+    py::tuple both;
+    try {
+        both = np.attr("broadcast_arrays")(np.attr("asarray")(x, "float64"), np.attr("asarray")(z, "float64"));
+    } catch (const py::error_already_set& e) {
+        // An int past a double's range (OverflowError), text, shapes that do not broadcast.
+        throw py::type_error(std::string("x_m, z_m: numbers or arrays of numbers that broadcast together: ") + e.what());
+    }
     const auto xs = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(both[0]);
     const auto zs = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(both[1]);
     py::array_t<double> out(std::vector<py::ssize_t>(xs.shape(), xs.shape() + xs.ndim()));

@@ -115,7 +115,7 @@ ParameterValue toParameterValue(const Parameter& p, py::handle v, const std::str
         if (isBool(v) || !PyNumber_Check(v.ptr()) || !py::hasattr(v, "__float__"))
             throw py::type_error(name + ": expected a number" + (p.unit.empty() ? "" : " (" + std::string(p.unit) + ")")
                                  + ", got " + typeName(v));
-        value = v.cast<double>();
+        value = numberOf(v, name);
         break;
     case ParameterKind::Integer: {
         if (isBool(v) || !PyIndex_Check(v.ptr()))
@@ -158,7 +158,7 @@ ParameterValue toParameterValue(const Parameter& p, py::handle v, const std::str
         if (isBool(v) || !PyNumber_Check(v.ptr()) || !py::hasattr(v, "__float__"))
             throw py::type_error(name + ": expected seconds since 1970-01-01T00:00:00Z (datetime.timestamp()), got "
                                  + typeName(v));
-        value = v.cast<double>();
+        value = numberOf(v, name);
         break;
     }
     if (const std::string problem = valueProblem(p, value, name); !problem.empty())
