@@ -112,7 +112,7 @@ std::string historyProblem(const Scene& scene, double time_s, std::optional<doub
     const std::string remedy =
         from_s == start_s
             ? fmt::format("start {} later (history_start_s = {:g} fits), or give fewer bodies{}", one ? "it" : "them",
-                          std::ceil(time_s - affordable_s), cost.wakeCells ? " or a smaller wake" : "")
+                          std::ceil(time_s - affordable_s) + 0.0, cost.wakeCells ? " or a smaller wake" : "") // + 0.0: never "-0"
             : fmt::format("go there in steps of at most {:g} s, or give fewer bodies", std::floor(affordable_s));
     return fmt::format("{:g} s: the scene's {} {} stepped {}: {:g} s of history, estimated at {:.0f} s of CPU "
                        "({:.3g} s per second stepped; docs/PERFORMANCE.md, \"A still's history\"), over the {:g} s "
