@@ -11,6 +11,8 @@
 //   - a sample of a sweep checkSweep accepted holding a value outside its
 //     parameter's range (checkSweep vouches for every value drawn),
 //   - a refusal of a sample that names no place (no file).
+#include "fuzz_support.h"
+
 #include "swell/error.h"
 #include "swell/frame_request.h"
 #include "swell/parameters.h"
@@ -20,14 +22,10 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
-
-#include <stdlib.h> // mkdtemp
 
 namespace {
 
@@ -51,29 +49,15 @@ position_m = [8.0, 0.0, -40.0]
 // to keep each input fast.
 constexpr int kSamples = 4;
 
-fs::path& folder()
-{
-    static fs::path f;
-    return f;
-}
-
 swell::Scene& base()
 {
     static swell::Scene scene;
     return scene;
 }
 
-void removeFolder()
-{
-    std::error_code ec;
-    fs::remove_all(folder(), ec);
-}
+const fs::path& folder() { return swell::fuzz::privateFolder(); }
 
-[[noreturn]] void bug(const char* what, const std::string& detail)
-{
-    std::fprintf(stderr, "fuzz_sweep: %s\n%s\n", what, detail.c_str());
-    std::abort();
-}
+[[noreturn]] void bug(const char* what, const std::string& detail) { swell::fuzz::bug("fuzz_sweep", what, detail); }
 
 void checkSample(const swell::Sweep& sweep, int index)
 {
@@ -104,14 +88,7 @@ void checkSample(const swell::Sweep& sweep, int index)
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
-    std::string f = (fs::temp_directory_path() / "swell-fuzz-sweep-XXXXXX").string();
-    if (!mkdtemp(f.data())) {
-        std::perror("fuzz_sweep: mkdtemp");
-        std::abort();
-    }
-    folder() = f;
-    std::atexit(removeFolder);
-    std::ofstream(folder() / "base.toml") << kBase;
+    std::ofstream(swell::fuzz::privateFolder("sweep") / "base.toml") << kBase;
     base() = swell::loadScene(folder() / "base.toml");
     return 0;
 }
@@ -119,7 +96,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     const fs::path path = folder() / "sweep.toml";
-    std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
+    swell::fuzz::writeFile(path, data, size);
     swell::Sweep sweep;
     try {
         sweep = swell::loadSweepFile(path);
