@@ -247,7 +247,8 @@ int runDataset(const DatasetOptions& options)
         }
         std::error_code error;
         if (fs::exists(labelFilePaths(samplePng(out, i)).back(), error))
-            std::fprintf(stderr, "swell: sample %d is not whole (%s): rendering it again\n", i, why.c_str());
+            std::fprintf(stderr, "swell: sample %d is not whole (%s): %s\n", i, why.c_str(),
+                         options.dryRun ? "it would be rendered again" : "rendering it again");
         if (!options.dryRun)
             removeSample(out, i);
         todo.push_back(i);
