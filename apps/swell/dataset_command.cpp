@@ -103,7 +103,9 @@ void checkSamples(const Sweep& sweep, const Scene& base, const fs::path& scenePa
     for (int i = shard - 1; i < sweep.count; i += shards) {
         const SweepSample sample = sweepSample(sweep, base, i);
         try {
-            validateScene(sample.scene, scenePath);
+            // As a change of the base scene (valid already): the files and the
+            // wave set are checked again only where a varied key changes them.
+            validateSceneChange(base, sample.scene, scenePath);
             if (eachLens)
                 checkLens(sample.scene, sweep.size, sample.scene.camera.fovY_deg, scenePath);
         } catch (const InputError& e) {
