@@ -259,6 +259,7 @@ for name, args in [("lens", [lens]), ("history", [os.path.join(os.path.dirname(o
                                                                "scenes", "under-way.toml"), "--time", "5000"])]:
     count += 1
     folder = os.path.join(work, "not_made_" + name)
+    shutil.rmtree(folder, ignore_errors=True)
     r = run(["render", *args, "-o", os.path.join(folder, "deeper", "x.png"), "--size", "64x36"])
     if r.returncode != 2 or os.path.exists(folder) or "distortion_k1" in r.stderr:
         failures.append(f"{name} refused after making its folder: exit {r.returncode}, {r.stderr.strip()[:300]!r}")
