@@ -95,23 +95,11 @@ class ObjectsMadeWithoutTheirConstructor(unittest.TestCase):
         renderer = swell.Renderer.__new__(swell.Renderer)
         with self.assertRaises(TypeError):
             renderer.scene
-        scene = swell.default_scene()
-        scene["grid.resolution"] = 32
-        renderer.__init__(scene)
+        renderer.__init__(support.small_scene())
         self.assertEqual(renderer.scene["grid.resolution"], 32)
 
 
-class RangesAsTheExecutableHoldsThem(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        scene = swell.default_scene()
-        scene["grid.resolution"] = 32
-        cls.renderer = swell.Renderer(scene)
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.renderer = None
-
+class RangesAsTheExecutableHoldsThem(support.SmallRendererCase):
     def test_times_outside_0_to_1e9_are_refused_with_the_executables_words(self):
         support.needs_app(self)
         camera = swell.Camera()
