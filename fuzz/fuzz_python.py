@@ -23,7 +23,9 @@ crash names it.
   fuzz/fuzz_python.py --seed 17 --runs 1 -v           # one batch again, every call shown
 
 Needs the package importable (PYTHONPATH=build/python) and Mesa's EGL for
-the Renderer. Writes only in a private temporary folder.
+the Renderer. Writes only in a private temporary folder, which is also the
+children's working directory: paths outside it (`/dev/zero`, `/etc/passwd`)
+are handed only to the calls that read.
 """
 import argparse
 import os
@@ -58,10 +60,12 @@ class World:
         if not os.path.exists(fifo):
             os.mkfifo(fifo)
         os.makedirs(os.path.join(folder, "a_folder"), exist_ok=True)
+        # Paths outside the private folder are only ever read (load, read_image);
+        # everything else, a method called with whatever value, gets the folder's own.
+        self.system_paths = ["/dev/zero", "/dev/null", "/etc/passwd", "/proc/self/mem", "storm", "storm.toml", "calm"]
         self.read_paths = [os.path.join(folder, n) for n in ("scene.toml", "a_file", "garbage.png", "fifo", "a_folder",
                                                              "missing.toml", "a_file/below.toml")] + [
-            "", "/dev/zero", "/dev/null", "/etc/passwd", "/proc/self/mem", "storm", "storm.toml", "calm",
-            "x" * 5000, "nul\x00byte", folder]
+            "", "x" * 5000, "nul\x00byte", folder]
         self.write_paths = [os.path.join(folder, n) for n in ("out.png", "out.toml", "deeper/still/out.png",
                                                               "a_file/below.png", "a_folder", "x" * 300 + ".png",
                                                               "nul\x00byte.png")] + ["", folder]
@@ -161,8 +165,8 @@ def calls(world):
         return result
 
     table = [
-        ("swell.load", lambda: swell.load(w.pick(w.read_paths + [w.value()]))),
-        ("swell.load_scene", lambda: keep(swell.load_scene(w.pick(w.read_paths)))),
+        ("swell.load", lambda: swell.load(w.pick(w.read_paths + w.system_paths + [w.value()]))),
+        ("swell.load_scene", lambda: keep(swell.load_scene(w.pick(w.read_paths + w.system_paths)))),
         ("swell.parse_scene", lambda: keep(swell.parse_scene(w.pick(["", "[fog]\nstart_m = 1e300\n", "a = [[[[",
                                                                       "[[objects]]\npath = \"../x.glb\"\n", w.value()]),
                                                             w.pick(w.read_paths)))),
@@ -170,7 +174,7 @@ def calls(world):
         ("swell.calibration_of", lambda: keep(swell.calibration_of(w.value() if w.rng.random() < 0.2 else w.pick(w.cameras),
                                                                    w.small_size()))),
         ("swell.horizon_of", lambda: keep(swell.horizon_of(w.value()))),
-        ("swell.read_image", lambda: keep(swell.read_image(w.pick(w.read_paths)))),
+        ("swell.read_image", lambda: keep(swell.read_image(w.pick(w.read_paths + w.system_paths)))),
         ("swell.write_png", lambda: swell.write_png(w.array() if w.rng.random() < 0.7 else w.value(),
                                                      w.pick(w.write_paths))),
         ("Scene.__getitem__", lambda: scene()[w.pick(w.keys + [w.value()])]),
@@ -234,6 +238,8 @@ def child(seed, count, verbose):
     import swell
     rng = random.Random(seed)
     with tempfile.TemporaryDirectory(prefix="swell-fuzz-python-") as folder:
+        # Relative paths (a scene's value saved as "builtin:boat") land here too.
+        os.chdir(folder)
         world = World(swell, np, folder, rng)
         table = calls(world)
         for i in range(count):
