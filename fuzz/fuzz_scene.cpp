@@ -8,61 +8,37 @@
 //     (the viewer saves what it loaded; a scene it cannot reload is a bug).
 // The folder holds model.gltf and model.glb (empty files: only their
 // existence is checked), so inputs can reach the object-path checks.
+#include "fuzz_support.h"
+
 #include "swell/error.h"
 #include "swell/scene/scene_file.h"
 
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
 
-#include <stdlib.h> // mkdtemp
-
 namespace {
 
 namespace fs = std::filesystem;
+using swell::fuzz::privateFolder;
 
-fs::path& folder()
-{
-    static fs::path f;
-    return f;
-}
-
-void removeFolder()
-{
-    std::error_code ec;
-    fs::remove_all(folder(), ec);
-}
-
-[[noreturn]] void bug(const char* what, const std::string& detail)
-{
-    std::fprintf(stderr, "fuzz_scene: %s\n%s\n", what, detail.c_str());
-    std::abort();
-}
+[[noreturn]] void bug(const char* what, const std::string& detail) { swell::fuzz::bug("fuzz_scene", what, detail); }
 
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
-    std::string f = (fs::temp_directory_path() / "swell-fuzz-scene-XXXXXX").string();
-    if (!mkdtemp(f.data())) {
-        std::perror("fuzz_scene: mkdtemp");
-        std::abort();
-    }
-    folder() = f;
-    std::atexit(removeFolder);
-    std::ofstream(folder() / "model.gltf");
-    std::ofstream(folder() / "model.glb");
+    std::ofstream(privateFolder("scene") / "model.gltf");
+    std::ofstream(privateFolder() / "model.glb");
     return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
-    const fs::path path = folder() / "input.toml";
+    const fs::path path = privateFolder() / "input.toml";
     swell::Scene scene;
     try {
         scene = swell::parseScene(text, path);

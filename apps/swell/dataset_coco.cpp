@@ -75,7 +75,12 @@ Json cocoJson(const fs::path& out, int count, const std::vector<std::string>& cl
     for (int i = 0; i < count; ++i) {
         const fs::path png = out / "samples" / fmt::format("{:06d}.png", i);
         const std::vector<fs::path> files = labelFilePaths(png);
-        const Json sample = Json::parse(readFileBytes(files[5]));
+        Json sample;
+        try {
+            sample = Json::parse(readFileBytes(files[5]));
+        } catch (const Json::exception& e) {
+            throw Error(fmt::format("{}: {}", files[5].string(), e.what()));
+        }
         const int width = sample["size"][0], height = sample["size"][1];
         images.push_back({{"id", i}, {"file_name", fmt::format("samples/{:06d}.png", i)}, {"width", width}, {"height", height}});
         if (sample["objects"].empty())
@@ -99,23 +104,6 @@ Json cocoJson(const fs::path& out, int count, const std::vector<std::string>& cl
             {"images", images},
             {"annotations", annotations},
             {"categories", categories}};
-}
-
-Json sampleValueJson(const Scene& scene, std::string_view key)
-{
-    const ParameterValue v = sweptValue(scene, key);
-    if (const Parameter* p = sweptParameter(key); p && p->kind == ParameterKind::Choice)
-        return std::string(p->choices[std::size_t(std::get<std::int64_t>(v))]);
-    if (const auto* d = std::get_if<double>(&v))
-        return *d;
-    if (const auto* i = std::get_if<std::int64_t>(&v))
-        return *i;
-    if (const auto* b = std::get_if<bool>(&v))
-        return *b;
-    if (const auto* v2 = std::get_if<glm::dvec2>(&v))
-        return Json::array({v2->x, v2->y});
-    const glm::dvec3 v3 = std::get<glm::dvec3>(v);
-    return Json::array({v3.x, v3.y, v3.z});
 }
 
 } // namespace swell::app

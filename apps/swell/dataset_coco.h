@@ -22,7 +22,4 @@ Json cocoJson(const std::filesystem::path& out, int count, const std::vector<std
 // A file's whole content; throws swell::Error when it cannot be read.
 std::string readFileBytes(const std::filesystem::path& path);
 
-// A sample's value of a varied key, as JSON: numbers, [x, y, z], or a choice's name.
-Json sampleValueJson(const Scene& scene, std::string_view key);
-
 } // namespace swell::app

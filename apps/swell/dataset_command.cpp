@@ -1,11 +1,19 @@
 // `swell dataset SWEEP --out DIR [--shard K/N]`: renders a sweep's samples
-// (swell/dataset/sweep.h) into DIR, each file written whole or not at all and each
-// sample's JSON last, so a sample whose JSON exists is done: a run killed
-// at any point and started again renders each missing sample once and
-// nothing twice. DIR/manifest.json records the sweep; DIR/coco.json the
-// boxes and masks of every sample, once all are done (docs/DATASETS.md).
+// (swell/dataset/sweep.h) into DIR (docs/DATASETS.md).
+//
+// The whole request is checked before anything is made: the shard, the
+// sweep, its base scene, every sample of the shard as drawn (its scene, its
+// lens at the sweep's size, its history's cost), and the folder. Each file
+// is written whole or not at all and each sample's JSON last, with Ctrl-C
+// and SIGTERM held off while a sample's files are written; a sample counts
+// as done only when its files are whole and say what the sweep draws for
+// it (dataset_folder.h), so a run stopped at any point and started again
+// renders what is not done, once, and gives the same bytes. DIR/coco.json
+// is written by the run that finds every sample done, and removed by one
+// that finds one not done.
 #include "commands.h"
 #include "dataset_coco.h"
+#include "dataset_folder.h"
 #include "label_files.h"
 #include "progress.h"
 #include "scene_loading.h"
@@ -14,26 +22,24 @@
 #include "swell/dataset/sensor.h"
 #include "swell/dataset/sweep.h"
 #include "swell/error.h"
+#include "swell/frame_request.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
 #include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <atomic>
 #include <charconv>
+#include <csignal>
 #include <cstdio>
-#include <fstream>
-#include <set>
 
 namespace swell::app {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-constexpr std::string_view kDatasetFormat = "swell-dataset-1";
-
-fs::path samplePng(const fs::path& out, int i) { return out / "samples" / fmt::format("{:06d}.png", i); }
 
 // "K/N" with 1 <= K <= N.
 std::pair<int, int> parseShard(const std::string& shard)
@@ -52,168 +58,225 @@ std::pair<int, int> parseShard(const std::string& shard)
     return {k, n};
 }
 
-// The folder exists (created if missing) and takes new files.
-void prepareOut(const fs::path& out)
+// The base scene's file: beside the sweep, else a preset of that name.
+fs::path baseScenePath(const Sweep& sweep, const fs::path& presets)
 {
-    std::error_code error;
-    fs::create_directories(out / "samples", error);
-    if (error)
-        throw InputError({"--out"}, fmt::format("cannot create '{}': {}", (out / "samples").string(), error.message()));
-    const fs::path probe = out / "samples" / ".write-test";
-    {
-        std::ofstream test(probe);
-        if (!test)
-            throw InputError({"--out"}, fmt::format("'{}' is not writable", (out / "samples").string()));
+    if (const std::optional<fs::path> file = sweepSceneFile(sweep))
+        return *file;
+    try {
+        return resolveScenePath(sweep.scene, presets);
+    } catch (const InputError& e) {
+        throw InputError(sweep.scenePlace, fmt::format("scene: {}", e.message()));
     }
-    fs::remove(probe, error);
 }
 
-// The manifest: written by the first run, and the same sweep asked of every later one.
-void checkManifest(const fs::path& out, const Sweep& sweep, const Scene& base)
+// The base scene. A file that cannot be read at all (a folder, a FIFO, a
+// device) is refused at the sweep's `scene` line; a problem inside it at
+// its own line.
+Scene loadBaseScene(const Sweep& sweep, const fs::path& path)
 {
-    const fs::path path = out / "manifest.json";
-    Json manifest;
-    manifest["format"] = kDatasetFormat;
-    manifest["sweep_file"] = sweep.file.filename().string();
-    manifest["sweep"] = sweep.text;
-    manifest["count"] = sweep.count;
-    manifest["seed"] = sweep.seed;
-    manifest["size"] = {sweep.size.x, sweep.size.y};
-    manifest["labels"] = sweep.labels;
-    Json classes = Json::object();
-    const std::vector<std::string> names = labelClassesOf(base);
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (!names[i].empty())
-            classes[std::to_string(i)] = names[i];
-    manifest["classes"] = classes;
-    manifest["samples"] = "samples/NNNNNN.png, and beside each its labels (docs/LABELS.md); a sample is done when "
-                          "its .json is there";
-    std::error_code error;
-    if (fs::exists(path, error)) {
-        Json existing;
+    try {
+        return loadSceneOrDefault(path.string());
+    } catch (const InputError& e) {
+        if (e.place().line > 0 || e.place().path != path.string())
+            throw;
+        throw InputError(sweep.scenePlace, fmt::format("scene: '{}': {}", path.string(), e.message()));
+    }
+}
+
+// The keys whose values decide whether a lens can draw the sweep's size.
+bool variesTheLens(const Sweep& sweep)
+{
+    return std::any_of(sweep.vary.begin(), sweep.vary.end(), [](const SweepKey& k) {
+        return k.key.starts_with("camera.distortion_") || k.key == "camera.fov_y_deg";
+    });
+}
+
+// Every sample of the shard as drawn, refused (at the varied key's line in
+// the sweep where one is to blame) before anything is made: its scene's
+// checks, its lens at the sweep's size, and its history's cost.
+void checkSamples(const Sweep& sweep, const Scene& base, const fs::path& scenePath, int shard, int shards)
+{
+    const bool eachLens = variesTheLens(sweep);
+    if (!eachLens)
+        checkLens(base, sweep.size, base.camera.fovY_deg, scenePath);
+    for (int i = shard - 1; i < sweep.count; i += shards) {
+        const SweepSample sample = sweepSample(sweep, base, i);
         try {
-            existing = Json::parse(readFileBytes(path));
-        } catch (const std::exception& e) {
-            throw InputError({path.string()}, fmt::format("not a dataset manifest: {}", e.what()));
+            // As a change of the base scene (valid already): the files and the
+            // wave set are checked again only where a varied key changes them.
+            validateSceneChange(base, sample.scene, scenePath);
+            if (eachLens)
+                checkLens(sample.scene, sweep.size, sample.scene.camera.fovY_deg, scenePath);
+        } catch (const InputError& e) {
+            throw InputError(e.place(), fmt::format("sample {}, as the sweep draws it: {}", i, e.message()));
         }
-        if (existing.value("format", "") != kDatasetFormat || existing.value("sweep", "") != sweep.text)
-            throw InputError({"--out"}, fmt::format("'{}' holds another sweep's dataset (its manifest.json records a "
-                                                    "different sweep file): give another folder",
-                                                    out.string()));
+        if (const std::string problem = historyProblem(sample.scene, sample.time_s); !problem.empty())
+            throw InputError(sweep.timePlace, fmt::format("time_s: sample {} at {}", i, problem));
+    }
+}
+
+// Ctrl-C, SIGTERM and SIGHUP held off while one sample's files (or the
+// COCO file) are written, so that a run stopped that way never leaves part
+// of a sample: a stop that comes then is kept, and acted on (the default
+// action: the process ends) once the files are in place. Any other time it
+// acts at once. Whichever thread the signal reaches (the renderer has
+// threads of its own), the handler decides.
+std::atomic<bool> writing{false};
+volatile sig_atomic_t heldStop = 0;
+
+void onStop(int signal)
+{
+    if (writing.load()) {
+        heldStop = signal;
         return;
     }
-    writeFileAtomically(path, manifest.dump(2) + "\n");
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+class HoldStops {
+public:
+    HoldStops()
+    {
+        static const bool installed = [] {
+            for (int s : {SIGINT, SIGTERM, SIGHUP})
+                std::signal(s, onStop);
+            return true;
+        }();
+        (void)installed;
+        writing.store(true);
+    }
+    ~HoldStops()
+    {
+        writing.store(false);
+        if (const int s = heldStop) {
+            std::signal(s, SIG_DFL);
+            std::raise(s);
+        }
+    }
+    HoldStops(const HoldStops&) = delete;
+    HoldStops& operator=(const HoldStops&) = delete;
+};
+
+void writeSample(const fs::path& out, int i, const Sweep& sweep, const SweepSample& sample, const Renderer& renderer,
+                 const Camera& camera, SensorFrame& sensor)
+{
+    const fs::path png = samplePng(out, i);
+    FrameLabels labels;
+    if (sensor.labels) {
+        labels = *sensor.labels;
+    } else {
+        labels.size = sweep.size;
+        labels.camera = calibrationOf(camera, sweep.size);
+        const LensDistortion lens = lensOf(sample.scene.camera);
+        labels.camera.k1 = lens.k1;
+        labels.camera.k2 = lens.k2;
+        labels.camera.k3 = lens.k3;
+        labels.camera.p1 = lens.p1;
+        labels.camera.p2 = lens.p2;
+        labels.horizon = horizonOf(labels.camera);
+        labels.classes = labelClassesOf(sample.scene);
+    }
+    Json json = frameJson(labels, sample.scene, sample.time_s, 4.0 * renderer.waveModel().heightDeviation_m(), png);
+    json["sample"] = i;
+    Json varied = Json::object();
+    for (std::size_t k = 0; k < sweep.vary.size(); ++k)
+        varied[sweep.vary[k].key] = sweptValueJson(sweep.vary[k], sample.values[k]);
+    json["varied"] = varied;
+    const HoldStops hold;
+    try {
+        writePngAtomically(sensor.image, png);
+        if (sensor.labels)
+            writeLabelArrays(labels, png);
+        writeFrameJson(json, png); // last: the sample is done
+    } catch (...) {
+        removeSample(out, i); // a disk that filled half way: none of the sample stays
+        throw;
+    }
+}
+
+void renderSamples(const fs::path& out, const Sweep& sweep, const Scene& base, const std::vector<int>& todo)
+{
+    gl::HeadlessContext context(true);
+    gl::DebugHandler debug = gl::logOnceDebugHandler();
+    gl::installDebugHandler(&debug);
+    std::unique_ptr<Renderer> renderer;
+    Progress progress("rendering samples", int(todo.size()));
+    for (int i : todo) {
+        const SweepSample sample = sweepSample(sweep, base, i);
+        // One renderer for the shard: a new sample rebuilds only what its
+        // values change (the wave model for a new wind, not the programs).
+        if (!renderer)
+            renderer = std::make_unique<Renderer>(sample.scene);
+        else
+            renderer->setScene(sample.scene);
+        const Camera camera = renderer->sceneCameraAt(sample.time_s);
+        SensorFrame sensor = renderSensorFrame(*renderer, camera, sample.time_s, sweep.size, sweep.labels);
+        writeSample(out, i, sweep, sample, *renderer, camera, sensor);
+        progress.advance();
+    }
+    progress.finish();
 }
 
 } // namespace
 
 int runDataset(const DatasetOptions& options)
 {
-    const Sweep sweep = loadSweepFile(options.sweepPath);
-    // The base scene: beside the sweep file, else a preset of that name.
-    fs::path scenePath = sweep.file.parent_path() / sweep.scene;
-    std::error_code error;
-    if (!fs::exists(scenePath, error)) {
-        try {
-            scenePath = resolveScenePath(sweep.scene, options.presets);
-        } catch (const InputError& e) {
-            throw InputError(sweep.scenePlace, fmt::format("scene: {}", e.message()));
-        }
-    }
-    const Scene base = loadSceneOrDefault(scenePath.string());
-    checkSweep(sweep, base);
-    // Each sample is a still: its bodies are stepped from their start.
-    checkSteppedHistory(base, sweep.timeMax_s, fmt::format("{}: time_s", sweep.file.string()));
+    // The whole request, checked before anything is made.
     const auto [shard, shards] = parseShard(options.shard);
+    if (options.out.empty())
+        throw InputError({"--out"}, "the dataset's folder is empty: give a folder (made when missing)");
+    const Sweep sweep = loadSweepFile(options.sweepPath);
+    const fs::path scenePath = baseScenePath(sweep, options.presets);
+    const Scene base = loadBaseScene(sweep, scenePath);
+    checkSweep(sweep, base);
+    checkSamples(sweep, base, scenePath, shard, shards);
     const fs::path out = options.out;
-    prepareOut(out);
-    checkManifest(out, sweep, base);
+    checkOutputFolder(out, sweep);
 
+    prepareOutputFolder(out, sweep, base);
+    removeOrphanedTemporaries(out);
+    // What this shard renders: each of its samples not done, and a broken
+    // one (a file cut short, emptied, or another sweep's) said and removed.
     std::vector<int> todo;
     int done = 0;
     for (int i = shard - 1; i < sweep.count; i += shards) {
-        if (fs::exists(labelFilePaths(samplePng(out, i))[5], error))
+        const std::string why = sampleNotDone(out, i, sweep, sweepSample(sweep, base, i));
+        if (why.empty()) {
             ++done;
-        else
-            todo.push_back(i);
-    }
-    // A run killed while writing leaves its temporary files (".NAME.*.tmp",
-    // swell/dataset/atomic_file.h): those of the samples this shard renders again
-    // go (no other shard writes them).
-    std::set<std::string> again;
-    for (int i : todo)
-        again.insert(fmt::format(".{:06d}.", i));
-    for (const fs::directory_entry& e : fs::directory_iterator(out / "samples", error)) {
-        const std::string name = e.path().filename().string();
-        if (name.size() > 8 && name.ends_with(".tmp") && again.count(name.substr(0, 8)))
-            fs::remove(e.path(), error);
+            continue;
+        }
+        std::error_code error;
+        if (fs::exists(labelFilePaths(samplePng(out, i)).back(), error))
+            std::fprintf(stderr, "swell: sample %d is not whole (%s): %s\n", i, why.c_str(),
+                         options.dryRun ? "it would be rendered again" : "rendering it again");
+        if (!options.dryRun)
+            removeSample(out, i);
+        todo.push_back(i);
     }
     std::fprintf(stderr, "swell: shard %d/%d of %s: %d samples to render, %d done already\n", shard, shards,
                  sweep.file.string().c_str(), int(todo.size()), done);
-
     if (options.dryRun)
         return kExitOk;
+    std::error_code error;
     if (!todo.empty()) {
-        gl::HeadlessContext context(true);
-        gl::DebugHandler debug = gl::logOnceDebugHandler();
-        gl::installDebugHandler(&debug);
-        std::unique_ptr<Renderer> renderer;
-        Progress progress("rendering samples", int(todo.size()));
-        for (int i : todo) {
-            const SweepSample sample = sweepSample(sweep, base, i);
-            try {
-                validateScene(sample.scene, scenePath);
-            } catch (const InputError& e) {
-                throw InputError({sweep.file.string()}, fmt::format("sample {}: the drawn values make a scene that "
-                                                                  "is refused: {}",
-                                                                  i, e.what()));
-            }
-            // One renderer for the shard: a new sample rebuilds only what its
-            // values change (the wave model for a new wind, not the programs).
-            if (!renderer)
-                renderer = std::make_unique<Renderer>(sample.scene);
-            else
-                renderer->setScene(sample.scene);
-            const Camera camera = renderer->sceneCameraAt(sample.time_s);
-            const fs::path png = samplePng(out, i);
-            const SensorFrame sensor = renderSensorFrame(*renderer, camera, sample.time_s, sweep.size, sweep.labels);
-            writePngAtomically(sensor.image, png);
-            FrameLabels labels;
-            if (sensor.labels) {
-                labels = *sensor.labels;
-                writeLabelArrays(labels, png);
-            } else {
-                labels.size = sweep.size;
-                labels.camera = calibrationOf(camera, sweep.size);
-                const LensDistortion lens = lensOf(sample.scene.camera);
-                labels.camera.k1 = lens.k1;
-                labels.camera.k2 = lens.k2;
-                labels.camera.k3 = lens.k3;
-                labels.camera.p1 = lens.p1;
-                labels.camera.p2 = lens.p2;
-                labels.horizon = horizonOf(labels.camera);
-                labels.classes = labelClassesOf(sample.scene);
-            }
-            Json json = frameJson(labels, sample.scene, sample.time_s, 4.0 * renderer->waveModel().heightDeviation_m(), png);
-            json["sample"] = i;
-            Json varied = Json::object();
-            for (const SweepKey& k : sweep.vary)
-                varied[k.key] = sampleValueJson(sample.scene, k.key);
-            json["varied"] = varied;
-            writeFrameJson(json, png); // last: the sample is done
-            progress.advance();
-        }
-        progress.finish();
+        fs::remove(out / "coco.json", error); // it describes samples that are not all there
+        renderSamples(out, sweep, base, todo);
     }
 
     // Every sample of every shard done: the dataset's COCO file.
     for (int i = 0; i < sweep.count; ++i)
-        if (!fs::exists(labelFilePaths(samplePng(out, i))[5], error)) {
+        if (!sampleNotDone(out, i, sweep, sweepSample(sweep, base, i)).empty()) {
+            fs::remove(out / "coco.json", error);
             std::printf("%s\n", fs::absolute(out).c_str());
             return kExitOk;
         }
-    if (sweep.labels)
-        writeFileAtomically(out / "coco.json", cocoJson(out, sweep.count, labelClassesOf(base)).dump() + "\n");
+    if (sweep.labels) {
+        const std::string coco = cocoJson(out, sweep.count, labelClassesOf(base)).dump() + "\n";
+        const HoldStops hold;
+        writeFileAtomically(out / "coco.json", coco);
+    }
     std::printf("%s\n", fs::absolute(out).c_str());
     return kExitOk;
 }

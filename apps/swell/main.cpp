@@ -6,6 +6,7 @@
 #include "scene_loading.h"
 
 #include "swell/error.h"
+#include "swell/frame_request.h"
 #include "swell/renderer.h"
 #include "swell/scene/parameters.h"
 
@@ -30,8 +31,8 @@ void parseSize(const std::string& text, int& width, int& height)
         throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 1280x720, got '" + text + "'");
     width = std::stoi(m[1]);
     height = std::stoi(m[2]);
-    if (width < 1 || height < 1 || width > 16384 || height > 16384)
-        throw CLI::ValidationError("--size", "each side must be 1..16384 pixels, got '" + text + "'");
+    if (width < 1 || height < 1 || width > swell::kMaxFrameSide || height > swell::kMaxFrameSide)
+        throw CLI::ValidationError("--size", swell::frameSizeMessage(text));
 }
 
 // A number from `lo` to `hi`: finite (range checks alone let NaN through, as
@@ -41,7 +42,6 @@ CLI::Validator numberIn(double lo, double hi)
 {
     CLI::Validator check(
         [lo, hi](std::string& text) {
-            const std::string range = fmt::format("{:g} to {:g}", lo, hi);
             try {
                 size_t used = 0;
                 const double value = std::stod(text, &used);
@@ -49,7 +49,7 @@ CLI::Validator numberIn(double lo, double hi)
                     return std::string();
             } catch (const std::exception&) {
             }
-            return fmt::format("must be a number from {}, got '{}'", range, text);
+            return swell::outsideRangeMessage(text, lo, hi);
         },
         fmt::format("{:g}..{:g}", lo, hi));
     return check;
@@ -185,7 +185,7 @@ int main(int argc, char** argv)
     renderCommand->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
     renderCommand->add_option("--time", render.time_s, "Simulation time of the first frame, seconds")
         ->type_name("SECONDS")
-        ->check(numberIn(0.0, 1.0e9))
+        ->check(numberIn(0.0, swell::kMaxFrameTime_s))
         ->capture_default_str();
     renderCommand->add_option("--duration", duration, "Render a sequence this many seconds long")
         ->type_name("SECONDS")

@@ -8,6 +8,7 @@
 #include "swell/camera.h"
 #include "swell/dataset/sensor.h"
 #include "swell/error.h"
+#include "swell/frame_request.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
 
@@ -128,11 +129,13 @@ int runRender(const RenderOptions& options)
     if (video && !programOnPath("ffmpeg"))
         throw InputError({"--output"}, "writing .mp4 needs the ffmpeg program, which is not installed "
                                        "(apt-get install ffmpeg), or write a PNG sequence instead");
-    createOutputFolder(output);
-
     Scene scene = loadSceneOrDefault(options.scenePath);
     options.outputSettings.applyTo(scene);
-    checkSteppedHistory(scene, options.time_s, "--time");
+    if (const std::string problem = historyProblem(scene, options.time_s); !problem.empty())
+        throw InputError({"--time"}, problem);
+    checkLens(scene, {options.width, options.height}, scene.camera.fovY_deg, options.scenePath);
+    // Everything checked: only now is anything made on disk.
+    createOutputFolder(output);
     gl::HeadlessContext context(true);
     gl::DebugHandler debug = gl::logOnceDebugHandler();
     gl::installDebugHandler(&debug);

@@ -62,33 +62,4 @@ Scene loadSceneOrDefault(const std::string& path)
     return scene;
 }
 
-
-void checkSteppedHistory(const Scene& scene, double time_s, std::string_view where)
-{
-    // Floating bodies are stepped from their start (history_start_s, by
-    // default 60 s before t = 0) at 1/120 s (docs/BODIES.md): an hour of
-    // steps is about a minute of CPU per body, so a first frame much later
-    // would look like a hang. Their wake steps too, at 1/30 s and about 5 ms
-    // a step (docs/PERFORMANCE.md): 10 minutes of it is a minute and a half.
-    // The limits hold the time stepped, from the start to the frame: with
-    // the default start, a frame after 3600 s (600 s with a wake).
-    constexpr double kLongestBodyHistory_s = 3600.0 + kDevelopedHistory_s;
-    constexpr double kLongestWakeHistory_s = 600.0 + kDevelopedHistory_s;
-    const bool bodies = std::any_of(scene.objects.begin(), scene.objects.end(),
-                                    [](const SceneObject& o) { return o.isRigidBody(); });
-    const bool wake = scene.wake.enabled && std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
-                          return o.isRigidBody() && (o.velocity_m_per_s.x != 0.0 || o.velocity_m_per_s.z != 0.0);
-                      });
-    const double stepped_s = time_s - bodiesStart_s(scene);
-    if (bodies && stepped_s > kLongestBodyHistory_s)
-        throw InputError({std::string(where)}, fmt::format("{} s: the scene's floating bodies are stepped from their start at {} s, "
-                                                 "so a first frame more than {} s after it is refused",
-                                                 time_s, bodiesStart_s(scene), kLongestBodyHistory_s));
-    if (wake && stepped_s > kLongestWakeHistory_s)
-        throw InputError({std::string(where)}, fmt::format("{} s: the wake of the scene's bodies under way is stepped from their "
-                                                 "start at {} s, so a first frame more than {} s after it is refused "
-                                                 "(or set wake.enabled = false)",
-                                                 time_s, bodiesStart_s(scene), kLongestWakeHistory_s));
-}
-
 } // namespace swell::app

@@ -18,11 +18,6 @@ namespace swell::app {
 // presets when neither exists.
 std::string resolveScenePath(const std::string& argument, const std::filesystem::path& presets);
 
-// Refuses (swell::InputError at `where`) a first frame at time_s whose
-// floating bodies, or their wake, would be stepped from their start for
-// longer than a user waits: an hour of body steps, ten minutes of wake.
-void checkSteppedHistory(const Scene& scene, double time_s, std::string_view where);
-
 // Throws swell::InputError for a bad scene file.
 Scene loadSceneOrDefault(const std::string& path);
 

@@ -5,6 +5,12 @@
 // buffers out as NumPy arrays that own the library's vector (no copy).
 #pragma once
 
+#include "constructed.h"
+
+#include "swell/camera.h"
+#include "swell/dataset/labels.h"
+#include "swell/frame_request.h"
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -21,6 +27,19 @@ namespace swell::python {
 
 namespace py = pybind11;
 
+// A Python number as a double; TypeError naming `name` for one that will
+// not be one (an int past 1.8e308, an object whose __float__ raises, a
+// complex or empty array).
+inline double numberOf(py::handle value, const std::string& name)
+{
+    try {
+        return value.cast<double>();
+    } catch (const py::cast_error&) {
+        throw py::type_error(name + ": expected a number that is a double (at most 1.8e308 in size), got "
+                             + std::string(py::str(py::type::of(value).attr("__name__"))));
+    }
+}
+
 // The numbers of a sequence of exactly `n`; TypeError naming `name` otherwise.
 inline std::vector<double> numbersOf(py::handle value, std::size_t n, const std::string& name)
 {
@@ -34,7 +53,7 @@ inline std::vector<double> numbersOf(py::handle value, std::size_t n, const std:
         if (py::isinstance<py::bool_>(item) || !(py::isinstance<py::float_>(item) || py::isinstance<py::int_>(item)
                                                   || py::hasattr(item, "__float__")))
             throw py::type_error(name + ": expected numbers, got " + std::string(py::str(py::type::of(item).attr("__name__"))));
-        out.push_back(item.cast<double>());
+        out.push_back(numberOf(item, name));
     }
     return out;
 }
@@ -51,16 +70,27 @@ inline glm::dvec2 toVec2(py::handle value, const std::string& name)
     return {v[0], v[1]};
 }
 
-// An image size (width, height), pixels: whole numbers 1..16384 a side, as
-// `swell render --size` takes them; ValueError otherwise.
+// An image size (width, height), pixels: whole numbers 1..kMaxFrameSide a
+// side, as `swell render --size` takes them, with its message; ValueError
+// otherwise.
 inline glm::ivec2 imageSize(py::handle size)
 {
     const glm::dvec2 s = toVec2(size, "size");
     const bool whole = s.x == std::floor(s.x) && s.y == std::floor(s.y);
-    if (!(whole && s.x >= 1.0 && s.x <= 16384.0 && s.y >= 1.0 && s.y <= 16384.0))
-        throw py::value_error("size: (width, height), each a whole number of pixels 1..16384, got ("
-                              + std::string(py::str(py::float_(s.x))) + ", " + std::string(py::str(py::float_(s.y))) + ")");
+    const double most = kMaxFrameSide;
+    if (!(whole && s.x >= 1.0 && s.x <= most && s.y >= 1.0 && s.y <= most))
+        throw py::value_error("size: " + frameSizeMessage(std::string(py::repr(size))));
     return {int(s.x), int(s.y)};
+}
+
+// A frame's time, s: 0..kMaxFrameTime_s, as `swell render --time` takes it,
+// with its message; ValueError otherwise.
+inline double frameTime(double time_s)
+{
+    if (!(time_s >= 0.0 && time_s <= kMaxFrameTime_s))
+        throw py::value_error("time_s: "
+                              + outsideRangeMessage(std::string(py::repr(py::float_(time_s))), 0.0, kMaxFrameTime_s));
+    return time_s;
 }
 
 inline py::tuple toTuple(glm::dvec3 v) { return py::make_tuple(v.x, v.y, v.z); }
@@ -107,3 +137,8 @@ py::array_t<Element> arrayOwning(std::vector<T>&& data, const std::vector<py::ss
 }
 
 } // namespace swell::python
+
+SWELL_PYTHON_CONSTRUCTED_ONLY(swell::Camera)
+SWELL_PYTHON_CONSTRUCTED_ONLY(swell::CameraCalibration)
+SWELL_PYTHON_CONSTRUCTED_ONLY(swell::HorizonLine)
+SWELL_PYTHON_CONSTRUCTED_ONLY(swell::ObjectLabel)

@@ -1,11 +1,14 @@
 // libswell's errors as Python exceptions with the same message:
 // swell::Error is swell.Error (a RuntimeError), swell::InputError is
-// swell.InputError (a swell.Error), carrying the place as attributes.
+// swell.InputError (a swell.Error), carrying the place as attributes; any
+// other exception from the library is swell.Error too (only the bindings'
+// own argument errors and MemoryError are Python's).
 #include "bindings.h"
 
 #include "swell/error.h"
 
 #include <exception>
+#include <new>
 
 namespace swell::python {
 
@@ -41,6 +44,16 @@ void bindErrors(py::module_& m)
             exception.attr("message") = e.message();
             PyErr_SetObject(inputError->ptr(), exception.ptr());
         } catch (const Error& e) {
+            PyErr_SetString(error->ptr(), e.what());
+        } catch (const py::builtin_exception&) {
+            throw; // the bindings' own TypeError, ValueError, KeyError...: as pybind11 raises them
+        } catch (const py::error_already_set&) {
+            throw;
+        } catch (const std::bad_alloc&) {
+            throw; // MemoryError
+        } catch (const std::exception& e) {
+            // Whatever else the library lets through (a standard library
+            // error, a filesystem error) is still the library's error.
             PyErr_SetString(error->ptr(), e.what());
         }
     });

@@ -3,6 +3,8 @@
 // gives it.
 #pragma once
 
+#include "constructed.h"
+
 #include "swell/dataset/labels.h"
 
 #include <pybind11/numpy.h>
@@ -30,3 +32,5 @@ struct PyLabels {
 PyLabels toPython(FrameLabels&& labels);
 
 } // namespace swell::python
+
+SWELL_PYTHON_CONSTRUCTED_ONLY(swell::python::PyLabels)

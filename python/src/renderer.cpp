@@ -18,6 +18,7 @@
 #include "swell/dataset/sensor.h"
 #include "swell/error.h"
 #include "swell/flat_model.h"
+#include "swell/frame_request.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
 #include "swell/scene/scene_file.h"
@@ -54,12 +55,6 @@ std::shared_ptr<SharedContext> sharedContext()
     return context;
 }
 
-double finiteTime(double time_s)
-{
-    if (!std::isfinite(time_s))
-        throw py::value_error("time_s must be finite, got " + std::string(py::str(py::float_(time_s))));
-    return time_s;
-}
 
 // f(x, z) over NumPy's broadcast of x and z: a float for two scalars, else an
 // array of the broadcast shape. Runs without the GIL.
@@ -69,7 +64,13 @@ py::object mapXZ(py::handle x, py::handle z, F f)
     const bool scalars = !py::isinstance<py::array>(x) && !py::isinstance<py::sequence>(x)
                          && !py::isinstance<py::array>(z) && !py::isinstance<py::sequence>(z);
     const py::module_ np = py::module_::import("numpy");
-    const py::tuple both = np.attr("broadcast_arrays")(np.attr("asarray")(x, "float64"), np.attr("asarray")(z, "float64"));
+    py::tuple both;
+    try {
+        both = np.attr("broadcast_arrays")(np.attr("asarray")(x, "float64"), np.attr("asarray")(z, "float64"));
+    } catch (const py::error_already_set& e) {
+        // An int past a double's range (OverflowError), text, shapes that do not broadcast.
+        throw py::type_error(std::string("x_m, z_m: numbers or arrays of numbers that broadcast together: ") + e.what());
+    }
     const auto xs = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(both[0]);
     const auto zs = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(both[1]);
     py::array_t<double> out(std::vector<py::ssize_t>(xs.shape(), xs.shape() + xs.ndim()));
@@ -148,6 +149,9 @@ public:
     double renderScale() const { return renderer_->renderScale(); }
     void setRenderScale(double scale)
     {
+        if (!(scale >= kMinRenderScale && scale <= kMaxRenderScale))
+            throw InputError({"render_scale"}, outsideRangeMessage(std::string(py::repr(py::float_(scale))),
+                                                                   kMinRenderScale, kMaxRenderScale));
         use();
         renderer_->setRenderScale(scale);
     }
@@ -156,7 +160,7 @@ public:
     {
         const glm::ivec2 s = imageSize(size);
         checkCamera(camera);
-        finiteTime(time_s);
+        checkSteps(frameTime(time_s));
         use();
         Image image;
         {
@@ -185,7 +189,7 @@ public:
     {
         const glm::ivec2 s = imageSize(size);
         checkCamera(camera);
-        finiteTime(time_s);
+        checkSteps(frameTime(time_s));
         use();
         SensorFrame frame;
         {
@@ -199,7 +203,10 @@ public:
 
     Camera sceneCameraAt(double time_s)
     {
-        finiteTime(time_s);
+        frameTime(time_s);
+        // A camera on a floating body stands where the body is stepped to.
+        if (renderer_->scene().camera.mountObject >= 0)
+            checkSteps(time_s);
         use();
         py::gil_scoped_release release;
         return renderer_->sceneCameraAt(time_s);
@@ -207,7 +214,7 @@ public:
 
     void advanceTo(double time_s, py::handle viewpoint)
     {
-        finiteTime(time_s);
+        checkSteps(frameTime(time_s));
         const glm::dvec3 v = viewpoint.is_none() ? cameraAt(renderer_->scene().camera, time_s).position_m
                                                  : toVec3(viewpoint, "viewpoint_m");
         if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
@@ -235,7 +242,7 @@ public:
 
     py::object surfaceHeight(py::handle x_m, py::handle z_m, double time_s)
     {
-        finiteTime(time_s);
+        frameTime(time_s);
         use();
         const SurfaceQuery& model = renderer_->waveModel();
         const SeaFrame sea = seaFrameOf(renderer_->scene());
@@ -281,6 +288,16 @@ private:
             throw Error(std::string("swell.Renderer.") + what + ": nothing simulated yet; call advance_to() or render() first");
     }
 
+    // Refuses, as `swell render` does, a time whose bodies would be stepped
+    // for longer than a still may take (swell/frame_request.h): from where
+    // the simulation stands when time_s is later, else from their start.
+    void checkSteps(double time_s) const
+    {
+        if (const std::string problem = historyProblem(renderer_->scene(), time_s, renderer_->simulatedTime_s());
+            !problem.empty())
+            throw py::value_error("time_s: " + problem);
+    }
+
     static void checkCamera(const Camera& camera)
     {
         if (!(camera.near_m < camera.far_m))
@@ -296,6 +313,12 @@ private:
 };
 
 } // namespace
+} // namespace swell::python
+
+SWELL_PYTHON_CONSTRUCTED_ONLY(swell::python::PyRenderer)
+SWELL_PYTHON_CONSTRUCTED_ONLY(swell::python::PyDrawnSurface)
+
+namespace swell::python {
 
 void bindRenderer(py::module_& m)
 {

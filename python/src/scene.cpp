@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 
 namespace swell::python {
 
@@ -114,7 +115,7 @@ ParameterValue toParameterValue(const Parameter& p, py::handle v, const std::str
         if (isBool(v) || !PyNumber_Check(v.ptr()) || !py::hasattr(v, "__float__"))
             throw py::type_error(name + ": expected a number" + (p.unit.empty() ? "" : " (" + std::string(p.unit) + ")")
                                  + ", got " + typeName(v));
-        value = v.cast<double>();
+        value = numberOf(v, name);
         break;
     case ParameterKind::Integer: {
         if (isBool(v) || !PyIndex_Check(v.ptr()))
@@ -157,7 +158,7 @@ ParameterValue toParameterValue(const Parameter& p, py::handle v, const std::str
         if (isBool(v) || !PyNumber_Check(v.ptr()) || !py::hasattr(v, "__float__"))
             throw py::type_error(name + ": expected seconds since 1970-01-01T00:00:00Z (datetime.timestamp()), got "
                                  + typeName(v));
-        value = v.cast<double>();
+        value = numberOf(v, name);
         break;
     }
     if (const std::string problem = valueProblem(p, value, name); !problem.empty())
@@ -199,6 +200,23 @@ void setValue(PyScene& s, const std::string& key, py::handle value)
 {
     const ResolvedKey k = resolveKey(s.scene, key);
     k.parameter->set(s.scene, k.item, toParameterValue(*k.parameter, value, key));
+    // The file no longer says this value: a check that refuses it names the key, not the file's line.
+    const Parameter& p = *k.parameter;
+    const std::string_view list = listKey(p.list);
+    s.scene.keyPlaces.erase(p.list == ParameterList::None
+                                ? std::string(p.key)
+                                : std::string(list) + "[" + std::to_string(k.item) + "]" + std::string(p.key.substr(list.size())));
+}
+
+// After objects[index] is removed the later objects move down one: the
+// places of every object from there on no longer say where their keys are.
+void forgetObjectPlaces(Scene& scene, std::size_t from)
+{
+    for (auto it = scene.keyPlaces.begin(); it != scene.keyPlaces.end();) {
+        std::size_t item = 0;
+        const bool object = it->first.starts_with("objects[") && std::sscanf(it->first.c_str(), "objects[%zu]", &item) == 1;
+        it = object && item >= from ? scene.keyPlaces.erase(it) : std::next(it);
+    }
 }
 
 std::string_view kindName(ParameterKind kind)
@@ -289,6 +307,7 @@ void bindScene(py::module_& m)
                      throw py::index_error("objects[" + std::to_string(index) + "]: the scene has "
                                            + std::to_string(s.scene.objects.size()) + " objects");
                  s.scene.objects.erase(s.scene.objects.begin() + std::ptrdiff_t(index));
+                 forgetObjectPlaces(s.scene, index);
              },
              py::arg("index"), "Removes objects[index]; later objects move down one.")
         .def("object_path", [](const PyScene& s, std::size_t index) {
@@ -301,7 +320,7 @@ void bindScene(py::module_& m)
         .def("validate", [](const PyScene& s) { validateScene(s.scene, s.placeForErrors()); },
              "Checks what a renderer relies on: every value in range, the cross-field rules, the files "
              "the scene names, the wave set. Raises swell.InputError naming the key.")
-        .def("camera_at", [](const PyScene& s, double time_s) { return cameraAt(s.scene.camera, time_s); },
+        .def("camera_at", [](const PyScene& s, double time_s) { return cameraAt(s.scene.camera, frameTime(time_s)); },
              py::arg("time_s") = 0.0, "The scene's camera at time_s: its fixed pose, or its path interpolated.")
         .def("to_toml", [](const PyScene& s) { return saveScene(s.scene); },
              "The scene as scene-file TOML, every value with its unit and range in a comment.")

@@ -2,6 +2,8 @@
 // so that the checks made before rendering name that file.
 #pragma once
 
+#include "constructed.h"
+
 #include "swell/scene/scene.h"
 
 #include <filesystem>
@@ -24,3 +26,5 @@ struct PyScene {
 };
 
 } // namespace swell::python
+
+SWELL_PYTHON_CONSTRUCTED_ONLY(swell::python::PyScene)

@@ -12,7 +12,9 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 
 namespace swell {
@@ -21,10 +23,21 @@ void writePng(const Image& image, const std::filesystem::path& path)
 {
     if (image.width <= 0 || image.height <= 0)
         throw Error("swell::writePng(): cannot write an empty image to " + path.string());
-    if (path.has_parent_path())
-        std::filesystem::create_directories(path.parent_path());
+    if (image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
+        throw Error(fmt::format("swell::writePng(): {}x{} pixels need {} bytes of RGBA, the image holds {}", image.width,
+                                image.height, std::size_t(image.width) * std::size_t(image.height) * 4,
+                                image.rgba.size()));
+    if (path.has_parent_path()) {
+        std::error_code error;
+        std::filesystem::create_directories(path.parent_path(), error);
+        if (error)
+            throw Error(fmt::format("swell::writePng(): cannot write {}: cannot create its folder {}: {}", path.string(),
+                                    path.parent_path().string(), error.message()));
+    }
+    errno = 0;
     if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4))
-        throw Error("swell::writePng(): cannot write " + path.string());
+        throw Error(fmt::format("swell::writePng(): cannot write {}{}", path.string(),
+                                errno ? ": " + std::string(std::strerror(errno)) : std::string()));
 }
 
 Image readImage(const std::filesystem::path& path)

@@ -371,7 +371,7 @@ std::vector<Parameter> buildTable()
             .sliderMax = 1.0, .description = "moving floating rigid bodies leave wakes (waves and foam)"}),
         at([](auto& s, std::size_t) -> auto& { return s.wake.cells; },
            {.key = "wake.cells", .kind = K::Integer, .effect = E::Bodies, .min = 32.0, .max = 1024.0, .sliderMin = 32.0, .sliderMax = 1024.0,
-            .logarithmic = true, .description = "wake field cells along each side (CPU cost grows as cells^2 log cells)"}),
+            .logarithmic = true, .description = "wake field cells along each side, rounded up to a product of 2, 3 and 5 (CPU cost grows as cells^2 log cells)"}),
         at([](auto& s, std::size_t) -> auto& { return s.wake.cellSize_m; },
            {.key = "wake.cell_size_m", .effect = E::Bodies, .unit = "m", .min = 0.1, .max = 10.0, .sliderMin = 0.25, .sliderMax = 4.0,
             .logarithmic = true, .description = "wake field cell size: waves shorter than 2 cells are not carried"}),

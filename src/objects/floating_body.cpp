@@ -19,6 +19,7 @@
 // Hydrodynamics, MIT Press, ch. 4).
 #include "swell/floating_body.h"
 
+#include "objects/hull_simplify.h"
 #include "objects/hydrostatics.h"
 #include "swell/constants.h"
 #include "swell/error.h"
@@ -179,13 +180,17 @@ FloatingBody::FloatingBody(const BodyShape& shape, const BodySettings& settings,
                        mass_kg_ * (glm::dot(o, o) * glm::dmat3(1.0) - glm::outerProduct(o, o));
     }
 
-    // The shape about its centre of mass.
-    points_m_.reserve(shape.positions_m.size());
-    for (const glm::dvec3& p : shape.positions_m) {
+    // The shape about its centre of mass, with at most
+    // kMaxHydrostaticTriangles for the pressure's sum (hull_simplify.h).
+    for (const glm::dvec3& p : shape.positions_m)
+        reach_m_ = std::max(reach_m_, glm::length(p - centerOfMassInShape_m_));
+    const BodyShape hull = detail::hydrostaticHull(shape, props.volume_m3, props.centroid_m);
+    points_m_.reserve(hull.positions_m.size());
+    for (const glm::dvec3& p : hull.positions_m) {
         points_m_.push_back(p - centerOfMassInShape_m_);
-        reach_m_ = std::max(reach_m_, glm::length(points_m_.back()));
+        reach_m_ = std::max(reach_m_, glm::length(points_m_.back())); // scaled to the volume, a hair further out
     }
-    indices_ = shape.indices; // wound outwards: massPropertiesOf() refuses a shape wound inside out
+    indices_ = hull.indices; // wound outwards: massPropertiesOf() refuses a shape wound inside out
 
     // At rest at t = 0: the heave that balances the weight, found by
     // bisection (the buoyancy only grows as the body goes down).

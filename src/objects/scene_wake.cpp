@@ -13,12 +13,12 @@ namespace {
 WakeFieldSettings fieldSettings(const WakeSettings& s, double depth_m)
 {
     WakeFieldSettings f;
-    f.cells = s.cells;
+    f.cells = fastWakeCells(s.cells);
     f.cellSize_m = s.cellSize_m;
     f.depth_m = depth_m;
     // An eighth of the grid each side: room for the waves to die out, and
     // three quarters of it left for the wake.
-    f.spongeCells = std::max(4, s.cells / 8);
+    f.spongeCells = std::max(4, f.cells / 8);
     return f;
 }
 

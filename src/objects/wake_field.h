@@ -69,6 +69,12 @@ struct WakeModes {
     std::vector<float> cosStep, sinStep, kOverOmega, gOverOmega;
 };
 
+// The wake's grid for `cells` asked: the next size up whose prime factors
+// are 2, 3 and 5 (kissfft's fast radices), so that its FFTs cost about
+// n^2 log n: 1021, a prime, would cost about 100 times 1024's, and is drawn
+// as 1024; every power of two, 300, 1000... as they are.
+int fastWakeCells(int cells);
+
 // A body's footprint on the water: a smooth hollow of volume volume_m3,
 // D = D0 (1 - u^2)^2 (1 - v^2)^2 for |u|, |v| < 1, u along the heading over
 // halfLength_m and v across it over halfBeam_m (a Wigley-like hull whose

@@ -3,10 +3,31 @@
 
 #include "swell/constants.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace swell::detail {
+
+namespace {
+
+constexpr double kSlowestWake_rad_per_s = 1e-9;
+
+} // namespace
+
+int fastWakeCells(int cells)
+{
+    const auto fast = [](int n) {
+        for (int p : {2, 3, 5})
+            while (n > 1 && n % p == 0)
+                n /= p;
+        return n == 1;
+    };
+    int n = std::max(cells, 1);
+    while (!fast(n))
+        ++n;
+    return n;
+}
 
 WakeModes::WakeModes(const WakeFieldSettings& settings)
 {
@@ -25,8 +46,14 @@ WakeModes::WakeModes(const WakeFieldSettings& settings)
             // Linear waves over depth d: omega^2 = g k tanh(k d) (Lamb 1932,
             // sec. 228); the dispersion-free stand-in: omega = c k.
             const double bigK = k > 0.0 ? k * std::tanh(k * settings.depth_m) : 0.0; // tanh(inf) = 1: deep water
-            const double omega = settings.dispersive ? std::sqrt(kGravity * bigK)
-                                                      : settings.dispersionFreeSpeed_m_per_s * k;
+            const double exact = settings.dispersive ? std::sqrt(kGravity * bigK) : settings.dispersionFreeSpeed_m_per_s * k;
+            // In water so shallow that a mode hardly turns (a depth of 1e-300
+            // m: omega ~ 1e-150), g / omega overflows a float and sin(omega
+            // dt) underflows to 0, and their product, which tends to g dt,
+            // came out NaN. Below kSlowestWake_rad_per_s (a period of two
+            // centuries) the mode turns at that: the products are then their
+            // limits, K dt and g dt, to float precision; faster modes as they are.
+            const double omega = exact > 0.0 ? std::max(exact, kSlowestWake_rad_per_s) : 0.0;
             const std::size_t m = std::size_t(p) + std::size_t(q) * n;
             cosStep[m] = float(std::cos(omega * kWakeStep_s));
             sinStep[m] = float(std::sin(omega * kWakeStep_s));

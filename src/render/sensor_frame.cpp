@@ -2,6 +2,7 @@
 #include "swell/dataset/sensor.h"
 
 #include "core/counter_random.h"
+#include "core/lens_fold.h"
 #include "swell/error.h"
 #include "swell/renderer.h"
 
@@ -41,41 +42,12 @@ std::uint8_t toByte(double linear) { return std::uint8_t(std::lround(std::clamp(
 // pixel's noise depends on its key alone. Never 0, for Box-Muller's log.
 double uniform(std::uint64_t key) { return detail::unitFromBits(detail::splitMix64(key)) + 0x1.0p-54; }
 
-// The pinhole frame is drawn at this many times the output's focal length,
-// so that a label taken from its nearest pixel lies within 0.5/1.5 of a
-// pinhole pixel on each axis, 0.47 of an output pixel at most (where the
-// lens does not magnify), inside the half pixel the labels promise.
-constexpr double kPinholeScale = 1.5;
-
-// The pinhole frame's size (each side even, centred on the optical axis)
-// that holds the ray of every pixel of the distorted output: the output's
-// border undistorted, plus a pixel.
-glm::ivec2 pinholeSize(const LensDistortion& lens, const CameraCalibration& c)
-{
-    const double f = kPinholeScale * c.fy_px;
-    double hx = 0.0, hy = 0.0;
-    auto reach = [&](double px, double py) {
-        const glm::dvec2 u = undistort(lens, {(px - c.cx_px) / c.fx_px, (py - c.cy_px) / c.fy_px});
-        hx = std::max(hx, std::abs(u.x));
-        hy = std::max(hy, std::abs(u.y));
-    };
-    for (int x = 0; x <= c.size.x; ++x) {
-        reach(x, 0.0);
-        reach(x, c.size.y);
-    }
-    for (int y = 0; y <= c.size.y; ++y) {
-        reach(0.0, y);
-        reach(c.size.x, y);
-    }
-    return {2 * int(std::ceil(hx * f + 1.0)), 2 * int(std::ceil(hy * f + 1.0))};
-}
-
 // Where the output's pixel (x, y) looks in the pinhole frame of `wide`
 // pixels, pixels (its top-left corner at 0, 0).
 glm::dvec2 sourceOf(const LensDistortion& lens, const CameraCalibration& c, glm::ivec2 wide, int x, int y)
 {
     const glm::dvec2 u = undistort(lens, {(x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px});
-    return kPinholeScale * c.fy_px * u + 0.5 * glm::dvec2(wide);
+    return detail::kPinholeScale * c.fy_px * u + 0.5 * glm::dvec2(wide);
 }
 
 void distortImage(const Image& wide, Image& out, const LensDistortion& lens, const CameraCalibration& c)
@@ -185,15 +157,10 @@ SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double t
         c.k3 = lens.k3;
         c.p1 = lens.p1;
         c.p2 = lens.p2;
-        const glm::ivec2 wide = pinholeSize(lens, c);
-        if (wide.x > 4 * size.x || wide.y > 4 * size.y)
-            throw InputError({"camera.distortion_k1"},
-                             fmt::format("this lens needs a pinhole frame of {}x{} pixels to hold the rays of a {}x{} "
-                                         "image at {} degrees of field: its distortion folds the image's corners "
-                                         "over (or nearly); weaken the coefficients or narrow the field",
-                                         wide.x, wide.y, size.x, size.y, camera.fovY_deg));
+        checkLens(renderer.scene(), size, camera.fovY_deg); // the rule scenes and sweeps are checked by
+        const glm::ivec2 wide = detail::pinholeSize(lens, c);
         Camera pinhole = camera;
-        pinhole.fovY_deg = glm::degrees(2.0 * std::atan(0.5 * wide.y / (kPinholeScale * c.fy_px)));
+        pinhole.fovY_deg = glm::degrees(2.0 * std::atan(0.5 * wide.y / (detail::kPinholeScale * c.fy_px)));
         const Image source = renderer.renderImage(pinhole, time_s, wide);
         frame.image.width = size.x;
         frame.image.height = size.y;

@@ -23,7 +23,11 @@ std::string parentKey(std::string_view key);
 // "sky.faces[3]"; "" is the file itself.
 class Places {
 public:
+    using Map = std::map<std::string, SourcePlace, std::less<>>;
+
     explicit Places(std::string path) : path_(std::move(path)) {}
+    // Seeded with places known already (Scene::keyPlaces).
+    Places(std::string path, Map places) : path_(std::move(path)), places_(std::move(places)) {}
 
     const std::string& path() const { return path_; }
 
@@ -58,9 +62,12 @@ public:
         return at(*keys.begin());
     }
 
+    // Every key's place, for Scene::keyPlaces.
+    const Map& all() const { return places_; }
+
 private:
     std::string path_;
-    std::map<std::string, SourcePlace, std::less<>> places_;
+    Map places_;
 };
 
 // "a table", "an array", "a string", ...: a TOML value's type in a message.

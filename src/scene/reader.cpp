@@ -275,6 +275,22 @@ private:
             }
         }
         if (!guess) {
+            // A key of the same table that the word begins, or that begins
+            // it ("coverage" for "cover"): the one such key, 4 letters shared at least.
+            const std::string_view last = key.str();
+            const std::string table = schema.substr(0, schema.size() - last.size());
+            std::vector<std::string> sharing;
+            for (const std::string& n : schemaNames) {
+                if (!n.starts_with(table) || n.find('.', table.size()) != std::string::npos)
+                    continue;
+                const std::string_view name = std::string_view(n).substr(table.size());
+                if (std::min(name.size(), last.size()) >= 4 && (name.starts_with(last) || last.starts_with(name)))
+                    sharing.push_back(n);
+            }
+            if (sharing.size() == 1)
+                guess = sharing.front();
+        }
+        if (!guess) {
             // A known key in the wrong table: the same last part, exactly one owner.
             std::string_view last = key.str();
             std::vector<std::string> owners;

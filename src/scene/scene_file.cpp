@@ -43,6 +43,7 @@ Scene parseScene(std::string_view text, const fs::path& virtualPath)
     Scene scene = readScene(root, places);
     checkScene(scene, places, baseFolder(virtualPath));
     scene.assetFolder = baseFolder(virtualPath).string();
+    scene.keyPlaces = places.all();
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const std::string key = fmt::format("objects[{}].path", i);
         scene.assetReferences.push_back({key, scene.objects[i].path, places.at(key)});
@@ -71,12 +72,12 @@ Scene loadScene(const fs::path& path)
 
 void validateScene(const Scene& scene, const fs::path& sceneFile)
 {
-    checkScene(scene, Places(sceneFile.string()), baseFolder(sceneFile));
+    checkScene(scene, Places(sceneFile.string(), scene.keyPlaces), baseFolder(sceneFile));
 }
 
 void validateSceneChange(const Scene& before, const Scene& after, const fs::path& sceneFile)
 {
-    checkScene(after, Places(sceneFile.string()), baseFolder(sceneFile), sceneChanges(before, after));
+    checkScene(after, Places(sceneFile.string(), after.keyPlaces), baseFolder(sceneFile), sceneChanges(before, after));
 }
 
 } // namespace swell

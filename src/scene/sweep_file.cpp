@@ -3,8 +3,10 @@
 // sample drawn from per-key random streams.
 #include "swell/dataset/sweep.h"
 
+#include "core/asset_path.h"
 #include "core/counter_random.h"
 #include "core/input_file.h"
+#include "scene/checks.h"
 #include "scene/places.h"
 #include "scene/suggestions.h"
 #include "scene/toml_text.h"
@@ -61,6 +63,17 @@ std::optional<ResolvedKey> resolve(std::string_view key)
 }
 
 ParameterKind kindOf(const ResolvedKey& k) { return k.parameter ? k.parameter->kind : ParameterKind::Real; }
+
+// The key as a scene file writes it ("objects[1].yaw_deg", whatever the
+// sweep wrote as "objects[01].yaw_deg"): Scene::keyPlaces' spelling.
+std::string sceneKeyOf(const ResolvedKey& k)
+{
+    const Parameter& p = *k.parameter;
+    if (p.list == ParameterList::None)
+        return std::string(p.key);
+    const std::string_view list = listKey(p.list);
+    return fmt::format("{}[{}]{}", list, k.item, p.key.substr(list.size()));
+}
 
 bool isVector(ParameterKind kind)
 {
@@ -136,8 +149,14 @@ SweepKey readKey(const std::string& key, const toml::node& node, const Places& p
     s.place = at;
     const ParameterKind kind = kindOf(*k);
     if (const toml::table* t = node.as_table()) {
+        for (const auto& [name, value] : *t)
+            if (name.str() != "one_of")
+                fail(places.of(name.source()),
+                     fmt::format("vary.\"{}\": unknown key '{}' in its table, which holds only one_of = [...], the "
+                                 "values to choose from, each as likely (write a value twice to make it twice as likely)",
+                                 key, detail::scenefile::shortText(name.str())));
         const toml::array* choices = (*t)["one_of"].as_array();
-        if (!choices || t->size() != 1)
+        if (!choices)
             fail(at, fmt::format("vary.\"{}\": a table holds only one_of = [...], the values to choose from", key));
         if (choices->empty())
             fail(places.of(choices->source()), fmt::format("vary.\"{}\": one_of is empty: nothing to choose from", key));
@@ -255,7 +274,9 @@ Sweep loadSweepFile(const fs::path& path)
             fail(places.of(size->source()), "size: [width, height] in pixels, each 16..8192");
         sweep.size = glm::ivec2(int(*side(0)), int(*side(1)));
     }
+    sweep.timePlace = file;
     if (const toml::node* time = root.get("time_s")) {
+        sweep.timePlace = places.of(time->source());
         const toml::array* a = time->as_array();
         const std::optional<double> lo = a && a->size() == 2 ? (*a)[0].value<double>() : time->value<double>();
         const std::optional<double> hi = a && a->size() == 2 ? (*a)[1].value<double>() : time->value<double>();
@@ -318,18 +339,24 @@ void checkSweep(const Sweep& sweep, const Scene& base)
                     fail(k.place, fmt::format("vary.\"{}\": {} is outside its range {}{} .. {}{}", k.key, c,
                                               p.minExclusive ? "above " : "", p.min, p.max,
                                               p.unit.empty() ? "" : fmt::format(" {}", p.unit)));
+            // The one key whose range is the base scene's: an object's index.
+            if (&p == findParameter("camera.mount_object") && components[0] >= double(base.objects.size()))
+                fail(k.place, fmt::format("vary.\"{}\": {:g} names no object: the base scene has {} object(s), "
+                                          "indices from 0 (-1: none)",
+                                          k.key, components[0], base.objects.size()));
         }
     }
 }
 
 namespace {
 
-// The sun's elevation and azimuth, degrees (azimuth from +x towards +z, as
-// the wind's direction).
+// The sun's elevation and azimuth, degrees: the azimuth measured like a
+// heading, from -z (north, on the sun's compass) towards +x (east), as
+// docs/SCENE.md measures it.
 glm::dvec2 sunAngles_deg(const Scene& scene)
 {
     const glm::dvec3 sun = glm::normalize(scene.sun.direction);
-    return {glm::degrees(std::asin(std::clamp(sun.y, -1.0, 1.0))), glm::degrees(std::atan2(sun.z, sun.x))};
+    return {glm::degrees(std::asin(std::clamp(sun.y, -1.0, 1.0))), glm::degrees(std::atan2(sun.x, -sun.z))};
 }
 
 } // namespace
@@ -350,6 +377,29 @@ const Parameter* sweptParameter(std::string_view key)
     return r ? r->parameter : nullptr;
 }
 
+std::optional<fs::path> sweepSceneFile(const Sweep& sweep)
+{
+    if (sweep.scene.empty() || detail::scenefile::hasControlCharacter(sweep.scene))
+        fail(sweep.scenePlace, "scene: name the base scene, a scene file beside the sweep file or a preset's name");
+    const fs::path folder = detail::scenefile::baseFolder(sweep.file);
+    const fs::path resolved = detail::resolvedFolder(folder);
+    std::error_code error;
+    if (fs::weakly_canonical(resolved / sweep.scene, error) == resolved)
+        fail(sweep.scenePlace, fmt::format("scene: '{}' is the sweep file's folder, not a scene file",
+                                           detail::scenefile::shortText(sweep.scene)));
+    if (!detail::resolveInside(resolved, sweep.scene))
+        fail(sweep.scenePlace,
+             fmt::format("scene: '{}' lies outside the sweep file's folder '{}'; a sweep's scene is a file in its "
+                         "folder or below it, links included, or a preset's name",
+                         detail::scenefile::shortText(sweep.scene), folder.string()));
+    const fs::path file = folder / sweep.scene;
+    // Anything there (a dangling link, a folder, a FIFO) is the scene file
+    // the user meant, for the reader to take or refuse with its reason.
+    if (fs::exists(fs::symlink_status(file, error)))
+        return file;
+    return std::nullopt;
+}
+
 SweepSample sweepSample(const Sweep& sweep, const Scene& base, int index)
 {
     SweepSample s;
@@ -362,17 +412,21 @@ SweepSample sweepSample(const Sweep& sweep, const Scene& base, int index)
     for (const SweepKey& k : sweep.vary) {
         Stream stream(sweep.seed, index, k.key);
         const ParameterValue v = draw(k, stream);
+        s.values.push_back(v);
         const ResolvedKey r = *resolve(k.key);
         if (!r.parameter) {
             (k.key == kSunElevation ? elevation_deg : azimuth_deg) = std::get<double>(v);
             sunVaried = true;
+            s.scene.keyPlaces["sun.direction"] = k.place;
             continue;
         }
         r.parameter->set(s.scene, r.item, v);
+        s.scene.keyPlaces[sceneKeyOf(r)] = k.place;
     }
     if (sunVaried) {
+        // The direction a camera of that heading and pitch looks along (docs/SCENE.md).
         const double e = glm::radians(elevation_deg), a = glm::radians(azimuth_deg);
-        s.scene.sun.direction = glm::dvec3(std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a));
+        s.scene.sun.direction = glm::dvec3(std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e));
         // The sample's sun is its direction now, not the base scene's date and place.
         s.scene.sun.place.reset();
     }

@@ -59,6 +59,13 @@ SCENES = [
      "2:8", "sun.time has no UTC offset"),
     ("sun_latitude_out_of_range", "[sun]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 95.0\nlongitude_deg = 0.0\n",
      "3:16", "sun.latitude_deg = 95 is out of range"),
+    # A lens that folds the image: one rule (docs/SCENE.md, "The lens"), at
+    # the first coefficient's line, naming the coefficients set (issue 48).
+    ("lens_tangential_fold", "[camera]\nfov_y_deg = 120.0\ndistortion_p1 = 0.1\ndistortion_p2 = 0.1\n", "3:",
+     "camera.distortion_p1 = 0.1 and camera.distortion_p2 = 0.1: no ray reaches"),
+    ("lens_radial_fold_150", "[camera]\nfov_y_deg = 150.0\ndistortion_k1 = -1.0\ndistortion_k2 = -1.0\n"
+     "distortion_k3 = -1.0\n", "3:", "camera.distortion_k3 = -1"),
+    ("clouds_coverage", "[sky.clouds]\ncoverage = 0.5\n", "2:1", "did you mean 'sky.clouds.cover'"),
     ("sun_direction_and_time",
      "[sun]\ndirection = [0.0, 1.0, 0.0]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 39.7\nlongitude_deg = 0.0\n",
      "3:8", "exclude each other"),
@@ -76,6 +83,10 @@ GOOD_SCENES = [
     ("body_as_dense_as_water", "[[objects]]\npath = \"builtin:buoy\"\nfloats = true\ndensity_kg_per_m3 = 1025.0\n"),
     ("body_keys_not_floating", "[[objects]]\npath = \"builtin:buoy\"\nmass_kg = 100.0\n"),
     ("floating_rock", "[[objects]]\npath = \"builtin:rock\"\nfloats = true\ndensity_kg_per_m3 = 600.0\n"),
+    # A body under way in water of a denormal depth: drawn (its wake once turned NaN).
+    ("depth_denormal_under_way", "[waves]\ndepth_m = 1e-310\n[wake]\ncells = 64\n"
+     "[[objects]]\npath = \"builtin:boat\"\nfloats = true\ndensity_kg_per_m3 = 250.0\n"
+     "velocity_m_per_s = [0.0, 0.0, -4.0]\n"),
     ("sun_placed", "[sun]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 39.742476\nlongitude_deg = -105.1786\n"
      "[sky]\nmodel = \"physical\"\n"),
 ]
@@ -239,6 +250,19 @@ count += 1
 r = run(["render", "-o", "good.png", "--size", "48x27"])
 if r.returncode != 0 or not os.path.exists(os.path.join(work, "good.png")):
     failures.append(f"the default scene did not render: {r.returncode} {r.stderr[:300]!r}")
+
+# A refused lens, or a history past the bound, makes no output folder: the
+# whole request is checked first. And the lens refused names no coefficient
+# it does not set.
+lens = os.path.join(work, "lens_tangential_fold.toml")
+for name, args in [("lens", [lens]), ("history", [os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                                               "scenes", "under-way.toml"), "--time", "5000"])]:
+    count += 1
+    folder = os.path.join(work, "not_made_" + name)
+    shutil.rmtree(folder, ignore_errors=True)
+    r = run(["render", *args, "-o", os.path.join(folder, "deeper", "x.png"), "--size", "64x36"])
+    if r.returncode != 2 or os.path.exists(folder) or "distortion_k1" in r.stderr:
+        failures.append(f"{name} refused after making its folder: exit {r.returncode}, {r.stderr.strip()[:300]!r}")
 
 # A render scale draws smaller (or larger) but writes the size asked for.
 def png_size(path):

@@ -8,6 +8,7 @@ done; and, with --dask, the same sweep on a 2-worker Dask LocalCluster
 usage: test_dataset.py SWELL_EXECUTABLE DASK_RUNNER WORK_DIR [--dask]
 """
 import filecmp
+import json
 import os
 import re
 import shutil
@@ -105,9 +106,47 @@ BAD = [
     ("no_count", sweep_text(4).replace("count = 4\n", ""), "", "count"),
     ("no_scene", sweep_text(4).replace('scene = "base.toml"', 'scene = "nowhere.toml"'), "1:", "scene"),
 ]
+# Issue 48: the sweep's base scene, named at the sweep's `scene` line when it
+# cannot be read at all (a device, a FIFO, a folder, nothing) or lies out of
+# the sweep's folder; an object's index past the base scene's; a table's
+# stray key; a lens that folds, at the varied key's line or the base scene's;
+# a history past the bound, at time_s. None makes a folder.
+os.makedirs(os.path.join(work, "a_folder"), exist_ok=True)
+fifo = os.path.join(work, "a_fifo")
+if not os.path.exists(fifo):
+    os.mkfifo(fifo)
+with open(os.path.join(work, "folding.toml"), "w") as f:
+    f.write(SCENE + "\n[camera]\nfov_y_deg = 120.0\ndistortion_p1 = 0.1\ndistortion_p2 = 0.1\n")
+with open(os.path.join(work, "floating.toml"), "w") as f:
+    f.write(SCENE.replace('position_m = [4.0, 0.0, -30.0]', 'position_m = [4.0, 0.0, -30.0]\nfloats = true\n'
+                          'density_kg_per_m3 = 400.0'))
+def with_scene(scene, extra_vary=""):
+    return sweep_text(4).replace('scene = "base.toml"', f'scene = "{scene}"') + extra_vary
+BAD += [
+    ("scene_dev_zero", with_scene("/dev/zero"), "1:9", "outside the sweep file's folder"),
+    ("scene_passwd", with_scene("../../../../etc/passwd"), "1:9", "outside the sweep file's folder"),
+    ("scene_empty", with_scene(""), "1:9", "name the base scene"),
+    ("scene_folder", with_scene("a_folder"), "1:9", "is a folder, not a scene file"),
+    ("scene_fifo", with_scene("a_fifo"), "1:9", "FIFO"),
+    ("mount_past_objects", sweep_text(4) + '"camera.mount_object" = [0, 5]\n', "12:", "1 object(s)"),
+    ("one_of_weights", sweep_text(4).replace("[20.0, 45.0] }", "[20.0, 45.0], weights = [1, 3] }"), "11:",
+     "unknown key 'weights'"),
+    ("lens_varied", sweep_text(4) + '"camera.fov_y_deg" = 120.0\n"camera.distortion_p1" = [0.09, 0.1]\n'
+     '"camera.distortion_p2" = 0.1\n', "13:", "camera.distortion_p1 = 0.09"),
+    ("history", sweep_text(4).replace('time_s = [0.0, 100.0]', 'time_s = [100000.0, 200000.0]')
+     .replace('"base.toml"', '"floating.toml"'), "5:", "history_start_s"),
+]
+# A lens that folds in the base scene: at the scene file's line.
+BAD_IN_SCENE = [("lens_in_scene", with_scene("folding.toml"), "folding.toml:10:", "camera.distortion_p1 = 0.1 and")]
+
 for name, text, place, message in BAD:
     path = write(f"bad_{name}.toml", text)
     check(name, run(path, "--out", os.path.join(work, f"out_{name}")), 2, f"bad_{name}.toml:{place}", message)
+    if os.path.exists(os.path.join(work, f"out_{name}")):
+        failures.append(f"{name}: a refused sweep created its output folder")
+for name, text, place, message in BAD_IN_SCENE:
+    path = write(f"bad_{name}.toml", text)
+    check(name, run(path, "--out", os.path.join(work, f"out_{name}")), 2, place, message)
     if os.path.exists(os.path.join(work, f"out_{name}")):
         failures.append(f"{name}: a refused sweep created its output folder")
 for shard in ["3/2", "0/2", "1/0", "a/b", "2"]:
@@ -118,6 +157,12 @@ first = run(good, "--out", os.path.join(work, "taken"), "--dry-run")
 check("dry run", first, 0, "4 samples to render")
 other = write("other.toml", sweep_text(5))
 check("another sweep's folder", run(other, "--out", os.path.join(work, "taken")), 2, "another sweep")
+check("empty out", run(good, "--out", ""), 2, "--out")
+manifest_folder = os.path.join(work, "manifest_folder")
+os.makedirs(os.path.join(manifest_folder, "manifest.json"), exist_ok=True)
+check("manifest is a folder", run(good, "--out", manifest_folder), 2, "--out")
+if os.path.exists(os.path.join(manifest_folder, "samples")):
+    failures.append("manifest is a folder: samples/ was made before the folder was refused")
 
 # --- The same bytes serially, in two shards, and killed and started again.
 count = 12
@@ -142,6 +187,116 @@ if finished >= count:
 again = run(sweep, "--out", resumed)
 check("restart", again, 0, f"{count - finished} samples to render, {finished} done already")
 same_tree(serial, resumed, "killed and started again")
+
+# --- Broken samples are found on resume, said, and rendered again (issue 48):
+# a JSON cut short, a JSON emptied, a PNG emptied, an array deleted, an array
+# cut in half. coco.json goes while a sample is not whole.
+def samples_file(out, i, suffix):
+    return os.path.join(out, "samples", f"{i:06d}{suffix}")
+
+
+broken = os.path.join(work, "broken")
+shutil.copytree(serial, broken)
+with open(samples_file(broken, 3, ".json"), "r+") as f:
+    f.truncate(len(f.read()) // 2)
+open(samples_file(broken, 5, ".json"), "w").close()
+open(samples_file(broken, 6, ".png"), "w").close()
+os.remove(samples_file(broken, 7, ".range.npy"))
+with open(samples_file(broken, 8, ".normal.npy"), "r+b") as f:
+    f.truncate(len(f.read()) // 2)
+first_half = run(sweep, "--out", broken, "--shard", "1/2")  # 0, 2, ..., 10: only 6 and 8 are its
+check("broken, shard 1/2", first_half, 0, "sample 6 is not whole", "sample 8 is not whole", "2 samples to render, 4 done")
+if os.path.exists(os.path.join(broken, "coco.json")):
+    failures.append("broken: coco.json stayed while samples 3, 5 and 7 were not whole")
+second_half = run(sweep, "--out", broken, "--shard", "2/2")
+check("broken, shard 2/2", second_half, 0, "sample 3 is not whole", "sample 5 is not whole",
+      "3 samples to render, 3 done")
+if "json.exception" in first_half.stderr + second_half.stderr:
+    failures.append("broken: a raw JSON exception was printed")
+same_tree(serial, broken, "broken samples rendered again")
+
+
+def partial_samples(out):
+    """Samples with some of their files but not their JSON, and temporary files."""
+    folder = os.path.join(out, "samples")
+    names = os.listdir(folder) if os.path.isdir(folder) else []
+    stems = {n.split(".")[0] for n in names if not n.startswith(".")}
+    return sorted([s for s in stems if f"{s}.json" not in names] + [n for n in names if n.endswith(".tmp")])
+
+
+def writing(out):
+    """A sample whose files are being written: its PNG (the first written) there, its JSON (the last) not."""
+    folder = os.path.join(out, "samples")
+    try:
+        names = set(os.listdir(folder))
+    except FileNotFoundError:
+        return False
+    return any(n.endswith(".png") and not n.endswith(".labels.png") and n[:-4] + ".json" not in names for n in names)
+
+
+def stop_run(out, stop, when):
+    """Starts the sweep into `out` and sends `stop` to it: while a sample's
+    files are being written (when = "writing"), or that many seconds after
+    its next sample is done; True when it was still running then."""
+    process = subprocess.Popen([swell, "dataset", sweep, "--out", out], stdout=subprocess.DEVNULL,
+                               stderr=subprocess.DEVNULL, start_new_session=True)
+    before = len(done(out))
+    deadline = time.monotonic() + 300
+    if when == "writing":
+        while not writing(out) and process.poll() is None and time.monotonic() < deadline:
+            pass
+    else:
+        while len(done(out)) <= before and process.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.002)
+        time.sleep(when)
+    running = process.poll() is None
+    if running:
+        os.killpg(process.pid, stop)
+    process.wait()
+    return running
+
+
+MOMENTS = ["writing", 0.0, "writing", 0.01, "writing", 0.03, "writing", 0.06, "writing", 0.1, "writing"]
+
+# --- SIGTERM (and Ctrl-C's SIGINT) while a sample's files are being written,
+# and at moments after: the sample is finished or not begun, never half
+# there, and the process ends; started again, the same bytes.
+termed = os.path.join(work, "termed")
+stopped = 0
+for when, stop in zip(MOMENTS, [signal.SIGTERM, signal.SIGINT] * 6):
+    stopped += stop_run(termed, stop, when)
+    if partial_samples(termed):
+        failures.append(f"{signal.Signals(stop).name} ({when}) left part of a sample: {partial_samples(termed)}")
+if stopped < 6:
+    failures.append(f"only {stopped} of the runs were stopped: the stops no longer fall inside a run")
+check("restart after SIGTERM", run(sweep, "--out", termed), 0, "done already")
+same_tree(serial, termed, "stopped and started again")
+
+# --- Killed again and again, while a sample's files are written and at
+# moments after: every restart cleans up after the kill, and the last gives
+# the same bytes as a run never killed.
+killed = os.path.join(work, "killed")
+kills = sum(stop_run(killed, signal.SIGKILL, when) for when in MOMENTS)
+if kills < 6:
+    failures.append(f"only {kills} of the runs were killed: the kills no longer fall inside a run")
+check("restart after kills", run(sweep, "--out", killed), 0, "done already")
+same_tree(serial, killed, "killed again and again")
+print(f"stopped {stopped} runs, killed {kills}")
+
+# --- The values a sample records are the ones drawn: an azimuth swept over
+# [0, 360] stays there (it was written as atan2's -180..180); no labels.
+azimuth = write("azimuth.toml", 'scene = "base.toml"\ncount = 6\nsize = [16, 16]\nlabels = false\n'
+                '[vary]\n"sun.azimuth_deg" = [0.0, 360.0]\n')
+azimuth_out = os.path.join(work, "azimuth")
+check("azimuth", run(azimuth, "--out", azimuth_out), 0, "6 samples to render")
+values = []
+for i in range(6):
+    with open(samples_file(azimuth_out, i, ".json")) as f:
+        values.append(json.load(f)["varied"]["sun.azimuth_deg"])
+if not all(0.0 <= v <= 360.0 for v in values) or max(values) < 180.0:
+    failures.append(f"azimuth: varied values {values} are not the [0, 360] drawn")
+if sorted(os.listdir(os.path.join(azimuth_out, "samples")))[:2] != ["000000.json", "000000.png"]:
+    failures.append("azimuth: a sample without labels is its PNG and JSON")
 
 # --- Dask: 200 samples on a 2-worker LocalCluster, killed half way, resumed.
 if dask:

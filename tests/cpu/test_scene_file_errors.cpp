@@ -81,6 +81,8 @@ std::vector<Malformed> malformedCases()
         {"UnknownKeyTypo", "[fog]\nstrat_m = 10.0\n", 2, 1, "unknown key 'fog.strat_m'; did you mean 'fog.start_m'?"},
         {"UnknownDottedKey", "fog.strat_m = 10.0\n", 1, 5, "unknown key 'fog.strat_m'; did you mean 'fog.start_m'?"},
         {"UnknownTable", "[wter]\nshininess = 3.0\n", 1, 2, "unknown key 'wter'; did you mean 'water'?"},
+        {"UnknownKeyBeginningAnother", "[sky.clouds]\ncoverage = 0.5\n", 2, 1,
+         "unknown key 'sky.clouds.coverage'; did you mean 'sky.clouds.cover'?"},
         {"UnknownTopLevel", "colour = [1, 1, 1]\n", 1, 1, "unknown key 'colour'"},
         {"KeyInTheWrongTable", "start_m = 100.0\n", 1, 1, "unknown key 'start_m'; did you mean 'fog.start_m'?"},
         {"UnknownInObject", "[[objects]]\npath = \"builtin:buoy\"\npostion_m = [0, 0, 0]\n", 3, 1,
@@ -198,6 +200,21 @@ namespace {
 using test::expectInputError;
 
 } // namespace
+
+// A loaded scene keeps each key's place (Scene::keyPlaces), so a check made
+// after loading (a scene changed in code, a sweep's sample) names the line.
+TEST(SceneFile, ValidateSceneNamesTheLineOfALoadedKey)
+{
+    swell::Scene scene = swell::parseScene("[fog]\nstart_m = 100.0\nend_m = 2000.0\n", "places.toml");
+    scene.fog.start_m = 3000.0;
+    try {
+        swell::validateScene(scene, "places.toml");
+        FAIL() << "fog.end_m below fog.start_m was taken";
+    } catch (const swell::InputError& e) {
+        EXPECT_EQ(e.place().path, "places.toml");
+        EXPECT_EQ(e.place().line, 3);
+    }
+}
 
 TEST(SceneFile, MissingFile)
 {

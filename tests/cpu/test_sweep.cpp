@@ -5,6 +5,7 @@
 #include "swell/dataset/sweep.h"
 
 #include "swell/scene/scene.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 
 namespace {
@@ -71,8 +73,8 @@ TEST(Sweep, ValuesStayInTheirRangesAndSpreadOverThem)
         const double elevation = glm::degrees(std::asin(sun.y));
         ASSERT_GE(elevation, 10.0 - 1e-9);
         ASSERT_LE(elevation, 30.0 + 1e-9);
-        ASSERT_NEAR(sun.x, 0.0, 1e-12); // azimuth 90: from +x towards +z
-        ASSERT_GT(sun.z, 0.0);
+        ASSERT_NEAR(sun.z, 0.0, 1e-12); // azimuth 90, measured like a heading from -z towards +x: +x (east)
+        ASSERT_GT(sun.x, 0.0);
     }
     // The mean of 1000 uniform draws on [-15, 15]: 0 within 4 standard errors (30/sqrt(12)/sqrt(1000) = 0.27).
     EXPECT_NEAR(sum / sweep.count, 0.0, 4 * 0.27);
@@ -93,6 +95,84 @@ TEST(Sweep, ARangeOutsideTheParametersOrAListItemThatIsNotThereIsRefusedAtItsPla
     }
     const swell::Sweep noObject = sweepFrom("object.toml", kHead + "\"objects[9].yaw_deg\" = [0.0, 90.0]\n");
     EXPECT_THROW(swell::checkSweep(noObject, base), swell::InputError);
+}
+
+// Issue 48: what a sweep names is refused at its line before anything is
+// made: a table's stray key, a scene out of the sweep's folder, an object's
+// index the base scene lacks; a sample's varied key keeps its line, and its
+// "varied" azimuth is the value drawn, within its range.
+swell::InputError refusal(const std::function<void()>& f)
+{
+    try {
+        f();
+    } catch (const swell::InputError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "not refused";
+    return swell::InputError({}, "");
+}
+
+TEST(Sweep, ATablesUnknownKeyIsNamed)
+{
+    const swell::InputError e = refusal([] {
+        sweepFrom("weights.toml", kHead + "\"reflection.mode\" = { one_of = [\"fixed\", \"raymarch\"], weights = [1, 2] }\n");
+    });
+    EXPECT_EQ(e.place().line, 5);
+    EXPECT_NE(e.message().find("unknown key 'weights'"), std::string::npos) << e.what();
+}
+
+TEST(Sweep, AScenePathOutOfTheSweepsFolderIsRefusedAtItsLine)
+{
+    for (const char* scene : {"../../../../etc/passwd", "/etc/passwd", "/dev/zero", "", ".", "sub/../.."}) {
+        const swell::Sweep sweep =
+            sweepFrom("escape.toml", std::string("scene = \"") + scene + "\"\ncount = 1\n");
+        const swell::InputError e = refusal([&] { swell::sweepSceneFile(sweep); });
+        EXPECT_EQ(e.place().line, 1) << scene;
+        EXPECT_EQ(e.message().find("root:"), std::string::npos) << "the outside file was read: " << e.what();
+    }
+    // A file beside the sweep, and a name that is not there (a preset's, maybe).
+    std::ofstream(fs::path(SWELL_TEST_OUTPUT_DIR) / "sweep" / "beside.toml") << "";
+    EXPECT_TRUE(swell::sweepSceneFile(sweepFrom("beside_sweep.toml", "scene = \"beside.toml\"\ncount = 1\n")));
+    EXPECT_FALSE(swell::sweepSceneFile(sweepFrom("preset_sweep.toml", "scene = \"storm\"\ncount = 1\n")));
+}
+
+TEST(Sweep, AMountedObjectsIndexIsHeldToTheBaseScenesObjects)
+{
+    swell::Scene base = swell::defaultScene();
+    base.objects.resize(2);
+    const swell::Sweep sweep = sweepFrom("mount.toml", kHead + "\"camera.mount_object\" = [0, 5]\n");
+    const swell::InputError e = refusal([&] { swell::checkSweep(sweep, base); });
+    EXPECT_EQ(e.place().line, 5);
+    EXPECT_NE(e.message().find("2 object(s)"), std::string::npos) << e.what();
+    swell::checkSweep(sweepFrom("mount_ok.toml", kHead + "\"camera.mount_object\" = [-1, 1]\n"), base);
+}
+
+TEST(Sweep, ASamplesVariedKeysPointAtTheirLinesAndKeepTheValuesDrawn)
+{
+    const swell::Scene base = swell::defaultScene();
+    const swell::Sweep sweep = sweepFrom("places.toml", kHead + "\"fog.end_m\" = [900.0, 1200.0]\n"
+                                                                "\"sun.azimuth_deg\" = [0.0, 360.0]\n");
+    for (int i = 0; i < 200; ++i) {
+        const swell::SweepSample sample = swell::sweepSample(sweep, base, i);
+        ASSERT_EQ(sample.values.size(), 2u);
+        const double azimuth = std::get<double>(sample.values[1]);
+        ASSERT_GE(azimuth, 0.0);
+        ASSERT_LE(azimuth, 360.0);
+        // Measured like a heading: the direction of a camera with that yaw.
+        const glm::dvec3 sun = glm::normalize(sample.scene.sun.direction);
+        ASSERT_NEAR(std::remainder(glm::degrees(std::atan2(sun.x, -sun.z)) - azimuth, 360.0), 0.0, 1e-9);
+        ASSERT_EQ(sample.scene.keyPlaces.at("fog.end_m").line, 5);
+        ASSERT_EQ(sample.scene.keyPlaces.at("sun.direction").line, 6);
+    }
+    // A drawn scene refused names the varied key's line in the sweep.
+    swell::Scene foggy = base;
+    foggy.fog.start_m = 1000.0;
+    int index = 0;
+    while (swell::sweepSample(sweep, foggy, index).scene.fog.end_m > 1000.0)
+        ASSERT_LT(++index, 100);
+    const swell::InputError e = refusal([&] { swell::validateScene(swell::sweepSample(sweep, foggy, index).scene, "base.toml"); });
+    EXPECT_EQ(e.place().path, sweep.file.string());
+    EXPECT_EQ(e.place().line, 5);
 }
 
 } // namespace

@@ -138,4 +138,35 @@ TEST(WakeField, ABodyAtRestMakesNoWaves)
         ASSERT_NEAR(h, 0.0f, 1e-5f);
 }
 
+// Water so shallow that a mode hardly turns (issue 48: a depth of 1e-310 m
+// with a boat under way made the body's state NaN): every step stays
+// finite, at depths down to the smallest double.
+TEST(WakeField, StaysFiniteInWaterOfVanishingDepth)
+{
+    for (double depth_m : {1e-40, 1e-300, 1e-310, 4.9e-324}) {
+        WakeFieldSettings settings;
+        settings.cells = 64;
+        settings.depth_m = depth_m;
+        WakeField field(settings);
+        field.reset({0.0, 0.0});
+        for (int n = 0; n < 300; ++n)
+            field.step({WakeSource{{0.2 * n * swell::detail::kWakeStep_s, 0.0}, {1.0, 0.0}, 3.0, 1.0, 2.0}});
+        for (float h : field.heights())
+            ASSERT_TRUE(std::isfinite(h)) << "depth " << depth_m << " m";
+        for (float f : field.foam())
+            ASSERT_TRUE(std::isfinite(f)) << "depth " << depth_m << " m";
+    }
+}
+
+// The grid's size: the next one up made of 2, 3 and 5, whose FFTs are fast.
+TEST(WakeField, CellsRoundUpToAFastTransformSize)
+{
+    using swell::detail::fastWakeCells;
+    EXPECT_EQ(fastWakeCells(1021), 1024);
+    EXPECT_EQ(fastWakeCells(255), 256);
+    EXPECT_EQ(fastWakeCells(997), 1000);
+    for (int n : {32, 64, 256, 300, 384, 500, 512, 1000, 1024})
+        EXPECT_EQ(fastWakeCells(n), n);
+}
+
 } // namespace

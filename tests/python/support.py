@@ -30,3 +30,25 @@ def needs_app(test):
     if not SWELL_APP or not os.path.exists(SWELL_APP):
         raise unittest.SkipTest("no swell executable (SWELL_APP) in this build")
     return SWELL_APP
+
+
+def small_scene():
+    """The default scene on a 32-vertex grid: quick to draw."""
+    import swell
+    scene = swell.default_scene()
+    scene["grid.resolution"] = 32
+    return scene
+
+
+class SmallRendererCase(unittest.TestCase):
+    """Cases sharing one renderer of small_scene(), made once for the class."""
+
+    @classmethod
+    def setUpClass(cls):
+        import swell
+        cls.renderer = swell.Renderer(small_scene())
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.renderer = None
+

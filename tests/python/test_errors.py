@@ -11,21 +11,10 @@ import swell
 import support
 
 
-def small_scene():
-    scene = swell.default_scene()
-    scene["grid.resolution"] = 32
-    return scene
+small_scene = support.small_scene
 
 
-class Errors(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.renderer = swell.Renderer(small_scene())
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.renderer = None
-
+class Errors(support.SmallRendererCase):
     def test_labels_before_any_frame_raise_the_librarys_error(self):
         fresh = swell.Renderer(small_scene())
         with self.assertRaises(swell.Error) as caught:

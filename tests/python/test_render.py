@@ -96,17 +96,7 @@ class SameAsTheExecutable(unittest.TestCase):
         self.assertEqual(swell.horizon_of(cpu).line, self.labels.horizon.line)
 
 
-class RenderArguments(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        scene = swell.default_scene()
-        scene["grid.resolution"] = 32
-        cls.renderer = swell.Renderer(scene)
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.renderer = None
-
+class RenderArguments(support.SmallRendererCase):
     def test_bad_sizes_times_and_cameras_raise(self):
         camera = swell.Camera()
         for size in [(0, 10), (10, -1), (16385, 10), (10.5, 10), (10,), "10x10"]:

@@ -22,7 +22,9 @@
 
 #include <glm/vec2.hpp>
 
+#include <filesystem>
 #include <optional>
+#include <string>
 
 namespace swell {
 
@@ -41,16 +43,26 @@ SWELL_API glm::dvec2 distort(const LensDistortion& lens, glm::dvec2 undistorted)
 // the image one to one; within 1e-12 or after 50 steps).
 SWELL_API glm::dvec2 undistort(const LensDistortion& lens, glm::dvec2 distorted);
 
+// Why `lens` cannot draw an image of `size` pixels at fovY_deg degrees of
+// vertical field ("" when it can), by the one rule of docs/SCENE.md ("The
+// lens"): every pixel of the image's border must have a ray, the lens must
+// not fold between the image's centre and it, and the pinhole frame drawn
+// to hold those rays must be at most 4 times the image's side.
+SWELL_API std::string lensProblem(const LensDistortion& lens, double fovY_deg, glm::ivec2 size);
+// The same for a scene's lens (camera.distortion_*): throws InputError
+// naming every coefficient it sets, at the first one's place
+// (Scene::keyPlaces), else at `sceneFile` ("camera" when empty).
+SWELL_API void checkLens(const Scene& scene, glm::ivec2 size, double fovY_deg, const std::filesystem::path& sceneFile = {});
+
 // A frame as the scene's camera sees it: drawn by `renderer` for `camera`
 // at time_s (Renderer::renderImage, advancing to time_s), distorted,
 // exposed and noised as the renderer's scene says; with `labels`, its
 // labels (Renderer::renderLabels) resampled through the same lens, with
 // the lens's coefficients in their calibration, the horizon's distorted
 // curve and the boxes measured on the distorted masks. Throws
-// swell::InputError when the lens needs a pinhole frame over 4 times the
-// output's side (it is
-// drawn at 1.5 times the output's focal length, so labels are within half a
-// pixel; a distortion stronger than that is refused).
+// swell::InputError (checkLens()) for a lens that cannot draw the frame (it
+// is drawn at 1.5 times the output's focal length, so labels are within half
+// a pixel).
 struct SWELL_API SensorFrame {
     Image image;
     std::optional<FrameLabels> labels;

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ inline constexpr int kMaxSweepSamples = 1000000;
 struct SWELL_API SweepKey {
     // As written: a scene parameter ("camera.roll_deg"), one in an item of
     // a list ("objects[1].yaw_deg"), or the sun's "sun.elevation_deg" and
-    // "sun.azimuth_deg" (which set sun.direction together).
+    // "sun.azimuth_deg" (which set sun.direction together; the azimuth is
+    // measured like a heading, from -z towards +x, as docs/SCENE.md says).
     std::string key;
     SourcePlace place;
     enum class Kind { Range, OneOf } kind = Kind::Range;
@@ -40,10 +42,11 @@ struct SWELL_API SweepKey {
 
 struct SWELL_API Sweep {
     std::filesystem::path file;
-    // The base scene: a scene file relative to the sweep file's folder, or a
-    // preset's name (the caller resolves it: sweepScenePath()).
+    // The base scene: a scene file in the sweep file's folder (or below it),
+    // or a preset's name (the caller looks presets up: sweepSceneFile()).
     std::string scene;
     SourcePlace scenePlace;
+    SourcePlace timePlace; // where time_s was written (the file, when it was not)
     int count = 0;              // samples, 1..kMaxSweepSamples
     std::uint64_t seed = 0;
     glm::ivec2 size{640, 480};  // pixels
@@ -64,10 +67,20 @@ SWELL_API Sweep loadSweepFile(const std::filesystem::path& path);
 // key's place in the sweep file.
 SWELL_API void checkSweep(const Sweep& sweep, const Scene& base);
 
-// Sample `index` (0..count-1): the base scene with each key drawn, and its time.
+// The base scene's file: `scene` in the sweep file's folder, links
+// followed; empty when no file of that name is there (a bare name may then
+// be a preset's). Throws InputError at the scene's place when it is empty,
+// or names a file outside the sweep's folder (as a scene's models must lie
+// in the scene's folder, docs/SCENE.md).
+SWELL_API std::optional<std::filesystem::path> sweepSceneFile(const Sweep& sweep);
+
+// Sample `index` (0..count-1): the base scene with each key drawn, and its
+// time. The scene's keyPlaces point each varied key at its line in the
+// sweep file, so that a check of the drawn scene names it.
 struct SWELL_API SweepSample {
     Scene scene;
     double time_s = 0.0;
+    std::vector<ParameterValue> values; // each varied key's drawn value, in Sweep::vary's order
 };
 SWELL_API SweepSample sweepSample(const Sweep& sweep, const Scene& base, int index);
 

@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -275,6 +276,13 @@ struct SWELL_API Scene {
     // Where each model and sky face path was written (set by loadScene/
     // parseScene; empty for scenes built in code, whose errors name the file).
     std::vector<AssetReference> assetReferences;
+    // Where each key was written, keyed as a scene file writes it
+    // ("fog.end_m", "objects[2].scale"), so that a check made after loading
+    // (validateScene(), a lens checked for an image's size, a sweep's sample)
+    // names its line: set by loadScene/parseScene, pointed at the sweep's
+    // line for each key a sweep varies (swell/dataset/sweep.h), and dropped for a
+    // key set in code, whose value the file no longer says.
+    std::map<std::string, SourcePlace, std::less<>> keyPlaces;
     bool showTerrain = true; // the built-in island
     Antialiasing antialiasing = Antialiasing::Fxaa;
     // When the simulation's history starts, s: the foam is made, and

@@ -62,7 +62,9 @@ SWELL_API Scene parseScene(std::string_view toml, const std::filesystem::path& v
 // The checks parseScene makes after reading, for a scene built in code (the
 // viewer's edits): every parameter in range, the cross-field rules, the
 // referenced files relative to `sceneFile`'s folder, the wave set. Throws
-// InputError whose place is `sceneFile` with no line, naming the key.
+// InputError naming the key, at its place in Scene::keyPlaces when the
+// scene has one (a loaded scene, a sweep's sample), else at `sceneFile`
+// with no line.
 SWELL_API void validateScene(const Scene& scene, const std::filesystem::path& sceneFile);
 
 // validateScene() for an edit of `before` (already valid) into `after`, as a
