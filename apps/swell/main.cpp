@@ -171,7 +171,7 @@ int main(int argc, char** argv)
     CLI::Option* frameTarget = viewCommand->add_option(
                    "--frame-target", view.frameTarget_ms,
                    "Dynamic resolution: the render scale follows the frame time towards this, ms; 0 keeps the "
-                   "scale fixed (default 100, or 0 when --scale is given)")
+                   "scale fixed (default 150, or 0 when --scale is given)")
         ->type_name("MS")
         ->check(numberIn(0.0, 10000.0));
 

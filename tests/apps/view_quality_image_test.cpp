@@ -14,6 +14,7 @@
 // over the frames after the first few (the resolve's history has started).
 #include "support/gl_test.h"
 
+#include "storm_frame_cost.h"
 #include "viewer/view_quality.h"
 
 #include "swell/image.h"
@@ -37,6 +38,7 @@ namespace {
 
 using namespace swell;
 using swell::app::viewer::FrameQuality;
+using swell::test::stormFrame_ms;
 using swell::app::viewer::QualitySettings;
 using swell::app::viewer::TemporalMode;
 using swell::app::viewer::ViewQuality;
@@ -68,20 +70,6 @@ Camera movingCamera(const Scene& scene, int frame)
 }
 
 double frameTime_s(int frame) { return kStart_s + frame * kFrameStep_s; }
-
-// A frame's time in the viewer on the storm at 1280x720 on llvmpipe (2
-// cores, idle), ms, as measured (docs/VIEWER.md "Speed"): most of it does
-// not shrink with the scale (the simulation, the spray, the window), and
-// the resolve's pass is drawn at the window's size. The shape is the CPU
-// time measured at scales 0.5, 0.6, 0.7 and 1 without the resolve (243 +
-// 460 s^2 ms, all threads), scaled to the 109 ms wall a frame measured at
-// 0.5 (9.2 frames a second); the resolve's share is what the old default
-// (the resolve on, at 0.3) took on top: 167 ms a frame (6.0 a second).
-double stormFrame_ms(FrameQuality quality)
-{
-    const double s2 = quality.renderScale * quality.renderScale;
-    return 74.0 + 140.0 * s2 + (quality.temporal ? 80.0 : 0.0);
-}
 
 // Where SWELL_VIEW_QUALITY_FRAMES asks the frames to be written, to look at.
 std::filesystem::path framePath(const char* dir, const char* what, int frame)
