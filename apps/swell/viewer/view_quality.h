@@ -7,8 +7,7 @@
 // The policy, and why (measured on llvmpipe, docs/VIEWER.md "Speed"):
 //   - while the camera moves, no temporal resolve: its history cannot
 //     converge on a view that changes every frame, so a frame drawn below the
-//     window's size shows its jitter as a regular dither, and on software GL
-//     its full-window pass costs more than the pixels it would save;
+//     window's size shows its jitter as a regular zig-zag dither;
 //   - once the camera has rested kRestFrames frames, the resolve comes on
 //     (its history starts afresh: Renderer::setTemporalResolve resets it) and
 //     converges to the full-resolution picture whatever the scale;
