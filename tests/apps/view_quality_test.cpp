@@ -75,6 +75,17 @@ TEST(ViewQuality, AFixedScaleIsKept)
         EXPECT_DOUBLE_EQ(quality.next(settings, turned(k), 2000.0).renderScale, 0.35) << "frame " << k;
 }
 
+TEST(ViewQuality, DynamicResolutionSwitchedBackOnStartsFromTheScaleShown)
+{
+    ViewQuality quality;
+    QualitySettings settings;
+    settings.dynamicScale = false;
+    settings.fixedScale = 0.75;
+    quality.next(settings, turned(0.0), 100.0);
+    settings.dynamicScale = true;
+    EXPECT_DOUBLE_EQ(quality.next(settings, turned(1.0), 100.0).renderScale, 0.75);
+}
+
 // The storm on llvmpipe at 1280x720 (storm_frame_cost.h): moving, the default target is reached above
 // the floor, so the moving view is drawn sharper than at half size.
 TEST(ViewQuality, TheDefaultTargetIsReachedAboveHalfScaleOnTheStorm)

@@ -28,6 +28,8 @@ FrameQuality ViewQuality::next(const QualitySettings& settings, const Camera& ca
         dynamic_.reset();
     if (!settings.dynamicScale) {
         quality.renderScale = settings.fixedScale;
+        // Dynamic resolution switched on again starts from the scale shown.
+        scale_ = std::clamp(settings.fixedScale, kMinDynamicScale, kMaxDynamicScale);
         lastTemporal_ = quality.temporal;
         return quality;
     }
