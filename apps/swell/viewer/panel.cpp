@@ -134,7 +134,8 @@ void Panel::drawView(Session& session, ViewState& view, const FrameStats& stats,
         const double minScale = kMinRenderScale, maxScale = kMaxRenderScale;
         ImGui::SliderScalar("render scale", ImGuiDataType_Double, &view.quality.fixedScale, &minScale, &maxScale,
                             "%.2f");
-        view.quality.fixedScale = std::clamp(view.quality.fixedScale, minScale, maxScale); // Ctrl+click may type anything
+        // Ctrl+click may type anything.
+        view.quality.fixedScale = std::clamp(view.quality.fixedScale, minScale, maxScale);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Draw the frame at this fraction of the window's size and scale it up: 0.5 draws a "
                               "quarter of the pixels (--scale on the command line)");
