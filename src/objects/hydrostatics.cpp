@@ -37,13 +37,13 @@ WaterPatch sampleWater(const SurfaceQuery& surface, glm::dvec2 centre_m, double 
     patch.corner_m = centre_m - glm::dvec2(halfSize_m);
     // The lattice's spacing is its footprint: waves it cannot resolve are
     // faded out before they are sampled, not aliased. Sampled at points
-    // 1.9 m apart under a 7 m boat, a 2 m wave read as a tilt of the whole
-    // patch, which jumped each time a body under way left its square and
-    // was sampled afresh: a kick in pitch several times a second, which
-    // stood the boat of scenes/gale-under-way.toml on its stern. A rigid
-    // body does not follow waves much shorter than itself anyway (its
-    // pitch and heave responses fall towards 0 there: Journee & Massie
-    // 2001, Offshore Hydromechanics, TU Delft, sec. 6.3 and ch. 8).
+    // 1.9 m apart under a 7 m boat, waves of 2 to 4 m read as longer ones
+    // under the whole hull: it heaved 3.5 times the height of a wave a
+    // third of its length, and under way in the gale's sea
+    // (scenes/gale-under-way.toml) it stood on its stern. A rigid body does
+    // not follow waves much shorter than itself (its heave and pitch
+    // responses fall towards 0 there: Jensen, Mansour & Olsen 2004, Ocean
+    // Engineering 31, 61-85; tests/cpu/test_seakeeping.cpp).
     SurfaceFilter lattice = filter;
     lattice.footprint_m = std::max(filter.footprint_m, patch.spacing_m);
     for (int j = 0; j < kPatchSamples; ++j)

@@ -1,9 +1,9 @@
 // The built-in boat's seakeeping: its heave and pitch in regular head
 // waves against the closed-form strip-theory transfer functions of Jensen,
 // Mansour & Olsen (2004), "Estimation of ship motions using closed-form
-// expressions", Ocean Engineering 31(1), 61-85, sec. 2 (their heave Phi_w =
-// eta F and pitch Phi_theta = eta G, eqs. 4-9 as numbered there; the hull
-// a homogeneously loaded box of the ship's length and draft and of breadth
+// expressions", Ocean Engineering 31(1), 61-85, sec. 2 (their heave
+// transfer function Phi_w = eta F and pitch Phi_theta = eta G; the hull a
+// homogeneously loaded box of the ship's length and draft and of breadth
 // C_B B, its added mass taken equal to its mass). Their curves have the
 // shape every strip theory gives (Journee & Massie 2001, Offshore
 // Hydromechanics, TU Delft, ch. 6 and 8): heave amplitude over wave
@@ -145,6 +145,23 @@ Response simulatedResponse(double wavelength_m, double speed_m_per_s)
     return {0.5 * (heaveHi - heaveLo) / amplitude_m, 0.5 * (pitchHi - pitchLo) / slope};
 }
 
+// Strip theory's response and Swell's to waves `lengths` boat lengths long
+// met at speed_m_per_s, printed, and where they were taken, for messages.
+struct Compared {
+    Response expected, got;
+    std::string where;
+};
+
+Compared compared(double lengths, double speed_m_per_s)
+{
+    const double wavelength_m = lengths * kLength_m;
+    Compared c{closedFormResponse(wavelength_m, speed_m_per_s), simulatedResponse(wavelength_m, speed_m_per_s),
+               "lambda/L " + std::to_string(lengths) + " at " + std::to_string(speed_m_per_s) + " m/s"};
+    std::printf("lambda/L %.2f at %.1f m/s: heave %.3f (closed form %.3f), pitch %.3f (%.3f)\n", lengths,
+                speed_m_per_s, c.got.heave, c.expected.heave, c.got.pitch, c.expected.pitch);
+    return c;
+}
+
 // Waves 3 to 8 boat lengths long, at rest and at 2.5 m/s (Fn = 0.30, the
 // range strip theory was validated over): heave and pitch within a factor
 // of 1.5 of the closed form's (which is 0.85 to 0.99 there).
@@ -152,16 +169,11 @@ TEST(Seakeeping, LongWavesCarryTheBoatAsStripTheorySays)
 {
     for (double speed : {0.0, 2.5})
         for (double lengths : {3.0, 5.0, 8.0}) {
-            const double wavelength_m = lengths * kLength_m;
-            const Response expected = closedFormResponse(wavelength_m, speed);
-            const Response got = simulatedResponse(wavelength_m, speed);
-            std::printf("lambda/L %.2f at %.1f m/s: heave %.3f (closed form %.3f), pitch %.3f (%.3f)\n", lengths, speed,
-                        got.heave, expected.heave, got.pitch, expected.pitch);
-            const std::string where = "lambda/L " + std::to_string(lengths) + " at " + std::to_string(speed) + " m/s";
-            EXPECT_LT(got.heave, 1.5 * expected.heave) << where;
-            EXPECT_GT(got.heave, expected.heave / 1.5) << where;
-            EXPECT_LT(got.pitch, 1.5 * expected.pitch) << where;
-            EXPECT_GT(got.pitch, expected.pitch / 1.5) << where;
+            const Compared c = compared(lengths, speed);
+            EXPECT_LT(c.got.heave, 1.5 * c.expected.heave) << c.where;
+            EXPECT_GT(c.got.heave, c.expected.heave / 1.5) << c.where;
+            EXPECT_LT(c.got.pitch, 1.5 * c.expected.pitch) << c.where;
+            EXPECT_GT(c.got.pitch, c.expected.pitch / 1.5) << c.where;
         }
 }
 
@@ -173,16 +185,11 @@ TEST(Seakeeping, ShortWavesLeaveTheBoatNearlyStill)
 {
     for (double speed : {0.0, 5.0})
         for (double lengths : {0.33, 0.5}) {
-            const double wavelength_m = lengths * kLength_m;
-            const Response expected = closedFormResponse(wavelength_m, speed);
-            const Response got = simulatedResponse(wavelength_m, speed);
-            std::printf("lambda/L %.2f at %.1f m/s: heave %.3f (closed form %.3f), pitch %.3f (%.3f)\n", lengths, speed,
-                        got.heave, expected.heave, got.pitch, expected.pitch);
-            const std::string where = "lambda/L " + std::to_string(lengths) + " at " + std::to_string(speed) + " m/s";
-            EXPECT_LT(expected.heave, 0.05) << where;
-            EXPECT_LT(expected.pitch, 0.05) << where;
-            EXPECT_LT(got.heave, 0.15) << where;
-            EXPECT_LT(got.pitch, 0.15) << where;
+            const Compared c = compared(lengths, speed);
+            EXPECT_LT(c.expected.heave, 0.05) << c.where;
+            EXPECT_LT(c.expected.pitch, 0.05) << c.where;
+            EXPECT_LT(c.got.heave, 0.15) << c.where;
+            EXPECT_LT(c.got.pitch, 0.15) << c.where;
         }
 }
 
