@@ -162,8 +162,8 @@ Compared compared(double lengths, double speed_m_per_s)
     return c;
 }
 
-// Waves 3 to 8 boat lengths long, at rest and at 2.5 m/s (Fn = 0.30, the
-// range strip theory was validated over): heave and pitch within a factor
+// Waves 3 to 8 boat lengths long, at rest and at 2.5 m/s (Fn = 0.30, a
+// speed strip theory is commonly used at): heave and pitch within a factor
 // of 1.5 of the closed form's (which is 0.85 to 0.99 there).
 TEST(Seakeeping, LongWavesCarryTheBoatAsStripTheorySays)
 {

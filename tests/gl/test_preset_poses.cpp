@@ -7,9 +7,9 @@
 // significant slopes (pi Hs / lambda_p; the gale's 1.9 m at 49 m, 7 degrees,
 // the steepest a boat sails in) are a fraction of it. The boat's bound is
 // strip theory's: its pitch is the waves' slope times a response that is 1
-// in waves much longer than the hull and at most 2.5 at the gale's 5 m/s
+// in waves much longer than the hull and at most 2.6 at the gale's 5 m/s
 // (Jensen, Mansour & Olsen 2004, Ocean Engineering 31, 61-85, sec. 2: at
-// lambda = 3 L; tests/cpu/test_seakeeping.cpp), so 2.5 x 7 = 18 degrees,
+// lambda = 3.1 L; tests/cpu/test_seakeeping.cpp), so 2.6 x 7 = 18 degrees,
 // and a few degrees of trim under way: 25. The buoys, tall and light, roll
 // further in a passing wake (30 degrees measured in scenes/under-way.toml).
 // A boat stood on its stern fails it: scenes/gale-under-way.toml's before
