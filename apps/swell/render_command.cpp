@@ -133,6 +133,9 @@ int runRender(const RenderOptions& options)
     options.outputSettings.applyTo(scene);
     if (const std::string problem = historyProblem(scene, options.time_s); !problem.empty())
         throw InputError({"--time"}, problem);
+    // A long wait before the first frame says what it is spent on.
+    if (const std::string note = historyNote(scene, options.time_s); !note.empty())
+        std::fprintf(stderr, "swell: %s\n", note.c_str());
     checkLens(scene, {options.width, options.height}, scene.camera.fovY_deg, options.scenePath);
     // Everything checked: only now is anything made on disk.
     createOutputFolder(output);

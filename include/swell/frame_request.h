@@ -50,4 +50,14 @@ SWELL_API HistoryCost historyCost(const Scene& scene, double from_s, double time
 // the bound, and a history_start_s that would fit.
 SWELL_API std::string historyProblem(const Scene& scene, double time_s, std::optional<double> steppedTo_s = {});
 
+// A still estimated to spend longer than this on its history, CPU s, says
+// so before it starts (historyNote): the user sees why it takes its time.
+inline constexpr double kNotedHistoryCpu_s = 3.0;
+
+// What a first frame at time_s will spend on the history of the scene's
+// bodies, when the estimate passes kNotedHistoryCpu_s: "simulating 80 s of
+// 2 floating bodies and their wake of 256 x 256 cells (from their start at
+// -60 s) before the frame: about 21 s of CPU (...)"; "" when it is less.
+SWELL_API std::string historyNote(const Scene& scene, double time_s);
+
 } // namespace swell

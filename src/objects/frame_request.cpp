@@ -91,6 +91,22 @@ HistoryCost historyCost(const Scene& scene, double from_s, double time_s)
     return cost;
 }
 
+std::string historyNote(const Scene& scene, double time_s)
+{
+    const double start_s = bodiesStart_s(scene);
+    const HistoryCost cost = historyCost(scene, start_s, time_s);
+    if (cost.cpu_s <= kNotedHistoryCpu_s)
+        return {};
+    const bool one = cost.bodies == 1;
+    return fmt::format("simulating {:g} s of {} floating bod{}{} (from {} start at {:g} s) before the frame: about "
+                       "{:.0f} s of CPU by the estimate of docs/PERFORMANCE.md, \"A still's history\"",
+                       cost.stepped_s, cost.bodies, one ? "y" : "ies",
+                       cost.wakeCells ? fmt::format(" and {} wake of {} x {} cells", one ? "its" : "their",
+                                                    cost.wakeCells, cost.wakeCells)
+                                      : "",
+                       one ? "its" : "their", start_s, cost.cpu_s);
+}
+
 std::string historyProblem(const Scene& scene, double time_s, std::optional<double> steppedTo_s)
 {
     const double start_s = bodiesStart_s(scene);

@@ -6,9 +6,11 @@
 #include "swell/frame_request.h"
 
 #include "swell/scene/scene.h"
+#include "swell/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <regex>
 #include <string>
 
@@ -68,3 +70,21 @@ TEST(FrameRequest, WithoutBodiesNothingIsStepped)
 }
 
 } // namespace
+
+// A still whose history is estimated at more than a few seconds says so
+// before it starts (issue 47: the gale's stills took 21 to 31 s without a
+// word); a short one says nothing.
+TEST(FrameRequest, ALongHistorySaysWhatItIsSpentOn)
+{
+    const swell::Scene gale = swell::loadScene(std::filesystem::path(SWELL_SOURCE_DIR) / "scenes" / "gale-under-way.toml");
+    const std::string note = swell::historyNote(gale, 20.0);
+    EXPECT_NE(note.find("simulating 80 s of 2 floating bodies and their wake of 256 x 256 cells (from their start at "
+                        "-60 s) before the frame: about "),
+              std::string::npos)
+        << note;
+    EXPECT_NE(note.find("s of CPU"), std::string::npos) << note;
+    swell::Scene released = gale;
+    released.historyStart_s = 19.0; // a second of history
+    EXPECT_EQ(swell::historyNote(released, 20.0), "");
+    EXPECT_EQ(swell::historyNote(swell::Scene{}, 20.0), ""); // no bodies
+}
