@@ -1,0 +1,39 @@
+// The storm's whitecaps at Monahan & O'Muircheartaigh's (1980) cover at
+// every time, not only on average (issue #47, item 1): in every 1 s window
+// of a 60 s clip of the storm preset (20 m/s), the share of the visible sea
+// its labels call whitecap_foam within 1.5 times Monahan's, from the
+// preset's camera (10 m up, where half the sea's pixels lie within 22 m)
+// and from 300 m straight above it.
+//
+// Disabled: red before and after the breaking score (swell/gpu/breaking.h).
+// With foam made where J was among the sea's lowest, the preset's camera
+// saw 0.07 to 5.25 times Monahan's cover (0.0068 to 0.55 of its sea) and
+// 300 m up 0.57 to 0.84 times. With the score, calibrated so that the mean
+// covered share stays Monahan's (Whitecaps.CoverFollowsMonahan), the foam
+// is spread over every stretch of sea, but most of it is lace covering
+// less than half of a pixel, which the labels do not count: 0 to 0.25
+// times from the camera, 0 to 0.01 from 300 m. Calibrated to the labels
+// instead, the camera's windows came within 0.79 to 1.75 times and 300 m
+// within 1.19 to 1.36, with the mean covered share at 3.9 times Monahan's
+// (lace over the whole sea). docs/RENDERING.md has the numbers. Small
+// frames and labels only: about 40 s on 2 loaded cores.
+#include "support/gl_test.h"
+#include "support/whitecap_share.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+class WhitecapShare : public swell::test::GlTest {};
+
+constexpr double kAllowedFactor = 1.5; // the issue's
+
+TEST_F(WhitecapShare, DISABLED_TheStormHoldsMonahansCoverInEverySecond)
+{
+    constexpr double kWind_mps = 20.0; // the preset's own
+    const swell::test::WhitecapShares shares = swell::test::stormWhitecapShares(kWind_mps, 60.0, {160, 90});
+    EXPECT_LE(swell::test::largestMissFactor("the preset's camera", kWind_mps, shares.presetCamera), kAllowedFactor);
+    EXPECT_LE(swell::test::largestMissFactor("300 m up", kWind_mps, shares.from300m), kAllowedFactor);
+}
+
+} // namespace
