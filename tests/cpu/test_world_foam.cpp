@@ -88,11 +88,7 @@ TEST(WorldFoam, TheBreakingRampMakesFoamOnTheBreakingFractionEverywhere)
     wind.fetch_km = 600.0; // the storm's
     const auto field = std::make_shared<const SpectralField>(makeSpectralField(SeaSpectrum(wind), 1.2, 13));
     const CpuSurface cpu(field);
-    // A share large enough to count in a small square (about 20 of its 576
-    // texels; the storm's own, 0.0055, leaves 3, and a count of 3 is noise
-    // whatever the score): what is tested is that the score's share is the
-    // same everywhere, whatever share is asked.
-    const double fraction = 0.0343;
+    const double fraction = breakingFraction(wind.windSpeed_mps);
     const BreakingRamp ramp = breakingRampsFor(cpu, *field, fraction)[0];
     // Elsewhere and later, over a wide square.
     const ScoredSquare wide = scoreSquare(cpu, *field, {5000.0, -700.0}, 200, 333.0, ramp.start - ramp.span);
