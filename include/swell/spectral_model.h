@@ -7,7 +7,6 @@
 #pragma once
 
 #include "swell/export.h"
-#include "swell/gpu/ocean.h"
 
 #include "swell/scene/spectrum.h"
 #include "swell/surface_query.h"
@@ -62,9 +61,7 @@ public:
 
 protected:
     SpectralSettings settings_;
-    // Each foam level's breaking score below which foam is made
-    // (src/ocean/spectral/breaking.h).
-    std::array<float, SWELL_FOAM_LEVELS> breakingStart_{};
+    float foldThreshold_ = 0.0f; // J below which foam is made
     std::shared_ptr<const spectral::SpectralField> field_;
 
 private:

@@ -34,24 +34,20 @@ float toHalfTowardZero(float v)
     return v;
 }
 
-// How much higher than computed this replay takes each breaking score: the
+// How much higher than computed this replay takes each fold Jacobian: the
 // GPU's steps compute J from other transforms (and llvmpipe's float
 // arithmetic), and a still must show no foam a sequence of the GPU's steps
-// would not. Their J's agree within one half's step (1.5e-5; measured over
-// one step's 131072 texels at three times of the storm); a score divides
-// the differences of a box's J by its deviation, so it moves by up to
-// about 3 * 1.5e-5 / 0.05 = 0.001 where a box breaks (deviations of 0.05
-// and more; a glassier box scores near 0, far above the ramp). The margin
-// is three times that and takes 0.003 / kBreakingSpan = 0.009 off a
-// texel's new foam: 0.01 took so much that the still's cover fell short of
-// the sequence's by more than the first frame's carried foam allows
-// (Whitecaps.AStillShowsTheFoamItsHistoryMade: 0.0048 against 0.0045).
-constexpr float kScoreMargin = 0.003f;
+// would not. Measured over one step's 131072 texels at three times of the
+// storm: the two J's made foam within one half's step of each other on
+// every texel of the ramp (1.5e-5 of J, the half's resolution there); the
+// margin is about 7 times that, and takes at most 1e-4 / 0.03 = 0.0033 off
+// a texel's new foam.
+constexpr float kJacobianMargin = 1e-4f;
 
 } // namespace
 
-FoamReplay::FoamReplay(std::shared_ptr<const SpectralField> field, const BreakingRamps& ramps)
-    : field_(std::move(field)), ramps_(ramps)
+FoamReplay::FoamReplay(std::shared_ptr<const SpectralField> field, float foldThreshold, float foldSoftness)
+    : field_(std::move(field)), foldThreshold_(foldThreshold), foldSoftness_(foldSoftness)
 {
     const int dims[2] = {kSize, kSize};
     fft_ = kiss_fftnd_alloc(dims, 2, 1, nullptr, nullptr);
@@ -83,27 +79,27 @@ FoamReplay::FoamReplay(std::shared_ptr<const SpectralField> field, const Breakin
     cross_.assign(n, {});
     for (auto& f : foam_)
         f.assign(size_t(kFoamSize) * kFoamSize, 0.0f);
-    jacobian_.assign(size_t(kSpan) * kSpan * kFoamLevels, 0.0f);
 }
 
 FoamReplay::~FoamReplay() { kiss_fft_free(fft_); }
 
 void FoamReplay::placeTaps(glm::dvec2 gridCenter_m, const std::array<FoamWindow, kFoamLevels>& windows)
 {
-    const size_t texels = size_t(kSpan) * kSpan;
+    const size_t texels = size_t(kFoamSize) * kFoamSize;
     for (auto& t : taps_)
         t.resize(texels * kFoamLevels);
     for (int level = 0; level < kFoamLevels; ++level) {
         const FoamWindow& w = windows[size_t(level)];
         const double texel_m = foamTexel_m(*field_, level);
-        for (int y = 0; y < kSpan; ++y)
-            for (int x = 0; x < kSpan; ++x) {
-                // The world texel of the span, as the shader finds its tile's.
-                const glm::ivec2 world = w.origin + glm::ivec2(x, y) - kBreakingRadius;
+        for (int y = 0; y < kFoamSize; ++y)
+            for (int x = 0; x < kFoamSize; ++x) {
+                // The world texel this stored texel holds, as the shader finds it.
+                const glm::ivec2 p(x, y);
+                const glm::ivec2 world = w.origin + ((p - w.origin) & (kFoamSize - 1));
                 const glm::dvec2 restOffset_m =
                     (glm::dvec2(world - w.centreIndex) + 0.5 - glm::dvec2(w.centreFraction)) * texel_m;
                 const glm::dvec2 point_m = gridCenter_m + restOffset_m;
-                const size_t texel = size_t(level) * texels + size_t(y) * kSpan + size_t(x);
+                const size_t texel = size_t(level) * texels + size_t(y) * kFoamSize + size_t(x);
                 for (int c = 0; c < kFoamCascades; ++c) {
                     const WarpSample warp = warpAt(field_->warps[size_t(c)], point_m);
                     const double scale = kSize / field_->cascades[size_t(c)].patch_m;
@@ -214,39 +210,26 @@ float FoamReplay::jacobianAt(size_t texel) const
     return (1.0f + gxx) * (1.0f + gzz) - gxz * gzx;
 }
 
-size_t FoamReplay::spanIndexOf(int level, int x, int z) const
-{
-    // The world texel a stored texel holds, from its window's origin.
-    const glm::ivec2 fromOrigin = (glm::ivec2(x, z) - windows_[size_t(level)].origin) & (kFoamSize - 1);
-    return size_t(level) * kSpan * kSpan + size_t(fromOrigin.y) * kSpan + size_t(fromOrigin.x);
-}
-
 const std::array<std::vector<float>, kFoamLevels>& FoamReplay::run(glm::dvec2 gridCenter_m,
                                                                     const std::array<FoamWindow, kFoamLevels>& windows,
                                                                     const std::vector<double>& times_s,
                                                                     double lifetime_s)
 {
-    windows_ = windows;
     placeTaps(gridCenter_m, windows);
     phasorSet_ = false;
+    const size_t texels = size_t(kFoamSize) * kFoamSize;
     for (size_t i = 0; i < times_s.size(); ++i) {
         evolveTo(times_s[i]);
-        for (size_t t = 0; t < jacobian_.size(); ++t)
-            jacobian_[t] = jacobianAt(t);
         const float decay = i == 0 ? 0.0f : float(std::exp(-(times_s[i] - times_s[i - 1]) / lifetime_s));
         for (int level = 0; level < kFoamLevels; ++level) {
             float* foam = foam_[size_t(level)].data();
-            const BreakingRamp& ramp = ramps_[size_t(level)];
-            for (int z = 0; z < kFoamSize; ++z)
-                for (int x = 0; x < kFoamSize; ++x) {
-                    // The box's first texel: the span index is the box's
-                    // centre's less the radius each way.
-                    const float score = breakingScore(&jacobian_[spanIndexOf(level, x, z)], kSpan) + kScoreMargin;
-                    const size_t p = size_t(z) * kFoamSize + size_t(x);
-                    // Stored as the GPU's R16F texture stores it at every
-                    // step, so the foam decays through the same roundings.
-                    foam[p] = toHalfTowardZero(std::max(foam[p] * decay, foamMadeAt(score, ramp.start, ramp.span)));
-                }
+            for (size_t p = 0; p < texels; ++p) {
+                const float j = jacobianAt(size_t(level) * texels + p) + kJacobianMargin;
+                const float made = std::clamp(1.0f - (j - foldThreshold_) / foldSoftness_, 0.0f, 1.0f);
+                // Stored as the GPU's R16F texture stores it at every step,
+                // so the foam decays through the same roundings.
+                foam[p] = toHalfTowardZero(std::max(foam[p] * decay, made));
+            }
         }
     }
     return foam_;
@@ -254,7 +237,7 @@ const std::array<std::vector<float>, kFoamLevels>& FoamReplay::run(glm::dvec2 gr
 
 float FoamReplay::lastJacobian(int level, int x, int z) const
 {
-    return jacobian_[spanIndexOf(level, x, z) + size_t(kBreakingRadius) * kSpan + kBreakingRadius];
+    return jacobianAt(size_t(level) * kFoamSize * kFoamSize + size_t(z) * kFoamSize + size_t(x));
 }
 
 } // namespace swell::spectral

@@ -1,7 +1,6 @@
 // A still's foam history replayed on the CPU: the C++ twin of
 // shaders/ocean/spectral_foam.comp for the replay's steps before the last.
-// Each step needs only the fold Jacobian of the folding cascades (over each
-// window and its breaking boxes' margin, breaking.h), which
+// Each step needs only the fold Jacobian of the folding cascades, which
 // needs only three of the eight fields a frame transforms (dDx/dx, dDz/dz,
 // dDx/dz): three inverse FFTs a step for the two folding cascades (one
 // packs both cascades' dDx/dz), against the GPU replay's transform of every
@@ -11,7 +10,6 @@
 // 0.011 s (docs/PERFORMANCE.md); a GPU keeps its own steps.
 #pragma once
 
-#include "ocean/spectral/breaking.h"
 #include "ocean/spectral/spectral_field.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
@@ -28,9 +26,9 @@ namespace swell::spectral {
 
 class FoamReplay {
 public:
-    // The foam is made on the breaking score's ramps (breaking.h), as
-    // spectral_foam.comp makes it.
-    FoamReplay(std::shared_ptr<const SpectralField> field, const BreakingRamps& ramps);
+    // The foam is made where J < foldThreshold, fading over foldSoftness
+    // above it, as spectral_foam.comp makes it.
+    FoamReplay(std::shared_ptr<const SpectralField> field, float foldThreshold, float foldSoftness);
     ~FoamReplay();
     FoamReplay(const FoamReplay&) = delete;
     FoamReplay& operator=(const FoamReplay&) = delete;
@@ -48,10 +46,7 @@ public:
     float lastJacobian(int level, int x, int z) const;
 
 private:
-    // Each level's texels with the boxes' margin: world texels origin - R
-    // .. origin + N + R - 1 each way, row by row.
-    static constexpr int kSpan = kFoamSize + 2 * kBreakingRadius;
-    // Where a texel samples one cascade: the four neighbours of its
+    // Where a stored texel samples one cascade: the four neighbours of its
     // warped point, the bilinear weights, and the warp's Jacobian (column j:
     // d(x + w)/dx_j).
     struct Tap {
@@ -62,12 +57,9 @@ private:
     void placeTaps(glm::dvec2 gridCenter_m, const std::array<FoamWindow, kFoamLevels>& windows);
     void evolveTo(double time_s);
     float jacobianAt(size_t texel) const;
-    // The J index (level-major, kSpan^2 a level) of a level's stored texel.
-    size_t spanIndexOf(int level, int x, int z) const;
 
     std::shared_ptr<const SpectralField> field_;
-    BreakingRamps ramps_;
-    std::array<FoamWindow, kFoamLevels> windows_{};
+    float foldThreshold_, foldSoftness_;
     void* fft_ = nullptr; // kiss_fftnd_cfg, inverse, N x N
     // Per folding cascade and sample: the coefficients that turn h into
     // dDx/dx, dDz/dz and dDx/dz, and the phasor exp(i w t) now.
@@ -81,10 +73,8 @@ private:
     // cascade, and (dDx/dz of cascade 0 + i dDx/dz of cascade 1).
     std::array<std::vector<std::complex<float>>, kFoamCascades> alongSpectrum_, along_;
     std::vector<std::complex<float>> crossSpectrum_, cross_;
-    // Taps of every texel of every level's span (level-major), per cascade,
-    // and the J there at the last step.
+    // Taps of every stored texel of every level (level-major), per cascade.
     std::array<std::vector<Tap>, kFoamCascades> taps_;
-    std::vector<float> jacobian_;
     std::array<std::vector<float>, kFoamLevels> foam_;
 };
 

@@ -9,7 +9,7 @@ double monahanWhitecapCover(double windSpeed10_mps) { return 3.84e-6 * std::pow(
 
 double foamPersistence(double windSpeed10_mps)
 {
-    return 19.2 * std::pow(20.0 / windSpeed10_mps, 0.75);
+    return 3.06 * std::pow(20.0 / windSpeed10_mps, 1.82);
 }
 
 double breakingFraction(double windSpeed10_mps)

@@ -1,14 +1,16 @@
 // How much of the spectral ocean is white: the whitecap climatology the foam
-// is calibrated against, and the share of the sea that makes foam.
+// is calibrated against, and the fold thresholds that make it so.
 //
 // Whitecap cover grows steeply with the wind, W = 3.84e-6 * U10^3.41
 // (Monahan & O'Muircheartaigh 1980, eq. 3; 0.99% at 10 m/s, 10.5% at 20).
-// Foam is made where the breaking score (breaking.h: J of cascades 0 and 1
-// against its own 5 x 5 texel neighbourhood) is among the lowest
-// `breakingFraction` of the sea, so that every stretch of sea a few metres
-// across has its share of breaking crests, whatever phase of the longest
-// waves lies under it; the foam's lifetime then spreads each breaking over
-// more area than it had while active, by foamPersistence().
+// The cascades' Jacobians do not: the spectrum's shape scales with its peak
+// and so do the cascades, so each cascade's distribution of J is nearly the
+// same at every wind. Foam is therefore made where J (of cascades 0 and 1
+// together) is among the lowest `breakingFraction` of the sea - the most
+// compressed, crest-folding parts of the surface - with that fraction set
+// from W; the foam's lifetime then spreads each breaking over more area than
+// it had while active, by foamPersistence() (measured on rendered frames,
+// see tests/golden/test_whitecaps.cpp).
 #pragma once
 
 #include "ocean/spectral/spectral_field.h"
@@ -25,23 +27,20 @@ namespace swell::spectral {
 // Monahan's cover it reads as noise).
 inline constexpr int kFoamCascades = 2;
 
+// How many times its active area a breaking whitens once its foam has
+// spread and faded (3.85 s lifetime), as the mean covered share the shading
+// draws. Measured on rendered frames with a fixed factor of 2.8: 6.51, 2.81,
+// 1.85 and 1.23 times Monahan's cover at 8, 12, 16 and 20 m/s, so the
+// factor was 18.2, 7.9, 5.2 and 3.4 there, about 3.44*(20/U10)^1.82; with
+// that, 0.86, 0.88, 0.92 and 0.90 times Monahan, so 0.89 times it:
+// 3.06*(20/U10)^1.82. Persistence falls as the wind grows since the breaking
+// regions grow relative to how far their foam is carried in its lifetime.
+double foamPersistence(double windSpeed10_mps);
+
 // Monahan & O'Muircheartaigh (1980): the fraction of the sea white at U10, m/s.
 double monahanWhitecapCover(double windSpeed10_mps);
 
-// How many times its active area a breaking whitens once its foam has
-// spread and faded (3.85 s lifetime), as the mean covered share the shading
-// draws. Measured on rendered frames (tests/golden/test_whitecaps.cpp) with
-// the breaking score: with 3.06*(20/U10)^1.82, the sea-wide J threshold's
-// fit, the cover was 1.54, 2.10, 2.65 and 2.57 times Monahan's at 8, 12,
-// 16 and 20 m/s (the score's breakings are scattered, so their foam
-// spreads over more sea); with 6.8*(20/U10)^1.26, 1.33, 1.47, 1.83 and
-// 1.68 (the cover grows more slowly than the share that breaks); with
-// 19.2*(20/U10)^0.75, 0.80, 0.92, 1.10 and 1.00. Persistence falls as the
-// wind grows since the breaking regions grow relative to how far their
-// foam is carried in its lifetime.
-double foamPersistence(double windSpeed10_mps);
-
-// The fraction of the sea that makes foam in full at a time.
+// The fraction of each foam cascade's samples that make foam at a time.
 double breakingFraction(double windSpeed10_mps);
 
 // J of every sample of one cascade from its fields (dDx/dx, dDz/dz, dDx/dz).

@@ -2,7 +2,6 @@
 // SpectralModel::createGpu. Library-internal.
 #pragma once
 
-#include "ocean/spectral/breaking.h"
 #include "ocean/spectral/spectral_field.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/spectral_model.h"
@@ -13,9 +12,9 @@
 namespace swell::spectral {
 
 // The GPU half of a spectral model: its textures, passes and foam steps for
-// `field`, whitecaps on the breaking score's `ramps`, one a foam level (breaking.h).
+// `field`, whitecaps where the fold passes `foldThreshold`.
 std::unique_ptr<WaveModelGpu> makeSpectralGpu(std::shared_ptr<const SpectralField> field,
-                                              const SpectralSettings& settings, const spectral::BreakingRamps& ramps,
+                                              const SpectralSettings& settings, float foldThreshold,
                                               const gl::ShaderSources& shaders);
 
 } // namespace swell::spectral
