@@ -5,18 +5,19 @@
 // preset's camera (10 m up, where half the sea's pixels lie within 22 m)
 // and from 300 m straight above it.
 //
-// Disabled: red before and after the breaking score (swell/gpu/breaking.h).
-// With foam made where J was among the sea's lowest, the preset's camera
-// saw 0.07 to 5.25 times Monahan's cover (0.0068 to 0.55 of its sea) and
-// 300 m up 0.57 to 0.84 times. With the score, calibrated so that the mean
-// covered share stays Monahan's (Whitecaps.CoverFollowsMonahan), the foam
-// is spread over every stretch of sea, but most of it is lace covering
-// less than half of a pixel, which the labels do not count: 0 to 0.25
-// times from the camera, 0 to 0.01 from 300 m. Calibrated to the labels
-// instead, the camera's windows came within 0.79 to 1.75 times and 300 m
-// within 1.19 to 1.36, with the mean covered share at 3.9 times Monahan's
-// (lace over the whole sea). docs/RENDERING.md has the numbers. Small
-// frames and labels only: about 40 s on 2 loaded cores.
+// Disabled: red. With foam made where J is among the sea's lowest (this
+// build), the preset's camera sees 0.07 to 5.25 times Monahan's cover
+// (0.0068 to 0.55 of its sea) and 300 m up 0.57 to 0.84 times: the sea
+// the camera sees lies half within 22 m, less than one 300 m wave, and a
+// long wave's compressed phase lowers J over a whole face. A breaking
+// score against each texel's neighbourhood (branch helper-foam-score)
+// spread the breaking evenly but, calibrated to the mean covered share
+// (Whitecaps.CoverFollowsMonahan), left most foam as lace under half a
+// pixel, which the labels do not count (0 to 0.25 and 0 to 0.01), and
+// calibrated to the labels put lace over the whole sea (mean cover 3.9
+// times Monahan's; windows 0.79 to 1.75 and 1.19 to 1.36).
+// docs/RENDERING.md, "Whitecaps", has the numbers. Small frames and labels
+// only: about 40 s on 2 loaded cores.
 #include "support/gl_test.h"
 #include "support/whitecap_share.h"
 
