@@ -6,8 +6,8 @@
 // and from 300 m straight above it.
 //
 // Disabled: red. With foam made where J is among the sea's lowest (this
-// build), the preset's camera sees 0.07 to 5.25 times Monahan's cover
-// (0.0068 to 0.55 of its sea) and 300 m up 0.57 to 0.84 times: the sea
+// build), the preset's camera sees 0.06 to 4.84 times Monahan's cover
+// (0.0068 to 0.51 of its sea) and 300 m up 0.57 to 0.84 times: the sea
 // the camera sees lies half within 22 m, less than one 300 m wave, and a
 // long wave's compressed phase lowers J over a whole face. A breaking
 // score against each texel's neighbourhood (branch helper-foam-score)
