@@ -7,7 +7,9 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include <array>
 #include <cmath>
+#include <map>
 
 namespace swell::detail {
 
@@ -30,10 +32,10 @@ double valueNoise(double x, double y)
     return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
 }
 
-double fractalNoise(double x, double y)
+double fractalNoise(double x, double y, int octaves = 5)
 {
     double sum = 0.0, amplitude = 0.5;
-    for (int octave = 0; octave < 5; ++octave) {
+    for (int octave = 0; octave < octaves; ++octave) {
         sum += amplitude * (valueNoise(x, y) - 0.5);
         x *= 2.03;
         y *= 2.03;
@@ -57,6 +59,24 @@ void addTriangleNormals(MeshData& mesh)
     }
     for (MeshVertex& v : mesh.vertices)
         v.normal = glm::length(v.normal) > 0.0f ? glm::normalize(v.normal) : glm::vec3(0, 1, 0);
+}
+
+// Vertices that share a place share one normal: a lathe repeats its first
+// column at its seam and its ends at the poles, and normals averaged on each
+// side apart would draw a crease there.
+// Places are compared at 0.1 mm: the seam's sin(2 pi) is not exactly 0.
+void weldNormals(MeshData& mesh)
+{
+    const auto place = [](const glm::vec3& p) {
+        return std::array<long, 3>{std::lround(p.x * 1e4f), std::lround(p.y * 1e4f), std::lround(p.z * 1e4f)};
+    };
+    std::map<std::array<long, 3>, glm::vec3> sums;
+    for (const MeshVertex& v : mesh.vertices)
+        sums[place(v.position)] += v.normal;
+    for (MeshVertex& v : mesh.vertices) {
+        const glm::vec3 n = sums[place(v.position)];
+        v.normal = glm::length(n) > 0.0f ? glm::normalize(n) : v.normal;
+    }
 }
 
 // A surface of revolution about +y: profile points (radius, height), each ring
@@ -140,17 +160,27 @@ MeshData makeBuiltinModel(const std::string& name)
     } else if (name == "rock") {
         // A weathered boulder, 6 m across: a lumpy dome that stands in the
         // water, closed underneath so that it is a solid (a body's shape).
+        // Fine enough (48 rings of 96) that its relief is drawn as curved
+        // surfaces rather than as the facets of a coarse mesh: the default
+        // scene shows it 24 m across at 150 m, where 20 segments read as a
+        // cut gem. The relief's three octaves are all coarser than the rings,
+        // so the mesh resolves every bump it carries.
+        constexpr int kRings = 48, kSegments = 96;
         std::vector<glm::vec2> profile{{0.0f, -4.0f}};
-        for (int i = 0; i <= 10; ++i) {
-            const float t = float(i) / 10.0f;
+        for (int i = 0; i <= kRings; ++i) {
+            const float t = float(i) / float(kRings);
             profile.push_back({3.0f * std::sqrt(std::max(0.0f, 1.0f - t * t)) + 0.01f, -4.0f + 7.0f * t});
         }
         profile.push_back({0.0f, 3.05f});
-        addLathe(mesh, profile, 20, [](float) { return glm::vec3(0.36f, 0.34f, 0.31f); });
+        addLathe(mesh, profile, kSegments, [](float) { return glm::vec3(0.36f, 0.34f, 0.31f); });
         for (MeshVertex& v : mesh.vertices) {
-            const float bump = float(fractalNoise(v.position.x * 0.7 + 11.0, v.position.z * 0.7 + v.position.y * 0.5));
+            const float bump =
+                float(fractalNoise(v.position.x * 0.7 + 11.0, v.position.z * 0.7 + v.position.y * 0.5, 3));
             v.position *= 1.0f + 0.6f * bump;
         }
+        addTriangleNormals(mesh);
+        weldNormals(mesh);
+        return mesh;
     } else if (name == "boat") {
         // A 7 m motor workboat, normals and all from its file.
         return builtinBoat().mesh;
