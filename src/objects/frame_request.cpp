@@ -60,7 +60,7 @@ constexpr double kBodySetup_s = 0.045;
 int gerstnerWaves(const Scene& scene)
 {
     try {
-        return int(resolveWaves(scene.waves).waves.size());
+        return int(resolveWaves(scene).waves.size());
     } catch (const std::exception&) {
         return 64; // a scene that fails its checks is refused there; cost it at the most
     }
