@@ -3,6 +3,8 @@
 // main() turns into kExitBadInput and kExitFailure with one message format.
 #pragma once
 
+#include "viewer/view_quality.h"
+
 #include "swell/scene/scene.h"
 
 #include <filesystem>
@@ -59,12 +61,13 @@ struct ViewOptions {
     bool logInput = false;
     int width = 1280, height = 720;
     OutputSettings outputSettings;
-    // The renderer's temporal resolve (Renderer::setTemporalResolve): on by
-    // default in the viewer, where it replaces the scene's antialiasing.
-    bool temporal = true;
+    // When the renderer's temporal resolve (Renderer::setTemporalResolve)
+    // replaces the scene's antialiasing: by default while the camera rests
+    // (viewer/view_quality.h).
+    viewer::TemporalMode temporal = viewer::TemporalMode::WhileStill;
     // Dynamic resolution: the render scale follows the frame time towards
     // this, ms (viewer/dynamic_scale.h); 0 keeps outputSettings.renderScale.
-    double frameTarget_ms = 100.0;
+    double frameTarget_ms = viewer::QualitySettings{}.frameTarget_ms;
 };
 int runView(const ViewOptions& options);
 

@@ -169,15 +169,21 @@ int main(int argc, char** argv)
                           "For tests: print on stderr what the panel saw pressed each frame (Enter, Esc, clicks)");
     addOutputOptions(*viewCommand, view.outputSettings);
     viewCommand->add_option_function<std::string>(
-                   "--temporal", [&view](const std::string& value) { view.temporal = value == "on"; },
+                   "--temporal",
+                   [&view](const std::string& value) {
+                       view.temporal = value == "on"    ? swell::app::viewer::TemporalMode::Always
+                                       : value == "off" ? swell::app::viewer::TemporalMode::Off
+                                                        : swell::app::viewer::TemporalMode::WhileStill;
+                   },
                    "Temporal resolve: each frame jittered and blended into the history at the window's full "
-                   "resolution, in place of the scene's antialiasing (default on)")
-        ->type_name("SWITCH")
-        ->check(CLI::IsMember({"on", "off"}));
+                   "resolution, in place of the scene's antialiasing: auto (the default) while the camera rests, "
+                   "on always, off never")
+        ->type_name("auto|on|off")
+        ->check(CLI::IsMember({"auto", "on", "off"}));
     CLI::Option* frameTarget = viewCommand->add_option(
                    "--frame-target", view.frameTarget_ms,
                    "Dynamic resolution: the render scale follows the frame time towards this, ms; 0 keeps the "
-                   "scale fixed (default 100, or 0 when --scale is given)")
+                   "scale fixed (default 150, or 0 when --scale is given)")
         ->type_name("MS")
         ->check(numberIn(0.0, 10000.0));
 

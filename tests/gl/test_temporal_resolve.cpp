@@ -133,7 +133,7 @@ TEST_F(TemporalResolve, AStillCameraConvergesToTheFullResolutionFrame)
     EXPECT_LT(resolved.mean, 0.7 * upscaled.mean) << "resolved " << resolved << ", upscaled " << upscaled;
 }
 
-// The same at the viewer's floor (0.3: its dynamic resolution's least scale;
+// The same at 0.3 (the viewer's dynamic resolution's floor before issue 47;
 // the resolve's 2x2 samples, eleven output pixels a drawn one) and above half
 // size (0.75: the 3x3 about the nearest sample), each against one frame at
 // that scale scaled up.

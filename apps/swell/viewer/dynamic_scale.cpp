@@ -10,6 +10,12 @@ DynamicScale::DynamicScale(double target_ms, double minScale, double maxScale)
 {
 }
 
+void DynamicScale::restart()
+{
+    smoothed_ms_ = 0.0;
+    settle_ = kSettleFrames;
+}
+
 double DynamicScale::next(double frame_ms, double scale)
 {
     // An exponential mean over about the last three frames: one slow frame

@@ -2,16 +2,19 @@
 // follows the frame time towards a target, so that the view keeps its frame
 // rate on a slow GPU (or none); the renderer's temporal resolve turns the
 // frames drawn at a lower scale back into the window's full resolution
-// while the camera rests.
+// while the camera rests (viewer/view_quality.h chooses when).
 #pragma once
 
 namespace swell::app::viewer {
 
-// The lowest scale the controller goes to: 0.3 of 1280x720 is 384x216, still
-// about 3 drawn pixels for every 32 output ones (the resolve's jitter
-// fills the rest in over its 16 frames), below which a moving view turns to
-// mush.
-inline constexpr double kMinDynamicScale = 0.3;
+// The lowest scale the controller goes to: half the window's size. Below it
+// a moving view is worse than the plain `--scale 0.5` whatever the resolve
+// does (tests/apps/view_quality_image_test.cpp: the storm, moving, drawn at
+// 0.3 with the resolve strays 3.1 levels a channel from the full-resolution
+// frame, at 0.5 without it 2.9), and on llvmpipe the frame saves little
+// there: most of its cost does not shrink with the pixels (docs/VIEWER.md
+// "Speed").
+inline constexpr double kMinDynamicScale = 0.5;
 inline constexpr double kMaxDynamicScale = 1.0;
 
 class DynamicScale {
@@ -27,6 +30,10 @@ public:
     // each change (the first frame at a new size allocates its targets).
     double next(double frame_ms, double scale);
     double target_ms() const { return target_ms_; }
+    // The frames' cost changed for another reason than the scale (the
+    // temporal resolve came on or went off): forgets the smoothed time and
+    // waits kSettleFrames before the next change.
+    void restart();
 
     // Below this share of the target the scale may rise.
     static constexpr double kLow = 0.7;

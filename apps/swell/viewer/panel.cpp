@@ -112,23 +112,30 @@ void Panel::drawView(Session& session, ViewState& view, const FrameStats& stats,
         changed |= editParameter(session, *debugView, 0, edited);
     if (const Parameter* antialiasing = findParameter("antialiasing"))
         changed |= editParameter(session, *antialiasing, 0, edited);
-    ImGui::Checkbox("temporal resolve", &view.temporal);
+    const char* temporalModes[] = {"while still", "always", "off"};
+    int temporalMode = int(view.quality.temporal);
+    if (ImGui::Combo("temporal resolve", &temporalMode, temporalModes, IM_ARRAYSIZE(temporalModes)))
+        view.quality.temporal = TemporalMode(temporalMode);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Jitter each frame and blend it into the history at the window's full resolution, in "
-                          "place of the antialiasing (--temporal on the command line)");
-    ImGui::Checkbox("dynamic resolution", &view.dynamicScale);
+                          "place of the antialiasing: while the camera rests (it dithers a moving view), always, or "
+                          "never (--temporal auto, on or off on the command line)");
+    ImGui::Checkbox("dynamic resolution", &view.quality.dynamicScale);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The render scale follows the frame time towards the target (--frame-target)");
-    if (view.dynamicScale) {
+    if (view.quality.dynamicScale) {
         const double minTarget = 10.0, maxTarget = 1000.0;
-        ImGui::SliderScalar("frame target ms", ImGuiDataType_Double, &view.frameTarget_ms, &minTarget, &maxTarget,
-                            "%.0f");
-        view.frameTarget_ms = std::clamp(view.frameTarget_ms, minTarget, maxTarget);
-        ImGui::Text("render scale %.2f", view.renderScale);
+        ImGui::SliderScalar("frame target ms", ImGuiDataType_Double, &view.quality.frameTarget_ms, &minTarget,
+                            &maxTarget, "%.0f");
+        view.quality.frameTarget_ms = std::clamp(view.quality.frameTarget_ms, minTarget, maxTarget);
+        ImGui::Text("render scale %.2f, temporal resolve %s", view.drawn.renderScale,
+                    view.drawn.temporal ? "on" : "off");
     } else {
         const double minScale = kMinRenderScale, maxScale = kMaxRenderScale;
-        ImGui::SliderScalar("render scale", ImGuiDataType_Double, &view.renderScale, &minScale, &maxScale, "%.2f");
-        view.renderScale = std::clamp(view.renderScale, minScale, maxScale); // Ctrl+click may type anything
+        ImGui::SliderScalar("render scale", ImGuiDataType_Double, &view.quality.fixedScale, &minScale, &maxScale,
+                            "%.2f");
+        // Ctrl+click may type anything.
+        view.quality.fixedScale = std::clamp(view.quality.fixedScale, minScale, maxScale);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Draw the frame at this fraction of the window's size and scale it up: 0.5 draws a "
                               "quarter of the pixels (--scale on the command line)");

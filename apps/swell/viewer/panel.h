@@ -13,6 +13,7 @@
 #include "viewer/frame_times.h"
 #include "viewer/panel_widgets.h"
 #include "viewer/session.h"
+#include "viewer/view_quality.h"
 
 #include "swell/debug.h"
 #include "swell/renderer.h"
@@ -51,15 +52,14 @@ struct ViewState {
     // second: lower than timeRate only when frames are slower than the
     // clock's largest step (kMaxFrameStep_s), 0 while paused.
     double actualTimeRate = 1.0;
-    // Every pass draws at this fraction of the window's size, scaled up
-    // (bilinear) to the window: swell::Renderer::setRenderScale().
-    double renderScale = 1.0;
-    // The renderer's temporal resolve (Renderer::setTemporalResolve), and
-    // dynamic resolution: renderScale following the frame time towards
-    // frameTarget_ms (viewer/dynamic_scale.h).
-    bool temporal = true;
-    bool dynamicScale = false;
-    double frameTarget_ms = 100.0;
+    // What the view asks for: when the temporal resolve is on, dynamic
+    // resolution and its frame target, or a fixed render scale
+    // (viewer/view_quality.h).
+    QualitySettings quality;
+    // How the last frame was drawn: every pass at drawn.renderScale of the
+    // window's size, scaled up (bilinear) to the window
+    // (swell::Renderer::setRenderScale), and with the temporal resolve or not.
+    FrameQuality drawn;
     bool followSceneCamera = true; // the scene's camera (and its path); false: free flight
     FlyCamera fly;
     PanelMode panel = PanelMode::Full;

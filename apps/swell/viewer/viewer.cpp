@@ -14,11 +14,11 @@
 
 #include "data_folders.h"
 #include "scene_loading.h"
-#include "viewer/dynamic_scale.h"
 #include "viewer/gui.h"
 #include "viewer/panel.h"
 #include "viewer/screenshot.h"
 #include "viewer/session.h"
+#include "viewer/view_quality.h"
 #include "viewer/window.h"
 
 #include "swell/error.h"
@@ -34,7 +34,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <ctime>
-#include <optional>
 #include <set>
 #include <vector>
 
@@ -214,12 +213,12 @@ int run(const ViewOptions& options)
     panel.sceneLoaded(options.scenePath);
 
     ViewState view;
-    view.renderScale = options.outputSettings.renderScale;
-    view.temporal = options.temporal;
-    view.dynamicScale = options.frameTarget_ms > 0.0;
-    if (view.dynamicScale)
-        view.frameTarget_ms = options.frameTarget_ms;
-    std::optional<DynamicScale> dynamic;
+    view.quality.temporal = options.temporal;
+    view.quality.fixedScale = options.outputSettings.renderScale;
+    view.quality.dynamicScale = options.frameTarget_ms > 0.0;
+    if (view.quality.dynamicScale)
+        view.quality.frameTarget_ms = options.frameTarget_ms;
+    ViewQuality quality(options.outputSettings.renderScale);
     view.fly.setPose(cameraAt(session.scene().camera, 0.0));
     FlyControls controls(window.handle());
     FrameStats stats;
@@ -229,6 +228,7 @@ int run(const ViewOptions& options)
     // A scripted run's frame times, from each frame's start to the next's
     // (input, panel, drawing, swap), reported when it ends: wall s, CPU ms.
     std::vector<double> scriptedFrames_s, scriptedFramesCpu_ms, scriptedScales;
+    int scriptedTemporal = 0; // of those frames, drawn with the temporal resolve
     double last = glfwGetTime();
     double lastCpu_ms = processCpu_ms();
     for (int frame = 0; !window.shouldClose(); ++frame) {
@@ -249,7 +249,8 @@ int run(const ViewOptions& options)
         if (scripted && frame > 1) {
             scriptedFrames_s.push_back(frame_s);
             scriptedFramesCpu_ms.push_back(cpu_ms - lastCpu_ms);
-            scriptedScales.push_back(view.renderScale);
+            scriptedScales.push_back(view.drawn.renderScale);
+            scriptedTemporal += view.drawn.temporal ? 1 : 0;
         }
         lastCpu_ms = cpu_ms;
 
@@ -300,18 +301,12 @@ int run(const ViewOptions& options)
         // The panel may have changed the scene or the camera: draw with what it left.
         const Camera camera = frameCamera(view, session.scene());
         const glm::ivec2 size = window.framebufferSize();
-        // Dynamic resolution: the scale for this frame from the last one's
-        // time (not frame 1's, which measured the first frame's replay).
-        if (!view.dynamicScale || !dynamic || dynamic->target_ms() != view.frameTarget_ms)
-            dynamic.reset();
-        if (view.dynamicScale) {
-            if (!dynamic)
-                dynamic.emplace(view.frameTarget_ms);
-            else if (frame > 1)
-                view.renderScale = dynamic->next(frame_s * 1000.0, view.renderScale);
-        }
-        session.renderer().setRenderScale(view.renderScale);
-        session.renderer().setTemporalResolve(view.temporal);
+        // The scale and the resolve for this frame, from the camera and the
+        // last frame's time (not frame 1's, which measured the first frame's
+        // replay, nor frame 0's, which has none).
+        view.drawn = quality.next(view.quality, camera, frame > 1 ? frame_s * 1000.0 : 0.0);
+        session.renderer().setRenderScale(view.drawn.renderScale);
+        session.renderer().setTemporalResolve(view.drawn.temporal);
         session.renderer().setInteractive(true); // (the session may have made a new renderer)
         session.renderer().render(camera, view.time_s, size);
         stats.counters = session.renderer().counters();
@@ -342,14 +337,16 @@ int run(const ViewOptions& options)
         // On stderr, so that stdout keeps only the screenshot's path.
         const glm::ivec2 size = window.framebufferSize();
         std::fprintf(stderr,
-                     "swell view: %zu frames timed at %dx%d, render scale %.2f%s, temporal resolve %s: median "
+                     "swell view: %zu frames timed at %dx%d, render scale %.2f%s, temporal resolve on in %d: median "
                      "%.1f ms wall (%.1f frames a second), %.1f ms CPU a frame; the longest %.1f ms wall, %.1f ms "
                      "CPU\n",
                      scriptedFrames_s.size(), size.x, size.y, median(scriptedScales),
-                     view.dynamicScale ? fmt::format(" (median; dynamic, target {:.0f} ms, last {:.2f})",
-                                                     view.frameTarget_ms, view.renderScale).c_str()
-                                       : "",
-                     view.temporal ? "on" : "off", 1000.0 * median(scriptedFrames_s),
+                     view.quality.dynamicScale
+                         ? fmt::format(" (median; dynamic, target {:.0f} ms, last {:.2f})", view.quality.frameTarget_ms,
+                                       view.drawn.renderScale)
+                               .c_str()
+                         : "",
+                     scriptedTemporal, 1000.0 * median(scriptedFrames_s),
                      1.0 / median(scriptedFrames_s),
                      median(scriptedFramesCpu_ms),
                      1000.0 * *std::max_element(scriptedFrames_s.begin(), scriptedFrames_s.end()),
