@@ -5,6 +5,8 @@
 #include "data_folders.h"
 #include "scene_loading.h"
 
+#include "scene/suggestions.h"
+
 #include "swell/error.h"
 #include "swell/frame_request.h"
 #include "swell/renderer.h"
@@ -17,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <regex>
 #include <vector>
 
@@ -74,8 +77,9 @@ CLI::Validator wholeNumberIn(long lo, long hi)
 }
 
 // What the first argument most likely meant when it is not a subcommand: a
-// scene file given without one gets the commands that take it.
-void suggestSubcommand(const std::string& first)
+// scene file given without one gets the commands that take it; a word, the
+// subcommands (from the parser, so none is left out) and the nearest one.
+void suggestSubcommand(const CLI::App& app, const std::string& first)
 {
     if (first.empty() || first[0] == '-')
         return;
@@ -87,7 +91,15 @@ void suggestSubcommand(const std::string& first)
                      "`swell render %s -o %s.png` renders it headless\n",
                      first.c_str(), first.c_str(), stem.c_str());
     } else {
-        std::fprintf(stderr, "swell: the subcommands are view, render and bench (swell --help)\n");
+        std::vector<std::string> names;
+        for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; }))
+            names.push_back(command->get_name());
+        std::string list;
+        for (std::size_t i = 0; i < names.size(); ++i)
+            list += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+        const std::optional<std::string> near = swell::detail::scenefile::closest(first, names);
+        std::fprintf(stderr, "swell: the subcommands are %s (swell --help)%s\n", list.c_str(),
+                     near ? fmt::format("; did you mean `swell {}`?", *near).c_str() : "");
     }
 }
 
@@ -268,7 +280,7 @@ int main(int argc, char** argv)
     } catch (const CLI::ParseError& e) {
         app.exit(e);
         if (argc > 1 && app.get_subcommands().empty())
-            suggestSubcommand(argv[1]);
+            suggestSubcommand(app, argv[1]);
         return swell::kExitBadInput;
     }
     try {

@@ -191,8 +191,10 @@ py::object getValue(const PyScene& s, const std::string& key)
     const ResolvedKey k = resolveKey(s.scene, key);
     if (!isPresent(*k.parameter, s.scene))
         throw py::key_error(key + ": not used by this scene as it is (a waves.wind key when the waves are listed, "
-                                  "a waves.swell key without a swell, a spectral key with the Gerstner model); "
-                                  "setting a waves.wind or waves.swell key turns that part on");
+                                  "a waves.swell key without a swell, a spectral key with the Gerstner model, a "
+                                  "sun key of another form than the sun's: sun.direction, sun.elevation_deg with "
+                                  "sun.azimuth_deg, or sun.time with its place); setting a waves.wind or waves.swell "
+                                  "key turns that part on, and setting a sun key gives the sun that form");
     return toPython(*k.parameter, k.parameter->get(s.scene, k.item));
 }
 

@@ -16,8 +16,37 @@ arrays, steps the simulation and answers surface queries::
 """
 
 import os
+import sys
 
 from . import _paths
+
+
+def _missing(what, how):
+    """The ImportError for a Python without what the package needs: what is
+    missing, in which interpreter, and how to get it."""
+    here = "Python %d.%d at %s" % (sys.version_info[0], sys.version_info[1], sys.executable)
+    return ImportError("the swell package needs %s, which this Python (%s) lacks: %s (docs/PYTHON.md)"
+                       % (what, here, how))
+
+
+# NumPy: every frame and label comes back as a NumPy array.
+try:
+    import numpy as _numpy  # noqa: F401
+except ImportError:
+    raise _missing("NumPy", "on Debian `apt-get install python3-numpy` (scripts/install-deps.sh installs it) and "
+                   "run %s, the Python swell was built for, or `%s -m pip install numpy` for this one"
+                   % (_paths.BUILT_FOR_EXECUTABLE, sys.executable)) from None
+
+# The compiled module, built for one Python version.
+try:
+    from . import _swell  # noqa: F401
+except ImportError as error:
+    raise _missing("its compiled module swell._swell, built for Python %s (%s)"
+                   % (_paths.BUILT_FOR_VERSION, _paths.BUILT_FOR_EXECUTABLE),
+                   "run that Python (`%s`), or build swell for this one with "
+                   "`cmake -B build -DPython_EXECUTABLE=%s` (%s)"
+                   % (_paths.BUILT_FOR_EXECUTABLE, sys.executable, error)) from None
+
 from ._swell import (
     CLASS_FIRST_OBJECT,
     CLASS_NONE,

@@ -9,6 +9,11 @@
 #include "swell/scene/scene.h"
 #include "swell/scene/sun_position.h"
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -106,6 +111,7 @@ template <class Ref>
 struct PlaceField {
     static void set(Scene& s, std::size_t i, const ParameterValue& v)
     {
+        s.sun.angles.reset(); // one form at a time: the place is now the sun's
         Field<Ref>::set(s, i, v);
         const SunPlace& place = *s.sun.place;
         s.sun.direction = sunDirectionOf(solarPosition(place.time_s, place.latitude_deg, place.longitude_deg));
@@ -120,9 +126,66 @@ Parameter placing(Ref, Parameter p)
     return p;
 }
 
+// The sun's angles: those it was given, or else those of its direction
+// (the azimuth like a heading, from -z towards +x, in -180..180).
+inline SunAngles anglesOf(const Scene& s)
+{
+    if (s.sun.angles)
+        return *s.sun.angles;
+    const glm::dvec3 d = glm::normalize(s.sun.direction);
+    return {glm::degrees(std::asin(std::clamp(d.y, -1.0, 1.0))), glm::degrees(std::atan2(d.x, -d.z))};
+}
+
+// sun.elevation_deg or sun.azimuth_deg: setting one places the sun by its
+// angles (the other kept as the sun has it) and moves sun.direction there,
+// so a sweep may vary one on any base scene, and a saved scene writes back
+// the angles it was given.
+template <double SunAngles::*Angle>
+struct AngleField {
+    static ParameterValue get(const Scene& s, std::size_t) { return anglesOf(s).*Angle; }
+    static void set(Scene& s, std::size_t, const ParameterValue& v)
+    {
+        SunAngles angles = anglesOf(s);
+        angles.*Angle = std::get<double>(v);
+        s.sun.angles = angles;
+        s.sun.place.reset();
+        SolarPosition seen;
+        seen.elevation_deg = angles.elevation_deg;
+        seen.azimuth_deg = angles.azimuth_deg;
+        s.sun.direction = sunDirectionOf(seen);
+    }
+};
+
+template <double SunAngles::*Angle>
+Parameter angle(Parameter p)
+{
+    p.get = &AngleField<Angle>::get;
+    p.set = &AngleField<Angle>::set;
+    return p;
+}
+
+// sun.direction: setting it gives the sun by its direction again.
+struct DirectionField {
+    static ParameterValue get(const Scene& s, std::size_t) { return s.sun.direction; }
+    static void set(Scene& s, std::size_t, const ParameterValue& v)
+    {
+        s.sun.direction = std::get<glm::dvec3>(v);
+        s.sun.angles.reset();
+        s.sun.place.reset();
+    }
+};
+
+inline Parameter direction(Parameter p)
+{
+    p.get = &DirectionField::get;
+    p.set = &DirectionField::set;
+    return p;
+}
+
 inline bool windIsSet(const Scene& s) { return s.sea.wind.has_value(); }
 inline bool sunIsPlaced(const Scene& s) { return s.sun.place.has_value(); }
-inline bool sunIsNotPlaced(const Scene& s) { return !s.sun.place.has_value(); }
+inline bool sunByDirection(const Scene& s) { return !s.sun.place && !s.sun.angles; }
+inline bool sunByAngles(const Scene& s) { return s.sun.angles.has_value(); }
 inline bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
 inline bool swellIsSet(const Scene& s) { return s.sea.wind && s.sea.wind->swell; }
 

@@ -186,11 +186,24 @@ std::vector<Parameter> buildTable()
             .sliderMax = 20000.0,
             .description = "distance where the water is flat; > fade_start_m, <= radius_m"}),
         // [sun]
-        at([](auto& s, std::size_t) -> auto& { return s.sun.direction; },
-           {.key = "sun.direction", .kind = K::Direction3, .min = -kDirectionLimit, .max = kDirectionLimit,
-            .sliderMin = -1.0, .sliderMax = 1.0,
-            .description = "towards the sun [x, y, z], world space (north -z, east +x); not with sun.time",
-            .present = sunIsNotPlaced}),
+        direction({.key = "sun.direction", .kind = K::Direction3, .min = -kDirectionLimit, .max = kDirectionLimit,
+                   .sliderMin = -1.0, .sliderMax = 1.0,
+                   .description = "towards the sun [x, y, z], world space (north -z, east +x); not with sun.time or "
+                                  "sun.elevation_deg",
+                   .present = sunByDirection}),
+        // The sun placed by its angles instead (a sweep's keys too): both set sun.direction.
+        angle<&SunAngles::elevation_deg>(
+            {.key = "sun.elevation_deg", .unit = "deg", .min = -90.0, .max = 90.0, .sliderMin = -10.0,
+             .sliderMax = 90.0,
+             .description = "with sun.azimuth_deg: the sun's height above the horizon; sets sun.direction, so the "
+                            "sky is baked again",
+             .present = sunByAngles}),
+        angle<&SunAngles::azimuth_deg>(
+            {.key = "sun.azimuth_deg", .unit = "deg", .min = -360.0, .max = 360.0, .sliderMin = 0.0,
+             .sliderMax = 360.0,
+             .description = "with sun.elevation_deg: the sun's bearing, like a heading from -z (north) towards +x "
+                            "(east)",
+             .present = sunByAngles}),
         // The sun placed by the date, the time and the place instead
         // (swell/scene/sun_position.h, Michalsky 1988): each sets sun.direction.
         placing([](auto& s, std::size_t) -> auto& { return placeOf(s).time_s; },

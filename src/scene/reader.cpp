@@ -9,8 +9,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -109,7 +111,7 @@ public:
                      fmt::format("waves.wind.count + waves.swell.count = {}; at most {} waves in all (SWELL_MAX_WAVES)",
                                  total, SWELL_MAX_WAVES));
         }
-        checkSunPlace();
+        checkSunForm();
         // One depth for both wave sources (see WaveSource).
         if (scene_.sea.wind)
             scene_.sea.wind->depth_m = scene_.sea.depth_m;
@@ -117,28 +119,37 @@ public:
     }
 
 private:
-    // The sun is given either by its direction or by the date, time and
-    // place, and the place needs all three.
-    void checkSunPlace()
+    // The sun is given by its direction, by its angles or by the date, time
+    // and place: one form, whole (the angles need both, the place all three).
+    void checkSunForm()
     {
-        if (!scene_.sun.place)
-            return;
-        const char* placeKeys[] = {"sun.time", "sun.latitude_deg", "sun.longitude_deg"};
+        static constexpr std::array<const char*, 2> kAngles{"sun.elevation_deg", "sun.azimuth_deg"};
+        static constexpr std::array<const char*, 3> kPlace{"sun.time", "sun.latitude_deg", "sun.longitude_deg"};
+        if (scene_.sun.angles)
+            checkSunKeys(kAngles, "sun.elevation_deg and sun.azimuth_deg (like a heading, from -z towards +x)");
+        if (scene_.sun.place)
+            checkSunKeys(kPlace, "sun.time, sun.latitude_deg and sun.longitude_deg");
+    }
+
+    // The keys of the sun's form all given (`with` names them), and no key
+    // of another form; refused at the form's first key in the file.
+    void checkSunKeys(std::span<const char* const> keys, std::string_view with)
+    {
         const char* first = nullptr;
-        for (const char* key : placeKeys)
+        for (const char* key : keys)
             if (places_.has(key) && (first == nullptr || places_.at(key).line < places_.at(first).line))
                 first = key;
-        if (places_.has("sun.direction"))
-            fail(places_.at(first),
-                 fmt::format("{} and sun.direction exclude each other: give the sun's direction, or place it by "
-                             "sun.time, sun.latitude_deg and sun.longitude_deg",
-                             first));
-        for (const char* key : placeKeys)
+        for (const char* other : {"sun.direction", "sun.elevation_deg", "sun.azimuth_deg", "sun.time",
+                                  "sun.latitude_deg", "sun.longitude_deg"})
+            if (places_.has(other) && std::find(keys.begin(), keys.end(), std::string_view(other)) == keys.end())
+                fail(places_.at(first),
+                     fmt::format("{} and {} exclude each other: give the sun by its direction, by sun.elevation_deg "
+                                 "and sun.azimuth_deg, or by sun.time, sun.latitude_deg and sun.longitude_deg",
+                                 first, other));
+        for (const char* key : keys)
             if (!places_.has(key))
                 fail(places_.at(first),
-                     fmt::format("{} places the sun with sun.time, sun.latitude_deg and sun.longitude_deg; {} is "
-                                 "missing{}",
-                                 first, key,
+                     fmt::format("{} places the sun with {}; {} is missing{}", first, with, key,
                                  std::string_view(key) == "sun.time"
                                      ? " (a date and time with its UTC offset: sun.time = 2003-10-17T12:30:30-07:00)"
                                      : ""));

@@ -13,8 +13,6 @@
 #include "swell/scene/scene_file.h"
 
 #include <fmt/format.h>
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -29,20 +27,23 @@ using detail::scenefile::Places;
 
 namespace {
 
-constexpr std::string_view kSunElevation = "sun.elevation_deg";
-constexpr std::string_view kSunAzimuth = "sun.azimuth_deg";
 const std::vector<std::string> kTopKeys{"scene", "count", "seed", "size", "time_s", "labels", "vary"};
 
-// A key as written, resolved: its parameter and list item, or a sun angle.
+// A key as written, resolved: its parameter and list item.
 struct ResolvedKey {
-    const Parameter* parameter = nullptr; // null: a sun angle
+    const Parameter* parameter = nullptr;
     std::size_t item = 0;
 };
 
+// The sun's angles, which a sweep may vary on a base scene that gives its
+// sun in any form (the sample's sun is then given by its angles).
+bool isSunAngle(const Parameter& p)
+{
+    return p.key == "sun.elevation_deg" || p.key == "sun.azimuth_deg";
+}
+
 std::optional<ResolvedKey> resolve(std::string_view key)
 {
-    if (key == kSunElevation || key == kSunAzimuth)
-        return ResolvedKey{};
     // "objects[1].yaw_deg" -> "objects.yaw_deg", item 1.
     std::string dotted(key);
     std::size_t item = 0;
@@ -62,7 +63,7 @@ std::optional<ResolvedKey> resolve(std::string_view key)
     return ResolvedKey{p, item};
 }
 
-ParameterKind kindOf(const ResolvedKey& k) { return k.parameter ? k.parameter->kind : ParameterKind::Real; }
+ParameterKind kindOf(const ResolvedKey& k) { return k.parameter->kind; }
 
 // The key as a scene file writes it ("objects[1].yaw_deg", whatever the
 // sweep wrote as "objects[01].yaw_deg"): Scene::keyPlaces' spelling.
@@ -136,7 +137,7 @@ SweepKey readKey(const std::string& key, const toml::node& node, const Places& p
     const std::optional<ResolvedKey> k = resolve(key);
     const SourcePlace at = places.of(node.source());
     if (!k) {
-        std::vector<std::string> known{std::string(kSunElevation), std::string(kSunAzimuth)};
+        std::vector<std::string> known;
         for (const Parameter& p : parameters())
             known.emplace_back(p.key);
         const std::optional<std::string> near = detail::scenefile::closest(key, known);
@@ -304,23 +305,23 @@ Sweep loadSweepFile(const fs::path& path)
 
 void checkSweep(const Sweep& sweep, const Scene& base)
 {
+    const SweepKey* angle = nullptr;
+    for (const SweepKey& k : sweep.vary)
+        if (isSunAngle(*resolve(k.key)->parameter))
+            angle = &k;
     for (const SweepKey& k : sweep.vary) {
         const ResolvedKey r = *resolve(k.key);
-        if (!r.parameter) {
-            const bool elevation = k.key == kSunElevation;
-            for (const ParameterValue& v : extremes(k)) {
-                const double deg = std::get<double>(v);
-                if (elevation ? (deg < -90.0 || deg > 90.0) : !std::isfinite(deg))
-                    fail(k.place, fmt::format("vary.\"{}\": {} is out of range ({})", k.key, deg,
-                                              elevation ? "degrees above the horizon, -90..90" : "degrees"));
-            }
-            continue;
-        }
         const Parameter& p = *r.parameter;
+        // The sun by its angles and by another form in one sample: which wins
+        // would depend on the keys' order.
+        if (angle && (p.key == "sun.direction" || p.key == "sun.latitude_deg" || p.key == "sun.longitude_deg"))
+            fail(k.place, fmt::format("vary.\"{}\": the sun is given by its angles in this sweep ({}); vary those, "
+                                      "or the sun's other keys, not both",
+                                      k.key, angle->key));
         if (p.list != ParameterList::None && r.item >= listSize(base, p.list))
             fail(k.place, fmt::format("vary.\"{}\": the base scene has {} item(s) in {}", k.key, listSize(base, p.list),
                                       listKey(p.list)));
-        if (!isPresent(p, base))
+        if (!isPresent(p, base) && !isSunAngle(p))
             fail(k.place, fmt::format("vary.\"{}\": the base scene does not use it (the wind's keys need waves "
                                       "from the wind)",
                                       k.key));
@@ -348,26 +349,11 @@ void checkSweep(const Sweep& sweep, const Scene& base)
     }
 }
 
-namespace {
-
-// The sun's elevation and azimuth, degrees: the azimuth measured like a
-// heading, from -z (north, on the sun's compass) towards +x (east), as
-// docs/SCENE.md measures it.
-glm::dvec2 sunAngles_deg(const Scene& scene)
-{
-    const glm::dvec3 sun = glm::normalize(scene.sun.direction);
-    return {glm::degrees(std::asin(std::clamp(sun.y, -1.0, 1.0))), glm::degrees(std::atan2(sun.x, -sun.z))};
-}
-
-} // namespace
-
 ParameterValue sweptValue(const Scene& scene, std::string_view key)
 {
     const std::optional<ResolvedKey> r = resolve(key);
     if (!r)
         throw Error(fmt::format("sweptValue: '{}' is not a sweep key", key));
-    if (!r->parameter)
-        return key == kSunElevation ? sunAngles_deg(scene).x : sunAngles_deg(scene).y;
     return r->parameter->get(scene, r->item);
 }
 
@@ -406,29 +392,15 @@ SweepSample sweepSample(const Sweep& sweep, const Scene& base, int index)
     s.scene = base;
     Stream time(sweep.seed, index, "time_s");
     s.time_s = sweep.timeMin_s + time.next() * (sweep.timeMax_s - sweep.timeMin_s);
-    // The sun's angles as the base scene has them, unless varied.
-    double elevation_deg = sunAngles_deg(base).x, azimuth_deg = sunAngles_deg(base).y;
-    bool sunVaried = false;
     for (const SweepKey& k : sweep.vary) {
         Stream stream(sweep.seed, index, k.key);
         const ParameterValue v = draw(k, stream);
         s.values.push_back(v);
         const ResolvedKey r = *resolve(k.key);
-        if (!r.parameter) {
-            (k.key == kSunElevation ? elevation_deg : azimuth_deg) = std::get<double>(v);
-            sunVaried = true;
-            s.scene.keyPlaces["sun.direction"] = k.place;
-            continue;
-        }
+        // A sun angle keeps the other as the base scene has it and gives the
+        // sample's sun by its angles, not the base's date and place.
         r.parameter->set(s.scene, r.item, v);
         s.scene.keyPlaces[sceneKeyOf(r)] = k.place;
-    }
-    if (sunVaried) {
-        // The direction a camera of that heading and pitch looks along (docs/SCENE.md).
-        const double e = glm::radians(elevation_deg), a = glm::radians(azimuth_deg);
-        s.scene.sun.direction = glm::dvec3(std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e));
-        // The sample's sun is its direction now, not the base scene's date and place.
-        s.scene.sun.place.reset();
     }
     return s;
 }

@@ -5,12 +5,16 @@
 // frame) sees neither the Enter tap nor the Ctrl of a quick Ctrl+click.
 #include "viewer/input_queue.h"
 
+#include "headless_imgui.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 #include <imgui.h>
 
 #include <deque>
+
+static_assert(swell::test::HeadlessImGui::kEnterKey == GLFW_KEY_ENTER);
 
 namespace {
 
@@ -22,20 +26,9 @@ using Kind = InputEvent::Kind;
 // gives it apart from drawing.
 class InputTrickleFrames : public ::testing::Test {
 protected:
-    InputTrickleFrames()
-    {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(640.0f, 360.0f);
-        io.DeltaTime = 1.0f; // a slow frame
-        io.KeyMap[ImGuiKey_Enter] = GLFW_KEY_ENTER;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-        io.MousePos = ImVec2(100.0f, 100.0f);
-    }
-    ~InputTrickleFrames() override { ImGui::DestroyContext(); }
+    InputTrickleFrames() { ImGui::GetIO().MousePos = ImVec2(100.0f, 100.0f); }
+
+    swell::test::HeadlessImGui imgui{1.0f}; // a slow frame
 
     // One frame: this frame's step of the queue, then what ImGui saw.
     struct Seen {

@@ -66,6 +66,10 @@ SCENES = [
     ("lens_radial_fold_150", "[camera]\nfov_y_deg = 150.0\ndistortion_k1 = -1.0\ndistortion_k2 = -1.0\n"
      "distortion_k3 = -1.0\n", "3:", "camera.distortion_k3 = -1"),
     ("clouds_coverage", "[sky.clouds]\ncoverage = 0.5\n", "2:1", "did you mean 'sky.clouds.cover'"),
+    # The sun by its angles, as sweeps vary it: both keys, and not with another form.
+    ("sun_elevation_alone", "[sun]\nelevation_deg = 20.0\n", "2:", "sun.azimuth_deg is missing"),
+    ("sun_elevation_misspelt", "[sun]\nelevation = 20.0\nazimuth_deg = 0.0\n", "2:1",
+     "did you mean 'sun.elevation_deg'"),
     ("sun_direction_and_time",
      "[sun]\ndirection = [0.0, 1.0, 0.0]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 39.7\nlongitude_deg = 0.0\n",
      "3:8", "exclude each other"),
@@ -105,6 +109,10 @@ ARGUMENTS = [
     ("missing_scene", ["render", "nowhere.toml", "-o", "x.png"], 2, "nowhere.toml"),
     ("scene_is_a_folder", ["render", work, "-o", "x.png"], 2, work),
     ("unknown_subcommand", ["paint"], 2, "paint"),
+    # A mistyped subcommand: every subcommand listed, and the nearest one.
+    ("mistyped_subcommand", ["rendr"], 2, "the subcommands are view, render, bench and dataset"),
+    ("mistyped_subcommand_nearest", ["rendr"], 2, "did you mean `swell render`?"),
+    ("mistyped_dataset", ["datset"], 2, "did you mean `swell dataset`?"),
     ("unknown_option", ["render", "-o", "x.png", "--colour", "red"], 2, "--colour"),
     ("bench_bad_frames", ["bench", "--frames", "0"], 2, "--frames"),
     ("range_in_words", ["render", "-o", "x.png", "--time", "-3"], 2, "must be a number from 0 to 1e+09, got '-3'"),

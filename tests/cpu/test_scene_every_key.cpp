@@ -185,8 +185,14 @@ bool placesTheSun(const Parameter& p)
     return p.key == "sun.time" || p.key == "sun.latitude_deg" || p.key == "sun.longitude_deg";
 }
 
+// The sun's third form, by its angles: written only when one of them is the
+// key changed (the wind's scene then gives its sun so, not by its direction).
+bool anglesOfTheSun(const Parameter& p) { return p.key == "sun.elevation_deg" || p.key == "sun.azimuth_deg"; }
+
 bool belongsToOtherSource(const Parameter& p, Waves waves)
 {
+    if (anglesOfTheSun(p))
+        return true;
     if (waves == Waves::Wind)
         return p.list == ParameterList::Waves || placesTheSun(p);
     return p.key.starts_with("waves.wind.") || p.key.starts_with("waves.swell.") || p.key == "sun.direction";
@@ -202,7 +208,10 @@ TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::s
     object.values.emplace_back("path", "\"hull.glb\"");
     object.values.emplace_back("hull_node", "\"Hull\"");
     for (const Parameter& p : parameters()) {
-        if (belongsToOtherSource(p, waves))
+        const bool sunByAngles = changed != nullptr && anglesOfTheSun(*changed);
+        if (sunByAngles && p.key == "sun.direction")
+            continue;
+        if (belongsToOtherSource(p, waves) && !(sunByAngles && anglesOfTheSun(p)))
             continue;
         std::string value = &p == changed ? changedValue : formatValue(p, p.defaultValue);
         switch (p.list) {

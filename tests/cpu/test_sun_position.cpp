@@ -1,22 +1,33 @@
 // The sun placed by the date, the time and the place (swell/scene/sun_position.h,
 // Michalsky 1988) against published positions, the world's compass axes,
 // and sun.time, sun.latitude_deg and sun.longitude_deg in scene files: read,
-// written back, and refused with the key's place when wrong.
+// written back, and refused with the key's place when wrong. And the sun by
+// its angles, sun.elevation_deg and sun.azimuth_deg: the same keys in scene
+// files as in sweeps, the azimuth measured one way everywhere (like a
+// heading, from -z towards +x; Michalsky's compass azimuth, north -z and
+// east +x, is the same number), and each of the sun's three forms written
+// back by saveScene as it was given.
 #include "swell/camera.h"
+#include "swell/dataset/sweep.h"
 #include "swell/error.h"
 #include "swell/scene/parameters.h"
 #include "swell/scene/scene_file.h"
 #include "swell/scene/sun_position.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace {
+
+namespace fs = std::filesystem;
 
 // Seconds since 1970-01-01T00:00:00Z of a civil date and time at a UTC offset.
 double instant(int y, unsigned mo, unsigned d, int h, int mi, double s, double offset_h)
@@ -180,6 +191,131 @@ TEST(SunPosition, BadPlacementsAreRefusedWithTheKeysPlace)
         const swell::InputError e = errorOf(c.toml);
         EXPECT_EQ(e.place().line, c.line) << c.toml << e.what();
         EXPECT_EQ(e.place().column, c.column) << c.toml << e.what();
+        EXPECT_NE(e.message().find(c.says), std::string::npos) << c.toml << e.what();
+    }
+}
+
+// The [sun] table of a saved scene.
+std::string sunTableOf(const std::string& saved)
+{
+    const std::size_t sun = saved.find("\n[sun]\n");
+    if (sun == std::string::npos)
+        return {};
+    return saved.substr(sun, saved.find("\n[", sun + 1) - sun);
+}
+
+glm::dvec3 headingOf(double yaw_deg, double pitch_deg)
+{
+    swell::Camera camera;
+    camera.yaw_deg = yaw_deg;
+    camera.pitch_deg = pitch_deg;
+    return camera.forward();
+}
+
+TEST(SunAngles, SceneFileGivesTheSunByItsAnglesAndWritesThemBack)
+{
+    const swell::Scene scene = swell::parseScene("[sun]\nelevation_deg = 4.0\nazimuth_deg = -5.7\n", "sun.toml");
+    ASSERT_TRUE(scene.sun.angles);
+    EXPECT_FALSE(scene.sun.place);
+    EXPECT_LT(glm::length(scene.sun.direction - headingOf(-5.7, 4.0)), 1e-12);
+    const std::string sun = sunTableOf(swell::saveScene(scene));
+    EXPECT_NE(sun.find("elevation_deg = 4"), std::string::npos) << sun;
+    EXPECT_NE(sun.find("azimuth_deg = -5.7"), std::string::npos) << sun;
+    EXPECT_EQ(sun.find("direction"), std::string::npos) << sun;
+    EXPECT_EQ(sun.find("time"), std::string::npos) << sun;
+    const swell::Scene again = swell::parseScene(swell::saveScene(scene), "saved.toml");
+    ASSERT_TRUE(again.sun.angles);
+    EXPECT_EQ(again.sun.angles->azimuth_deg, -5.7);
+    EXPECT_EQ(again.sun.direction, scene.sun.direction);
+}
+
+// Each form saved is the form given: a direction stays a direction, a date
+// and place stay a date and place.
+TEST(SunAngles, EachFormOfTheSunIsSavedAsGiven)
+{
+    const swell::Scene byDirection = swell::parseScene("[sun]\ndirection = [0.0, 1.0, -1.0]\n", "sun.toml");
+    const std::string direction = sunTableOf(swell::saveScene(byDirection));
+    EXPECT_NE(direction.find("direction = [0.0, 1.0, -1.0]"), std::string::npos) << direction;
+    EXPECT_EQ(direction.find("elevation_deg"), std::string::npos) << direction;
+    const swell::Scene byPlace = swell::parseScene(
+        "[sun]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 39.742476\nlongitude_deg = -105.1786\n", "sun.toml");
+    const std::string place = sunTableOf(swell::saveScene(byPlace));
+    EXPECT_NE(place.find("time = "), std::string::npos) << place;
+    EXPECT_EQ(place.find("elevation_deg"), std::string::npos) << place;
+    EXPECT_EQ(place.find("direction"), std::string::npos) << place;
+}
+
+// One azimuth: the solar position's (from north towards east), the scene
+// file's and the sweep's put the sun in the same place, and that is where a
+// camera with that heading looks.
+TEST(SunAngles, SolarPositionSceneFileAndSweepMeasureTheAzimuthAlike)
+{
+    const swell::Scene placed = swell::parseScene(
+        "[sun]\ntime = 2003-10-17T12:30:30-07:00\nlatitude_deg = 39.742476\nlongitude_deg = -105.1786\n", "sun.toml");
+    const swell::SolarPosition p = swell::solarPosition(placed.sun.place->time_s, 39.742476, -105.1786);
+    ASSERT_NEAR(p.azimuth_deg, 194.34, 0.01); // Reda & Andreas (2004), Table A4.1: south-south-west
+    const swell::Scene byAngles = swell::parseScene(
+        fmt::format("[sun]\nelevation_deg = {}\nazimuth_deg = {}\n", p.elevation_deg, p.azimuth_deg), "sun.toml");
+    EXPECT_LT(glm::length(byAngles.sun.direction - placed.sun.direction), 1e-12);
+    EXPECT_LT(glm::length(byAngles.sun.direction - headingOf(p.azimuth_deg, p.elevation_deg)), 1e-12);
+
+    const fs::path folder = fs::path(SWELL_TEST_OUTPUT_DIR) / "sun_angles";
+    fs::create_directories(folder);
+    std::ofstream(folder / "sweep.toml") << fmt::format(
+        "scene = \"storm\"\ncount = 1\n[vary]\n\"sun.elevation_deg\" = {}\n\"sun.azimuth_deg\" = {}\n", p.elevation_deg,
+        p.azimuth_deg);
+    const swell::Sweep sweep = swell::loadSweepFile(folder / "sweep.toml");
+    swell::checkSweep(sweep, placed);
+    const swell::Scene swept = swell::sweepSample(sweep, placed, 0).scene;
+    EXPECT_LT(glm::length(swept.sun.direction - byAngles.sun.direction), 1e-9);
+    ASSERT_TRUE(swept.sun.angles) << "a sample whose sun angles vary gives its sun by them";
+    EXPECT_FALSE(swept.sun.place);
+}
+
+// Setting one angle through the table (the viewer's slider, a sweep) on a
+// sun given by its direction keeps the other angle where the sun was.
+TEST(SunAngles, OneAngleSetKeepsTheOther)
+{
+    swell::Scene scene = swell::parseScene("[sun]\ndirection = [1.0, 1.0, 0.0]\n", "sun.toml"); // east, 45 up
+    const swell::Parameter& elevation = *swell::findParameter("sun.elevation_deg");
+    const swell::Parameter& azimuth = *swell::findParameter("sun.azimuth_deg");
+    EXPECT_NEAR(std::get<double>(azimuth.get(scene, 0)), 90.0, 1e-12);
+    EXPECT_FALSE(swell::isPresent(elevation, scene));
+    elevation.set(scene, 0, 10.0);
+    EXPECT_TRUE(swell::isPresent(elevation, scene));
+    EXPECT_FALSE(swell::isPresent(*swell::findParameter("sun.direction"), scene));
+    EXPECT_LT(glm::length(scene.sun.direction - headingOf(90.0, 10.0)), 1e-12);
+    // And the direction set again gives the sun by its direction.
+    swell::findParameter("sun.direction")->set(scene, 0, glm::dvec3(0.0, 1.0, 1.0));
+    EXPECT_FALSE(scene.sun.angles);
+}
+
+TEST(SunAngles, BadAnglesAreRefusedWithTheKeysPlace)
+{
+    struct Case {
+        const char* toml;
+        int line;
+        const char* says;
+    };
+    const Case cases[] = {
+        {"[sun]\nelevation_deg = 20.0\n", 2, "sun.azimuth_deg is missing"},
+        {"[sun]\nazimuth_deg = 20.0\n", 2, "sun.elevation_deg is missing"},
+        {"[sun]\nelevation_deg = 91.0\nazimuth_deg = 0.0\n", 2, "sun.elevation_deg = 91 is out of range; allowed -90..90 deg"},
+        {"[sun]\ndirection = [0.0, 1.0, 0.0]\nelevation_deg = 20.0\nazimuth_deg = 0.0\n", 3,
+         "sun.elevation_deg and sun.direction exclude each other"},
+        // Two forms: refused at the first key of the one written last.
+        {"[sun]\nelevation_deg = 20.0\nazimuth_deg = 0.0\ntime = 2003-10-17T12:30:30Z\nlatitude_deg = 10.0\n"
+         "longitude_deg = 0.0\n",
+         4, "sun.time and sun.elevation_deg exclude each other"},
+        {"[sun]\ntime = 2003-10-17T12:30:30Z\nlatitude_deg = 10.0\nlongitude_deg = 0.0\nazimuth_deg = 0.0\n"
+         "elevation_deg = 20.0\n",
+         5, "sun.azimuth_deg and sun.time exclude each other"},
+        {"[sun]\nelevation = 20.0\n", 2, "did you mean 'sun.elevation_deg'"},
+        {"[sun]\nazimuth_rad = 1.0\n", 2, "did you mean 'sun.azimuth_deg', in deg?"},
+    };
+    for (const Case& c : cases) {
+        const swell::InputError e = errorOf(c.toml);
+        EXPECT_EQ(e.place().line, c.line) << c.toml << e.what();
         EXPECT_NE(e.message().find(c.says), std::string::npos) << c.toml << e.what();
     }
 }

@@ -162,7 +162,7 @@ TEST(Sweep, ASamplesVariedKeysPointAtTheirLinesAndKeepTheValuesDrawn)
         const glm::dvec3 sun = glm::normalize(sample.scene.sun.direction);
         ASSERT_NEAR(std::remainder(glm::degrees(std::atan2(sun.x, -sun.z)) - azimuth, 360.0), 0.0, 1e-9);
         ASSERT_EQ(sample.scene.keyPlaces.at("fog.end_m").line, 5);
-        ASSERT_EQ(sample.scene.keyPlaces.at("sun.direction").line, 6);
+        ASSERT_EQ(sample.scene.keyPlaces.at("sun.azimuth_deg").line, 6);
     }
     // A drawn scene refused names the varied key's line in the sweep.
     swell::Scene foggy = base;

@@ -41,6 +41,18 @@ class SceneValues(unittest.TestCase):
         self.assertEqual(again["grid.resolution"], 64)
         self.assertIs(again["terrain"], False)
 
+    def test_the_sun_by_its_angles_as_sweeps_vary_it(self):
+        # The keys a sweep varies are the scene's: setting one gives the sun
+        # by its angles, which the saved scene writes back.
+        scene = swell.default_scene()
+        scene["sun.elevation_deg"] = 10.0
+        scene["sun.azimuth_deg"] = 90.0
+        self.assertNotIn("sun.direction", scene.keys())
+        again = swell.parse_scene(scene.to_toml(), "again.toml")
+        self.assertEqual((again["sun.elevation_deg"], again["sun.azimuth_deg"]), (10.0, 90.0))
+        with self.assertRaises(KeyError):
+            again["sun.direction"]
+
     def test_a_copy_is_independent(self):
         scene = swell.default_scene()
         copy = scene.copy()

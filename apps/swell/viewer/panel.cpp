@@ -279,6 +279,10 @@ PanelRequests Panel::draw(Session& session, ViewState& view, const FrameStats& s
     ImGui::SetNextWindowSize(ImVec2(width_, std::max(1.0f, viewport->WorkSize.y - 2.0f * kMargin)), ImGuiCond_Always);
     const bool visible = ImGui::Begin("Swell");
     width_ = std::max(200.0f, ImGui::GetWindowWidth());
+    // A message's kept row closes once the pointer is off the panel, where
+    // the rows moving up disturbs no one (keepMessageRow).
+    if (!ImGui::IsWindowHovered(ImGuiHoveredFlags_RootAndChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem))
+        messageRow_.reset();
     Scene edited = session.scene();
     bool changed = false;
     if (visible) {

@@ -11,6 +11,7 @@
 
 #include "viewer/fly_camera.h"
 #include "viewer/frame_times.h"
+#include "viewer/panel_widgets.h"
 #include "viewer/session.h"
 #include "viewer/view_quality.h"
 
@@ -105,13 +106,6 @@ public:
     void sceneLoaded(const std::filesystem::path& sceneFile);
 
 private:
-    // A Rebuild parameter's value while its slider is held.
-    struct Staged {
-        std::string_view key;
-        std::size_t item = 0;
-        ParameterValue value;
-    };
-
     void drawStats(const FrameStats& stats);
     void drawView(Session& session, ViewState& view, const FrameStats& stats, Scene& edited, bool& changed,
                   PanelRequests& requests);
@@ -131,7 +125,7 @@ private:
     std::vector<std::filesystem::path> presets_;
     int presetIndex_ = 0;
     std::string savePath_;
-    std::optional<Staged> staged_;
+    std::optional<StagedValue> staged_; // a value held back while its widget is (heldUntilRelease)
     std::optional<WindSettings> lastWind_; // restored when the wind is switched back on
     std::optional<std::filesystem::path> loadRequest_;
     bool saveRequest_ = false;
@@ -144,6 +138,20 @@ private:
         bool operator==(const Field&) const = default;
     };
     std::optional<Field> lastEdited_, refused_;
+    // The words under a field whose typed value was clamped to its range.
+    struct Note {
+        Field field;
+        std::string text;
+    };
+    std::optional<Note> clamped_;
+    // The height the last message under a field took, kept for that field
+    // after the message goes (keepMessageRow).
+    struct MessageRow {
+        Field field;
+        float height = 0.0f;
+    };
+    std::optional<MessageRow> messageRow_;
+    void keepMessageRow(const Field& field, float messageHeight);
     // Whether the refused edit's message was drawn beside its field in the
     // last frame; when not (its section is closed), the top of the panel shows it.
     bool refusedShown_ = false;

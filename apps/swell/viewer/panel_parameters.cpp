@@ -18,29 +18,17 @@ bool Panel::editParameter(Session& session, const Parameter& p, std::size_t item
 {
     ImGui::PushID(p.key.data(), p.key.data() + p.key.size());
     ImGui::PushID(int(item));
-    ParameterValue value = p.get(edited, item);
-    const bool staged = staged_ && staged_->key == p.key && staged_->item == item;
-    if (staged)
-        value = staged_->value;
+    ParameterValue value = shownValue(p, item, edited, staged_);
     const std::string label = shortName(p.key);
     const WidgetResult r = editValue(p, label.c_str(), value);
     ImGui::PopID();
     ImGui::PopID();
 
     const Field field{p.key, item};
-    bool commit = r.changed;
-    if (appliedOnRelease(p)) {
-        if (r.changed && r.active) {
-            staged_ = Staged{p.key, item, value};
-            commit = false;
-        } else if (r.deactivated && staged) {
-            // Let go: `value` holds the staged value, or the last step's.
-            staged_.reset();
-            commit = true;
-        }
-    }
     bool accepted = false;
-    if (commit) {
+    if (takeEdit(p, item, r, value, staged_)) {
+        // A number typed past the documented range is taken at its end, and says so.
+        std::optional<std::string> clamped = clampToRange(p, value, valueName(p, item));
         if (std::string problem = valueProblem(p, value, valueName(p, item)); !problem.empty()) {
             session.refuseEdit(std::move(problem));
             refused_ = field;
@@ -48,14 +36,35 @@ bool Panel::editParameter(Session& session, const Parameter& p, std::size_t item
             p.set(edited, item, value);
             lastEdited_ = field;
             accepted = true;
+            clamped_ = clamped ? std::optional<Note>(Note{field, std::move(*clamped)}) : std::nullopt;
         }
     }
     // Beside the field, where the eye is, not at the top of a scrolled panel.
+    const float top = ImGui::GetCursorPosY();
     if (refused_ == field && session.editMessage().error) {
         refusedEditText(session);
         refusedShown_ = true;
+    } else if (clamped_ && clamped_->field == field) {
+        ImGui::TextWrapped("%s", clamped_->text.c_str());
     }
+    keepMessageRow(field, ImGui::GetCursorPosY() - top);
     return accepted;
+}
+
+void Panel::keepMessageRow(const Field& field, float messageHeight)
+{
+    // The space a message took under its field stays when the message goes
+    // (dismissed, or the value put right), so the rows below do not jump
+    // under the pointer; it is given back once the pointer leaves the panel.
+    if (messageHeight > 0.0f) {
+        messageRow_ = MessageRow{field, std::max(messageHeight, messageRow_ && messageRow_->field == field
+                                                                    ? messageRow_->height
+                                                                    : 0.0f)};
+        if (messageHeight < messageRow_->height)
+            ImGui::Dummy(ImVec2(0.0f, messageRow_->height - messageHeight - ImGui::GetStyle().ItemSpacing.y));
+    } else if (messageRow_ && messageRow_->field == field) {
+        ImGui::Dummy(ImVec2(0.0f, messageRow_->height - ImGui::GetStyle().ItemSpacing.y));
+    }
 }
 
 void Panel::drawList(Session& session, ParameterList list, Scene& edited, bool& changed)

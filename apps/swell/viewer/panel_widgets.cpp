@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 #include <imgui.h>
+#include <imgui_internal.h> // TempInputIsActive: a slider's typed value
 
 #include <algorithm>
 #include <cctype>
@@ -65,6 +66,10 @@ void noteItemState(WidgetResult& r)
     r.active = ImGui::IsItemActive();
     r.deactivated = ImGui::IsItemDeactivated();
 }
+
+// Whether the slider just drawn holds a value being typed (its text field
+// after a Ctrl+click), which changes at each keystroke.
+void noteTyping(WidgetResult& r) { r.typing = ImGui::TempInputIsActive(ImGui::GetItemID()); }
 
 } // namespace
 
@@ -142,6 +147,7 @@ WidgetResult editValue(const Parameter& p, const char* label, ParameterValue& va
         double& v = std::get<double>(value);
         r.changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &p.sliderMin, &p.sliderMax, format.c_str(), sliderFlags);
         noteItemState(r);
+        noteTyping(r);
         tooltip(p);
         if (std::isinf(p.max)) {
             // A slider cannot reach an unbounded maximum (deep water).
@@ -168,6 +174,7 @@ WidgetResult editValue(const Parameter& p, const char* label, ParameterValue& va
         std::int64_t& v = std::get<std::int64_t>(value);
         const auto lo = std::int64_t(p.sliderMin), hi = std::int64_t(p.sliderMax);
         r.changed = ImGui::SliderScalar(label, ImGuiDataType_S64, &v, &lo, &hi, format.c_str(), sliderFlags);
+        noteTyping(r);
         break;
     }
     case ParameterKind::Flag:
@@ -247,6 +254,59 @@ WidgetResult editValue(const Parameter& p, const char* label, ParameterValue& va
     noteItemState(r);
     tooltip(p);
     return r;
+}
+
+bool heldUntilRelease(const Parameter& p, const WidgetResult& r) { return appliedOnRelease(p) || r.typing; }
+
+namespace {
+
+bool holds(const std::optional<StagedValue>& staged, const Parameter& p, std::size_t item)
+{
+    return staged && staged->key == p.key && staged->item == item;
+}
+
+} // namespace
+
+ParameterValue shownValue(const Parameter& p, std::size_t item, const Scene& scene,
+                          const std::optional<StagedValue>& staged)
+{
+    return holds(staged, p, item) ? staged->value : p.get(scene, item);
+}
+
+bool takeEdit(const Parameter& p, std::size_t item, const WidgetResult& r, const ParameterValue& value,
+              std::optional<StagedValue>& staged)
+{
+    if (heldUntilRelease(p, r) && r.changed && r.active) {
+        staged = StagedValue{p.key, item, value};
+        return false;
+    }
+    if (r.deactivated && holds(staged, p, item)) {
+        // Let go (or Enter typed): `value` holds the staged value, or the last step's.
+        staged.reset();
+        return true;
+    }
+    return r.changed;
+}
+
+std::optional<std::string> clampToRange(const Parameter& p, ParameterValue& value, std::string_view name)
+{
+    double typed = 0.0;
+    if (const auto* d = std::get_if<double>(&value))
+        typed = *d;
+    else if (const auto* i = std::get_if<std::int64_t>(&value))
+        typed = double(*i);
+    else
+        return std::nullopt;
+    const bool below = p.minExclusive ? typed <= p.min : typed < p.min;
+    if (std::isnan(typed) || (!below && typed <= p.max) || (below && p.minExclusive))
+        return std::nullopt; // in range; or NaN, or at an excluded end: the range check says why
+    const double kept = below ? p.min : p.max;
+    if (std::holds_alternative<double>(value))
+        value = kept;
+    else
+        value = std::int64_t(kept);
+    return fmt::format("{:g} is {} {}'s range {}: clamped to {:g}", typed, below ? "below" : "above", name,
+                       rangeText(p), kept);
 }
 
 std::string itemLabel(ParameterList list, const Scene& scene, std::size_t i)

@@ -10,6 +10,7 @@
 #include "swell/scene/scene.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -44,9 +45,39 @@ struct WidgetResult {
     bool changed = false;
     bool active = false;      // the widget is held (a drag in progress)
     bool deactivated = false; // it was let go this frame
+    bool typing = false;      // a value is being typed into it (Ctrl+click): each keystroke changes it
 };
 
 // One parameter's widget labelled `label`, editing `value` in place.
 WidgetResult editValue(const Parameter& p, const char* label, ParameterValue& value);
+
+// Whether a change is held back until the widget is let go: a rebuild's
+// slider (appliedOnRelease), and a value being typed, whose keystrokes are
+// not values ("2" on the way to "25").
+bool heldUntilRelease(const Parameter& p, const WidgetResult& r);
+
+// A value held back while its widget is held: a rebuild's slider, a number
+// being typed.
+struct StagedValue {
+    std::string_view key;
+    std::size_t item = 0;
+    ParameterValue value;
+};
+
+// The value p's widget shows for `item`: the one held back, else the scene's.
+ParameterValue shownValue(const Parameter& p, std::size_t item, const Scene& scene,
+                          const std::optional<StagedValue>& staged);
+
+// After p's widget changed `value` (editValue's result r): whether the value
+// goes to the scene now. One held back (heldUntilRelease) waits in `staged`
+// and goes when the widget is let go or Enter ends the typing.
+bool takeEdit(const Parameter& p, std::size_t item, const WidgetResult& r, const ParameterValue& value,
+              std::optional<StagedValue>& staged);
+
+// A number typed outside the parameter's documented range, brought inside
+// it: the value clamped in place and the words that say so ("25 is above
+// sun.intensity's range 0..20: clamped to 20"); nothing for a value in range,
+// a vector, a choice or NaN (which the range check refuses).
+std::optional<std::string> clampToRange(const Parameter& p, ParameterValue& value, std::string_view name);
 
 } // namespace swell::app::viewer

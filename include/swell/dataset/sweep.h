@@ -26,10 +26,9 @@ inline constexpr int kMaxSweepSamples = 1000000;
 
 // How one key varies.
 struct SWELL_API SweepKey {
-    // As written: a scene parameter ("camera.roll_deg"), one in an item of
-    // a list ("objects[1].yaw_deg"), or the sun's "sun.elevation_deg" and
-    // "sun.azimuth_deg" (which set sun.direction together; the azimuth is
-    // measured like a heading, from -z towards +x, as docs/SCENE.md says).
+    // As written: a scene parameter ("camera.roll_deg", "sun.azimuth_deg")
+    // or one in an item of a list ("objects[1].yaw_deg"). The sun's angles
+    // may vary on any base scene: the sample's sun is then given by them.
     std::string key;
     SourcePlace place;
     enum class Kind { Range, OneOf } kind = Kind::Range;
@@ -84,11 +83,11 @@ struct SWELL_API SweepSample {
 };
 SWELL_API SweepSample sweepSample(const Sweep& sweep, const Scene& base, int index);
 
-// A varied key's value in a scene (a sample's): the parameter's, or the
-// sun's elevation or azimuth in degrees. The key must be one a sweep file
-// accepted.
+// A varied key's value in a scene (a sample's): the parameter's (the sun's
+// angles those of its direction when it is given so). The key must be one a
+// sweep file accepted.
 SWELL_API ParameterValue sweptValue(const Scene& scene, std::string_view key);
-// The parameter a sweep key names; nullptr for the sun's angles.
+// The parameter a sweep key names; nullptr for a key no sweep accepts.
 SWELL_API const Parameter* sweptParameter(std::string_view key);
 
 } // namespace swell

@@ -99,14 +99,25 @@ struct SWELL_API SunPlace {
     double longitude_deg = 0.0;  // east +, -180..180
 };
 
+// The sun given by its angles instead of by a direction: its elevation
+// above the horizon and its azimuth, measured like a heading (from -z, north,
+// towards +x, east), as a sweep's sun.elevation_deg and sun.azimuth_deg are.
+struct SWELL_API SunAngles {
+    double elevation_deg = 0.0; // -90..90
+    double azimuth_deg = 0.0;   // -360..360
+};
+
 struct SWELL_API SunSettings {
-    // Towards the sun, world space; normalised on use. When `place` is set,
-    // the solar position there and then, kept in step by the setters of
-    // sun.time, sun.latitude_deg and sun.longitude_deg (swell/scene/parameters.h).
+    // Towards the sun, world space; normalised on use. When `place` or
+    // `angles` is set, the direction they give, kept in step by the setters
+    // of sun.time, sun.latitude_deg, sun.longitude_deg, sun.elevation_deg and
+    // sun.azimuth_deg (swell/scene/parameters.h). At most one of the two is
+    // set: the form the scene gave its sun in, which saveScene writes back.
     glm::dvec3 direction{-0.4, 0.35, -0.85};
     glm::dvec3 color{1.0, 0.95, 0.85}; // linear RGB, 0..1
     double intensity = 1.0;            // multiplier, 0..20
     std::optional<SunPlace> place{};   // the sun placed by date, time and place instead of `direction`
+    std::optional<SunAngles> angles{}; // the sun placed by its elevation and azimuth instead of `direction`
 };
 
 // What the built-in sky is (when no cubemap faces are given).
