@@ -160,12 +160,15 @@ MeshData makeBuiltinModel(const std::string& name)
     } else if (name == "rock") {
         // A weathered boulder, 6 m across: a lumpy dome that stands in the
         // water, closed underneath so that it is a solid (a body's shape).
-        // Fine enough (48 rings of 96) that its relief is drawn as curved
-        // surfaces rather than as the facets of a coarse mesh: the default
-        // scene shows it 24 m across at 150 m, where 20 segments read as a
-        // cut gem. The relief's three octaves are all coarser than the rings,
-        // so the mesh resolves every bump it carries.
-        constexpr int kRings = 48, kSegments = 96;
+        // The relief is the noise's first two octaves, both coarser than the
+        // mesh (ring and segment spacing about 0.5 m against features of
+        // 1.4 and 0.7 m), so it is drawn as curved surfaces: with five
+        // octaves on 20 segments the default scene's rock, 24 m across at
+        // 150 m, read as a cut gem. Kept mostly convex (a relief of +-20% of
+        // the radius), as the lights on objects cast no shadow on their own
+        // body: a deep fold on the side away from the sun would catch it.
+        // 1280 triangles: the default frame draws it in three passes.
+        constexpr int kRings = 14, kSegments = 40;
         std::vector<glm::vec2> profile{{0.0f, -4.0f}};
         for (int i = 0; i <= kRings; ++i) {
             const float t = float(i) / float(kRings);
@@ -175,8 +178,8 @@ MeshData makeBuiltinModel(const std::string& name)
         addLathe(mesh, profile, kSegments, [](float) { return glm::vec3(0.36f, 0.34f, 0.31f); });
         for (MeshVertex& v : mesh.vertices) {
             const float bump =
-                float(fractalNoise(v.position.x * 0.7 + 11.0, v.position.z * 0.7 + v.position.y * 0.5, 3));
-            v.position *= 1.0f + 0.6f * bump;
+                float(fractalNoise(v.position.x * 0.7 + 11.0, v.position.z * 0.7 + v.position.y * 0.5, 2));
+            v.position *= 1.0f + 0.55f * bump;
         }
         addTriangleNormals(mesh);
         weldNormals(mesh);
