@@ -124,11 +124,23 @@ void main()
     float distance_m = length(toEye);
     vec3 v = toEye / distance_m;
 #if SWELL_LABEL_PASS
-    // Foam where it covers most of the pixel: the wake's (every surface
-    // source's) where it is the larger share, else the waves' whitecaps.
+    // Foam where it covers the point the pixel's centre ray meets, as the
+    // range is that point's (docs/LABELS.md): the texture at full detail
+    // there, so the share of a frame's sea labelled foam is the foam's
+    // covered share at every distance (a rule of half the pixel's area
+    // counted none of the lace finer than a pixel: from 300 m most of the
+    // sea's foam). The wake's (every surface source's) where it is the
+    // larger share, else the waves' whitecaps.
+    const float kPointFootprint_m = 1e-3;
+    float pointFoam = oceanFoamAtPoint(vRestPoint - gridCenter, vHeightScale);
+#if SWELL_SURFACE_SOURCES
+    float pointSourceFoam = foamLook(sourceFoamNoise, sourceBreakingFoamAmount, sources.w, vRestPoint, kPointFootprint_m).cover;
+#else
+    float pointSourceFoam = 0.0;
+#endif
     uint label = SWELL_LABEL_WATER;
-    if (foam >= SWELL_LABEL_FOAM_COVER)
-        label = sourceFoam >= foam ? SWELL_LABEL_WAKE_FOAM : SWELL_LABEL_WHITECAP_FOAM;
+    if (max(pointFoam, pointSourceFoam) >= SWELL_LABEL_FOAM_COVER)
+        label = pointSourceFoam >= pointFoam ? SWELL_LABEL_WAKE_FOAM : SWELL_LABEL_WHITECAP_FOAM;
     writeLabels(labelRangeToPlane(vPosition, normalize(vNormal)), n, label, 0u);
     return;
 #endif

@@ -119,7 +119,7 @@ const float kBreakingRelief_m = 0.010;
 // Where the pixel resolves the texture the share is a threshold of it;
 // where it does not, the share itself. The texture is made uniform on 0..1
 // (a standard normal's distribution, in Bowling et al. 2009's logistic
-// approximation), and so is its fold 1 - |2u - 1| that makes the lace, so
+// approximation), and so is its skew-tent fold that makes the lace, so
 // the covered share of an area is the share at any distance: the cover the
 // whitecap calibration counts does not change as octaves fade. The
 // threshold's soft band is as wide as the texture changes over the pixel,
@@ -132,21 +132,32 @@ FoamLook foamLook(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], float breakingFoam
     // cost: a share of 0.0004 is a tenth of the darkest 8-bit level's step.
     // (A share of 0.002 left out lowered the cover at 8 m/s by 4%: its
     // faint rims and old foam count.)
-    if (amount < 0.0005) {
+    if (amount < SWELL_FOAM_LEAST_AMOUNT) {
         look.cover = 0.0;
         look.breaking = 0.0;
         look.slope = vec2(0.0);
         return look;
     }
+    // The share foam covers (swell::foam::foamShare, its C++ twin).
     float breaking = clamp((amount - breakingFoamAmount) / max(1.0 - breakingFoamAmount, 1e-3), 0.0, 1.0);
-    float share = mix(0.75 * amount, 0.9, breaking);
+    float share = mix(SWELL_FOAM_LACE_SHARE * amount, SWELL_FOAM_BREAKING_SHARE, breaking);
     vec4 t = foamTexture(foamNoise, p_m, footprint_m);
     float uniform01 = 1.0 / (1.0 + exp(-1.702 * t.x));
-    float lace01 = 1.0 - abs(2.0 * uniform01 - 1.0);
+    // The lace: the texture folded about its quantile `peak` (a skew tent,
+    // uniform01 / peak below it, (1 - uniform01) / (1 - peak) above), so
+    // foam follows the texture's contour at that quantile, a network of
+    // filaments around dark holes, rather than its highest values (blobs).
+    // The fold keeps u uniform on 0..1 (each u has two preimages, whose
+    // densities peak and 1 - peak add to 1), so foam covers the share it
+    // is given at every point sampled (the labels' rule) as over an area.
+    // A mix of the texture and its tent fold, as before, was not uniform:
+    // close up its lace covered 0.3 of the share it was given.
     float laced = 0.6 * smoothstep(0.1, 0.4, amount) * (1.0 - breaking);
-    float u = mix(uniform01, lace01, laced);
-    // How fast u changes along the surface (the fold doubles the rate).
-    float rate = uniform01 * (1.0 - uniform01) * 1.702 * length(t.yz) * (1.0 + laced);
+    float peak = 1.0 - 0.5 * laced; // 1: no fold; 0.7 at the most lace
+    bool below = uniform01 < peak;
+    float u = below ? uniform01 / peak : (1.0 - uniform01) / max(1.0 - peak, 1e-6);
+    // How fast u changes along the surface (the fold's slope times the texture's).
+    float rate = uniform01 * (1.0 - uniform01) * 1.702 * length(t.yz) / (below ? peak : max(1.0 - peak, 1e-6));
     float band = 0.04 + rate * footprint_m;
     // No foam covers nothing: below the band's width, the soft edge shrinks with the share.
     float lace = smoothstep(1.0 - share - band, 1.0 - share + band, u) * min(1.0, share / band);

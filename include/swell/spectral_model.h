@@ -7,6 +7,7 @@
 #pragma once
 
 #include "swell/export.h"
+#include "swell/gpu/ocean.h"
 
 #include "swell/scene/spectrum.h"
 #include "swell/surface_query.h"
@@ -61,7 +62,9 @@ public:
 
 protected:
     SpectralSettings settings_;
-    float foldThreshold_ = 0.0f; // J below which foam is made
+    // Each foam level's breaking score below which foam is made
+    // (src/ocean/spectral/breaking.h).
+    std::array<float, SWELL_FOAM_LEVELS> breakingStart_{};
     std::shared_ptr<const spectral::SpectralField> field_;
 
 private:

@@ -16,4 +16,5 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
 
 // No foam, so no bubbles under it.
 float oceanFoamBelow(vec2 restOffset_m, float footprint_m) { return 0.0; }
+float oceanFoamAtPoint(vec2 restOffset_m, float heightScale) { return 0.0; }
 #endif

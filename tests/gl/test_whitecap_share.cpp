@@ -5,19 +5,19 @@
 // preset's camera (10 m up, where half the sea's pixels lie within 22 m)
 // and from 300 m straight above it.
 //
-// Disabled: red. With foam made where J is among the sea's lowest (this
-// build), the preset's camera sees 0.06 to 4.84 times Monahan's cover
-// (0.0068 to 0.51 of its sea) and 300 m up 0.57 to 0.84 times: the sea
-// the camera sees lies half within 22 m, less than one 300 m wave, and a
-// long wave's compressed phase lowers J over a whole face. A breaking
-// score against each texel's neighbourhood (branch helper-foam-score)
-// spread the breaking evenly but, calibrated to the mean covered share
-// (Whitecaps.CoverFollowsMonahan), left most foam as lace under half a
-// pixel, which the labels do not count (0 to 0.25 and 0 to 0.01), and
-// calibrated to the labels put lace over the whole sea (mean cover 3.9
-// times Monahan's; windows 0.79 to 1.75 and 1.19 to 1.36).
-// docs/RENDERING.md, "Whitecaps", has the numbers. Small frames and labels
-// only: about 40 s on 2 loaded cores.
+// Disabled: red. Designs measured (docs/RENDERING.md, "Whitecaps"):
+// - foam where J is among the sea's lowest share (before issue 47): from
+//   the preset's camera 0.06 to 4.84 times Monahan's, from 300 m 0.57 to
+//   0.84: a long wave's compressed phase lowered J over whole faces;
+// - this build: J scored against its own 5 x 5 texels, each breaking
+//   spread over 3 x 3, the ramp found per sea so a still covers Monahan's
+//   share, labels by the point each pixel's ray meets: 0.20 to 2.08 and
+//   0.83 to 0.92 (the preset's camera, 10 m up, sees half its sea within
+//   22 m, where a few 5.6 m breakings and their trails come and go);
+// - the same without the spread and with a ramp six times softer: 0.67
+//   to 1.29 and 0.94 to 1.01, but no breaking is dense and from 300 m the
+//   sea is an even haze of lace, not whitecaps (not kept).
+// Small frames and labels only: about 30 s on 2 loaded cores.
 #include "support/gl_test.h"
 #include "support/whitecap_share.h"
 

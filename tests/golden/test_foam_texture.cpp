@@ -197,13 +197,19 @@ TEST_F(FoamTexture, AStillRepeatsBitForBit)
 // Two layers (issue 25, item 2): where a crest breaks now, a dense sheet;
 // older foam thinner. Seen from 300 m (the texture unresolved, so each
 // pixel shows the share itself): with the history starting at the frame
-// (history_start_s), every foam is a breaking's own, and its densest
-// pixels are covered 0.85 or more (the sheet's 0.9; older foam's share is
-// at most 0.75, which is all the view showed before the layer); with the
-// whole history, most foamed pixels are older foam, covered less.
-// Measured: 0.031 of the view dense with the breaking's foam alone; with
-// the whole history 0.036 dense of 0.53 foamed. Without the dense layer,
-// no pixel reached 0.85.
+// (history_start_s), every foam is a breaking's own, and a share of its
+// foamed pixels are covered 0.85 or more (the sheet's 0.9; older foam's
+// share is at most 0.75, which is all the view showed before the layer);
+// with the whole history, most foamed pixels are older foam, so a smaller
+// share of them is dense. The shares are of the foamed pixels, not of the
+// view: how much of the sea breaks at once is the calibration's (issue 47
+// made each breaking a few texels, where the sea-wide threshold made
+// sheets along whole crests: 0.031 of the view dense then, 0.0006 now).
+// Measured: 0.0006 of the view dense of 0.075 foamed with the breaking's
+// foam alone (0.008 of it: most of a breaking's foamed pixels are its
+// ragged rim, the ramp's partial foam, and a dense 5.6 m patch fills few
+// 2 m pixels whole); with the whole history 0.0008 of 0.45 (0.0018).
+// Without the dense layer, no pixel reached 0.85.
 TEST_F(FoamTexture, ABreakingCrestsFoamIsDenseAndOlderFoamThins)
 {
     Scene scene = stormFoam();
@@ -218,12 +224,14 @@ TEST_F(FoamTexture, ABreakingCrestsFoamIsDenseAndOlderFoamThins)
     scene.historyStart_s = 20.0;
     Renderer breakingOnly(scene);
     const std::vector<double> now = foamView(breakingOnly, scene, 0.0, 0.0, 300.0, "foam_breaking_now_from_300m");
-    const double nowDense = dense(now, 0.85), allDense = dense(all, 0.85), allFoamed = dense(all, 0.05);
-    std::printf("breaking now: %.4f of the view covered 0.85 or more; whole history: %.4f so, %.4f foamed "
-                "(0.05 or more)\n",
-                nowDense, allDense, allFoamed);
-    EXPECT_GT(nowDense, 0.003) << "no dense foam where crests break now";
-    EXPECT_LT(allDense, 0.5 * allFoamed) << "older foam is as dense as a breaking's";
+    const double nowDense = dense(now, 0.85), nowFoamed = dense(now, 0.05);
+    const double allDense = dense(all, 0.85), allFoamed = dense(all, 0.05);
+    std::printf("breaking now: %.4f of the view covered 0.85 or more of %.4f foamed (0.05 or more); whole "
+                "history: %.4f of %.4f\n",
+                nowDense, nowFoamed, allDense, allFoamed);
+    ASSERT_GT(nowFoamed, 0.0) << "no crest breaks now";
+    EXPECT_GT(nowDense / nowFoamed, 0.004) << "no dense foam where crests break now";
+    EXPECT_LT(allDense / allFoamed, 0.5 * nowDense / nowFoamed) << "older foam is as dense as a breaking's";
 }
 
 // The bubbles under the whitecaps (issue 25, item 4): the water seen

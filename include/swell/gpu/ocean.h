@@ -49,6 +49,14 @@
 #define SWELL_FOAM_OCTAVES 6
 #define SWELL_FOAM_NOISE_MAPS 7
 #define SWELL_FOAM_NOISE_PERIOD 4096
+// The share of the water foam covers (foamLook() in shaders/whitecap_foam.glsl,
+// swell::foam::foamShare in C++, which calibrates the whitecaps' breaking
+// against Monahan's cover with it): a breaking's own foam (younger than a
+// second) SWELL_FOAM_BREAKING_SHARE, older foam SWELL_FOAM_LACE_SHARE of
+// its amount, and none below SWELL_FOAM_LEAST_AMOUNT.
+#define SWELL_FOAM_BREAKING_SHARE 0.9
+#define SWELL_FOAM_LACE_SHARE 0.75
+#define SWELL_FOAM_LEAST_AMOUNT 0.0005
 // The surface sources' foam (the bodies' wake's) fades as exp(-age / this),
 // s: the spectral whitecaps' default lifetime (salt water, Monahan &
 // O'Muircheartaigh 1980). The shading draws source foam above

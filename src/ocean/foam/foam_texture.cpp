@@ -1,6 +1,7 @@
 // The whitecaps' texture lattices (foam_texture.h).
 #include "ocean/foam/foam_texture.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace swell::foam {
@@ -20,6 +21,14 @@ constexpr double kGoldenAngle_rad = 2.39996322972865332;
 constexpr double kPeriod = SWELL_FOAM_NOISE_PERIOD;
 
 } // namespace
+
+double foamShare(double amount, double breakingAmount)
+{
+    if (amount < SWELL_FOAM_LEAST_AMOUNT)
+        return 0.0;
+    const double breaking = std::clamp((amount - breakingAmount) / std::max(1.0 - breakingAmount, 1e-3), 0.0, 1.0);
+    return SWELL_FOAM_LACE_SHARE * amount + (SWELL_FOAM_BREAKING_SHARE - SWELL_FOAM_LACE_SHARE * amount) * breaking;
+}
 
 std::array<FoamNoiseMap, kFoamNoiseMaps> foamNoiseMaps(glm::dvec2 gridCenter_m, glm::dvec2 windDirection,
                                                        double streak)

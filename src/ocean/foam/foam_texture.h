@@ -30,6 +30,13 @@ inline constexpr int kFoamNoiseMaps = SWELL_FOAM_NOISE_MAPS;
 // foam thinning into lace.
 inline constexpr double kBreakingFoamAge_s = 1.0;
 
+// The share of the water foam of this amount covers (1 where a crest breaks
+// now, decaying as exp(-age / lifetime); breakingAmount: the amount a
+// second old), over an area or at a point sampled at random: foamLook()'s
+// share in shaders/whitecap_foam.glsl, which the texture's threshold keeps
+// at every distance.
+double foamShare(double amount, double breakingAmount);
+
 // One lattice: cells q = map * x + offset_cells for x in metres from the
 // grid centre along (x, z).
 struct FoamNoiseMap {

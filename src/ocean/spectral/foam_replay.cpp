@@ -34,20 +34,24 @@ float toHalfTowardZero(float v)
     return v;
 }
 
-// How much higher than computed this replay takes each fold Jacobian: the
+// How much higher than computed this replay takes each breaking score: the
 // GPU's steps compute J from other transforms (and llvmpipe's float
 // arithmetic), and a still must show no foam a sequence of the GPU's steps
-// would not. Measured over one step's 131072 texels at three times of the
-// storm: the two J's made foam within one half's step of each other on
-// every texel of the ramp (1.5e-5 of J, the half's resolution there); the
-// margin is about 7 times that, and takes at most 1e-4 / 0.03 = 0.0033 off
-// a texel's new foam.
-constexpr float kJacobianMargin = 1e-4f;
+// would not. Their J's agree within one half's step (1.5e-5; measured over
+// one step's 131072 texels at three times of the storm); a score divides
+// the differences of a box's J by its deviation, so it moves by up to
+// about 3 * 1.5e-5 / 0.05 = 0.001 where a box breaks (deviations of 0.05
+// and more; a glassier box scores near 0, far above the ramp). The margin
+// is three times that and takes 0.003 / kBreakingSpan = 0.009 off a
+// texel's new foam: 0.01 took so much that the still's cover fell short of
+// the sequence's by more than the first frame's carried foam allows
+// (Whitecaps.AStillShowsTheFoamItsHistoryMade: 0.0048 against 0.0045).
+constexpr float kScoreMargin = 0.003f;
 
 } // namespace
 
-FoamReplay::FoamReplay(std::shared_ptr<const SpectralField> field, float foldThreshold, float foldSoftness)
-    : field_(std::move(field)), foldThreshold_(foldThreshold), foldSoftness_(foldSoftness)
+FoamReplay::FoamReplay(std::shared_ptr<const SpectralField> field, const BreakingRamps& ramps)
+    : field_(std::move(field)), ramps_(ramps)
 {
     const int dims[2] = {kSize, kSize};
     fft_ = kiss_fftnd_alloc(dims, 2, 1, nullptr, nullptr);
@@ -79,27 +83,29 @@ FoamReplay::FoamReplay(std::shared_ptr<const SpectralField> field, float foldThr
     cross_.assign(n, {});
     for (auto& f : foam_)
         f.assign(size_t(kFoamSize) * kFoamSize, 0.0f);
+    jacobian_.assign(size_t(kSpan) * kSpan * kFoamLevels, 0.0f);
+    score_.assign(size_t(kMadeSpan) * kMadeSpan, 0.0f);
+    lowest_.assign(size_t(kFoamSize) * kFoamSize, 0.0f);
 }
 
 FoamReplay::~FoamReplay() { kiss_fft_free(fft_); }
 
 void FoamReplay::placeTaps(glm::dvec2 gridCenter_m, const std::array<FoamWindow, kFoamLevels>& windows)
 {
-    const size_t texels = size_t(kFoamSize) * kFoamSize;
+    const size_t texels = size_t(kSpan) * kSpan;
     for (auto& t : taps_)
         t.resize(texels * kFoamLevels);
     for (int level = 0; level < kFoamLevels; ++level) {
         const FoamWindow& w = windows[size_t(level)];
         const double texel_m = foamTexel_m(*field_, level);
-        for (int y = 0; y < kFoamSize; ++y)
-            for (int x = 0; x < kFoamSize; ++x) {
-                // The world texel this stored texel holds, as the shader finds it.
-                const glm::ivec2 p(x, y);
-                const glm::ivec2 world = w.origin + ((p - w.origin) & (kFoamSize - 1));
+        for (int y = 0; y < kSpan; ++y)
+            for (int x = 0; x < kSpan; ++x) {
+                // The world texel of the span, as the shader finds its tile's.
+                const glm::ivec2 world = w.origin + glm::ivec2(x, y) - kMargin;
                 const glm::dvec2 restOffset_m =
                     (glm::dvec2(world - w.centreIndex) + 0.5 - glm::dvec2(w.centreFraction)) * texel_m;
                 const glm::dvec2 point_m = gridCenter_m + restOffset_m;
-                const size_t texel = size_t(level) * texels + size_t(y) * kFoamSize + size_t(x);
+                const size_t texel = size_t(level) * texels + size_t(y) * kSpan + size_t(x);
                 for (int c = 0; c < kFoamCascades; ++c) {
                     const WarpSample warp = warpAt(field_->warps[size_t(c)], point_m);
                     const double scale = kSize / field_->cascades[size_t(c)].patch_m;
@@ -210,26 +216,84 @@ float FoamReplay::jacobianAt(size_t texel) const
     return (1.0f + gxx) * (1.0f + gzz) - gxz * gzx;
 }
 
+size_t FoamReplay::spanIndexOf(int level, int x, int z) const
+{
+    // The world texel a stored texel holds, from its window's origin.
+    const glm::ivec2 fromOrigin = (glm::ivec2(x, z) - windows_[size_t(level)].origin) & (kFoamSize - 1);
+    return size_t(level) * kSpan * kSpan + size_t(fromOrigin.y + kBreakingSpread) * kSpan +
+           size_t(fromOrigin.x + kBreakingSpread);
+}
+
+void FoamReplay::lowestScoresOf(int level, float* lowest)
+{
+    // The score of each texel of the span's inner part: the box whose
+    // first texel is scored texel m's index in the span is m's.
+    const float* jacobian = &jacobian_[size_t(level) * kSpan * kSpan];
+    for (int z = 0; z < kMadeSpan; ++z)
+        for (int x = 0; x < kMadeSpan; ++x)
+            score_[size_t(z) * kMadeSpan + size_t(x)] = breakingScore(&jacobian[size_t(z) * kSpan + size_t(x)], kSpan);
+    const int spread = breakingSpreadAt(level);
+    const glm::ivec2 origin = windows_[size_t(level)].origin;
+    for (int z = 0; z < kFoamSize; ++z)
+        for (int x = 0; x < kFoamSize; ++x) {
+            // The world texel this stored texel holds, from the window's
+            // origin, and the lowest score within its spread: the most foam
+            // made there is that score's (the ramp falls), as
+            // spectral_foam.comp keeps the most made.
+            const glm::ivec2 f = (glm::ivec2(x, z) - origin) & (kFoamSize - 1);
+            float least = score_[size_t(f.y + kBreakingSpread) * kMadeSpan + size_t(f.x + kBreakingSpread)];
+            for (int dz = -spread; dz <= spread; ++dz)
+                for (int dx = -spread; dx <= spread; ++dx)
+                    least = std::min(least, score_[size_t(f.y + kBreakingSpread + dz) * kMadeSpan +
+                                                   size_t(f.x + kBreakingSpread + dx)]);
+            lowest[size_t(z) * kFoamSize + size_t(x)] = least;
+        }
+}
+
+void FoamReplay::stepJacobians(double time_s)
+{
+    evolveTo(time_s);
+    for (size_t t = 0; t < jacobian_.size(); ++t)
+        jacobian_[t] = jacobianAt(t);
+}
+
+std::array<std::vector<std::vector<float>>, kFoamLevels> FoamReplay::lowestScores(
+    glm::dvec2 gridCenter_m, const std::array<FoamWindow, kFoamLevels>& windows, const std::vector<double>& times_s)
+{
+    windows_ = windows;
+    placeTaps(gridCenter_m, windows);
+    phasorSet_ = false;
+    std::array<std::vector<std::vector<float>>, kFoamLevels> scores;
+    for (const double t : times_s) {
+        stepJacobians(t);
+        for (int level = 0; level < kFoamLevels; ++level) {
+            scores[size_t(level)].emplace_back(size_t(kFoamSize) * kFoamSize);
+            lowestScoresOf(level, scores[size_t(level)].back().data());
+        }
+    }
+    return scores;
+}
+
 const std::array<std::vector<float>, kFoamLevels>& FoamReplay::run(glm::dvec2 gridCenter_m,
                                                                     const std::array<FoamWindow, kFoamLevels>& windows,
                                                                     const std::vector<double>& times_s,
                                                                     double lifetime_s)
 {
+    windows_ = windows;
     placeTaps(gridCenter_m, windows);
     phasorSet_ = false;
-    const size_t texels = size_t(kFoamSize) * kFoamSize;
     for (size_t i = 0; i < times_s.size(); ++i) {
-        evolveTo(times_s[i]);
+        stepJacobians(times_s[i]);
         const float decay = i == 0 ? 0.0f : float(std::exp(-(times_s[i] - times_s[i - 1]) / lifetime_s));
         for (int level = 0; level < kFoamLevels; ++level) {
+            lowestScoresOf(level, lowest_.data());
             float* foam = foam_[size_t(level)].data();
-            for (size_t p = 0; p < texels; ++p) {
-                const float j = jacobianAt(size_t(level) * texels + p) + kJacobianMargin;
-                const float made = std::clamp(1.0f - (j - foldThreshold_) / foldSoftness_, 0.0f, 1.0f);
-                // Stored as the GPU's R16F texture stores it at every step,
-                // so the foam decays through the same roundings.
-                foam[p] = toHalfTowardZero(std::max(foam[p] * decay, made));
-            }
+            const BreakingRamp& ramp = ramps_[size_t(level)];
+            for (size_t p = 0; p < lowest_.size(); ++p)
+                // Stored as the GPU's R16F texture stores it at every
+                // step, so the foam decays through the same roundings.
+                foam[p] = toHalfTowardZero(
+                    std::max(foam[p] * decay, foamMadeAt(lowest_[p] + kScoreMargin, ramp.start, ramp.span)));
         }
     }
     return foam_;
@@ -237,7 +301,7 @@ const std::array<std::vector<float>, kFoamLevels>& FoamReplay::run(glm::dvec2 gr
 
 float FoamReplay::lastJacobian(int level, int x, int z) const
 {
-    return jacobianAt(size_t(level) * kFoamSize * kFoamSize + size_t(z) * kFoamSize + size_t(x));
+    return jacobian_[spanIndexOf(level, x, z) + size_t(kBreakingRadius) * kSpan + kBreakingRadius];
 }
 
 } // namespace swell::spectral

@@ -1,8 +1,9 @@
 // SpectralSurface: the spectral field behind swell::SurfaceQuery, queried
-// through its CPU twin (spectral_cpu.h); the fold threshold its whitecaps
-// are made below, from the field itself.
+// through its CPU twin (spectral_cpu.h); the breaking score's ramp its
+// whitecaps are made on (breaking.h), from the field itself.
 #include "swell/spectral_model.h"
 
+#include "ocean/spectral/breaking.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
@@ -31,9 +32,11 @@ SpectralSurface::SpectralSurface(const SpectralSettings& settings)
         variance += sum / double(fields.values[size_t(c)][1].size());
     }
     heightDeviation_m_ = std::sqrt(variance);
-    // The fold threshold from the field itself, at t = 0: its J
-    // distribution is stationary, so any time would do.
-    foldThreshold_ = foldThresholdFor(*cpu_, *field_, breakingFraction(settings.wind.windSpeed_mps));
+    // The breaking ramps from the field itself: a still's foam on this sea
+    // covers Monahan's share of it at this wind.
+    const BreakingRamps ramps = calibratedBreakingRamps(field_, settings.wind.windSpeed_mps);
+    for (int level = 0; level < kFoamLevels; ++level)
+        breakingStart_[size_t(level)] = ramps[size_t(level)].start;
 }
 
 SpectralSurface::~SpectralSurface() = default;

@@ -42,19 +42,4 @@ FoamWindow foamWindowAt(glm::dvec2 gridCenter_m, double texel_m)
     return w;
 }
 
-float foldThresholdFor(const CpuSurface& cpu, const SpectralField& field, double fraction)
-{
-    constexpr int kSamples = 256;
-    // A spacing incommensurate with every patch, so no two samples see the
-    // same place of a cascade.
-    const double spacing_m = 1.37 * field.cascades[0].patch_m / kSamples;
-    const SurfaceFilter filter{}; // unfiltered, as the shader's foldJacobian
-    std::vector<float> j;
-    j.reserve(size_t(kSamples) * kSamples);
-    for (int row = 0; row < kSamples; ++row)
-        for (int col = 0; col < kSamples; ++col)
-            j.push_back(float(cpu.foldJacobianAt({col * spacing_m, row * spacing_m}, 0.0, filter, kFoamCascades)));
-    return quantile(std::move(j), fraction);
-}
-
 } // namespace swell::spectral

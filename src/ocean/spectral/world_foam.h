@@ -60,13 +60,4 @@ struct FoamWindow {
 };
 FoamWindow foamWindowAt(glm::dvec2 gridCenter_m, double texel_m);
 
-// The J below which `fraction` of the surface lies: sampled from the CPU
-// twin at t = 0 (the statistics of J do not change with time) at 256^2
-// points spread over more than the largest patch, at the same warped points
-// as the shader. Every level samples the same unfiltered J of cascades
-// 0..kFoamCascades-1, so one threshold serves them all: the same statistics,
-// the same persistence (filtering the coarse level's J instead would make
-// fewer, larger patches there, and the cover would change with distance).
-float foldThresholdFor(const CpuSurface& cpu, const SpectralField& field, double fraction);
-
 } // namespace swell::spectral

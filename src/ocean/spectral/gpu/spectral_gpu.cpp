@@ -40,11 +40,6 @@ using namespace spectral;
 
 namespace {
 
-// Foam fades out over this much J above the threshold, a fifth of the
-// spread of J's lowest percent below its median (about 0.15): the rim of a
-// breaking makes partial foam, which the shading draws as lace, so a
-// whitecap's edge is ragged rather than cut out along a contour of J.
-constexpr float kFoldSoftness = 0.03f;
 // A window that moves by more than this many texels since the foam's last
 // step (a camera cut) replays the foam's history, as a cut in time does.
 constexpr int kLongestFoamShift = kFoamSize / 4;
@@ -100,8 +95,8 @@ constexpr int kTile = SWELL_FOAM_STEP_GROUP;
 class SpectralGpu final : public WaveModelGpu {
 public:
     SpectralGpu(std::shared_ptr<const SpectralField> field, const SpectralSettings& settings,
-                float foldThreshold, const gl::ShaderSources& shaders)
-        : field_(std::move(field)), settings_(settings), foldThreshold_(foldThreshold), downsampler_(shaders)
+                const BreakingRamps& ramps, const gl::ShaderSources& shaders)
+        : field_(std::move(field)), settings_(settings), ramps_(ramps), downsampler_(shaders)
     {
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
@@ -113,8 +108,8 @@ public:
         patchLocation_ = gl::requiredUniform(fftRows_, "patchSize_m", fft);
         const char* foam = "ocean/spectral_foam.comp";
         decayLocation_ = gl::requiredUniform(foamStep_, "decay", foam);
-        thresholdLocation_ = gl::requiredUniform(foamStep_, "foldThreshold", foam);
-        softnessLocation_ = gl::requiredUniform(foamStep_, "foldSoftness", foam);
+        startLocation_ = gl::requiredUniform(foamStep_, "breakingStart", foam);
+        spanLocation_ = gl::requiredUniform(foamStep_, "breakingSpan", foam);
         foamCascadesLocation_ = gl::requiredUniform(foamStep_, "foamCascades", foam);
         windowOriginLocation_ = gl::requiredUniform(foamStep_, "windowOrigin", foam);
         previousOriginLocation_ = gl::requiredUniform(foamStep_, "previousOrigin", foam);
@@ -169,7 +164,7 @@ public:
         // about 18 times the cost of FoamReplay's (0.19 s against 0.011 s
         // a step on llvmpipe); a GPU keeps them.
         if (gl::isSoftwareRasterizer())
-            cpuReplay_ = std::make_unique<FoamReplay>(field_, foldThreshold_, kFoldSoftness);
+            cpuReplay_ = std::make_unique<FoamReplay>(field_, ramps_);
     }
 
     std::string shaderFile() const override { return "ocean/spectral.glsl"; }
@@ -335,8 +330,13 @@ private:
         ++work_.foamSteps;
         glUseProgram(foamStep_.id());
         glUniform1f(decayLocation_, decay);
-        glUniform1f(thresholdLocation_, foldThreshold_);
-        glUniform1f(softnessLocation_, kFoldSoftness);
+        std::array<float, kFoamLevels> start{}, span{};
+        for (int level = 0; level < kFoamLevels; ++level) {
+            start[size_t(level)] = ramps_[size_t(level)].start;
+            span[size_t(level)] = ramps_[size_t(level)].span;
+        }
+        glUniform1fv(startLocation_, kFoamLevels, start.data());
+        glUniform1fv(spanLocation_, kFoamLevels, span.data());
         glUniform1i(foamCascadesLocation_, kFoamCascades);
         std::array<glm::ivec2, kFoamLevels> origin{}, centre{};
         std::array<glm::vec2, kFoamLevels> fraction{};
@@ -507,7 +507,7 @@ private:
 
     std::shared_ptr<const SpectralField> field_;
     SpectralSettings settings_;
-    float foldThreshold_;
+    BreakingRamps ramps_;
     // Each foam level's window now, and where it was at the foam's last step.
     std::array<FoamWindow, kFoamLevels> windows_{};
     std::array<glm::ivec2, kFoamLevels> previousOrigin_{};
@@ -527,7 +527,7 @@ private:
     gl::MipDownsampler downsampler_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
-    GLint decayLocation_ = -1, thresholdLocation_ = -1, softnessLocation_ = -1, foamCascadesLocation_ = -1;
+    GLint decayLocation_ = -1, startLocation_ = -1, spanLocation_ = -1, foamCascadesLocation_ = -1;
     GLint windowOriginLocation_ = -1, previousOriginLocation_ = -1, centreIndexLocation_ = -1;
     GLint centreFractionLocation_ = -1, texelLocation_ = -1;
     gl::Texture initial_, omega_, displacement_, derivatives_, slopes_, foam_;
@@ -541,10 +541,10 @@ private:
 namespace spectral {
 
 std::unique_ptr<WaveModelGpu> makeSpectralGpu(std::shared_ptr<const SpectralField> field,
-                                              const SpectralSettings& settings, float foldThreshold,
+                                              const SpectralSettings& settings, const BreakingRamps& ramps,
                                               const gl::ShaderSources& shaders)
 {
-    return std::make_unique<SpectralGpu>(std::move(field), settings, foldThreshold, shaders);
+    return std::make_unique<SpectralGpu>(std::move(field), settings, ramps, shaders);
 }
 
 } // namespace spectral

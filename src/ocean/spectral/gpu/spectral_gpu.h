@@ -2,6 +2,7 @@
 // SpectralModel::createGpu. Library-internal.
 #pragma once
 
+#include "ocean/spectral/breaking.h"
 #include "ocean/spectral/spectral_field.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/spectral_model.h"
@@ -12,9 +13,9 @@
 namespace swell::spectral {
 
 // The GPU half of a spectral model: its textures, passes and foam steps for
-// `field`, whitecaps where the fold passes `foldThreshold`.
+// `field`, whitecaps on the breaking score's `ramps`, one a foam level (breaking.h).
 std::unique_ptr<WaveModelGpu> makeSpectralGpu(std::shared_ptr<const SpectralField> field,
-                                              const SpectralSettings& settings, float foldThreshold,
+                                              const SpectralSettings& settings, const spectral::BreakingRamps& ramps,
                                               const gl::ShaderSources& shaders);
 
 } // namespace swell::spectral

@@ -28,7 +28,7 @@ std::string SpectralModel::summary() const
 
 std::unique_ptr<WaveModelGpu> SpectralModel::createGpu(const gl::ShaderSources& shaders) const
 {
-    return makeSpectralGpu(field_, settings_, foldThreshold_, shaders);
+    return makeSpectralGpu(field_, settings_, spectral::breakingRampsStartingAt(breakingStart_), shaders);
 }
 
 } // namespace swell

@@ -1,0 +1,119 @@
+#include "ocean/spectral/breaking.h"
+
+#include "ocean/foam/foam_texture.h"
+#include "ocean/spectral/foam_replay.h"
+#include "ocean/spectral/whitecaps.h"
+#include "ocean/spectral/world_foam.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <vector>
+
+namespace swell::spectral {
+
+namespace {
+
+// A fingerprint of what the breaking depends on: the folding cascades'
+// seeded amplitudes, their patches and the choppiness (FNV-1a over the
+// bytes), and the wind that sets the cover asked for.
+std::uint64_t fingerprint(const SpectralField& field, double windSpeed10_mps)
+{
+    std::uint64_t h = 1469598103934665603ull;
+    auto add = [&h](const void* data, size_t bytes) {
+        const auto* b = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < bytes; ++i)
+            h = (h ^ b[i]) * 1099511628211ull;
+    };
+    for (int c = 0; c < kFoamCascades; ++c) {
+        add(field.h0[size_t(c)].data(), field.h0[size_t(c)].size() * sizeof(field.h0[size_t(c)][0]));
+        add(&field.cascades[size_t(c)].patch_m, sizeof(double));
+        add(&field.warps[size_t(c)], sizeof(field.warps[size_t(c)]));
+    }
+    add(&field.choppiness, sizeof(double));
+    add(&windSpeed10_mps, sizeof(double));
+    return h;
+}
+
+// The mean share foam covers at the last of the steps whose lowest scores
+// are `steps` (one level's, every stored texel), with full foam at score
+// `full`: the foam kept from step to step as the replay keeps it.
+double coverAt(const std::vector<std::vector<float>>& steps, float full, double decay, double breakingAmount)
+{
+    const size_t texels = steps.front().size();
+    double sum = 0.0;
+    for (size_t p = 0; p < texels; ++p) {
+        float foam = 0.0f;
+        for (const std::vector<float>& lowest : steps)
+            foam = std::max(foam * float(decay), foamMadeAt(lowest[p], full + kBreakingSpan, kBreakingSpan));
+        sum += foam::foamShare(foam, breakingAmount);
+    }
+    return sum / double(texels);
+}
+
+BreakingRamps findRamps(std::shared_ptr<const SpectralField> field, double windSpeed10_mps)
+{
+    // A still's replay at the salt-water lifetime, over both windows around
+    // a place away from the origin (any place: the score's statistics are
+    // the same everywhere, which is its point).
+    const glm::dvec2 centre_m{1234.5, -678.9};
+    std::array<FoamWindow, kFoamLevels> windows{};
+    for (int level = 0; level < kFoamLevels; ++level)
+        windows[size_t(level)] = foamWindowAt(centre_m, foamTexel_m(*field, level));
+    std::vector<double> times_s;
+    for (const double offset_s : foamReplayOffsets_s(kSaltWaterFoamLifetime_s))
+        times_s.push_back(-offset_s);
+    FoamReplay replay(field, BreakingRamps{});
+    const auto scores = replay.lowestScores(centre_m, windows, times_s);
+
+    const double target = monahanWhitecapCover(windSpeed10_mps);
+    const double decay = std::exp(-kFoamReplayStep_s / kSaltWaterFoamLifetime_s);
+    const double breakingAmount = std::exp(-foam::kBreakingFoamAge_s / kSaltWaterFoamLifetime_s);
+    BreakingRamps ramps;
+    for (int level = 0; level < kFoamLevels; ++level) {
+        // The cover grows with the score of full foam: bisect it. A box's
+        // score lies within +-sqrt(24) (one texel against 24 others).
+        float low = -6.0f, high = 6.0f;
+        for (int i = 0; i < 32; ++i) {
+            const float mid = 0.5f * (low + high);
+            (coverAt(scores[size_t(level)], mid, decay, breakingAmount) < target ? low : high) = mid;
+        }
+        ramps[size_t(level)] = {0.5f * (low + high) + kBreakingSpan, kBreakingSpan};
+    }
+    return ramps;
+}
+
+} // namespace
+
+BreakingRamps calibratedBreakingRamps(std::shared_ptr<const SpectralField> field, double windSpeed10_mps)
+{
+    // A scene is often built again with the same sea (the viewer's edits of
+    // other keys, tests, a sweep's frames): the ramps found once serve it.
+    static std::mutex mutex;
+    static std::map<std::uint64_t, BreakingRamps> found;
+    const std::uint64_t key = fingerprint(*field, windSpeed10_mps);
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (const auto it = found.find(key); it != found.end())
+            return it->second;
+    }
+    const BreakingRamps ramps = findRamps(std::move(field), windSpeed10_mps);
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (found.size() >= 64)
+        found.clear();
+    found.emplace(key, ramps);
+    return ramps;
+}
+
+BreakingRamps breakingRampsStartingAt(const std::array<float, kFoamLevels>& starts)
+{
+    BreakingRamps ramps;
+    for (int level = 0; level < kFoamLevels; ++level)
+        ramps[size_t(level)] = {starts[size_t(level)], kBreakingSpan};
+    return ramps;
+}
+
+} // namespace swell::spectral

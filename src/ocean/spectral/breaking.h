@@ -1,0 +1,83 @@
+// Where the spectral ocean's whitecaps break: the breaking score of a texel
+// against its neighbourhood (swell/gpu/breaking.h says why), computed as
+// shaders/ocean/spectral_foam.comp computes it, and the ramp of scores
+// that makes foam in full on a given share of the sea.
+#pragma once
+
+#include "ocean/spectral/spectral_cpu.h"
+#include "ocean/spectral/spectral_field.h"
+#include "ocean/spectral/world_foam.h"
+#include "swell/gpu/breaking.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+
+namespace swell::spectral {
+
+inline constexpr int kBreakingRadius = SWELL_FOAM_BREAKING_RADIUS;
+inline constexpr int kBreakingSpread = SWELL_FOAM_BREAKING_SPREAD;
+// How many texels each way a level's breaking spreads its foam (level 0's
+// kBreakingSpread, none at the coarser levels: swell/gpu/breaking.h says
+// why), as spectral_foam.comp spreads it.
+inline constexpr int breakingSpreadAt(int level) { return level == 0 ? kBreakingSpread : 0; }
+inline constexpr float kLeastBreakingDeviation = float(SWELL_FOAM_LEAST_DEVIATION);
+// The ramp's span, in score: a fifth of the score's spread from its median
+// to its lowest 1e-4 (about 1.7; the sea-wide J threshold's softness was a
+// fifth of J's spread likewise).
+inline constexpr float kBreakingSpan = 0.35f;
+
+// The score of the texel at the centre of the box whose first texel is at
+// `box`, rows `stride` floats apart: (J - mean) / max(deviation, least), in
+// the shader's order of sums (float, row by row), so the two agree to
+// their J's rounding.
+inline float breakingScore(const float* box, int stride)
+{
+    constexpr int side = 2 * kBreakingRadius + 1;
+    float sum = 0.0f;
+    for (int dz = 0; dz < side; ++dz)
+        for (int dx = 0; dx < side; ++dx)
+            sum += box[dz * stride + dx];
+    constexpr float count = float(side * side);
+    const float mean = sum / count;
+    float squares = 0.0f;
+    for (int dz = 0; dz < side; ++dz)
+        for (int dx = 0; dx < side; ++dx) {
+            const float d = box[dz * stride + dx] - mean;
+            squares += d * d;
+        }
+    const float deviation = std::max(std::sqrt(squares / count), kLeastBreakingDeviation);
+    return (box[kBreakingRadius * stride + kBreakingRadius] - mean) / deviation;
+}
+
+// Foam made at a score: none from `start` up, rising linearly below it to
+// full `span` further down (spectral_foam.comp's).
+inline float foamMadeAt(float score, float start, float span)
+{
+    return std::clamp((start - score) / span, 0.0f, 1.0f);
+}
+
+// Where foam is made: below `start`, full at start - span.
+struct BreakingRamp {
+    float start = 0.0f, span = 1.0f;
+};
+
+// The ramps on which a still's foam covers Monahan & O'Muircheartaigh's
+// (1980) share of this sea at this wind, at the salt-water lifetime: found
+// on the CPU twin by a still's replay (FoamReplay's lowest scores, both
+// windows, 20 steps) and a bisection of the score of full foam, the cover
+// counted through the look's share (foam::foamShare). Each level its own
+// ramp: a level's texels sample J more sparsely (level 1 at two samples to
+// cascade 1's shortest wave) and it spreads none, so its scores differ.
+// A fixed share of the sea breaking with a cover fitted over winds (the
+// last design) missed by the sea's shape: the storm's wide spread and its
+// seed gave half the cover of the calibration's sea at the same wind.
+// Found once per sea and wind in a process (about 0.4 s of CPU), then kept.
+using BreakingRamps = std::array<BreakingRamp, kFoamLevels>;
+BreakingRamps calibratedBreakingRamps(std::shared_ptr<const SpectralField> field, double windSpeed10_mps);
+
+// The ramps of these starts (the constant span).
+BreakingRamps breakingRampsStartingAt(const std::array<float, kFoamLevels>& starts);
+
+} // namespace swell::spectral
