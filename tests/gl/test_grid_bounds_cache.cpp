@@ -130,9 +130,9 @@ TEST_F(GridBoundsCache, TheQuadtreeChoosesTheTilesATestOfEachWould)
             const glm::dvec3 origin(eye.x, 0.0, eye.z);
             const swell::GridPlacement placement = swell::placeGrid(shape, eye);
             const glm::dvec2 centre = placement.center_m - glm::dvec2(origin.x, origin.z);
-            // Each tile's box alone, for every direction of this eye: it
-            // depends on the eye and the reach only (finding it is most of
-            // the test's time, once per direction before).
+            // Each tile's box alone, found once for every direction of this
+            // eye: it depends on the eye and the reach only, and finding it
+            // is most of the test's work.
             std::vector<Bounds> boxes;
             for (const GridTile& tile : tiles.tiles) {
                 Bounds box = tileBounds(shape, placement, tile, reach);
