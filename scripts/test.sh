@@ -4,9 +4,14 @@
 # outside-project package test), ending with CTest's summary.
 #   scripts/test.sh              the whole suite, Release
 #   scripts/test.sh --sanitize   the whole suite under AddressSanitizer + UBSan (build-asan/)
+# It prints the wall time of each step after CTest's summary ("test.sh: build
+# N s", and install, tests), which CI's log keeps (.ci/run).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+start=$SECONDS
 "$root/scripts/install-deps.sh"
+installed=$((SECONDS - start))
+start=$SECONDS
 costs=$root/tests/costs/release.txt
 if [[ "${1:-}" == "--sanitize" ]]; then
   export SWELL_BUILD_DIR=${SWELL_BUILD_DIR:-$root/build-asan} SWELL_BUILD_TYPE=Debug
@@ -15,7 +20,14 @@ if [[ "${1:-}" == "--sanitize" ]]; then
 else
   "$root/scripts/build.sh"
 fi
+built=$((SECONDS - start))
 cd "${SWELL_BUILD_DIR:-$root/build}"
 # The slowest tests first (a fresh build has no timings of its own).
 "$root/scripts/seed-test-costs.sh" . "$costs"
-exec ctest --output-on-failure --parallel "$(nproc)" --timeout 600
+start=$SECONDS
+rc=0
+ctest --output-on-failure --parallel "$(nproc)" --timeout 600 || rc=$?
+echo "test.sh: install $installed s" >&2
+echo "test.sh: build $built s" >&2
+echo "test.sh: tests $((SECONDS - start)) s" >&2
+exit "$rc"
