@@ -25,8 +25,8 @@
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
 // For shading, layers 0 .. SWELL_FFT_CASCADES - 1: dDy/dx, dDy/dz, dDx/dx,
 // dDz/dz; the next SWELL_FFT_CASCADES layers the slopes' second moments,
-// mipmapped with them: (dDy/dx)^2, (dDy/dz)^2, their product; all in half
-// floats.
+// mipmapped with them: (dDy/dx)^2, (dDy/dz)^2, their product, and the cross
+// derivative dDx/dz; all in half floats.
 layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2DArray oceanDerivatives;
 layout(binding = SWELL_UNIT_OCEAN2) uniform sampler2DArray oceanFoam;         // whitecap foam, 0..1, a layer a level
 // The same derivatives in the full floats the FFT made, its base level
@@ -220,14 +220,16 @@ SurfacePoint spectralSlopes(CascadeLookups lookups, float footprint_m, float hei
         SpectralCascade cascade = cascades[c];
         mat2 jacobian = lookups.jacobian[c];
         vec2 s = lookups.texels[c];
-        float weight = cascadeWeight(cascade.shortestWavelength_m, footprint_m);
         // Sample centres sit at integer texels: shift by half a texel for the
         // hardware's filter, and pick the mip the footprint covers.
         vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
         float lod = log2(max(footprint_m * cascade.texelsPerMetre, 1.0));
         vec4 d = textureLod(oceanDerivatives, uvw, lod); // dDy/dx, dDy/dz, dDx/dx, dDz/dz in the patch
-        vec3 moments = textureLod(oceanDerivatives, uvw + vec3(0.0, 0.0, float(SWELL_FFT_CASCADES)), lod).xyz;
-        float crossSlope = textureLod(oceanDisplacement, uvw, 0.0).w * weight; // dDx/dz = dDz/dx
+        vec4 moments = textureLod(oceanDerivatives, uvw + vec3(0.0, 0.0, float(SWELL_FFT_CASCADES)), lod);
+        // dDx/dz = dDz/dx, filtered by the footprint as its siblings are (the
+        // displacement's own copy is sampled nearest: a texel's value over
+        // the whole texel, at level 0 whatever the footprint).
+        float crossSlope = moments.w;
         // The chain rule through the warp: d/dx_j = (d/ds) . jacobian[j].
         vec2 slope = d.xy, alongDx = vec2(d.z, crossSlope), alongDz = vec2(crossSlope, d.w);
         for (int j = 0; j < 2; ++j) {

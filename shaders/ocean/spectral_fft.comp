@@ -173,11 +173,13 @@ void main()
         // chain filters both (LEAN mapping: Olano & Baker 2010, "LEAN
         // Mapping", I3D, sec. 3: over any footprint, E[s^2] - E[s]^2 from
         // the two is the slope variance the footprint's mean slope leaves
-        // out).
+        // out). The moments' fourth channel holds the cross derivative
+        // dDx/dz (= dDz/dx), the normal's one term the derivatives' four
+        // leave out, so that it is filtered by the footprint as they are.
         vec2 slope = bufferB[i].xy; // dDy/dx, dDy/dz
         imageStore(slopes, p, bufferB[i]);
         imageStore(slopes, ivec3(p.xy, p.z + SWELL_FFT_CASCADES),
-                   vec4(slope.x * slope.x, slope.y * slope.y, slope.x * slope.y, 0.0));
+                   vec4(slope.x * slope.x, slope.y * slope.y, slope.x * slope.y, bufferA[i].w));
 #endif
     }
 }

@@ -29,7 +29,7 @@ void cascadeTexels(const CpuSurface::Fields& fields, int cascade, FieldTexels& o
         moments[4 * i + 0] = sx * sx;
         moments[4 * i + 1] = sz * sz;
         moments[4 * i + 2] = sx * sz;
-        moments[4 * i + 3] = 0.0f;
+        moments[4 * i + 3] = v[3][i]; // dDx/dz, filtered with the slopes
     }
 }
 

@@ -16,8 +16,9 @@ namespace swell::spectral {
 // - derivatives layer c: (dDy/dx, dDy/dz, dDx/dx, dDz/dz);
 // - slopes layer c: the derivatives again (the shading's copy), and slopes
 //   layer kCascades + c: the slopes' second moments ((dDy/dx)^2, (dDy/dz)^2,
-//   dDy/dx * dDy/dz, 0), which LEAN mapping filters (Olano & Baker 2010,
-//   sec. 3). The slopes' moment layers are written after all cascades'
+//   dDy/dx * dDy/dz) and the cross derivative dDx/dz beside them (so that
+//   it is filtered with the other derivatives), which LEAN mapping filters
+//   (Olano & Baker 2010, sec. 3). The slopes' moment layers are written after all cascades'
 //   derivative layers: `slopeMoments` holds them apart.
 struct FieldTexels {
     std::vector<float> displacement, derivatives, slopeMoments;
