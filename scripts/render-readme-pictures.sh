@@ -34,14 +34,15 @@ grep -q '^position_m = \[0.0, 300.0, 0.0\]' "$scratch/storm-from-above.toml" ||
   { echo "render-readme-pictures: scenes/storm.toml's camera line changed; update this script" >&2; exit 1; }
 "$swell" render "$scratch/storm-from-above.toml" -o "$out/storm-from-above.png" "${size[@]}"
 
-# A whitecap close up: the trade wind preset at 20 s, its camera (the
-# [camera] table, the file's end) replaced by one 3.5 m up and about 8 m
-# from a crest breaking then: its dense fresh foam, the lace and flecks of
-# the older foam, the bubbles glowing through the water under them.
+# A whitecap close up: the trade wind preset at 0 s, its camera (the
+# [camera] table, the file's end) replaced by one 3.5 m up and about 6 m
+# from a crest breaking then (found on the CPU twin's foam replay): its
+# dense fresh foam, the lace and flecks of the older foam, the bubbles
+# glowing through the water under them.
 sed '/^\[camera\]/,$d' "$root/scenes/trade-wind.toml" >"$scratch/whitecap.toml"
 grep -q '^\[waves\.wind\]' "$scratch/whitecap.toml" && ! grep -q '^\[camera' "$scratch/whitecap.toml" ||
   { echo "render-readme-pictures: scenes/trade-wind.toml's layout changed; update this script" >&2; exit 1; }
-printf '%s\n' '[camera]' 'position_m = [66.3, 3.5, -80.0]' 'yaw_deg = 0.0' 'pitch_deg = -26.0' 'fov_y_deg = 60.0' \
+printf '%s\n' '[camera]' 'position_m = [3.0, 3.5, -1.0]' 'yaw_deg = 0.0' 'pitch_deg = -30.0' 'fov_y_deg = 60.0' \
   'far_m = 30000.0' >>"$scratch/whitecap.toml"
 "$swell" render "$scratch/whitecap.toml" -o "$out/whitecap.png" "${size[@]}"
 

@@ -153,7 +153,7 @@ FoamLook foamLook(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], float breakingFoam
     // A mix of the texture and its tent fold, as before, was not uniform,
     // so a point was under foam less often than the share said.
     float laced = smoothstep(0.1, 0.4, amount) * (1.0 - breaking);
-    float peak = 1.0 - 0.5 * laced; // 1: no fold; 0.5 (the tent) at the most lace
+    float peak = 1.0 - 0.4 * laced; // 1: no fold; 0.6 at the most lace
     bool below = uniform01 < peak;
     float u = below ? uniform01 / peak : (1.0 - uniform01) / max(1.0 - peak, 1e-6);
     // How fast u changes along the surface (the fold's slope times the texture's).

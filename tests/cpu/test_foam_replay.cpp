@@ -118,7 +118,8 @@ TEST(FoamReplay, ItsFoamIsTheDecayedMaximumOfWhatTheFoldsMade)
         const double got = foam[size_t(p.level)][size_t(p.z) * kFoamSize + size_t(p.x)];
         // J within 2e-4 moves a score by up to about 3 * 2e-4 / deviation,
         // 0.012 where a box's deviation is 0.05, foam by that over the
-        // ramp's span (0.35), and the replay's margin takes 0.01 / 0.35
+        // ramp's span (kBreakingSpan, 0.15) where the J's differ most (most
+        // differ far less), and the replay's margin takes 0.003 / 0.15
         // off; the half's rounding toward zero takes at most 2^-11 of it a
         // step.
         EXPECT_NEAR(got, p.expected, 0.05) << "level " << p.level << " texel " << p.x << ", " << p.z;

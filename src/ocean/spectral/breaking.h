@@ -23,10 +23,15 @@ inline constexpr int kBreakingSpread = SWELL_FOAM_BREAKING_SPREAD;
 // why), as spectral_foam.comp spreads it.
 inline constexpr int breakingSpreadAt(int level) { return level == 0 ? kBreakingSpread : 0; }
 inline constexpr float kLeastBreakingDeviation = float(SWELL_FOAM_LEAST_DEVIATION);
-// The ramp's span, in score: a fifth of the score's spread from its median
-// to its lowest 1e-4 (about 1.7; the sea-wide J threshold's softness was a
-// fifth of J's spread likewise).
-inline constexpr float kBreakingSpan = 0.35f;
+// The ramp's span, in score: narrow, so a breaking's own foam is full and
+// dense. At 0.35 the trade wind (9 m/s) found its cover in the ramp's rim
+// alone, no texel's foam above 0.53 and no breaking drawn dense; at 0.05 a
+// still's replay on the CPU strayed from the GPU's steps by more than their
+// J's rounding allows (FoamReplay.ItsFoamIsTheDecayedMaximumOfWhatTheFoldsMade,
+// Whitecaps.AStillShowsTheFoamItsHistoryMade). At 0.15, 54 of the trade
+// wind's 65536 level-0 texels were over a breaking's second-old amount in
+// a still at t = 0.
+inline constexpr float kBreakingSpan = 0.15f;
 
 // The score of the texel at the centre of the box whose first texel is at
 // `box`, rows `stride` floats apart: (J - mean) / max(deviation, least), in

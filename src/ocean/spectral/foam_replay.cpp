@@ -42,7 +42,7 @@ float toHalfTowardZero(float v)
 // the differences of a box's J by its deviation, so it moves by up to
 // about 3 * 1.5e-5 / 0.05 = 0.001 where a box breaks (deviations of 0.05
 // and more; a glassier box scores near 0, far above the ramp). The margin
-// is three times that and takes 0.003 / kBreakingSpan = 0.009 off a
+// is three times that and takes 0.003 / kBreakingSpan = 0.02 off a
 // texel's new foam: 0.01 took so much that the still's cover fell short of
 // the sequence's by more than the first frame's carried foam allows
 // (Whitecaps.AStillShowsTheFoamItsHistoryMade: 0.0048 against 0.0045).
