@@ -13,7 +13,7 @@
 // point, exactly as the CPU twin computes it for the ramp
 // (swell::spectral::CpuSurface::foldJacobianAt); the score is
 // swell::spectral::breakingScore's, in the same order of sums, and the
-// ramp each level's (swell::spectral::breakingRampsFor).
+// ramps each level's, found for each sea (swell::spectral::calibratedBreakingRamps).
 #include "swell/gpu/bindings.h"
 #include "swell/gpu/breaking.h"
 #include "swell/gpu/ocean.h"

@@ -1,10 +1,9 @@
 // Where the spectral ocean's whitecaps break: the breaking score of a texel
 // against its neighbourhood (swell/gpu/breaking.h says why), computed as
-// shaders/ocean/spectral_foam.comp computes it, and the ramp of scores
-// that makes foam in full on a given share of the sea.
+// shaders/ocean/spectral_foam.comp computes it, and the ramps of scores on
+// which a sea's foam covers Monahan's share of it.
 #pragma once
 
-#include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/spectral_field.h"
 #include "ocean/spectral/world_foam.h"
 #include "swell/gpu/breaking.h"
