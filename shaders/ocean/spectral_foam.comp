@@ -35,38 +35,38 @@ uniform vec2 centreFraction[SWELL_FOAM_LEVELS];  // the grid centre within that 
 uniform float texel_m[SWELL_FOAM_LEVELS];        // each level's texel size, m
 
 // The workgroup's tile of world texels and the margin around it the boxes
-// and the spread reach: J of each, computed once (the tile's 16^2 texels
-// take 22^2 J's, not 16^2 * 25), then the foam each texel of the tile and
-// the spread's margin makes.
+// and the spread reach: J - 1 of each, computed once (the tile's 16^2
+// texels take 22^2 J's, not 16^2 * 25); then each row's sums over 5 texels
+// (of J - 1 and its square) for every box start along it, which the boxes
+// down the row share; then the foam each texel of the tile and the
+// spread's margin makes.
 const int kRadius = SWELL_FOAM_BREAKING_RADIUS;
+const int kSide = 2 * kRadius + 1;
 const int kSpread = SWELL_FOAM_BREAKING_SPREAD;
 const int kMargin = kRadius + kSpread;
 const int kSpan = SWELL_FOAM_STEP_GROUP + 2 * kMargin;
 const int kMadeSpan = SWELL_FOAM_STEP_GROUP + 2 * kSpread;
-shared float tileJacobian[kSpan * kSpan];
+const int kGroup = SWELL_FOAM_STEP_GROUP * SWELL_FOAM_STEP_GROUP;
+shared float tileJ[kSpan * kSpan];                // J - 1
+shared float rowSum[kSpan * kMadeSpan];           // sum over 5 of a row from each box start
+shared float rowSquares[kSpan * kMadeSpan];       // ... of the squares
 shared float tileMade[kMadeSpan * kMadeSpan];
 
-// The foam the texel whose box starts at `box` (in tileJacobian) makes: its
+// The foam the texel whose box starts at `box` (in tileJ) makes: its
 // breaking score (J - mean) / deviation over the box, as
 // swell::spectral::breakingScore sums it, on the level's ramp.
 float madeAt(ivec2 box, int level)
 {
-    // The box's mean, then its deviation (two passes: J is near 1, its
-    // spread a tenth, so the mean of squares would lose digits in float).
-    float sum = 0.0;
-    for (int dz = 0; dz <= 2 * kRadius; ++dz)
-        for (int dx = 0; dx <= 2 * kRadius; ++dx)
-            sum += tileJacobian[(box.y + dz) * kSpan + box.x + dx];
-    const float count = float((2 * kRadius + 1) * (2 * kRadius + 1));
+    float sum = 0.0, squares = 0.0;
+    for (int dz = 0; dz < kSide; ++dz) {
+        sum += rowSum[(box.y + dz) * kMadeSpan + box.x];
+        squares += rowSquares[(box.y + dz) * kMadeSpan + box.x];
+    }
+    const float count = float(kSide * kSide);
     float mean = sum / count;
-    float squares = 0.0;
-    for (int dz = 0; dz <= 2 * kRadius; ++dz)
-        for (int dx = 0; dx <= 2 * kRadius; ++dx) {
-            float d = tileJacobian[(box.y + dz) * kSpan + box.x + dx] - mean;
-            squares += d * d;
-        }
-    float deviation = max(sqrt(squares / count), SWELL_FOAM_LEAST_DEVIATION);
-    float score = (tileJacobian[(box.y + kRadius) * kSpan + box.x + kRadius] - mean) / deviation;
+    float variance = max(squares / count - mean * mean, 0.0);
+    float deviation = max(sqrt(variance), SWELL_FOAM_LEAST_DEVIATION);
+    float score = (tileJ[(box.y + kRadius) * kSpan + box.x + kRadius] - mean) / deviation;
     // No foam from the start up, full foam a span below it.
     return clamp((breakingStart[level] - score) / breakingSpan[level], 0.0, 1.0);
 }
@@ -79,7 +79,6 @@ void main()
     // w mod N.
     ivec2 origin = windowOrigin[level];
     ivec2 tileStart = origin + ivec2(gl_WorkGroupID.xy) * SWELL_FOAM_STEP_GROUP - kMargin;
-    const int kGroup = SWELL_FOAM_STEP_GROUP * SWELL_FOAM_STEP_GROUP;
     for (int i = int(gl_LocalInvocationIndex); i < kSpan * kSpan; i += kGroup) {
         ivec2 world = tileStart + ivec2(i % kSpan, i / kSpan);
         // The texel's centre from the grid centre, m. Coarser levels sample
@@ -88,7 +87,20 @@ void main()
         // foam steps of a still's replayed history take 3.4 s instead of
         // about 1 s on llvmpipe.
         vec2 restOffset_m = (vec2(world - centreIndex[level]) + 0.5 - centreFraction[level]) * texel_m[level];
-        tileJacobian[i] = foldJacobian(restOffset_m, foamCascades);
+        tileJ[i] = foldJacobian(restOffset_m, foamCascades) - 1.0;
+    }
+    memoryBarrierShared();
+    barrier();
+    for (int i = int(gl_LocalInvocationIndex); i < kSpan * kMadeSpan; i += kGroup) {
+        int row = i / kMadeSpan, start = i % kMadeSpan;
+        float sum = 0.0, squares = 0.0;
+        for (int dx = 0; dx < kSide; ++dx) {
+            float d = tileJ[row * kSpan + start + dx];
+            sum += d;
+            squares += d * d;
+        }
+        rowSum[i] = sum;
+        rowSquares[i] = squares;
     }
     memoryBarrierShared();
     barrier();

@@ -34,25 +34,31 @@ inline constexpr float kBreakingSpan = 0.15f;
 
 // The score of the texel at the centre of the box whose first texel is at
 // `box`, rows `stride` floats apart: (J - mean) / max(deviation, least), in
-// the shader's order of sums (float, row by row), so the two agree to
-// their J's rounding.
+// the shader's order of sums, so the two agree to their J's rounding: each
+// row's sums of J - 1 and of its square (the shader shares a row's sums
+// among the boxes across it, which is what makes the step cheap), then the
+// rows'. J - 1 rather than J: J is near 1, so the mean of squares less the
+// square of the mean keeps its digits (J spreads by a tenth or more where
+// a box breaks; a glassier box's deviation is held at the least anyway).
 inline float breakingScore(const float* box, int stride)
 {
     constexpr int side = 2 * kBreakingRadius + 1;
-    float sum = 0.0f;
-    for (int dz = 0; dz < side; ++dz)
-        for (int dx = 0; dx < side; ++dx)
-            sum += box[dz * stride + dx];
+    float sum = 0.0f, squares = 0.0f;
+    for (int dz = 0; dz < side; ++dz) {
+        float rowSum = 0.0f, rowSquares = 0.0f;
+        for (int dx = 0; dx < side; ++dx) {
+            const float d = box[dz * stride + dx] - 1.0f;
+            rowSum += d;
+            rowSquares += d * d;
+        }
+        sum += rowSum;
+        squares += rowSquares;
+    }
     constexpr float count = float(side * side);
     const float mean = sum / count;
-    float squares = 0.0f;
-    for (int dz = 0; dz < side; ++dz)
-        for (int dx = 0; dx < side; ++dx) {
-            const float d = box[dz * stride + dx] - mean;
-            squares += d * d;
-        }
-    const float deviation = std::max(std::sqrt(squares / count), kLeastBreakingDeviation);
-    return (box[kBreakingRadius * stride + kBreakingRadius] - mean) / deviation;
+    const float variance = std::max(squares / count - mean * mean, 0.0f);
+    const float deviation = std::max(std::sqrt(variance), kLeastBreakingDeviation);
+    return (box[kBreakingRadius * stride + kBreakingRadius] - 1.0f - mean) / deviation;
 }
 
 // Foam made at a score: none from `start` up, rising linearly below it to
