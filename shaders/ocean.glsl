@@ -10,8 +10,8 @@
 //   float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
 // for the bubbles a breaking drove under the surface there (0 for models without foam), and
 //   float oceanFoamAtPoint(vec2 restOffset_m, float heightScale)
-// for the foam's cover of the point itself, its texture at full detail
-// (the labels' foam classes: 0 or 1 but for a foam edge's antialiasing).
+// for whether foam covers the point itself, its texture at full detail
+// (the labels' foam classes: 1 or 0).
 // A model may also hand the water's pixels work its vertices did: it then
 // defines SWELL_OCEAN_VERTEX_DATA (a count of vec4s) and
 //   void oceanVertexData(vec2 restOffset_m, out vec4 data[SWELL_OCEAN_VERTEX_DATA])

@@ -131,10 +131,9 @@ void main()
     // counted none of the lace finer than a pixel: from 300 m most of the
     // sea's foam). The wake's (every surface source's) where it is the
     // larger share, else the waves' whitecaps.
-    const float kPointFootprint_m = 1e-3;
     float pointFoam = oceanFoamAtPoint(vRestPoint - gridCenter, vHeightScale);
 #if SWELL_SURFACE_SOURCES
-    float pointSourceFoam = foamLook(sourceFoamNoise, sourceBreakingFoamAmount, sources.w, vRestPoint, kPointFootprint_m).cover;
+    float pointSourceFoam = foamAtPoint(sourceFoamNoise, sourceBreakingFoamAmount, sources.w, vRestPoint);
 #else
     float pointSourceFoam = 0.0;
 #endif

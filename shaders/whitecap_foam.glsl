@@ -124,6 +124,42 @@ const float kBreakingRelief_m = 0.010;
 // whitecap calibration counts does not change as octaves fade. The
 // threshold's soft band is as wide as the texture changes over the pixel,
 // so a foam edge is antialiased rather than stepped.
+// The foam of an amount at a point: the share it covers, how much of it a
+// breaking's own, and the texture there made uniform on 0..1 (u: the foam
+// covers the point where u > 1 - share), with how fast u changes along the
+// surface, per metre, and the texture itself (foamTexture()).
+struct FoamField {
+    float share, breaking, u, rate;
+    vec4 texture;
+};
+
+FoamField foamField(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], float breakingFoamAmount, float amount, vec2 p_m,
+                    float footprint_m)
+{
+    FoamField f;
+    // The share foam covers (swell::foam::foamShare, its C++ twin).
+    f.breaking = clamp((amount - breakingFoamAmount) / max(1.0 - breakingFoamAmount, 1e-3), 0.0, 1.0);
+    f.share = mix(SWELL_FOAM_LACE_SHARE * amount, SWELL_FOAM_BREAKING_SHARE, f.breaking);
+    f.texture = foamTexture(foamNoise, p_m, footprint_m);
+    float uniform01 = 1.0 / (1.0 + exp(-1.702 * f.texture.x));
+    // The lace: the texture folded about its quantile `peak` (a skew tent,
+    // uniform01 / peak below it, (1 - uniform01) / (1 - peak) above), so
+    // foam follows the texture's contour at that quantile, a network of
+    // filaments around dark holes, rather than its highest values (blobs).
+    // The fold keeps u uniform on 0..1 (each u has two preimages, whose
+    // densities peak and 1 - peak add to 1), so foam covers the share it
+    // is given at every point sampled (the labels' rule) as over an area.
+    // A mix of the texture and its tent fold, as before, was not uniform,
+    // so a point was under foam less often than the share said.
+    float laced = smoothstep(0.1, 0.4, amount) * (1.0 - f.breaking);
+    float peak = 1.0 - 0.4 * laced; // 1: no fold; 0.6 at the most lace
+    bool below = uniform01 < peak;
+    f.u = below ? uniform01 / peak : (1.0 - uniform01) / max(1.0 - peak, 1e-6);
+    // The fold's slope times the texture's.
+    f.rate = uniform01 * (1.0 - uniform01) * 1.702 * length(f.texture.yz) / (below ? peak : max(1.0 - peak, 1e-6));
+    return f;
+}
+
 FoamLook foamLook(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], float breakingFoamAmount, float amount, vec2 p_m,
                   float footprint_m)
 {
@@ -138,32 +174,27 @@ FoamLook foamLook(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], float breakingFoam
         look.slope = vec2(0.0);
         return look;
     }
-    // The share foam covers (swell::foam::foamShare, its C++ twin).
-    float breaking = clamp((amount - breakingFoamAmount) / max(1.0 - breakingFoamAmount, 1e-3), 0.0, 1.0);
-    float share = mix(SWELL_FOAM_LACE_SHARE * amount, SWELL_FOAM_BREAKING_SHARE, breaking);
-    vec4 t = foamTexture(foamNoise, p_m, footprint_m);
-    float uniform01 = 1.0 / (1.0 + exp(-1.702 * t.x));
-    // The lace: the texture folded about its quantile `peak` (a skew tent,
-    // uniform01 / peak below it, (1 - uniform01) / (1 - peak) above), so
-    // foam follows the texture's contour at that quantile, a network of
-    // filaments around dark holes, rather than its highest values (blobs).
-    // The fold keeps u uniform on 0..1 (each u has two preimages, whose
-    // densities peak and 1 - peak add to 1), so foam covers the share it
-    // is given at every point sampled (the labels' rule) as over an area.
-    // A mix of the texture and its tent fold, as before, was not uniform,
-    // so a point was under foam less often than the share said.
-    float laced = smoothstep(0.1, 0.4, amount) * (1.0 - breaking);
-    float peak = 1.0 - 0.4 * laced; // 1: no fold; 0.6 at the most lace
-    bool below = uniform01 < peak;
-    float u = below ? uniform01 / peak : (1.0 - uniform01) / max(1.0 - peak, 1e-6);
-    // How fast u changes along the surface (the fold's slope times the texture's).
-    float rate = uniform01 * (1.0 - uniform01) * 1.702 * length(t.yz) / (below ? peak : max(1.0 - peak, 1e-6));
-    float band = 0.04 + rate * footprint_m;
+    FoamField f = foamField(foamNoise, breakingFoamAmount, amount, p_m, footprint_m);
+    float band = 0.04 + f.rate * footprint_m;
     // No foam covers nothing: below the band's width, the soft edge shrinks with the share.
-    float lace = smoothstep(1.0 - share - band, 1.0 - share + band, u) * min(1.0, share / band);
-    look.cover = mix(share, lace, t.w);
-    look.breaking = breaking;
-    look.slope = mix(kLaceRelief_m, kBreakingRelief_m, breaking) * t.w * t.yz;
+    float lace = smoothstep(1.0 - f.share - band, 1.0 - f.share + band, f.u) * min(1.0, f.share / band);
+    look.cover = mix(f.share, lace, f.texture.w);
+    look.breaking = f.breaking;
+    look.slope = mix(kLaceRelief_m, kBreakingRelief_m, f.breaking) * f.texture.w * f.texture.yz;
     return look;
+}
+
+// Whether foam of this amount covers the point p itself (1) or not (0):
+// the texture at full detail (a millimetre's footprint) against the share,
+// with no soft edge, so over an area the share of points under foam is the
+// share, however small (the look's soft edge, 0.04 of u wide, covers no
+// point wholly where the share is under 0.02: the faint foam of distant or
+// light seas). What the labels take (docs/LABELS.md).
+float foamAtPoint(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], float breakingFoamAmount, float amount, vec2 p_m)
+{
+    if (amount < SWELL_FOAM_LEAST_AMOUNT)
+        return 0.0;
+    FoamField f = foamField(foamNoise, breakingFoamAmount, amount, p_m, 1e-3);
+    return f.u > 1.0 - f.share ? 1.0 : 0.0;
 }
 #endif

@@ -308,17 +308,14 @@ float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
     return amount * amount;
 }
 
-// The foam's cover of the point itself: its amount read through the
-// B-spline at the finest level and the texture at every octave (a
-// millimetre's footprint: the finest octave, 3.4 cm, resolved), so a point
-// is under foam or not but on an edge's soft band. Over an area the share
-// of points under foam is the foam's covered share at any distance (the
-// texture is uniform on 0..1), which is what the whitecap calibration and
-// Monahan's cover count.
+// The foam's cover of the point itself (foamAtPoint(): 1 or 0), its amount
+// read through the B-spline at the finest level: over an area the share of
+// points under foam is the foam's covered share at any distance, which is
+// what the whitecap calibration and Monahan's cover count.
 float oceanFoamAtPoint(vec2 restOffset_m, float heightScale)
 {
     const float kPointFootprint_m = 1e-3;
     float amount = heightScale * worldFoam(restOffset_m, kPointFootprint_m, true);
-    return foamLook(foamNoise, breakingFoamAmount, amount, restOffset_m, kPointFootprint_m).cover;
+    return foamAtPoint(foamNoise, breakingFoamAmount, amount, restOffset_m);
 }
 #endif

@@ -15,9 +15,8 @@
 #define SWELL_LABEL_WAKE_FOAM 4
 #define SWELL_LABEL_TERRAIN 5
 #define SWELL_LABEL_FIRST_OBJECT_CLASS 16
-// A water pixel is labelled foam where foam covers at least this share of
-// the point its centre ray meets (the foam's texture at full detail there:
-// 0 or 1 but on a foam edge's antialiased band).
+// A water pixel is labelled foam where foam covers the point its centre ray
+// meets (the foam's texture at full detail there, 1 or 0): at least this.
 #define SWELL_LABEL_FOAM_COVER 0.5
 
 #endif
