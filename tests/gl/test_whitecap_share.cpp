@@ -11,8 +11,8 @@
 //   0.84: a long wave's compressed phase lowered J over whole faces;
 // - this build: J scored against its own 5 x 5 texels, each breaking
 //   spread over 3 x 3, the ramp found per sea so a still covers Monahan's
-//   share, labels by the point each pixel's ray meets: 0.20 to 2.09 and
-//   0.79 to 0.91 (the preset's camera, 10 m up, sees half its sea within
+//   share, labels by the point each pixel's ray meets: 0.21 to 2.10 and
+//   0.81 to 0.93 (the preset's camera, 10 m up, sees half its sea within
 //   22 m, where a few 5.6 m breakings and their trails come and go);
 // - the same without the spread and with a ramp six times softer: 0.67
 //   to 1.29 and 0.94 to 1.01, but no breaking is dense and from 300 m the
