@@ -133,13 +133,31 @@ struct FoamField {
     vec4 texture;
 };
 
+// How much of the foam of this amount a crest breaking now made, 0..1
+// (breakingFoamAmount: the amount of foam a second old).
+float foamBreaking(float amount, float breakingFoamAmount)
+{
+    return clamp((amount - breakingFoamAmount) / max(1.0 - breakingFoamAmount, 1e-3), 0.0, 1.0);
+}
+
+// The share of the water foam of this amount covers: a breaking's own
+// SWELL_FOAM_BREAKING_SHARE, older foam SWELL_FOAM_LACE_SHARE of its
+// amount, none below SWELL_FOAM_LEAST_AMOUNT. Its C++ twin,
+// swell::foam::foamShare, finds the whitecaps' breaking with it
+// (FoamShare.TheLooksShareIsItsCppTwins holds the two together).
+float foamShare(float amount, float breakingFoamAmount)
+{
+    if (amount < SWELL_FOAM_LEAST_AMOUNT)
+        return 0.0;
+    return mix(SWELL_FOAM_LACE_SHARE * amount, SWELL_FOAM_BREAKING_SHARE, foamBreaking(amount, breakingFoamAmount));
+}
+
 FoamField foamField(FoamNoise foamNoise[SWELL_FOAM_NOISE_MAPS], float breakingFoamAmount, float amount, vec2 p_m,
                     float footprint_m)
 {
     FoamField f;
-    // The share foam covers (swell::foam::foamShare, its C++ twin).
-    f.breaking = clamp((amount - breakingFoamAmount) / max(1.0 - breakingFoamAmount, 1e-3), 0.0, 1.0);
-    f.share = mix(SWELL_FOAM_LACE_SHARE * amount, SWELL_FOAM_BREAKING_SHARE, f.breaking);
+    f.breaking = foamBreaking(amount, breakingFoamAmount);
+    f.share = foamShare(amount, breakingFoamAmount);
     f.texture = foamTexture(foamNoise, p_m, footprint_m);
     float uniform01 = 1.0 / (1.0 + exp(-1.702 * f.texture.x));
     // The lace: the texture folded about its quantile `peak` (a skew tent,

@@ -112,7 +112,7 @@ void main()
     // A breaking whitens the water around it (swell/gpu/breaking.h): the
     // most foam made within the level's spread.
     ivec2 local = ivec2(gl_LocalInvocationID.xy);
-    int spread = level == 0 ? kSpread : 0; // swell::spectral::breakingSpreadAt
+    int spread = SWELL_FOAM_BREAKING_SPREAD_AT(level);
     float made = 0.0;
     for (int dz = -spread; dz <= spread; ++dz)
         for (int dx = -spread; dx <= spread; ++dx)

@@ -34,6 +34,7 @@
 // covered). Level 1's texels are SWELL_FOAM_LEVEL_RATIO times wider, as
 // wide as level 0's spread patch, so it spreads none.
 #define SWELL_FOAM_BREAKING_SPREAD 1
+#define SWELL_FOAM_BREAKING_SPREAD_AT(level) ((level) == 0 ? SWELL_FOAM_BREAKING_SPREAD : 0)
 // The least deviation a box's J is divided by: a glassy box, where J hardly
 // varies (below a hundredth), scores near 0 rather than amplifying the
 // float noise of its J (about 1e-5) into breaking.

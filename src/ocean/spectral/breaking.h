@@ -20,7 +20,7 @@ inline constexpr int kBreakingSpread = SWELL_FOAM_BREAKING_SPREAD;
 // How many texels each way a level's breaking spreads its foam (level 0's
 // kBreakingSpread, none at the coarser levels: swell/gpu/breaking.h says
 // why), as spectral_foam.comp spreads it.
-inline constexpr int breakingSpreadAt(int level) { return level == 0 ? kBreakingSpread : 0; }
+inline constexpr int breakingSpreadAt(int level) { return SWELL_FOAM_BREAKING_SPREAD_AT(level); }
 inline constexpr float kLeastBreakingDeviation = float(SWELL_FOAM_LEAST_DEVIATION);
 // The ramp's span, in score: narrow, so a breaking's own foam is full and
 // dense. At 0.35 the trade wind (9 m/s) found its cover in the ramp's rim
