@@ -132,6 +132,7 @@ int runBench(const BenchOptions& options)
     // errors are polled after each stage instead.
     gl::HeadlessContext context(false);
     Renderer renderer(scene);
+    RendererTesting::setWaterInTwoPasses(renderer, !options.waterOnePass);
     renderer.setRenderScale(options.outputSettings.renderScale);
     renderer.setTemporalResolve(options.temporal);
     renderer.setInteractive(options.interactive);
@@ -169,6 +170,7 @@ int runBench(const BenchOptions& options)
     for (const TermVariant& t : r.terms) {
         termRenderers.push_back(RendererTesting::create(scene, {}, t.omitted));
         termRenderers.back()->setRenderScale(options.outputSettings.renderScale);
+        RendererTesting::setWaterInTwoPasses(*termRenderers.back(), !options.waterOnePass);
         termRenderers.back()->setPassObserver(&recorder);
     }
     checkGl("creating the water term variants");

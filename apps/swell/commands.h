@@ -94,6 +94,10 @@ struct BenchOptions {
     // draws: no frame replays the foam's history, and on a software
     // rasteriser the spectral fields come from the CPU's FFTs.
     bool interactive = false;
+    // The water drawn in one pass, its grid shaded in its own fragments, in
+    // place of a visibility pass and one shading run per water pixel
+    // (docs/RENDERING.md "The water in two passes"), to compare the two.
+    bool waterOnePass = false;
     std::string scenePath; // the scene benchmarked; empty: the built-in default
 };
 int runBench(const BenchOptions& options);

@@ -246,6 +246,9 @@ int main(int argc, char** argv)
     benchCommand->add_flag("--interactive", bench.interactive,
                            "Draw as `swell view` does: no frame replays the foam's history, and on a software "
                            "rasteriser the spectral fields come from the CPU's FFTs");
+    benchCommand->add_flag("--water-one-pass", bench.waterOnePass,
+                           "Draw the water in one pass, its grid shaded in its own fragments, instead of a "
+                           "visibility pass and one shading run per water pixel (to compare the two)");
     benchCommand->add_option("scene", bench.scenePath,
                              "Scene file (TOML) or a preset's name, benchmarked along the same camera path; "
                              "the built-in default when omitted")
