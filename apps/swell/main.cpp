@@ -238,6 +238,10 @@ int main(int argc, char** argv)
     benchCommand->add_flag("--stages", bench.stages,
                            "Also time each stage of the wave model's GPU work inside the ocean pass (a glFinish "
                            "around each, which adds to the pass's time)");
+    benchCommand->add_flag("--labels", bench.labels,
+                           "Also draw the label pass after each frame, its arrays read back, as `swell dataset` "
+                           "draws a labelled sample: its own rows (labels, frame + labels) beside the frame, "
+                           "with the same counters");
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");
