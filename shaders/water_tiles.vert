@@ -16,6 +16,9 @@ void main()
 {
     uint tile = tiles[gl_VertexID];
     vec2 centre = (vec2(tile & 0xffffu, tile >> 16) + 0.5) * float(SWELL_WATER_TILE);
-    gl_Position = vec4(centre * viewportInvSize * 2.0 - 1.0, 0.0, 1.0);
+    // The pass's viewport widened to whole tiles (render/water_pass.cpp):
+    // a point whose centre lies outside the viewport is not drawn.
+    vec2 tiled = ceil(round(1.0 / viewportInvSize) / float(SWELL_WATER_TILE)) * float(SWELL_WATER_TILE);
+    gl_Position = vec4(centre / tiled * 2.0 - 1.0, 0.0, 1.0);
     gl_PointSize = float(SWELL_WATER_TILE);
 }

@@ -98,6 +98,13 @@ void MainPass::drawWaterInTwoPasses(RenderContext& context, ViewState& state, co
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SWELL_STORAGE_WATER_INDICES, resources.waterGrid.indexBuffer());
     glBindVertexArray(resources.emptyVao.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, state.waterVisibility.tiles());
+    // A point whose centre leaves the viewport is not drawn at all: the
+    // viewport is widened to whole tiles (the pixels keep their places: same
+    // corner, same pixel size) and the scissor keeps the pass's own.
+    const glm::ivec2 tiled = state.waterVisibility.tileGrid() * SWELL_WATER_TILE;
+    glViewport(pass.viewport.x, pass.viewport.y, tiled.x, tiled.y);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(pass.viewport.x, pass.viewport.y, pass.viewport.z, pass.viewport.w);
     glEnable(GL_PROGRAM_POINT_SIZE);
     glDrawArraysIndirect(GL_POINTS, nullptr);
     glDisable(GL_PROGRAM_POINT_SIZE);

@@ -75,9 +75,11 @@ TEST_F(WaterTwoPasses, ThePictureIsTheOnePassOnes)
     };
     // The paper's Gerstner sea, the spectral storm (spray), the view from
     // under the water, a boat's wake (surface sources), and the viewer's
-    // way: half scale, resolved over time.
-    const Case cases[] = {{"paper", 1.0, false},     {"storm", 1.0, false},    {"underwater", 1.0, false},
-                          {"under-way", 1.0, false}, {"trade-wind", 0.5, true}};
+    // way: half scale, resolved over time; and a size that is no whole
+    // number of the shading pass's tiles (58 x 32 at 0.3: the last
+    // column's and row's tiles reach past the viewport).
+    const Case cases[] = {{"paper", 1.0, false},     {"storm", 1.0, false},     {"underwater", 1.0, false},
+                          {"under-way", 1.0, false}, {"trade-wind", 0.5, true}, {"paper", 0.3, false}};
     for (const Case& c : cases) {
         const Scene scene = preset(c.preset);
         const Image one = renderWith(scene, false, kTime_s, kSize, c.scale, c.temporal);
