@@ -51,11 +51,9 @@ vec3 barycentricAt(mat3 e, vec2 ndc)
     return l / (l.x + l.y + l.z);
 }
 
-vec4 interpolated(uint corner[3], int slot, vec3 weights)
-{
-    return weights.x * cachedWaterVertices[corner[0]].v[slot] + weights.y * cachedWaterVertices[corner[1]].v[slot] +
-           weights.z * cachedWaterVertices[corner[2]].v[slot];
-}
+// Slot `slot` of the triangle's corners a, b, c at the weights.
+#define SWELL_INTERPOLATED(slot, weights) \
+    ((weights).x * a.v[slot] + (weights).y * b.v[slot] + (weights).z * c.v[slot])
 
 // Fills the inputs above for this pixel, and its depth. A pixel that shows
 // no water but shares its 2 x 2 quad with one that does takes that pixel's
@@ -73,12 +71,14 @@ void loadDeferredWater()
     if (id == 0u)
         discard;
     uint triangle = id - 1u;
-    uint corner[3] = uint[3](waterIndices[3u * triangle], waterIndices[3u * triangle + 1u],
-                             waterIndices[3u * triangle + 2u]);
-    vec3 c[3];
-    for (int k = 0; k < 3; ++k)
-        c[k] = (passViewProj * vec4(cachedWaterVertices[corner[k]].v[0].xyz, 1.0)).xyw;
-    mat3 edges = mat3(cross(c[1], c[2]), cross(c[2], c[0]), cross(c[0], c[1]));
+    // Each corner read once (what is never used is never read).
+    CachedWaterVertex a = cachedWaterVertices[waterIndices[3u * triangle]];
+    CachedWaterVertex b = cachedWaterVertices[waterIndices[3u * triangle + 1u]];
+    CachedWaterVertex c = cachedWaterVertices[waterIndices[3u * triangle + 2u]];
+    vec3 ca = (passViewProj * vec4(a.v[0].xyz, 1.0)).xyw;
+    vec3 cb = (passViewProj * vec4(b.v[0].xyz, 1.0)).xyw;
+    vec3 cc = (passViewProj * vec4(c.v[0].xyz, 1.0)).xyw;
+    mat3 edges = mat3(cross(cb, cc), cross(cc, ca), cross(ca, cb));
     // This pixel's centre, and the derivatives the rasteriser takes across
     // a 2 x 2 quad: from its first pixel to the next in x and in y.
     vec2 pixelNdc = 2.0 * viewportInvSize;
@@ -89,8 +89,8 @@ void loadDeferredWater()
     vec3 wx = barycentricAt(edges, quadNdc + vec2(pixelNdc.x, 0.0));
     vec3 wy = barycentricAt(edges, quadNdc + vec2(0.0, pixelNdc.y));
 
-    vec4 s0 = interpolated(corner, 0, w), s1 = interpolated(corner, 1, w);
-    vec4 s2 = interpolated(corner, 2, w), s3 = interpolated(corner, 3, w);
+    vec4 s0 = SWELL_INTERPOLATED(0, w), s1 = SWELL_INTERPOLATED(1, w);
+    vec4 s2 = SWELL_INTERPOLATED(2, w), s3 = SWELL_INTERPOLATED(3, w);
     vPosition = s0.xyz;
     vCellSize = s0.w;
     vNormal = s1.xyz;
@@ -99,17 +99,18 @@ void loadDeferredWater()
     vAlongZ = s3.xyz;
     vRestPoint = vec2(s2.w, s3.w);
 #if SWELL_SURFACE_SOURCES
-    vSourceSlope = interpolated(corner, 4, w).xy;
+    vSourceSlope = SWELL_INTERPOLATED(4, w).xy;
 #endif
 #ifdef SWELL_OCEAN_VERTEX_DATA
     for (int i = 0; i < SWELL_OCEAN_VERTEX_DATA; ++i)
-        vOceanData[i] = interpolated(corner, 4 + SWELL_WATER_CACHED_SOURCES + i, w);
+        vOceanData[i] = SWELL_INTERPOLATED(4 + SWELL_WATER_CACHED_SOURCES + i, w);
 #endif
-    // The rest point is slots 2.w and 3.w, the position's x and z 0.x and 0.z.
-    vec4 at0 = vec4(interpolated(corner, 2, w0).w, interpolated(corner, 3, w0).w, interpolated(corner, 0, w0).xz);
-    vec4 atX = vec4(interpolated(corner, 2, wx).w, interpolated(corner, 3, wx).w, interpolated(corner, 0, wx).xz);
-    vec4 atY = vec4(interpolated(corner, 2, wy).w, interpolated(corner, 3, wy).w, interpolated(corner, 0, wy).xz);
-    vec4 width = abs(atX - at0) + abs(atY - at0);
+    // The rest point (slots 2.w and 3.w) and the position's x and z (slot
+    // 0's) at the quad's three pixels.
+    mat3x4 restAndPosition = mat3x4(vec4(a.v[2].w, a.v[3].w, a.v[0].xz), vec4(b.v[2].w, b.v[3].w, b.v[0].xz),
+                                    vec4(c.v[2].w, c.v[3].w, c.v[0].xz));
+    vec4 at0 = restAndPosition * w0;
+    vec4 width = abs(restAndPosition * wx - at0) + abs(restAndPosition * wy - at0);
     deferredRestWidth = width.xy;
     deferredPositionWidth = width.zw;
     if (!water)
