@@ -12,7 +12,7 @@ struct Capability {
     bool fixed;        // set by setFixedState, never by a pass
     bool defaultValue; // GL's initial value (setFixedState's)
 };
-constexpr std::array<Capability, 32> kCapabilities = {{
+constexpr std::array<Capability, kSavedCapabilities> kCapabilities = {{
     {GL_BLEND, false, false},
     {GL_CULL_FACE, false, false},
     {GL_SCISSOR_TEST, false, false},
@@ -45,6 +45,9 @@ constexpr std::array<Capability, 32> kCapabilities = {{
     {GL_CLIP_DISTANCE5, true, false},
     {GL_CLIP_DISTANCE6, true, false},
     {GL_CLIP_DISTANCE7, true, false},
+    // Off: the points Swell draws without a size in their shaders (the
+    // water's shading pass turns it on for its tiles' points).
+    {GL_PROGRAM_POINT_SIZE, true, false},
 }};
 
 // The pixel-store parameters, with GL's defaults: Swell's uploads and

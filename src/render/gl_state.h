@@ -12,12 +12,16 @@
 #include <epoxy/gl.h>
 
 #include <array>
+#include <cstddef>
 
 namespace swell::detail {
 
 // The texture units whose sampler bindings Swell clears: every
 // SWELL_UNIT_* lies below it (swell/gpu/bindings.h).
 inline constexpr int kSwellTextureUnits = 24;
+
+// The capabilities Swell saves and puts back (kCapabilities in gl_state.cpp).
+inline constexpr std::size_t kSavedCapabilities = 33;
 
 class SavedGlState {
 public:
@@ -41,7 +45,7 @@ private:
     std::array<GLint, 6> blend_{}; // source and destination factors (rgb, alpha), equations (rgb, alpha)
     // The capabilities a pass turns on or off, and those it needs off
     // (kCapabilities in gl_state.cpp).
-    std::array<GLboolean, 32> enabled_{};
+    std::array<GLboolean, kSavedCapabilities> enabled_{};
     // The fixed state's values (setFixedState).
     std::array<GLdouble, 2> depthRange_{};
     GLfloat polygonOffsetFactor_ = 0.0f, polygonOffsetUnits_ = 0.0f, lineWidth_ = 1.0f, minSampleShading_ = 0.0f;

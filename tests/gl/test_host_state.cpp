@@ -154,6 +154,7 @@ public:
         glDisable(GL_DITHER);
         for (int i = 1; i < 8; ++i)
             glEnable(GLenum(GL_CLIP_DISTANCE0 + i));
+        glEnable(GL_PROGRAM_POINT_SIZE);
         // A sampler object on every unit: nearest, mirrored, its mip level biased.
         glCreateSamplers(1, &sampler_);
         glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -199,6 +200,7 @@ public:
         glEnable(GL_DITHER);
         for (int i = 1; i < 8; ++i)
             glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+        glDisable(GL_PROGRAM_POINT_SIZE);
         glBindSamplers(0, 32, nullptr);
         glDeleteSamplers(1, &sampler_);
         glActiveTexture(GL_TEXTURE0);
@@ -223,6 +225,7 @@ public:
         EXPECT_TRUE(glIsEnabled(GL_SAMPLE_SHADING));
         EXPECT_FALSE(glIsEnabled(GL_DITHER));
         EXPECT_TRUE(glIsEnabled(GL_CLIP_DISTANCE7));
+        EXPECT_TRUE(glIsEnabled(GL_PROGRAM_POINT_SIZE));
         std::array<GLdouble, 2> range{};
         glGetDoublev(GL_DEPTH_RANGE, range.data());
         EXPECT_NEAR(range[0], 0.2, 1e-6); // kept in single precision
