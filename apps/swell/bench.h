@@ -124,7 +124,9 @@ OffscreenTarget makeOffscreenTarget(glm::ivec2 size, GLenum colorFormat);
 
 // The floor: for each pass of the real frame, a target of the same size
 // cleared and covered by one full-screen triangle with a constant colour;
-// "water" is one more such triangle inside "main". What a frame costs at
+// "water" is one more such triangle inside "main" (two, "water visibility"
+// and "water shading", when the real frame draws its water in two passes).
+// What a frame costs at
 // the least on this machine at this size, shading aside. When the real
 // frame has a "present" step (anti-aliasing, a render scale), the floor's is
 // a plain copy of its main target into the output.
@@ -132,7 +134,7 @@ class FloorFrame {
 public:
     // Sizes: the reflection and refraction targets, the main pass (the
     // output's at render scale 1), and the output when `present`.
-    FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outputSize, bool present);
+    FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outputSize, bool present, bool waterInTwoPasses);
     ~FloorFrame();
     FloorFrame(const FloorFrame&) = delete;
     FloorFrame& operator=(const FloorFrame&) = delete;

@@ -234,6 +234,7 @@ struct FloorFrame::State {
     gl::VertexArray vao;
     OffscreenTarget reflection, refraction, waterline, output, presented;
     bool present = false;
+    bool waterInTwoPasses = false;
 
     // The state the renderer's passes set, then a clear.
     void bind(const OffscreenTarget& t) const
@@ -261,7 +262,8 @@ struct FloorFrame::State {
     }
 };
 
-FloorFrame::FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outputSize, bool present)
+FloorFrame::FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outputSize, bool present,
+                       bool waterInTwoPasses)
     : state_(std::make_unique<State>())
 {
     const gl::ShaderSources sources = gl::ShaderSources::fromMap({{"floor.vert", kFloorVertex}, {"floor.frag", kFloorFragment}});
@@ -272,6 +274,7 @@ FloorFrame::FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outp
     state_->waterline = makeOffscreenTarget(mainSize, GL_R8);
     state_->output = makeOffscreenTarget(mainSize, GL_RGBA8);
     state_->present = present;
+    state_->waterInTwoPasses = waterInTwoPasses;
     if (present)
         state_->presented = makeOffscreenTarget(outputSize, GL_RGBA8);
 }
@@ -316,7 +319,16 @@ void FloorFrame::render(PassObserver& observer, bool waterline)
     s.bind(s.output);
     s.triangle(0.5f);
     observer.beginPass("water");
-    s.triangle(0.0f);
+    if (s.waterInTwoPasses) {
+        observer.beginPass("water visibility");
+        s.triangle(0.0f);
+        observer.endPass("water visibility");
+        observer.beginPass("water shading");
+        s.triangle(-0.5f);
+        observer.endPass("water shading");
+    } else {
+        s.triangle(0.0f);
+    }
     observer.endPass("water");
     observer.endPass("main");
     if (s.present) {
