@@ -46,7 +46,10 @@ std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::d
     if (p.z <= 0.0)
         return std::nullopt;
     const LensDistortion lens{camera.k1, camera.k2, camera.k3, camera.p1, camera.p2};
-    const glm::dvec2 d = distort(lens, glm::dvec2(p.x / p.z, p.y / p.z));
+    const glm::dvec2 u(p.x / p.z, p.y / p.z);
+    if (!insideFold(lens, u))
+        return std::nullopt; // the lens shows another ray where distort() puts it
+    const glm::dvec2 d = distort(lens, u);
     return glm::dvec2(camera.fx_px * d.x + camera.cx_px, camera.fy_px * d.y + camera.cy_px);
 }
 
@@ -92,6 +95,31 @@ HorizonLine horizonOf(const CameraCalibration& camera)
             std::swap(h.from_px, h.to_px);
     }
     return h;
+}
+
+std::vector<glm::dvec2> horizonCurveOf(const CameraCalibration& c, const HorizonLine& horizon)
+{
+    std::vector<glm::dvec2> points;
+    const LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    const glm::dvec3 l = horizon.line;
+    if (lens.none() || (l.x == 0.0 && l.y == 0.0))
+        return points;
+    // Points along the pinhole line (its foot nearest the principal point,
+    // then every 4 px along it both ways), each through the lens.
+    const glm::dvec2 centre(c.cx_px, c.cy_px), along(-l.y, l.x);
+    const glm::dvec2 foot = centre - (glm::dot(glm::dvec2(l), centre) + l.z) * glm::dvec2(l.x, l.y);
+    const double reach = 2.0 * std::hypot(double(c.size.x), double(c.size.y));
+    for (double t = -reach; t <= reach; t += 4.0) {
+        const glm::dvec2 p = foot + t * along;
+        const glm::dvec2 u((p.x - c.cx_px) / c.fx_px, (p.y - c.cy_px) / c.fy_px);
+        if (!insideFold(lens, u))
+            continue; // past the fold this point of the line is shown nowhere
+        const glm::dvec2 d = distort(lens, u);
+        const glm::dvec2 q(d.x * c.fx_px + c.cx_px, d.y * c.fy_px + c.cy_px);
+        if (q.x >= 0.0 && q.y >= 0.0 && q.x <= c.size.x && q.y <= c.size.y)
+            points.push_back(q);
+    }
+    return points;
 }
 
 double horizonDip_rad(double eyeHeight_m)

@@ -99,20 +99,7 @@ FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, c
     out.objects = wide.objects;
     out.camera = c;
     out.horizon = horizonOf(c);
-    // The horizon's curve: points along the pinhole line, through the lens.
-    const glm::dvec3 l = out.horizon.line;
-    if (l.x != 0.0 || l.y != 0.0) {
-        const glm::dvec2 centre(c.cx_px, c.cy_px), along(-l.y, l.x);
-        const glm::dvec2 foot = centre - (glm::dot(glm::dvec2(l), centre) + l.z) * glm::dvec2(l.x, l.y);
-        const double reach = 2.0 * std::hypot(double(c.size.x), double(c.size.y));
-        for (double t = -reach; t <= reach; t += 4.0) {
-            const glm::dvec2 p = foot + t * along;
-            const glm::dvec2 d = distort(lens, {(p.x - c.cx_px) / c.fx_px, (p.y - c.cy_px) / c.fy_px});
-            const glm::dvec2 q(d.x * c.fx_px + c.cx_px, d.y * c.fy_px + c.cy_px);
-            if (q.x >= 0.0 && q.y >= 0.0 && q.x <= c.size.x && q.y <= c.size.y)
-                out.horizon.curve_px.push_back(q);
-        }
-    }
+    out.horizon.curve_px = horizonCurveOf(c, out.horizon);
     measureObjectBoxes(out);
     return out;
 }

@@ -42,7 +42,9 @@ struct SWELL_API CameraCalibration {
 SWELL_API CameraCalibration calibrationOf(const Camera& camera, glm::ivec2 size);
 
 // Where a world point (absolute, m) lands in the image, pixels, through the
-// lens's distortion when it has one; empty behind the camera.
+// lens's distortion when it has one; empty behind the camera, and empty
+// past the lens's fold (insideFold(), swell/dataset/sensor.h), where the
+// image shows another ray at the place the distortion gives.
 SWELL_API std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::dvec3 world_m);
 
 // The sea's horizon as it is drawn: the vanishing line of the sea-level
@@ -55,10 +57,13 @@ struct SWELL_API HorizonLine {
     glm::dvec2 from_px{0.0}, to_px{0.0}; // where it meets the image's border (when visible)
     // Through a distorting lens the horizon is a curve: points along it in
     // the image (every 4 px of the line), the line above holding for the
-    // undistorted (pinhole) image. Empty for a pinhole.
+    // undistorted (pinhole) image. Only the line's points inside the lens's
+    // fold, whose rays the image shows; empty for a pinhole.
     std::vector<glm::dvec2> curve_px;
 };
 SWELL_API HorizonLine horizonOf(const CameraCalibration& camera);
+// The curve_px of `horizon` (horizonOf(camera)) through the camera's lens.
+SWELL_API std::vector<glm::dvec2> horizonCurveOf(const CameraCalibration& camera, const HorizonLine& horizon);
 
 // The true horizon of a round Earth for an eye eyeHeight_m above the sea:
 // its geometric dip below the horizontal, rad, acos(R / (R + h)) with the
