@@ -146,6 +146,8 @@ std::vector<glm::dvec2> trueHorizonOf(const CameraCalibration& camera, double ey
 
 std::string objectClassOf(const SceneObject& object)
 {
+    if (!object.className.empty())
+        return object.className;
     if (object.path.starts_with(kBuiltinObjectPrefix))
         return object.path.substr(kBuiltinObjectPrefix.size());
     return std::filesystem::path(object.path).stem().string();

@@ -117,8 +117,9 @@ struct SWELL_API FrameLabels {
     std::vector<glm::dvec2> trueHorizon_px;
 };
 
-// A scene object's class: the built-in's name ("boat" for "builtin:boat"),
-// else its model file's name without folder or extension.
+// A scene object's class: its `class` key (SceneObject::className) when
+// given, else the built-in's name ("boat" for "builtin:boat"), else its
+// model file's name without folder or extension.
 SWELL_API std::string objectClassOf(const SceneObject& object);
 
 // The class names of a scene: the fixed ones, then each object class once.
