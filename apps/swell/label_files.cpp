@@ -124,6 +124,27 @@ void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
     writePngAtomically(preview, paths[4]);
 }
 
+namespace {
+
+// An object's pose (docs/LABELS.md, "objects"): in world axes, and its
+// model's axes in the camera's (OpenCV's: x right, y down, z forward).
+Json poseJson(const ObjectPose& p, const CameraCalibration& c)
+{
+    const glm::dmat4 cameraFromObject = c.cameraFromWorld * p.worldFromObject;
+    const glm::dvec3 inCamera(cameraFromObject[3]);
+    return {{"position_m", {p.position_m.x, p.position_m.y, p.position_m.z}},
+            {"yaw_deg", p.yaw_deg},
+            {"pitch_deg", p.pitch_deg},
+            {"roll_deg", p.roll_deg},
+            {"heading_deg", p.heading_deg},
+            {"scale", p.scale},
+            {"world_from_object", matrixJson(p.worldFromObject)},
+            {"camera_position_m", {inCamera.x, inCamera.y, inCamera.z}},
+            {"camera_from_object", matrixJson(cameraFromObject)}};
+}
+
+} // namespace
+
 Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
                const fs::path& colour)
 {
@@ -175,7 +196,8 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
                            {"class_id", o.semanticClass},
                            {"visible_pixels", o.visiblePixels},
                            {"box_px", {o.box_px.x, o.box_px.y, o.box_px.z, o.box_px.w}},
-                           {"box3d_m", box3d}});
+                           {"box3d_m", box3d},
+                           {"pose", poseJson(o.pose, c)}});
     }
     j["objects"] = objects;
     Json sea = {{"level_m", scene.sea.level_m}, {"significant_wave_height_m", significantHeight_m}};

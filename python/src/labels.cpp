@@ -118,6 +118,22 @@ void bindLabels(py::module_& m)
             },
             "(8, 3): the corners of its mesh's bounding box in its own axes, placed at its pose this frame; "
             "absolute world, m.")
+        .def_property_readonly(
+            "world_from_object", [](const ObjectLabel& o) { return toArray(o.pose.worldFromObject); },
+            "4x4, its model's points (m, its own axes) to absolute world: T(position_m) Ry(yaw) Rz(pitch) Rx(roll) "
+            "S(scale) (docs/LABELS.md).")
+        .def_property_readonly(
+            "position_m", [](const ObjectLabel& o) { return toArray(o.pose.position_m); },
+            "(3,): its model's origin, absolute world, m.")
+        .def_property_readonly("yaw_deg", [](const ObjectLabel& o) { return o.pose.yaw_deg; },
+                               "About the world's +y, as the scene's objects[].yaw_deg, degrees.")
+        .def_property_readonly("pitch_deg", [](const ObjectLabel& o) { return o.pose.pitch_deg; },
+                               "About its model's +z after the yaw (+x up for > 0), degrees.")
+        .def_property_readonly("roll_deg", [](const ObjectLabel& o) { return o.pose.roll_deg; },
+                               "About its model's +x after the pitch (+y towards +z for > 0), degrees.")
+        .def_property_readonly("heading_deg", [](const ObjectLabel& o) { return o.pose.heading_deg; },
+                               "The bearing of its model's +x axis, from -z towards +x, 0..360 degrees.")
+        .def_property_readonly("scale", [](const ObjectLabel& o) { return o.pose.scale; }, "Its uniform scale.")
         .def("__repr__", [](const ObjectLabel& o) {
             return "<swell.ObjectLabel " + std::to_string(o.instance) + " " + o.className + ", "
                    + std::to_string(o.visiblePixels) + " px>";

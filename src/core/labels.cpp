@@ -6,6 +6,7 @@
 #include "swell/gpu/label_classes.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -142,6 +143,34 @@ std::vector<glm::dvec2> trueHorizonOf(const CameraCalibration& camera, double ey
             points.push_back(*p);
     }
     return points;
+}
+
+ObjectPose objectPoseOf(const glm::dmat4& worldFromObject)
+{
+    ObjectPose p;
+    p.worldFromObject = worldFromObject;
+    p.position_m = glm::dvec3(worldFromObject[3]);
+    const glm::dmat3 scaled(worldFromObject);
+    p.scale = glm::length(scaled[0]);
+    const glm::dmat3 r = p.scale > 0.0 ? scaled / p.scale : glm::dmat3(1.0);
+    // R = Ry(yaw) Rz(pitch) Rx(roll): R e_x = (cos yaw cos pitch, sin pitch,
+    // -sin yaw cos pitch); the y components of R e_y and R e_z are
+    // cos pitch cos roll and -cos pitch sin roll.
+    p.pitch_deg = glm::degrees(std::asin(std::clamp(r[0].y, -1.0, 1.0)));
+    p.yaw_deg = glm::degrees(std::atan2(-r[0].z, r[0].x));
+    p.roll_deg = glm::degrees(std::atan2(-r[2].y, r[1].y));
+    // The bow's bearing on the sea: from -z towards +x.
+    const double bearing = glm::degrees(std::atan2(r[0].x, -r[0].z));
+    p.heading_deg = bearing < 0.0 ? bearing + 360.0 : bearing;
+    return p;
+}
+
+glm::dmat4 worldFromObjectOf(glm::dvec3 position_m, double yaw_deg, double pitch_deg, double roll_deg, double scale)
+{
+    const glm::dmat4 yaw = glm::rotate(glm::dmat4(1.0), glm::radians(yaw_deg), glm::dvec3(0, 1, 0));
+    const glm::dmat4 pitch = glm::rotate(glm::dmat4(1.0), glm::radians(pitch_deg), glm::dvec3(0, 0, 1));
+    const glm::dmat4 roll = glm::rotate(glm::dmat4(1.0), glm::radians(roll_deg), glm::dvec3(1, 0, 0));
+    return glm::translate(glm::dmat4(1.0), position_m) * yaw * pitch * roll * glm::scale(glm::dmat4(1.0), glm::dvec3(scale));
 }
 
 std::string objectClassOf(const SceneObject& object)

@@ -76,6 +76,35 @@ SWELL_API double horizonDip_rad(double eyeHeight_m);
 // falls in the image.
 SWELL_API std::vector<glm::dvec2> trueHorizonOf(const CameraCalibration& camera, double eyeHeight_m);
 
+// An object's pose: where its model's axes (m, as its glTF file or the
+// built-in gives them: the built-in boat's bow at +x, up +y) stand in the
+// world. Its rotation is R = Ry(yaw) Rz(pitch) Rx(roll), each right-handed
+// about the axis named: yaw about the world's +y (the sense of the scene's
+// objects[].yaw_deg, so a fixed object's yaw_deg is its own), then pitch
+// about the model's +z (+x, the bow, up for pitch > 0), then roll about the
+// model's +x (+y, the deck's up, towards +z for roll > 0: a boat heeling to
+// starboard, +z at its bow's right). world_from_object = T(position_m)
+// R S(scale).
+struct SWELL_API ObjectPose {
+    glm::dmat4 worldFromObject{1.0}; // model axes (m) to absolute world (m, y up), scale included
+    glm::dvec3 position_m{0.0};      // its model's origin, absolute world, m
+    double yaw_deg = 0.0;            // -180..180
+    double pitch_deg = 0.0;          // -90..90
+    double roll_deg = 0.0;           // -180..180
+    // The bearing of its model's +x axis (the built-in boat's bow) on the
+    // sea, measured as headings are (docs/SCENE.md: from -z, north, towards
+    // +x, east), 0..360: 90 - yaw_deg for an object that does not tilt.
+    double heading_deg = 0.0;
+    double scale = 1.0;
+};
+// The pose a model-to-world transform (a rotation, a uniform scale and a
+// translation, as the renderer places objects) describes.
+SWELL_API ObjectPose objectPoseOf(const glm::dmat4& worldFromObject);
+// The transform of a pose's position, angles and scale (the inverse of
+// objectPoseOf, up to the angles' ranges).
+SWELL_API glm::dmat4 worldFromObjectOf(glm::dvec3 position_m, double yaw_deg, double pitch_deg, double roll_deg,
+                                       double scale);
+
 // One scene object in a frame.
 struct SWELL_API ObjectLabel {
     std::uint16_t instance = 0;      // its value in FrameLabels::instance (its index in scene.objects + 1)
@@ -89,6 +118,8 @@ struct SWELL_API ObjectLabel {
     // Its mesh's bounding box in its own axes, placed at its pose: the
     // eight corners, absolute world, m.
     std::array<glm::dvec3, 8> box3d_m{};
+    // Its pose this frame (a floating body's heave, roll and pitch included).
+    ObjectPose pose;
 };
 
 struct SWELL_API FrameLabels {
