@@ -97,8 +97,9 @@ std::string npyBytes(const void* data, std::size_t bytes, const std::string& des
 
 std::vector<fs::path> labelFilePaths(const fs::path& colour)
 {
-    return {besides(colour, ".range.npy"), besides(colour, ".normal.npy"), besides(colour, ".semantic.npy"),
-            besides(colour, ".instance.npy"), besides(colour, ".labels.png"), besides(colour, ".json")};
+    return {besides(colour, ".range.npy"),    besides(colour, ".normal.npy"), besides(colour, ".semantic.npy"),
+            besides(colour, ".instance.npy"), besides(colour, ".depth.npy"),  besides(colour, ".labels.png"),
+            besides(colour, ".json")};
 }
 
 void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
@@ -111,6 +112,8 @@ void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
     writeFileAtomically(paths[1], npyBytes(labels.normal.data(), pixels * sizeof(glm::vec3), "<f4", {h, w, 3}));
     writeFileAtomically(paths[2], npyBytes(labels.semantic.data(), pixels * 2, "<u2", {h, w}));
     writeFileAtomically(paths[3], npyBytes(labels.instance.data(), pixels * 2, "<u2", {h, w}));
+    const std::vector<float> depth = zDepthOf(labels);
+    writeFileAtomically(paths[4], npyBytes(depth.data(), pixels * sizeof(float), "<f4", {h, w}));
 
     Image preview;
     preview.width = w;
@@ -121,7 +124,7 @@ void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
         std::memcpy(&preview.rgba[4 * i], c.data(), 3);
         preview.rgba[4 * i + 3] = 255;
     }
-    writePngAtomically(preview, paths[4]);
+    writePngAtomically(preview, paths[5]);
 }
 
 namespace {
@@ -222,7 +225,7 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
 
 void writeFrameJson(const Json& json, const fs::path& colour)
 {
-    writeFileAtomically(labelFilePaths(colour)[5], json.dump(2) + "\n");
+    writeFileAtomically(labelFilePaths(colour).back(), json.dump(2) + "\n");
 }
 
 void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,

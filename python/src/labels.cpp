@@ -24,6 +24,7 @@ PyLabels toPython(FrameLabels&& labels)
     PyLabels out;
     out.size = labels.size;
     const std::vector<py::ssize_t> shape = imageShape(labels.size);
+    out.depth_m = arrayOwning<float>(zDepthOf(labels), shape);
     out.range_m = arrayOwning<float>(std::move(labels.range_m), shape);
     out.normal = arrayOwning<float>(std::move(labels.normal), {labels.size.y, labels.size.x, 3});
     out.semantic = arrayOwning<std::uint16_t>(std::move(labels.semantic), shape);
@@ -146,6 +147,9 @@ void bindLabels(py::module_& m)
                                "(width, height), pixels.")
         .def_readonly("range_m", &PyLabels::range_m,
                       "float32 (H, W): metres from the eye along each pixel's ray to what it shows; inf for the sky.")
+        .def_readonly("depth_m", &PyLabels::depth_m,
+                      "float32 (H, W): z-depth, metres along the camera's optical axis to the point range_m measures; "
+                      "inf for the sky.")
         .def_readonly("normal", &PyLabels::normal, "float32 (H, W, 3): the unit surface normal, world axes; 0 for the sky.")
         .def_readonly("semantic", &PyLabels::semantic,
                       "uint16 (H, W): the class id (classes[id]): 1 sky, 2 water, 3 whitecap foam, 4 wake foam, "

@@ -173,6 +173,22 @@ glm::dmat4 worldFromObjectOf(glm::dvec3 position_m, double yaw_deg, double pitch
     return glm::translate(glm::dmat4(1.0), position_m) * yaw * pitch * roll * glm::scale(glm::dmat4(1.0), glm::dvec3(scale));
 }
 
+std::vector<float> zDepthOf(const FrameLabels& labels)
+{
+    const CameraCalibration& c = labels.camera;
+    const LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    std::vector<float> depth(labels.range_m.size());
+    for (int y = 0; y < labels.size.y; ++y)
+        for (int x = 0; x < labels.size.x; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(labels.size.x) + std::size_t(x);
+            if (i >= depth.size())
+                return depth;
+            const glm::dvec2 u = undistort(lens, {(x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px});
+            depth[i] = float(double(labels.range_m[i]) / std::sqrt(1.0 + glm::dot(u, u)));
+        }
+    return depth;
+}
+
 std::string objectClassOf(const SceneObject& object)
 {
     if (!object.className.empty())

@@ -53,7 +53,8 @@ class SameAsTheExecutable(unittest.TestCase):
 
     def test_the_label_arrays_are_the_executables(self):
         h, w = SIZE[1], SIZE[0]
-        expected = {"range_m": ("range", np.float32, (h, w)), "normal": ("normal", np.float32, (h, w, 3)),
+        expected = {"range_m": ("range", np.float32, (h, w)), "depth_m": ("depth", np.float32, (h, w)),
+                    "normal": ("normal", np.float32, (h, w, 3)),
                     "semantic": ("semantic", np.uint16, (h, w)), "instance": ("instance", np.uint16, (h, w))}
         for name, (suffix, dtype, shape) in expected.items():
             ours = getattr(self.labels, name)

@@ -148,6 +148,13 @@ struct SWELL_API FrameLabels {
     std::vector<glm::dvec2> trueHorizon_px;
 };
 
+// Each pixel's z-depth, m: the depth along the camera's optical axis
+// (OpenCV's camera z) of the point its range measures, range / sqrt(1 + x^2
+// + y^2) with (x, y) the normalised place of the pixel's centre ray
+// (undistorted through the calibration's lens); +infinity where the range
+// is. Rows top first, as range_m.
+SWELL_API std::vector<float> zDepthOf(const FrameLabels& labels);
+
 // A scene object's class: its `class` key (SceneObject::className) when
 // given, else the built-in's name ("boat" for "builtin:boat"), else its
 // model file's name without folder or extension.
