@@ -4,7 +4,7 @@
 // One dispatch writes up to five levels: each workgroup reduces a 32 x 32
 // block of the source in shared memory, so a 256^2 chain takes two
 // dispatches instead of a draw or blit per level and layer, which measured
-// 0.18 to 0.36 ms a chain on an NVIDIA H200 (docs/PERFORMANCE.md).
+// 0.18 to 0.36 ms a chain on an NVIDIA H200 (docs/design/performance-log.md).
 #include "swell/gpu/bindings.h"
 
 #define SIDE (1 << (SWELL_DOWNSAMPLE_LEVELS - 1))

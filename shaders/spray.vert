@@ -9,7 +9,7 @@
 // view's centre: its triangles have no area and cover no pixel, and need
 // no clipping (a vertex behind the eye would send all its neighbours in
 // the draw through a software rasteriser's slow clipping path). (A geometry shader
-// emitted these ribbons once: docs/PERFORMANCE.md, "The spray without a
+// emitted these ribbons once: docs/design/performance-log.md, "The spray without a
 // geometry shader".)
 #include "swell/gpu/spray.h"
 #include "frame.glsl"

@@ -24,6 +24,14 @@
 #include "surface_sources.glsl"
 #endif
 
+#ifndef SWELL_WATER_DEFERRED
+#error "SWELL_WATER_DEFERRED is given by the program's flags (src/render/program_flags.h)"
+#endif
+#if SWELL_WATER_DEFERRED
+// The shading pass of a frame whose water was drawn in two (render/water_visibility.h):
+// the same inputs, read from the vertices the visibility pass kept.
+#include "water_deferred.glsl"
+#else
 in vec3 vPosition;
 in vec3 vNormal;
 in vec3 vAlongX;
@@ -37,6 +45,7 @@ in vec2 vSourceSlope;
 #ifdef SWELL_OCEAN_VERTEX_DATA
 in vec4 vOceanData[SWELL_OCEAN_VERTEX_DATA];
 #endif
+#endif
 #if SWELL_LABEL_PASS
 #define SWELL_LABEL_RAYS
 #include "labels.glsl"
@@ -49,11 +58,21 @@ out vec4 fragColor;
 
 void main()
 {
+    // The screen derivatives the footprints below take, in uniform control
+    // flow: the rasteriser's, or the shading pass's from the triangle.
+#if SWELL_WATER_DEFERRED
+    loadDeferredWater();
+    vec2 restWidth = deferredRestWidth;
+    vec2 positionWidth = deferredPositionWidth;
+#else
+    vec2 restWidth = fwidth(vRestPoint);
+    vec2 positionWidth = fwidth(vPosition.xz);
+#endif
     // The sun's direct light here: the cloud layer's shadow shades it
     // (cloud_shadow.glsl), averaged over the pixel's footprint on the
     // water (taken here, in uniform control flow, for its derivatives).
 #if SWELL_CLOUD_SHADOWS
-    vec2 shadowFootprint = fwidth(vPosition.xz) * footprintScale;
+    vec2 shadowFootprint = positionWidth * footprintScale;
     float cloudSun = cloudShadowAt(vPosition, max(shadowFootprint.x, shadowFootprint.y));
     vec3 directSun = sunColor * (sunIntensity * cloudSun);
 #else
@@ -65,7 +84,7 @@ void main()
     // the water instead of the grid spacing: the model adds to the grid's
     // interpolated derivatives what the two footprints see differently.
 #if SWELL_HAS_TERM(SWELL_TERM_FILTERING)
-    vec2 footprint = fwidth(vRestPoint) * footprintScale;
+    vec2 footprint = restWidth * footprintScale;
     float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
 #else
     float pixelSize_m = 1e-3; // every wave, however small the pixel sees it
@@ -107,7 +126,7 @@ void main()
     // bright where it breaks now, thinning into lace as it ages, with the
     // same relief; its lattices are anchored to the world at the render
     // origin, where vRestPoint is measured from.
-    vec2 sourceFootprint = fwidth(vRestPoint) * footprintScale;
+    vec2 sourceFootprint = restWidth * footprintScale;
     FoamLook sourceLook = foamLook(sourceFoamNoise, sourceBreakingFoamAmount, sources.w, vRestPoint,
                                    max(max(sourceFootprint.x, sourceFootprint.y), 1e-3));
     float sourceFoam = sourceLook.cover;
@@ -212,7 +231,7 @@ void main()
     const float kBubbleDepth_m = 0.6;
     vec3 underRay = refract(-v, n, 1.0 / 1.333);
     vec2 bubblePoint = vRestPoint - gridCenter + underRay.xz / max(-underRay.y, 0.2) * kBubbleDepth_m;
-    vec2 bubbleFootprint = fwidth(vRestPoint) * footprintScale;
+    vec2 bubbleFootprint = restWidth * footprintScale;
     float bubbles = oceanFoamBelow(bubblePoint, max(1.5, max(bubbleFootprint.x, bubbleFootprint.y)));
 #if SWELL_SURFACE_SOURCES
     // And those a source's breaking drove down (the wake's stern wash), the

@@ -1,5 +1,13 @@
 // Water surface: grid vertex from gl_VertexID, displaced by the ocean surface in world space.
+// In the water's visibility pass (SWELL_WATER_CACHES_VERTICES) each vertex
+// is also kept for the shading pass (water_vertex_cache.glsl).
 #include "water_vertex.glsl"
+#ifndef SWELL_WATER_CACHES_VERTICES
+#error "SWELL_WATER_CACHES_VERTICES is given by the program's flags (src/render/program_flags.h)"
+#endif
+#if SWELL_WATER_CACHES_VERTICES
+#include "water_vertex_cache.glsl"
+#endif
 
 out vec3 vPosition;    // displaced position relative to the render origin, m
 out vec3 vNormal;
@@ -34,6 +42,21 @@ void main()
     vec4 oceanData[SWELL_OCEAN_VERTEX_DATA];
     oceanVertexData(w.rest - gridCenter, oceanData);
     vOceanData = oceanData;
+#endif
+#if SWELL_WATER_CACHES_VERTICES
+    CachedWaterVertex cached;
+    cached.v[0] = vec4(vPosition, vCellSize);
+    cached.v[1] = vec4(vNormal, vHeightScale);
+    cached.v[2] = vec4(vAlongX, vRestPoint.x);
+    cached.v[3] = vec4(vAlongZ, vRestPoint.y);
+#if SWELL_SURFACE_SOURCES
+    cached.v[4] = vec4(vSourceSlope, 0.0, 0.0);
+#endif
+#ifdef SWELL_OCEAN_VERTEX_DATA
+    for (int i = 0; i < SWELL_OCEAN_VERTEX_DATA; ++i)
+        cached.v[4 + SWELL_WATER_CACHED_SOURCES + i] = oceanData[i];
+#endif
+    cachedWaterVertices[gl_VertexID] = cached;
 #endif
     gl_Position = passViewProj * vec4(vPosition, 1.0);
 }

@@ -220,6 +220,9 @@ struct TermVariant {
 // Each term alone, then all of them (what the water costs shaded by nothing).
 std::vector<TermVariant> termVariants();
 
+// The pass --labels records after each frame (Renderer::renderLabels).
+inline constexpr const char* kLabelsPass = "labels";
+
 struct Results {
     Machine machine;
     glm::ivec2 size{0}, passSize{0};
@@ -229,6 +232,9 @@ struct Results {
     double frameStep_s = 0.0;
     bool pipelineStatistics = false, gpuTimers = false;
     std::vector<FrameSample> real, floor;
+    // With --labels: each measured frame's label pass, recorded apart right
+    // after it (one pass, "labels"); empty otherwise.
+    std::vector<FrameSample> labels;
     std::vector<double> realTimes_s;     // simulation time of each measured frame
     std::vector<Camera> realCameras;     // camera of each measured frame
     std::vector<LodSample> lod;

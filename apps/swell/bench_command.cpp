@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <unistd.h>
 
 namespace swell::app {
@@ -132,6 +133,7 @@ int runBench(const BenchOptions& options)
     // errors are polled after each stage instead.
     gl::HeadlessContext context(false);
     Renderer renderer(scene);
+    RendererTesting::setWaterInTwoPasses(renderer, !options.waterOnePass);
     renderer.setRenderScale(options.outputSettings.renderScale);
     renderer.setTemporalResolve(options.temporal);
     renderer.setInteractive(options.interactive);
@@ -144,11 +146,12 @@ int runBench(const BenchOptions& options)
     const glm::ivec2 drawSize = scaledFrameSize(r.size, options.outputSettings.renderScale);
     r.passSize = glm::max(glm::ivec2(glm::dvec2(drawSize) * scene.reflection.resolutionScale), glm::ivec2(1));
     r.surface = renderer.waveModel().summary();
-    r.output = fmt::format("antialiasing {}, render scale {}{}{}",
+    r.output = fmt::format("antialiasing {}, render scale {}{}{}{}",
                            options.temporal ? std::string("temporal resolve")
                                             : std::string(findParameter("antialiasing")->choices[size_t(scene.antialiasing)]),
                            options.outputSettings.renderScale, options.still ? ", the scene's camera (--still)" : "",
-                           options.interactive ? ", interactive (--interactive)" : "");
+                           options.interactive ? ", interactive (--interactive)" : "",
+                           options.labels ? ", the label pass after each frame (--labels)" : "");
     r.gridCells = int(std::lround(std::sqrt(double(RendererTesting::waterVertexCount(renderer))))) - 1;
     r.frames = options.frames;
     r.warmup = options.warmup;
@@ -169,6 +172,7 @@ int runBench(const BenchOptions& options)
     for (const TermVariant& t : r.terms) {
         termRenderers.push_back(RendererTesting::create(scene, {}, t.omitted));
         termRenderers.back()->setRenderScale(options.outputSettings.renderScale);
+        RendererTesting::setWaterInTwoPasses(*termRenderers.back(), !options.waterOnePass);
         termRenderers.back()->setPassObserver(&recorder);
     }
     checkGl("creating the water term variants");
@@ -189,17 +193,34 @@ int runBench(const BenchOptions& options)
                                             : pathCamera(scene.camera, measured ? double(k) / double(options.frames) : 0.0);
         FrameSample frame = recorder.recordFrame([&] { renderer.render(camera, t, r.size, output.framebuffer.id()); });
         checkGl("rendering a frame");
+        // The frame's own counts, before a label pass adds its view's
+        // culling and draws to them.
+        const FrameCounters counters = renderer.counters();
+        // The label pass before the bodies' worker starts on the next frame,
+        // so that it does not share the cores with it (`swell dataset` has no
+        // next frame).
+        std::optional<FrameSample> labels;
+        if (options.labels) {
+            labels = recorder.recordFrame([&] {
+                recorder.beginPass(kLabelsPass);
+                (void)renderer.renderLabels(camera, r.size);
+                recorder.endPass(kLabelsPass);
+            });
+            checkGl("drawing the label pass");
+        }
         // As a video does (`swell render`): the bodies step towards the
         // next frame on their own thread meanwhile (Renderer::anticipate).
         renderer.anticipate(double(i + 1) * kFrameStep_s);
         if (measured) {
             r.real.push_back(std::move(frame));
+            if (labels)
+                r.labels.push_back(std::move(*labels));
             r.realTimes_s.push_back(t);
-            r.bodySteps.push_back(renderer.counters().bodySteps);
-            r.wakeSteps.push_back(renderer.counters().wakeSteps);
-            r.wakeSteps_ms.push_back(renderer.counters().wakeSteps_ms);
-            r.counters.push_back(renderer.counters());
-            r.floatingBodies = renderer.counters().floatingBodies;
+            r.bodySteps.push_back(counters.bodySteps);
+            r.wakeSteps.push_back(counters.wakeSteps);
+            r.wakeSteps_ms.push_back(counters.wakeSteps_ms);
+            r.counters.push_back(counters);
+            r.floatingBodies = counters.floatingBodies;
             r.realCameras.push_back(camera);
         }
         for (size_t v = 0; v < termRenderers.size(); ++v) {

@@ -174,6 +174,16 @@ PassCounters passTotal(const std::vector<FrameSample>& frames, const std::string
 
 double ratio(double real, double floor) { return floor > 0.0 ? real / floor : 0.0; }
 
+// With --labels, each measured frame's labelled sample as `swell dataset`
+// draws one: the colour frame and its label pass, summed frame by frame.
+std::vector<double> labelledSampleSeries(const Results& r, double FrameSample::*field)
+{
+    std::vector<double> out;
+    for (size_t i = 0; i < r.real.size() && i < r.labels.size(); ++i)
+        out.push_back(r.real[i].*field + r.labels[i].*field);
+    return out;
+}
+
 // The project's goals, in one place for the table and the JSON file.
 constexpr double kGoalFrameRatio = 2.0;        // real/floor of the whole frame, at most
 constexpr double kGoalInFrustum = 0.80;        // share of water triangles in the frustum, at least
@@ -273,8 +283,18 @@ void printReport(const Results& r)
     }
     row("frame", frameSeries(r.real, &FrameSample::wall_ms), frameSeries(r.real, &FrameSample::cpu_ms),
         frameSeries(r.floor, &FrameSample::wall_ms), frameSeries(r.floor, &FrameSample::cpu_ms), {});
+    if (!r.labels.empty()) {
+        // No floor: the floor frame has no label pass.
+        row(kLabelsPass, passSeries(r.labels, kLabelsPass, &PassSample::wall_ms),
+            passSeries(r.labels, kLabelsPass, &PassSample::cpu_ms), {}, {}, passGpu(r.labels, kLabelsPass));
+        row("frame + labels", labelledSampleSeries(r, &FrameSample::wall_ms),
+            labelledSampleSeries(r, &FrameSample::cpu_ms), {}, {}, {});
+    }
     std::printf("  (an inner pass is part of the pass above it; the floor is each pass's target cleared and covered\n"
                 "   by one full-screen triangle of a constant colour)\n");
+    if (!r.labels.empty())
+        std::printf("  (--labels: \"labels\" is the label pass drawn after each frame for its camera and time, its\n"
+                    "   arrays read back, apart from the frame; \"frame + labels\" their sum a frame: a labelled sample)\n");
     long long steps = 0;
     for (long long s : r.bodySteps)
         steps += s;
@@ -308,14 +328,16 @@ void printReport(const Results& r)
         std::printf("  (no GL_ARB_pipeline_statistics_query: samples passed only)\n");
     std::printf("  %-16s %14s %14s %12s %12s %12s %14s\n", "pass", "VS invocations", "FS invocations", "primitives",
                 "clip in", "clip out", "samples passed");
-    for (const std::string& name : names) {
-        const PassCounters c = passTotal(r.real, name);
-        const std::string label = std::string(size_t(passDepth(r.real, name)) * 2, ' ') + name;
+    auto counterRow = [](const std::string& label, const PassCounters& c) {
         std::printf("  %-16s %14llu %14llu %12llu %12llu %12llu %14llu\n", label.c_str(),
                     (unsigned long long)c.vertexShaderInvocations, (unsigned long long)c.fragmentShaderInvocations,
                     (unsigned long long)c.primitivesSubmitted, (unsigned long long)c.clippingInputPrimitives,
                     (unsigned long long)c.clippingOutputPrimitives, (unsigned long long)c.samplesPassed);
-    }
+    };
+    for (const std::string& name : names)
+        counterRow(std::string(size_t(passDepth(r.real, name)) * 2, ' ') + name, passTotal(r.real, name));
+    if (!r.labels.empty())
+        counterRow(kLabelsPass, passTotal(r.labels, kLabelsPass));
     printGpuWork(r);
 
     if (!r.lod.empty()) {
@@ -421,6 +443,21 @@ void writeJson(const Results& r, const std::string& path)
                   {"real_over_floor", ratio(frameReal.median, floorCost(frameFloor))},
                   {"real_over_floor_cpu", ratio(frameRealCpu.median, floorCost(frameFloorCpu))}};
 
+    // --labels: the label pass (null without), and the labelled sample it
+    // makes with the colour frame.
+    if (r.labels.empty()) {
+        j["labels"] = nullptr;
+    } else {
+        const std::vector<double> gpu = passGpu(r.labels, kLabelsPass);
+        j["labels"] = {{"wall_ms", summaryJson(summarize(passSeries(r.labels, kLabelsPass, &PassSample::wall_ms)))},
+                       {"cpu_ms", summaryJson(summarize(passSeries(r.labels, kLabelsPass, &PassSample::cpu_ms)))},
+                       {"gpu_ms", gpu.empty() ? Json(nullptr) : summaryJson(summarize(gpu))},
+                       {"counters_total", countersJson(passTotal(r.labels, kLabelsPass), r.pipelineStatistics)},
+                       {"labelled_sample",
+                        {{"wall_ms", summaryJson(summarize(labelledSampleSeries(r, &FrameSample::wall_ms)))},
+                         {"cpu_ms", summaryJson(summarize(labelledSampleSeries(r, &FrameSample::cpu_ms)))}}}};
+    }
+
     Json lod = Json::array();
     for (const LodSample& s : r.lod) {
         Json sample;
@@ -479,6 +516,12 @@ void writeJson(const Results& r, const std::string& path)
                                    {"gpu_ms", p.gpu_ms ? Json(*p.gpu_ms) : Json(nullptr)},
                                    {"counters", countersJson(p.counters, r.pipelineStatistics)}};
         frame["passes"] = std::move(framePasses);
+        if (i < r.labels.size())
+            if (const PassSample* p = r.labels[i].find(kLabelsPass))
+                frame["labels"] = {{"wall_ms", p->wall_ms},
+                                   {"cpu_ms", p->cpu_ms},
+                                   {"gpu_ms", p->gpu_ms ? Json(*p->gpu_ms) : Json(nullptr)},
+                                   {"counters", countersJson(p->counters, r.pipelineStatistics)}};
         if (i < r.counters.size()) {
             frame["simulation_cpu_ms"] = frameSimulationCpuJson(r.counters[i]);
             frame["gpu_work"] = frameGpuWorkJson(r.counters[i]);

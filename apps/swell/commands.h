@@ -83,6 +83,10 @@ struct BenchOptions {
     std::string jsonPath;  // also write the results as JSON here
     bool stages = false;   // also time the wave model's stages inside the "ocean" pass
     bool terms = false;    // also measure the water with each shading term left out, and each reflection lookup
+    // Also draw the label pass after each frame (Renderer::renderLabels, its
+    // arrays read back), as `swell dataset` draws a labelled sample, and
+    // report it beside the colour frame.
+    bool labels = false;
     OutputSettings outputSettings;
     // Every frame from the scene's own camera (the view `swell view` opens
     // on) instead of the camera path, to compare with the viewer.
@@ -94,6 +98,10 @@ struct BenchOptions {
     // draws: no frame replays the foam's history, and on a software
     // rasteriser the spectral fields come from the CPU's FFTs.
     bool interactive = false;
+    // The water drawn in one pass, its grid shaded in its own fragments, in
+    // place of a visibility pass and one shading run per water pixel
+    // (docs/RENDERING.md "The water in two passes"), to compare the two.
+    bool waterOnePass = false;
     std::string scenePath; // the scene benchmarked; empty: the built-in default
 };
 int runBench(const BenchOptions& options);

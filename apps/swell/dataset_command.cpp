@@ -32,8 +32,11 @@
 #include <algorithm>
 #include <atomic>
 #include <charconv>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <ctime>
+#include <sched.h>
 
 namespace swell::app {
 
@@ -219,10 +222,45 @@ void renderSamples(const fs::path& out, const Sweep& sweep, const Scene& base, c
     progress.finish();
 }
 
+// The cores this process may run on (its CPU affinity), which a software
+// rasteriser's threads share: the run's cores.
+int coresOfThisProcess()
+{
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (::sched_getaffinity(0, sizeof set, &set) != 0)
+        return 1;
+    return std::max(1, CPU_COUNT(&set));
+}
+
+double processCpu_s()
+{
+    timespec t{};
+    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// What a core of a cluster renders: this run's samples over its wall time
+// (from its start, the checks included, to its last sample written) and
+// over its cores; then the same samples over the process's CPU time (all
+// threads), which another program's load on the machine moves far less.
+void reportSamplesPerCore(int rendered, std::chrono::steady_clock::time_point start)
+{
+    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int cores = coresOfThisProcess();
+    const double cpu_s = processCpu_s();
+    std::fprintf(stderr,
+                 "swell: %d samples rendered in %.2f s on %d cores: %.4f samples per second per core "
+                 "(samples / wall time / cores); %.2f s of CPU: %.4f samples per CPU second\n",
+                 rendered, wall_s, cores, double(rendered) / wall_s / double(cores), cpu_s,
+                 cpu_s > 0.0 ? double(rendered) / cpu_s : 0.0);
+}
+
 } // namespace
 
 int runDataset(const DatasetOptions& options)
 {
+    const auto start = std::chrono::steady_clock::now();
     // The whole request, checked before anything is made.
     const auto [shard, shards] = parseShard(options.shard);
     if (options.out.empty())
@@ -263,6 +301,7 @@ int runDataset(const DatasetOptions& options)
     if (!todo.empty()) {
         fs::remove(out / "coco.json", error); // it describes samples that are not all there
         renderSamples(out, sweep, base, todo);
+        reportSamplesPerCore(int(todo.size()), start);
     }
 
     // Every sample of every shard done: the dataset's COCO file.

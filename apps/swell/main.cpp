@@ -239,6 +239,10 @@ int main(int argc, char** argv)
     benchCommand->add_flag("--stages", bench.stages,
                            "Also time each stage of the wave model's GPU work inside the ocean pass (a glFinish "
                            "around each, which adds to the pass's time)");
+    benchCommand->add_flag("--labels", bench.labels,
+                           "Also draw the label pass after each frame, its arrays read back, as `swell dataset` "
+                           "draws a labelled sample: its own rows (labels, frame + labels) beside the frame, "
+                           "with the same counters");
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");
@@ -247,6 +251,9 @@ int main(int argc, char** argv)
     benchCommand->add_flag("--interactive", bench.interactive,
                            "Draw as `swell view` does: no frame replays the foam's history, and on a software "
                            "rasteriser the spectral fields come from the CPU's FFTs");
+    benchCommand->add_flag("--water-one-pass", bench.waterOnePass,
+                           "Draw the water in one pass, its grid shaded in its own fragments, instead of a "
+                           "visibility pass and one shading run per water pixel (to compare the two)");
     benchCommand->add_option("scene", bench.scenePath,
                              "Scene file (TOML) or a preset's name, benchmarked along the same camera path; "
                              "the built-in default when omitted")

@@ -125,6 +125,12 @@ public:
     // what the temporal resolve's jitter brings. Default on.
     static void setTemporalJitter(Renderer& renderer, bool on);
 
+    // Draws the water in one pass, its grid shaded in its own fragments,
+    // instead of a visibility pass and one shading run per water pixel
+    // (docs/RENDERING.md "The water in two passes"), to compare the two.
+    // Default on where the GL lets vertex shaders write storage buffers.
+    static void setWaterInTwoPasses(Renderer& renderer, bool on);
+
     // The largest error, in each pass's own pixels, that the built-in
     // island's level of detail may show (docs/RENDERING.md "The island's
     // levels of detail"); 0 draws its full grid in every pass. Default 0.5.

@@ -12,7 +12,9 @@ namespace swell {
 // camera, or the eye is below the waves' crests with water.shafts on), "reflection",
 // "refraction", "waterline" (the mask, when the near plane meets the
 // waves), "main"; within "main", "underwater host" (draw(): the host's
-// geometry seen from under the water) and "water" for the water draw; then
+// geometry seen from under the water) and "water" for the water draw,
+// within which, when it is drawn in two passes (docs/RENDERING.md "The
+// water in two passes"), "water visibility" and "water shading"; then
 // "present" when the main pass's image is resolved, filtered or scaled. The
 // first three come from advanceTo(), the others from each view drawn.
 // Within "ocean", a wave model may name the stages of its GPU work

@@ -2,7 +2,7 @@
 // pass rather than glGenerateMipmap. On a GPU, shaders/mip_downsample.comp
 // reduces blocks in shared memory: NVIDIA's driver took 0.18 to 0.36 ms of
 // GPU time for each of the spectral model's chains on an H200, most of the
-// simulation's 1.2 ms; the pass 0.035 ms (docs/PERFORMANCE.md). On a
+// simulation's 1.2 ms; the pass 0.035 ms (docs/design/performance-log.md). On a
 // software rasteriser, shaders/mip_blocks.comp: each invocation reduces its
 // own block, without the barriers llvmpipe emulates slowly (the
 // shared-memory pass took about 25 ms a 4-layer 256^2 chain there) and

@@ -97,7 +97,7 @@ void MainPass::draw(RenderContext& context, ViewState& state, const ViewFrame& v
     }
     {
         const ObservedPass water(context.telemetry, "water");
-        drawWater(context, state, inAir);
+        drawWater(context, state, pass, inAir);
     }
     if (request.ownsFrame || request.options.sky)
         drawSky(context, inAir, v.depth);
@@ -105,24 +105,6 @@ void MainPass::draw(RenderContext& context, ViewState& state, const ViewFrame& v
     // test hides a particle's part below the surface from above).
     if (v.base.eyeUnderwater == 0)
         context.spray.draw(context, v, request.view);
-}
-
-void MainPass::drawWater(RenderContext& context, const ViewState& state, bool inAir) const
-{
-    const Resources& resources = context.resources;
-    (inAir ? resources.programs.waterInAir : resources.programs.water).use();
-    glBindTextureUnit(SWELL_UNIT_SKY, resources.world.skyCube.id());
-    glBindTextureUnit(SWELL_UNIT_REFLECTION_COLOR, state.reflection.color());
-    glBindTextureUnit(SWELL_UNIT_REFLECTION_DEPTH, state.reflection.depth());
-    glBindTextureUnit(SWELL_UNIT_REFRACTION_COLOR, state.refraction.color());
-    glBindTextureUnit(SWELL_UNIT_REFRACTION_DEPTH, state.refraction.depth());
-    context.simulation.bindForWater();
-    glBindVertexArray(resources.waterGrid.vertexArray());
-    if (context.scene.debugView == DebugView::Wireframe)
-        glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    context.telemetry.counters.waterTriangles += resources.waterGrid.draw();
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    ++context.telemetry.counters.drawCalls;
 }
 
 } // namespace swell::detail

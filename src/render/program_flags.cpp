@@ -35,6 +35,7 @@ void SurfaceFlags::addDefines(std::vector<std::string>& defines) const
                                   gridLayout == GridLayout::Paper ? "SWELL_GRID_PAPER" : "SWELL_GRID_GEOMETRIC"));
     defines.push_back(fmt::format("SWELL_OCEAN_FILE \"{}\"", oceanFile));
     defines.push_back(fmt::format("SWELL_SURFACE_SOURCES {}", surfaceSources.size()));
+    defines.push_back(flagDefine("SWELL_WATER_CACHES_VERTICES", cachesVertices));
 }
 
 void UnderwaterFlags::addDefines(std::vector<std::string>& defines) const
@@ -53,6 +54,7 @@ std::vector<std::string> WaterFlags::defines() const
                                                                                               : "SWELL_REFLECTION_RAYMARCH"),
         fmt::format("SWELL_OMITTED_TERMS {}", omittedTerms),
         labelPassDefine(labelPass),
+        flagDefine("SWELL_WATER_DEFERRED", deferred),
     };
     surface.addDefines(d);
     underwater.addDefines(d);

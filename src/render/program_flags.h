@@ -23,6 +23,9 @@ struct SurfaceFlags {
     // bodies' wake's first when the scene has one; render/surface_sources.h),
     // whose code the programs compile.
     std::vector<std::string> surfaceSources{};
+    // SWELL_WATER_CACHES_VERTICES: water.vert keeps each vertex for the
+    // water's shading pass (the visibility pass's; render/water_visibility.h).
+    bool cachesVertices = false;
     bool operator==(const SurfaceFlags&) const = default;
     void addDefines(std::vector<std::string>& defines) const;
 };
@@ -62,6 +65,10 @@ struct WaterFlags {
     ReflectionMode reflection = ReflectionMode::RayMarch; // SWELL_REFLECTION_MODE
     unsigned omittedTerms = 0; // SWELL_OMITTED_TERMS: SWELL_TERM_* bits (the benchmark's; RendererOptions)
     bool labelPass = false;    // SWELL_LABEL_PASS: writes labels (swell/dataset/labels.h), not a colour
+    // SWELL_WATER_DEFERRED: the shading pass of the water drawn in two
+    // (fullscreen.vert + water.frag reading the visibility pass's results;
+    // render/water_visibility.h).
+    bool deferred = false;
     bool operator==(const WaterFlags&) const = default;
     std::vector<std::string> defines() const;
 };

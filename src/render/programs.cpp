@@ -26,6 +26,10 @@ void forEachProgram(A& a, B& b, const ProgramFlags& f, Visit visit)
     using std::optional;
     visit("water", a.water, b.water, optional(f.water));
     visit("waterInAir", a.waterInAir, b.waterInAir, optional(f.waterInAir));
+    visit("waterVisibility", a.waterVisibility, b.waterVisibility, optional(f.waterVisibility));
+    visit("waterDeferred", a.waterDeferred, b.waterDeferred, optional(f.waterDeferred));
+    visit("waterDeferredInAir", a.waterDeferredInAir, b.waterDeferredInAir, optional(f.waterDeferredInAir));
+    visit("waterTiles", a.waterTiles, b.waterTiles, optional(NoFlags{}));
     visit("waterline", a.waterline, b.waterline, optional(f.waterline));
     visit("capture", a.capture, b.capture, optional(f.capture));
     visit("probe", a.probe, b.probe, optional(f.probe));
@@ -93,6 +97,12 @@ ProgramFlags programFlagsOf(const Scene& scene, const WaveModelGpu& model, unsig
     f.water = {surface, underwater, scene.debugView, scene.reflection.mode, omittedWaterTerms, false};
     f.waterInAir = f.water;
     f.waterInAir.underwater = inAir;
+    f.waterVisibility = {surface};
+    f.waterVisibility.surface.cachesVertices = true;
+    f.waterDeferred = f.water;
+    f.waterDeferred.deferred = true;
+    f.waterDeferredInAir = f.waterInAir;
+    f.waterDeferredInAir.deferred = true;
     f.waterline = {surface, underwater};
     f.capture = f.probe = {surface};
     f.sky = {underwater, false};

@@ -23,6 +23,10 @@ namespace swell::detail {
 // out from below the water (...InAir) have seenFromBelow false.
 struct ProgramFlags {
     WaterFlags water, waterInAir;
+    // The water drawn in two passes (render/water_visibility.h): its
+    // visibility pass, and its shading pass's programs.
+    WaterVertexFlags waterVisibility;
+    WaterFlags waterDeferred, waterDeferredInAir;
     WaterlineFlags waterline;
     WaterVertexFlags capture, probe;
     SkyFlags sky, skyInAir;
@@ -46,6 +50,9 @@ ProgramFlags programFlagsOf(const Scene& scene, const WaveModelGpu& model, unsig
 
 struct Programs {
     WaterProgram water, waterInAir;
+    WaterVisibilityProgram waterVisibility;
+    WaterProgram waterDeferred, waterDeferredInAir;
+    WaterTilesProgram waterTiles;
     WaterlineProgram waterline;
     WaterCaptureProgram capture;
     SurfaceProbeProgram probe;

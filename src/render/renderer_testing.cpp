@@ -23,6 +23,11 @@ int RendererTesting::waterVertexCount(const Renderer& renderer)
 
 void RendererTesting::setTemporalJitter(Renderer& renderer, bool on) { renderer.impl_->settings.temporalJitter = on; }
 
+void RendererTesting::setWaterInTwoPasses(Renderer& renderer, bool on)
+{
+    renderer.impl_->resources.waterInTwoPasses = on && vertexShadersStoreBuffers();
+}
+
 void RendererTesting::setIslandTolerance(Renderer& renderer, double tolerance_px)
 {
     if (!(tolerance_px >= 0.0))

@@ -5,7 +5,8 @@
 namespace swell::detail {
 
 Resources::Resources(gl::ShaderSources shaders, unsigned omittedTerms)
-    : sources(std::move(shaders)), omittedWaterTerms(omittedTerms), emptyVao(gl::VertexArray::create())
+    : sources(std::move(shaders)), omittedWaterTerms(omittedTerms), emptyVao(gl::VertexArray::create()),
+      waterInTwoPasses(vertexShadersStoreBuffers())
 {
     for (gl::Buffer& b : frameUbo_) {
         b = gl::Buffer::create();

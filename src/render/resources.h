@@ -10,6 +10,7 @@
 #include "render/programs.h"
 #include "render/telemetry.h"
 #include "render/water_grid.h"
+#include "render/water_visibility.h"
 #include "render/world.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader_sources.h"
@@ -44,6 +45,12 @@ public:
     gl::VertexArray emptyVao;
     GridShape gridShape;
     WaterGrid waterGrid;
+    // The water's vertices as its visibility pass drew them (render/water_visibility.h).
+    WaterVertexCache waterVertexCache;
+    // Whether the water is drawn in two passes where it can be: when this
+    // GL can (vertexShadersStoreBuffers()) and the renderer was not asked
+    // for one pass (RendererTesting::setWaterInTwoPasses).
+    bool waterInTwoPasses = false;
     World world;
     SceneShapes shapes; // what the world's rigid bodies are built from (the assets' CPU data)
     // The sun's light under the water, drawn again by each view that needs it (caustics_map.h).

@@ -3,6 +3,7 @@
 
 #include "gl/uniform_location.h"
 #include "render/spray_kinematics.h"
+#include "swell/error.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -40,8 +41,35 @@ void LabelRays::set(const gl::Program& program, const glm::dmat3& rayFromPixel) 
 }
 
 WaterProgram::WaterProgram(const gl::ShaderSources& sources, const Flags& flags)
-    : FlaggedProgram(build(sources, flags, "water.vert", "water.frag"), flags), rays_(program_, flags.labelPass)
+    : FlaggedProgram(build(sources, flags, flags.deferred ? "water_tiles.vert" : "water.vert", "water.frag"), flags),
+      rays_(program_, flags.labelPass)
 {
+}
+
+WaterVisibilityProgram::WaterVisibilityProgram(const gl::ShaderSources& sources, const Flags& flags)
+    : FlaggedProgram(build(sources, flags, "water.vert", "water_visibility.frag"), flags),
+      firstTriangle_(requiredUniform(program_, "firstTriangle", "water_visibility.frag"))
+{
+    // The cache's array of vertices: its stride is one vertex's size.
+    const GLuint variable =
+        glGetProgramResourceIndex(program_.id(), GL_BUFFER_VARIABLE, "cachedWaterVertices[0].v[0]");
+    const GLenum property = GL_TOP_LEVEL_ARRAY_STRIDE;
+    GLint stride = 0;
+    if (variable != GL_INVALID_INDEX)
+        glGetProgramResourceiv(program_.id(), GL_BUFFER_VARIABLE, variable, 1, &property, 1, nullptr, &stride);
+    if (stride <= 0)
+        throw Error("water_visibility.frag: the vertex cache's stride could not be read from the program");
+    cachedVertexBytes_ = std::size_t(stride);
+}
+
+WaterTilesProgram::WaterTilesProgram(const gl::ShaderSources& sources, const Flags& flags)
+    : FlaggedProgram(buildCompute(sources, "water_tiles.comp", flags.defines()), flags)
+{
+}
+
+void WaterVisibilityProgram::setFirstTriangle(std::uint32_t triangle) const
+{
+    glProgramUniform1ui(program_.id(), firstTriangle_, triangle);
 }
 
 SkyProgram::SkyProgram(const gl::ShaderSources& sources, const Flags& flags)

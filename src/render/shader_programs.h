@@ -17,6 +17,8 @@
 #include <glm/vec4.hpp>
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -55,7 +57,8 @@ private:
     GLint rayFromPixel_ = -1;
 };
 
-// The water (water.vert + water.frag), and its label pass's.
+// The water (water.vert + water.frag), its label pass's, and the shading
+// pass of the water drawn in two (fullscreen.vert + water.frag; flags.deferred).
 class WaterProgram : public FlaggedProgram<WaterFlags> {
 public:
     WaterProgram() = default;
@@ -64,6 +67,29 @@ public:
 
 private:
     LabelRays rays_;
+};
+
+// The water's visibility pass (water.vert keeping its vertices +
+// water_visibility.frag; render/water_visibility.h).
+class WaterVisibilityProgram : public FlaggedProgram<WaterVertexFlags> {
+public:
+    WaterVisibilityProgram() = default;
+    WaterVisibilityProgram(const gl::ShaderSources& sources, const Flags& flags);
+    // The first triangle of the range drawn next (WaterGrid::drawRanges).
+    void setFirstTriangle(std::uint32_t triangle) const;
+    // The bytes a vertex takes in the vertex cache (water_vertex_cache.glsl).
+    std::size_t cachedVertexBytes() const { return cachedVertexBytes_; }
+
+private:
+    GLint firstTriangle_ = -1;
+    std::size_t cachedVertexBytes_ = 0;
+};
+
+// The list of the screen tiles that show water (water_tiles.comp).
+class WaterTilesProgram : public FlaggedProgram<NoFlags> {
+public:
+    WaterTilesProgram() = default;
+    WaterTilesProgram(const gl::ShaderSources& sources, const Flags& flags);
 };
 
 // The sky (sky.vert + sky.frag), and its label pass's.

@@ -197,7 +197,7 @@ int TemporalResolve::resolve(const TemporalPrograms& programs, GLuint emptyVao, 
     // The result into the output, opaque: where it suits, a blit of the
     // 8-bit copy the resolve wrote beside the history, which on llvmpipe
     // costs next to nothing where a full-screen pass reading the history
-    // costs one pass over every output pixel (docs/PERFORMANCE.md).
+    // costs one pass over every output pixel (docs/design/performance-log.md).
     int drawCalls = 2;
     if (outputTakesTheBlit(output)) {
         glBlitNamedFramebuffer(displayFramebuffer_.id(), output, 0, 0, outputSize.x, outputSize.y, corner.x, corner.y,

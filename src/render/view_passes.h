@@ -79,7 +79,14 @@ struct MainPass {
 private:
     // The framebuffer and viewport the pass draws into.
     std::pair<GLuint, glm::ivec4> target(ViewState& state, const ViewRequest& request) const;
-    void drawWater(RenderContext& context, const ViewState& state, bool inAir) const;
+    // The water, in one pass or two (render/water_visibility.h; water_pass.cpp).
+    void drawWater(RenderContext& context, ViewState& state, const PassState& pass, bool inAir) const;
+    // What both ways of drawing it bind for its shading.
+    void bindWaterShading(const RenderContext& context, const ViewState& state, bool deferred, bool inAir) const;
+    // The grid shaded in its own fragments.
+    void drawWaterInOnePass(RenderContext& context, const ViewState& state, bool inAir) const;
+    // The grid's visibility, then one shading run per water pixel.
+    void drawWaterInTwoPasses(RenderContext& context, ViewState& state, const PassState& pass, bool inAir) const;
 };
 
 // The view's target into the output (when the main pass drew into it).

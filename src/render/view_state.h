@@ -9,6 +9,7 @@
 #include "render/host_copy.h"
 #include "render/render_target.h"
 #include "render/temporal_resolve.h"
+#include "render/water_visibility.h"
 #include "render/waterline.h"
 
 #include <cstdint>
@@ -26,6 +27,8 @@ struct ViewState {
     // for its geometry under the water, and its colour and depth drawn into
     // the main target when the view is drawn through it.
     HostCopy hostDepth, hostPictureDepth, hostPictureColour;
+    // The water's visibility pass's targets (render/water_visibility.h).
+    WaterVisibility waterVisibility;
     TemporalResolve temporal;
     // Whether the last frame was resolved over time: turning it on or off
     // starts the history again.

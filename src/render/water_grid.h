@@ -7,6 +7,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -32,7 +33,25 @@ public:
     // Draws the chosen tiles (the grid VAO must be bound: see vertexArray()).
     // Returns the triangles submitted.
     long long draw() const;
+    // Draws the chosen tiles a range of the index buffer at a time, telling
+    // `beforeRange` each range's first triangle (its index in the buffer
+    // over 3) first: gl_PrimitiveID counts from each draw's start, and the
+    // water's visibility pass writes the triangle's place in the buffer
+    // (render/water_visibility.h). Returns the triangles submitted.
+    template <class BeforeRange>
+    long long drawRanges(BeforeRange beforeRange) const
+    {
+        long long triangles = 0;
+        for (std::size_t k = 0; k < counts_.size(); ++k) {
+            beforeRange(std::uint32_t(reinterpret_cast<std::uintptr_t>(offsets_[k]) / (3 * sizeof(std::uint32_t))));
+            glDrawElements(GL_TRIANGLES, counts_[k], GL_UNSIGNED_INT, offsets_[k]);
+            triangles += counts_[k] / 3;
+        }
+        return triangles;
+    }
     unsigned vertexArray() const { return vao_.id(); }
+    // The index buffer: triangle t is indices 3t to 3t + 2.
+    unsigned indexBuffer() const { return indices_.id(); }
 
     // How many times the tiles' bounds have been computed (once per change of
     // scale, morph band or reach, not per frame).

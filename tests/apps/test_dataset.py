@@ -164,15 +164,41 @@ check("manifest is a folder", run(good, "--out", manifest_folder), 2, "--out")
 if os.path.exists(os.path.join(manifest_folder, "samples")):
     failures.append("manifest is a folder: samples/ was made before the folder was refused")
 
+def check_rate(name, result, out, written):
+    """The run's last report: the samples it wrote, over its wall time and its
+    cores, and over its CPU time; each figure the quotient of the others as
+    printed (their rounding allowed), not a bound on the time."""
+    found = re.search(r"swell: (\d+) samples rendered in ([0-9.]+) s on (\d+) cores: ([0-9.]+) samples per second "
+                      r"per core \(samples / wall time / cores\); ([0-9.]+) s of CPU: ([0-9.]+) samples per CPU second",
+                      result.stderr)
+    if not found:
+        failures.append(f"{name}: no samples per second per core at the end: {result.stderr.strip()[-600:]!r}")
+        return
+    samples, wall, cores, rate, cpu, cpu_rate = (float(g) for g in found.groups())
+    if samples != written or len(done(out)) < written or cores < 1 or wall <= 0.0 or cpu <= 0.0:
+        failures.append(f"{name}: reported {found.group(0)!r} for {written} samples written "
+                        f"({len(done(out))} in the folder)")
+        return
+    low, high = samples / ((wall + 0.005) * cores) - 5e-5, samples / (max(wall - 0.005, 1e-9) * cores) + 5e-5
+    cpu_low, cpu_high = samples / (cpu + 0.005) - 5e-5, samples / max(cpu - 0.005, 1e-9) + 5e-5
+    if not low <= rate <= high or not cpu_low <= cpu_rate <= cpu_high:
+        failures.append(f"{name}: {found.group(0)!r}: the rates are not the samples over the times "
+                        f"({low:.4f}..{high:.4f} per core, {cpu_low:.4f}..{cpu_high:.4f} per CPU second)")
+
+
 # --- The same bytes serially, in two shards, and killed and started again.
 count = 12
 sweep = write("sweep.toml", sweep_text(count))
 serial = os.path.join(work, "serial")
-check("serial", run(sweep, "--out", serial), 0, f"{count} samples to render, 0 done already")
+serial_run = run(sweep, "--out", serial)
+check("serial", serial_run, 0, f"{count} samples to render, 0 done already")
+check_rate("serial", serial_run, serial, count)
 if not os.path.exists(os.path.join(serial, "coco.json")):
     failures.append("serial: no coco.json")
 sharded = os.path.join(work, "sharded")
-check("shard 1/2", run(sweep, "--out", sharded, "--shard", "1/2"), 0, "6 samples to render")
+first_shard = run(sweep, "--out", sharded, "--shard", "1/2")
+check("shard 1/2", first_shard, 0, "6 samples to render")
+check_rate("shard 1/2", first_shard, sharded, 6)
 if os.path.exists(os.path.join(sharded, "coco.json")):
     failures.append("shard 1/2 wrote coco.json before every sample was done")
 check("shard 2/2", run(sweep, "--out", sharded, "--shard", "2/2"), 0, "6 samples to render")

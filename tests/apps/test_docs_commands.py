@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The docs say what the program does: every `swell ...` command line in
-README.md and docs/*.md (in sh code blocks and inline code) names a real
+README.md, docs/*.md and docs/design/*.md (in sh code blocks and inline code) names a real
 subcommand and only options that subcommand has, as `swell SUB --help` lists
 them, so a documented flag the program lost fails here; GETTING_STARTED.md
 names every preset the program lists and every subcommand; the README's
@@ -136,7 +136,8 @@ def check(doc, number, args):
                             f"(it has {', '.join(sorted(OPTIONS[sub]))})")
 
 
-docs = [os.path.join(source, "README.md")] + sorted(glob.glob(os.path.join(source, "docs", "*.md")))
+docs = [os.path.join(source, "README.md")] + sorted(glob.glob(os.path.join(source, "docs", "*.md"))) + \
+    sorted(glob.glob(os.path.join(source, "docs", "design", "*.md")))
 checked = 0
 for doc in docs:
     for number, text in snippets(doc):

@@ -8,7 +8,11 @@ the boxes the views' culling tested.
 Timings vary and are only checked for being there, the simulation's CPU time
 (second line, and its parts in the JSON) among them. The second run adds --terms: only it may print the
 shading terms' table and the reflection lookups; both print frames per second
-on their first line.
+on their first line. It adds --labels too: only it prints the label pass's rows
+("labels" and "frame + labels" in the table of times, "labels" in the
+counters) and writes them in the JSON, with a label pass in every measured
+frame that drew something; the colour frames' counters stay those of the
+first run.
 
 Usage: check_bench_counters.py SWELL_EXECUTABLE OUTPUT_DIR
 """
@@ -22,7 +26,7 @@ ARGS = ["bench", "--size", "160x90", "--frames", "3", "--warmup", "1"]
 
 
 def run(swell, json_path, terms):
-    command = [swell, *ARGS, "--json", json_path, *(["--terms"] if terms else [])]
+    command = [swell, *ARGS, "--json", json_path, *(["--terms", "--labels"] if terms else [])]
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"FAIL: {' '.join(command)} exited {result.returncode}\n{result.stdout}\n{result.stderr}")
@@ -38,6 +42,12 @@ def run(swell, json_path, terms):
     for table in ("Water shading terms", "Reflection lookup"):
         if (table in result.stdout) != terms:
             sys.exit(f"FAIL: '{table}' {'missing with' if terms else 'printed without'} --terms:\n{result.stdout}")
+    labels = terms
+    rows = [re.match(r"\s+(labels|frame \+ labels)\s+[0-9.]+ ", line) for line in result.stdout.splitlines()]
+    rows = [m.group(1) for m in rows if m]
+    # "labels" twice (times, counters), "frame + labels" once, only with --labels.
+    if sorted(rows) != (["frame + labels", "labels", "labels"] if labels else []):
+        sys.exit(f"FAIL: the label pass's rows {rows} {'with' if labels else 'without'} --labels:\n{result.stdout}")
     # The progress counts frames of the path: warm-up and measured, then the floor's.
     frames, warmup = ARGS[ARGS.index("--frames") + 1], ARGS[ARGS.index("--warmup") + 1]
     path_frames = int(frames) + int(warmup)
@@ -48,6 +58,17 @@ def run(swell, json_path, terms):
     if (len(results["water_terms"]) > 0) != terms or (len(results["reflection_modes"]) > 0) != terms:
         sys.exit(f"FAIL: JSON water_terms {results['water_terms']!r}, reflection modes {results['reflection_modes']!r} "
                  f"{'with' if terms else 'without'} --terms")
+    if (results["labels"] is not None) != labels:
+        sys.exit(f"FAIL: JSON labels {results['labels']!r} {'with' if labels else 'without'} --labels")
+    if labels:
+        totals = results["labels"]["counters_total"]
+        sample = results["labels"]["labelled_sample"]
+        if (totals["samples_passed"] <= 0 or not results["labels"]["wall_ms"]["median"] > 0.0
+                or not sample["wall_ms"]["median"] >= results["labels"]["wall_ms"]["median"]
+                or (results["pipeline_statistics"] and totals["fragment_shader_invocations"] <= 0)):
+            sys.exit(f"FAIL: the label pass drew nothing, or its sample costs less than itself: {results['labels']!r}")
+        if any("labels" not in f for f in results["measured_frames"]):
+            sys.exit("FAIL: a measured frame without its label pass in the JSON")
     if not results["frames_per_second"] > 0.0:
         sys.exit(f"FAIL: frames_per_second {results['frames_per_second']!r}")
     cpu = results["simulation_cpu_ms"]

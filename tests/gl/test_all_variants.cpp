@@ -79,7 +79,10 @@ TEST_F(EveryProgram, TheWaterCompilesForEachFlag)
                     SurfaceFlags surface = surfaceFlags(models, i);
                     surface.oceanFile = model;
                     surface.gridLayout = layout;
-                    const WaterFlags flags{surface, underwaterFlags(i), view, reflection, 0, i % 5 == 2};
+                    // The label pass's, and the shading pass of the water
+                    // in two (never both: the label pass draws in one).
+                    WaterFlags flags{surface, underwaterFlags(i), view, reflection, 0, i % 5 == 2};
+                    flags.deferred = i % 5 == 1;
                     SCOPED_TRACE(model + ", debug view " + std::to_string(int(view)) + ", " + traceOf(i));
                     EXPECT_TRUE(WaterProgram(sources, flags));
                     ++i;
@@ -99,6 +102,8 @@ TEST_F(EveryProgram, TheWaterCompilesWithEachTermLeftOut)
                 flags.surface = {GridLayout::Geometric, model, {WakeSurfaceSource::code()}};
                 flags.reflection = reflection;
                 flags.omittedTerms = term;
+                // The ray-marched reflection's in the shading pass of the water in two.
+                flags.deferred = reflection == ReflectionMode::RayMarch;
                 SCOPED_TRACE(model + ", terms left out " + std::to_string(term));
                 EXPECT_TRUE(WaterProgram(sources, flags));
                 ++built;
@@ -120,6 +125,9 @@ TEST_F(EveryProgram, TheWaterVertexCaptureAndTheQueriesCompileForEachFlag)
     for (unsigned i = 0; i < 4 * models.size(); ++i) {
         SCOPED_TRACE(traceOf(i));
         EXPECT_TRUE(WaterCaptureProgram(sources, {surfaceFlags(models, i)}));
+        SurfaceFlags visibility = surfaceFlags(models, i);
+        visibility.cachesVertices = true;
+        EXPECT_TRUE(WaterVisibilityProgram(sources, {visibility}));
         EXPECT_TRUE(SurfaceProbeProgram(sources, {surfaceFlags(models, i)}));
     }
 }
@@ -177,13 +185,17 @@ TEST_F(EveryProgram, TheProgramsWithoutFlagsCompile)
         EXPECT_TRUE(SkyBakeProgram(sources, physical));
     // The temporal resolve's, with everything else, for the first model's file.
     detail::ProgramFlags flags;
-    for (WaterFlags* water : {&flags.water, &flags.waterInAir})
+    for (WaterFlags* water : {&flags.water, &flags.waterInAir, &flags.waterDeferred, &flags.waterDeferredInAir})
         water->surface.oceanFile = models.front();
-    for (SurfaceFlags* surface : {&flags.waterline.surface, &flags.capture.surface, &flags.probe.surface})
+    flags.waterDeferred.deferred = flags.waterDeferredInAir.deferred = true;
+    flags.waterVisibility.surface.cachesVertices = true;
+    for (SurfaceFlags* surface : {&flags.waterline.surface, &flags.capture.surface, &flags.probe.surface,
+                                  &flags.waterVisibility.surface})
         surface->oceanFile = models.front();
     flags.caustics = CausticsFlags{models.front()};
     const detail::Programs all = buildChangedPrograms(sources, {}, flags);
-    EXPECT_TRUE(all.temporal && all.water && all.caustics && !all.spray);
+    EXPECT_TRUE(all.temporal && all.water && all.waterDeferred && all.waterVisibility && all.waterTiles && all.caustics &&
+                !all.spray);
 }
 
 } // namespace

@@ -66,8 +66,11 @@ detail::ProgramFlags flagsOf(const Scene& scene, const gl::ShaderSources& source
     return detail::programFlagsOf(scene, *gpu, 0, codes);
 }
 
-const Names kUnderwater{"water", "waterInAir", "waterline", "sky", "skyInAir", "underwaterHost", "mesh", "meshInAir"};
-const Names kSurface{"water", "waterInAir", "waterline", "capture", "probe"};
+// The water's programs that shade it: in one pass and in the shading pass
+// of two (docs/RENDERING.md "The water in two passes").
+#define SWELL_WATER_SHADING "water", "waterInAir", "waterDeferred", "waterDeferredInAir"
+const Names kUnderwater{SWELL_WATER_SHADING, "waterline", "sky", "skyInAir", "underwaterHost", "mesh", "meshInAir"};
+const Names kSurface{"water", "waterInAir", "waterVisibility", "waterDeferred", "waterDeferredInAir", "waterline", "capture", "probe"};
 
 std::vector<Change> changes()
 {
@@ -76,7 +79,7 @@ std::vector<Change> changes()
     Names spectral = kSurface;
     spectral.insert(spectral.end(), {"caustics", "spray"});
     return {
-        {"debug view", [](Scene& s) { s.debugView = DebugView::Normals; }, {"water", "waterInAir", "mesh", "meshInAir"}},
+        {"debug view", [](Scene& s) { s.debugView = DebugView::Normals; }, {SWELL_WATER_SHADING, "mesh", "meshInAir"}},
         {"caustics", [](Scene& s) { s.water.caustics = false; }, kUnderwater},
         {"shafts", [](Scene& s) { s.water.shafts = !s.water.shafts; }, kUnderwater},
         {"clouds' shadows",
@@ -85,7 +88,7 @@ std::vector<Change> changes()
              s.sky.clouds.cover = 0.5;
          },
          cloudShadows},
-        {"reflection mode", [](Scene& s) { s.reflection.mode = ReflectionMode::FixedDistance; }, {"water", "waterInAir"}},
+        {"reflection mode", [](Scene& s) { s.reflection.mode = ReflectionMode::FixedDistance; }, {SWELL_WATER_SHADING}},
         {"grid layout", [](Scene& s) { s.grid.layout = GridLayout::Paper; }, kSurface},
         {"a surface source", [](Scene&) {}, kSurface, true},
         {"wave model", [](Scene& s) { s.waves.model = WaveModelKind::Spectral; }, spectral},

@@ -52,6 +52,11 @@
 #define SWELL_UNIT_CAUSTICS 16
 // The cloud layer's shadow map (cloud_shadow.glsl).
 #define SWELL_UNIT_CLOUD_SHADOW 20
+// The water's visibility pass's results that its shading pass reads
+// (shaders/water_deferred.glsl, render/water_visibility.h): the triangle
+// each pixel shows, and the depth the pass left.
+#define SWELL_UNIT_WATER_VISIBILITY 5
+#define SWELL_UNIT_WATER_DEPTH 23
 // The temporal resolve (shaders/temporal_resolve.frag, render/temporal_resolve.h):
 // the main pass's depth and the accumulated history it reads (the frame's
 // colour: SWELL_UNIT_POST_SOURCE), and the clip box per drawn pixel (its
@@ -89,6 +94,14 @@
 #define SWELL_STORAGE_SPRAY_LIST 5
 #define SWELL_STORAGE_SPRAY_COMMANDS 6
 #define SWELL_STORAGE_SPRAY_STREAKS 7
+// The water's vertices as its visibility pass drew them, and the grid's
+// index buffer, which its shading pass reads (shaders/water_vertex_cache.glsl).
+#define SWELL_STORAGE_WATER_VERTICES 8
+#define SWELL_STORAGE_WATER_INDICES 9
+// The screen tiles that show water, which the water's shading pass draws
+// (shaders/water_tiles.comp, water_tiles.vert): its indirect draw command,
+// then each tile's place.
+#define SWELL_STORAGE_WATER_TILES 10
 
 // Workgroups.
 // The frame's water queries: the side of each answer's block of drawn
@@ -104,6 +117,12 @@
 // evaluates each living clump's streaks (workgroups of SWELL_SPRAY_GROUP).
 #define SWELL_SPRAY_GROUP 64
 #define SWELL_SPRAY_LIST_GROUP 256
+// The water's shading pass draws the screen in square tiles of this many
+// pixels a side, only those that show water (shaders/water_tiles.comp): a
+// tile is one workgroup of the pass that lists them. 8 leaves about 1% of
+// the shaded pixels outside the water at 1280 x 720 (the tiles along the
+// horizon and round the world's objects).
+#define SWELL_WATER_TILE 8
 // The spectral model's foam step (spectral_foam.comp): a square tile of
 // texels, each invocation one texel of every image it writes.
 #define SWELL_FOAM_STEP_GROUP 16

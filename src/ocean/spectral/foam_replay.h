@@ -8,7 +8,7 @@
 // field. The windows do not move during a replay, so each texel's warped
 // sample points and the warp's Jacobian are computed once, not every step.
 // On llvmpipe the GPU's steps cost about 0.19 s of CPU each, these about
-// 0.011 s (docs/PERFORMANCE.md); a GPU keeps its own steps.
+// 0.011 s (docs/design/performance-log.md); a GPU keeps its own steps.
 #pragma once
 
 #include "ocean/spectral/breaking.h"
