@@ -77,9 +77,9 @@ Json cocoJson(const fs::path& out, int count, const std::vector<std::string>& cl
         const std::vector<fs::path> files = labelFilePaths(png);
         Json sample;
         try {
-            sample = Json::parse(readFileBytes(files[5]));
+            sample = Json::parse(readFileBytes(files.back()));
         } catch (const Json::exception& e) {
-            throw Error(fmt::format("{}: {}", files[5].string(), e.what()));
+            throw Error(fmt::format("{}: {}", files.back().string(), e.what()));
         }
         const int width = sample["size"][0], height = sample["size"][1];
         images.push_back({{"id", i}, {"file_name", fmt::format("samples/{:06d}.png", i)}, {"width", width}, {"height", height}});

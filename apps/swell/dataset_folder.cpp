@@ -220,14 +220,15 @@ std::string sampleNotDone(const fs::path& out, int index, const Sweep& sweep, co
     if (!sweep.labels)
         return {};
     const int w = sweep.size.x, h = sweep.size.y;
-    const std::array<std::string, 4> arrays = {
+    const std::array<std::string, 5> arrays = {
         npyProblem(files[1], "<f4", {h, w}, 4), npyProblem(files[2], "<f4", {h, w, 3}, 4),
-        npyProblem(files[3], "<u2", {h, w}, 2), npyProblem(files[4], "<u2", {h, w}, 2)};
+        npyProblem(files[3], "<u2", {h, w}, 2), npyProblem(files[4], "<u2", {h, w}, 2),
+        npyProblem(files[5], "<f4", {h, w}, 4)};
     for (std::size_t i = 0; i < arrays.size(); ++i)
         if (!arrays[i].empty())
             return named(files[i + 1], arrays[i]);
-    if (const std::string p = pngProblem(files[5], sweep.size); !p.empty())
-        return named(files[5], p);
+    if (const std::string p = pngProblem(files[6], sweep.size); !p.empty())
+        return named(files[6], p);
     return {};
 }
 

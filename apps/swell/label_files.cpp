@@ -97,8 +97,9 @@ std::string npyBytes(const void* data, std::size_t bytes, const std::string& des
 
 std::vector<fs::path> labelFilePaths(const fs::path& colour)
 {
-    return {besides(colour, ".range.npy"), besides(colour, ".normal.npy"), besides(colour, ".semantic.npy"),
-            besides(colour, ".instance.npy"), besides(colour, ".labels.png"), besides(colour, ".json")};
+    return {besides(colour, ".range.npy"),    besides(colour, ".normal.npy"), besides(colour, ".semantic.npy"),
+            besides(colour, ".instance.npy"), besides(colour, ".depth.npy"),  besides(colour, ".labels.png"),
+            besides(colour, ".json")};
 }
 
 void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
@@ -111,6 +112,8 @@ void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
     writeFileAtomically(paths[1], npyBytes(labels.normal.data(), pixels * sizeof(glm::vec3), "<f4", {h, w, 3}));
     writeFileAtomically(paths[2], npyBytes(labels.semantic.data(), pixels * 2, "<u2", {h, w}));
     writeFileAtomically(paths[3], npyBytes(labels.instance.data(), pixels * 2, "<u2", {h, w}));
+    const std::vector<float> depth = zDepthOf(labels);
+    writeFileAtomically(paths[4], npyBytes(depth.data(), pixels * sizeof(float), "<f4", {h, w}));
 
     Image preview;
     preview.width = w;
@@ -121,8 +124,29 @@ void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
         std::memcpy(&preview.rgba[4 * i], c.data(), 3);
         preview.rgba[4 * i + 3] = 255;
     }
-    writePngAtomically(preview, paths[4]);
+    writePngAtomically(preview, paths[5]);
 }
+
+namespace {
+
+// An object's pose (docs/LABELS.md, "objects"): in world axes, and its
+// model's axes in the camera's (OpenCV's: x right, y down, z forward).
+Json poseJson(const ObjectPose& p, const CameraCalibration& c)
+{
+    const glm::dmat4 cameraFromObject = c.cameraFromWorld * p.worldFromObject;
+    const glm::dvec3 inCamera(cameraFromObject[3]);
+    return {{"position_m", {p.position_m.x, p.position_m.y, p.position_m.z}},
+            {"yaw_deg", p.yaw_deg},
+            {"pitch_deg", p.pitch_deg},
+            {"roll_deg", p.roll_deg},
+            {"heading_deg", p.heading_deg},
+            {"scale", p.scale},
+            {"world_from_object", matrixJson(p.worldFromObject)},
+            {"camera_position_m", {inCamera.x, inCamera.y, inCamera.z}},
+            {"camera_from_object", matrixJson(cameraFromObject)}};
+}
+
+} // namespace
 
 Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
                const fs::path& colour)
@@ -175,7 +199,8 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
                            {"class_id", o.semanticClass},
                            {"visible_pixels", o.visiblePixels},
                            {"box_px", {o.box_px.x, o.box_px.y, o.box_px.z, o.box_px.w}},
-                           {"box3d_m", box3d}});
+                           {"box3d_m", box3d},
+                           {"pose", poseJson(o.pose, c)}});
     }
     j["objects"] = objects;
     Json sea = {{"level_m", scene.sea.level_m}, {"significant_wave_height_m", significantHeight_m}};
@@ -200,7 +225,7 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
 
 void writeFrameJson(const Json& json, const fs::path& colour)
 {
-    writeFileAtomically(labelFilePaths(colour)[5], json.dump(2) + "\n");
+    writeFileAtomically(labelFilePaths(colour).back(), json.dump(2) + "\n");
 }
 
 void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,

@@ -4,6 +4,7 @@
 //   NAME.normal.npy    float32 (H, W, 3): unit world normal; 0: sky
 //   NAME.semantic.npy  uint16 (H, W): class ids (NAME.json's "classes")
 //   NAME.instance.npy  uint16 (H, W): 0, or an object's instance id
+//   NAME.depth.npy     float32 (H, W): z-depth, metres along the optical axis; inf: sky
 //   NAME.labels.png    the classes and instances in colour, for people
 //   NAME.json          camera, horizon, objects and their boxes, sea state
 // (docs/LABELS.md describes each field.)

@@ -214,7 +214,8 @@ int main(int argc, char** argv)
         ->capture_default_str();
     renderCommand->add_flag("--labels", render.labels,
                             "Also write each frame's ground truth beside its PNG: NAME.range.npy, NAME.normal.npy, "
-                            "NAME.semantic.npy, NAME.instance.npy, NAME.labels.png and NAME.json (docs/LABELS.md)");
+                            "NAME.semantic.npy, NAME.instance.npy, NAME.depth.npy, NAME.labels.png and NAME.json "
+                            "(docs/LABELS.md)");
     addOutputOptions(*renderCommand, render.outputSettings);
 
     swell::app::BenchOptions bench;

@@ -24,6 +24,7 @@ PyLabels toPython(FrameLabels&& labels)
     PyLabels out;
     out.size = labels.size;
     const std::vector<py::ssize_t> shape = imageShape(labels.size);
+    out.depth_m = arrayOwning<float>(zDepthOf(labels), shape);
     out.range_m = arrayOwning<float>(std::move(labels.range_m), shape);
     out.normal = arrayOwning<float>(std::move(labels.normal), {labels.size.y, labels.size.x, 3});
     out.semantic = arrayOwning<std::uint16_t>(std::move(labels.semantic), shape);
@@ -118,6 +119,22 @@ void bindLabels(py::module_& m)
             },
             "(8, 3): the corners of its mesh's bounding box in its own axes, placed at its pose this frame; "
             "absolute world, m.")
+        .def_property_readonly(
+            "world_from_object", [](const ObjectLabel& o) { return toArray(o.pose.worldFromObject); },
+            "4x4, its model's points (m, its own axes) to absolute world: T(position_m) Ry(yaw) Rz(pitch) Rx(roll) "
+            "S(scale) (docs/LABELS.md).")
+        .def_property_readonly(
+            "position_m", [](const ObjectLabel& o) { return toArray(o.pose.position_m); },
+            "(3,): its model's origin, absolute world, m.")
+        .def_property_readonly("yaw_deg", [](const ObjectLabel& o) { return o.pose.yaw_deg; },
+                               "About the world's +y, as the scene's objects[].yaw_deg, degrees.")
+        .def_property_readonly("pitch_deg", [](const ObjectLabel& o) { return o.pose.pitch_deg; },
+                               "About its model's +z after the yaw (+x up for > 0), degrees.")
+        .def_property_readonly("roll_deg", [](const ObjectLabel& o) { return o.pose.roll_deg; },
+                               "About its model's +x after the pitch (+y towards +z for > 0), degrees.")
+        .def_property_readonly("heading_deg", [](const ObjectLabel& o) { return o.pose.heading_deg; },
+                               "The bearing of its model's +x axis, from -z towards +x, 0..360 degrees.")
+        .def_property_readonly("scale", [](const ObjectLabel& o) { return o.pose.scale; }, "Its uniform scale.")
         .def("__repr__", [](const ObjectLabel& o) {
             return "<swell.ObjectLabel " + std::to_string(o.instance) + " " + o.className + ", "
                    + std::to_string(o.visiblePixels) + " px>";
@@ -130,6 +147,9 @@ void bindLabels(py::module_& m)
                                "(width, height), pixels.")
         .def_readonly("range_m", &PyLabels::range_m,
                       "float32 (H, W): metres from the eye along each pixel's ray to what it shows; inf for the sky.")
+        .def_readonly("depth_m", &PyLabels::depth_m,
+                      "float32 (H, W): z-depth, metres along the camera's optical axis to the point range_m measures; "
+                      "inf for the sky.")
         .def_readonly("normal", &PyLabels::normal, "float32 (H, W, 3): the unit surface normal, world axes; 0 for the sky.")
         .def_readonly("semantic", &PyLabels::semantic,
                       "uint16 (H, W): the class id (classes[id]): 1 sky, 2 water, 3 whitecap foam, 4 wake foam, "

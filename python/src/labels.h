@@ -17,6 +17,7 @@ namespace swell::python {
 struct PyLabels {
     glm::ivec2 size{0};
     pybind11::array_t<float> range_m;         // (H, W)
+    pybind11::array_t<float> depth_m;         // (H, W): z-depth
     pybind11::array_t<float> normal;          // (H, W, 3)
     pybind11::array_t<std::uint16_t> semantic; // (H, W)
     pybind11::array_t<std::uint16_t> instance; // (H, W)

@@ -6,6 +6,7 @@
 #include "swell/gpu/label_classes.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -46,7 +47,10 @@ std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::d
     if (p.z <= 0.0)
         return std::nullopt;
     const LensDistortion lens{camera.k1, camera.k2, camera.k3, camera.p1, camera.p2};
-    const glm::dvec2 d = distort(lens, glm::dvec2(p.x / p.z, p.y / p.z));
+    const glm::dvec2 u(p.x / p.z, p.y / p.z);
+    if (!insideFold(lens, u))
+        return std::nullopt; // the lens shows another ray where distort() puts it
+    const glm::dvec2 d = distort(lens, u);
     return glm::dvec2(camera.fx_px * d.x + camera.cx_px, camera.fy_px * d.y + camera.cy_px);
 }
 
@@ -94,6 +98,31 @@ HorizonLine horizonOf(const CameraCalibration& camera)
     return h;
 }
 
+std::vector<glm::dvec2> horizonCurveOf(const CameraCalibration& c, const HorizonLine& horizon)
+{
+    std::vector<glm::dvec2> points;
+    const LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    const glm::dvec3 l = horizon.line;
+    if (lens.none() || (l.x == 0.0 && l.y == 0.0))
+        return points;
+    // Points along the pinhole line (its foot nearest the principal point,
+    // then every 4 px along it both ways), each through the lens.
+    const glm::dvec2 centre(c.cx_px, c.cy_px), along(-l.y, l.x);
+    const glm::dvec2 foot = centre - (glm::dot(glm::dvec2(l), centre) + l.z) * glm::dvec2(l.x, l.y);
+    const double reach = 2.0 * std::hypot(double(c.size.x), double(c.size.y));
+    for (double t = -reach; t <= reach; t += 4.0) {
+        const glm::dvec2 p = foot + t * along;
+        const glm::dvec2 u((p.x - c.cx_px) / c.fx_px, (p.y - c.cy_px) / c.fy_px);
+        if (!insideFold(lens, u))
+            continue; // past the fold this point of the line is shown nowhere
+        const glm::dvec2 d = distort(lens, u);
+        const glm::dvec2 q(d.x * c.fx_px + c.cx_px, d.y * c.fy_px + c.cy_px);
+        if (q.x >= 0.0 && q.y >= 0.0 && q.x <= c.size.x && q.y <= c.size.y)
+            points.push_back(q);
+    }
+    return points;
+}
+
 double horizonDip_rad(double eyeHeight_m)
 {
     constexpr double kEarthRadius_m = 6371000.0; // IUGG mean radius
@@ -116,8 +145,54 @@ std::vector<glm::dvec2> trueHorizonOf(const CameraCalibration& camera, double ey
     return points;
 }
 
+ObjectPose objectPoseOf(const glm::dmat4& worldFromObject)
+{
+    ObjectPose p;
+    p.worldFromObject = worldFromObject;
+    p.position_m = glm::dvec3(worldFromObject[3]);
+    const glm::dmat3 scaled(worldFromObject);
+    p.scale = glm::length(scaled[0]);
+    const glm::dmat3 r = p.scale > 0.0 ? scaled / p.scale : glm::dmat3(1.0);
+    // R = Ry(yaw) Rz(pitch) Rx(roll): R e_x = (cos yaw cos pitch, sin pitch,
+    // -sin yaw cos pitch); the y components of R e_y and R e_z are
+    // cos pitch cos roll and -cos pitch sin roll.
+    p.pitch_deg = glm::degrees(std::asin(std::clamp(r[0].y, -1.0, 1.0)));
+    p.yaw_deg = glm::degrees(std::atan2(-r[0].z, r[0].x));
+    p.roll_deg = glm::degrees(std::atan2(-r[2].y, r[1].y));
+    // The bow's bearing on the sea: from -z towards +x.
+    const double bearing = glm::degrees(std::atan2(r[0].x, -r[0].z));
+    p.heading_deg = bearing < 0.0 ? bearing + 360.0 : bearing;
+    return p;
+}
+
+glm::dmat4 worldFromObjectOf(glm::dvec3 position_m, double yaw_deg, double pitch_deg, double roll_deg, double scale)
+{
+    const glm::dmat4 yaw = glm::rotate(glm::dmat4(1.0), glm::radians(yaw_deg), glm::dvec3(0, 1, 0));
+    const glm::dmat4 pitch = glm::rotate(glm::dmat4(1.0), glm::radians(pitch_deg), glm::dvec3(0, 0, 1));
+    const glm::dmat4 roll = glm::rotate(glm::dmat4(1.0), glm::radians(roll_deg), glm::dvec3(1, 0, 0));
+    return glm::translate(glm::dmat4(1.0), position_m) * yaw * pitch * roll * glm::scale(glm::dmat4(1.0), glm::dvec3(scale));
+}
+
+std::vector<float> zDepthOf(const FrameLabels& labels)
+{
+    const CameraCalibration& c = labels.camera;
+    const LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    std::vector<float> depth(labels.range_m.size());
+    for (int y = 0; y < labels.size.y; ++y)
+        for (int x = 0; x < labels.size.x; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(labels.size.x) + std::size_t(x);
+            if (i >= depth.size())
+                return depth;
+            const glm::dvec2 u = undistort(lens, {(x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px});
+            depth[i] = float(double(labels.range_m[i]) / std::sqrt(1.0 + glm::dot(u, u)));
+        }
+    return depth;
+}
+
 std::string objectClassOf(const SceneObject& object)
 {
+    if (!object.className.empty())
+        return object.className;
     if (object.path.starts_with(kBuiltinObjectPrefix))
         return object.path.substr(kBuiltinObjectPrefix.size());
     return std::filesystem::path(object.path).stem().string();

@@ -47,8 +47,6 @@ glm::dvec2 undistort(const LensDistortion& l, glm::dvec2 d)
     return u;
 }
 
-namespace detail {
-
 namespace {
 
 // The determinant of distort()'s Jacobian at u: positive where the lens
@@ -63,6 +61,26 @@ double jacobian(const LensDistortion& l, glm::dvec2 u)
     const double yy = radial + 2.0 * y * y * dRadial + 6.0 * l.p1 * y + 2.0 * l.p2 * x;
     return xx * yy - xy * xy;
 }
+
+// Steps along a ray from the centre at which insideFold() looks at the
+// Jacobian: a point past the fold by more than 1/256 of its way out is found.
+constexpr int kInsideFoldSteps = 256;
+
+} // namespace
+
+bool insideFold(const LensDistortion& lens, glm::dvec2 u)
+{
+    if (lens.none())
+        return true;
+    for (int i = 1; i <= kInsideFoldSteps; ++i)
+        if (!(jacobian(lens, u * (double(i) / kInsideFoldSteps)) > 0.0))
+            return false;
+    return true;
+}
+
+namespace detail {
+
+namespace {
 
 // Every pixel corner along the output's border, in pixels.
 std::vector<glm::dvec2> borderPixels(glm::ivec2 size)

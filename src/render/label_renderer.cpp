@@ -105,6 +105,8 @@ std::vector<ObjectLabel> LabelRenderer::objectLabels(RenderContext& context,
         o.className = objectClassOf(scene.objects[i]);
         o.semanticClass =
             std::uint16_t(std::find(classes.begin(), classes.end(), o.className) - classes.begin());
+        if (i < poses.size())
+            o.pose = objectPoseOf(poses[i]);
         if (i < world.meshBounds_m.size() && i < poses.size()) {
             const auto& [lo, hi] = world.meshBounds_m[i];
             for (int c = 0; c < 8; ++c) {

@@ -4,6 +4,7 @@
 #include "core/counter_random.h"
 #include "core/lens_fold.h"
 #include "swell/error.h"
+#include "swell/gpu/label_classes.h"
 #include "swell/renderer.h"
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 namespace swell {
 
@@ -72,6 +74,65 @@ void distortImage(const Image& wide, Image& out, const LensDistortion& lens, con
         }
 }
 
+// Whether two pixels of the pinhole frame's labels show one surface, with a
+// finite range: one object, or the water (foam or not), or the island.
+bool oneSurface(const FrameLabels& wide, std::size_t a, std::size_t b)
+{
+    auto isWater = [](std::uint16_t s) {
+        return s == SWELL_LABEL_WATER || s == SWELL_LABEL_WHITECAP_FOAM || s == SWELL_LABEL_WAKE_FOAM;
+    };
+    const std::uint16_t sa = wide.semantic[a], sb = wide.semantic[b];
+    return std::isfinite(wide.range_m[b]) && wide.instance[a] == wide.instance[b] &&
+           (sa == sb || (isWater(sa) && isWater(sb)));
+}
+
+// The range along the ray through s (the pinhole frame's pixels, continuous)
+// from the labels of the pinhole pixel (sx, sy) nearest it (docs/LABELS.md:
+// a range is the pixel centre's ray's). On a plane the inverse of the depth
+// along the optical axis is affine in the pixel's place (a plane n . X = c
+// holds 1 / Z = n . (x, y, 1) / c), so it is carried from the nearest
+// pixel's centre to s along each axis: exact on a plane, second order on a
+// curved surface. Along each axis it is interpolated towards the neighbour
+// on s's side where that neighbour continues the surface, else extrapolated
+// from the other side's (across an occluding edge, the two sides' slopes of
+// the inverse depth differ many times over); neither, not carried.
+float rangeAlongRay(const FrameLabels& wide, double pinholeFocal_px, glm::dvec2 s, int sx, int sy)
+{
+    const std::size_t w = std::size_t(wide.size.x);
+    const std::size_t from = std::size_t(sy) * w + std::size_t(sx);
+    const float nearest_m = wide.range_m[from];
+    if (!std::isfinite(nearest_m) || !(nearest_m > 0.0))
+        return nearest_m;
+    // Inverse depth of a pixel: |(x, y, 1)| / range, with (x, y) its
+    // centre's normalised place (the frame is centred on the optical axis).
+    auto inverseDepth = [&](int px, int py) {
+        const glm::dvec2 u = (glm::dvec2(px + 0.5, py + 0.5) - 0.5 * glm::dvec2(wide.size)) / pinholeFocal_px;
+        return std::sqrt(1.0 + glm::dot(u, u)) / double(wide.range_m[std::size_t(py) * w + std::size_t(px)]);
+    };
+    const double here = inverseDepth(sx, sy);
+    const glm::dvec2 offset = s - glm::dvec2(sx + 0.5, sy + 0.5);
+    // The slope of the inverse depth along one axis (step (dx, dy)), per pixel.
+    auto slope = [&](int dx, int dy, double towards) {
+        std::optional<double> side[2]; // [0]: on s's side, [1]: the other
+        for (int k = 0; k < 2; ++k) {
+            const int sign = (towards >= 0.0) == (k == 0) ? 1 : -1;
+            const int nx = sx + sign * dx, ny = sy + sign * dy;
+            if (nx >= 0 && ny >= 0 && nx < wide.size.x && ny < wide.size.y &&
+                oneSurface(wide, from, std::size_t(ny) * w + std::size_t(nx)))
+                side[k] = sign * (inverseDepth(nx, ny) - here);
+        }
+        constexpr double kEdge = 3.0; // slopes this many times apart: an occluding edge between
+        if (side[0] && (!side[1] || std::abs(*side[0]) <= kEdge * std::abs(*side[1])))
+            return *side[0];
+        return side[1].value_or(0.0);
+    };
+    const double atRay = here + slope(1, 0, offset.x) * offset.x + slope(0, 1, offset.y) * offset.y;
+    if (!(atRay > 0.0))
+        return nearest_m; // past the surface's vanishing line: the nearest pixel's own range
+    const glm::dvec2 u = (s - 0.5 * glm::dvec2(wide.size)) / pinholeFocal_px;
+    return float(std::sqrt(1.0 + glm::dot(u, u)) / atRay);
+}
+
 FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, const CameraCalibration& c)
 {
     FrameLabels out;
@@ -83,13 +144,14 @@ FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, c
     out.instance.resize(pixels);
     for (int y = 0; y < c.size.y; ++y)
         for (int x = 0; x < c.size.x; ++x) {
-            // Nearest: a label is never a blend of two.
+            // Nearest: a label is never a blend of two; the range the
+            // nearest's surface's along this pixel's own centre ray.
             const glm::dvec2 s = sourceOf(lens, c, wide.size, x, y);
             const int sx = std::clamp(int(std::floor(s.x)), 0, wide.size.x - 1);
             const int sy = std::clamp(int(std::floor(s.y)), 0, wide.size.y - 1);
             const std::size_t from = std::size_t(sy) * std::size_t(wide.size.x) + std::size_t(sx);
             const std::size_t to = std::size_t(y) * std::size_t(c.size.x) + std::size_t(x);
-            out.range_m[to] = wide.range_m[from];
+            out.range_m[to] = rangeAlongRay(wide, detail::kPinholeScale * c.fy_px, s, sx, sy);
             out.normal[to] = wide.normal[from];
             out.semantic[to] = wide.semantic[from];
             out.instance[to] = wide.instance[from];
@@ -99,20 +161,7 @@ FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, c
     out.objects = wide.objects;
     out.camera = c;
     out.horizon = horizonOf(c);
-    // The horizon's curve: points along the pinhole line, through the lens.
-    const glm::dvec3 l = out.horizon.line;
-    if (l.x != 0.0 || l.y != 0.0) {
-        const glm::dvec2 centre(c.cx_px, c.cy_px), along(-l.y, l.x);
-        const glm::dvec2 foot = centre - (glm::dot(glm::dvec2(l), centre) + l.z) * glm::dvec2(l.x, l.y);
-        const double reach = 2.0 * std::hypot(double(c.size.x), double(c.size.y));
-        for (double t = -reach; t <= reach; t += 4.0) {
-            const glm::dvec2 p = foot + t * along;
-            const glm::dvec2 d = distort(lens, {(p.x - c.cx_px) / c.fx_px, (p.y - c.cy_px) / c.fy_px});
-            const glm::dvec2 q(d.x * c.fx_px + c.cx_px, d.y * c.fy_px + c.cy_px);
-            if (q.x >= 0.0 && q.y >= 0.0 && q.x <= c.size.x && q.y <= c.size.y)
-                out.horizon.curve_px.push_back(q);
-        }
-    }
+    out.horizon.curve_px = horizonCurveOf(c, out.horizon);
     measureObjectBoxes(out);
     return out;
 }

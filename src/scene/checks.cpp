@@ -3,6 +3,7 @@
 
 #include "core/asset_path.h"
 #include "core/input_file.h"
+#include "swell/dataset/labels.h"
 #include "swell/gpu/limits.h"
 #include "swell/scene/parameters.h"
 #include "swell/scene/scene_file.h"
@@ -63,6 +64,24 @@ void checkFile(const fs::path& base, const fs::path& resolved, const std::string
     } catch (const InputError& e) {
         fail(place, fmt::format("{}: '{}': {}", name, shortText(file.string()), e.message()));
     }
+}
+
+// An object's class (empty: its model's name) names no class the labels
+// give the sea, the sky or the island: one id a name in the labels and COCO.
+void checkClass(const SceneObject& o, std::size_t i, const Places& places)
+{
+    if (o.className.empty())
+        return;
+    const std::string key = fmt::format("objects[{}].class", i);
+    if (hasControlCharacter(o.className))
+        fail(places.first({key, fmt::format("objects[{}]", i)}), fmt::format("{} contains a control character", key));
+    std::vector<std::string> fixed = labelClassesOf(Scene{});
+    std::erase(fixed, std::string());
+    if (std::find(fixed.begin(), fixed.end(), o.className) != fixed.end())
+        fail(places.first({key, fmt::format("objects[{}]", i)}),
+             fmt::format("{} = \"{}\" is the name of a class the labels give to what is not an object ({}); name "
+                         "the object's own",
+                         key, o.className, fmt::join(fixed, ", ")));
 }
 
 // A floating object's body keys agree: it gives its mass one way, and its
@@ -203,8 +222,10 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base, 
                                               name, scene.camera.path[i].time_s, i - 1, scene.camera.path[i - 1].time_s));
         }
 
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         checkBody(scene.objects[i], i, places);
+        checkClass(scene.objects[i], i, places);
+    }
 
     if (hasEffect(scope, ParameterEffect::Waves))
         checkWaves(scene, places);

@@ -27,7 +27,7 @@ namespace {
 // tables ([waves], [wake], ...) are not listed here: the parameter table says
 // which they are (parameterTables), so a table added there is read without a
 // second list to keep in step.
-enum class Shape { Table, TableList, Faces, ObjectPath, HullNode };
+enum class Shape { Table, TableList, Faces, ObjectPath, HullNode, ObjectClass };
 
 struct StructuralKey {
     std::string_view key;
@@ -41,6 +41,7 @@ constexpr StructuralKey kStructure[] = {
     {"objects", Shape::TableList, ParameterList::None},
     {"objects.path", Shape::ObjectPath, ParameterList::Objects},
     {"objects.hull_node", Shape::HullNode, ParameterList::Objects},
+    {"objects.class", Shape::ObjectClass, ParameterList::Objects},
     {"camera.path", Shape::TableList, ParameterList::None},
 };
 
@@ -214,6 +215,10 @@ private:
                 break;
             case Shape::HullNode:
                 scene_.objects[item].hullNode = readName(*node, childShown);
+                places_.add(childShown, node->source());
+                break;
+            case Shape::ObjectClass:
+                scene_.objects[item].className = readClass(*node, childShown);
                 places_.add(childShown, node->source());
                 break;
             }
@@ -396,6 +401,25 @@ private:
                                                         typeName(node)));
         if (s->get().empty())
             fail(places_.of(node.source()), fmt::format("{} is empty; it must name a node of the model", shown));
+        if (hasControlCharacter(s->get()))
+            fail(places_.of(node.source()), fmt::format("{} contains a control character", shown));
+        return s->get();
+    }
+
+    // An object's class: a non-empty string without control characters
+    // (the rest, a fixed class's name, is validateScene()'s, for scenes made
+    // in code too).
+    std::string readClass(const toml::node& node, const std::string& shown)
+    {
+        const auto* s = node.as_string();
+        if (s == nullptr)
+            fail(places_.of(node.source()), fmt::format("{} must be a string (the object's class in the labels), not {}",
+                                                        shown, typeName(node)));
+        if (s->get().empty())
+            fail(places_.of(node.source()),
+                 fmt::format("{} is empty; give the object's class (\"sailing_yacht\"), or leave the key out for its "
+                             "model's name",
+                             shown));
         if (hasControlCharacter(s->get()))
             fail(places_.of(node.source()), fmt::format("{} contains a control character", shown));
         return s->get();

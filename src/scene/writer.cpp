@@ -108,6 +108,8 @@ std::string saveScene(const Scene& scene)
         writeLine(out, "path", tomlString(scene.objects[i].path), "");
         if (!scene.objects[i].hullNode.empty())
             writeLine(out, "hull_node", tomlString(scene.objects[i].hullNode), "the glTF node of the closed hull volume");
+        if (!scene.objects[i].className.empty())
+            writeLine(out, "class", tomlString(scene.objects[i].className), "its class in the labels");
         writeParameters(out, scene, "objects", ParameterList::Objects, i);
     }
 

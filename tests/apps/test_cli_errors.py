@@ -66,6 +66,8 @@ SCENES = [
     ("lens_radial_fold_150", "[camera]\nfov_y_deg = 150.0\ndistortion_k1 = -1.0\ndistortion_k2 = -1.0\n"
      "distortion_k3 = -1.0\n", "3:", "camera.distortion_k3 = -1"),
     ("clouds_coverage", "[sky.clouds]\ncoverage = 0.5\n", "2:1", "did you mean 'sky.clouds.cover'"),
+    # An object's class key, empty (issue 46): at its place, nothing written.
+    ("object_class_empty", "[[objects]]\npath = \"builtin:buoy\"\nclass = \"\"\n", "3:9", "objects[0].class is empty"),
     # The sun by its angles, as sweeps vary it: both keys, and not with another form.
     ("sun_elevation_alone", "[sun]\nelevation_deg = 20.0\n", "2:", "sun.azimuth_deg is missing"),
     ("sun_elevation_misspelt", "[sun]\nelevation = 20.0\nazimuth_deg = 0.0\n", "2:1",

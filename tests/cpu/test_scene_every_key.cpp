@@ -199,14 +199,15 @@ bool belongsToOtherSource(const Parameter& p, Waves waves)
 }
 
 // Every parameter of the table at its default, plus the keys that are not
-// parameters (sky faces, an object's path and hull node), in one tree; with
-// `changed` written as `changedValue` instead of its default.
+// parameters (sky faces, an object's path, hull node and class), in one
+// tree; with `changed` written as `changedValue` instead of its default.
 TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::string& changedValue = {})
 {
     TomlTable root;
     TomlTable object, wave, cameraKey;
     object.values.emplace_back("path", "\"hull.glb\"");
     object.values.emplace_back("hull_node", "\"Hull\"");
+    object.values.emplace_back("class", "\"tug\"");
     for (const Parameter& p : parameters()) {
         const bool sunByAngles = changed != nullptr && anglesOfTheSun(*changed);
         if (sunByAngles && p.key == "sun.direction")
@@ -264,6 +265,7 @@ TEST(SceneEveryKey, EveryDocumentedKeyLoadsInEachForm)
             // Every value written is the one read (all defaults, item 0 of each list).
             ASSERT_EQ(scene.objects.size(), 1u);
             EXPECT_EQ(scene.objects[0].hullNode, "Hull");
+            EXPECT_EQ(scene.objects[0].className, "tug");
             EXPECT_EQ(scene.sky.cubemapFaces.size(), 6u);
             ASSERT_EQ(scene.camera.path.size(), 1u);
             EXPECT_EQ(scene.sea.wind.has_value(), waves == Waves::Wind);

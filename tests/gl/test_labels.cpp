@@ -7,6 +7,7 @@
 #include "support/gl_test.h"
 
 #include "assets/mesh_data.h"
+#include "support/mesh_ray_cast.h"
 #include "support/open_sea.h"
 #include "swell/dataset/labels.h"
 #include "swell/dataset/sensor.h"
@@ -198,22 +199,7 @@ TEST_F(Labels, AnObjectsPixelsBoxAndRangesAreItsOwn)
             if (!isBuoy(x, y))
                 continue;
             const glm::dvec3 d = glm::normalize(pixelRay(labels.camera, x, y));
-            double nearest = INFINITY;
-            for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-                glm::dvec3 v[3];
-                for (int k = 0; k < 3; ++k)
-                    v[k] = glm::dvec3(pose * glm::dvec4(glm::dvec3(mesh.vertices[mesh.indices[t + std::size_t(k)]].position), 1.0));
-                const glm::dvec3 e1 = v[1] - v[0], e2 = v[2] - v[0], p = glm::cross(d, e2);
-                const double det = glm::dot(e1, p);
-                if (std::abs(det) < 1e-15)
-                    continue;
-                const glm::dvec3 s0 = eye - v[0];
-                const double u = glm::dot(s0, p) / det;
-                const glm::dvec3 q = glm::cross(s0, e1);
-                const double w = glm::dot(d, q) / det, t0 = glm::dot(e2, q) / det;
-                if (u >= 0.0 && w >= 0.0 && u + w <= 1.0 && t0 > 0.0)
-                    nearest = std::min(nearest, t0);
-            }
+            const double nearest = swell::test::rayCastMesh(mesh, pose, eye, d);
             if (!std::isfinite(nearest)) {
                 ++misses;
                 continue;

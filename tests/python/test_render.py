@@ -53,7 +53,8 @@ class SameAsTheExecutable(unittest.TestCase):
 
     def test_the_label_arrays_are_the_executables(self):
         h, w = SIZE[1], SIZE[0]
-        expected = {"range_m": ("range", np.float32, (h, w)), "normal": ("normal", np.float32, (h, w, 3)),
+        expected = {"range_m": ("range", np.float32, (h, w)), "depth_m": ("depth", np.float32, (h, w)),
+                    "normal": ("normal", np.float32, (h, w, 3)),
                     "semantic": ("semantic", np.uint16, (h, w)), "instance": ("instance", np.uint16, (h, w))}
         for name, (suffix, dtype, shape) in expected.items():
             ours = getattr(self.labels, name)
@@ -90,6 +91,15 @@ class SameAsTheExecutable(unittest.TestCase):
                              (theirs["instance"], theirs["class"], theirs["class_id"], theirs["visible_pixels"],
                               theirs["box_px"]))
             np.testing.assert_array_equal(ours.box3d_m, np.array(theirs["box3d_m"]))
+            # The pose, in world axes and in the camera's.
+            pose = theirs["pose"]
+            np.testing.assert_array_equal(ours.world_from_object, np.array(pose["world_from_object"]))
+            np.testing.assert_array_equal(ours.position_m, np.array(pose["position_m"]))
+            self.assertEqual((ours.yaw_deg, ours.pitch_deg, ours.roll_deg, ours.heading_deg, ours.scale),
+                             (pose["yaw_deg"], pose["pitch_deg"], pose["roll_deg"], pose["heading_deg"], pose["scale"]))
+            camera_from_object = camera.camera_from_world @ ours.world_from_object
+            np.testing.assert_allclose(np.array(pose["camera_from_object"]), camera_from_object, atol=1e-9)
+            np.testing.assert_allclose(np.array(pose["camera_position_m"]), camera_from_object[:3, 3], atol=1e-9)
         # The calibration computed on the CPU for the same camera is the frame's.
         cpu = swell.calibration_of(self.camera, SIZE)
         np.testing.assert_array_equal(cpu.camera_from_world, camera.camera_from_world)

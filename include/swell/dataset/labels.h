@@ -42,7 +42,9 @@ struct SWELL_API CameraCalibration {
 SWELL_API CameraCalibration calibrationOf(const Camera& camera, glm::ivec2 size);
 
 // Where a world point (absolute, m) lands in the image, pixels, through the
-// lens's distortion when it has one; empty behind the camera.
+// lens's distortion when it has one; empty behind the camera, and empty
+// past the lens's fold (insideFold(), swell/dataset/sensor.h), where the
+// image shows another ray at the place the distortion gives.
 SWELL_API std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::dvec3 world_m);
 
 // The sea's horizon as it is drawn: the vanishing line of the sea-level
@@ -55,10 +57,13 @@ struct SWELL_API HorizonLine {
     glm::dvec2 from_px{0.0}, to_px{0.0}; // where it meets the image's border (when visible)
     // Through a distorting lens the horizon is a curve: points along it in
     // the image (every 4 px of the line), the line above holding for the
-    // undistorted (pinhole) image. Empty for a pinhole.
+    // undistorted (pinhole) image. Only the line's points inside the lens's
+    // fold, whose rays the image shows; empty for a pinhole.
     std::vector<glm::dvec2> curve_px;
 };
 SWELL_API HorizonLine horizonOf(const CameraCalibration& camera);
+// The curve_px of `horizon` (horizonOf(camera)) through the camera's lens.
+SWELL_API std::vector<glm::dvec2> horizonCurveOf(const CameraCalibration& camera, const HorizonLine& horizon);
 
 // The true horizon of a round Earth for an eye eyeHeight_m above the sea:
 // its geometric dip below the horizontal, rad, acos(R / (R + h)) with the
@@ -70,6 +75,35 @@ SWELL_API double horizonDip_rad(double eyeHeight_m);
 // round the eye, projected through the lens), every ~2 px; empty when none
 // falls in the image.
 SWELL_API std::vector<glm::dvec2> trueHorizonOf(const CameraCalibration& camera, double eyeHeight_m);
+
+// An object's pose: where its model's axes (m, as its glTF file or the
+// built-in gives them: the built-in boat's bow at +x, up +y) stand in the
+// world. Its rotation is R = Ry(yaw) Rz(pitch) Rx(roll), each right-handed
+// about the axis named: yaw about the world's +y (the sense of the scene's
+// objects[].yaw_deg, so a fixed object's yaw_deg is its own), then pitch
+// about the model's +z (+x, the bow, up for pitch > 0), then roll about the
+// model's +x (+y, the deck's up, towards +z for roll > 0: a boat heeling to
+// starboard, +z at its bow's right). world_from_object = T(position_m)
+// R S(scale).
+struct SWELL_API ObjectPose {
+    glm::dmat4 worldFromObject{1.0}; // model axes (m) to absolute world (m, y up), scale included
+    glm::dvec3 position_m{0.0};      // its model's origin, absolute world, m
+    double yaw_deg = 0.0;            // -180..180
+    double pitch_deg = 0.0;          // -90..90
+    double roll_deg = 0.0;           // -180..180
+    // The bearing of its model's +x axis (the built-in boat's bow) on the
+    // sea, measured as headings are (docs/SCENE.md: from -z, north, towards
+    // +x, east), 0..360: 90 - yaw_deg for an object that does not tilt.
+    double heading_deg = 0.0;
+    double scale = 1.0;
+};
+// The pose a model-to-world transform (a rotation, a uniform scale and a
+// translation, as the renderer places objects) describes.
+SWELL_API ObjectPose objectPoseOf(const glm::dmat4& worldFromObject);
+// The transform of a pose's position, angles and scale (the inverse of
+// objectPoseOf, up to the angles' ranges).
+SWELL_API glm::dmat4 worldFromObjectOf(glm::dvec3 position_m, double yaw_deg, double pitch_deg, double roll_deg,
+                                       double scale);
 
 // One scene object in a frame.
 struct SWELL_API ObjectLabel {
@@ -84,6 +118,8 @@ struct SWELL_API ObjectLabel {
     // Its mesh's bounding box in its own axes, placed at its pose: the
     // eight corners, absolute world, m.
     std::array<glm::dvec3, 8> box3d_m{};
+    // Its pose this frame (a floating body's heave, roll and pitch included).
+    ObjectPose pose;
 };
 
 struct SWELL_API FrameLabels {
@@ -112,8 +148,16 @@ struct SWELL_API FrameLabels {
     std::vector<glm::dvec2> trueHorizon_px;
 };
 
-// A scene object's class: the built-in's name ("boat" for "builtin:boat"),
-// else its model file's name without folder or extension.
+// Each pixel's z-depth, m: the depth along the camera's optical axis
+// (OpenCV's camera z) of the point its range measures, range / sqrt(1 + x^2
+// + y^2) with (x, y) the normalised place of the pixel's centre ray
+// (undistorted through the calibration's lens); +infinity where the range
+// is. Rows top first, as range_m.
+SWELL_API std::vector<float> zDepthOf(const FrameLabels& labels);
+
+// A scene object's class: its `class` key (SceneObject::className) when
+// given, else the built-in's name ("boat" for "builtin:boat"), else its
+// model file's name without folder or extension.
 SWELL_API std::string objectClassOf(const SceneObject& object);
 
 // The class names of a scene: the fixed ones, then each object class once.

@@ -42,6 +42,13 @@ SWELL_API glm::dvec2 distort(const LensDistortion& lens, glm::dvec2 undistorted)
 // The inverse, by fixed-point iteration (converging where the lens maps
 // the image one to one; within 1e-12 or after 50 steps).
 SWELL_API glm::dvec2 undistort(const LensDistortion& lens, glm::dvec2 distorted);
+// Whether the ray at normalised undistorted coordinates `undistorted` lies
+// inside the lens's fold: the distortion keeps the image's orientation all
+// the way from the centre out to it (its Jacobian stays positive), so
+// distort() gives the one place in the image that shows that ray. Past the
+// fold, distort() lands on a place that shows another ray, nearer the axis
+// (a radial k1 < 0 alone folds at r = 1 / sqrt(-3 k1)): no pixel shows it.
+SWELL_API bool insideFold(const LensDistortion& lens, glm::dvec2 undistorted);
 
 // Why `lens` cannot draw an image of `size` pixels at fovY_deg degrees of
 // vertical field ("" when it can), by the one rule of docs/SCENE.md ("The

@@ -211,6 +211,9 @@ struct SWELL_API SceneObject {
     // the drawn model, drawn into depth only so no water shows inside an open
     // hull, and the body's shape for buoyancy. Empty: none (built-ins bring their own).
     std::string hullNode{};
+    // Its class in the labels (docs/LABELS.md): what a detector is to call
+    // it. Empty: its model's name (objectClassOf, swell/dataset/labels.h).
+    std::string className{};
 
     // Whether this object is a floating rigid body.
     bool isRigidBody() const { return floats && (mass_kg > 0.0 || density_kg_per_m3 > 0.0); }
