@@ -85,6 +85,12 @@ void MainPass::drawWaterInTwoPasses(RenderContext& context, ViewState& state, co
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SWELL_STORAGE_WATER_TILES, state.waterVisibility.tiles());
         const glm::ivec2 tiles = state.waterVisibility.tileGrid();
         glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
+        // No program, before the next: Mesa keeps a reference to the first
+        // program made current after a compute program (as the compute
+        // stage's), which would keep the shading pass's program alive past
+        // its deletion until the next compute dispatch (the soak's GL
+        // objects left after the renderer was destroyed).
+        glUseProgram(0);
         glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     }
     const ObservedPass observed(context.telemetry, "water shading");
