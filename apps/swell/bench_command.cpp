@@ -282,7 +282,10 @@ int runBench(const BenchOptions& options)
         LodSample lod = measureLod(vertices, count, triangles, viewProj, r.size);
         lod.frame = k;
         lod.camera = camera;
-        if (const PassSample* water = r.real[size_t(k)].find("water"); water && r.pipelineStatistics) {
+        // The grid's triangles: the visibility pass's when the water is
+        // drawn in two (the shading pass's are its tiles' points).
+        const PassSample* grid = r.real[size_t(k)].find("water visibility");
+        if (const PassSample* water = grid ? grid : r.real[size_t(k)].find("water"); water && r.pipelineStatistics) {
             lod.clipInput = water->counters.clippingInputPrimitives;
             lod.clipOutput = water->counters.clippingOutputPrimitives;
             if (lod.clipInput > 0)

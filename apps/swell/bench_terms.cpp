@@ -35,13 +35,16 @@ std::vector<double> waterSeries(const std::vector<FrameSample>& frames, double P
     return values;
 }
 
-// Water fragments shaded per frame (FS invocations of the water pass), median.
+// Water fragments shaded per frame (FS invocations of the water pass, or of
+// its shading pass when it is drawn in two), median.
 double fragmentsPerFrame(const std::vector<FrameSample>& frames)
 {
     std::vector<double> values;
-    for (const FrameSample& f : frames)
-        if (const PassSample* w = waterOf(f))
+    for (const FrameSample& f : frames) {
+        const PassSample* shading = f.find("water shading");
+        if (const PassSample* w = shading ? shading : waterOf(f))
             values.push_back(double(w->counters.fragmentShaderInvocations));
+    }
     return median(values);
 }
 

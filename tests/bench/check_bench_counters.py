@@ -147,7 +147,10 @@ def main():
         if not 0 < lod["triangles"] < 2 * first["grid_cells"] ** 2 or not 0.0 <= lod["in_frustum_share"] <= 1.0:
             problems.append(f"implausible LOD sample {lod}")
         # The LOD figures describe the triangles that frame really drew.
-        frame = first["measured_frames"][lod["frame"]]["passes"].get("water", {})
+        # The grid is the visibility pass's when the water is drawn in two
+        # (the shading pass draws a point per tile).
+        frame_passes = first["measured_frames"][lod["frame"]]["passes"]
+        frame = frame_passes.get("water visibility", frame_passes.get("water", {}))
         drawn = frame.get("counters", {}).get("primitives_submitted")
         if first["pipeline_statistics"] and drawn != lod["triangles"]:
             problems.append(f"LOD sample of frame {lod['frame']} counts {lod['triangles']} triangles, "
