@@ -89,7 +89,9 @@ void main()
 #else
     float pixelSize_m = 1e-3; // every wave, however small the pixel sees it
 #endif
-#ifdef SWELL_OCEAN_VERTEX_DATA
+    // The shading pass computes what the one pass interpolates from the
+    // vertices (water_vertex_cache.glsl says why).
+#if defined(SWELL_OCEAN_VERTEX_DATA) && !SWELL_WATER_DEFERRED
     SurfacePoint surface = oceanShadingFromVertices(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ,
                                                     vHeightScale, vOceanData, vCellSize);
 #else

@@ -52,10 +52,6 @@ void main()
 #if SWELL_SURFACE_SOURCES
     cached.v[4] = vec4(vSourceSlope, 0.0, 0.0);
 #endif
-#ifdef SWELL_OCEAN_VERTEX_DATA
-    for (int i = 0; i < SWELL_OCEAN_VERTEX_DATA; ++i)
-        cached.v[4 + SWELL_WATER_CACHED_SOURCES + i] = oceanData[i];
-#endif
     cachedWaterVertices[gl_VertexID] = cached;
 #endif
     gl_Position = passViewProj * vec4(vPosition, 1.0);

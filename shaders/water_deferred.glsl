@@ -26,9 +26,8 @@ float vHeightScale;
 #if SWELL_SURFACE_SOURCES
 vec2 vSourceSlope;
 #endif
-#ifdef SWELL_OCEAN_VERTEX_DATA
-vec4 vOceanData[SWELL_OCEAN_VERTEX_DATA];
-#endif
+// (No vOceanData: the shading pass computes the wave model's lookups per
+// pixel; water_vertex_cache.glsl says why.)
 
 // fwidth() of the rest point and of the displaced position's x and z,
 // which water.frag takes for its footprints.
@@ -101,10 +100,7 @@ void loadDeferredWater()
 #if SWELL_SURFACE_SOURCES
     vSourceSlope = SWELL_INTERPOLATED(4, w).xy;
 #endif
-#ifdef SWELL_OCEAN_VERTEX_DATA
-    for (int i = 0; i < SWELL_OCEAN_VERTEX_DATA; ++i)
-        vOceanData[i] = SWELL_INTERPOLATED(4 + SWELL_WATER_CACHED_SOURCES + i, w);
-#endif
+
     // The rest point (slots 2.w and 3.w) and the position's x and z (slot
     // 0's) at the quad's three pixels.
     mat3x4 restAndPosition = mat3x4(vec4(a.v[2].w, a.v[3].w, a.v[0].xz), vec4(b.v[2].w, b.v[3].w, b.v[0].xz),

@@ -11,7 +11,13 @@
 //   2  the surface's partial derivative along rest x, rest x relative to the render origin (m)
 //   3  the surface's partial derivative along rest z, rest z relative to the render origin (m)
 //   4  the surface sources' slopes d/dx, d/dz (with SWELL_SURFACE_SOURCES)
-//   then the wave model's vertex data (SWELL_OCEAN_VERTEX_DATA vec4s, ocean.glsl)
+// The wave model's own vertex data (ocean.glsl's SWELL_OCEAN_VERTEX_DATA:
+// the spectral model's warped lookups) is not kept: the shading pass runs
+// once a pixel, and computing the lookups there costs less than reading
+// them at three corners, which llvmpipe gathers lane by lane (the viewer's
+// storm on llvmpipe: its water 46.9 ms of CPU a frame, 53.4 and 56.5 with
+// them read; the storm at 640 x 480: 141.3 and 144.8, 159.4 and 154.5 with
+// them read, 141.9 to 152.4 in one pass).
 #ifndef SWELL_WATER_VERTEX_CACHE_GLSL
 #define SWELL_WATER_VERTEX_CACHE_GLSL
 #include "swell/gpu/bindings.h"
@@ -22,12 +28,7 @@
 #else
 #define SWELL_WATER_CACHED_SOURCES 0
 #endif
-#ifdef SWELL_OCEAN_VERTEX_DATA
-#define SWELL_WATER_CACHED_OCEAN SWELL_OCEAN_VERTEX_DATA
-#else
-#define SWELL_WATER_CACHED_OCEAN 0
-#endif
-#define SWELL_WATER_CACHED_VEC4S (4 + SWELL_WATER_CACHED_SOURCES + SWELL_WATER_CACHED_OCEAN)
+#define SWELL_WATER_CACHED_VEC4S (4 + SWELL_WATER_CACHED_SOURCES)
 
 // One vertex: the renderer sizes the buffer by this struct's stride, read
 // from the program (render/water_visibility.h).
