@@ -1,5 +1,6 @@
-// The water's shading pass (water.frag with SWELL_WATER_DEFERRED): a
-// full-screen pass that shades each water pixel once. The visibility pass
+// The water's shading pass (water.frag with SWELL_WATER_DEFERRED): drawn
+// over the screen tiles that show water (water_tiles.comp,
+// water_tiles.vert), it shades each water pixel once. The visibility pass
 // (water_visibility.frag) left in each pixel the grid triangle it shows,
 // and in the vertex cache (water_vertex_cache.glsl) that triangle's
 // vertices; here the pixel takes what the rasteriser would have handed
@@ -42,8 +43,9 @@ uint visibleTriangle(ivec2 texel)
 
 // The perspective-correct barycentric weights at NDC point ndc of the
 // triangle whose clip-space corners give the edge functions e (the rows of
-// the inverse of the matrix of their x, y and w: Olano & Greer 1997, sec.
-// 3, which hold behind the eye too, where a corner's w is negative).
+// the inverse of the matrix of their x, y and w: Olano & Greer 1997,
+// "Triangle scan conversion using 2D homogeneous coordinates", which hold
+// behind the eye too, where a corner's w is negative).
 vec3 barycentricAt(mat3 e, vec2 ndc)
 {
     vec3 l = vec3(ndc, 1.0) * e;
