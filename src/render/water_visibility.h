@@ -7,11 +7,12 @@
 // docs/PERFORMANCE.md). Here the grid is rasterised first with a fragment
 // shader that only writes which triangle a pixel shows (a visibility
 // buffer: Burns & Hunt 2013, "The Visibility Buffer"), while its vertex
-// shader keeps every vertex it shades in a buffer (the vertex cache); then
-// one full-screen pass reads, for each pixel, its triangle's three
-// vertices, interpolates them at the pixel's centre as the rasteriser
-// would (perspective-correct, shaders/water_deferred.glsl) and shades it
-// with the same code (water.frag with SWELL_WATER_DEFERRED).
+// shader keeps every vertex it shades in a buffer (the vertex cache); a
+// compute pass lists the 8 x 8 screen tiles that show water; then the
+// shading pass, a point over each such tile, reads for each pixel its
+// triangle's three vertices, interpolates them at the pixel's centre as
+// the rasteriser would (perspective-correct, shaders/water_deferred.glsl)
+// and shades it with the same code (water.frag with SWELL_WATER_DEFERRED).
 //
 // The visibility pass draws into its own target of the viewport's size: a
 // triangle per pixel and a copy of the main pass's depth, which it tests
@@ -19,7 +20,7 @@
 // main pass's framebuffer with each water pixel's colour, so what is drawn
 // after the water (the sky, the spray) is tested against the same depth
 // as after the single pass. A multisampled main pass and the wireframe
-// view keep the single pass (render/view_passes.h).
+// view keep the single pass (render/water_pass.cpp).
 #pragma once
 
 #include "render/host_copy.h"
