@@ -97,7 +97,7 @@ struct SWELL_API FrameCounters {
     // Every draw call of the views (the sky's bake and the anti-aliasing's
     // filter included) is drawCalls above; the rest of the GPU's work:
     GpuWork simulationGpu; // advanceTo()'s: the wave model's for the frame
-    GpuWork viewsGpu;      // the views': the wave model's for each (none for Swell's own models), the caustics map's clear and mip chain where drawn
+    GpuWork viewsGpu;      // the views': the wave model's for each (none for Swell's own models), the caustics map's clear and mip chain where drawn, the spray's passes, the water's tile list and clear when drawn in two passes
     SimulationCpuTime simulationCpu;
 };
 

@@ -49,6 +49,8 @@ public:
         }
         return triangles;
     }
+    // The draws drawRanges() makes: one a range of the chosen tiles.
+    int rangeCount() const { return int(counts_.size()); }
     unsigned vertexArray() const { return vao_.id(); }
     // The index buffer: triangle t is indices 3t to 3t + 2.
     unsigned indexBuffer() const { return indices_.id(); }

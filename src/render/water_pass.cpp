@@ -34,7 +34,6 @@ void MainPass::drawWater(RenderContext& context, ViewState& state, const PassSta
         drawWaterInTwoPasses(context, state, pass, inAir);
     else
         drawWaterInOnePass(context, state, inAir);
-    ++context.telemetry.counters.drawCalls;
 }
 
 void MainPass::bindWaterShading(const RenderContext& context, const ViewState& state, bool deferred, bool inAir) const
@@ -61,6 +60,7 @@ void MainPass::drawWaterInOnePass(RenderContext& context, const ViewState& state
         glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     context.telemetry.counters.waterTriangles += resources.waterGrid.draw();
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    ++context.telemetry.counters.drawCalls;
 }
 
 void MainPass::drawWaterInTwoPasses(RenderContext& context, ViewState& state, const PassState& pass, bool inAir) const
@@ -78,6 +78,7 @@ void MainPass::drawWaterInTwoPasses(RenderContext& context, ViewState& state, co
         glBindVertexArray(resources.waterGrid.vertexArray());
         context.telemetry.counters.waterTriangles +=
             resources.waterGrid.drawRanges([&](std::uint32_t first) { program.setFirstTriangle(first); });
+        context.telemetry.counters.drawCalls += resources.waterGrid.rangeCount();
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         // The tiles that show water, for the shading pass's draw.
         resources.programs.waterTiles.use();
@@ -92,6 +93,7 @@ void MainPass::drawWaterInTwoPasses(RenderContext& context, ViewState& state, co
         // objects left after the renderer was destroyed).
         glUseProgram(0);
         glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        Telemetry::addWork(state.waterVisibility.passWork(), context.telemetry.counters.viewsGpu);
     }
     const ObservedPass observed(context.telemetry, "water shading");
     glBindFramebuffer(GL_FRAMEBUFFER, pass.framebuffer);

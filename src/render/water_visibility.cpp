@@ -40,6 +40,15 @@ GLuint WaterVisibility::begin(GLuint framebuffer, glm::ivec4 viewport)
     return framebuffer_.id();
 }
 
+GpuWork WaterVisibility::passWork() const
+{
+    GpuWork work;
+    work.dispatches = 1;
+    work.barriers = 2;
+    work.bytesWritten = 4LL * size_.x * size_.y + 16;
+    return work;
+}
+
 glm::ivec2 WaterVisibility::tileGrid() const
 {
     return (size_ + SWELL_WATER_TILE - 1) / SWELL_WATER_TILE;

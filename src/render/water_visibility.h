@@ -24,6 +24,7 @@
 #pragma once
 
 #include "render/host_copy.h"
+#include "swell/debug.h"
 #include "swell/gl/handle.h"
 
 #include <glm/vec2.hpp>
@@ -51,6 +52,12 @@ public:
     GLuint tiles() const { return tiles_.id(); }
     // The tiles across and down the viewport.
     glm::ivec2 tileGrid() const;
+    // What a frame's visibility pass does beside its draws (FrameCounters::
+    // viewsGpu): the tile list's dispatch and the two barriers round it, the
+    // triangles' clear (4 bytes a pixel) and the draw command's reset (16
+    // bytes). The tile list's entries, one for each tile that shows water,
+    // are counted by the GPU alone and not here.
+    GpuWork passWork() const;
 
 private:
     HostCopy depth_;

@@ -42,6 +42,15 @@ constexpr long long kSpraySlots = SWELL_SPRAY_CELLS * SWELL_SPRAY_CELLS * SWELL_
 constexpr long long kSprayBytes = kSpraySlots * (3 * 16 + 4) + 8 * 4;
 static_assert(kSprayBytes == 2555936, "today's 64^2 cells of 12 slots");
 
+// What each view's water counts when it is drawn in two passes
+// (render/water_visibility.h): the dispatch listing the tiles that show
+// water and a barrier before and after it; the triangles' R32UI clear over
+// the frame and the reset of the tiles' draw command (four uints). The
+// tiles listed are the GPU's to count.
+constexpr int kWaterDispatches = 1, kWaterBarriers = 2;
+constexpr long long kWaterBytes = 4LL * kSize.x * kSize.y + 16;
+static_assert(kWaterBytes == 2320, "32 x 18 pixels of 4 bytes, and 16");
+
 // Texels of levels 1 .. log2(size) of a square mip chain, `layers` layers.
 long long mipLevelsAboveBase(long long size, long long layers)
 {
@@ -107,11 +116,11 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     EXPECT_EQ(c.simulationGpu.bytesWritten, 22720196);
 
     // A view simulates nothing: the spectral model's views write no image;
-    // the spray's passes are its only dispatches.
-    EXPECT_EQ(c.viewsGpu.dispatches, 3);
-    EXPECT_EQ(c.viewsGpu.barriers, 3);
+    // the spray's passes and the water's tile list are its only dispatches.
+    EXPECT_EQ(c.viewsGpu.dispatches, 3 + kWaterDispatches);
+    EXPECT_EQ(c.viewsGpu.barriers, 3 + kWaterBarriers);
     EXPECT_EQ(c.viewsGpu.mipmaps, 0);
-    EXPECT_EQ(c.viewsGpu.bytesWritten, kSprayBytes);
+    EXPECT_EQ(c.viewsGpu.bytesWritten, kSprayBytes + kWaterBytes);
     EXPECT_GT(c.drawCalls, 0);
 
     // The same frame again is no step and no work.
@@ -141,20 +150,20 @@ TEST_F(FrameWork, AViewUnderTheWaterCountsTheCausticsMapsClearAndMipChain)
     const long long points = (SWELL_CAUSTICS_CELLS + 1) * (SWELL_CAUSTICS_CELLS + 1);
     const long long corners = 3 * 2 * SWELL_CAUSTICS_CELLS * SWELL_CAUSTICS_CELLS * SWELL_CAUSTICS_SLICES;
     EXPECT_EQ(c.viewsGpu.mipmaps, 1);
-    EXPECT_EQ(c.viewsGpu.dispatches, 2);
-    EXPECT_EQ(c.viewsGpu.barriers, 2);
-    EXPECT_EQ(c.viewsGpu.bytesWritten, texels * 4 + points * 32 + corners * 16)
-        << "R32F texels, base level and mip chain; two vec4 a source point; a vec4 a corner";
+    EXPECT_EQ(c.viewsGpu.dispatches, 2 + kWaterDispatches);
+    EXPECT_EQ(c.viewsGpu.barriers, 2 + kWaterBarriers);
+    EXPECT_EQ(c.viewsGpu.bytesWritten, texels * 4 + points * 32 + corners * 16 + kWaterBytes)
+        << "R32F texels, base level and mip chain; two vec4 a source point; a vec4 a corner; the water's";
     EXPECT_EQ(c.causticsTriangles, 2 * SWELL_CAUSTICS_CELLS * SWELL_CAUSTICS_CELLS);
     // Today's map: 3 slices of 512^2 (4,194,300 bytes), from 257^2 points
     // (2,113,568) and 3 x 131,072 triangles (18,874,368).
-    EXPECT_EQ(c.viewsGpu.bytesWritten, 25182236);
+    EXPECT_EQ(c.viewsGpu.bytesWritten, 25182236 + kWaterBytes);
 
     camera.position_m.y = 40.0;
     renderer.renderImage(camera, 1.0, kSize);
     EXPECT_EQ(renderer.counters().causticsTriangles, 0);
     EXPECT_EQ(renderer.counters().viewsGpu.mipmaps, 0);
-    EXPECT_EQ(renderer.counters().viewsGpu.bytesWritten, kSprayBytes);
+    EXPECT_EQ(renderer.counters().viewsGpu.bytesWritten, kSprayBytes + kWaterBytes);
 }
 
 double threadCpu_ms()
