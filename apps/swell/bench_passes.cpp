@@ -3,6 +3,8 @@
 // the same passes with trivial shading.
 #include "bench.h"
 
+#include "core/thread_cpu.h"
+
 #include "swell/error.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
@@ -11,25 +13,17 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <ctime>
 
 namespace swell::app::bench {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using detail::processCpu_ms;
 
 double millisecondsBetween(Clock::time_point a, Clock::time_point b)
 {
     return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-// CPU time of the whole process (every thread), ms.
-double processCpu_ms()
-{
-    timespec t{};
-    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1.0e3 + double(t.tv_nsec) * 1.0e-6;
 }
 
 std::uint64_t queryResult(const gl::Query& query)

@@ -12,6 +12,7 @@
 // is written by the run that finds every sample done, and removed by one
 // that finds one not done.
 #include "commands.h"
+#include "core/thread_cpu.h"
 #include "dataset_coco.h"
 #include "dataset_folder.h"
 #include "label_files.h"
@@ -35,7 +36,6 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <ctime>
 #include <sched.h>
 
 namespace swell::app {
@@ -233,13 +233,6 @@ int coresOfThisProcess()
     return std::max(1, CPU_COUNT(&set));
 }
 
-double processCpu_s()
-{
-    timespec t{};
-    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
 // What a core of a cluster renders: this run's samples over its wall time
 // (from its start, the checks included, to its last sample written) and
 // over its cores; then the same samples over the process's CPU time (all
@@ -248,7 +241,7 @@ void reportSamplesPerCore(int rendered, std::chrono::steady_clock::time_point st
 {
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const int cores = coresOfThisProcess();
-    const double cpu_s = processCpu_s();
+    const double cpu_s = detail::processCpu_ms() * 1e-3;
     std::fprintf(stderr,
                  "swell: %d samples rendered in %.2f s on %d cores: %.4f samples per second per core "
                  "(samples / wall time / cores); %.2f s of CPU: %.4f samples per CPU second\n",

@@ -21,6 +21,8 @@
 #include "viewer/view_quality.h"
 #include "viewer/window.h"
 
+#include "core/thread_cpu.h"
+
 #include "swell/error.h"
 #include "swell/gl/context.h"
 
@@ -33,7 +35,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <ctime>
 #include <set>
 #include <vector>
 
@@ -42,6 +43,7 @@ namespace swell::app::viewer {
 namespace {
 
 namespace fs = std::filesystem;
+using detail::processCpu_ms;
 
 // The fly camera moves for at most this long per frame, s: long enough to
 // keep its speed at the few frames per second of software GL, short enough
@@ -147,16 +149,6 @@ Camera frameCamera(ViewState& view, const Scene& scene)
         return cameraAt(scene.camera, view.time_s);
     view.fly.setLens(scene.camera.fovY_deg, scene.camera.near_m, scene.camera.far_m);
     return view.fly.camera();
-}
-
-// This process's CPU time, all threads (llvmpipe's rasteriser threads
-// included), ms: the clock `swell bench` reports, which varies much less
-// than wall time on a machine shared with other work.
-double processCpu_ms()
-{
-    timespec t{};
-    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1.0e3 + double(t.tv_nsec) * 1.0e-6;
 }
 
 // The median of `values` (not empty).
