@@ -22,6 +22,7 @@
 #include <glm/vec3.hpp>
 
 #include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -37,11 +38,18 @@ struct SWELL_API Wave {
     double phase_rad = 0.0;         // phase offset, rad
 };
 
+class CoastField;
+
 // The set of waves summed over the ocean, with the water depth they travel in.
 struct SWELL_API WaveSet {
     std::vector<Wave> waves;
-    // Water depth, m, > 0; infinity means deep water (omega^2 = g*k).
+    // Water depth, m, > 0; infinity means deep water (omega^2 = g*k). Over a
+    // coast field, the open sea's: where the waves come from.
     double depth_m = std::numeric_limits<double>::infinity();
+    // The waves over a varying bottom (swell/coast_field.h), solved for these
+    // waves: each point's phase, height and direction; null: the open sea
+    // everywhere. Every function below reads it.
+    std::shared_ptr<const CoastField> coast;
 };
 
 // The wavenumber vector k*d, rad/m: the normalised direction times
@@ -152,7 +160,9 @@ public:
     WaveSampler() = default;
 
     // Throws std::invalid_argument when validate(set) fails or a wave's terms
-    // do not fit in float.
+    // do not fit in float. A set over a coast field (WaveSet::coast) is
+    // answered by swell::heightAt itself: the field's waves change from
+    // point to point, which the per-wave arrays cannot hold.
     WaveSampler(const WaveSet& set, double time_s, glm::dvec2 origin_m, Simd simd = Simd::Auto);
 
     // Surface height, m, at world (x, z) = worldPoint_m.
@@ -182,6 +192,7 @@ private:
     int waveCount_ = 0;
     float maxOffset_m_ = 0.0f; // sum(Q*A), m: how far a rest point can lie from its image
     Simd simd_ = Simd::Baseline;
+    std::shared_ptr<const WaveSet> overCoast_; // the set, when it has a coast field
 
     // Per wave, struct of arrays. Double for the phase at the query point,
     // float for the solve, which only moves a few metres from it.

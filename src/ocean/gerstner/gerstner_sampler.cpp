@@ -459,6 +459,10 @@ WaveSampler::WaveSampler(const WaveSet& set, double time_s, glm::dvec2 origin_m,
     if (std::string why = validate(set); !why.empty())
         throw std::invalid_argument("swell::WaveSampler::WaveSampler(): " + why);
     simd_ = simd != Simd::Baseline && cpuHasAvx2Fma() ? Simd::Avx2 : Simd::Baseline;
+    if (set.coast) {
+        overCoast_ = std::make_shared<const WaveSet>(set);
+        return;
+    }
     maxOffset_m_ = static_cast<float>(waveReach(set).horizontal_m);
     for (int i = 0; i < waveCount_; ++i) {
         const Wave& w = set.waves[static_cast<std::size_t>(i)];
@@ -489,6 +493,8 @@ WaveSampler::WaveSampler(const WaveSet& set, double time_s, glm::dvec2 origin_m,
 
 double WaveSampler::heightAt(glm::dvec2 worldPoint_m) const
 {
+    if (overCoast_)
+        return swell::heightAt(*overCoast_, worldPoint_m, time_s_);
 #if SWELL_SAMPLER_AVX2
     if (simd_ == Simd::Avx2)
         return WaveSamplerKernel::avx2(*this, worldPoint_m);
@@ -501,6 +507,11 @@ void WaveSampler::heightsAt(std::span<const glm::dvec2> worldPoints_m, std::span
     if (worldPoints_m.size() != heights_m.size())
         throw std::invalid_argument(fmt::format("swell::WaveSampler::heightsAt(): {} points but {} heights",
                                                 worldPoints_m.size(), heights_m.size()));
+    if (overCoast_) {
+        for (std::size_t i = 0; i < worldPoints_m.size(); ++i)
+            heights_m[i] = swell::heightAt(*overCoast_, worldPoints_m[i], time_s_);
+        return;
+    }
     if (waveCount_ == 0) {
         std::fill(heights_m.begin(), heights_m.end(), 0.0);
         return;

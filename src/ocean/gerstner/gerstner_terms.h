@@ -47,5 +47,10 @@ struct Evaluation {
 
 void accumulate(const Wave& wave, const WaveTerms& terms, double theta, Evaluation& e);
 Evaluation evaluate(const WaveSet& set, glm::dvec2 restPoint_m, double time_s);
+// The sum over a coast field (swell/coast_field.h): each coast wave with the
+// phase, gain and wavenumber the field gives it at the rest point, the others
+// with its common gain, every steepness times its steepness scale.
+void evaluateOverCoast(const WaveSet& set, const CoastField& coast, glm::dvec2 restPoint_m, double time_s,
+                       Evaluation& e);
 
 } // namespace swell::gerstner

@@ -6,6 +6,8 @@
 // gerstner_sampler.cpp.
 #include "ocean/gerstner/gerstner_terms.h"
 
+#include "swell/coast_field.h"
+
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -94,11 +96,43 @@ void accumulate(const Wave& wave, const WaveTerms& terms, double theta, Evaluati
 Evaluation evaluate(const WaveSet& set, glm::dvec2 restPoint_m, double time_s)
 {
     Evaluation e;
+    if (set.coast) {
+        evaluateOverCoast(set, *set.coast, restPoint_m, time_s, e);
+        return e;
+    }
     for (const Wave& wave : set.waves) {
         const WaveTerms terms = termsOf(wave, set.depth_m);
         accumulate(wave, terms, phaseAt(terms, wave.phase_rad, restPoint_m, time_s), e);
     }
     return e;
+}
+
+void evaluateOverCoast(const WaveSet& set, const CoastField& coast, glm::dvec2 restPoint_m, double time_s,
+                       Evaluation& e)
+{
+    const CoastCommonSample common = coast.commonAt(restPoint_m);
+    for (std::size_t i = 0; i < set.waves.size(); ++i) {
+        Wave wave = set.waves[i];
+        WaveTerms terms = termsOf(wave, set.depth_m);
+        double theta = phaseAt(terms, wave.phase_rad, restPoint_m, time_s);
+        wave.steepness *= common.steepnessScale;
+        if (i < coast.waveCount()) {
+            // The wave as the bottom has made it here: its phase, height,
+            // direction and length (swell/coast_field.h).
+            const CoastWaveSample local = coast.waveAt(i, restPoint_m, terms.kd);
+            theta = wrapPi(theta + local.phase_rad);
+            wave.amplitude_m *= local.gain;
+            const double k = std::sqrt(glm::dot(local.wavenumber_radpm, local.wavenumber_radpm));
+            if (k > 0.0) {
+                terms.k = k;
+                terms.kd = local.wavenumber_radpm;
+                terms.d = local.wavenumber_radpm / k;
+            }
+        } else {
+            wave.amplitude_m *= common.gain;
+        }
+        accumulate(wave, terms, theta, e);
+    }
 }
 
 } // namespace gerstner
@@ -124,6 +158,11 @@ WaveReach waveReach(const WaveSet& set)
     for (const Wave& w : set.waves) {
         reach.vertical_m += w.amplitude_m;
         reach.horizontal_m += w.steepness * w.amplitude_m;
+    }
+    // Shoaling raises a wave before it breaks.
+    if (set.coast) {
+        reach.vertical_m *= set.coast->largestGain();
+        reach.horizontal_m *= set.coast->largestGain();
     }
     return reach;
 }

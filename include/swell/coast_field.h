@@ -1,0 +1,116 @@
+// Waves over a varying bottom (docs/RENDERING.md "Waves that feel the
+// bottom"): for each of a wave set's longest waves, the phase, height and
+// direction it takes at each point of a sampled sea floor, solved once when
+// the seabed or the waves change, and read by the Gerstner sum on the CPU
+// (swell/scene/waves.h) and in GLSL (shaders/ocean/coast.glsl) from the same
+// numbers.
+//
+// Linear wave theory over a slowly varying bottom (Dean & Dalrymple 1991,
+// "Water Wave Mechanics for Engineers and Scientists", ch. 3 and 4):
+// - each wave keeps its angular frequency omega from the open sea, and takes
+//   the local wavenumber k(h) of the dispersion relation omega^2 = g k tanh(k h)
+//   (eq. 4.20): shorter and slower in shallow water;
+// - its phase S solves the eikonal |grad S| = k(h) (geometrical optics, the
+//   wave rays being the curves along grad S), so crests turn towards the
+//   depth contours as Snell's law for waves says (sin(theta) / c constant
+//   on straight parallel contours, eq. 4.115);
+// - its energy E ~ A^2 is carried along the rays at the group velocity C_g
+//   with its flux conserved, div(E C_g grad S / |grad S|) = 0 (eq. 4.112):
+//   shoaling H/H0 = sqrt(C_g0 / C_g) (eq. 4.104) and refraction's
+//   sqrt(cos(theta0) / cos(theta)) in one;
+// - where the sea's height reaches the breaker index times the depth,
+//   H <= gamma h with gamma = 0.78 (McCowan 1894, the solitary wave's limit),
+//   the waves are cut to it: the surf zone's height follows the depth down;
+// - on dry land (depth <= 0) no wave.
+// What it cannot do: diffraction (a breakwater's lee is calm but for the
+// solver's own numerical spreading, not Sommerfeld's), reflection from
+// steep shores, more than one arrival where rays cross (the first arrival's
+// phase wins), and waves shorter than the coast waves feel the bottom only
+// through the breaking cut and the dry land (they keep the open sea's
+// phase): see RENDERING.md.
+#pragma once
+
+#include "swell/export.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace swell {
+
+struct WaveSet;
+
+// The sea floor's depth sampled on a square grid: what a coast field is
+// solved on. Sample (i, j) lies at origin_m + cell_m * (i, j) in world x, z.
+struct SWELL_API DepthGrid {
+    glm::dvec2 origin_m{0.0};  // world x, z of sample (0, 0), m
+    double cell_m = 1.0;       // spacing of the samples, m, > 0
+    glm::ivec2 size{0};        // samples along x and z, each 2..kMaxCoastGridSide
+    std::vector<float> depth_m; // depth below the sea's mean level, m, row by row along x; <= 0 is dry land
+    // The depth beyond the grid, m (infinity: deep water): the open sea the
+    // waves arrive from. The grid's own edges should lie in it.
+    double outsideDepth_m = std::numeric_limits<double>::infinity();
+
+    float at(int i, int j) const { return depth_m[std::size_t(j) * std::size_t(size.x) + std::size_t(i)]; }
+};
+
+// The largest grid side a coast field accepts: 1024 x 1024 samples a wave.
+inline constexpr int kMaxCoastGridSide = 1024;
+// The breaker index gamma: the highest wave a depth h carries is gamma h
+// (McCowan 1894; Dean & Dalrymple 1991, sec. 4.6).
+inline constexpr double kBreakerIndex = 0.78;
+// How many of a set's waves, longest first, get a field of their own.
+inline constexpr std::size_t kMaxCoastWaves = 16;
+
+// One coast wave at one point: what replaces the open sea's values in the
+// Gerstner sum (swell/scene/waves.h).
+struct CoastWaveSample {
+    double phase_rad = 0.0;      // added to the open sea's phase k0 d0 . x - omega t + phi
+    double gain = 1.0;           // times the wave's amplitude: shoaling, refraction, breaking; 0 on land
+    glm::dvec2 wavenumber_radpm; // the local wavenumber vector: grad of the phase, rad/m
+};
+
+// What every wave shares at one point.
+struct CoastCommonSample {
+    double depth_m = std::numeric_limits<double>::infinity(); // the grid's, bilinear
+    double gain = 1.0;            // the breaking cut and dry land, for the waves without a field
+    double steepnessScale = 1.0;  // times every Q, so the local sum of Q k A stays <= 1 (no loops)
+};
+
+class SWELL_API CoastField {
+public:
+    // Solves the field of each of the first min(kMaxCoastWaves, n) waves of
+    // `waves` (which must be sorted longest first, as resolveWaves() leaves
+    // them; their amplitudes are the open sea's, at depth waves.depth_m).
+    // Throws swell::Error when the grid is not usable (its size, a NaN depth).
+    CoastField(const WaveSet& waves, DepthGrid depth, double breakerIndex = kBreakerIndex);
+
+    const DepthGrid& depth() const { return depth_; }
+    std::size_t waveCount() const { return layers_.size(); }
+    // Texels of one coast wave, as the GPU's texture array holds them, row by
+    // row along x: (phase_rad, gain, wavenumber x, wavenumber z).
+    std::span<const glm::vec4> layer(std::size_t wave) const { return layers_[wave]; }
+    // Texels every wave shares: (depth_m, gain, steepnessScale, 0).
+    std::span<const glm::vec4> common() const { return common_; }
+    // The largest gain over the field (shoaling can raise a wave before it
+    // breaks): how far the waves may reach above the open sea's.
+    double largestGain() const { return largestGain_; }
+
+    // Bilinear between the four texels around world point (x, z), as the
+    // GLSL twin reads them; beyond the grid, the open sea's values.
+    CoastWaveSample waveAt(std::size_t wave, glm::dvec2 world_m, glm::dvec2 openWavenumber_radpm) const;
+    CoastCommonSample commonAt(glm::dvec2 world_m) const;
+
+private:
+    DepthGrid depth_;
+    std::vector<std::vector<glm::vec4>> layers_;
+    std::vector<glm::vec4> common_;
+    double largestGain_ = 1.0;
+};
+
+} // namespace swell

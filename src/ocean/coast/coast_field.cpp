@@ -1,0 +1,223 @@
+// The coast field (swell/coast_field.h): each coast wave marched over the
+// depth grid (coast_march.cpp), the sea's breaking cut and fold limit per
+// point, the field blended into the open sea at the grid's edges, and its
+// bilinear reading, which shaders/ocean/coast.glsl repeats.
+#include "swell/coast_field.h"
+
+#include "ocean/coast/coast_march.h"
+
+#include "swell/constants.h"
+#include "swell/error.h"
+#include "swell/scene/waves.h"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swell {
+
+namespace {
+
+// The band along the grid's edges, in samples, over which the field is
+// blended into the open sea's values, so that the surface is continuous
+// where the grid ends: the waves in a lee that reaches the edge take the open
+// sea's phase again there.
+int blendBand(const DepthGrid& g) { return std::max(2, std::min(g.size.x, g.size.y) / 12); }
+
+double smoothstep01(double t)
+{
+    t = std::clamp(t, 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+void check(const DepthGrid& g)
+{
+    if (g.size.x < 2 || g.size.y < 2 || g.size.x > kMaxCoastGridSide || g.size.y > kMaxCoastGridSide)
+        throw Error(fmt::format("swell::CoastField: a depth grid of {} x {} samples; each side must be 2..{}",
+                                g.size.x, g.size.y, kMaxCoastGridSide));
+    if (g.depth_m.size() != std::size_t(g.size.x) * std::size_t(g.size.y))
+        throw Error(fmt::format("swell::CoastField: {} depths for a grid of {} x {} samples", g.depth_m.size(),
+                                g.size.x, g.size.y));
+    if (!(g.cell_m > 0.0) || !std::isfinite(g.cell_m) || !std::isfinite(g.origin_m.x) || !std::isfinite(g.origin_m.y))
+        throw Error(fmt::format("swell::CoastField: cell_m {} and origin ({}, {}) must be finite, cell_m > 0",
+                                g.cell_m, g.origin_m.x, g.origin_m.y));
+    for (std::size_t c = 0; c < g.depth_m.size(); ++c)
+        if (!std::isfinite(g.depth_m[c]))
+            throw Error(fmt::format("swell::CoastField: the depth at sample ({}, {}) is {}", c % std::size_t(g.size.x),
+                                    c / std::size_t(g.size.x), g.depth_m[c]));
+    if (!(g.outsideDepth_m > 0.0))
+        throw Error(fmt::format("swell::CoastField: outsideDepth_m must be > 0 or infinity (got {})", g.outsideDepth_m));
+}
+
+// Cells no ray reached (land, a lagoon) take their reached neighbours' mean
+// phase and wavenumber, a few cells deep, so that the bilinear reading at
+// the shore mixes no foreign phase into the last wet cells.
+// Cells left unknown after that (far inland) take the open sea's.
+void extendPhase(const DepthGrid& g, coast::WaveMarch& m, glm::dvec2 openWavenumber_radpm)
+{
+    std::vector<std::uint8_t> known = m.reached;
+    for (int pass = 0; pass < 4; ++pass) {
+        std::vector<std::uint8_t> next = known;
+        for (int j = 0; j < g.size.y; ++j)
+            for (int i = 0; i < g.size.x; ++i) {
+                const std::size_t c = std::size_t(j) * std::size_t(g.size.x) + std::size_t(i);
+                if (known[c])
+                    continue;
+                double phase = 0.0;
+                glm::dvec2 wavenumber(0.0);
+                int count = 0;
+                const int nbs[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+                for (const auto& nb : nbs) {
+                    const int a = i + nb[0], b = j + nb[1];
+                    if (a < 0 || b < 0 || a >= g.size.x || b >= g.size.y)
+                        continue;
+                    const std::size_t d = std::size_t(b) * std::size_t(g.size.x) + std::size_t(a);
+                    if (!known[d])
+                        continue;
+                    phase += m.phase_rad[d];
+                    wavenumber += m.wavenumber_radpm[d];
+                    ++count;
+                }
+                if (count > 0) {
+                    m.phase_rad[c] = phase / count;
+                    m.wavenumber_radpm[c] = wavenumber / double(count);
+                    next[c] = 1;
+                }
+            }
+        known = std::move(next);
+    }
+    for (std::size_t c = 0; c < known.size(); ++c)
+        if (!known[c]) {
+            const glm::dvec2 p = g.origin_m + g.cell_m * glm::dvec2(double(c % std::size_t(g.size.x)),
+                                                                   double(c / std::size_t(g.size.x)));
+            m.phase_rad[c] = glm::dot(openWavenumber_radpm, p);
+            m.wavenumber_radpm[c] = openWavenumber_radpm;
+        }
+}
+
+} // namespace
+
+CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerIndex) : depth_(std::move(depth))
+{
+    check(depth_);
+    if (!(breakerIndex > 0.0) || !std::isfinite(breakerIndex))
+        throw Error(fmt::format("swell::CoastField: the breaker index must be finite and > 0 (got {})", breakerIndex));
+    const DepthGrid& g = depth_;
+    const std::size_t n = g.depth_m.size();
+    const std::size_t coastWaves = std::min(kMaxCoastWaves, waves.waves.size());
+    const int band = blendBand(g);
+
+    // The open sea's wavenumber vector and frequency of every wave.
+    std::vector<glm::dvec2> openK(waves.waves.size());
+    for (std::size_t w = 0; w < waves.waves.size(); ++w)
+        openK[w] = wavenumberVector(waves.waves[w]);
+
+    std::vector<coast::WaveMarch> marches;
+    for (std::size_t w = 0; w < coastWaves; ++w) {
+        const Wave& wave = waves.waves[w];
+        coast::MarchedWave marched;
+        marched.wavenumber_radpm = std::sqrt(glm::dot(openK[w], openK[w]));
+        marched.direction = openK[w] / marched.wavenumber_radpm;
+        marched.omega_radps = angularFrequency(marched.wavenumber_radpm, waves.depth_m);
+        marched.amplitude_m = wave.amplitude_m;
+        marches.push_back(coast::marchWave(g, marched, breakerIndex));
+        extendPhase(g, marches.back(), openK[w]);
+    }
+
+    // Per point: the sea's height cut to the breaker index times the depth
+    // (all waves together), the fold limit, and the blend into the open sea.
+    layers_.assign(coastWaves, std::vector<glm::vec4>(n));
+    common_.assign(n, glm::vec4(0.0f));
+    largestGain_ = 1.0;
+    for (int j = 0; j < g.size.y; ++j)
+        for (int i = 0; i < g.size.x; ++i) {
+            const std::size_t c = std::size_t(j) * std::size_t(g.size.x) + std::size_t(i);
+            const double h = g.depth_m[c];
+            const int edge = std::min({i, j, g.size.x - 1 - i, g.size.y - 1 - j});
+            const double inner = smoothstep01(double(edge) / double(band));
+            const glm::dvec2 p = g.origin_m + g.cell_m * glm::dvec2(i, j);
+            std::vector<double> gain(waves.waves.size(), 1.0);
+            double height = 0.0;
+            for (std::size_t w = 0; w < waves.waves.size(); ++w) {
+                if (w < coastWaves)
+                    gain[w] = marches[w].reached[c] ? std::sqrt(marches[w].energy[c]) : 0.0;
+                gain[w] = h > 0.0 ? (1.0 - inner) + inner * gain[w] : 0.0;
+                height += 2.0 * waves.waves[w].amplitude_m * gain[w];
+            }
+            const double cut = h <= 0.0 ? 0.0 : (height > breakerIndex * h ? breakerIndex * h / height : 1.0);
+            double fold = 0.0;
+            for (std::size_t w = 0; w < waves.waves.size(); ++w) {
+                const Wave& wave = waves.waves[w];
+                gain[w] *= cut;
+                glm::dvec2 kv = openK[w];
+                if (w < coastWaves) {
+                    kv = (1.0 - inner) * openK[w] + inner * marches[w].wavenumber_radpm[c];
+                    const double phase = inner * (marches[w].phase_rad[c] - glm::dot(openK[w], p));
+                    layers_[w][c] = glm::vec4(float(phase), float(gain[w]), float(kv.x), float(kv.y));
+                    largestGain_ = std::max(largestGain_, gain[w]);
+                }
+                fold += wave.steepness * std::sqrt(glm::dot(kv, kv)) * wave.amplitude_m * gain[w];
+            }
+            // At most 1 at the texels would let the bilinear reading between
+            // them pass 1 where the waves shorten fast: 0.9 inside, 1 at the
+            // edges, where the open sea's own limit (limitSteepness) holds.
+            const double foldLimit = 1.0 - 0.1 * inner;
+            const double steepnessScale = fold > foldLimit ? foldLimit / fold : 1.0;
+            common_[c] = glm::vec4(float(h), float(cut), float(steepnessScale), 0.0f);
+        }
+}
+
+namespace {
+
+struct Bilinear {
+    std::size_t c00, c10, c01, c11;
+    double fx, fz;
+};
+
+// The four texels around world point p and its weights, as coast.glsl
+// finds them; false beyond the grid.
+bool bilinearAt(const DepthGrid& g, glm::dvec2 p, Bilinear& b)
+{
+    const glm::dvec2 u = (p - g.origin_m) / g.cell_m;
+    if (!(u.x >= 0.0 && u.y >= 0.0 && u.x <= g.size.x - 1.0 && u.y <= g.size.y - 1.0))
+        return false;
+    const int i = std::min(int(u.x), g.size.x - 2), j = std::min(int(u.y), g.size.y - 2);
+    b.fx = u.x - i;
+    b.fz = u.y - j;
+    b.c00 = std::size_t(j) * std::size_t(g.size.x) + std::size_t(i);
+    b.c10 = b.c00 + 1;
+    b.c01 = b.c00 + std::size_t(g.size.x);
+    b.c11 = b.c01 + 1;
+    return true;
+}
+
+glm::dvec4 read(std::span<const glm::vec4> texels, const Bilinear& b)
+{
+    const glm::dvec4 lo = glm::mix(glm::dvec4(texels[b.c00]), glm::dvec4(texels[b.c10]), b.fx);
+    const glm::dvec4 hi = glm::mix(glm::dvec4(texels[b.c01]), glm::dvec4(texels[b.c11]), b.fx);
+    return glm::mix(lo, hi, b.fz);
+}
+
+} // namespace
+
+CoastWaveSample CoastField::waveAt(std::size_t wave, glm::dvec2 world_m, glm::dvec2 openWavenumber_radpm) const
+{
+    Bilinear b;
+    if (wave >= layers_.size() || !bilinearAt(depth_, world_m, b))
+        return {0.0, 1.0, openWavenumber_radpm};
+    const glm::dvec4 t = read(layers_[wave], b);
+    return {t.x, t.y, {t.z, t.w}};
+}
+
+CoastCommonSample CoastField::commonAt(glm::dvec2 world_m) const
+{
+    Bilinear b;
+    if (!bilinearAt(depth_, world_m, b))
+        return {depth_.outsideDepth_m, 1.0, 1.0};
+    const glm::dvec4 t = read(common_, b);
+    return {t.x, t.y, t.z};
+}
+
+} // namespace swell
