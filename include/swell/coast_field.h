@@ -84,17 +84,20 @@ struct CoastCommonSample {
 
 class SWELL_API CoastField {
 public:
-    // Solves the field of each of the first min(kMaxCoastWaves, n) waves of
-    // `waves` (which must be sorted longest first, as resolveWaves() leaves
-    // them; their amplitudes are the open sea's, at depth waves.depth_m).
-    // Throws swell::Error when the grid is not usable (its size, a NaN depth).
+    // Solves the field of each of the min(kMaxCoastWaves, n) longest waves
+    // of `waves` (their amplitudes the open sea's, at depth waves.depth_m;
+    // of equal lengths, the first listed). Throws swell::Error when the grid
+    // is not usable (its size, a NaN depth).
     CoastField(const WaveSet& waves, DepthGrid depth, double breakerIndex = kBreakerIndex);
 
     const DepthGrid& depth() const { return depth_; }
+    // The coast waves: how many, and which layer holds wave i of the set
+    // (-1: none, a shorter wave, read with the common gain alone).
     std::size_t waveCount() const { return layers_.size(); }
-    // Texels of one coast wave, as the GPU's texture array holds them, row by
-    // row along x: (phase_rad, gain, wavenumber x, wavenumber z).
-    std::span<const glm::vec4> layer(std::size_t wave) const { return layers_[wave]; }
+    int layerOf(std::size_t wave) const { return wave < layerOfWave_.size() ? layerOfWave_[wave] : -1; }
+    // Texels of one layer, as the GPU's texture array holds them, row by row
+    // along x: (phase_rad, gain, wavenumber x, wavenumber z).
+    std::span<const glm::vec4> layer(std::size_t layer) const { return layers_[layer]; }
     // Texels every wave shares: (depth_m, gain, steepnessScale, 0).
     std::span<const glm::vec4> common() const { return common_; }
     // The largest gain over the field (shoaling can raise a wave before it
@@ -103,12 +106,14 @@ public:
 
     // Bilinear between the four texels around world point (x, z), as the
     // GLSL twin reads them; beyond the grid, the open sea's values.
-    CoastWaveSample waveAt(std::size_t wave, glm::dvec2 world_m, glm::dvec2 openWavenumber_radpm) const;
+    // `layer` is layerOf(the wave); beyond the grid, or for no layer, the open sea's.
+    CoastWaveSample waveAt(int layer, glm::dvec2 world_m, glm::dvec2 openWavenumber_radpm) const;
     CoastCommonSample commonAt(glm::dvec2 world_m) const;
 
 private:
     DepthGrid depth_;
     std::vector<std::vector<glm::vec4>> layers_;
+    std::vector<int> layerOfWave_;
     std::vector<glm::vec4> common_;
     double largestGain_ = 1.0;
 };

@@ -9,6 +9,7 @@
 // src/ocean/gerstner/gpu/gerstner_uniforms.h): gerstnerWaves[], sorted longest
 // first, and gerstnerWaveCount.
 #include "gpu/gerstner_block.glsl"
+#include "ocean/coast.glsl"
 
 // Weight of a wave of wavelength_m where samples lie footprint_m apart:
 // waves shorter than SWELL_MIN_CELLS_PER_WAVELENGTH samples would alias, so
@@ -27,16 +28,24 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
     // Partial derivatives of the displaced position along rest x and rest z.
     vec3 tangent = vec3(1.0, 0.0, 0.0);
     vec3 binormal = vec3(0.0, 0.0, 1.0);
+    CoastCell cell = coastCellAt(restOffset_m);
+    vec4 everyWave = cell.inside ? coastCommonAt(cell) : vec4(0.0, 1.0, 1.0, 0.0);
     for (int i = 0; i < gerstnerWaveCount; ++i) {
         float weight = waveLodWeight(gerstnerWaves[i].wavelength_m, footprint_m);
         // The waves come longest first: none after this one is resolved either.
         if (weight <= 0.0)
             break;
-        vec2 d = gerstnerWaves[i].direction;
-        float k = gerstnerWaves[i].wavenumber_rad_per_m;
-        float amplitude = gerstnerWaves[i].amplitude_m * heightScale * weight;
-        float q = gerstnerWaves[i].steepness;
-        float theta = k * dot(d, restOffset_m) + gerstnerWaves[i].phase_rad;
+        vec2 openDirection = gerstnerWaves[i].direction;
+        float openK = gerstnerWaves[i].wavenumber_rad_per_m;
+        // The open sea's phase, then the wave as the bottom has made it here.
+        float theta = openK * dot(openDirection, restOffset_m) + gerstnerWaves[i].phase_rad;
+        CoastWave w = coastWave(cell, everyWave, gerstnerWaves[i].coastLayer, openDirection, openK,
+                                gerstnerWaves[i].amplitude_m, gerstnerWaves[i].steepness);
+        theta += w.phase_rad;
+        vec2 d = w.direction;
+        float k = w.wavenumber_rad_per_m;
+        float amplitude = w.amplitude_m * heightScale * weight;
+        float q = w.steepness;
         float s = sin(theta);
         float c = cos(theta);
         displacement += vec3(-q * amplitude * d.x * s, amplitude * c, -q * amplitude * d.y * s);
@@ -89,6 +98,8 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
     // in the loop: a software rasteriser (llvmpipe) runs the loop's whole
     // body, masked, for every wave any pixel of a block still iterates over.
     int i = firstWaveShorterThan(bothFull_m);
+    CoastCell cell = coastCellAt(restOffset_m);
+    vec4 everyWave = cell.inside ? coastCommonAt(cell) : vec4(0.0, 1.0, 1.0, 0.0);
     for (; i < gerstnerWaveCount; ++i) {
         float wavelength = gerstnerWaves[i].wavelength_m;
         // The waves come longest first: none after this one adds anything either.
@@ -97,17 +108,22 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
         // Negative where the pixel is wider than the grid's cells (far away):
         // the pixel then takes out what it cannot resolve.
         float weight = waveLodWeight(wavelength, pixelFootprint_m) - waveLodWeight(wavelength, gridFootprint_m);
-        vec2 d = gerstnerWaves[i].direction;
-        float k = gerstnerWaves[i].wavenumber_rad_per_m;
-        float q = gerstnerWaves[i].steepness;
-        float theta = k * dot(d, restOffset_m) + gerstnerWaves[i].phase_rad;
+        vec2 openDirection = gerstnerWaves[i].direction;
+        float openK = gerstnerWaves[i].wavenumber_rad_per_m;
+        float theta = openK * dot(openDirection, restOffset_m) + gerstnerWaves[i].phase_rad;
+        CoastWave w = coastWave(cell, everyWave, gerstnerWaves[i].coastLayer, openDirection, openK,
+                                gerstnerWaves[i].amplitude_m, gerstnerWaves[i].steepness);
+        theta += w.phase_rad;
+        vec2 d = w.direction;
+        float k = w.wavenumber_rad_per_m;
+        float q = w.steepness;
         float s = sin(theta);
         float c = cos(theta);
-        float ka = k * gerstnerWaves[i].amplitude_m * heightScale * weight;
+        float ka = k * w.amplitude_m * heightScale * weight;
         tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
         binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
         float resolved = waveLodWeight(wavelength, pixelFootprint_m);
-        float kaFull = k * gerstnerWaves[i].amplitude_m;
+        float kaFull = k * w.amplitude_m;
         slopeVariance += 0.5 * kaFull * kaFull * fade2 * (1.0 - resolved * resolved);
     }
     // Every shorter wave is wholly unresolved.

@@ -4,6 +4,8 @@
 // times and at t = 10^6 s: the Gerstner sum, and the spectral ocean's FFT
 // cascades against its kissfft twin.
 #include "support/gl_test.h"
+#include "swell/coast_field.h"
+#include "swell/gerstner_model.h"
 #include "swell/renderer.h"
 #include "wave_capture.h"
 
@@ -32,10 +34,9 @@ constexpr double kTieMargin = 1e-4;
 // mipmapped slopes (for shading), its CPU normals from level 0.
 enum class Normals { Compared, NotCompared };
 
-void expectAgreement(const swell::Scene& scene, glm::dvec3 cameraPosition, double time_s,
+void expectAgreement(swell::Renderer& renderer, const swell::Scene& scene, glm::dvec3 cameraPosition, double time_s,
                      Normals normals = Normals::Compared)
 {
-    swell::Renderer renderer(scene);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.position_m = cameraPosition;
     const auto gpu = swell::test::captureGpu(renderer, camera, time_s);
@@ -82,6 +83,13 @@ void expectAgreement(const swell::Scene& scene, glm::dvec3 cameraPosition, doubl
     }
 }
 
+void expectAgreement(const swell::Scene& scene, glm::dvec3 cameraPosition, double time_s,
+                     Normals normals = Normals::Compared)
+{
+    swell::Renderer renderer(scene);
+    expectAgreement(renderer, scene, cameraPosition, time_s, normals);
+}
+
 TEST_F(WaveAgreement, NearTheOriginAtSeveralTimes)
 {
     const swell::Scene scene = agreementScene();
@@ -107,6 +115,34 @@ TEST_F(WaveAgreement, FiniteDepthAndHandListedWaves)
     scene.waves.listed = {{{1.0, 0.3}, 60.0, 0.8, 0.7, 0.2}, {{-0.4, 1.0}, 23.0, 0.3, 0.9, 1.9},
                                 {{0.2, -1.0}, 7.5, 0.08, 0.5, -2.0}, {{0.9, 0.9}, 1.2, 0.02, 0.3, 0.0}};
     expectAgreement(scene, {-250.0, 3.0, 90.0}, 512.5);
+}
+
+// Over a coast field (swell/coast_field.h): a beach whose contours run at
+// an angle to the waves, dry land beyond it, under the grid's finest rings;
+// the field's 16 longest waves read their layers, the rest its common gain.
+TEST_F(WaveAgreement, OverACoastField)
+{
+    swell::Scene scene = agreementScene();
+    scene.sea.wind->windSpeed_mps = 9.0;
+    swell::WaveSet set = swell::resolveWaves(scene);
+    swell::limitSteepness(set);
+    ASSERT_GT(set.waves.size(), swell::kMaxCoastWaves);
+    swell::DepthGrid grid;
+    grid.origin_m = {-700.0, -500.0};
+    grid.cell_m = 4.0;
+    grid.size = {300, 260};
+    grid.depth_m.resize(std::size_t(grid.size.x) * std::size_t(grid.size.y));
+    for (int j = 0; j < grid.size.y; ++j)
+        for (int i = 0; i < grid.size.x; ++i) {
+            const double across = 0.8 * i + 0.6 * j; // contours at an angle to the grid
+            grid.depth_m[std::size_t(j) * std::size_t(grid.size.x) + std::size_t(i)] = float(40.0 - across * 4.0 / 25.0);
+        }
+    set.coast = std::make_shared<const swell::CoastField>(set, grid);
+    swell::Renderer renderer(scene);
+    renderer.setWaveModel(std::make_shared<swell::GerstnerModel>(set));
+    // The camera over the surf: its finest rings cross the beach and the shore.
+    for (double t : {0.0, 41.5})
+        expectAgreement(renderer, scene, {-80.0, 5.0, 60.0}, t);
 }
 
 swell::Scene spectralScene()

@@ -113,9 +113,21 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
     std::vector<glm::dvec2> openK(waves.waves.size());
     for (std::size_t w = 0; w < waves.waves.size(); ++w)
         openK[w] = wavenumberVector(waves.waves[w]);
+    // The longest waves get the layers, longest first.
+    std::vector<std::size_t> longest(waves.waves.size());
+    for (std::size_t w = 0; w < longest.size(); ++w)
+        longest[w] = w;
+    std::stable_sort(longest.begin(), longest.end(), [&](std::size_t a, std::size_t b) {
+        return waves.waves[a].wavelength_m > waves.waves[b].wavelength_m;
+    });
+    longest.resize(coastWaves);
+    layerOfWave_.assign(waves.waves.size(), -1);
+    for (std::size_t l = 0; l < coastWaves; ++l)
+        layerOfWave_[longest[l]] = int(l);
 
     std::vector<coast::WaveMarch> marches;
-    for (std::size_t w = 0; w < coastWaves; ++w) {
+    for (std::size_t l = 0; l < coastWaves; ++l) {
+        const std::size_t w = longest[l];
         const Wave& wave = waves.waves[w];
         coast::MarchedWave marched;
         marched.wavenumber_radpm = std::sqrt(glm::dot(openK[w], openK[w]));
@@ -141,8 +153,8 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
             std::vector<double> gain(waves.waves.size(), 1.0);
             double height = 0.0;
             for (std::size_t w = 0; w < waves.waves.size(); ++w) {
-                if (w < coastWaves)
-                    gain[w] = marches[w].reached[c] ? std::sqrt(marches[w].energy[c]) : 0.0;
+                if (const int l = layerOfWave_[w]; l >= 0)
+                    gain[w] = marches[std::size_t(l)].reached[c] ? std::sqrt(marches[std::size_t(l)].energy[c]) : 0.0;
                 gain[w] = h > 0.0 ? (1.0 - inner) + inner * gain[w] : 0.0;
                 height += 2.0 * waves.waves[w].amplitude_m * gain[w];
             }
@@ -152,10 +164,11 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
                 const Wave& wave = waves.waves[w];
                 gain[w] *= cut;
                 glm::dvec2 kv = openK[w];
-                if (w < coastWaves) {
-                    kv = (1.0 - inner) * openK[w] + inner * marches[w].wavenumber_radpm[c];
-                    const double phase = inner * (marches[w].phase_rad[c] - glm::dot(openK[w], p));
-                    layers_[w][c] = glm::vec4(float(phase), float(gain[w]), float(kv.x), float(kv.y));
+                if (const int l = layerOfWave_[w]; l >= 0) {
+                    const coast::WaveMarch& m = marches[std::size_t(l)];
+                    kv = (1.0 - inner) * openK[w] + inner * m.wavenumber_radpm[c];
+                    const double phase = inner * (m.phase_rad[c] - glm::dot(openK[w], p));
+                    layers_[std::size_t(l)][c] = glm::vec4(float(phase), float(gain[w]), float(kv.x), float(kv.y));
                     largestGain_ = std::max(largestGain_, gain[w]);
                 }
                 fold += wave.steepness * std::sqrt(glm::dot(kv, kv)) * wave.amplitude_m * gain[w];
@@ -202,12 +215,12 @@ glm::dvec4 read(std::span<const glm::vec4> texels, const Bilinear& b)
 
 } // namespace
 
-CoastWaveSample CoastField::waveAt(std::size_t wave, glm::dvec2 world_m, glm::dvec2 openWavenumber_radpm) const
+CoastWaveSample CoastField::waveAt(int layer, glm::dvec2 world_m, glm::dvec2 openWavenumber_radpm) const
 {
     Bilinear b;
-    if (wave >= layers_.size() || !bilinearAt(depth_, world_m, b))
+    if (layer < 0 || std::size_t(layer) >= layers_.size() || !bilinearAt(depth_, world_m, b))
         return {0.0, 1.0, openWavenumber_radpm};
-    const glm::dvec4 t = read(layers_[wave], b);
+    const glm::dvec4 t = read(layers_[std::size_t(layer)], b);
     return {t.x, t.y, {t.z, t.w}};
 }
 

@@ -116,10 +116,10 @@ void evaluateOverCoast(const WaveSet& set, const CoastField& coast, glm::dvec2 r
         WaveTerms terms = termsOf(wave, set.depth_m);
         double theta = phaseAt(terms, wave.phase_rad, restPoint_m, time_s);
         wave.steepness *= common.steepnessScale;
-        if (i < coast.waveCount()) {
+        if (const int layer = coast.layerOf(i); layer >= 0) {
             // The wave as the bottom has made it here: its phase, height,
             // direction and length (swell/coast_field.h).
-            const CoastWaveSample local = coast.waveAt(i, restPoint_m, terms.kd);
+            const CoastWaveSample local = coast.waveAt(layer, restPoint_m, terms.kd);
             theta = wrapPi(theta + local.phase_rad);
             wave.amplitude_m *= local.gain;
             const double k = std::sqrt(glm::dot(local.wavenumber_radpm, local.wavenumber_radpm));

@@ -3,6 +3,8 @@
 // GerstnerSurface's (ocean/gerstner/gerstner_surface.cpp).
 #include "swell/gerstner_model.h"
 
+#include "swell/coast_field.h"
+
 #include "ocean/gerstner/gpu/gerstner_uniforms.h"
 #include "swell/gl/handle.h"
 #include "swell/gpu/bindings.h"
@@ -44,6 +46,7 @@ public:
             tail += 0.5 * ka * ka;
             tailSlopeVariance_[i] = tail;
         }
+        uploadCoast();
     }
 
     std::string shaderFile() const override { return "ocean/gerstner.glsl"; }
@@ -75,18 +78,62 @@ public:
             g.phase_rad = float(wrappedPhase(w, waves_.depth_m, gridCenter_m, time_s));
             g.wavelength_m = float(w.wavelength_m);
             g.tailSlopeVariance = float(tailSlopeVariance_[size_t(i)]);
+            g.coastLayer = waves_.coast ? waves_.coast->layerOf(std::size_t(order_[size_t(i)] - waves_.waves.data())) : -1;
         }
         u.waveCount = count;
+        if (waves_.coast) {
+            const DepthGrid& grid = waves_.coast->depth();
+            u.coastLayers = int(waves_.coast->waveCount());
+            u.coastOrigin_m = glm::vec2(grid.origin_m - gridCenter_m);
+            u.coastSize = grid.size;
+            u.coastCell_m = float(grid.cell_m);
+        }
         glNamedBufferSubData(buffer_.id(), 0, sizeof(u), &u);
     }
 
-    void bind() const override { glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, buffer_.id()); }
+    void bind() const override
+    {
+        glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, buffer_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN0, coastWaves_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN1, coastCommon_.id());
+    }
 
 private:
+    // The coast field's texels (shaders/ocean/coast.glsl), read with
+    // texelFetch; without a field, one texel each, so that the samplers
+    // always have a texture of their kind.
+    void uploadCoast()
+    {
+        const CoastField* coast = waves_.coast.get();
+        const glm::ivec2 size = coast ? coast->depth().size : glm::ivec2(1);
+        const int layers = coast ? std::max(int(coast->waveCount()), 1) : 1;
+        coastWaves_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
+        glTextureStorage3D(coastWaves_.id(), 1, GL_RGBA32F, size.x, size.y, layers);
+        coastCommon_ = gl::Texture::create(GLenum(GL_TEXTURE_2D));
+        glTextureStorage2D(coastCommon_.id(), 1, GL_RGBA32F, size.x, size.y);
+        for (const gl::Texture* t : {&coastWaves_, &coastCommon_}) {
+            glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        }
+        if (!coast) {
+            const glm::vec4 open(0.0f, 1.0f, 1.0f, 0.0f);
+            glTextureSubImage3D(coastWaves_.id(), 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, &open);
+            glTextureSubImage2D(coastCommon_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, &open);
+            return;
+        }
+        for (std::size_t l = 0; l < coast->waveCount(); ++l)
+            glTextureSubImage3D(coastWaves_.id(), 0, 0, 0, GLint(l), size.x, size.y, 1, GL_RGBA, GL_FLOAT,
+                                coast->layer(l).data());
+        glTextureSubImage2D(coastCommon_.id(), 0, 0, 0, size.x, size.y, GL_RGBA, GL_FLOAT, coast->common().data());
+    }
+
+
     WaveSet waves_;
     std::vector<const Wave*> order_; // into waves_, longest first
     std::vector<double> tailSlopeVariance_; // of each wave in order_ and every shorter one
     gl::Buffer buffer_;
+    gl::Texture coastWaves_;
+    gl::Texture coastCommon_;
     double time_s_ = 0.0; // the time prepareFrame() reached, s
 };
 

@@ -24,12 +24,21 @@ struct alignas(16) GerstnerWaveUniform {
     // Mean square slope of this wave and every shorter one: what a pixel
     // that resolves none of them adds as roughness.
     float tailSlopeVariance;
+    // Its layer of the coast field's texture array (swell/coast_field.h), -1: none.
+    int coastLayer;
 };
 
 // The waves sorted longest first.
 struct alignas(16) GerstnerUniforms {
     GerstnerWaveUniform waves[SWELL_MAX_WAVES];
     int waveCount; // waves in use
+    // The coast field (shaders/ocean/coast.glsl): its layers (0: none), its
+    // sample (0, 0) relative to the grid centre, its samples along x and z
+    // and their spacing.
+    int coastLayers;
+    glm::vec2 coastOrigin_m;
+    glm::ivec2 coastSize;
+    float coastCell_m;
 };
 
 inline const gl::BlockStruct& blockStructOf(const GerstnerWaveUniform*)
@@ -39,7 +48,7 @@ inline const gl::BlockStruct& blockStructOf(const GerstnerWaveUniform*)
                                    {SWELL_BLOCK_MEMBER(S, direction), SWELL_BLOCK_MEMBER(S, wavenumber_rad_per_m),
                                     SWELL_BLOCK_MEMBER(S, amplitude_m), SWELL_BLOCK_MEMBER(S, steepness),
                                     SWELL_BLOCK_MEMBER(S, phase_rad), SWELL_BLOCK_MEMBER(S, wavelength_m),
-                                    SWELL_BLOCK_MEMBER(S, tailSlopeVariance)}};
+                                    SWELL_BLOCK_MEMBER(S, tailSlopeVariance), SWELL_BLOCK_MEMBER(S, coastLayer)}};
     return s;
 }
 
@@ -48,7 +57,9 @@ inline const gl::BlockStruct& blockStructOf(const GerstnerUniforms*)
     using S = GerstnerUniforms;
     static const gl::BlockStruct s{"GerstnerWaves", "swell::detail::GerstnerUniforms", sizeof(S),
                                    {SWELL_BLOCK_MEMBER_AS(S, waves, "gerstnerWaves"),
-                                    SWELL_BLOCK_MEMBER_AS(S, waveCount, "gerstnerWaveCount")}};
+                                    SWELL_BLOCK_MEMBER_AS(S, waveCount, "gerstnerWaveCount"),
+                                    SWELL_BLOCK_MEMBER(S, coastLayers), SWELL_BLOCK_MEMBER(S, coastOrigin_m),
+                                    SWELL_BLOCK_MEMBER(S, coastSize), SWELL_BLOCK_MEMBER(S, coastCell_m)}};
     return s;
 }
 
