@@ -63,6 +63,7 @@ ParameterValue otherValue(const Parameter& p, const ParameterValue& value, int a
     case ParameterKind::Vector3: return glm::dvec3(x, p.sliderMin + (1.0 - f) * (p.sliderMax - p.sliderMin), x);
     case ParameterKind::Direction3: return glm::dvec3(0.3 + f, 0.4, -0.7);
     case ParameterKind::Direction2: return glm::dvec2(0.3 + f, -0.7);
+    case ParameterKind::Vector2: return glm::dvec2(x, p.sliderMin + (1.0 - f) * (p.sliderMax - p.sliderMin));
     }
     return value;
 }
