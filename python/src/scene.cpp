@@ -295,7 +295,9 @@ void bindScene(py::module_& m)
                  throw py::key_error(list + ": not a list; the lists are waves.list, objects, camera.path, "
                                             "seabed.beaches, seabed.shelves, seabed.breakwaters");
              },
-             py::arg("list"), "How many items the list 'waves.list', 'objects' or 'camera.path' holds.")
+             py::arg("list"),
+             "How many items the list 'waves.list', 'objects', 'camera.path' or a seabed's 'seabed.beaches', "
+             "'seabed.shelves', 'seabed.breakwaters' holds.")
         .def("add_object",
              [](PyScene& s, const std::string& path) {
                  if (s.scene.objects.size() >= kMaxSceneObjects)

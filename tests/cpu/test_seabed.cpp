@@ -15,11 +15,18 @@
 #include <gtest/gtest.h>
 #include <stb/stb_image_write.h>
 
+#include <cstdint>
+#include <cstdlib>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <string>
+#include <vector>
+
+// stb_image_write's deflate, compiled into the library with the image loader.
+extern "C" unsigned char* stbi_zlib_compress(unsigned char* data, int data_len, int* out_len, int quality);
 
 namespace fs = std::filesystem;
 using namespace swell;
@@ -49,6 +56,49 @@ fs::path writeGrey(const std::string& name, int width, int height, const std::ve
 {
     const fs::path file = outputFolder() / name;
     EXPECT_NE(stbi_write_png(file.c_str(), width, height, 1, pixels.data(), width), 0);
+    return file;
+}
+
+// A 16-bit grey PNG of the given values, row 0 first, written by hand
+// (stb writes 8 bits only): its chunks, their CRC-32s and stb's deflate.
+fs::path writeGrey16(const std::string& name, int width, int height, const std::vector<std::uint16_t>& values)
+{
+    const auto bigEndian = [](std::string& out, std::uint32_t x) {
+        for (int shift = 24; shift >= 0; shift -= 8)
+            out += char((x >> shift) & 0xffu);
+    };
+    const auto chunk = [&](std::string& out, const std::string& type, const std::string& data) {
+        bigEndian(out, std::uint32_t(data.size()));
+        std::uint32_t crc = 0xffffffffu;
+        for (unsigned char c : type + data) {
+            crc ^= c;
+            for (int k = 0; k < 8; ++k)
+                crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+        }
+        out += type + data;
+        bigEndian(out, crc ^ 0xffffffffu);
+    };
+    std::string rows;
+    for (int y = 0; y < height; ++y) {
+        rows += '\0'; // no filter
+        for (int x = 0; x < width; ++x) {
+            const std::uint16_t v = values[std::size_t(y * width + x)];
+            rows += char(v >> 8);
+            rows += char(v & 0xff);
+        }
+    }
+    int packedSize = 0;
+    unsigned char* packed = stbi_zlib_compress(reinterpret_cast<unsigned char*>(rows.data()), int(rows.size()), &packedSize, 8);
+    std::string header, png = "\x89PNG\r\n\x1a\n";
+    bigEndian(header, std::uint32_t(width));
+    bigEndian(header, std::uint32_t(height));
+    header += std::string("\x10\0\0\0\0", 5); // 16 bits, grey, deflate, no filter method, no interlace
+    chunk(png, "IHDR", header);
+    chunk(png, "IDAT", std::string(reinterpret_cast<const char*>(packed), std::size_t(packedSize)));
+    chunk(png, "IEND", "");
+    std::free(packed);
+    const fs::path file = outputFolder() / name;
+    std::ofstream(file, std::ios::binary) << png;
     return file;
 }
 
@@ -218,6 +268,20 @@ TEST(Seabed, HeightmapMapsGreyToHeights)
     EXPECT_EQ(seabed.elevation_m({1101.0, 0.0}), -kInf);
 }
 
+// A 16-bit heightmap keeps its 65536 levels: 0x1234 is not an 8-bit grey.
+TEST(Seabed, SixteenBitHeightmapsKeepTheirLevels)
+{
+    const fs::path file = writeGrey16("map16.png", 2, 2, {0x0000, 0x1234, 0xffff, 0x8000});
+    Scene scene = floorScene();
+    scene.seabed.heightmap = SeabedHeightmap{.path = file.string(), .center_m = {0.0, 0.0}, .size_m = {10.0, 10.0},
+                                             .blackHeight_m = 0.0, .whiteHeight_m = 6.5535};
+    const Seabed seabed(scene); // 0.1 mm a level: 0x1234 would read 0x1212 through 8 bits, 0.34 mm lower
+    EXPECT_NEAR(seabed.elevation_m({-5.0, -5.0}), 0.0, 1e-6);
+    EXPECT_NEAR(seabed.elevation_m({5.0, -5.0}), 0x1234 * 1e-4, 1e-6);
+    EXPECT_NEAR(seabed.elevation_m({-5.0, 5.0}), 6.5535, 1e-6);
+    EXPECT_NEAR(seabed.elevation_m({5.0, 5.0}), 0x8000 * 1e-4, 1e-6);
+}
+
 // The drawn seabed takes its vertices from the same functions: every
 // vertex lies on elevation_m() or on a wall's foot at the toe. Each is
 // sampled 1 mm towards the middle: a vertex on the shape's very edge may
@@ -275,7 +339,10 @@ TEST(Seabed, RefusesHeightmapsThatAreNotGreyImages)
     stbi_write_png((folder / "colour.png").c_str(), 2, 2, 3, rgb, 6);
     const unsigned char one = 7;
     stbi_write_png((folder / "one.png").c_str(), 1, 1, 1, &one, 1);
-    for (const char* name : {"missing.png", "empty.png", "text.png", "colour.png", "one.png"}) {
+    // Past the image loader's 4096 pixels a side (swell/image.h), refused from its header.
+    const std::vector<unsigned char> wide(std::size_t(4097) * 2, 0);
+    stbi_write_png((folder / "huge.png").c_str(), 4097, 2, 1, wide.data(), 4097);
+    for (const char* name : {"missing.png", "empty.png", "text.png", "colour.png", "one.png", "huge.png"}) {
         Scene scene = floorScene();
         scene.seabed.heightmap.path = name;
         scene.assetFolder = folder.string();
