@@ -26,6 +26,7 @@
 #include "swell/gpu/variants.h"
 #include "swell/image.h"
 #include "swell/pass_observer.h"
+#include "swell/scene/seabed.h"
 #include "swell/scene/scene.h"
 #include "swell/surface_source.h"
 #include "swell/view.h"
@@ -83,6 +84,21 @@ public:
     void addSurfaceSource(std::shared_ptr<const SurfaceSource> source);
     // Removes it (nothing when it is not there).
     void removeSurfaceSource(const std::shared_ptr<const SurfaceSource>& source);
+
+    // The host's own terrain as heights on a grid (swell/scene/seabed.h,
+    // SeabedHeights: row-major floats, world y, over a world rectangle),
+    // joined to the scene's sea floor: where it is highest, it is the
+    // floor the water's depth is measured to. Not drawn (the host draws its
+    // own terrain). Throws swell::Error naming the fault (a size outside
+    // 2..4096, a count other than columns x rows, a NaN or infinite height,
+    // a rectangle with no area) and keeps the heights it had.
+    void setSeabedHeights(const SeabedHeights& heights);
+    // Forgets the host's heights: the scene's sea floor alone again.
+    void clearSeabedHeights();
+    // The sea floor the renderer holds: the scene's seabed, its island and
+    // the host's heights (Seabed::elevation_m). Valid until the next
+    // setScene() or change of the host's heights.
+    const Seabed& seabed() const;
 
     // The water exactly as render() draws it for this camera and time: the
     // grid's triangles (swell/drawn_surface.h), in absolute world

@@ -151,6 +151,7 @@ ParameterValue toParameterValue(const Parameter& p, py::handle v, const std::str
         value = toVec3(v, name);
         break;
     case ParameterKind::Direction2:
+    case ParameterKind::Vector2:
         value = toVec2(v, name);
         break;
     case ParameterKind::DateTime:
@@ -181,7 +182,8 @@ py::object toPython(const Parameter& p, const ParameterValue& value)
     case ParameterKind::Colour:
     case ParameterKind::Direction3:
     case ParameterKind::Vector3: return toTuple(std::get<glm::dvec3>(value));
-    case ParameterKind::Direction2: return toTuple(std::get<glm::dvec2>(value));
+    case ParameterKind::Direction2:
+    case ParameterKind::Vector2: return toTuple(std::get<glm::dvec2>(value));
     }
     return py::none();
 }
@@ -232,6 +234,7 @@ std::string_view kindName(ParameterKind kind)
     case ParameterKind::Direction3: return "direction3";
     case ParameterKind::Vector3: return "vector3";
     case ParameterKind::Direction2: return "direction2";
+    case ParameterKind::Vector2: return "vector2";
     case ParameterKind::DateTime: return "datetime";
     }
     return "";
@@ -284,12 +287,17 @@ void bindScene(py::module_& m)
         .def("keys", [](const PyScene& s) { return keysOf(s.scene); },
              "Every key this scene has a value for, list items spelt out ('objects[0].scale').")
         .def("list_size", [](const PyScene& s, const std::string& list) {
-                 for (ParameterList l : {ParameterList::Waves, ParameterList::Objects, ParameterList::CameraPath})
+                 for (ParameterList l : {ParameterList::Waves, ParameterList::Objects, ParameterList::CameraPath,
+                                         ParameterList::SeabedBeaches, ParameterList::SeabedShelves,
+                                         ParameterList::SeabedBreakwaters})
                      if (listKey(l) == list)
                          return listSize(s.scene, l);
-                 throw py::key_error(list + ": not a list; the lists are waves.list, objects, camera.path");
+                 throw py::key_error(list + ": not a list; the lists are waves.list, objects, camera.path, "
+                                            "seabed.beaches, seabed.shelves, seabed.breakwaters");
              },
-             py::arg("list"), "How many items the list 'waves.list', 'objects' or 'camera.path' holds.")
+             py::arg("list"),
+             "How many items the list 'waves.list', 'objects', 'camera.path' or a seabed's 'seabed.beaches', "
+             "'seabed.shelves', 'seabed.breakwaters' holds.")
         .def("add_object",
              [](PyScene& s, const std::string& path) {
                  if (s.scene.objects.size() >= kMaxSceneObjects)

@@ -1,5 +1,6 @@
 #include "swell/image.h"
 
+#include "assets/grey_image.h"
 #include "core/input_file.h"
 #include "swell/error.h"
 
@@ -40,28 +41,76 @@ void writePng(const Image& image, const std::filesystem::path& path)
                                 errno ? ": " + std::string(std::strerror(errno)) : std::string()));
 }
 
+namespace {
+
+// An image file's bytes, read within the limits of swell/image.h, its
+// header checked before anything is decoded: a small file may declare a
+// huge picture, and decoding allocates for what it declares.
+struct CheckedImageFile {
+    std::string bytes;
+    int width = 0, height = 0, channels = 0;
+
+    const stbi_uc* data() const { return reinterpret_cast<const stbi_uc*>(bytes.data()); }
+    int size() const { return int(bytes.size()); }
+};
+
+CheckedImageFile readCheckedImageFile(const std::filesystem::path& path)
+{
+    CheckedImageFile file{detail::readInputFile(path, kMaxImageFileBytes, "image")};
+    if (file.bytes.size() > std::size_t(std::numeric_limits<int>::max()))
+        throw InputError({path.string()}, "the image is too large to decode");
+    if (!stbi_info_from_memory(file.data(), file.size(), &file.width, &file.height, &file.channels))
+        throw InputError({path.string()}, std::string("cannot read image: ") + stbi_failure_reason());
+    if (file.width > kMaxImageSide || file.height > kMaxImageSide)
+        throw InputError({path.string()}, fmt::format("the image is {}x{} pixels; images are at most {}x{}", file.width,
+                                                      file.height, kMaxImageSide, kMaxImageSide));
+    return file;
+}
+
+} // namespace
+
 Image readImage(const std::filesystem::path& path)
 {
-    const std::string bytes = detail::readInputFile(path, kMaxImageFileBytes, "image");
-    if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
-        throw InputError({path.string()}, "the image is too large to decode");
-    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-    const int size = int(bytes.size());
-    // The header first: a small file may declare a huge picture, and
-    // decoding allocates for what it declares.
+    const CheckedImageFile file = readCheckedImageFile(path);
     int w = 0, h = 0, channels = 0;
-    if (!stbi_info_from_memory(data, size, &w, &h, &channels))
-        throw InputError({path.string()}, std::string("cannot read image: ") + stbi_failure_reason());
-    if (w > kMaxImageSide || h > kMaxImageSide)
-        throw InputError({path.string()}, fmt::format("the image is {}x{} pixels; images are at most {}x{}", w, h,
-                                                      kMaxImageSide, kMaxImageSide));
-    stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &channels, 4);
+    stbi_uc* pixels = stbi_load_from_memory(file.data(), file.size(), &w, &h, &channels, 4);
     if (!pixels)
         throw InputError({path.string()}, std::string("cannot read image: ") + stbi_failure_reason());
     Image image{w, h, std::vector<std::uint8_t>(pixels, pixels + size_t(w) * size_t(h) * 4)};
     stbi_image_free(pixels);
     return image;
 }
+
+namespace detail {
+
+GreyImage readGreyImage(const std::filesystem::path& path)
+{
+    const CheckedImageFile file = readCheckedImageFile(path);
+    if (file.channels > 2)
+        throw InputError({path.string()}, fmt::format("the image has colour ({} channels); a heightmap is a grey "
+                                                      "image, 8 or 16 bits a pixel",
+                                                      file.channels));
+    int w = 0, h = 0, channels = 0;
+    GreyImage image;
+    if (stbi_is_16_bit_from_memory(file.data(), file.size())) {
+        stbi_us* pixels = stbi_load_16_from_memory(file.data(), file.size(), &w, &h, &channels, 1);
+        if (!pixels)
+            throw InputError({path.string()}, std::string("cannot read image: ") + stbi_failure_reason());
+        image = {w, h, std::vector<std::uint16_t>(pixels, pixels + size_t(w) * size_t(h))};
+        stbi_image_free(pixels);
+        return image;
+    }
+    stbi_uc* pixels = stbi_load_from_memory(file.data(), file.size(), &w, &h, &channels, 1);
+    if (!pixels)
+        throw InputError({path.string()}, std::string("cannot read image: ") + stbi_failure_reason());
+    image = {w, h, std::vector<std::uint16_t>(size_t(w) * size_t(h))};
+    for (std::size_t i = 0; i < image.values.size(); ++i)
+        image.values[i] = std::uint16_t(pixels[i] * 257u); // 255 -> 65535: white stays white
+    stbi_image_free(pixels);
+    return image;
+}
+
+} // namespace detail
 
 ImageDifference compareImages(const Image& a, const Image& b)
 {

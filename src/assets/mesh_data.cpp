@@ -1,6 +1,8 @@
 // Procedural built-in models and the island heightfield.
 #include "assets/mesh_data.h"
 
+#include "assets/island_terrain.h"
+
 #include "embedded_files.h"
 #include "swell/error.h"
 
@@ -12,37 +14,6 @@
 #include <map>
 
 namespace swell::detail {
-
-namespace {
-
-// Smooth value noise, deterministic, for the island's and rocks' relief.
-double hash2(int x, int y)
-{
-    std::uint32_t h = std::uint32_t(x) * 374761393u + std::uint32_t(y) * 668265263u;
-    h = (h ^ (h >> 13)) * 1274126177u;
-    return double(h ^ (h >> 16)) / 4294967295.0;
-}
-
-double valueNoise(double x, double y)
-{
-    const int ix = int(std::floor(x)), iy = int(std::floor(y));
-    const double fx = x - ix, fy = y - iy;
-    const double sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
-    const double a = hash2(ix, iy), b = hash2(ix + 1, iy), c = hash2(ix, iy + 1), d = hash2(ix + 1, iy + 1);
-    return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
-}
-
-double fractalNoise(double x, double y, int octaves = 5)
-{
-    double sum = 0.0, amplitude = 0.5;
-    for (int octave = 0; octave < octaves; ++octave) {
-        sum += amplitude * (valueNoise(x, y) - 0.5);
-        x *= 2.03;
-        y *= 2.03;
-        amplitude *= 0.5;
-    }
-    return sum;
-}
 
 void addTriangleNormals(MeshData& mesh)
 {
@@ -60,6 +31,8 @@ void addTriangleNormals(MeshData& mesh)
     for (MeshVertex& v : mesh.vertices)
         v.normal = glm::length(v.normal) > 0.0f ? glm::normalize(v.normal) : glm::vec3(0, 1, 0);
 }
+
+namespace {
 
 // Vertices that share a place share one normal: a lathe repeats its first
 // column at its seam and its ends at the poles, and normals averaged on each
@@ -121,12 +94,7 @@ MeshData makeIsland(double size_m, double peak_m, int resolution)
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i) {
             const double x = (double(i) / n - 0.5) * size_m, z = (double(j) / n - 0.5) * size_m;
-            const double r = std::sqrt(x * x + z * z) / (0.5 * size_m);
-            // A dome that dips below the water at r ~ 0.45, shallows to r ~ 0.75, then deep.
-            const double dome = std::exp(-r * r * 9.0);
-            const double relief = fractalNoise(x / 90.0 + 7.3, z / 90.0 - 2.1);
-            double h = peak_m * (dome + 0.9 * relief * dome) - 2.0 - 38.0 * std::min(r, 1.0) * std::min(r, 1.0);
-            h = std::max(h, -45.0);
+            const double h = islandHeight_m({x, z}, size_m, peak_m);
             glm::vec3 color;
             if (h < -1.0)
                 color = {0.55f, 0.50f, 0.38f}; // wet sand under water

@@ -24,6 +24,9 @@ struct MeshData {
     std::vector<std::uint32_t> indices; // triangles
 };
 
+// Sets each vertex's normal to the mean of its triangles' (area-weighted).
+void addTriangleNormals(MeshData& mesh);
+
 // The built-in island: a heightfield of side size_m centred on the origin,
 // peak_m above the water, sloping into shallows and then deep water.
 MeshData makeIsland(double size_m, double peak_m, int resolution);

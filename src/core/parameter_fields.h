@@ -188,5 +188,7 @@ inline bool sunByDirection(const Scene& s) { return !s.sun.place && !s.sun.angle
 inline bool sunByAngles(const Scene& s) { return s.sun.angles.has_value(); }
 inline bool isSpectral(const Scene& s) { return s.waves.model == WaveModelKind::Spectral; }
 inline bool swellIsSet(const Scene& s) { return s.sea.wind && s.sea.wind->swell; }
+inline bool seabedIsSet(const Scene& s) { return !s.seabed.empty(); }
+inline bool heightmapIsSet(const Scene& s) { return !s.seabed.heightmap.path.empty(); }
 
 } // namespace swell::parameter_fields

@@ -5,6 +5,7 @@
 #include "swell/scene/parameters.h"
 
 #include "core/parameter_fields.h"
+#include "core/parameter_table_seabed.h"
 
 #include "swell/gpu/limits.h"
 #include "swell/gpu/variants.h"
@@ -85,7 +86,7 @@ std::vector<Parameter> buildTable()
             .sliderMax = 20.0, .description = "spectral model: e-folding time of whitecap foam (salt water: 3.85); 0: no foam",
             .present = isSpectral}),
         at([](auto& s, std::size_t) -> auto& { return s.sea.depth_m; },
-           {.key = "waves.depth_m", .effect = E::Waves | E::Bodies, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
+           {.key = "waves.depth_m", .effect = E::Waves | E::Bodies | E::Seabed, .unit = "m", .min = 0.0, .max = kInf, .minExclusive = true,
             .sliderMin = 1.0, .sliderMax = 500.0, .logarithmic = true,
             .description = "water depth for listed and wind waves; inf is deep water"}),
         // [waves.wind]
@@ -309,7 +310,7 @@ std::vector<Parameter> buildTable()
            {.key = "water.refraction_distortion", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.3,
             .description = "how far the normal bends the refraction lookup"}),
         at([](auto& s, std::size_t) -> auto& { return s.sea.level_m; },
-           {.key = "water.level_m", .effect = E::Bodies, .unit = "m", .min = -1.0e4, .max = 1.0e4, .sliderMin = -10.0, .sliderMax = 500.0,
+           {.key = "water.level_m", .effect = E::Bodies | E::Seabed, .unit = "m", .min = -1.0e4, .max = 1.0e4, .sliderMin = -10.0, .sliderMax = 500.0,
             .description = "the water's mean level: the height of the surface at rest (a lake at 300 m)"}),
         at([](auto& s, std::size_t) -> auto& { return s.water.caustics; },
            {.key = "water.caustics", .kind = K::Flag, .effect = E::Programs, .min = 0.0, .max = 1.0, .sliderMin = 0.0,
@@ -388,6 +389,7 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.wake.cellSize_m; },
            {.key = "wake.cell_size_m", .effect = E::Bodies, .unit = "m", .min = 0.1, .max = 10.0, .sliderMin = 0.25, .sliderMax = 4.0,
             .logarithmic = true, .description = "wake field cell size: waves shorter than 2 cells are not carried"}),
+        // [seabed] follows (parameter_table_seabed.cpp)
         // [camera]
         at([](auto& s, std::size_t) -> auto& { return s.camera.position_m; },
            {.key = "camera.position_m", .kind = K::Vector3, .unit = "m", .min = -kWorldLimit_m, .max = kWorldLimit_m,
@@ -468,8 +470,8 @@ std::vector<Parameter> buildTable()
             .sliderMax = kDebugViews.size() - 1.0, .description = "what the water shows: the shaded ocean or one ingredient",
             .choices = kDebugViews}),
         at([](auto& s, std::size_t) -> auto& { return s.showTerrain; },
-           {.key = "terrain", .kind = K::Flag, .effect = E::World, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
-            .description = "draw the built-in island"}),
+           {.key = "terrain", .kind = K::Flag, .effect = E::World | E::Seabed, .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 1.0,
+            .description = "draw the built-in island (part of the sea floor too)"}),
         at([](auto& s, std::size_t) -> auto& { return s.antialiasing; },
            {.key = "antialiasing", .kind = K::Choice, .min = 0.0, .max = kAntialiasing.size() - 1.0, .sliderMin = 0.0,
             .sliderMax = kAntialiasing.size() - 1.0,
@@ -482,6 +484,11 @@ std::vector<Parameter> buildTable()
                            "(foam developed, bodies started 60 s before t = 0)"}),
     };
 
+    // [seabed] in its place of scene.h, after [wake]
+    const auto camera = std::find_if(t.begin(), t.end(), [](const Parameter& p) { return p.key == "camera.position_m"; });
+    std::vector<Parameter> seabed = detail::seabedParameters();
+    t.insert(camera, seabed.begin(), seabed.end());
+
     // Defaults come from the member initialisers: a default Scene with one
     // item in every list and the wind switched on.
     Scene prototype;
@@ -489,6 +496,9 @@ std::vector<Parameter> buildTable()
     prototype.waves.listed.emplace_back();
     prototype.objects.emplace_back();
     prototype.camera.path.emplace_back();
+    prototype.seabed.beaches.emplace_back();
+    prototype.seabed.shelves.emplace_back();
+    prototype.seabed.breakwaters.emplace_back();
     for (Parameter& p : t)
         p.defaultValue = p.get(prototype, 0);
     return t;

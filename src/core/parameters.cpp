@@ -93,7 +93,8 @@ bool holdsKind(const Parameter& p, const ParameterValue& v)
     case K::Colour:
     case K::Direction3:
     case K::Vector3: return std::holds_alternative<glm::dvec3>(v);
-    case K::Direction2: return std::holds_alternative<glm::dvec2>(v);
+    case K::Direction2:
+    case K::Vector2: return std::holds_alternative<glm::dvec2>(v);
     }
     return false;
 }
@@ -108,6 +109,9 @@ std::string_view listKey(ParameterList list)
     case L::Waves: return "waves.list";
     case L::Objects: return "objects";
     case L::CameraPath: return "camera.path";
+    case L::SeabedBeaches: return "seabed.beaches";
+    case L::SeabedShelves: return "seabed.shelves";
+    case L::SeabedBreakwaters: return "seabed.breakwaters";
     }
     return "";
 }
@@ -138,6 +142,9 @@ std::size_t listSize(const Scene& scene, ParameterList list)
     case L::Waves: return scene.waves.listed.size();
     case L::Objects: return scene.objects.size();
     case L::CameraPath: return scene.camera.path.size();
+    case L::SeabedBeaches: return scene.seabed.beaches.size();
+    case L::SeabedShelves: return scene.seabed.shelves.size();
+    case L::SeabedBreakwaters: return scene.seabed.breakwaters.size();
     }
     return 0;
 }
@@ -150,7 +157,8 @@ int componentCount(ParameterKind kind)
     case K::Colour:
     case K::Direction3:
     case K::Vector3: return 3;
-    case K::Direction2: return 2;
+    case K::Direction2:
+    case K::Vector2: return 2;
     default: return 1;
     }
 }
@@ -242,12 +250,13 @@ std::string valueProblem(const Parameter& p, const ParameterValue& value, std::s
                 return rangeMessage(p, fmt::format("{}[{}]", name, c), v[c]);
         return p.kind == K::Direction3 ? directionProblem(v, name) : "";
     }
-    case K::Direction2: {
+    case K::Direction2:
+    case K::Vector2: {
         glm::dvec2 v = std::get<glm::dvec2>(value);
         for (int c = 0; c < 2; ++c)
             if (!inRange(p, v[c]))
                 return rangeMessage(p, fmt::format("{}[{}]", name, c), v[c]);
-        return directionProblem(v, name);
+        return p.kind == K::Direction2 ? directionProblem(v, name) : "";
     }
     }
     return "";
@@ -274,7 +283,8 @@ std::string formatValue(const Parameter& p, const ParameterValue& value)
         glm::dvec3 v = std::get<glm::dvec3>(value);
         return fmt::format("[{}, {}, {}]", formatReal(v.x), formatReal(v.y), formatReal(v.z));
     }
-    case K::Direction2: {
+    case K::Direction2:
+    case K::Vector2: {
         glm::dvec2 v = std::get<glm::dvec2>(value);
         return fmt::format("[{}, {}]", formatReal(v.x), formatReal(v.y));
     }

@@ -19,6 +19,11 @@ ParameterEffect sceneChanges(const Scene& before, const Scene& after)
     if (!sameObjectFiles || before.sky.cubemapFaces != after.sky.cubemapFaces ||
         before.assetFolder != after.assetFolder)
         effects |= ParameterEffect::World;
+    const SeabedSettings &floorBefore = before.seabed, &floorAfter = after.seabed;
+    if (floorBefore.beaches.size() != floorAfter.beaches.size() || floorBefore.shelves.size() != floorAfter.shelves.size()
+        || floorBefore.breakwaters.size() != floorAfter.breakwaters.size()
+        || floorBefore.heightmap.path != floorAfter.heightmap.path || before.assetFolder != after.assetFolder)
+        effects |= ParameterEffect::Seabed;
 
     for (const Parameter& p : parameters()) {
         if (p.effect == ParameterEffect::Frame || hasEffect(effects, p.effect))

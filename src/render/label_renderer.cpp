@@ -63,7 +63,7 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     std::vector<glm::uvec2> objectLabels;
     for (const ObjectLabel& o : objects)
         objectLabels.emplace_back(o.semanticClass, o.instance);
-    SceneWorld own(resources.world, p.mesh, p.mesh, v.poses, v.island, context.telemetry.counters);
+    SceneWorld own(resources.world, p.mesh, p.mesh, v.poses, v.island, v.seabed, context.telemetry.counters);
     own.setLabels(glm::uvec2(SWELL_LABEL_TERRAIN, 0u), std::move(objectLabels));
     own.setMainPassInAir(false);
     own.setIslandTolerance(context.islandTolerance_px);

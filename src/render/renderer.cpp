@@ -67,6 +67,27 @@ void Renderer::removeSurfaceSource(const std::shared_ptr<const SurfaceSource>& s
     s.apply(s.scene, ParameterEffect::Frame, s.simulation.sceneModel(), s.simulation.overrideModel(), std::move(next));
 }
 
+void Renderer::setSeabedHeights(const SeabedHeights& heights)
+{
+    Impl& s = *impl_;
+    checkSeabedHeights(heights, "Renderer::setSeabedHeights()");
+    s.simulation.settle();
+    // Built before anything changes: a failure leaves the heights as they were.
+    auto seabed = std::make_shared<const Seabed>(s.scene, &heights);
+    s.hostSeabed = heights;
+    s.resources.seabed = std::move(seabed);
+}
+
+void Renderer::clearSeabedHeights()
+{
+    Impl& s = *impl_;
+    s.simulation.settle();
+    s.resources.seabed = std::make_shared<const Seabed>(s.scene);
+    s.hostSeabed.reset();
+}
+
+const Seabed& Renderer::seabed() const { return *impl_->resources.seabed; }
+
 namespace {
 
 void checkRenderScale(double scale)

@@ -50,6 +50,9 @@ struct SceneUpdate {
     Programs programs; // those whose flags changed (buildChangedPrograms)
     std::optional<World> world;
     std::optional<SceneShapes> shapes; // with the world: what its rigid bodies are built from
+    // The sea floor built again (with the world, or when only it changed), and its mesh.
+    std::shared_ptr<const Seabed> seabed;
+    SeabedMesh seabedMesh;
     bool gridChanged = false;
 };
 
@@ -65,6 +68,8 @@ struct Renderer::Impl {
     LabelRenderer labels;
     ViewStates views;
     RenderSettings settings;
+    // The host's terrain (Renderer::setSeabedHeights), joined to the scene's seabed.
+    std::optional<SeabedHeights> hostSeabed;
     // renderImage()'s offscreen frame.
     RenderTarget output;
 

@@ -53,6 +53,8 @@ public:
     bool waterInTwoPasses = false;
     World world;
     SceneShapes shapes; // what the world's rigid bodies are built from (the assets' CPU data)
+    // The sea floor: the scene's seabed, its island and the host's heights.
+    std::shared_ptr<const Seabed> seabed = std::make_shared<const Seabed>();
     // The sun's light under the water, drawn again by each view that needs it (caustics_map.h).
     CausticsMap caustics;
 

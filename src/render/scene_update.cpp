@@ -41,6 +41,10 @@ SceneUpdate Renderer::Impl::prepare(const Scene& next, ParameterEffect effects,
         update.world = buildWorld(next, assets);
         update.shapes = SceneShapes(assets);
     }
+    if (first || hasEffect(effects, ParameterEffect::World) || hasEffect(effects, ParameterEffect::Seabed)) {
+        update.seabed = std::make_shared<const Seabed>(next, hostSeabed ? &*hostSeabed : nullptr);
+        update.seabedMesh = makeSeabedMesh(*update.seabed);
+    }
     // Bodies start again from their start when what moves them changed.
     const bool sourcesChanged = nextHostSources != simulation.hostSources();
     if (update.world || modelChanged || sourcesChanged || !sameBodies(scene, next)) {
@@ -68,6 +72,10 @@ void Renderer::Impl::commit(const Scene& next, SceneUpdate update)
         resources.world = std::move(*update.world);
         resources.shapes = std::move(*update.shapes);
         sky.forgetBake();
+    }
+    if (update.seabed) {
+        resources.seabed = std::move(update.seabed);
+        setSeabedMesh(resources.world, update.seabedMesh);
     }
     if (update.gridChanged) {
         resources.buildGrid(scene);

@@ -11,8 +11,10 @@
 namespace swell::detail {
 
 SceneWorld::SceneWorld(const World& world, const MeshProgram& meshInAir, const MeshProgram& mesh,
-                       const std::vector<glm::mat4>& poses, const glm::mat4& island, FrameCounters& counters)
-    : world_(world), meshInAir_(meshInAir), mesh_(mesh), poses_(poses), island_(island), counters_(counters)
+                       const std::vector<glm::mat4>& poses, const glm::mat4& island, const glm::mat4& seabed,
+                       FrameCounters& counters)
+    : world_(world), meshInAir_(meshInAir), mesh_(mesh), poses_(poses), island_(island), seabed_(seabed),
+      counters_(counters)
 {
 }
 
@@ -102,6 +104,13 @@ void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
 {
     program.use();
     drawIsland(program, pass);
+    if (world_.seabed.indexCount() > 0) {
+        program.setModel(seabed_);
+        program.setLabel(islandLabel_);
+        world_.seabed.draw();
+        counters_.worldTriangles += world_.seabed.indexCount() / 3;
+        ++counters_.drawCalls;
+    }
     for (std::size_t i = 0; i < world_.meshes.size() && i < poses_.size(); ++i) {
         program.setModel(poses_[i]);
         if (i < objectLabels_.size())

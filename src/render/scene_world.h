@@ -19,10 +19,11 @@ namespace swell::detail {
 class SceneWorld final : public PassGeometry {
 public:
     // poses: each scene object's transform relative to the render origin;
-    // island: the island's. meshInAir / mesh: the programs for passes whose
+    // island, seabed: the island's and the seabed mesh's. meshInAir / mesh: the programs for passes whose
     // pixels all look out from the air, and for any pass.
     SceneWorld(const World& world, const MeshProgram& meshInAir, const MeshProgram& mesh,
-               const std::vector<glm::mat4>& poses, const glm::mat4& island, FrameCounters& counters);
+               const std::vector<glm::mat4>& poses, const glm::mat4& island, const glm::mat4& seabed,
+               FrameCounters& counters);
 
     // Whether the next Main pass may have pixels that look out from below
     // the water (the main pass's waterline mask decides per pixel then).
@@ -34,7 +35,8 @@ public:
     void drawPass(const PassView& pass) override;
 
     // For the label pass (its mesh program): the island's class and
-    // instance, and each object's, set before each draw.
+    // instance (the seabed's too: both are terrain), and each object's, set
+    // before each draw.
     void setLabels(glm::uvec2 island, std::vector<glm::uvec2> objects)
     {
         islandLabel_ = island;
@@ -50,6 +52,7 @@ private:
     const MeshProgram &meshInAir_, &mesh_;
     const std::vector<glm::mat4>& poses_;
     glm::mat4 island_;
+    glm::mat4 seabed_;
     FrameCounters& counters_;
     bool mainInAir_ = true;
     double islandTolerance_px_ = kIslandLodTolerance_px;

@@ -14,7 +14,7 @@ void Renderer::Impl::drawView(const ViewRequest& request, ViewState& state)
     ViewFrame v = prepareView(c, request.view, request.size, request.options.geometry != nullptr);
     ++telemetry.counters.views;
     SceneWorld own(resources.world, resources.programs.meshInAir, resources.programs.mesh, v.poses, v.island,
-                   telemetry.counters);
+                   v.seabed, telemetry.counters);
     own.setIslandTolerance(settings.islandTolerance_px);
     SceneWorld* ownWorld = request.options.sceneWorld ? &own : nullptr;
     // Drawn for the temporal resolve below the output's size: the water's

@@ -48,6 +48,8 @@ ViewFrame prepareView(RenderContext& context, const View& view, glm::ivec2 size,
     for (const glm::dmat4& pose : simulated.poses)
         v.poses.emplace_back(glm::translate(glm::dmat4(1.0), -v.origin) * pose);
     v.island = glm::mat4(glm::translate(glm::dmat4(1.0), kIslandPosition_m - v.origin));
+    const glm::dvec2 seabedAt = context.resources.world.seabedOrigin_m;
+    v.seabed = glm::mat4(glm::translate(glm::dmat4(1.0), glm::dvec3(seabedAt.x, 0.0, seabedAt.y) - v.origin));
     // A host's geometry has no boxes Swell knows of: every reflected ray
     // is marched.
     const World& world = context.resources.world;

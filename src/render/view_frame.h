@@ -46,6 +46,7 @@ struct ViewFrame {
     DepthConvention depth;
     std::vector<glm::mat4> poses; // each object's transform relative to the origin
     glm::mat4 island{1.0f};
+    glm::mat4 seabed{1.0f};   // the seabed's mesh relative to the render origin
     glm::ivec2 size{0};       // every pass's size, pixels
 };
 

@@ -56,6 +56,18 @@ World buildWorld(const Scene& from, const SceneAssets& assets)
     return world;
 }
 
+void setSeabedMesh(World& world, const SeabedMesh& seabed)
+{
+    world.seabed = seabed.mesh.indices.empty() ? GpuMesh() : GpuMesh(seabed.mesh);
+    world.seabedOrigin_m = seabed.origin_m;
+    world.seabedLo_m = world.seabedHi_m = glm::dvec3(0.0);
+    for (std::size_t v = 0; v < seabed.mesh.vertices.size(); ++v) {
+        const glm::dvec3 p(seabed.mesh.vertices[v].position);
+        world.seabedLo_m = v == 0 ? p : glm::min(world.seabedLo_m, p);
+        world.seabedHi_m = v == 0 ? p : glm::max(world.seabedHi_m, p);
+    }
+}
+
 int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,
                const std::vector<glm::dmat4>& poses, WorldBoxUniform* boxes)
 {
@@ -69,6 +81,10 @@ int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, g
         const glm::dvec3 half(0.5 * kIslandSize_m, 0.0, 0.5 * kIslandSize_m);
         add(kIslandPosition_m - half - glm::dvec3(0.0, 1.0, 0.0),
             kIslandPosition_m + half + glm::dvec3(0.0, kIslandPeak_m + 1.0, 0.0));
+    }
+    if (world.seabed.indexCount() > 0) {
+        const glm::dvec3 at(world.seabedOrigin_m.x, 0.0, world.seabedOrigin_m.y);
+        add(at + world.seabedLo_m, at + world.seabedHi_m);
     }
     // Objects may turn and tilt, so each is boxed as a sphere round its
     // origin; floating ones also rise and fall with the surface.

@@ -5,6 +5,8 @@
 #pragma once
 
 #include "assets/island_levels.h"
+#include "assets/island_terrain.h"
+#include "assets/seabed_mesh.h"
 #include "assets/scene_assets.h"
 #include "render/gpu/blocks.h"
 #include "render/mesh.h"
@@ -18,11 +20,8 @@
 
 namespace swell::detail {
 
-// The built-in island: size, peak and where it stands (ahead-left of the default camera).
-inline constexpr double kIslandSize_m = 1400.0;
-inline constexpr double kIslandPeak_m = 70.0;
+// The built-in island's grid (its size, peak and place: assets/island_terrain.h).
 inline constexpr int kIslandResolution = 192;
-inline constexpr glm::dvec3 kIslandPosition_m{-700.0, 0.0, -1700.0};
 // Its levels of detail (assets/island_levels.h): tiles of 24 of the full
 // grid's cells a side (8 x 8 tiles; levels of step 1, 2, 4 and 8), and the
 // largest error a tile may show, in the pass's own pixels (docs/RENDERING.md
@@ -45,7 +44,15 @@ struct World {
     // Per scene object, the closed volume of its open hull, or null (see Renderer's drawHullVolumes).
     std::vector<std::unique_ptr<GpuMesh>> hullVolumes;
     gl::Texture skyCube;
+    // The scene's seabed shapes and heightmap (assets/seabed_mesh.h), built
+    // again apart from the rest when only the seabed changed; empty: none.
+    GpuMesh seabed;
+    glm::dvec2 seabedOrigin_m{0.0}; // world [x, z] its vertices are relative to (sea frame y)
+    glm::dvec3 seabedLo_m{0.0}, seabedHi_m{0.0}; // its box, sea frame, relative to seabedOrigin_m
 };
+
+// Uploads the seabed's mesh into `world`, replacing any it had.
+void setSeabedMesh(World& world, const SeabedMesh& mesh);
 
 // Uploads the meshes and sky of `scene`, read into `assets`
 // (loadSceneAssets), without touching any current world, so a bad asset

@@ -3,6 +3,7 @@
 
 #include "core/asset_path.h"
 #include "core/input_file.h"
+#include "core/seabed_shapes.h"
 #include "swell/dataset/labels.h"
 #include "swell/gpu/limits.h"
 #include "swell/scene/parameters.h"
@@ -159,6 +160,30 @@ void checkWaves(const Scene& scene, const Places& places)
         fail(place, fmt::format("{} are not usable: {}", source, problem));
 }
 
+// The sea floor's lists within their limits, no breakwater without a
+// length, and the heightmap's file (when `files`) in the scene's folder. Its
+// image is read with the scene's other assets (swell::Seabed), which report
+// a file that is not a grey image at this key too. A seabed that stands
+// above the camera, or above the whole sea, is allowed: a camera may stand
+// on land, and a lake may be all shallows.
+void checkSeabed(const Scene& scene, const Places& places, const fs::path& base, bool files)
+{
+    const SeabedSettings& seabed = scene.seabed;
+    for (ParameterList list : {ParameterList::SeabedBeaches, ParameterList::SeabedShelves, ParameterList::SeabedBreakwaters})
+        if (listSize(scene, list) > kMaxSeabedShapes)
+            fail(places.first({std::string(listKey(list)), "seabed"}),
+                 fmt::format("{} has {} entries; at most {} are allowed", listKey(list), listSize(scene, list),
+                             kMaxSeabedShapes));
+    if (const auto problem = seabedShapeProblem(seabed))
+        fail(places.first({problem->key, problem->key.substr(0, problem->key.rfind('.')), "seabed"}), problem->message);
+    if (!files || seabed.heightmap.path.empty())
+        return;
+    const std::string name = "seabed.heightmap.path";
+    if (hasControlCharacter(seabed.heightmap.path))
+        fail(places.at(name), fmt::format("{} contains a control character", name));
+    checkFile(base, resolvedFolder(base), seabed.heightmap.path, name, places.at(name));
+}
+
 } // namespace
 
 void checkScene(const Scene& scene, const Places& places, const fs::path& base, ParameterEffect scope)
@@ -227,6 +252,7 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base, 
         checkClass(scene.objects[i], i, places);
     }
 
+    checkSeabed(scene, places, base, hasEffect(scope, ParameterEffect::World) || hasEffect(scope, ParameterEffect::Seabed));
     if (hasEffect(scope, ParameterEffect::Waves))
         checkWaves(scene, places);
     if (!hasEffect(scope, ParameterEffect::World))

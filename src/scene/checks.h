@@ -14,7 +14,8 @@ namespace swell::detail::scenefile {
 // scene names (inside `base`, the scene file's folder, regular and readable)
 // and the wave set. Throws InputError at the key's place in `places`.
 // `scope` leaves out the costly checks a change cannot affect: the files
-// unless it has ParameterEffect::World, the waves unless ParameterEffect::Waves.
+// unless it has ParameterEffect::World (the heightmap's: World or Seabed),
+// the waves unless ParameterEffect::Waves.
 void checkScene(const Scene& scene, const Places& places, const std::filesystem::path& base,
                 ParameterEffect scope = ParameterEffect::World | ParameterEffect::Waves);
 

@@ -27,7 +27,7 @@ namespace {
 // tables ([waves], [wake], ...) are not listed here: the parameter table says
 // which they are (parameterTables), so a table added there is read without a
 // second list to keep in step.
-enum class Shape { Table, TableList, Faces, ObjectPath, HullNode, ObjectClass };
+enum class Shape { Table, TableList, Faces, ObjectPath, HullNode, ObjectClass, HeightmapPath };
 
 struct StructuralKey {
     std::string_view key;
@@ -43,7 +43,15 @@ constexpr StructuralKey kStructure[] = {
     {"objects.hull_node", Shape::HullNode, ParameterList::Objects},
     {"objects.class", Shape::ObjectClass, ParameterList::Objects},
     {"camera.path", Shape::TableList, ParameterList::None},
+    {"seabed.beaches", Shape::TableList, ParameterList::None},
+    {"seabed.shelves", Shape::TableList, ParameterList::None},
+    {"seabed.breakwaters", Shape::TableList, ParameterList::None},
+    {"seabed.heightmap.path", Shape::HeightmapPath, ParameterList::None},
 };
+
+constexpr ParameterList kLists[] = {ParameterList::Waves,         ParameterList::Objects,
+                                    ParameterList::CameraPath,    ParameterList::SeabedBeaches,
+                                    ParameterList::SeabedShelves, ParameterList::SeabedBreakwaters};
 
 // The shape of a key that is not a parameter, or nothing when it is unknown.
 std::optional<Shape> shapeOf(std::string_view key, ParameterList list)
@@ -65,7 +73,7 @@ const Parameter* findParameterIn(std::string_view key, ParameterList list)
 
 ParameterList listOf(std::string_view tableListKey)
 {
-    for (ParameterList l : {ParameterList::Waves, ParameterList::Objects, ParameterList::CameraPath})
+    for (ParameterList l : kLists)
         if (listKey(l) == tableListKey)
             return l;
     return ParameterList::None;
@@ -77,6 +85,9 @@ std::size_t listLimit(ParameterList list)
     case ParameterList::Waves: return SWELL_MAX_WAVES;
     case ParameterList::Objects: return kMaxSceneObjects;
     case ParameterList::CameraPath: return kMaxCameraKeys;
+    case ParameterList::SeabedBeaches:
+    case ParameterList::SeabedShelves:
+    case ParameterList::SeabedBreakwaters: return kMaxSeabedShapes;
     case ParameterList::None: break;
     }
     return 0;
@@ -113,6 +124,7 @@ public:
                                  total, SWELL_MAX_WAVES));
         }
         checkSunForm();
+        checkHeightmapHasPath();
         // One depth for both wave sources (see WaveSource).
         if (scene_.sea.wind)
             scene_.sea.wind->depth_m = scene_.sea.depth_m;
@@ -130,6 +142,20 @@ private:
             checkSunKeys(kAngles, "sun.elevation_deg and sun.azimuth_deg (like a heading, from -z towards +x)");
         if (scene_.sun.place)
             checkSunKeys(kPlace, "sun.time, sun.latitude_deg and sun.longitude_deg");
+    }
+
+    // A heightmap's keys mean nothing without its image (an empty
+    // [seabed.heightmap] is no heightmap, as an empty scene is no scene).
+    void checkHeightmapHasPath()
+    {
+        if (places_.has("seabed.heightmap.path"))
+            return;
+        for (const Parameter& p : parameters())
+            if (p.key.starts_with("seabed.heightmap.") && places_.has(p.key))
+                fail(places_.at(std::string(p.key)),
+                     fmt::format("{} sets a heightmap without an image: seabed.heightmap needs a path, a grey PNG "
+                                 "(8 or 16 bits) whose black and white are black_height_m and white_height_m",
+                                 p.key));
     }
 
     // The keys of the sun's form all given (`with` names them), and no key
@@ -219,6 +245,10 @@ private:
                 break;
             case Shape::ObjectClass:
                 scene_.objects[item].className = readClass(*node, childShown);
+                places_.add(childShown, node->source());
+                break;
+            case Shape::HeightmapPath:
+                scene_.seabed.heightmap.path = readPath(*node, childShown);
                 places_.add(childShown, node->source());
                 break;
             }
@@ -351,6 +381,9 @@ private:
             case ParameterList::Waves: scene_.waves.listed.emplace_back(); break;
             case ParameterList::Objects: scene_.objects.emplace_back(); break;
             case ParameterList::CameraPath: scene_.camera.path.emplace_back(); break;
+            case ParameterList::SeabedBeaches: scene_.seabed.beaches.emplace_back(); break;
+            case ParameterList::SeabedShelves: scene_.seabed.shelves.emplace_back(); break;
+            case ParameterList::SeabedBreakwaters: scene_.seabed.breakwaters.emplace_back(); break;
             case ParameterList::None: break;
             }
             readTable(*element.as_table(), schema, itemShown, list, i);
@@ -437,7 +470,8 @@ private:
         case ParameterKind::Colour: expected = "an array of 3 numbers [r, g, b]"; break;
         case ParameterKind::Direction3:
         case ParameterKind::Vector3: expected = "an array of 3 numbers [x, y, z]" + unit; break;
-        case ParameterKind::Direction2: expected = "an array of 2 numbers [x, z]" + unit; break;
+        case ParameterKind::Direction2:
+        case ParameterKind::Vector2: expected = "an array of 2 numbers [x, z]" + unit; break;
         case ParameterKind::DateTime:
             expected = "a date and time with its UTC offset (2003-10-17T12:30:30-07:00, or Z for UTC)";
             break;
@@ -537,7 +571,8 @@ private:
         case ParameterKind::Colour:
         case ParameterKind::Direction3:
         case ParameterKind::Vector3: value = readVector<3>(p, node, shown); break;
-        case ParameterKind::Direction2: value = readVector<2>(p, node, shown); break;
+        case ParameterKind::Direction2:
+        case ParameterKind::Vector2: value = readVector<2>(p, node, shown); break;
         case ParameterKind::DateTime: value = readDateTime(p, node, shown); break;
         }
         places_.add(shown, node.source());

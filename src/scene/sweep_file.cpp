@@ -125,7 +125,8 @@ ParameterValue valueOf(const toml::node& node, const ResolvedKey& k, const std::
         }
         fail(at, fmt::format("vary.\"{}\": [x, y, z]", key));
     case ParameterKind::Direction2:
-        fail(at, fmt::format("vary.\"{}\": a 2D direction cannot be varied yet", key));
+    case ParameterKind::Vector2:
+        fail(at, fmt::format("vary.\"{}\": a 2D vector cannot be varied yet", key));
     case ParameterKind::DateTime:
         fail(at, fmt::format("vary.\"{}\": a date-time cannot be varied yet; vary sun.elevation_deg", key));
     }

@@ -65,6 +65,30 @@ void writeParameters(std::string& out, const Scene& scene, std::string_view tabl
     }
 }
 
+// The sea floor, when the scene has one: its toe depth, each shape, its heightmap.
+void writeSeabed(std::string& out, const Scene& scene)
+{
+    const SeabedSettings& seabed = scene.seabed;
+    if (seabed.empty())
+        return;
+    out += "\n[seabed]\n";
+    writeParameters(out, scene, "seabed", ParameterList::None, 0);
+    const auto writeList = [&](ParameterList list, std::size_t count) {
+        for (std::size_t i = 0; i < count; ++i) {
+            out += fmt::format("\n[[{}]]\n", listKey(list));
+            writeParameters(out, scene, listKey(list), list, i);
+        }
+    };
+    writeList(ParameterList::SeabedBeaches, seabed.beaches.size());
+    writeList(ParameterList::SeabedShelves, seabed.shelves.size());
+    writeList(ParameterList::SeabedBreakwaters, seabed.breakwaters.size());
+    if (!seabed.heightmap.path.empty()) {
+        out += "\n[seabed.heightmap]\n";
+        writeLine(out, "path", tomlString(seabed.heightmap.path), "a grey PNG, 8 or 16 bits");
+        writeParameters(out, scene, "seabed.heightmap", ParameterList::None, 0);
+    }
+}
+
 } // namespace
 
 std::string saveScene(const Scene& scene)
@@ -91,7 +115,8 @@ std::string saveScene(const Scene& scene)
     // The other tables in the parameter table's order; the waves above and the
     // camera below (its path follows it) are written by hand.
     for (const std::string& table : parameterTables(ParameterList::None)) {
-        if (table == "camera" || table == "waves" || table.starts_with("waves."))
+        if (table == "camera" || table == "waves" || table.starts_with("waves.") || table == "seabed"
+            || table.starts_with("seabed."))
             continue;
         out += fmt::format("\n[{}]\n", table);
         if (table == "sky" && !scene.sky.cubemapFaces.empty()) {
@@ -112,6 +137,8 @@ std::string saveScene(const Scene& scene)
             writeLine(out, "class", tomlString(scene.objects[i].className), "its class in the labels");
         writeParameters(out, scene, "objects", ParameterList::Objects, i);
     }
+
+    writeSeabed(out, scene);
 
     out += "\n[camera]\n";
     writeParameters(out, scene, "camera", ParameterList::None, 0);

@@ -37,6 +37,7 @@ fs::path workFolder()
         for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"})
             std::ofstream(f / "sky" / fmt::format("{}.png", face), std::ios::binary) << "png";
         std::ofstream(f / "hull.glb", std::ios::binary) << "glTF";
+        std::ofstream(f / "floor.png", std::ios::binary) << "png";
         return f;
     }();
     return folder;
@@ -204,7 +205,7 @@ bool belongsToOtherSource(const Parameter& p, Waves waves)
 TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::string& changedValue = {})
 {
     TomlTable root;
-    TomlTable object, wave, cameraKey;
+    TomlTable object, wave, cameraKey, beach, shelf, breakwater;
     object.values.emplace_back("path", "\"hull.glb\"");
     object.values.emplace_back("hull_node", "\"Hull\"");
     object.values.emplace_back("class", "\"tug\"");
@@ -220,12 +221,19 @@ TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::s
         case ParameterList::Objects: object.values.emplace_back(leafOf(p), value); break;
         case ParameterList::Waves: wave.values.emplace_back(leafOf(p), value); break;
         case ParameterList::CameraPath: cameraKey.values.emplace_back(leafOf(p), value); break;
+        case ParameterList::SeabedBeaches: beach.values.emplace_back(leafOf(p), value); break;
+        case ParameterList::SeabedShelves: shelf.values.emplace_back(leafOf(p), value); break;
+        case ParameterList::SeabedBreakwaters: breakwater.values.emplace_back(leafOf(p), value); break;
         }
     }
     root.table("sky").values.emplace_back(
         "faces", R"(["sky/px.png", "sky/nx.png", "sky/py.png", "sky/ny.png", "sky/pz.png", "sky/nz.png"])");
     root.lists["objects"].push_back(object);
     root.table("camera").lists["path"].push_back(cameraKey);
+    root.table("seabed").lists["beaches"].push_back(beach);
+    root.table("seabed").lists["shelves"].push_back(shelf);
+    root.table("seabed").lists["breakwaters"].push_back(breakwater);
+    root.table("seabed.heightmap").values.emplace_back("path", "\"floor.png\"");
     if (waves == Waves::Listed)
         root.table("waves").lists["list"].push_back(wave);
     return root;
@@ -302,6 +310,10 @@ ParameterValue otherValue(const Parameter& p)
     case ParameterKind::Direction2: {
         glm::dvec2 v = std::get<glm::dvec2>(p.defaultValue);
         return glm::dvec2(v.y, -v.x); // turned a quarter
+    }
+    case ParameterKind::Vector2: {
+        glm::dvec2 v = std::get<glm::dvec2>(p.defaultValue);
+        return glm::dvec2(nudge(v.x), nudge(v.y));
     }
     case ParameterKind::Colour:
     case ParameterKind::Direction3:

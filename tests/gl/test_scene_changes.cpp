@@ -38,6 +38,10 @@ Scene baseScene()
     scene.objects = {SceneObject{.path = "builtin:rock", .position_m = {-12.0, 0.0, -45.0}},
                      SceneObject{.path = "builtin:buoy", .position_m = {8.0, 0.0, -30.0}, .floats = true}};
     scene.camera.path = {CameraKey{0.0, {0.0, 6.0, 0.0}, 0.0, -5.0}, CameraKey{10.0, {5.0, 8.0, -5.0}, 10.0, -8.0}};
+    // A sea floor in view: a beach, a shelf before it and a breakwater.
+    scene.seabed.beaches = {SeabedBeach{.shorePoint_m = {0.0, -400.0}, .seawardAzimuth_deg = 180.0, .slope = 0.05}};
+    scene.seabed.shelves = {SeabedShelf{.edgePoint_m = {0.0, -250.0}, .seawardAzimuth_deg = 180.0, .depth_m = 6.0}};
+    scene.seabed.breakwaters = {SeabedBreakwater{.start_m = {-60.0, -200.0}, .end_m = {40.0, -180.0}}};
     return scene;
 }
 
@@ -63,6 +67,7 @@ ParameterValue otherValue(const Parameter& p, const ParameterValue& value, int a
     case ParameterKind::Vector3: return glm::dvec3(x, p.sliderMin + (1.0 - f) * (p.sliderMax - p.sliderMin), x);
     case ParameterKind::Direction3: return glm::dvec3(0.3 + f, 0.4, -0.7);
     case ParameterKind::Direction2: return glm::dvec2(0.3 + f, -0.7);
+    case ParameterKind::Vector2: return glm::dvec2(x, p.sliderMin + (1.0 - f) * (p.sliderMax - p.sliderMin));
     }
     return value;
 }

@@ -152,7 +152,9 @@ void Panel::drawParameters(Session& session, Scene& edited, bool& changed)
                     changed |= editParameter(session, p, 0, edited);
         }
 
-        for (ParameterList list : {ParameterList::Waves, ParameterList::Objects, ParameterList::CameraPath}) {
+        for (ParameterList list : {ParameterList::Waves, ParameterList::Objects, ParameterList::CameraPath,
+                                   ParameterList::SeabedBeaches, ParameterList::SeabedShelves,
+                                   ParameterList::SeabedBreakwaters}) {
             const std::string_view key = listKey(list);
             if (key.substr(0, key.find('.')) != section)
                 continue;

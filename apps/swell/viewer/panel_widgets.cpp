@@ -241,7 +241,8 @@ WidgetResult editValue(const Parameter& p, const char* label, ParameterValue& va
         ImGui::Unindent();
         return r;
     }
-    case ParameterKind::Direction2: {
+    case ParameterKind::Direction2:
+    case ParameterKind::Vector2: {
         glm::dvec2& v = std::get<glm::dvec2>(value);
         double c[2] = {v.x, v.y};
         if (ImGui::SliderScalarN(label, ImGuiDataType_Double, c, 2, &p.sliderMin, &p.sliderMax, format.c_str(), sliderFlags)) {
@@ -318,6 +319,10 @@ std::string itemLabel(ParameterList list, const Scene& scene, std::size_t i)
     }
     case ParameterList::Objects: return fmt::format("object {}: {}", i + 1, scene.objects[i].path);
     case ParameterList::CameraPath: return fmt::format("key {}: at {:.2f} s", i + 1, scene.camera.path[i].time_s);
+    case ParameterList::SeabedBeaches: return fmt::format("beach {}: slope {:.3g}", i + 1, scene.seabed.beaches[i].slope);
+    case ParameterList::SeabedShelves: return fmt::format("shelf {}: {:.3g} m deep", i + 1, scene.seabed.shelves[i].depth_m);
+    case ParameterList::SeabedBreakwaters:
+        return fmt::format("breakwater {}: crest {:.3g} m", i + 1, scene.seabed.breakwaters[i].crest_m);
     case ParameterList::None: break;
     }
     return {};

@@ -45,13 +45,14 @@ enum class ParameterKind {
     Direction3, // glm::dvec3 of any non-zero length, normalised on use; TOML [x, y, z]
     Vector3,    // glm::dvec3, every component in range; TOML [x, y, z]
     Direction2, // glm::dvec2 in the xz plane, non-zero, normalised on use; TOML [x, z]
+    Vector2,    // glm::dvec2, a point or size in the xz plane, every component in range; TOML [x, z]
     DateTime,   // an instant, double seconds since 1970-01-01T00:00:00Z; TOML offset date-time
                 // (2003-10-17T12:30:30-07:00), written back in UTC (2003-10-17T19:30:30Z)
 };
 
 // The value of any parameter. Which alternative a kind uses:
 //   Real, DateTime: double; Integer, Choice: int64; Flag: bool;
-//   Colour, Direction3, Vector3: glm::dvec3; Direction2: glm::dvec2.
+//   Colour, Direction3, Vector3: glm::dvec3; Direction2, Vector2: glm::dvec2.
 using ParameterValue = std::variant<double, std::int64_t, bool, glm::dvec2, glm::dvec3>;
 
 // The most scene objects a scene may hold (the [[objects]] list, and so the
@@ -66,6 +67,9 @@ enum class ParameterList {
     Waves,      // [[waves.list]]  -> Scene::waves.listed[item]
     Objects,    // [[objects]]     -> Scene::objects[item]
     CameraPath, // [[camera.path]] -> Scene::camera.path[item]
+    SeabedBeaches,     // [[seabed.beaches]]     -> Scene::seabed.beaches[item]
+    SeabedShelves,     // [[seabed.shelves]]     -> Scene::seabed.shelves[item]
+    SeabedBreakwaters, // [[seabed.breakwaters]] -> Scene::seabed.breakwaters[item]
 };
 
 // What a change to the parameter asks of a renderer that is already running:
@@ -80,6 +84,8 @@ enum class ParameterEffect : unsigned {
     World = 1u << 3,    // meshes and the sky are built again (asset files are read)
     Bodies = 1u << 4,   // the floating bodies and their wake start again (what moves them changed;
                         // objects that are bodies in neither scene move none)
+    Seabed = 1u << 5,   // the sea floor (swell/scene/seabed.h) is built again, its heightmap read and
+                        // its mesh uploaded, and so is what depends on the depth
 };
 
 constexpr ParameterEffect operator|(ParameterEffect a, ParameterEffect b)
@@ -138,8 +144,8 @@ SWELL_API std::span<const Parameter> parameters();
 // The parameter with this full key ("fog.start_m", "objects.scale"), or nullptr.
 SWELL_API const Parameter* findParameter(std::string_view key);
 
-// The TOML key of an array of tables: "waves.list", "objects", "camera.path";
-// "" for ParameterList::None.
+// The TOML key of an array of tables: "waves.list", "objects", "camera.path",
+// "seabed.beaches", ...; "" for ParameterList::None.
 SWELL_API std::string_view listKey(ParameterList list);
 
 // Every table that holds parameters of `list`, each once, in the table's
@@ -157,7 +163,7 @@ SWELL_API std::size_t listSize(const Scene& scene, ParameterList list);
 SWELL_API bool isPresent(const Parameter& p, const Scene& scene);
 
 // How many numbers the kind holds: 3 for Colour/Direction3/Vector3, 2 for
-// Direction2, 1 otherwise.
+// Direction2/Vector2, 1 otherwise.
 SWELL_API int componentCount(ParameterKind kind);
 
 // Whether one number (a scalar, or one component of a vector) is allowed:

@@ -11,6 +11,7 @@
 #include "swell/scene/clouds.h"
 
 #include "swell/scene/sea_state.h"
+#include "swell/scene/seabed_settings.h"
 #include "swell/scene/waves.h"
 #include "swell/sea_frame.h"
 #include "swell/view.h"
@@ -56,9 +57,9 @@ struct SWELL_API SeaSettings {
     // The water's depth below level_m, m, > 0; infinity is deep water. The
     // waves travel in it (listed, generated and spectral alike: the
     // dispersion relation), and so does the wake. Key waves.depth_m.
-    // (Room for a seabed: once the sea has a floor, the depth at a place is
-    // level_m less the seabed's height there, and this stays the depth
-    // where no seabed is given.)
+    // Where the scene has a sea floor (Scene::seabed; swell/scene/seabed.h),
+    // the depth at a place is minus the floor's height there, and this
+    // stays the depth where no part of the floor reaches.
     double depth_m = std::numeric_limits<double>::infinity();
     // The wind, when the waves are generated from it ([waves.wind]); the
     // spectral model needs it. Unset: the waves are WaveSource::listed.
@@ -282,6 +283,10 @@ struct SWELL_API Scene {
     ReflectionSettings reflection;
     std::vector<SceneObject> objects;
     WakeSettings wake;
+    // The sea floor's shapes and heightmap ([seabed];
+    // swell/scene/seabed_settings.h); empty: flat at sea.depth_m. The
+    // island (showTerrain) is part of the floor too (swell/scene/seabed.h).
+    SeabedSettings seabed;
     CameraSettings camera;
     DebugView debugView = DebugView::Shaded;
     // Where relative object and sky paths are found: the scene file's folder

@@ -1,0 +1,102 @@
+// The seabed drawn (docs/RENDERING.md "The seabed"): a beach ahead of the
+// camera shows as land where the open sea was, one draw call more a pass;
+// a host's heights join the floor the renderer holds, are refused when
+// malformed (nothing changed), and are not drawn.
+#include "support/gl_test.h"
+#include "swell/debug.h"
+#include "swell/error.h"
+#include "swell/renderer.h"
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+using namespace swell;
+
+class SeabedDrawn : public test::GlTest {};
+
+constexpr glm::ivec2 kSize{160, 90};
+constexpr double kTime_s = 4.0;
+
+// The open sea, no island, no objects; the camera 40 m up looking -z,
+// down at the water ahead.
+Scene openSea()
+{
+    Scene scene = defaultScene();
+    scene.objects.clear();
+    scene.showTerrain = false;
+    scene.camera.position_m = {0.0, 40.0, 0.0};
+    scene.camera.yaw_deg = 0.0;
+    scene.camera.pitch_deg = -25.0;
+    scene.camera.path.clear();
+    return scene;
+}
+
+// Pixels of land: sand, lit and veiled by the haze, is grey to warm
+// (blue no more than red), where the sea and the sky are blue (blue 15 to
+// 60 above red); the sun's glitter, white, is left out by its brightness.
+int landPixels(const Image& image)
+{
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const std::uint8_t* p = image.pixel(x, y);
+            count += int(p[2]) <= int(p[0]) + 8 && p[0] < 220 ? 1 : 0;
+        }
+    return count;
+}
+
+TEST_F(SeabedDrawn, ABeachAheadIsDrawnAsLand)
+{
+    Scene scene = openSea();
+    Renderer sea(scene);
+    const Camera camera = cameraAt(scene.camera, kTime_s);
+    sea.renderImage(camera, kTime_s, kSize); // the first frame's own work done
+    const Image before = sea.renderImage(camera, kTime_s, kSize);
+    const int callsBefore = sea.counters().drawCalls;
+
+    // The land 100 m ahead, rising away from the camera (the beach faces +z).
+    scene.seabed.beaches.push_back(SeabedBeach{.shorePoint_m = {0.0, -100.0}, .seawardAzimuth_deg = 180.0,
+                                               .slope = 0.05, .length_m = 2000.0, .top_m = 8.0, .landWidth_m = 400.0});
+    sea.setScene(scene);
+    sea.renderImage(camera, kTime_s, kSize);
+    const Image after = sea.renderImage(camera, kTime_s, kSize);
+    EXPECT_LT(landPixels(before), kSize.x * kSize.y / 100);
+    EXPECT_GT(landPixels(after), kSize.x * kSize.y / 10);
+    // One draw call more in each pass that draws the world.
+    EXPECT_GT(sea.counters().drawCalls, callsBefore);
+    EXPECT_NEAR(sea.seabed().elevation_m({0.0, -200.0}), 5.0, 1e-9);
+
+    // What a fresh renderer draws for the scene is what the change drew.
+    Renderer fresh(scene);
+    fresh.renderImage(camera, kTime_s, kSize);
+    EXPECT_TRUE(fresh.renderImage(camera, kTime_s, kSize).rgba == after.rgba);
+}
+
+TEST_F(SeabedDrawn, HostHeightsJoinTheFloorUndrawn)
+{
+    const Scene scene = openSea();
+    Renderer renderer(scene);
+    const Camera camera = cameraAt(scene.camera, kTime_s);
+    const Image before = renderer.renderImage(camera, kTime_s, kSize);
+    EXPECT_EQ(renderer.seabed().elevation_m({0.0, -50.0}), -std::numeric_limits<double>::infinity());
+
+    SeabedHeights heights{.columns = 2, .rows = 2, .heights_m = {-4.0f, -4.0f, -2.0f, -2.0f}, .min_m = {-100.0, -100.0},
+                          .max_m = {100.0, 0.0}};
+    SeabedHeights wrong = heights;
+    wrong.heights_m.push_back(1.0f);
+    EXPECT_THROW(renderer.setSeabedHeights(wrong), Error);
+    SeabedHeights nan = heights;
+    nan.heights_m[1] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_THROW(renderer.setSeabedHeights(nan), Error);
+    EXPECT_EQ(renderer.seabed().elevation_m({0.0, -50.0}), -std::numeric_limits<double>::infinity());
+
+    renderer.setSeabedHeights(heights);
+    EXPECT_NEAR(renderer.seabed().elevation_m({0.0, -50.0}), -3.0, 1e-9);
+    EXPECT_TRUE(renderer.renderImage(camera, kTime_s, kSize).rgba == before.rgba);
+    renderer.clearSeabedHeights();
+    EXPECT_EQ(renderer.seabed().elevation_m({0.0, -50.0}), -std::numeric_limits<double>::infinity());
+}
+
+} // namespace
