@@ -40,11 +40,17 @@ public:
 };
 
 struct Scene;
+class Seabed;
 
 // The model a scene describes: the Gerstner sum of its waves (resolveWaves()
-// with limitSteepness() applied), or the spectral ocean of its wind
-// (waves.model = "spectral"). Throws swell::InputError when the waves are not
-// usable.
+// with limitSteepness() applied), over the scene's sea floor (Seabed(scene):
+// the waves shoal, turn and break where it rises, swell/coast_field.h), or
+// the spectral ocean of its wind (waves.model = "spectral"), which does not
+// feel the floor. Throws swell::InputError when the waves or the floor are
+// not usable.
 SWELL_API std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene);
+// The same over a floor of the caller's (the scene's joined by a host's
+// heights: Renderer::setSeabedHeights).
+SWELL_API std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene, const Seabed& seabed);
 
 } // namespace swell

@@ -19,7 +19,7 @@ Renderer::Renderer(const Scene& scene, RendererOptions options) : Renderer(scene
 Renderer::Renderer(const Scene& scene, RendererOptions options, unsigned omittedWaterTerms)
     : impl_(std::make_unique<Impl>(std::move(options), omittedWaterTerms))
 {
-    impl_->apply(scene, ParameterEffect::Frame, makeWaveModel(scene), nullptr, {}, true);
+    impl_->apply(scene, ParameterEffect::Frame, impl_->waveModelOf(scene), nullptr, {}, true);
 }
 
 Renderer::~Renderer() = default;
@@ -28,9 +28,11 @@ void Renderer::setScene(const Scene& scene)
 {
     Impl& s = *impl_;
     const ParameterEffect effects = sceneChanges(s.scene, scene);
-    // The waves are generated again only when a wave parameter changed.
+    // The waves are generated again only when a wave parameter or the sea
+    // floor they run over changed.
+    const bool floorChanged = hasEffect(effects, ParameterEffect::Seabed) || hasEffect(effects, ParameterEffect::World);
     std::shared_ptr<const WaveModel> sceneModel =
-        hasEffect(effects, ParameterEffect::Waves) ? makeWaveModel(scene) : s.simulation.sceneModel();
+        hasEffect(effects, ParameterEffect::Waves) || floorChanged ? s.waveModelOf(scene) : s.simulation.sceneModel();
     s.apply(scene, effects, std::move(sceneModel), s.simulation.overrideModel(), s.simulation.hostSources());
 }
 
@@ -74,16 +76,22 @@ void Renderer::setSeabedHeights(const SeabedHeights& heights)
     s.simulation.settle();
     // Built before anything changes: a failure leaves the heights as they were.
     auto seabed = std::make_shared<const Seabed>(s.scene, &heights);
+    std::shared_ptr<const WaveModel> model = makeWaveModel(s.scene, *seabed);
     s.hostSeabed = heights;
     s.resources.seabed = std::move(seabed);
+    // The waves run over the host's floor too.
+    s.apply(s.scene, ParameterEffect::Frame, std::move(model), s.simulation.overrideModel(), s.simulation.hostSources());
 }
 
 void Renderer::clearSeabedHeights()
 {
     Impl& s = *impl_;
     s.simulation.settle();
-    s.resources.seabed = std::make_shared<const Seabed>(s.scene);
+    auto seabed = std::make_shared<const Seabed>(s.scene);
+    std::shared_ptr<const WaveModel> model = makeWaveModel(s.scene, *seabed);
+    s.resources.seabed = std::move(seabed);
     s.hostSeabed.reset();
+    s.apply(s.scene, ParameterEffect::Frame, std::move(model), s.simulation.overrideModel(), s.simulation.hostSources());
 }
 
 const Seabed& Renderer::seabed() const { return *impl_->resources.seabed; }

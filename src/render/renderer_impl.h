@@ -78,6 +78,14 @@ struct Renderer::Impl {
     {
     }
 
+    // The model `next` describes, over its floor and the host's heights.
+    std::unique_ptr<WaveModel> waveModelOf(const Scene& next) const
+    {
+        if (next.waves.model == WaveModelKind::Spectral)
+            return makeWaveModel(next);
+        return makeWaveModel(next, Seabed(next, hostSeabed ? &*hostSeabed : nullptr));
+    }
+
     RenderContext context()
     {
         return RenderContext{scene, resources, sky, simulation, telemetry, spray, settings.islandTolerance_px};

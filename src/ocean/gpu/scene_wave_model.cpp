@@ -1,12 +1,23 @@
 // The wave model a scene asks for.
+#include "ocean/coast/coast_grid.h"
+
+#include "swell/coast_field.h"
 #include "swell/error.h"
 #include "swell/gerstner_model.h"
 #include "swell/scene/scene.h"
+#include "swell/scene/seabed.h"
 #include "swell/spectral_model.h"
 
 namespace swell {
 
 std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene)
+{
+    if (scene.waves.model == WaveModelKind::Spectral)
+        return makeWaveModel(scene, Seabed());
+    return makeWaveModel(scene, Seabed(scene));
+}
+
+std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene, const Seabed& seabed)
 {
     if (scene.waves.model == WaveModelKind::Spectral) {
         if (!scene.sea.wind)
@@ -23,6 +34,8 @@ std::unique_ptr<WaveModel> makeWaveModel(const Scene& scene)
     }
     WaveSet waves = resolveWaves(scene);
     limitSteepness(waves);
+    if (std::optional<DepthGrid> grid = coast::depthGridOf(seabed, waves))
+        waves.coast = std::make_shared<const CoastField>(waves, std::move(*grid));
     return std::make_unique<GerstnerModel>(std::move(waves));
 }
 
