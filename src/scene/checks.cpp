@@ -176,6 +176,15 @@ void checkSeabed(const Scene& scene, const Places& places, const fs::path& base,
                              kMaxSeabedShapes));
     if (const auto problem = seabedShapeProblem(seabed))
         fail(places.first({problem->key, problem->key.substr(0, problem->key.rfind('.')), "seabed"}), problem->message);
+    // A heightmap's keys mean nothing without its image (an empty
+    // [seabed.heightmap] is no heightmap, as an empty scene is no scene).
+    if (seabed.heightmap.path.empty())
+        for (const Parameter& p : parameters())
+            if (p.key.starts_with("seabed.heightmap.") && places.has(p.key))
+                fail(places.at(p.key),
+                     fmt::format("{} sets a heightmap without an image: seabed.heightmap needs a path, a grey PNG "
+                                 "(8 or 16 bits) whose black and white are black_height_m and white_height_m",
+                                 p.key));
     if (!files || seabed.heightmap.path.empty())
         return;
     const std::string name = "seabed.heightmap.path";

@@ -124,7 +124,6 @@ public:
                                  total, SWELL_MAX_WAVES));
         }
         checkSunForm();
-        checkHeightmapHasPath();
         // One depth for both wave sources (see WaveSource).
         if (scene_.sea.wind)
             scene_.sea.wind->depth_m = scene_.sea.depth_m;
@@ -142,20 +141,6 @@ private:
             checkSunKeys(kAngles, "sun.elevation_deg and sun.azimuth_deg (like a heading, from -z towards +x)");
         if (scene_.sun.place)
             checkSunKeys(kPlace, "sun.time, sun.latitude_deg and sun.longitude_deg");
-    }
-
-    // A heightmap's keys mean nothing without its image (an empty
-    // [seabed.heightmap] is no heightmap, as an empty scene is no scene).
-    void checkHeightmapHasPath()
-    {
-        if (places_.has("seabed.heightmap.path"))
-            return;
-        for (const Parameter& p : parameters())
-            if (p.key.starts_with("seabed.heightmap.") && places_.has(p.key))
-                fail(places_.at(std::string(p.key)),
-                     fmt::format("{} sets a heightmap without an image: seabed.heightmap needs a path, a grey PNG "
-                                 "(8 or 16 bits) whose black and white are black_height_m and white_height_m",
-                                 p.key));
     }
 
     // The keys of the sun's form all given (`with` names them), and no key
