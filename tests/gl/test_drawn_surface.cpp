@@ -12,12 +12,14 @@
 #include "swell/gl/handle.h"
 #include "swell/renderer.h"
 #include "swell/scene/scene.h"
+#include "swell/scene/scene_file.h"
 #include "swell/surface_source.h"
 
 #include <epoxy/gl.h>
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -120,6 +122,15 @@ swell::Scene plainScene()
 TEST_F(DrawnSurfaceTest, GerstnerEqualsTheDrawnTriangles)
 {
     expectDrawnSurface(plainScene(), {3.7, 6.0, -12.2});
+}
+
+// Over the sea floor (swell/coast_field.h): the coast preset's swell
+// shoaling and cut where it breaks, from a camera over 2.5 m of water with
+// the shore and the dry sand in view.
+TEST_F(DrawnSurfaceTest, OverTheSeaFloorTheWaterIsTheDrawnTriangles)
+{
+    const swell::Scene scene = swell::loadScene(std::filesystem::path(SWELL_SOURCE_DIR) / "scenes" / "coast.toml");
+    expectDrawnSurface(scene, {-40.0, 6.0, 200.0}, {0.0, 37.5});
 }
 
 TEST_F(DrawnSurfaceTest, SpectralEqualsTheDrawnTriangles)
