@@ -2,7 +2,7 @@
 // bottom"): for each of a wave set's longest waves, the phase, height and
 // direction it takes at each point of a sampled sea floor, solved once when
 // the seabed or the waves change, and read by the Gerstner sum on the CPU
-// (swell/scene/waves.h) and in GLSL (shaders/ocean/coast.glsl) from the same
+// (swell/scene/waves.h) and in GLSL (shaders/coast_field.glsl) from the same
 // numbers.
 //
 // Linear wave theory over a slowly varying bottom (Dean & Dalrymple 1991,
@@ -31,6 +31,7 @@
 #pragma once
 
 #include "swell/export.h"
+#include "swell/surface_query.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -100,9 +101,11 @@ public:
     std::span<const glm::vec4> layer(std::size_t layer) const { return layers_[layer]; }
     // Texels every wave shares: (depth_m, gain, steepnessScale, 0).
     std::span<const glm::vec4> common() const { return common_; }
-    // The largest gain over the field (shoaling can raise a wave before it
-    // breaks): how far the waves may reach above the open sea's.
-    double largestGain() const { return largestGain_; }
+    // How far the waves may move the surface anywhere, m: the open sea's
+    // reach or, where shoaling raises them before they break, the largest
+    // sum over the field's texels of each wave's amplitude (and Q times it,
+    // sideways) times its gain there.
+    WaveReach reach() const { return reach_; }
 
     // Bilinear between the four texels around world point (x, z), as the
     // GLSL twin reads them; beyond the grid, the open sea's values.
@@ -115,7 +118,7 @@ private:
     std::vector<std::vector<glm::vec4>> layers_;
     std::vector<int> layerOfWave_;
     std::vector<glm::vec4> common_;
-    double largestGain_ = 1.0;
+    WaveReach reach_;
 };
 
 } // namespace swell

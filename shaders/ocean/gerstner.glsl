@@ -9,7 +9,7 @@
 // src/ocean/gerstner/gpu/gerstner_uniforms.h): gerstnerWaves[], sorted longest
 // first, and gerstnerWaveCount.
 #include "gpu/gerstner_block.glsl"
-#include "ocean/coast.glsl"
+#include "coast_field.glsl"
 
 // Weight of a wave of wavelength_m where samples lie footprint_m apart:
 // waves shorter than SWELL_MIN_CELLS_PER_WAVELENGTH samples would alias, so

@@ -1,7 +1,7 @@
 // The coast field (swell/coast_field.h): each coast wave marched over the
 // depth grid (coast_march.cpp), the sea's breaking cut and fold limit per
 // point, the field blended into the open sea at the grid's edges, and its
-// bilinear reading, which shaders/ocean/coast.glsl repeats.
+// bilinear reading, which shaders/coast_field.glsl repeats.
 #include "swell/coast_field.h"
 
 #include "ocean/coast/coast_march.h"
@@ -142,7 +142,7 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
     // (all waves together), the fold limit, and the blend into the open sea.
     layers_.assign(coastWaves, std::vector<glm::vec4>(n));
     common_.assign(n, glm::vec4(0.0f));
-    largestGain_ = 1.0;
+    reach_ = waveReach(WaveSet{waves.waves, waves.depth_m, nullptr});
     for (int j = 0; j < g.size.y; ++j)
         for (int i = 0; i < g.size.x; ++i) {
             const std::size_t c = std::size_t(j) * std::size_t(g.size.x) + std::size_t(i);
@@ -169,10 +169,17 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
                     kv = (1.0 - inner) * openK[w] + inner * m.wavenumber_radpm[c];
                     const double phase = inner * (m.phase_rad[c] - glm::dot(openK[w], p));
                     layers_[std::size_t(l)][c] = glm::vec4(float(phase), float(gain[w]), float(kv.x), float(kv.y));
-                    largestGain_ = std::max(largestGain_, gain[w]);
                 }
                 fold += wave.steepness * std::sqrt(glm::dot(kv, kv)) * wave.amplitude_m * gain[w];
             }
+            double vertical = 0.0, horizontal = 0.0;
+            for (std::size_t w = 0; w < waves.waves.size(); ++w) {
+                vertical += waves.waves[w].amplitude_m * gain[w];
+                horizontal += waves.waves[w].steepness * waves.waves[w].amplitude_m * gain[w];
+            }
+            // Bilinear readings lie between the texels' values: their largest bounds them.
+            reach_.vertical_m = std::max(reach_.vertical_m, vertical);
+            reach_.horizontal_m = std::max(reach_.horizontal_m, horizontal);
             // At most 1 at the texels would let the bilinear reading between
             // them pass 1 where the waves shorten fast: 0.9 inside, 1 at the
             // edges, where the open sea's own limit (limitSteepness) holds.
@@ -189,7 +196,7 @@ struct Bilinear {
     double fx, fz;
 };
 
-// The four texels around world point p and its weights, as coast.glsl
+// The four texels around world point p and its weights, as coast_field.glsl
 // finds them; false beyond the grid.
 bool bilinearAt(const DepthGrid& g, glm::dvec2 p, Bilinear& b)
 {

@@ -161,8 +161,8 @@ WaveReach waveReach(const WaveSet& set)
     }
     // Shoaling raises a wave before it breaks.
     if (set.coast) {
-        reach.vertical_m *= set.coast->largestGain();
-        reach.horizontal_m *= set.coast->largestGain();
+        reach.vertical_m = std::max(reach.vertical_m, set.coast->reach().vertical_m);
+        reach.horizontal_m = std::max(reach.horizontal_m, set.coast->reach().horizontal_m);
     }
     return reach;
 }

@@ -99,7 +99,7 @@ public:
     }
 
 private:
-    // The coast field's texels (shaders/ocean/coast.glsl), read with
+    // The coast field's texels (shaders/coast_field.glsl), read with
     // texelFetch; without a field, one texel each, so that the samplers
     // always have a texture of their kind.
     void uploadCoast()

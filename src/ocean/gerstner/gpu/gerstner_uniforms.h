@@ -32,7 +32,7 @@ struct alignas(16) GerstnerWaveUniform {
 struct alignas(16) GerstnerUniforms {
     GerstnerWaveUniform waves[SWELL_MAX_WAVES];
     int waveCount; // waves in use
-    // The coast field (shaders/ocean/coast.glsl): its layers (0: none), its
+    // The coast field (shaders/coast_field.glsl): its layers (0: none), its
     // sample (0, 0) relative to the grid centre, its samples along x and z
     // and their spacing.
     int coastLayers;

@@ -2,8 +2,8 @@
 // CoastField::waveAt and commonAt (src/ocean/coast/coast_field.cpp), the
 // same four texels mixed by the same weights. Included by gerstner.glsl
 // after its block (coastLayers, coastOrigin_m, coastSize, coastCell_m).
-#ifndef SWELL_OCEAN_COAST_GLSL
-#define SWELL_OCEAN_COAST_GLSL
+#ifndef SWELL_COAST_FIELD_GLSL
+#define SWELL_COAST_FIELD_GLSL
 #include "swell/gpu/bindings.h"
 
 // (phase_rad, gain, wavenumber x, wavenumber z) per coast wave, a layer each.
