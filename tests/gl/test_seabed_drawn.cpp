@@ -5,8 +5,10 @@
 #include "support/gl_test.h"
 #include "swell/debug.h"
 #include "swell/error.h"
+#include "swell/flat_model.h"
 #include "swell/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -78,6 +80,9 @@ TEST_F(SeabedDrawn, HostHeightsJoinTheFloorUndrawn)
 {
     const Scene scene = openSea();
     Renderer renderer(scene);
+    // Flat water while the picture is compared: the host's floor is not
+    // drawn, but the scene's waves feel it (checked below).
+    renderer.setWaveModel(std::make_shared<FlatModel>());
     const Camera camera = cameraAt(scene.camera, kTime_s);
     const Image before = renderer.renderImage(camera, kTime_s, kSize);
     EXPECT_EQ(renderer.seabed().elevation_m({0.0, -50.0}), -std::numeric_limits<double>::infinity());
@@ -95,6 +100,15 @@ TEST_F(SeabedDrawn, HostHeightsJoinTheFloorUndrawn)
     renderer.setSeabedHeights(heights);
     EXPECT_NEAR(renderer.seabed().elevation_m({0.0, -50.0}), -3.0, 1e-9);
     EXPECT_TRUE(renderer.renderImage(camera, kTime_s, kSize).rgba == before.rgba);
+    // The scene's Gerstner waves run over the host's floor: in 3 m of
+    // water they are no longer the open sea's.
+    renderer.setWaveModel(nullptr);
+    const Renderer open(scene);
+    double largest = 0.0;
+    for (double t = 0.0; t < 8.0; t += 0.5)
+        largest = std::max(largest, std::abs(renderer.waveModel().heightAt({0.0, -50.0}, t)
+                                             - open.waveModel().heightAt({0.0, -50.0}, t)));
+    EXPECT_GT(largest, 0.01);
     renderer.clearSeabedHeights();
     EXPECT_EQ(renderer.seabed().elevation_m({0.0, -50.0}), -std::numeric_limits<double>::infinity());
 }
