@@ -17,7 +17,9 @@ ValueError, KeyError or IndexError; anything else is a finding: another
 exception, a crash (a signal), a hang past --timeout. The calls run in child
 processes, a batch of --calls each, so that a crash ends one batch, not the
 run; each child prints each call before making it, so the last line before a
-crash names it.
+crash names it, and on a crash every Python thread's stack (faulthandler).
+A seed replays its batch against the same code only: the calls draw from the
+package's keys and classes.
 
   fuzz/fuzz_python.py --max-total-time 600            # ten minutes, seeds from 1
   fuzz/fuzz_python.py --seed 17 --runs 1 -v           # one batch again, every call shown
@@ -231,7 +233,14 @@ def call_any(world, target):
 
 
 def child(seed, count, verbose):
+    import faulthandler
     import random
+
+    # A crash (SIGSEGV, SIGABRT, ...) prints every Python thread's stack to
+    # stderr, which the parent keeps with the finding: the last call printed
+    # says which call was in flight, this says where in it (or on which
+    # other thread) it died.
+    faulthandler.enable(all_threads=True)
 
     import numpy as np
 
@@ -285,24 +294,28 @@ def main():
         command = [sys.executable, os.path.abspath(__file__), "--child", "--seed", str(seed), "--calls", str(args.calls)]
         if args.verbose:
             command.append("-v")
+        stderr = ""  # what the child wrote there: on a crash, the stacks faulthandler printed
         try:
             r = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout, errors="replace")
             failed = r.returncode != 0
             why = f"exit {r.returncode}" if r.returncode >= 0 else f"signal {-r.returncode}"
-            output = r.stdout + r.stderr
+            output, stderr = r.stdout, r.stderr
         except subprocess.TimeoutExpired as e:
             failed, why = True, f"no end after {args.timeout:.0f} s"
             output = (e.stdout or b"").decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
         if args.verbose:
-            sys.stdout.write(output)
+            sys.stdout.write(output + stderr)
         batches += 1
         calls_made += args.calls
         if failed:
             findings += 1
             path = os.path.join(args.artifacts, f"crash-python-seed-{seed}.txt")
             with open(path, "w") as f:
-                f.write(f"fuzz/fuzz_python.py --seed {seed} --runs 1 --calls {args.calls} -v\n{why}\n{output[-6000:]}")
-            print(f"FINDING (seed {seed}, {why}): {path}\n{output[-1500:]}", flush=True)
+                f.write(f"fuzz/fuzz_python.py --seed {seed} --runs 1 --calls {args.calls} -v\n{why}\n"
+                        f"{output[-6000:]}{stderr[-6000:]}")
+            # The last calls made, then the stacks (kept apart, so that
+            # neither pushes the other out of CI's log).
+            print(f"FINDING (seed {seed}, {why}): {path}\n{output[-1500:]}{stderr[-3000:]}", flush=True)
         seed += 1
     elapsed = time.monotonic() - started
     print(f"{batches} batches, {calls_made} calls in {elapsed:.0f} s ({calls_made / max(elapsed, 1e-9):.1f}/s), "

@@ -49,7 +49,11 @@ inline std::vector<double> numbersOf(py::handle value, std::size_t n, const std:
     if (items.size() != n)
         throw py::type_error(name + ": expected " + std::to_string(n) + " numbers, got " + std::to_string(items.size()));
     std::vector<double> out;
-    for (py::handle item : items) {
+    for (std::size_t i = 0; i < n; ++i) {
+        // An owned reference, never a borrowed handle: a sequence may make
+        // the item when asked (a NumPy array makes a new scalar or view for
+        // each element), and then this reference is its only owner.
+        const py::object item = items[i];
         if (py::isinstance<py::bool_>(item) || !(py::isinstance<py::float_>(item) || py::isinstance<py::int_>(item)
                                                   || py::hasattr(item, "__float__")))
             throw py::type_error(name + ": expected numbers, got " + std::string(py::str(py::type::of(item).attr("__name__"))));

@@ -190,5 +190,64 @@ class LensFolds(unittest.TestCase):
         self.assertIsNone(renderer.simulated_time_s, "the lens was checked after rendering")
 
 
+class SequencesThatMakeTheirItems(unittest.TestCase):
+    """A NumPy array makes a new scalar (or a view) each time one of its
+    elements is taken, owned by whoever took it. The vectors and sizes read
+    from a sequence held that item by a borrowed handle only, so it was freed
+    before it was read: a use after free, and a double free when reading it
+    took and dropped a reference (the Python fuzzer's seed 86 died of SIGSEGV
+    many calls later). Here the items are counted: each must be read before
+    it is let go."""
+
+    def read_and_let_go(self, convert, n):
+        events, kept = [], []
+
+        class Number:
+            def __init__(self, i):
+                self.i = i
+
+            def __float__(self):
+                events.append(("read", self.i))
+                return float(self.i + 1)
+
+            def __del__(self):
+                # Kept alive from here on (resurrected), so that a binding
+                # that lets go too early reads a live object, and this test
+                # fails on the order instead of on freed memory.
+                kept.append(self)
+                events.append(("let go", self.i))
+
+        class MadeOnEachAccess:
+            def __len__(self):
+                return n
+
+            def __getitem__(self, i):
+                if not 0 <= i < n:
+                    raise IndexError(i)
+                return Number(i)
+
+        result = convert(MadeOnEachAccess())
+        for i in range(n):
+            self.assertIn(("read", i), events)
+            self.assertIn(("let go", i), events)
+            self.assertLess(events.index(("read", i)), events.index(("let go", i)), events)
+        return result
+
+    def test_a_position_holds_each_item_while_reading_it(self):
+        camera = self.read_and_let_go(lambda v: swell.Camera(position_m=v), 3)
+        self.assertEqual(camera.position_m, (1.0, 2.0, 3.0))
+
+    def test_a_size_holds_each_item_while_reading_it(self):
+        calibration = self.read_and_let_go(lambda v: swell.calibration_of(swell.Camera(), v), 2)
+        self.assertIsNotNone(calibration)
+
+    def test_numpy_arrays_as_positions_and_sizes(self):
+        self.assertEqual(swell.Camera(position_m=np.array([1, 2, 3])).position_m, (1.0, 2.0, 3.0))
+        self.assertEqual(swell.Camera(position_m=np.arange(3.0, dtype=np.float32)).position_m, (0.0, 1.0, 2.0))
+        self.assertIsNotNone(swell.calibration_of(swell.Camera(), np.array([8, 6])))
+        with self.assertRaisesRegex(TypeError, "Camera.position_m: expected a number"):
+            swell.Camera(position_m=np.zeros((3, 2)))
+
+
 if __name__ == "__main__":
     unittest.main()
