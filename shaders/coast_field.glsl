@@ -48,6 +48,13 @@ vec4 coastCommonAt(CoastCell cell)
     return mix(mix(t00, t10, cell.f.x), mix(t01, t11, cell.f.x), cell.f.y);
 }
 
+// What every wave shares at the cell's point: the field's texels, or the
+// open sea's (depth unused, gain 1, steepness scale 1) beyond the grid.
+vec4 coastEveryWaveAt(CoastCell cell)
+{
+    return cell.inside ? coastCommonAt(cell) : vec4(0.0, 1.0, 1.0, 0.0);
+}
+
 // One wave as the bottom has made it at the rest point: its direction,
 // wavenumber, amplitude and steepness, and the phase it adds to the open
 // sea's (swell::gerstner::evaluateOverCoast).

@@ -20,6 +20,19 @@ float waveLodWeight(float wavelength_m, float footprint_m)
                       SWELL_FULL_CELLS_PER_WAVELENGTH * footprint_m, wavelength_m);
 }
 
+// Wave i at the rest point: its phase (the open sea's plus what the bottom
+// added) and the direction, length, height and steepness the bottom gave it
+// there (coast_field.glsl; the open sea's beyond the field).
+CoastWave gerstnerWaveAt(int i, vec2 restOffset_m, CoastCell cell, vec4 everyWave, out float theta)
+{
+    vec2 openDirection = gerstnerWaves[i].direction;
+    float openK = gerstnerWaves[i].wavenumber_rad_per_m;
+    CoastWave w = coastWave(cell, everyWave, gerstnerWaves[i].coastLayer, openDirection, openK,
+                            gerstnerWaves[i].amplitude_m, gerstnerWaves[i].steepness);
+    theta = openK * dot(openDirection, restOffset_m) + gerstnerWaves[i].phase_rad + w.phase_rad;
+    return w;
+}
+
 // The sum of all waves at a rest point given relative to the grid centre.
 // heightScale (0..1) is the horizon fade; footprint_m drives the wavelength filter.
 SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
@@ -29,19 +42,14 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
     vec3 tangent = vec3(1.0, 0.0, 0.0);
     vec3 binormal = vec3(0.0, 0.0, 1.0);
     CoastCell cell = coastCellAt(restOffset_m);
-    vec4 everyWave = cell.inside ? coastCommonAt(cell) : vec4(0.0, 1.0, 1.0, 0.0);
+    vec4 everyWave = coastEveryWaveAt(cell);
     for (int i = 0; i < gerstnerWaveCount; ++i) {
         float weight = waveLodWeight(gerstnerWaves[i].wavelength_m, footprint_m);
         // The waves come longest first: none after this one is resolved either.
         if (weight <= 0.0)
             break;
-        vec2 openDirection = gerstnerWaves[i].direction;
-        float openK = gerstnerWaves[i].wavenumber_rad_per_m;
-        // The open sea's phase, then the wave as the bottom has made it here.
-        float theta = openK * dot(openDirection, restOffset_m) + gerstnerWaves[i].phase_rad;
-        CoastWave w = coastWave(cell, everyWave, gerstnerWaves[i].coastLayer, openDirection, openK,
-                                gerstnerWaves[i].amplitude_m, gerstnerWaves[i].steepness);
-        theta += w.phase_rad;
+        float theta;
+        CoastWave w = gerstnerWaveAt(i, restOffset_m, cell, everyWave, theta);
         vec2 d = w.direction;
         float k = w.wavenumber_rad_per_m;
         float amplitude = w.amplitude_m * heightScale * weight;
@@ -99,7 +107,7 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
     // body, masked, for every wave any pixel of a block still iterates over.
     int i = firstWaveShorterThan(bothFull_m);
     CoastCell cell = coastCellAt(restOffset_m);
-    vec4 everyWave = cell.inside ? coastCommonAt(cell) : vec4(0.0, 1.0, 1.0, 0.0);
+    vec4 everyWave = coastEveryWaveAt(cell);
     for (; i < gerstnerWaveCount; ++i) {
         float wavelength = gerstnerWaves[i].wavelength_m;
         // The waves come longest first: none after this one adds anything either.
@@ -108,12 +116,8 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
         // Negative where the pixel is wider than the grid's cells (far away):
         // the pixel then takes out what it cannot resolve.
         float weight = waveLodWeight(wavelength, pixelFootprint_m) - waveLodWeight(wavelength, gridFootprint_m);
-        vec2 openDirection = gerstnerWaves[i].direction;
-        float openK = gerstnerWaves[i].wavenumber_rad_per_m;
-        float theta = openK * dot(openDirection, restOffset_m) + gerstnerWaves[i].phase_rad;
-        CoastWave w = coastWave(cell, everyWave, gerstnerWaves[i].coastLayer, openDirection, openK,
-                                gerstnerWaves[i].amplitude_m, gerstnerWaves[i].steepness);
-        theta += w.phase_rad;
+        float theta;
+        CoastWave w = gerstnerWaveAt(i, restOffset_m, cell, everyWave, theta);
         vec2 d = w.direction;
         float k = w.wavenumber_rad_per_m;
         float q = w.steepness;

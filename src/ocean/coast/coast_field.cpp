@@ -109,7 +109,7 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
     const std::size_t coastWaves = std::min(kMaxCoastWaves, waves.waves.size());
     const int band = blendBand(g);
 
-    // The open sea's wavenumber vector and frequency of every wave.
+    // The open sea's wavenumber vector of every wave.
     std::vector<glm::dvec2> openK(waves.waves.size());
     for (std::size_t w = 0; w < waves.waves.size(); ++w)
         openK[w] = wavenumberVector(waves.waves[w]);
@@ -143,6 +143,7 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
     layers_.assign(coastWaves, std::vector<glm::vec4>(n));
     common_.assign(n, glm::vec4(0.0f));
     reach_ = waveReach(WaveSet{waves.waves, waves.depth_m, nullptr});
+    std::vector<double> gain(waves.waves.size());
     for (int j = 0; j < g.size.y; ++j)
         for (int i = 0; i < g.size.x; ++i) {
             const std::size_t c = std::size_t(j) * std::size_t(g.size.x) + std::size_t(i);
@@ -150,7 +151,7 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
             const int edge = std::min({i, j, g.size.x - 1 - i, g.size.y - 1 - j});
             const double inner = smoothstep01(double(edge) / double(band));
             const glm::dvec2 p = g.origin_m + g.cell_m * glm::dvec2(i, j);
-            std::vector<double> gain(waves.waves.size(), 1.0);
+            std::fill(gain.begin(), gain.end(), 1.0);
             double height = 0.0;
             for (std::size_t w = 0; w < waves.waves.size(); ++w) {
                 if (const int l = layerOfWave_[w]; l >= 0)
