@@ -77,10 +77,10 @@ void Renderer::setSeabedHeights(const SeabedHeights& heights)
     // Built before anything changes: a failure leaves the heights as they were.
     auto seabed = std::make_shared<const Seabed>(s.scene, &heights);
     std::shared_ptr<const WaveModel> model = makeWaveModel(s.scene, *seabed);
-    s.hostSeabed = heights;
-    s.resources.seabed = std::move(seabed);
     // The waves run over the host's floor too.
     s.apply(s.scene, ParameterEffect::Frame, std::move(model), s.simulation.overrideModel(), s.simulation.hostSources());
+    s.hostSeabed = heights;
+    s.resources.seabed = std::move(seabed);
 }
 
 void Renderer::clearSeabedHeights()
@@ -89,9 +89,9 @@ void Renderer::clearSeabedHeights()
     s.simulation.settle();
     auto seabed = std::make_shared<const Seabed>(s.scene);
     std::shared_ptr<const WaveModel> model = makeWaveModel(s.scene, *seabed);
+    s.apply(s.scene, ParameterEffect::Frame, std::move(model), s.simulation.overrideModel(), s.simulation.hostSources());
     s.resources.seabed = std::move(seabed);
     s.hostSeabed.reset();
-    s.apply(s.scene, ParameterEffect::Frame, std::move(model), s.simulation.overrideModel(), s.simulation.hostSources());
 }
 
 const Seabed& Renderer::seabed() const { return *impl_->resources.seabed; }
