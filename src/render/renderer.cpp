@@ -19,7 +19,8 @@ Renderer::Renderer(const Scene& scene, RendererOptions options) : Renderer(scene
 Renderer::Renderer(const Scene& scene, RendererOptions options, unsigned omittedWaterTerms)
     : impl_(std::make_unique<Impl>(std::move(options), omittedWaterTerms))
 {
-    impl_->apply(scene, ParameterEffect::Frame, impl_->waveModelOf(scene), nullptr, {}, true);
+    std::shared_ptr<const Seabed> seabed = impl_->seabedOf(scene);
+    impl_->apply(scene, ParameterEffect::Frame, Impl::waveModelOf(scene, *seabed), nullptr, {}, true, seabed);
 }
 
 Renderer::~Renderer() = default;
@@ -29,11 +30,15 @@ void Renderer::setScene(const Scene& scene)
     Impl& s = *impl_;
     const ParameterEffect effects = sceneChanges(s.scene, scene);
     // The waves are generated again only when a wave parameter or the sea
-    // floor they run over changed.
+    // floor they run over changed; the floor is built once, for the model
+    // and the drawn mesh.
     const bool floorChanged = hasEffect(effects, ParameterEffect::Seabed) || hasEffect(effects, ParameterEffect::World);
-    std::shared_ptr<const WaveModel> sceneModel =
-        hasEffect(effects, ParameterEffect::Waves) || floorChanged ? s.waveModelOf(scene) : s.simulation.sceneModel();
-    s.apply(scene, effects, std::move(sceneModel), s.simulation.overrideModel(), s.simulation.hostSources());
+    std::shared_ptr<const Seabed> seabed = floorChanged ? s.seabedOf(scene) : nullptr;
+    std::shared_ptr<const WaveModel> sceneModel = s.simulation.sceneModel();
+    if (hasEffect(effects, ParameterEffect::Waves) || floorChanged)
+        sceneModel = Impl::waveModelOf(scene, seabed ? *seabed : *s.resources.seabed);
+    s.apply(scene, effects, std::move(sceneModel), s.simulation.overrideModel(), s.simulation.hostSources(), false,
+            std::move(seabed));
 }
 
 const Scene& Renderer::scene() const { return impl_->scene; }

@@ -78,12 +78,15 @@ struct Renderer::Impl {
     {
     }
 
-    // The model `next` describes, over its floor and the host's heights.
-    std::unique_ptr<WaveModel> waveModelOf(const Scene& next) const
+    // The floor `next` describes, joined by the host's heights.
+    std::shared_ptr<const Seabed> seabedOf(const Scene& next) const
     {
-        if (next.waves.model == WaveModelKind::Spectral)
-            return makeWaveModel(next);
-        return makeWaveModel(next, Seabed(next, hostSeabed ? &*hostSeabed : nullptr));
+        return std::make_shared<const Seabed>(next, hostSeabed ? &*hostSeabed : nullptr);
+    }
+    // The model `next` describes, over `seabed` (the spectral model does not feel it).
+    static std::unique_ptr<WaveModel> waveModelOf(const Scene& next, const Seabed& seabed)
+    {
+        return next.waves.model == WaveModelKind::Spectral ? makeWaveModel(next) : makeWaveModel(next, seabed);
     }
 
     RenderContext context()
@@ -93,14 +96,17 @@ struct Renderer::Impl {
 
     // Makes `next` the scene and `nextSceneModel` its model (the override
     // and the host's sources as given), rebuilding what `effects` and a
-    // changed model ask for. Everything that can fail is built first; the
-    // renderer changes only when all did.
+    // changed model ask for; `nextSeabed`, when given, is `next`'s floor as
+    // the caller built it for the model. Everything that can fail is built
+    // first; the renderer changes only when all did.
     void apply(const Scene& next, ParameterEffect effects, std::shared_ptr<const WaveModel> nextSceneModel,
                std::shared_ptr<const WaveModel> nextOverride,
-               std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first = false);
+               std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first = false,
+               std::shared_ptr<const Seabed> nextSeabed = nullptr);
     SceneUpdate prepare(const Scene& next, ParameterEffect effects, std::shared_ptr<const WaveModel> nextSceneModel,
                         std::shared_ptr<const WaveModel> nextOverride,
-                        std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first);
+                        std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first,
+                        std::shared_ptr<const Seabed> nextSeabed);
     void commit(const Scene& next, SceneUpdate update);
 
     void advanceTo(double time_s, glm::dvec3 viewpointWorld)

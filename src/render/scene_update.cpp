@@ -15,7 +15,8 @@ namespace swell {
 SceneUpdate Renderer::Impl::prepare(const Scene& next, ParameterEffect effects,
                                     std::shared_ptr<const WaveModel> nextSceneModel,
                                     std::shared_ptr<const WaveModel> nextOverride,
-                                    std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first)
+                                    std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first,
+                                    std::shared_ptr<const Seabed> nextSeabed)
 {
     SceneUpdate update;
     SimulationUpdate& sim = update.simulation;
@@ -42,7 +43,7 @@ SceneUpdate Renderer::Impl::prepare(const Scene& next, ParameterEffect effects,
         update.shapes = SceneShapes(assets);
     }
     if (first || hasEffect(effects, ParameterEffect::World) || hasEffect(effects, ParameterEffect::Seabed)) {
-        update.seabed = std::make_shared<const Seabed>(next, hostSeabed ? &*hostSeabed : nullptr);
+        update.seabed = nextSeabed ? std::move(nextSeabed) : seabedOf(next);
         update.seabedMesh = makeSeabedMesh(*update.seabed);
     }
     // Bodies start again from their start when what moves them changed.
@@ -86,12 +87,13 @@ void Renderer::Impl::commit(const Scene& next, SceneUpdate update)
 
 void Renderer::Impl::apply(const Scene& next, ParameterEffect effects, std::shared_ptr<const WaveModel> nextSceneModel,
                            std::shared_ptr<const WaveModel> nextOverride,
-                           std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first)
+                           std::vector<std::shared_ptr<const SurfaceSource>> nextHostSources, bool first,
+                           std::shared_ptr<const Seabed> nextSeabed)
 {
     // The bodies' worker may be querying the model and sources replaced here.
     simulation.settle();
     commit(next, prepare(next, effects, std::move(nextSceneModel), std::move(nextOverride),
-                         std::move(nextHostSources), first));
+                         std::move(nextHostSources), first, std::move(nextSeabed)));
 }
 
 } // namespace swell

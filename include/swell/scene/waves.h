@@ -36,6 +36,8 @@ struct SWELL_API Wave {
     double amplitude_m = 0.1;       // crest height above rest, m, >= 0
     double steepness = 0.5;         // Q, dimensionless, 0..1: 0 is a sine wave, 1 the sharpest crest
     double phase_rad = 0.0;         // phase offset, rad
+
+    bool operator==(const Wave&) const = default;
 };
 
 class CoastField;

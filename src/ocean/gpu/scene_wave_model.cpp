@@ -15,19 +15,7 @@ namespace swell {
 
 namespace {
 
-bool sameWaves(const WaveSet& a, const WaveSet& b)
-{
-    if (a.waves.size() != b.waves.size() || !(a.depth_m == b.depth_m))
-        return false;
-    for (std::size_t i = 0; i < a.waves.size(); ++i) {
-        const Wave& x = a.waves[i];
-        const Wave& y = b.waves[i];
-        if (x.direction != y.direction || x.wavelength_m != y.wavelength_m || x.amplitude_m != y.amplitude_m
-            || x.steepness != y.steepness || x.phase_rad != y.phase_rad)
-            return false;
-    }
-    return true;
-}
+bool sameWaves(const WaveSet& a, const WaveSet& b) { return a.waves == b.waves && a.depth_m == b.depth_m; }
 
 bool sameGrid(const DepthGrid& a, const DepthGrid& b)
 {

@@ -46,6 +46,8 @@ public:
             tail += 0.5 * ka * ka;
             tailSlopeVariance_[i] = tail;
         }
+        for (const Wave* w : order_)
+            coastLayer_.push_back(waves_.coast ? waves_.coast->layerOf(std::size_t(w - waves_.waves.data())) : -1);
         uploadCoast();
     }
 
@@ -78,7 +80,7 @@ public:
             g.phase_rad = float(wrappedPhase(w, waves_.depth_m, gridCenter_m, time_s));
             g.wavelength_m = float(w.wavelength_m);
             g.tailSlopeVariance = float(tailSlopeVariance_[size_t(i)]);
-            g.coastLayer = waves_.coast ? waves_.coast->layerOf(std::size_t(order_[size_t(i)] - waves_.waves.data())) : -1;
+            g.coastLayer = coastLayer_[size_t(i)];
         }
         u.waveCount = count;
         if (waves_.coast) {
@@ -131,6 +133,7 @@ private:
     WaveSet waves_;
     std::vector<const Wave*> order_; // into waves_, longest first
     std::vector<double> tailSlopeVariance_; // of each wave in order_ and every shorter one
+    std::vector<int> coastLayer_;           // of each wave in order_: its coast field's layer, -1 none
     gl::Buffer buffer_;
     gl::Texture coastWaves_;
     gl::Texture coastCommon_;
