@@ -8,7 +8,9 @@
 
 // (phase_rad, gain, wavenumber x, wavenumber z) per coast wave, a layer each.
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray coastWaves;
-// (depth_m, gain, steepness scale, 0): what every wave shares.
+// (depth_m, gain, steepness scale, breaking): what every wave shares
+// (swell::CoastCommonSample; breaking: the share of the shoaled height the
+// breaking cut took, what shaders/surf.glsl draws the surf from).
 layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2D coastCommon;
 
 // Where a rest point falls among the field's samples: the lower corner of
@@ -49,7 +51,7 @@ vec4 coastCommonAt(CoastCell cell)
 }
 
 // What every wave shares at the cell's point: the field's texels, or the
-// open sea's (depth unused, gain 1, steepness scale 1) beyond the grid.
+// open sea's (depth unused, gain 1, steepness scale 1, no breaking) beyond the grid.
 vec4 coastEveryWaveAt(CoastCell cell)
 {
     return cell.inside ? coastCommonAt(cell) : vec4(0.0, 1.0, 1.0, 0.0);

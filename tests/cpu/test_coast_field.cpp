@@ -197,6 +197,43 @@ TEST(CoastField, WavesBreakAtMcCowansIndexAndStayUnderItInTheSurf)
     EXPECT_NEAR(breakRatio, 0.78, 0.1);
 }
 
+// The surf's measure (the common texel's fourth channel): none where the
+// waves do not break, and inside the surf zone the share of the shoaled
+// height the cut took, 1 - gamma h / (H0 K_s) with K_s linear shoaling's
+// (eq. 4.104), growing towards the shore; none on dry land.
+TEST(CoastField, TheSurfMeasureIsTheShareOfTheShoaledHeightTheCutTook)
+{
+    const Beach beach;
+    const double wavelength = 156.0, amplitude = 0.5;
+    WaveSet set = oneWave({1.0, 0.0}, wavelength, amplitude);
+    const int nx = int(beach.deepest_m * 50.0 / beach.cell_m) + 20;
+    const CoastField field(set, contoursAlongZ(nx, 12, beach.cell_m, [&](double x) { return beach.depthAt(x); }));
+    const double omega = deepOmega(wavelength);
+    int offshore = 0, surf = 0;
+    double previous = 0.0;
+    for (int i = 4; i < nx - 4; ++i) {
+        const double x = i * beach.cell_m, h = beach.depthAt(x);
+        const swell::CoastCommonSample common = field.commonAt({x, 6 * beach.cell_m});
+        if (h <= 0.0) {
+            EXPECT_EQ(common.breaking, 0.0) << "h " << h;
+            continue;
+        }
+        const double shoaled = 2.0 * amplitude * shoaling(omega, h);
+        if (shoaled < swell::kBreakerIndex * h * 0.95) {
+            EXPECT_EQ(common.breaking, 0.0) << "h " << h;
+            ++offshore;
+        } else if (shoaled > swell::kBreakerIndex * h * 1.05 && h > 2.0 * beach.cell_m / 50.0) {
+            EXPECT_NEAR(1.0 - common.breaking, swell::kBreakerIndex * h / shoaled, 0.05) << "h " << h;
+            EXPECT_GE(common.breaking, previous - 1e-6) << "h " << h;
+            previous = common.breaking;
+            ++surf;
+        }
+    }
+    EXPECT_GT(offshore, 900);
+    EXPECT_GT(surf, 10);
+    EXPECT_GT(previous, 0.5); // near the shore the cut takes most of the height
+}
+
 // A swell arriving at 30 degrees on straight parallel contours turns as
 // Snell's law for waves says, sin(theta) / c constant (eq. 4.115), within
 // 2 degrees at three depths.
