@@ -24,17 +24,18 @@
 // height the cut leaves).
 const float kSurfRollerStart = -0.2;
 const float kSurfRollerFull = 0.5;
-// Behind the crest the surf's foam fades as exp(-phase / this): a tenth
-// of it left at the trough (chosen by eye: lace over the back of the
-// wave, a band of bare water before the next roller, as in photographs of
-// spilling surf from above).
-const float kSurfFadePhase_rad = 1.3;
+// Behind the crest the surf's foam fades as exp(-phase / this): a fifth
+// of it half way to the trough, 4% at the trough (chosen by eye: lace
+// over the back of the wave, open water before the next roller, as in
+// photographs of spilling surf from above; 1.3 rad covered the back of the
+// wave in a grey carpet of lace seen from 7 m).
+const float kSurfFadePhase_rad = 1.0;
 // The rise towards the shore (m per m) over which the lace fades in behind
 // a trough: a tenth of the slope of a 1 m wave 60 m long.
 const float kSurfLaceRise = 0.01;
 // The amount the shading draws as a breaking's own (dense, bright): the
-// foam less than half a radian behind its crest, exp(-0.5 / 1.3).
-const float kSurfFreshAmount = 0.68;
+// foam less than half a radian behind its crest, exp(-0.5 / 1.0).
+const float kSurfFreshAmount = 0.61;
 // The sheet of old foam over the whole surf zone, from the waves before:
 // this much of the fresh foam's amount (chosen by eye).
 const float kSurfOldFoam = 0.05;
