@@ -1,17 +1,25 @@
 // The coast field on the GPU (swell/coast_field.h): the GLSL twin of
 // CoastField::waveAt and commonAt (src/ocean/coast/coast_field.cpp), the
-// same four texels mixed by the same weights. Included by gerstner.glsl
-// after its block (coastLayers, coastOrigin_m, coastSize, coastCell_m).
+// same four texels mixed by the same weights, and of the trains a wave
+// model hands the field (coastTrainShare, coastTrainsSurface). Every wave
+// model's GPU half binds its block and units (ocean/coast/gpu/coast_gpu.h).
 #ifndef SWELL_COAST_FIELD_GLSL
 #define SWELL_COAST_FIELD_GLSL
 #include "swell/gpu/bindings.h"
+#include "swell/gpu/ocean.h"
+
+// The Coast block (swell::detail::CoastUniforms,
+// src/ocean/coast/gpu/coast_uniforms.h): coastLayers (0: no field),
+// coastOrigin_m (sample (0, 0) relative to the grid centre), coastSize,
+// coastCell_m, the trains and where they take over.
+#include "gpu/coast_block.glsl"
 
 // (phase_rad, gain, wavenumber x, wavenumber z) per coast wave, a layer each.
-layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray coastWaves;
+layout(binding = SWELL_UNIT_COAST_WAVES) uniform sampler2DArray coastWaves;
 // (depth_m, gain, steepness scale, breaking): what every wave shares
 // (swell::CoastCommonSample; breaking: the share of the shoaled height the
-// breaking cut took, what shaders/surf.glsl draws the surf from).
-layout(binding = SWELL_UNIT_OCEAN1) uniform sampler2D coastCommon;
+// breaking took, what shaders/surf.glsl draws the surf from).
+layout(binding = SWELL_UNIT_COAST_COMMON) uniform sampler2D coastCommon;
 
 // Where a rest point falls among the field's samples: the lower corner of
 // its cell and its place in it; inside false beyond the grid.
@@ -87,5 +95,51 @@ CoastWave coastWave(CoastCell cell, vec4 everyWave, int layer, vec2 direction, f
         w.direction = t.zw / local;
     }
     return w;
+}
+
+// swell::coastTrainShare: the trains' share b of a model's longest band at
+// the rest point, from the field's bilinear depth and how far inside its
+// edge blend the point lies (CoastField::inside).
+float coastTrainShare(CoastCell cell, vec4 everyWave, vec2 restOffset_m)
+{
+    if (!cell.inside || coastTrainCount == 0)
+        return 0.0;
+    vec2 u = (restOffset_m - coastOrigin_m) / coastCell_m;
+    vec2 last = vec2(coastSize - 1);
+    float edge = min(min(u.x, u.y), min(last.x - u.x, last.y - u.y));
+    float inside = smoothstep(0.0, 1.0, edge / coastEdgeBand_cells);
+    return (1.0 - smoothstep(coastTrainsFullDepth_m, coastTrainsNoneDepth_m, everyWave.x)) * inside;
+}
+
+// The trains' sum at the rest point, each weighed by waveLodWeight at the
+// footprint and by `scale` (the caller's sqrt(b) times its height fade):
+// the displacement and the partial derivatives along rest x and z, less
+// the rest point's own (1, 0, 0) and (0, 0, 1). The CPU twin is the
+// Gerstner sum over the field (swell::gerstner::evaluateOverCoast) of the
+// trains' WaveSet, filtered alike.
+void coastTrainsSurface(vec2 restOffset_m, CoastCell cell, vec4 everyWave, float footprint_m, float scale,
+                        inout vec3 displacement, inout vec3 alongX, inout vec3 alongZ)
+{
+    for (int i = 0; i < coastTrainCount; ++i) {
+        float weight = smoothstep(SWELL_MIN_CELLS_PER_WAVELENGTH * footprint_m,
+                                  SWELL_FULL_CELLS_PER_WAVELENGTH * footprint_m, coastTrains[i].wavelength_m);
+        // Longest first: none after this one is resolved either.
+        if (weight <= 0.0)
+            break;
+        vec2 openDirection = coastTrains[i].direction;
+        float openK = coastTrains[i].wavenumber_rad_per_m;
+        CoastWave w = coastWave(cell, everyWave, coastTrains[i].layer, openDirection, openK,
+                                coastTrains[i].amplitude_m, coastTrains[i].steepness);
+        float theta = openK * dot(openDirection, restOffset_m) + coastTrains[i].phase_rad + w.phase_rad;
+        vec2 d = w.direction;
+        float amplitude = w.amplitude_m * weight * scale;
+        float q = w.steepness;
+        float s = sin(theta);
+        float c = cos(theta);
+        displacement += vec3(-q * amplitude * d.x * s, amplitude * c, -q * amplitude * d.y * s);
+        float ka = w.wavenumber_rad_per_m * amplitude;
+        alongX -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
+        alongZ -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
+    }
 }
 #endif

@@ -1,5 +1,5 @@
-// The surf: whitewater where the coast's waves break, for any wave model
-// that reads the coast field (coast_field.glsl; without it, no surf). The
+// The surf: whitewater where the coast's waves break, for every wave model
+// (each binds the coast field's block and textures, coast_field.glsl). The
 // coast field's common texel says how hard the waves break at each point
 // (its fourth channel: the share of the shoaled height the breaking cut
 // took, swell::CoastCommonSample::breaking); the drawn surface itself says
@@ -14,6 +14,7 @@
 // Called by water.frag's shading and its labels alike.
 #ifndef SWELL_SURF_GLSL
 #define SWELL_SURF_GLSL
+#include "coast_field.glsl"
 #include "whitecap_foam.glsl"
 
 // The roller: the foam is a crest's own, breaking now, where the water
@@ -60,7 +61,6 @@ const FoamNoise kSurfNoise[SWELL_FOAM_NOISE_MAPS] = FoamNoise[](
     FoamNoise(vec4(-7.605595, 28.292434, -28.292434, -7.605595), vec2(6.860, 24.900), 29.296875),
     FoamNoise(vec4(-0.055309, -0.106494, 0.106494, -0.055309), vec2(24.170, 66.600), 0.120000));
 
-#ifdef SWELL_COAST_FIELD_GLSL
 // The gradient of the coast field's depth at the cell's point, per metre:
 // its bilinear reading's, from the cell's edges.
 vec2 surfDepthGradient(CoastCell cell)
@@ -106,9 +106,6 @@ float surfAmount(vec2 restOffset_m, float elevation_m, vec3 normal)
     float strength = smoothstep(0.0, kSurfFullBreaking, breaking);
     return strength * max(max(roller, lace), kSurfOldFoam);
 }
-#else
-float surfAmount(vec2 restOffset_m, float elevation_m, vec3 normal) { return 0.0; }
-#endif
 
 // What a pixel sees of the surf's foam of this amount at world point
 // anchor_m (from the render origin), footprint_m wide.

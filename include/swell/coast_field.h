@@ -88,6 +88,26 @@ struct CoastCommonSample {
     double breaking = 0.0;
 };
 
+// Where a wave model hands its longest band to coast trains (WaveSet
+// waves solved over a field: the spectral model's; docs/RENDERING.md "Waves
+// that feel the bottom"): the trains carry all of it where the depth is at
+// most fullDepth_m, none where it is noneDepth_m or more, and none at the
+// field's edges and beyond.
+struct CoastTrainDepths {
+    double fullDepth_m = 0.0; // m, > 0
+    double noneDepth_m = 0.0; // m, > fullDepth_m
+};
+
+class CoastField;
+
+// The trains' share b of the band at world point (x, z): 1 - smoothstep
+// between the two depths of the field's bilinear depth there, times how far
+// inside its edge blend the point lies. The band's own waves are weighed by
+// sqrt(1 - b) and the trains by sqrt(b), so that their height variance adds
+// up to the band's wherever the two are independent. The GLSL twin is
+// coast_field.glsl's coastTrainShare.
+SWELL_API double coastTrainShare(const CoastField& field, const CoastTrainDepths& depths, glm::dvec2 world_m);
+
 class SWELL_API CoastField {
 public:
     // Solves the field of each of the min(kMaxCoastWaves, n) longest waves
@@ -117,6 +137,14 @@ public:
     // `layer` is layerOf(the wave); beyond the grid, or for no layer, the open sea's.
     CoastWaveSample waveAt(int layer, glm::dvec2 world_m, glm::dvec2 openWavenumber_radpm) const;
     CoastCommonSample commonAt(glm::dvec2 world_m) const;
+
+    // The band along the grid's edges over which the field is blended into
+    // the open sea's values, in samples.
+    int edgeBand() const;
+    // How far inside that blend world point (x, z) lies: 0 at the grid's
+    // edge and beyond, 1 a band or more inside; smooth between. Read at the
+    // point itself, not from texels, as coast_field.glsl does.
+    double inside(glm::dvec2 world_m) const;
 
 private:
     DepthGrid depth_;

@@ -23,7 +23,10 @@ namespace swell {
 namespace spectral {
 struct SpectralField;
 class CpuSurface;
+struct CoastTrains;
 } // namespace spectral
+
+class Seabed;
 
 struct SWELL_API SpectralSettings {
     WindSettings wind;       // the sea: wind, fetch, depth, spreading, swell
@@ -49,6 +52,10 @@ class SWELL_API SpectralSurface : public virtual SurfaceQuery {
 public:
     // Throws std::invalid_argument as SeaSpectrum does for bad settings.
     explicit SpectralSurface(const SpectralSettings& settings);
+    // Over a sea floor (docs/RENDERING.md "Waves that feel the bottom"):
+    // near the coast the longest band is carried by a few trains that feel
+    // the bottom, and no wave stands on dry land. A flat floor: the open sea.
+    SpectralSurface(const SpectralSettings& settings, const Seabed& seabed);
     ~SpectralSurface() override;
 
     const SpectralSettings& settings() const { return settings_; }
@@ -66,8 +73,12 @@ protected:
     // (src/ocean/spectral/breaking.h).
     std::array<float, SWELL_FOAM_LEVELS> breakingStart_{};
     std::shared_ptr<const spectral::SpectralField> field_;
+    // The trains over the floor's coast field; null: the open sea.
+    std::shared_ptr<const spectral::CoastTrains> coast_;
 
 private:
+    SpectralSurface(const SpectralSettings& settings, const Seabed* seabed);
+
     std::unique_ptr<spectral::CpuSurface> cpu_;
     double heightDeviation_m_ = 0.0;
 };
@@ -77,6 +88,8 @@ class SWELL_API SpectralModel final : public SpectralSurface, public WaveModel {
 public:
     // Throws std::invalid_argument as SeaSpectrum does for bad settings.
     explicit SpectralModel(const SpectralSettings& settings);
+    // Over a sea floor, as SpectralSurface's.
+    SpectralModel(const SpectralSettings& settings, const Seabed& seabed);
     ~SpectralModel() override;
 
     std::unique_ptr<WaveModelGpu> createGpu(const gl::ShaderSources& shaders) const override;

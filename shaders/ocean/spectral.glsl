@@ -21,6 +21,9 @@
 #include "gpu/spectral_block.glsl"
 // The whitecaps' look, which the callers give the block's lattices.
 #include "whitecap_foam.glsl"
+// Over a sea floor: the trains that carry the longest band near the coast
+// (src/ocean/spectral/spectral_coast.h).
+#include "coast_field.glsl"
 
 layout(binding = SWELL_UNIT_OCEAN0) uniform sampler2DArray oceanDisplacement; // Dx, Dy, Dz, dDx/dz, m
 // For shading, layers 0 .. SWELL_FFT_CASCADES - 1: dDy/dx, dDy/dz, dDx/dx,
@@ -145,6 +148,31 @@ float worldFoam(vec2 restOffset_m, float footprint_m, bool bSpline)
     return foam;
 }
 
+// What the coast does to the cascades at a rest point (CpuSurface::sample):
+// every cascade times the field's common gain (the breaking cut, no water on
+// dry land), cascade 0 also times sqrt(1 - b), and the trains added at
+// sqrt(b), b the trains' share of the longest band (coastTrainShare).
+struct SpectralCoast {
+    CoastCell cell;
+    vec4 everyWave;
+    float share;       // b
+    float firstWeight; // cascade 0's factor
+    float otherWeight; // the other cascades'
+};
+
+SpectralCoast spectralCoastAt(vec2 restOffset_m)
+{
+    SpectralCoast coast;
+    coast.cell = coastCellAt(restOffset_m);
+    coast.everyWave = coastEveryWaveAt(coast.cell);
+    coast.share = coastTrainShare(coast.cell, coast.everyWave, restOffset_m);
+    coast.otherWeight = coast.everyWave.y;
+    coast.firstWeight = coast.otherWeight * sqrt(1.0 - coast.share);
+    return coast;
+}
+
+float coastCascadeWeight(SpectralCoast coast, int c) { return c == 0 ? coast.firstWeight : coast.otherWeight; }
+
 // Where each cascade is looked up at a rest point and the Jacobian of the
 // lookup (warpedTexels).
 struct CascadeLookups {
@@ -211,12 +239,17 @@ CascadeLookups interpolatedLookups(vec2 restOffset_m, vec4 data[SWELL_OCEAN_VERT
 // average away comes back from the second moments (LEAN mapping, Olano &
 // Baker 2010: E[s^2] - E[s]^2 over the footprint), with that of the waves no
 // cascade holds (Elfouhaily et al. 1997), as the highlight's spread.
-SurfacePoint spectralSlopes(CascadeLookups lookups, float footprint_m, float heightScale)
+// Over a coast, each cascade's slopes are weighed as its displacement is
+// (the weights' own gradients left out, as the CPU twin leaves them: they
+// change over tens of metres) and the trains' added at the footprint.
+SurfacePoint spectralSlopes(CascadeLookups lookups, vec2 restOffset_m, SpectralCoast coast, float footprint_m,
+                            float heightScale)
 {
     // Gradients along rest x and z, each (d/dx, d/dz).
     vec2 gradDx = vec2(0.0), gradDy = vec2(0.0), gradDz = vec2(0.0);
     float slopeVariance = 0.0;
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
+        float coastWeight = coastCascadeWeight(coast, c);
         SpectralCascade cascade = cascades[c];
         mat2 jacobian = lookups.jacobian[c];
         vec2 s = lookups.texels[c];
@@ -233,15 +266,24 @@ SurfacePoint spectralSlopes(CascadeLookups lookups, float footprint_m, float hei
         // The chain rule through the warp: d/dx_j = (d/ds) . jacobian[j].
         vec2 slope = d.xy, alongDx = vec2(d.z, crossSlope), alongDz = vec2(crossSlope, d.w);
         for (int j = 0; j < 2; ++j) {
-            gradDx[j] += dot(alongDx, jacobian[j]);
-            gradDy[j] += dot(slope, jacobian[j]);
-            gradDz[j] += dot(alongDz, jacobian[j]);
+            gradDx[j] += coastWeight * dot(alongDx, jacobian[j]);
+            gradDy[j] += coastWeight * dot(slope, jacobian[j]);
+            gradDz[j] += coastWeight * dot(alongDz, jacobian[j]);
         }
         // The slopes' covariance over the footprint, carried the same way:
         // the trace of J^T C J.
         mat2 covariance = mat2(max(moments.x - d.x * d.x, 0.0), moments.z - d.x * d.y,
                                moments.z - d.x * d.y, max(moments.y - d.y * d.y, 0.0));
-        slopeVariance += max(dot(jacobian[0], covariance * jacobian[0]) + dot(jacobian[1], covariance * jacobian[1]), 0.0);
+        slopeVariance += coastWeight * coastWeight
+                       * max(dot(jacobian[0], covariance * jacobian[0]) + dot(jacobian[1], covariance * jacobian[1]), 0.0);
+    }
+    if (coast.share > 0.0) {
+        vec3 trains = vec3(0.0), alongX = vec3(0.0), alongZ = vec3(0.0);
+        coastTrainsSurface(restOffset_m, coast.cell, coast.everyWave, footprint_m, sqrt(coast.share), trains, alongX,
+                           alongZ);
+        gradDx += vec2(alongX.x, alongZ.x);
+        gradDy += vec2(alongX.y, alongZ.y);
+        gradDz += vec2(alongX.z, alongZ.z);
     }
     gradDx *= heightScale;
     gradDy *= heightScale;
@@ -254,16 +296,22 @@ SurfacePoint spectralSlopes(CascadeLookups lookups, float footprint_m, float hei
 
 SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScale)
 {
-    vec4 displacement = vec4(0.0); // Dx, Dy, Dz, dDx/dz
+    SpectralCoast coast = spectralCoastAt(restOffset_m);
+    vec3 displacement = vec3(0.0); // Dx, Dy, Dz
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
-        float weight = cascadeWeight(cascades[c].shortestWavelength_m, footprint_m);
+        float weight = cascadeWeight(cascades[c].shortestWavelength_m, footprint_m) * coastCascadeWeight(coast, c);
         if (weight > 0.0) {
             mat2 jacobian;
-            displacement += weight * bilinearDisplacement(warpedTexels(c, restOffset_m, jacobian), c);
+            displacement += weight * bilinearDisplacement(warpedTexels(c, restOffset_m, jacobian), c).xyz;
         }
     }
-    SurfacePoint p = spectralSlopes(warpedLookups(restOffset_m), footprint_m, heightScale);
-    p.displacement = displacement.xyz * heightScale;
+    if (coast.share > 0.0) {
+        vec3 alongX = vec3(0.0), alongZ = vec3(0.0);
+        coastTrainsSurface(restOffset_m, coast.cell, coast.everyWave, footprint_m, sqrt(coast.share), displacement,
+                           alongX, alongZ);
+    }
+    SurfacePoint p = spectralSlopes(warpedLookups(restOffset_m), restOffset_m, coast, footprint_m, heightScale);
+    p.displacement = displacement * heightScale;
     return p;
 }
 
@@ -272,7 +320,7 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
 // the pixel's alone (the vertices have no use for it).
 SurfacePoint spectralShading(CascadeLookups lookups, vec2 restOffset_m, float pixelFootprint_m, float heightScale)
 {
-    SurfacePoint p = spectralSlopes(lookups, pixelFootprint_m, heightScale);
+    SurfacePoint p = spectralSlopes(lookups, restOffset_m, spectralCoastAt(restOffset_m), pixelFootprint_m, heightScale);
     FoamLook foam = foamLook(foamNoise, breakingFoamAmount, heightScale * worldFoam(restOffset_m, pixelFootprint_m, true),
                              restOffset_m, pixelFootprint_m);
     p.foam = foam.cover;

@@ -133,6 +133,16 @@ TEST_F(DrawnSurfaceTest, OverTheSeaFloorTheWaterIsTheDrawnTriangles)
     expectDrawnSurface(scene, {-40.0, 6.0, 200.0}, {0.0, 37.5});
 }
 
+// The spectral ocean over the same floor: the longest band carried by the
+// trains near the shore (src/ocean/spectral/spectral_coast.h).
+TEST_F(DrawnSurfaceTest, SpectralOverTheSeaFloorIsTheDrawnTriangles)
+{
+    swell::Scene scene = swell::loadScene(std::filesystem::path(SWELL_SOURCE_DIR) / "scenes" / "coast.toml");
+    scene.waves.model = swell::WaveModelKind::Spectral;
+    scene.sea.wind->windSpeed_mps = 10.0;
+    expectDrawnSurface(scene, {-40.0, 6.0, 200.0}, {0.0, 37.5});
+}
+
 TEST_F(DrawnSurfaceTest, SpectralEqualsTheDrawnTriangles)
 {
     swell::Scene scene = plainScene();

@@ -166,4 +166,23 @@ TEST_F(WaveAgreement, SpectralCascadesFarFromTheOrigin)
     expectAgreement(spectralScene(), {1.0e6 + 0.37, 6.0, -1.0e6 - 0.81}, 1.0e3, Normals::NotCompared);
 }
 
+// The spectral ocean over a sea floor (src/ocean/spectral/spectral_coast.h):
+// a 1:40 beach under the grid's finest rings, where the cascades are
+// weighed by the coast field, the longest band is handed to the trains
+// (wholly near the shore, in part farther out) and the dry sand holds none.
+TEST_F(WaveAgreement, SpectralOverASeaFloor)
+{
+    swell::Scene scene = spectralScene();
+    scene.sea.wind->windSpeed_mps = 12.0;
+    scene.seabed.toeDepth_m = 60.0;
+    swell::SeabedBeach beach;
+    beach.shorePoint_m = {0.0, 300.0};
+    beach.slope = 1.0 / 40.0;
+    beach.length_m = 4000.0;
+    scene.seabed.beaches.push_back(beach);
+    swell::Renderer renderer(scene);
+    for (double t : {0.0, 41.5})
+        expectAgreement(renderer, scene, {-30.0, 5.0, 180.0}, t, Normals::NotCompared);
+}
+
 } // namespace

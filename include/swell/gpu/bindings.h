@@ -20,6 +20,9 @@
 #define SWELL_BINDING_CAUSTICS 4
 // The cloud shadow map's place (the CloudShadow block of cloud_shadow.glsl).
 #define SWELL_BINDING_CLOUD_SHADOW 5
+// The coast field's block (shaders/coast_field.glsl): where its samples lie,
+// and the trains a wave model hands it in place of its own longest waves.
+#define SWELL_BINDING_COAST 6
 
 // Texture units.
 #define SWELL_UNIT_SKY 0
@@ -66,6 +69,11 @@
 #define SWELL_UNIT_TEMPORAL_HISTORY 19
 #define SWELL_UNIT_TEMPORAL_BOX_CENTRE 21
 #define SWELL_UNIT_TEMPORAL_BOX_EXTENT 22
+// The coast field's texels (shaders/coast_field.glsl, swell/coast_field.h):
+// each coast wave's layer, and what every wave shares. Their own units, not
+// a wave model's, since every model reads them.
+#define SWELL_UNIT_COAST_WAVES 24
+#define SWELL_UNIT_COAST_COMMON 25
 
 // Image units of the spectral model's compute passes (src/ocean/spectral/,
 // shaders/ocean/spectral_fft.comp and spectral_foam.comp): the initial

@@ -253,4 +253,22 @@ CoastCommonSample CoastField::commonAt(glm::dvec2 world_m) const
     return {t.x, t.y, t.z, t.w};
 }
 
+int CoastField::edgeBand() const { return blendBand(depth_); }
+
+double CoastField::inside(glm::dvec2 world_m) const
+{
+    const glm::dvec2 u = (world_m - depth_.origin_m) / depth_.cell_m;
+    const double edge = std::min({u.x, u.y, depth_.size.x - 1.0 - u.x, depth_.size.y - 1.0 - u.y});
+    return smoothstep01(edge / double(edgeBand()));
+}
+
+double coastTrainShare(const CoastField& field, const CoastTrainDepths& depths, glm::dvec2 world_m)
+{
+    const double inside = field.inside(world_m);
+    if (inside <= 0.0)
+        return 0.0;
+    const double t = (field.commonAt(world_m).depth_m - depths.fullDepth_m) / (depths.noneDepth_m - depths.fullDepth_m);
+    return (1.0 - smoothstep01(t)) * inside;
+}
+
 } // namespace swell

@@ -8,8 +8,45 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <mutex>
 
 namespace swell::coast {
+
+namespace {
+
+bool sameWaves(const WaveSet& a, const WaveSet& b) { return a.waves == b.waves && a.depth_m == b.depth_m; }
+
+bool sameGrid(const DepthGrid& a, const DepthGrid& b)
+{
+    return a.origin_m == b.origin_m && a.cell_m == b.cell_m && a.size == b.size && a.outsideDepth_m == b.outsideDepth_m
+           && a.depth_m == b.depth_m;
+}
+
+std::shared_ptr<const CoastField> keptFieldOf(const WaveSet& waves, DepthGrid grid)
+{
+    struct Entry {
+        WaveSet waves;
+        std::shared_ptr<const CoastField> field;
+    };
+    static std::mutex mutex;
+    static std::deque<Entry> kept;
+    constexpr std::size_t kKept = 4;
+    {
+        const std::lock_guard lock(mutex);
+        for (const Entry& e : kept)
+            if (sameWaves(e.waves, waves) && sameGrid(e.field->depth(), grid))
+                return e.field;
+    }
+    auto field = std::make_shared<const CoastField>(waves, std::move(grid));
+    const std::lock_guard lock(mutex);
+    kept.push_front({waves, field});
+    if (kept.size() > kKept)
+        kept.pop_back();
+    return field;
+}
+
+} // namespace
 
 std::optional<DepthGrid> depthGridOf(const Seabed& seabed, const WaveSet& waves)
 {
@@ -37,6 +74,14 @@ std::optional<DepthGrid> depthGridOf(const Seabed& seabed, const WaveSet& waves)
             grid.depth_m[std::size_t(j) * std::size_t(grid.size.x) + std::size_t(i)] = float(depth);
         }
     return grid;
+}
+
+std::shared_ptr<const CoastField> coastFieldOf(const Seabed& seabed, const WaveSet& waves)
+{
+    std::optional<DepthGrid> grid = depthGridOf(seabed, waves);
+    if (!grid)
+        return nullptr;
+    return keptFieldOf(waves, std::move(*grid));
 }
 
 } // namespace swell::coast

@@ -26,4 +26,11 @@ inline constexpr double kFinestCell_m = 2.0;
 // where the blend into the open sea happens.
 std::optional<DepthGrid> depthGridOf(const Seabed& seabed, const WaveSet& waves);
 
+// The field of `waves` over the scene's floor (depthGridOf), none where the
+// floor is flat. The field the same waves over the same grid gave last is
+// kept and handed out again: a scene's parameters mostly change neither
+// (the sun, the camera, the grid), and a field over the built-in island
+// takes about half a second to solve. The last few are kept, process-wide.
+std::shared_ptr<const CoastField> coastFieldOf(const Seabed& seabed, const WaveSet& waves);
+
 } // namespace swell::coast

@@ -14,5 +14,7 @@ namespace swell::detail {
 std::vector<gl::UniformBlock> gerstnerGlslBlocks();
 // ocean/spectral/gpu/spectral_blocks.cpp
 std::vector<gl::UniformBlock> spectralGlslBlocks();
+// ocean/coast/gpu/coast_blocks.cpp: the coast field's, which every model reads
+std::vector<gl::UniformBlock> coastGlslBlocks();
 
 } // namespace swell::detail

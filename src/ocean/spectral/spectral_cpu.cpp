@@ -1,6 +1,7 @@
 #include "ocean/spectral/spectral_cpu.h"
 
 #include "core/worker.h"
+#include "ocean/gerstner/gerstner_terms.h"
 #include "swell/scene/waves.h"
 
 #include <kiss_fft.h>
@@ -18,7 +19,8 @@ double cascadeWeight(const Cascade& cascade, double footprint_m)
     return waveLodWeight(cascade.shortestWavelength_m(), footprint_m);
 }
 
-CpuSurface::CpuSurface(std::shared_ptr<const SpectralField> field) : field_(std::move(field))
+CpuSurface::CpuSurface(std::shared_ptr<const SpectralField> field, std::shared_ptr<const CoastTrains> coast)
+    : field_(std::move(field)), coast_(std::move(coast))
 {
     fft_ = kiss_fft_alloc(kSize, 1, nullptr, nullptr);
     workerFft_ = kiss_fft_alloc(kSize, 1, nullptr, nullptr);
@@ -171,15 +173,24 @@ struct Bilinear {
 } // namespace
 
 void CpuSurface::sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
-                        Sample& out, int cascadeCount) const
+                        Sample& out, int cascadeCount, bool overCoast) const
 {
     if (!(fields_.time_s == time_s))
         startTime(time_s);
     const Fields& f = fields_;
     out = Sample{};
+    // Over a coast field: every cascade times the field's common gain, the
+    // longest band shared with the trains (spectral_coast.h).
+    double gain = 1.0, shareOfBand = 0.0;
+    const CoastField* field = overCoast && coast_ ? coast_->trains.coast.get() : nullptr;
+    if (field) {
+        gain = field->commonAt(restPoint_m).gain;
+        shareOfBand = coastTrainShare(*field, coast_->depths, restPoint_m);
+    }
     for (int c = 0; c < std::min(cascadeCount, kCascades); ++c) {
         const Cascade& cascade = field_->cascades[size_t(c)];
-        const double weight = cascadeWeight(cascade, filter.footprint_m);
+        const double weight =
+            cascadeWeight(cascade, filter.footprint_m) * gain * (c == 0 ? std::sqrt(1.0 - shareOfBand) : 1.0);
         if (weight <= 0.0)
             continue;
         // The anti-tiling warp: the cascade is looked up at x + w_c(x).
@@ -207,10 +218,30 @@ void CpuSurface::sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilt
             out.gradDz[j] += weight * glm::dot(gradDz, warp.jacobian[j]);
         }
     }
+    if (shareOfBand > 0.0)
+        addCoast(restPoint_m, time_s, filter, shareOfBand, out);
     out.displacement_m *= filter.heightScale;
     out.gradDx *= filter.heightScale;
     out.gradDy *= filter.heightScale;
     out.gradDz *= filter.heightScale;
+}
+
+void CpuSurface::addCoast(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter, double shareOfBand,
+                          Sample& out) const
+{
+    // The trains filtered as coast_field.glsl's coastTrainsSurface weighs
+    // them (the height fade is applied to the whole sample by the caller).
+    WaveSet trains = coast_->trains;
+    const double scale = std::sqrt(shareOfBand);
+    for (Wave& w : trains.waves)
+        w.amplitude_m *= scale * waveLodWeight(w.wavelength_m, filter.footprint_m);
+    gerstner::Evaluation e;
+    gerstner::evaluateOverCoast(trains, *trains.coast, restPoint_m, time_s, e);
+    out.displacement_m += e.displacement;
+    // The partials less the rest point's own: the gradients of (Dx, Dy, Dz).
+    out.gradDx += glm::dvec2(e.partials.alongX.x - 1.0, e.partials.alongZ.x);
+    out.gradDy += glm::dvec2(e.partials.alongX.y, e.partials.alongZ.y);
+    out.gradDz += glm::dvec2(e.partials.alongX.z, e.partials.alongZ.z - 1.0);
 }
 
 SurfacePoint CpuSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
@@ -240,7 +271,7 @@ double CpuSurface::foldJacobianAt(glm::dvec2 restPoint_m, double time_s, const S
 {
     std::lock_guard lock(mutex_);
     Sample sum;
-    sample(time_s, restPoint_m, filter, true, sum, cascadeCount);
+    sample(time_s, restPoint_m, filter, true, sum, cascadeCount, false);
     return (1.0 + sum.gradDx.x) * (1.0 + sum.gradDz.y) - sum.gradDx.y * sum.gradDz.x;
 }
 

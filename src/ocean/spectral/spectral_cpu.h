@@ -16,6 +16,8 @@
 #pragma once
 
 #include "ocean/spectral/spectral_field.h"
+#include "swell/coast_field.h"
+#include "swell/scene/waves.h"
 #include "swell/wave_model.h"
 
 #include <atomic>
@@ -37,9 +39,20 @@ namespace swell::spectral {
 // of that wavelength); 1 for a footprint of 0.
 double cascadeWeight(const Cascade& cascade, double footprint_m);
 
+// The field over a sea floor (spectral_coast.h): the trains solved over
+// their coast field (trains.coast) and where they take over.
+struct CoastTrains {
+    WaveSet trains;
+    CoastTrainDepths depths;
+};
+
 class CpuSurface {
 public:
-    explicit CpuSurface(std::shared_ptr<const SpectralField> field);
+    // `coast` null: the open sea everywhere. Otherwise, at each point, every
+    // cascade is weighed by the field's common gain (the breaking cut, no
+    // water on dry land), cascade 0 also by sqrt(1 - b) and the trains added
+    // at sqrt(b), b = coastTrainShare (the GLSL twin: spectral.glsl).
+    explicit CpuSurface(std::shared_ptr<const SpectralField> field, std::shared_ptr<const CoastTrains> coast = nullptr);
     ~CpuSurface();
 
     // The displacement and normal at a rest point (world x,z) and time.
@@ -127,8 +140,15 @@ private:
         glm::dvec3 displacement_m{0.0};                       // Dx, Dy, Dz, m
         glm::dvec2 gradDx{0.0}, gradDy{0.0}, gradDz{0.0}; // (d/dx, d/dz), dimensionless
     };
+    // overCoast: with the coast's weights and trains (the surface's
+    // queries); without, the patches' own sum (the foam's fold, which the GPU
+    // makes in the patches).
     void sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives, Sample& out,
-                int cascadeCount = kCascades) const;
+                int cascadeCount = kCascades, bool overCoast = true) const;
+    // The coast's share of the sample (trains, weights): what sample() adds.
+    void addCoast(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter, double shareOfBand,
+                  Sample& out) const;
+    std::shared_ptr<const CoastTrains> coast_;
     void* fft_ = nullptr;       // kiss_fft_cfg: 1D inverse, kSize
     void* workerFft_ = nullptr; // the same, the split's worker's own
 };

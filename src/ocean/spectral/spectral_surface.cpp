@@ -3,22 +3,51 @@
 // whitecaps are made on (breaking.h), from the field itself.
 #include "swell/spectral_model.h"
 
+#include "ocean/coast/coast_grid.h"
 #include "ocean/spectral/breaking.h"
+#include "ocean/spectral/spectral_coast.h"
 #include "ocean/spectral/spectral_cpu.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace swell {
 
 using namespace spectral;
 
-SpectralSurface::SpectralSurface(const SpectralSettings& settings)
+namespace {
+
+// The trains of the field's longest band over the floor's coast field; null
+// where the floor is flat everywhere.
+std::shared_ptr<const CoastTrains> coastOf(const SpectralField& field, double depth_m, const Seabed* seabed)
+{
+    if (!seabed)
+        return nullptr;
+    WaveSet trains = coastTrainsOf(field, depth_m);
+    trains.coast = coast::coastFieldOf(*seabed, trains);
+    if (!trains.coast)
+        return nullptr;
+    const CoastTrainDepths depths = coastTrainDepthsOf(trains);
+    return std::make_shared<const CoastTrains>(CoastTrains{std::move(trains), depths});
+}
+
+} // namespace
+
+SpectralSurface::SpectralSurface(const SpectralSettings& settings) : SpectralSurface(settings, nullptr) {}
+
+SpectralSurface::SpectralSurface(const SpectralSettings& settings, const Seabed& seabed)
+    : SpectralSurface(settings, &seabed)
+{
+}
+
+SpectralSurface::SpectralSurface(const SpectralSettings& settings, const Seabed* seabed)
     : settings_(settings),
       field_(std::make_shared<const SpectralField>(
           makeSpectralField(SeaSpectrum(settings.wind), settings.choppiness, settings.seed))),
-      cpu_(std::make_unique<CpuSurface>(field_))
+      coast_(coastOf(*field_, settings.wind.depth_m, seabed)),
+      cpu_(std::make_unique<CpuSurface>(field_, coast_))
 {
     // (fieldsAt is not thread-safe; nothing else can reach cpu_ while it is
     // being built.)
@@ -44,7 +73,18 @@ SpectralSurface::SpectralSurface(const SpectralSettings& settings)
 
 SpectralSurface::~SpectralSurface() = default;
 
-WaveReach SpectralSurface::reach() const { return {field_->verticalReach_m, field_->horizontalReach_m}; }
+WaveReach SpectralSurface::reach() const
+{
+    WaveReach reach{field_->verticalReach_m, field_->horizontalReach_m};
+    // Over a coast the trains add to the band they share, shoaled before
+    // they break (CoastField::reach): bounded by the sum of both.
+    if (coast_) {
+        const WaveReach trains = coast_->trains.coast->reach();
+        reach.vertical_m += trains.vertical_m;
+        reach.horizontal_m += trains.horizontal_m;
+    }
+    return reach;
+}
 
 SurfacePoint SpectralSurface::surfaceAt(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter) const
 {

@@ -50,7 +50,7 @@ inline std::vector<gl::UniformBlock> rendererGlslBlocks()
 inline std::vector<gl::UniformBlock> glslBlocks()
 {
     std::vector<gl::UniformBlock> blocks = rendererGlslBlocks();
-    for (const std::vector<gl::UniformBlock>& model : {gerstnerGlslBlocks(), spectralGlslBlocks()})
+    for (const std::vector<gl::UniformBlock>& model : {gerstnerGlslBlocks(), spectralGlslBlocks(), coastGlslBlocks()})
         blocks.insert(blocks.end(), model.begin(), model.end());
     return blocks;
 }

@@ -1,7 +1,9 @@
 // FlatModel: no displacement anywhere, normal straight up; its GPU half
-// uploads nothing.
+// uploads nothing but an empty coast field (ocean/coast/gpu/coast_gpu.h), so
+// that water shaders reading the coast read "no coast" under every model.
 #include "swell/flat_model.h"
 
+#include "ocean/coast/gpu/coast_gpu.h"
 #include "swell/wave_model_gpu.h"
 
 namespace swell {
@@ -11,9 +13,12 @@ namespace {
 class FlatGpu final : public WaveModelGpu {
 public:
     std::string shaderFile() const override { return "ocean/flat.glsl"; }
-    void prepareFrame(glm::dvec2, double) override {}
+    void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override { coast_.prepareView(gridCenter_m, time_s); }
     void prepareView(glm::dvec2) override {}
-    void bind() const override {}
+    void bind() const override { coast_.bind(); }
+
+private:
+    detail::CoastGpu coast_{nullptr};
 };
 
 } // namespace

@@ -5,6 +5,7 @@
 
 #include "swell/coast_field.h"
 
+#include "ocean/coast/gpu/coast_gpu.h"
 #include "ocean/gerstner/gpu/gerstner_uniforms.h"
 #include "swell/gl/handle.h"
 #include "swell/gpu/bindings.h"
@@ -24,7 +25,7 @@ namespace {
 
 class GerstnerGpu final : public WaveModelGpu {
 public:
-    explicit GerstnerGpu(const WaveSet& waves) : waves_(waves)
+    explicit GerstnerGpu(const WaveSet& waves) : waves_(waves), coast_(waves.coast)
     {
         buffer_ = gl::Buffer::create();
         glNamedBufferStorage(buffer_.id(), sizeof(detail::GerstnerUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -48,7 +49,6 @@ public:
         }
         for (const Wave* w : order_)
             coastLayer_.push_back(waves_.coast ? waves_.coast->layerOf(std::size_t(w - waves_.waves.data())) : -1);
-        uploadCoast();
     }
 
     std::string shaderFile() const override { return "ocean/gerstner.glsl"; }
@@ -83,60 +83,23 @@ public:
             g.coastLayer = coastLayer_[size_t(i)];
         }
         u.waveCount = count;
-        if (waves_.coast) {
-            const DepthGrid& grid = waves_.coast->depth();
-            u.coastLayers = int(waves_.coast->waveCount());
-            u.coastOrigin_m = glm::vec2(grid.origin_m - gridCenter_m);
-            u.coastSize = grid.size;
-            u.coastCell_m = float(grid.cell_m);
-        }
+        coast_.prepareView(gridCenter_m, time_s);
         glNamedBufferSubData(buffer_.id(), 0, sizeof(u), &u);
     }
 
     void bind() const override
     {
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, buffer_.id());
-        glBindTextureUnit(SWELL_UNIT_OCEAN0, coastWaves_.id());
-        glBindTextureUnit(SWELL_UNIT_OCEAN1, coastCommon_.id());
+        coast_.bind();
     }
 
 private:
-    // The coast field's texels (shaders/coast_field.glsl), read with
-    // texelFetch; without a field, one texel each, so that the samplers
-    // always have a texture of their kind.
-    void uploadCoast()
-    {
-        const CoastField* coast = waves_.coast.get();
-        const glm::ivec2 size = coast ? coast->depth().size : glm::ivec2(1);
-        const int layers = coast ? std::max(int(coast->waveCount()), 1) : 1;
-        coastWaves_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
-        glTextureStorage3D(coastWaves_.id(), 1, GL_RGBA32F, size.x, size.y, layers);
-        coastCommon_ = gl::Texture::create(GLenum(GL_TEXTURE_2D));
-        glTextureStorage2D(coastCommon_.id(), 1, GL_RGBA32F, size.x, size.y);
-        for (const gl::Texture* t : {&coastWaves_, &coastCommon_}) {
-            glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        }
-        if (!coast) {
-            const glm::vec4 open(0.0f, 1.0f, 1.0f, 0.0f);
-            glTextureSubImage3D(coastWaves_.id(), 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, &open);
-            glTextureSubImage2D(coastCommon_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, &open);
-            return;
-        }
-        for (std::size_t l = 0; l < coast->waveCount(); ++l)
-            glTextureSubImage3D(coastWaves_.id(), 0, 0, 0, GLint(l), size.x, size.y, 1, GL_RGBA, GL_FLOAT,
-                                coast->layer(l).data());
-        glTextureSubImage2D(coastCommon_.id(), 0, 0, 0, size.x, size.y, GL_RGBA, GL_FLOAT, coast->common().data());
-    }
-
-
     WaveSet waves_;
     std::vector<const Wave*> order_; // into waves_, longest first
     std::vector<double> tailSlopeVariance_; // of each wave in order_ and every shorter one
     std::vector<int> coastLayer_;           // of each wave in order_: its coast field's layer, -1 none
     gl::Buffer buffer_;
-    gl::Texture coastWaves_;
-    gl::Texture coastCommon_;
+    detail::CoastGpu coast_; // its field's texels and place, no trains
     double time_s_ = 0.0; // the time prepareFrame() reached, s
 };
 

@@ -24,7 +24,8 @@ struct alignas(16) GerstnerWaveUniform {
     // Mean square slope of this wave and every shorter one: what a pixel
     // that resolves none of them adds as roughness.
     float tailSlopeVariance;
-    // Its layer of the coast field's texture array (swell/coast_field.h), -1: none.
+    // Its layer of the coast field's texture array (swell/coast_field.h,
+    // ocean/coast/gpu/coast_gpu.h), -1: none.
     int coastLayer;
 };
 
@@ -32,13 +33,6 @@ struct alignas(16) GerstnerWaveUniform {
 struct alignas(16) GerstnerUniforms {
     GerstnerWaveUniform waves[SWELL_MAX_WAVES];
     int waveCount; // waves in use
-    // The coast field (shaders/coast_field.glsl): its layers (0: none), its
-    // sample (0, 0) relative to the grid centre, its samples along x and z
-    // and their spacing.
-    int coastLayers;
-    glm::vec2 coastOrigin_m;
-    glm::ivec2 coastSize;
-    float coastCell_m;
 };
 
 inline const gl::BlockStruct& blockStructOf(const GerstnerWaveUniform*)
@@ -57,9 +51,7 @@ inline const gl::BlockStruct& blockStructOf(const GerstnerUniforms*)
     using S = GerstnerUniforms;
     static const gl::BlockStruct s{"GerstnerWaves", "swell::detail::GerstnerUniforms", sizeof(S),
                                    {SWELL_BLOCK_MEMBER_AS(S, waves, "gerstnerWaves"),
-                                    SWELL_BLOCK_MEMBER_AS(S, waveCount, "gerstnerWaveCount"),
-                                    SWELL_BLOCK_MEMBER(S, coastLayers), SWELL_BLOCK_MEMBER(S, coastOrigin_m),
-                                    SWELL_BLOCK_MEMBER(S, coastSize), SWELL_BLOCK_MEMBER(S, coastCell_m)}};
+                                    SWELL_BLOCK_MEMBER_AS(S, waveCount, "gerstnerWaveCount")}};
     return s;
 }
 

@@ -10,6 +10,7 @@
 #include "core/worker.h"
 #include "gl/mip_downsample.h"
 #include "gl/uniform_location.h"
+#include "ocean/coast/gpu/coast_gpu.h"
 #include "ocean/spectral/field_texels.h"
 #include "ocean/foam/foam_texture.h"
 #include "ocean/spectral/foam_replay.h"
@@ -94,9 +95,11 @@ constexpr int kTile = SWELL_FOAM_STEP_GROUP;
 
 class SpectralGpu final : public WaveModelGpu {
 public:
-    SpectralGpu(std::shared_ptr<const SpectralField> field, const SpectralSettings& settings,
+    SpectralGpu(std::shared_ptr<const SpectralField> field, const CoastTrains* coast, const SpectralSettings& settings,
                 const BreakingRamps& ramps, const gl::ShaderSources& shaders)
-        : field_(std::move(field)), settings_(settings), ramps_(ramps), downsampler_(shaders)
+        : field_(std::move(field)), settings_(settings), ramps_(ramps), downsampler_(shaders),
+          coast_(coast ? coast->trains.coast : nullptr, coast ? coast->trains : WaveSet{},
+                 coast ? coast->depths : CoastTrainDepths{})
     {
         fftRows_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 0"});
         fftColumns_ = gl::buildProgram(shaders, {{GL_COMPUTE_SHADER, "ocean/spectral_fft.comp"}}, {"SWELL_FFT_VERTICAL 1"});
@@ -190,9 +193,14 @@ public:
         else if (moved && foam)
             stepFoam(time_s, 1.0f); // the same time: only the texels entering the windows are new
         buildMipmaps();
+        coast_.prepareView(gridCenter_m, time_s);
     }
 
-    void prepareView(glm::dvec2 gridCenter_m) override { updateUniforms(gridCenter_m); }
+    void prepareView(glm::dvec2 gridCenter_m) override
+    {
+        updateUniforms(gridCenter_m);
+        coast_.prepareView(gridCenter_m, time_s_);
+    }
 
     // The CPU twin's queries transform every cascade at each new time.
     bool answersFrameQueries() const override { return true; }
@@ -245,6 +253,7 @@ public:
 
     void bind() const override
     {
+        coast_.bind();
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, uniforms_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN0, displacement_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN1, slopes_.id());
@@ -525,6 +534,8 @@ private:
     FieldTexels texels_;
     gl::Program fftRows_, fftColumns_, foamStep_;
     gl::MipDownsampler downsampler_;
+    // Its trains' coast field, or an empty one (ocean/coast/gpu/coast_gpu.h).
+    detail::CoastGpu coast_;
     // Uniform locations, looked up once.
     GLint timeLocation_ = -1, choppinessLocation_ = -1, patchLocation_ = -1;
     GLint decayLocation_ = -1, startLocation_ = -1, spanLocation_ = -1, foamCascadesLocation_ = -1;
@@ -541,10 +552,11 @@ private:
 namespace spectral {
 
 std::unique_ptr<WaveModelGpu> makeSpectralGpu(std::shared_ptr<const SpectralField> field,
+                                              std::shared_ptr<const CoastTrains> coast,
                                               const SpectralSettings& settings, const BreakingRamps& ramps,
                                               const gl::ShaderSources& shaders)
 {
-    return std::make_unique<SpectralGpu>(std::move(field), settings, ramps, shaders);
+    return std::make_unique<SpectralGpu>(std::move(field), coast.get(), settings, ramps, shaders);
 }
 
 } // namespace spectral

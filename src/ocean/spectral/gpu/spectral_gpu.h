@@ -12,9 +12,13 @@
 
 namespace swell::spectral {
 
+struct CoastTrains;
+
 // The GPU half of a spectral model: its textures, passes and foam steps for
-// `field`, whitecaps on the breaking score's `ramps`, one a foam level (breaking.h).
+// `field`, whitecaps on the breaking score's `ramps`, one a foam level
+// (breaking.h); over a coast (null: none), its trains' field (spectral_cpu.h).
 std::unique_ptr<WaveModelGpu> makeSpectralGpu(std::shared_ptr<const SpectralField> field,
+                                              std::shared_ptr<const CoastTrains> coast,
                                               const SpectralSettings& settings, const spectral::BreakingRamps& ramps,
                                               const gl::ShaderSources& shaders);
 

@@ -15,6 +15,11 @@ using namespace spectral;
 
 SpectralModel::SpectralModel(const SpectralSettings& settings) : SpectralSurface(settings) {}
 
+SpectralModel::SpectralModel(const SpectralSettings& settings, const Seabed& seabed)
+    : SpectralSurface(settings, seabed)
+{
+}
+
 SpectralModel::~SpectralModel() = default;
 
 std::string_view SpectralModel::name() const { return "spectral"; }
@@ -28,7 +33,7 @@ std::string SpectralModel::summary() const
 
 std::unique_ptr<WaveModelGpu> SpectralModel::createGpu(const gl::ShaderSources& shaders) const
 {
-    return makeSpectralGpu(field_, settings_, spectral::breakingRampsStartingAt(breakingStart_), shaders);
+    return makeSpectralGpu(field_, coast_, settings_, spectral::breakingRampsStartingAt(breakingStart_), shaders);
 }
 
 } // namespace swell
