@@ -136,15 +136,25 @@ struct Beach {
     double cell_m = 5.0;
     double deepest_m = 100.0;
     double depthAt(double x) const { return deepest_m - x / 50.0; }
+    // The swell run onto it at normal incidence: T = 10 s, H0 = 1 m.
+    double wavelength_m = 156.0, amplitude_m = 0.5;
+    WaveSet swell() const { return oneWave({1.0, 0.0}, wavelength_m, amplitude_m); }
+    // Samples across the beach, from its deepest to a little up the land.
+    int samples() const { return int(deepest_m * 50.0 / cell_m) + 20; }
+    // The field of `set` over it, 12 samples along the shore.
+    CoastField fieldFor(const WaveSet& set) const
+    {
+        return CoastField(set, contoursAlongZ(samples(), 12, cell_m, [this](double x) { return depthAt(x); }));
+    }
 };
 
 TEST(CoastField, ASwellShoalsOnAPlaneBeachAsLinearTheorySays)
 {
     const Beach beach;
-    const double wavelength = 156.0, amplitude = 0.5; // T = 10 s, H0 = 1 m
-    WaveSet set = oneWave({1.0, 0.0}, wavelength, amplitude);
-    const int nx = int(beach.deepest_m * 50.0 / beach.cell_m) + 20;
-    const CoastField field(set, contoursAlongZ(nx, 12, beach.cell_m, [&](double x) { return beach.depthAt(x); }));
+    const double wavelength = beach.wavelength_m, amplitude = beach.amplitude_m;
+    const WaveSet set = beach.swell();
+    const int nx = beach.samples();
+    const CoastField field = beach.fieldFor(set);
     const double omega = deepOmega(wavelength);
     const glm::dvec2 open = swell::wavenumberVector(set.waves[0]);
     double worst = 0.0, lowest = kInf, highest = 0.0;
@@ -170,10 +180,10 @@ TEST(CoastField, ASwellShoalsOnAPlaneBeachAsLinearTheorySays)
 TEST(CoastField, WavesBreakAtMcCowansIndexAndStayUnderItInTheSurf)
 {
     const Beach beach;
-    const double wavelength = 156.0, amplitude = 0.5;
-    WaveSet set = oneWave({1.0, 0.0}, wavelength, amplitude);
-    const int nx = int(beach.deepest_m * 50.0 / beach.cell_m) + 20;
-    const CoastField field(set, contoursAlongZ(nx, 12, beach.cell_m, [&](double x) { return beach.depthAt(x); }));
+    const double amplitude = beach.amplitude_m;
+    const WaveSet set = beach.swell();
+    const int nx = beach.samples();
+    const CoastField field = beach.fieldFor(set);
     const glm::dvec2 open = swell::wavenumberVector(set.waves[0]);
     double breakRatio = 0.0, previousRatio = 0.0;
     bool broken = false;
@@ -204,21 +214,17 @@ TEST(CoastField, WavesBreakAtMcCowansIndexAndStayUnderItInTheSurf)
 TEST(CoastField, TheSurfMeasureIsTheShareOfTheShoaledHeightTheCutTook)
 {
     const Beach beach;
-    const double wavelength = 156.0, amplitude = 0.5;
-    WaveSet set = oneWave({1.0, 0.0}, wavelength, amplitude);
-    const int nx = int(beach.deepest_m * 50.0 / beach.cell_m) + 20;
-    const CoastField field(set, contoursAlongZ(nx, 12, beach.cell_m, [&](double x) { return beach.depthAt(x); }));
-    const double omega = deepOmega(wavelength);
+    const CoastField field = beach.fieldFor(beach.swell());
     int offshore = 0, surf = 0;
     double previous = 0.0;
-    for (int i = 4; i < nx - 4; ++i) {
+    for (int i = 4; i < beach.samples() - 4; ++i) {
         const double x = i * beach.cell_m, h = beach.depthAt(x);
         const swell::CoastCommonSample common = field.commonAt({x, 6 * beach.cell_m});
         if (h <= 0.0) {
             EXPECT_EQ(common.breaking, 0.0) << "h " << h;
             continue;
         }
-        const double shoaled = 2.0 * amplitude * shoaling(omega, h);
+        const double shoaled = 2.0 * beach.amplitude_m * shoaling(deepOmega(beach.wavelength_m), h);
         if (shoaled < swell::kBreakerIndex * h * 0.95) {
             EXPECT_EQ(common.breaking, 0.0) << "h " << h;
             ++offshore;
