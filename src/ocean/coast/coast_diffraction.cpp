@@ -379,6 +379,67 @@ glm::dvec2 rotated(glm::dvec2 v, double angle_rad)
 
 } // namespace
 
+namespace {
+
+// One march turned `angle` from the wave's open-sea direction, read back
+// onto the depth grid: per reached sample, the ray energy times the
+// coefficient's square where the ray solution is trusted (the march along
+// the open-sea direction only), the carried energy where it is not; empty
+// when the march has nothing to do.
+//
+// It starts at the first row that meets dry land or an untrusted sample
+// (before it, the open sea's wave is all there is). Turned to a side, it
+// ends past the last untrusted sample, the only ones that read it, and
+// spans only their columns and a margin of lit sea beside them, from which
+// the wave diffracts in.
+std::vector<double> marchedEnergy(const DepthSampler& sampler, glm::dvec2 direction, double angle_rad,
+                                  double openWavenumber_radpm, int margin)
+{
+    const DepthGrid& depth = sampler.grid;
+    const std::size_t n = depth.depth_m.size();
+    const bool side = angle_rad != 0.0;
+    MarchFrame frame = frameOf(depth, rotated(direction, angle_rad));
+    glm::ivec2 untrustedLo(frame.rows, frame.columns), untrustedHi(-1);
+    for (std::size_t c = 0; c < n; ++c)
+        if (depth.depth_m[c] > 0.0f && !sampler.rayTrusted[c]) {
+            const glm::ivec2 st(frame.local(samplePoint(depth, c)));
+            untrustedLo = glm::min(untrustedLo, st);
+            untrustedHi = glm::max(untrustedHi, st);
+        }
+    if (side && untrustedHi.x < 0)
+        return {}; // no shadow: nothing reads a side march
+    if (side) {
+        const int first = std::max(0, untrustedLo.y - 2 * margin - 4);
+        const int last = std::min(frame.columns - 1, untrustedHi.y + 2 * margin + 4);
+        frame.origin += double(first) * frame.cell * frame.across;
+        frame.columns = std::max(2, last - first + 1);
+    }
+    int firstDry = frame.rows;
+    for (std::size_t c = 0; c < n; ++c)
+        if (!(depth.depth_m[c] > 0.0f)) {
+            const glm::dvec2 st = frame.local(samplePoint(depth, c));
+            if (st.y >= -1.0 && st.y <= frame.columns)
+                firstDry = std::min(firstDry, int(st.x));
+        }
+    const int firstRow = std::max(0, std::min(firstDry, untrustedLo.x) - 2);
+    const int lastRow = side ? std::min(frame.rows - 1, untrustedHi.x + 2) : frame.rows - 1;
+    if (firstRow > lastRow)
+        return {};
+    const MarchResult result =
+        marchAcross(frame, sampler, incidentOf(openWavenumber_radpm, angle_rad, depth.cell_m), firstRow, lastRow);
+    std::vector<double> energy(n, 0.0);
+    for (std::size_t c = 0; c < n; ++c) {
+        const bool trusted = sampler.rayTrusted[c] != 0;
+        if (!sampler.march.reached[c] || (side && trusted))
+            continue;
+        const MarchAnswer answer = answerAt(frame, result, samplePoint(depth, c));
+        energy[c] = trusted ? sampler.march.energy[c] * answer.coefficientSquared : answer.carriedEnergy;
+    }
+    return energy;
+}
+
+} // namespace
+
 void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breakerIndex, WaveMarch& march)
 {
     const std::size_t n = depth.depth_m.size();
@@ -393,56 +454,12 @@ void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breake
     const double openWavenumber = localWavenumber(wave.omega_radps, depth.outsideDepth_m);
 
     // Three marches: along the open sea's direction, and turned kSideAngle
-    // to either side, so that no point of a lee is seen more than half of
-    // it off its march's axis, where the Pade operator holds.
-    // A march starts at the first row that meets dry land or an untrusted
-    // sample (before it, the open sea's wave is all there is). Turned to a
-    // side, it ends past the last untrusted sample, the only ones that read
-    // it, and spans only their columns and a margin of lit sea beside them,
-    // from which the wave diffracts in.
-    std::vector<double> energy[3];
-    for (int m = 0; m < 3; ++m) {
-        const double angle = double(m - 1) * kSideAngle_rad;
-        MarchFrame frame = frameOf(depth, rotated(wave.direction, angle));
-        const bool side = m != 1;
-        glm::ivec2 untrustedLo(frame.rows, frame.columns), untrustedHi(-1);
-        for (std::size_t c = 0; c < n; ++c)
-            if (depth.depth_m[c] > 0.0f && !rayTrusted[c]) {
-                const glm::ivec2 st(frame.local(samplePoint(depth, c)));
-                untrustedLo = glm::min(untrustedLo, st);
-                untrustedHi = glm::max(untrustedHi, st);
-            }
-        if (side && untrustedHi.x < 0)
-            continue; // no shadow: nothing reads a side march
-        if (side) {
-            const int first = std::max(0, untrustedLo.y - 2 * margin - 4);
-            const int last = std::min(frame.columns - 1, untrustedHi.y + 2 * margin + 4);
-            frame.origin += double(first) * frame.cell * frame.across;
-            frame.columns = std::max(2, last - first + 1);
-        }
-        int firstDry = frame.rows;
-        for (std::size_t c = 0; c < n; ++c)
-            if (!(depth.depth_m[c] > 0.0f)) {
-                const glm::dvec2 st = frame.local(samplePoint(depth, c));
-                if (st.y >= -1.0 && st.y <= frame.columns)
-                    firstDry = std::min(firstDry, int(st.x));
-            }
-        const int firstRow = std::max(0, std::min(firstDry, untrustedLo.x) - 2);
-        const int lastRow = side ? std::min(frame.rows - 1, untrustedHi.x + 2) : frame.rows - 1;
-        if (firstRow > lastRow)
-            continue;
-        const MarchResult result =
-            marchAcross(frame, sampler, incidentOf(openWavenumber, angle, depth.cell_m), firstRow, lastRow);
-        energy[m].assign(n, 0.0);
-        for (int j = 0; j < depth.size.y; ++j)
-            for (int i = 0; i < depth.size.x; ++i) {
-                const std::size_t c = std::size_t(j) * std::size_t(depth.size.x) + std::size_t(i);
-                if (!march.reached[c] || (m != 1 && rayTrusted[c]))
-                    continue;
-                const MarchAnswer answer = answerAt(frame, result, depth.origin_m + depth.cell_m * glm::dvec2(i, j));
-                energy[m][c] = rayTrusted[c] ? march.energy[c] * answer.coefficientSquared : answer.carriedEnergy;
-            }
-    }
+    // to either side, so that no point of a lee up to 60 degrees deep is
+    // more than 20 degrees off a march's axis, where the Pade operator holds.
+    const std::vector<double> energy[3] = {
+        marchedEnergy(sampler, wave.direction, -kSideAngle_rad, openWavenumber, margin),
+        marchedEnergy(sampler, wave.direction, 0.0, openWavenumber, margin),
+        marchedEnergy(sampler, wave.direction, kSideAngle_rad, openWavenumber, margin)};
     if (energy[1].empty())
         return; // the dry land lies past the last row: nothing behind it
     // A sample in a shadow or beside it takes the marches on either side of
