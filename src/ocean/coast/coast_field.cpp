@@ -4,6 +4,7 @@
 // bilinear reading, which shaders/coast_field.glsl repeats.
 #include "swell/coast_field.h"
 
+#include "ocean/coast/coast_diffraction.h"
 #include "ocean/coast/coast_march.h"
 
 #include "swell/constants.h"
@@ -155,6 +156,7 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
         marched.omega_radps = angularFrequency(marched.wavenumber_radpm, waves.depth_m);
         marched.amplitude_m = wave.amplitude_m;
         marches.push_back(coast::marchWave(g, marched, breakerIndex));
+        coast::diffractWave(g, marched, breakerIndex, marches.back());
         extendPhase(g, marches.back(), openK[w]);
     }
 
