@@ -184,6 +184,18 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
         truePoints.push_back({p.x, p.y});
     horizon["true_px"] = truePoints;
     j["horizon"] = horizon;
+    // Where the water meets the land (swell::measureShoreline); a corner's
+    // water point with no finite range is null (JSON has no NaN).
+    Json shoreline = Json::array();
+    for (const ShoreLine& line : labels.shoreline) {
+        Json px = Json::array(), m = Json::array();
+        for (const glm::dvec2& p : line.points_px)
+            px.push_back({p.x, p.y});
+        for (const glm::dvec3& p : line.points_m)
+            m.push_back(std::isfinite(p.x) ? Json{p.x, p.y, p.z} : Json(nullptr));
+        shoreline.push_back({{"points_px", px}, {"points_m", m}});
+    }
+    j["shoreline"] = shoreline;
     Json classes = Json::object();
     for (std::size_t i = 0; i < labels.classes.size(); ++i)
         if (!labels.classes[i].empty())

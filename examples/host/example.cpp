@@ -45,6 +45,9 @@ Example::Example(const swell::Scene& scene) : scene_(scene), renderer_(scene), h
     boxes_.light.sun = glm::vec3(scene.sun.color * scene.sun.intensity);
     boxes_.light.sky = glm::vec3(scene.sky.zenithColor) * 0.45f;
     boxes_.light.ground = glm::vec3(scene.sky.horizonColor) * 0.45f;
+    // The host's own sea floor: the waves feel its depth and its mole
+    // shelters the pier.
+    renderer_.setSeabedHeights(harbour_.seabed());
 }
 
 void Example::frame(double time_s, GLuint framebuffer, glm::ivec2 size)

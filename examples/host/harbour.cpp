@@ -27,6 +27,17 @@ constexpr double kRollPeriod_s = 9.0;
 constexpr glm::dvec2 kLooseCrate_m{-8.5, -21.0};
 constexpr double kCrateSide_m = 1.2;
 
+// The floor: the basin's depth, the quay (world x, z rectangle, m, as
+// addPier() draws it) and the mole, its crest above the highest swell.
+constexpr double kBasinDepth_m = 10.0;
+constexpr glm::dvec2 kQuayMin_m{-120.0, -190.0}, kQuayMax_m{10.0, -130.0};
+constexpr double kQuayHeight_m = 1.2;
+constexpr glm::dvec2 kMoleMin_m{-96.0, -190.0}, kMoleMax_m{-80.0, 70.0};
+constexpr double kMoleCrest_m = 3.0;
+// The heights' extent and spacing: 4 m samples over 800 m around the anchorage.
+constexpr double kFloorHalfSide_m = 400.0;
+constexpr int kFloorSamples = 201;
+
 // Linear albedos.
 const glm::vec3 kHullAbove{0.05f, 0.09f, 0.16f};  // dark blue topsides
 const glm::vec3 kHullBelow{0.32f, 0.05f, 0.03f};  // red antifouling
@@ -105,11 +116,37 @@ void addPier(double level_m, std::vector<Box>& boxes)
     boxes.push_back(boxBetween({-120.0, level_m - 4.0, -190.0}, {10.0, level_m + 1.2, -130.0}, {0.25f, 0.24f, 0.22f}));
     boxes.push_back(boxBetween({-70.0, level_m + 1.2, -175.0}, {-45.0, level_m + 12.0, -150.0}, {0.55f, 0.52f, 0.45f}));
     boxes.push_back(boxBetween({-100.0, level_m + 1.2, -180.0}, {-76.0, level_m + 7.0, -160.0}, kShed));
+    // The mole west of the pier, as seabed() gives it to Swell.
+    boxes.push_back(boxBetween({kMoleMin_m.x, level_m - kBasinDepth_m, kMoleMin_m.y},
+                               {kMoleMax_m.x, level_m + kMoleCrest_m, kMoleMax_m.y}, {0.40f, 0.39f, 0.36f}));
 }
+
+bool inside(glm::dvec2 p, glm::dvec2 lo, glm::dvec2 hi) { return p.x >= lo.x && p.y >= lo.y && p.x <= hi.x && p.y <= hi.y; }
 
 } // namespace
 
 Harbour::Harbour(double level_m) : level_m_(level_m) {}
+
+swell::SeabedHeights Harbour::seabed() const
+{
+    swell::SeabedHeights floor;
+    floor.columns = floor.rows = kFloorSamples;
+    floor.min_m = kAnchorage_m - kFloorHalfSide_m;
+    floor.max_m = kAnchorage_m + kFloorHalfSide_m;
+    floor.heights_m.resize(std::size_t(kFloorSamples) * std::size_t(kFloorSamples));
+    const double step_m = 2.0 * kFloorHalfSide_m / (kFloorSamples - 1);
+    for (int j = 0; j < kFloorSamples; ++j)
+        for (int i = 0; i < kFloorSamples; ++i) {
+            const glm::dvec2 p = floor.min_m + step_m * glm::dvec2(i, j);
+            double height = -kBasinDepth_m;
+            if (inside(p, kQuayMin_m, kQuayMax_m))
+                height = kQuayHeight_m;
+            if (inside(p, kMoleMin_m, kMoleMax_m))
+                height = kMoleCrest_m;
+            floor.heights_m[std::size_t(j) * std::size_t(kFloorSamples) + std::size_t(i)] = float(height);
+        }
+    return floor;
+}
 
 glm::dvec3 Harbour::viewpoint_m() const { return {kAnchorage_m.x, level_m_ + kBridgeWing_m.y, kAnchorage_m.y}; }
 

@@ -4,12 +4,16 @@
 // the ship heaves, pitches and rolls on the drawn surface under its hull
 // (plus a slow roll of its own, a swell from abeam), the loose crate sits
 // on the drawn surface where it floats, and the camera stands on the
-// ship's bridge wing and rolls with it.
+// ship's bridge wing and rolls with it. The host's sea floor (seabed())
+// gives Swell the harbour's depth, its quay and a mole west of the pier:
+// the swell from abeam reaches the ship and the pier only as far as it
+// diffracts around the mole's head.
 #pragma once
 
 #include "boxes.h"
 
 #include <swell/drawn_surface.h>
+#include <swell/scene/seabed.h>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -35,6 +39,11 @@ public:
     // The camera on the bridge wing: world (absolute, m) to eye, rolling,
     // pitching and heaving with the ship. Valid after update().
     glm::dmat4 eyeView() const;
+    // The harbour's floor, heights above the sea's mean level (m), for
+    // Renderer::setSeabedHeights: 10 m of water, the quay's land behind the
+    // pier, and a rubble mole from the quay out past the ship, west of it,
+    // across the swell's way (the swell runs towards +x).
+    swell::SeabedHeights seabed() const;
     // The ship's roll now, degrees (+: to starboard).
     double shipRoll_deg() const { return roll_deg_; }
 

@@ -21,13 +21,24 @@
 // - where the sea's height reaches the breaker index times the depth,
 //   H <= gamma h with gamma = 0.78 (McCowan 1894, the solitary wave's limit),
 //   the waves are cut to it: the surf zone's height follows the depth down;
-// - on dry land (depth <= 0) no wave.
-// What it cannot do: diffraction (a breakwater's lee is calm but for the
-// solver's own numerical spreading, not Sommerfeld's), reflection from
-// steep shores, more than one arrival where rays cross (the first arrival's
-// phase wins), and waves shorter than the coast waves feel the bottom only
-// through the breaking cut and the dry land (they keep the open sea's
-// phase): see RENDERING.md.
+// - on dry land (depth <= 0) no wave;
+// - behind obstacles (breakwaters, islands, headlands) the height is what
+//   diffracts in: a parabolic march of the wave's complex amplitude along
+//   its open-sea direction and 40 degrees to either side (Radder 1979, with
+//   Kirby's 1986 wide-angle Pade operator), dry land a rigid side wall, read
+//   where the straight rays from the open sea cross land and within a
+//   wavelength of that shadow; elsewhere the ray solution's height times the
+//   march's diffraction coefficient (the fringes beside a shadow's edge).
+// What it cannot do: reflection from breakwaters, steep shores and walls
+// (so a rigid breakwater's lee, where the reflected wave diffracts in too,
+// is up to a third lower 60 degrees into the shadow than Penney & Price's
+// diagrams; the solution without the reflected wave is held within 25%),
+// refraction and shoaling inside a shadow (the march carries the diffracted
+// wave at its height, cut only by breaking), more than one arrival where
+// rays cross (the first arrival's phase wins, also in a lee, where the
+// phase is the wave's from around the tip), and waves shorter than the
+// coast waves feel the bottom only through the breaking cut and the dry
+// land (they keep the open sea's phase): see RENDERING.md.
 #pragma once
 
 #include "swell/export.h"

@@ -35,6 +35,7 @@ PyLabels toPython(FrameLabels&& labels)
     out.horizon = labels.horizon;
     out.trueHorizonDip_deg = labels.trueHorizonDip_deg;
     out.trueHorizon_px = std::move(labels.trueHorizon_px);
+    out.shoreline = std::move(labels.shoreline);
     return out;
 }
 
@@ -170,7 +171,30 @@ void bindLabels(py::module_& m)
                     points.append(toTuple(p));
                 return points;
             },
-            "Points (x, y) along that true horizon in the image, pixels.");
+            "Points (x, y) along that true horizon in the image, pixels.")
+        .def_property_readonly(
+            "shoreline",
+            [](const PyLabels& l) {
+                py::list chains;
+                for (const ShoreLine& line : l.shoreline) {
+                    py::array_t<double> px({py::ssize_t(line.points_px.size()), py::ssize_t(2)});
+                    py::array_t<double> world({py::ssize_t(line.points_m.size()), py::ssize_t(3)});
+                    auto pxv = px.mutable_unchecked<2>();
+                    auto mv = world.mutable_unchecked<2>();
+                    for (std::size_t i = 0; i < line.points_px.size(); ++i) {
+                        pxv(py::ssize_t(i), 0) = line.points_px[i].x;
+                        pxv(py::ssize_t(i), 1) = line.points_px[i].y;
+                    }
+                    for (std::size_t i = 0; i < line.points_m.size(); ++i)
+                        for (int k = 0; k < 3; ++k)
+                            mv(py::ssize_t(i), k) = line.points_m[i][k];
+                    chains.append(py::make_tuple(px, world));
+                }
+                return chains;
+            },
+            "Where the water meets the land (docs/LABELS.md, shoreline): a list of chains, each (points_px (N, 2): "
+            "pixel corners in order along the edge, points_m (N, 3): the water's point at each, absolute world, m; "
+            "NaN where its range is infinite).");
 
     // The class ids of Labels.semantic, from the header the shaders share.
     m.attr("CLASS_NONE") = SWELL_LABEL_NONE;

@@ -27,6 +27,7 @@ struct PyLabels {
     HorizonLine horizon;
     double trueHorizonDip_deg = 0.0;
     std::vector<glm::dvec2> trueHorizon_px;
+    std::vector<ShoreLine> shoreline;
 };
 
 // Takes the frame's buffers over. Needs the GIL.

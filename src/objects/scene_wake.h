@@ -14,6 +14,7 @@
 #include "objects/wake_field.h"
 #include "objects/wake_frame.h"
 #include "swell/scene/scene.h"
+#include "swell/scene/seabed.h"
 #include "swell/surface_source.h"
 
 #include <memory>
@@ -23,8 +24,12 @@ namespace swell::detail {
 
 class SceneWake {
 public:
-    // The wake of `settings` over water of depth depth_m.
-    SceneWake(const WakeSettings& settings, double depth_m);
+    // The wake of `settings` over water of depth depth_m or, with a sea
+    // floor, of the floor's depth under the grid's centre (at most depth_m):
+    // one depth for the whole grid (its waves are Fourier modes), taken
+    // again as the grid moves, so a boat running into shallow water leaves
+    // the wider wake of its depth (Havelock 1908).
+    SceneWake(const WakeSettings& settings, double depth_m, std::shared_ptr<const Seabed> seabed = nullptr);
     SceneWake(const SceneWake&) = delete;
     SceneWake& operator=(const SceneWake&) = delete;
 
@@ -50,7 +55,12 @@ private:
     // Where time_s falls: 0 at the previous state, 1 at the current one.
     double blendAt(double time_s) const;
 
+    // The floor's depth under focus_m, m: within [kShallowestWake_m, seaDepth_m_].
+    double depthAt(glm::dvec2 focus_m) const;
+
     WakeField field_;
+    double seaDepth_m_;
+    std::shared_ptr<const Seabed> seabed_; // null: the sea's depth everywhere
     // The state before the current one, on its own grid.
     std::vector<float> previousHeights_, previousFoam_;
     glm::ivec2 previousCorner_{0};

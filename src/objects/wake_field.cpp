@@ -92,6 +92,12 @@ WakeField::WakeField(const WakeFieldSettings& settings) : settings_(settings), m
     reset(glm::dvec2(0.0));
 }
 
+void WakeField::setDepth(double depth_m)
+{
+    settings_.depth_m = depth_m;
+    modes_ = WakeModes(settings_);
+}
+
 WakeField::~WakeField() = default;
 WakeField::WakeField(WakeField&&) noexcept = default;
 WakeField& WakeField::operator=(WakeField&&) noexcept = default;

@@ -101,6 +101,10 @@ public:
     void recentre(glm::dvec2 focus_m);
     // One step of kWakeStep_s: the water under `sources` as they stand now.
     void step(const std::vector<WakeSource>& sources);
+    // The water's depth for the dispersion from the next step on, m (> 0;
+    // infinity: deep water): the waves on the grid keep their heights and
+    // potentials and travel at the new depth's speeds.
+    void setDepth(double depth_m);
 
     std::int64_t steps() const { return steps_; }
     const WakeFieldSettings& settings() const { return settings_; }

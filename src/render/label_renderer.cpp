@@ -140,6 +140,7 @@ FrameLabels LabelRenderer::draw(RenderContext& context, const Camera& camera, gl
     labels.trueHorizonDip_deg = glm::degrees(horizonDip_rad(eyeHeight_m));
     labels.trueHorizon_px = trueHorizonOf(labels.camera, eyeHeight_m);
     measureObjectBoxes(labels);
+    measureShoreline(labels);
     return labels;
 }
 

@@ -163,6 +163,7 @@ FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, c
     out.horizon = horizonOf(c);
     out.horizon.curve_px = horizonCurveOf(c, out.horizon);
     measureObjectBoxes(out);
+    measureShoreline(out);
     return out;
 }
 

@@ -240,6 +240,40 @@ TEST(CoastField, TheSurfMeasureIsTheShareOfTheShoaledHeightTheCutTook)
     EXPECT_GT(previous, 0.5); // near the shore the cut takes most of the height
 }
 
+// A sea of many waves breaks as a random sea does: not where its waves'
+// heights summed (its highest possible crest-to-trough) would reach 0.78 h,
+// a third of the way in, but where its significant height 4 sigma reaches
+// Thornton & Guza's (1983) saturated surf zone, rms height 0.42 h
+// (significant height 0.59 h with Rayleigh heights), and under it after.
+TEST(CoastField, ASeaOfManyWavesBreaksAtItsSignificantHeight)
+{
+    const Beach beach;
+    WaveSet set;
+    for (int i = 0; i < 12; ++i) // 12 waves of 130 to 174 m, within 6 degrees of the normal
+        set.waves.push_back({{std::cos((i - 5.5) * kDeg), std::sin((i - 5.5) * kDeg)}, 130.0 + 4.0 * i, 0.12, 0.0, 0.7 * i});
+    const int nx = beach.samples();
+    const CoastField field = beach.fieldFor(set);
+    double onset = 0.0;
+    for (int i = 4; i < nx; ++i) {
+        const double x = i * beach.cell_m, h = beach.depthAt(x);
+        if (h <= 0.05)
+            break;
+        double variance = 0.0;
+        for (std::size_t w = 0; w < set.waves.size(); ++w) {
+            const double a = set.waves[w].amplitude_m
+                           * field.waveAt(field.layerOf(w), {x, 6 * beach.cell_m}, swell::wavenumberVector(set.waves[w])).gain;
+            variance += 0.5 * a * a;
+        }
+        const double significant = 4.0 * std::sqrt(variance);
+        if (onset == 0.0 && field.commonAt({x, 6 * beach.cell_m}).gain < 1.0)
+            onset = significant / h;
+        if (onset > 0.0) {
+            EXPECT_LE(significant / h, 0.42 * std::sqrt(2.0) * (1.0 + 1e-3)) << "h " << h;
+        }
+    }
+    EXPECT_NEAR(onset, 0.42 * std::sqrt(2.0), 0.05);
+}
+
 // A swell arriving at 30 degrees on straight parallel contours turns as
 // Snell's law for waves says, sin(theta) / c constant (eq. 4.115), within
 // 2 degrees at three depths.

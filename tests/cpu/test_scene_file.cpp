@@ -218,7 +218,7 @@ TEST(SceneFile, PresetsLoad)
     const fs::path folder = fs::path(SWELL_SOURCE_DIR) / "scenes";
     const std::vector<std::string> presets{"calm.toml", "trade-wind.toml", "storm.toml", "sunset.toml", "fog.toml",
                                            "underwater.toml", "paper.toml", "under-way.toml", "cloud-shadows.toml",
-                                           "gale-under-way.toml", "coast.toml"};
+                                           "gale-under-way.toml", "coast.toml", "harbour.toml"};
     for (const std::string& name : presets) {
         SCOPED_TRACE(name);
         Scene scene;

@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -123,4 +124,44 @@ TEST_F(DryLand, NoPresetDrawsWaterOnLandAboveTheSwash)
     EXPECT_GE(scenesWithLand, 6);
 }
 
+// The labels' shoreline (swell::measureShoreline) lies where the drawn
+// water meets the floor: from the coast preset's camera, each chain's water
+// points stand where the beach is within 0.3 m of the sea's mean level (the
+// waves are cut to nearly nothing at the waterline) plus the height of the
+// beach a pixel spans there (hundreds of metres of ground at a grazing
+// 1.5 degrees, 1.5 km off).
+TEST_F(DryLand, TheShorelineLiesWhereTheWaterMeetsTheBeach)
+{
+    const swell::Scene scene = swell::loadScene(fs::path(SWELL_SOURCE_DIR) / "scenes" / "coast.toml");
+    const swell::Seabed seabed(scene);
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    const glm::ivec2 size(256, 144);
+    renderer.renderImage(camera, 20.0, size);
+    const swell::FrameLabels labels = renderer.renderLabels(camera, size);
+    std::size_t corners = 0, beach = 0, offShore = 0;
+    for (const swell::ShoreLine& line : labels.shoreline)
+        for (const glm::dvec3& p : line.points_m) {
+            ++corners;
+            const double floor_m = seabed.elevation_m({p.x, p.z});
+            // Behind the preset's 400 m strip of land the floor drops to the
+            // open sea's: water meets the strip's back there, no beach.
+            if (std::isinf(floor_m))
+                continue;
+            ++beach;
+            // A pixel's footprint along the beach: its angle times the range,
+            // over the sine of the grazing angle; up the preset's 1:40
+            // slope, that much height.
+            const double range_m = glm::length(p - camera.position_m);
+            const double grazing = (camera.position_m.y - p.y) / range_m;
+            const double footprint_m = range_m / labels.camera.fy_px / grazing;
+            if (!(std::abs(floor_m) < 0.3 + footprint_m * scene.seabed.beaches.front().slope))
+                ++offShore;
+        }
+    // The beach's waterline crosses the view: a long chain of corners.
+    EXPECT_GT(beach, 100u) << "of " << corners;
+    EXPECT_EQ(offShore, 0u) << "of " << beach;
+}
+
 } // namespace
+

@@ -147,3 +147,34 @@ class Sensor(unittest.TestCase):
         self.assertEqual(labels.camera.distortion[0], -0.1)
         self.assertTrue(labels.horizon.curve_px)
         self.assertFalse((labels.semantic == 0).any())
+
+
+class Shoreline(unittest.TestCase):
+    """The coast preset's shoreline: each chain's corners lie between a water and a terrain pixel, and each
+    corner's water point is a touching water pixel's range along its ray."""
+
+    def test_corners_lie_between_water_and_land(self):
+        scene = swell.load("coast")
+        renderer = swell.Renderer(scene)
+        camera = renderer.scene_camera_at(0.0)
+        renderer.render(camera, 20.0, SIZE)
+        labels = renderer.render_labels(camera, SIZE)
+        self.assertTrue(labels.shoreline)
+        water = np.isin(labels.semantic, [swell.CLASS_WATER, swell.CLASS_WHITECAP_FOAM, swell.CLASS_WAKE_FOAM])
+        land = labels.semantic == swell.CLASS_TERRAIN
+        rays = pixel_rays(labels.camera)
+        eye = eye_of(labels.camera)
+        w, h = SIZE
+        corners = 0
+        for points_px, points_m in labels.shoreline:
+            self.assertEqual(points_px.shape[1], 2)
+            self.assertEqual(points_m.shape, (points_px.shape[0], 3))
+            for (cx, cy), point in zip(points_px.astype(int), points_m):
+                touching = [(x, y) for x in (cx - 1, cx) for y in (cy - 1, cy) if 0 <= x < w and 0 <= y < h]
+                self.assertTrue(any(water[y, x] for x, y in touching))
+                self.assertTrue(any(land[y, x] for x, y in touching))
+                candidates = [eye + labels.range_m[y, x] * rays[y, x] for x, y in touching if water[y, x]]
+                # float32 ranges of up to a few km: within a millimetre in a metre.
+                self.assertLess(min(np.linalg.norm(c - point) / np.linalg.norm(c - eye) for c in candidates), 1e-6)
+                corners += 1
+        self.assertGreater(corners, 50)

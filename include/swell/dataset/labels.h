@@ -122,6 +122,19 @@ struct SWELL_API ObjectLabel {
     ObjectPose pose;
 };
 
+// The water's edge in the image: a chain of the pixel grid's corners along
+// which drawn water (the water and foam classes) meets land (the terrain
+// class: the island, the sea floor's shapes) across a pixel's side.
+struct SWELL_API ShoreLine {
+    // Pixel corners, image coordinates (x right, y down; pixel (i, j)
+    // covers [i, i + 1] x [j, j + 1]), in order along the edge.
+    std::vector<glm::dvec2> points_px;
+    // For each, the water's point at that corner: the range of a water
+    // pixel that touches it along that pixel's centre ray, absolute world,
+    // m; NaN where that range is infinite (the water's depths from below).
+    std::vector<glm::dvec3> points_m;
+};
+
 struct SWELL_API FrameLabels {
     glm::ivec2 size{0};
     // Per pixel, rows top first. range_m: the distance from the eye along
@@ -146,6 +159,9 @@ struct SWELL_API FrameLabels {
     // sky on `horizon`; the true horizon lies this far below it.
     double trueHorizonDip_deg = 0.0;
     std::vector<glm::dvec2> trueHorizon_px;
+    // Where the water meets the land in this frame (measureShoreline): each
+    // chain at least two corners long; none without land in view.
+    std::vector<ShoreLine> shoreline;
 };
 
 // Each pixel's z-depth, m: the depth along the camera's optical axis
@@ -165,5 +181,10 @@ SWELL_API std::vector<std::string> labelClassesOf(const Scene& scene);
 
 // Fills each object's visible pixels and box from the instance image.
 SWELL_API void measureObjectBoxes(FrameLabels& labels);
+
+// Fills labels.shoreline from the semantic image, the ranges and the
+// camera: the pixel sides between a water pixel and a land pixel, joined
+// corner to corner into chains.
+SWELL_API void measureShoreline(FrameLabels& labels);
 
 } // namespace swell

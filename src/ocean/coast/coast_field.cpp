@@ -4,6 +4,7 @@
 // bilinear reading, which shaders/coast_field.glsl repeats.
 #include "swell/coast_field.h"
 
+#include "ocean/coast/coast_diffraction.h"
 #include "ocean/coast/coast_march.h"
 
 #include "swell/constants.h"
@@ -25,6 +26,26 @@ namespace {
 // where the grid ends: the waves in a lee that reaches the edge take the open
 // sea's phase again there.
 int blendBand(const DepthGrid& g) { return std::max(2, std::min(g.size.x, g.size.y) / 12); }
+
+// A random sea's breaker index: its significant height 4 sqrt(variance) is
+// at most this times the depth. Thornton & Guza (1983, "Transformation of
+// wave height distribution", J. Geophys. Res. 88(C10), 5925) find the rms
+// height of a saturated surf zone 0.42 h; with Rayleigh heights H_s =
+// sqrt(2) H_rms, 0.59 h.
+constexpr double kSeaBreakerIndex = 0.42 * 1.4142135623730951;
+
+// The depth at which a sea whose waves' heights sum to `heights` and whose
+// surface has variance `variance` breaks, m: the shallower of where its
+// highest possible wave (all crests at once) reaches the breaker index
+// times the depth and where its significant height reaches the random
+// sea's index. A single wave's own height is the first (its significant
+// height, 1.41 times it, would break it far too soon); a sea of many waves
+// reaches the second first (cutting the sum alone would break it when its
+// significant height is a third of the depth).
+double breakingDepth(double heights, double variance, double breakerIndex)
+{
+    return std::min(heights / breakerIndex, 4.0 * std::sqrt(variance) / kSeaBreakerIndex);
+}
 
 double smoothstep01(double t)
 {
@@ -135,11 +156,12 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
         marched.omega_radps = angularFrequency(marched.wavenumber_radpm, waves.depth_m);
         marched.amplitude_m = wave.amplitude_m;
         marches.push_back(coast::marchWave(g, marched, breakerIndex));
+        coast::diffractWave(g, marched, breakerIndex, marches.back());
         extendPhase(g, marches.back(), openK[w]);
     }
 
-    // Per point: the sea's height cut to the breaker index times the depth
-    // (all waves together), the fold limit, and the blend into the open sea.
+    // Per point: the sea cut where it breaks (breakingDepth: all waves
+    // together), the fold limit, and the blend into the open sea.
     layers_.assign(coastWaves, std::vector<glm::vec4>(n));
     common_.assign(n, glm::vec4(0.0f));
     reach_ = waveReach(WaveSet{waves.waves, waves.depth_m, nullptr});
@@ -154,7 +176,7 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
             std::fill(gain.begin(), gain.end(), 1.0);
             // The sea's height, and what it would be had no wave broken (the
             // surf's measure below).
-            double height = 0.0, unbrokenHeight = 0.0;
+            double heights = 0.0, variance = 0.0, unbrokenHeight = 0.0;
             for (std::size_t w = 0; w < waves.waves.size(); ++w) {
                 double unbroken = 1.0;
                 if (const int l = layerOfWave_[w]; l >= 0) {
@@ -163,10 +185,13 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
                     unbroken = m.reached[c] ? std::sqrt(m.unbroken[c]) : 0.0;
                 }
                 gain[w] = h > 0.0 ? (1.0 - inner) + inner * gain[w] : 0.0;
-                height += 2.0 * waves.waves[w].amplitude_m * gain[w];
+                const double a = waves.waves[w].amplitude_m * gain[w];
+                heights += 2.0 * a;
+                variance += 0.5 * a * a;
                 unbrokenHeight += 2.0 * waves.waves[w].amplitude_m * (h > 0.0 ? (1.0 - inner) + inner * unbroken : 0.0);
             }
-            const double cut = h <= 0.0 ? 0.0 : (height > breakerIndex * h ? breakerIndex * h / height : 1.0);
+            const double breaksAt_m = breakingDepth(heights, variance, breakerIndex);
+            const double cut = h <= 0.0 ? 0.0 : (breaksAt_m > h ? h / breaksAt_m : 1.0);
             double fold = 0.0;
             for (std::size_t w = 0; w < waves.waves.size(); ++w) {
                 const Wave& wave = waves.waves[w];
@@ -197,7 +222,7 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
             // shoaled height the breaking took (each wave's own cut in its
             // march, then the sea's), 0 where no wave breaks (offshore, and
             // on dry land, where no wave is).
-            const double breaking = unbrokenHeight > 0.0 ? std::max(0.0, 1.0 - cut * height / unbrokenHeight) : 0.0;
+            const double breaking = unbrokenHeight > 0.0 ? std::max(0.0, 1.0 - cut * heights / unbrokenHeight) : 0.0;
             common_[c] = glm::vec4(float(h), float(cut), float(steepnessScale), float(breaking));
         }
 }

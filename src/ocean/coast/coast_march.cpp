@@ -57,6 +57,14 @@ double localGroupVelocity(double omega_radps, double wavenumber_radpm, double de
     return 0.5 * c * (1.0 + (kh2 > 0.0 ? ratio : 1.0));
 }
 
+double breakingEnergyLimit(double depth_m, double amplitude_m, double breakerIndex)
+{
+    if (!(amplitude_m > 0.0))
+        return kInf;
+    const double height = 0.5 * breakerIndex / amplitude_m * std::max(depth_m, 0.0);
+    return height * height;
+}
+
 namespace {
 
 struct Grid {
@@ -188,7 +196,6 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
         const double length = std::sqrt(glm::dot(kv, kv));
         velocity[c] = length > 0.0 ? localGroupVelocity(wave.omega_radps, k[c], h) * kv / length : glm::dvec2(0.0);
     }
-    const double cut = wave.amplitude_m > 0.0 ? 0.5 * breakerIndex / wave.amplitude_m : kInf;
     const double openGroupVelocity = localGroupVelocity(wave.omega_radps, wave.wavenumber_radpm, depth.outsideDepth_m);
     // The energy arriving at cell c of a field marched in the order of
     // arrival.
@@ -220,10 +227,11 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
     m.unbroken.assign(n, 0.0);
     for (std::size_t c : order) {
         // Depth-limited breaking: the wave's height 2 A0 sqrt(E) at most gamma h.
-        const double limit = cut * std::max(double(depth.depth_m[c]), 0.0);
-        m.energy[c] = std::min(arriving(m.energy, c), limit * limit);
+        m.energy[c] = std::min(arriving(m.energy, c),
+                               breakingEnergyLimit(double(depth.depth_m[c]), wave.amplitude_m, breakerIndex));
         m.unbroken[c] = arriving(m.unbroken, c);
     }
+    m.localWavenumber_radpm = std::move(k);
     return m;
 }
 

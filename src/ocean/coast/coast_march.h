@@ -31,6 +31,7 @@ struct WaveMarch {
     std::vector<double> unbroken; // the energy as it would be were no wave cut: shoaling and refraction alone
     std::vector<glm::dvec2> wavenumber_radpm; // grad S
     std::vector<std::uint8_t> reached;
+    std::vector<double> localWavenumber_radpm; // k(h) of the cell's depth; 0 on dry land
 };
 
 struct MarchedWave {
@@ -39,6 +40,11 @@ struct MarchedWave {
     double omega_radps = 0.0;
     double amplitude_m = 0.0;       // in the open sea
 };
+
+// The most energy (relative to the open sea's) a wave of open-sea amplitude
+// amplitude_m carries in water depth_m deep: its height 2 A0 sqrt(E) at most
+// breakerIndex times the depth.
+double breakingEnergyLimit(double depth_m, double amplitude_m, double breakerIndex);
 
 WaveMarch marchWave(const DepthGrid& grid, const MarchedWave& wave, double breakerIndex);
 
