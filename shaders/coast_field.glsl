@@ -16,7 +16,9 @@
 
 // (phase_rad, gain, wavenumber x, wavenumber z) per coast wave, a layer each.
 layout(binding = SWELL_UNIT_COAST_WAVES) uniform sampler2DArray coastWaves;
-// (depth_m, gain, steepness scale, 0): what every wave shares.
+// (depth_m, gain, steepness scale, breaking): what every wave shares
+// (swell::CoastCommonSample; breaking: the share of the shoaled height the
+// breaking took, what shaders/surf.glsl draws the surf from).
 layout(binding = SWELL_UNIT_COAST_COMMON) uniform sampler2D coastCommon;
 
 // Where a rest point falls among the field's samples: the lower corner of
@@ -57,7 +59,7 @@ vec4 coastCommonAt(CoastCell cell)
 }
 
 // What every wave shares at the cell's point: the field's texels, or the
-// open sea's (depth unused, gain 1, steepness scale 1) beyond the grid.
+// open sea's (depth unused, gain 1, steepness scale 1, no breaking) beyond the grid.
 vec4 coastEveryWaveAt(CoastCell cell)
 {
     return cell.inside ? coastCommonAt(cell) : vec4(0.0, 1.0, 1.0, 0.0);

@@ -5,6 +5,7 @@
 #include "lighting.glsl"
 #include "underwater.glsl"
 #include "caustics.glsl"
+#include "swash.glsl"
 #ifndef SWELL_CLOUD_SHADOWS
 #error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
 #endif
@@ -22,6 +23,9 @@ uniform uvec2 label;
 #else
 out vec4 fragColor;
 #endif
+// 1 for the ground the sea runs up (the island, the seabed), whose sand the
+// swash wets (swash.glsl); 0 for objects.
+uniform float swashWets;
 
 void main()
 {
@@ -53,7 +57,12 @@ void main()
     sun *= cloudShadowAt(vPosition, 2.0 * distance(vPosition, eyePosition) / (viewportSize.y * projectionFocalY));
 #endif
     vec3 light = ambient + sunColor * sunIntensity * sun;
-    vec3 color = vColor * light;
+    vec3 albedo = vColor;
+#if SWELL_DEBUG_VIEW == SWELL_VIEW_SHADED
+    // The swash's wet sand, darker up to the run-up line.
+    albedo *= mix(1.0, kWetSandAlbedo, swashWets * swashWetness(vPosition.y, n));
+#endif
+    vec3 color = albedo * light;
 #if SWELL_DEBUG_VIEW == SWELL_VIEW_NORMALS
     color = n * 0.5 + 0.5;
 #endif
@@ -64,7 +73,7 @@ void main()
     // Underwater hook: seen from below the surface, the water's absorption
     // and in-scattering replace the air's fog (underwater.glsl).
     if (pixelUnderwater())
-        color = underwaterGeometry(vColor * light, vPosition);
+        color = underwaterGeometry(albedo * light, vPosition);
 #endif
     fragColor = passOutput(color);
 }

@@ -14,6 +14,7 @@
 #include "ocean.glsl"
 #include "underwater_surface.glsl"
 #include "subsurface.glsl"
+#include "surf.glsl"
 #ifndef SWELL_CLOUD_SHADOWS
 #error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
 #endif
@@ -141,6 +142,21 @@ void main()
 #else
     float sourceFoam = 0.0;
 #endif
+    // The surf where the coast's waves break (surf.glsl): its foam rides the
+    // crests (the grid's normal: the long waves', not the ripples') and
+    // thins behind them; where it is the larger share, the foam is the surf's.
+    float surfFoamAmount = surfAmount(vRestPoint - gridCenter, vPosition.y, normalize(vNormal));
+#if SWELL_HAS_TERM(SWELL_TERM_FOAM)
+    if (surfFoamAmount > 0.0) {
+        vec2 surfFootprint = restWidth * footprintScale;
+        FoamLook surf = surfLook(surfFoamAmount, vRestPoint, max(max(surfFootprint.x, surfFootprint.y), 1e-3));
+        if (surf.cover > foam) {
+            foamAlbedo = mix(0.5, 0.65, surf.breaking);
+            foamSlope = surf.slope;
+        }
+        foam = max(foam, surf.cover);
+    }
+#endif
     vec3 toEye = eyePosition - vPosition;
     float distance_m = length(toEye);
     vec3 v = toEye / distance_m;
@@ -158,6 +174,8 @@ void main()
 #else
     float pointSourceFoam = 0.0;
 #endif
+    // The surf's whitewater is the waves' breaking, as the whitecaps are.
+    pointFoam = max(pointFoam, surfFoamAtPoint(surfFoamAmount, vRestPoint));
     uint label = SWELL_LABEL_WATER;
     if (max(pointFoam, pointSourceFoam) >= SWELL_LABEL_FOAM_COVER)
         label = pointSourceFoam >= pointFoam ? SWELL_LABEL_WAKE_FOAM : SWELL_LABEL_WHITECAP_FOAM;
@@ -242,6 +260,9 @@ void main()
     float sourceBelow = surfaceSourcesAt(vRestPoint + underRay.xz / max(-underRay.y, 0.2) * kBubbleDepth_m).w;
     bubbles = max(bubbles, sourceBelow * sourceBelow);
 #endif
+    // And the surf's: its roller drives a cloud of bubbles (and the sand it
+    // stirs) through the shallow water under and behind it.
+    bubbles = max(bubbles, surfFoamAmount * surfFoamAmount);
     bubbles *= step(kBubbleDepth_m, path_m);
     vec3 bubbleLight = (directSun * max(sunDirection.y, 0.0) + max(skyAmbient(vec3(0.0, 1.0, 0.0)), vec3(0.0))) *
                        exp(-2.0 * kBubbleDepth_m * waterAbsorption);

@@ -92,6 +92,11 @@ struct CoastCommonSample {
     double depth_m = std::numeric_limits<double>::infinity(); // the grid's, bilinear
     double gain = 1.0;            // the breaking cut and dry land, for the waves without a field
     double steepnessScale = 1.0;  // times every Q, so the local sum of Q k A stays <= 1 (no loops)
+    // How hard the waves break here, 0..1: the share of the shoaled height
+    // (all waves' 2A summed) the breaking cut took, 1 - (gamma h / that
+    // height) where it exceeds gamma h; 0 offshore, where none breaks, and
+    // on dry land. What the surf's whitewater is drawn from (shaders/surf.glsl).
+    double breaking = 0.0;
 };
 
 // Where a wave model hands its longest band to coast trains (WaveSet
@@ -130,7 +135,7 @@ public:
     // Texels of one layer, as the GPU's texture array holds them, row by row
     // along x: (phase_rad, gain, wavenumber x, wavenumber z).
     std::span<const glm::vec4> layer(std::size_t layer) const { return layers_[layer]; }
-    // Texels every wave shares: (depth_m, gain, steepnessScale, 0).
+    // Texels every wave shares: (depth_m, gain, steepnessScale, breaking).
     std::span<const glm::vec4> common() const { return common_; }
     // How far the waves may move the surface anywhere, m: the open sea's
     // reach or, where shoaling raises them before they break, the largest

@@ -95,6 +95,7 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
         return;
     program.setModel(island_);
     program.setLabel(islandLabel_);
+    program.setSwashWets(true);
     world_.island.drawRanges(tileCounts_, tileOffsets_);
     counters_.worldTriangles += triangles;
     ++counters_.drawCalls;
@@ -107,10 +108,12 @@ void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
     if (world_.seabed.indexCount() > 0) {
         program.setModel(seabed_);
         program.setLabel(islandLabel_);
+        program.setSwashWets(true);
         world_.seabed.draw();
         counters_.worldTriangles += world_.seabed.indexCount() / 3;
         ++counters_.drawCalls;
     }
+    program.setSwashWets(false);
     for (std::size_t i = 0; i < world_.meshes.size() && i < poses_.size(); ++i) {
         program.setModel(poses_[i]);
         if (i < objectLabels_.size())

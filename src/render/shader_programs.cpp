@@ -119,8 +119,16 @@ void HostCopyProgram::setViewport(glm::ivec4 viewport) const
 MeshProgram::MeshProgram(const gl::ShaderSources& sources, const Flags& flags)
     : FlaggedProgram(build(sources, flags, "mesh.vert", "mesh.frag"), flags),
       model_(requiredUniform(program_, "model", "mesh.vert")),
-      label_(flags.labelPass ? requiredUniform(program_, "label", "mesh.frag") : -1)
+      label_(flags.labelPass ? requiredUniform(program_, "label", "mesh.frag") : -1),
+      // Left out of the variants that do not shade (the label pass, debug views).
+      swashWets_(glGetUniformLocation(program_.id(), "swashWets"))
 {
+}
+
+void MeshProgram::setSwashWets(bool wets) const
+{
+    if (swashWets_ >= 0)
+        glProgramUniform1f(program_.id(), swashWets_, wets ? 1.0f : 0.0f);
 }
 
 void MeshProgram::setLabel(glm::uvec2 classAndInstance) const

@@ -162,10 +162,14 @@ public:
     // The label pass's program only (nothing elsewhere): the semantic class
     // and instance the next draws write (swell/dataset/labels.h).
     void setLabel(glm::uvec2 classAndInstance) const;
+    // Whether the next draws are ground the sea runs up (the island, the
+    // seabed), whose sand the swash wets (shaders/swash.glsl), or objects.
+    void setSwashWets(bool wets) const;
 
 private:
     GLint model_ = -1;
     GLint label_ = -1; // the label pass's program only
+    GLint swashWets_ = -1; // the shading variants only
 };
 
 // The cloud layer's uniforms (shaders/clouds.glsl) in a program that

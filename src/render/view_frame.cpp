@@ -1,5 +1,6 @@
 #include "render/view_frame.h"
 
+#include "ocean/coast/swash.h"
 #include "render/frame_uniforms.h"
 #include "render/waterline.h"
 #include "render/world.h"
@@ -36,6 +37,7 @@ ViewFrame prepareView(RenderContext& context, const View& view, glm::ivec2 size,
     setDepthConvention(f, view.depth);
     f.projectionFocalY = float(view.projection[1][1]);
     f.waveHeightDeviation_m = float(simulation.model().heightDeviation_m());
+    f.swashH0L0_m2 = float(coast::offshoreHeightTimesWavelength_m2(context.scene, simulation.model().heightDeviation_m()));
     f.waveMeanSquareSlope = float(simulation.seaMeanSquareSlope());
     const WaveReach reach = simulation.reach();
     // What the waterline mask's rays that meet no water are judged by

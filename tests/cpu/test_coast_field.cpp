@@ -136,15 +136,25 @@ struct Beach {
     double cell_m = 5.0;
     double deepest_m = 100.0;
     double depthAt(double x) const { return deepest_m - x / 50.0; }
+    // The swell run onto it at normal incidence: T = 10 s, H0 = 1 m.
+    double wavelength_m = 156.0, amplitude_m = 0.5;
+    WaveSet swell() const { return oneWave({1.0, 0.0}, wavelength_m, amplitude_m); }
+    // Samples across the beach, from its deepest to a little up the land.
+    int samples() const { return int(deepest_m * 50.0 / cell_m) + 20; }
+    // The field of `set` over it, 12 samples along the shore.
+    CoastField fieldFor(const WaveSet& set) const
+    {
+        return CoastField(set, contoursAlongZ(samples(), 12, cell_m, [this](double x) { return depthAt(x); }));
+    }
 };
 
 TEST(CoastField, ASwellShoalsOnAPlaneBeachAsLinearTheorySays)
 {
     const Beach beach;
-    const double wavelength = 156.0, amplitude = 0.5; // T = 10 s, H0 = 1 m
-    WaveSet set = oneWave({1.0, 0.0}, wavelength, amplitude);
-    const int nx = int(beach.deepest_m * 50.0 / beach.cell_m) + 20;
-    const CoastField field(set, contoursAlongZ(nx, 12, beach.cell_m, [&](double x) { return beach.depthAt(x); }));
+    const double wavelength = beach.wavelength_m, amplitude = beach.amplitude_m;
+    const WaveSet set = beach.swell();
+    const int nx = beach.samples();
+    const CoastField field = beach.fieldFor(set);
     const double omega = deepOmega(wavelength);
     const glm::dvec2 open = swell::wavenumberVector(set.waves[0]);
     double worst = 0.0, lowest = kInf, highest = 0.0;
@@ -170,10 +180,10 @@ TEST(CoastField, ASwellShoalsOnAPlaneBeachAsLinearTheorySays)
 TEST(CoastField, WavesBreakAtMcCowansIndexAndStayUnderItInTheSurf)
 {
     const Beach beach;
-    const double wavelength = 156.0, amplitude = 0.5;
-    WaveSet set = oneWave({1.0, 0.0}, wavelength, amplitude);
-    const int nx = int(beach.deepest_m * 50.0 / beach.cell_m) + 20;
-    const CoastField field(set, contoursAlongZ(nx, 12, beach.cell_m, [&](double x) { return beach.depthAt(x); }));
+    const double amplitude = beach.amplitude_m;
+    const WaveSet set = beach.swell();
+    const int nx = beach.samples();
+    const CoastField field = beach.fieldFor(set);
     const glm::dvec2 open = swell::wavenumberVector(set.waves[0]);
     double breakRatio = 0.0, previousRatio = 0.0;
     bool broken = false;
@@ -197,6 +207,39 @@ TEST(CoastField, WavesBreakAtMcCowansIndexAndStayUnderItInTheSurf)
     EXPECT_NEAR(breakRatio, 0.78, 0.1);
 }
 
+// The surf's measure (the common texel's fourth channel): none where the
+// waves do not break, and inside the surf zone the share of the shoaled
+// height the cut took, 1 - gamma h / (H0 K_s) with K_s linear shoaling's
+// (eq. 4.104), growing towards the shore; none on dry land.
+TEST(CoastField, TheSurfMeasureIsTheShareOfTheShoaledHeightTheCutTook)
+{
+    const Beach beach;
+    const CoastField field = beach.fieldFor(beach.swell());
+    int offshore = 0, surf = 0;
+    double previous = 0.0;
+    for (int i = 4; i < beach.samples() - 4; ++i) {
+        const double x = i * beach.cell_m, h = beach.depthAt(x);
+        const swell::CoastCommonSample common = field.commonAt({x, 6 * beach.cell_m});
+        if (h <= 0.0) {
+            EXPECT_EQ(common.breaking, 0.0) << "h " << h;
+            continue;
+        }
+        const double shoaled = 2.0 * beach.amplitude_m * shoaling(deepOmega(beach.wavelength_m), h);
+        if (shoaled < swell::kBreakerIndex * h * 0.95) {
+            EXPECT_EQ(common.breaking, 0.0) << "h " << h;
+            ++offshore;
+        } else if (shoaled > swell::kBreakerIndex * h * 1.05 && h > 2.0 * beach.cell_m / 50.0) {
+            EXPECT_NEAR(1.0 - common.breaking, swell::kBreakerIndex * h / shoaled, 0.05) << "h " << h;
+            EXPECT_GE(common.breaking, previous - 1e-6) << "h " << h;
+            previous = common.breaking;
+            ++surf;
+        }
+    }
+    EXPECT_GT(offshore, 900);
+    EXPECT_GT(surf, 10);
+    EXPECT_GT(previous, 0.5); // near the shore the cut takes most of the height
+}
+
 // A sea of many waves breaks as a random sea does: not where its waves'
 // heights summed (its highest possible crest-to-trough) would reach 0.78 h,
 // a third of the way in, but where its significant height 4 sigma reaches
@@ -208,8 +251,8 @@ TEST(CoastField, ASeaOfManyWavesBreaksAtItsSignificantHeight)
     WaveSet set;
     for (int i = 0; i < 12; ++i) // 12 waves of 130 to 174 m, within 6 degrees of the normal
         set.waves.push_back({{std::cos((i - 5.5) * kDeg), std::sin((i - 5.5) * kDeg)}, 130.0 + 4.0 * i, 0.12, 0.0, 0.7 * i});
-    const int nx = int(beach.deepest_m * 50.0 / beach.cell_m) + 20;
-    const CoastField field(set, contoursAlongZ(nx, 12, beach.cell_m, [&](double x) { return beach.depthAt(x); }));
+    const int nx = beach.samples();
+    const CoastField field = beach.fieldFor(set);
     double onset = 0.0;
     for (int i = 4; i < nx; ++i) {
         const double x = i * beach.cell_m, h = beach.depthAt(x);

@@ -174,14 +174,21 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
             const double inner = smoothstep01(double(edge) / double(band));
             const glm::dvec2 p = g.origin_m + g.cell_m * glm::dvec2(i, j);
             std::fill(gain.begin(), gain.end(), 1.0);
-            double heights = 0.0, variance = 0.0;
+            // The sea's height, and what it would be had no wave broken (the
+            // surf's measure below).
+            double heights = 0.0, variance = 0.0, unbrokenHeight = 0.0;
             for (std::size_t w = 0; w < waves.waves.size(); ++w) {
-                if (const int l = layerOfWave_[w]; l >= 0)
-                    gain[w] = marches[std::size_t(l)].reached[c] ? std::sqrt(marches[std::size_t(l)].energy[c]) : 0.0;
+                double unbroken = 1.0;
+                if (const int l = layerOfWave_[w]; l >= 0) {
+                    const coast::WaveMarch& m = marches[std::size_t(l)];
+                    gain[w] = m.reached[c] ? std::sqrt(m.energy[c]) : 0.0;
+                    unbroken = m.reached[c] ? std::sqrt(m.unbroken[c]) : 0.0;
+                }
                 gain[w] = h > 0.0 ? (1.0 - inner) + inner * gain[w] : 0.0;
                 const double a = waves.waves[w].amplitude_m * gain[w];
                 heights += 2.0 * a;
                 variance += 0.5 * a * a;
+                unbrokenHeight += 2.0 * waves.waves[w].amplitude_m * (h > 0.0 ? (1.0 - inner) + inner * unbroken : 0.0);
             }
             const double breaksAt_m = breakingDepth(heights, variance, breakerIndex);
             const double cut = h <= 0.0 ? 0.0 : (breaksAt_m > h ? h / breaksAt_m : 1.0);
@@ -211,7 +218,12 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
             // edges, where the open sea's own limit (limitSteepness) holds.
             const double foldLimit = 1.0 - 0.1 * inner;
             const double steepnessScale = fold > foldLimit ? foldLimit / fold : 1.0;
-            common_[c] = glm::vec4(float(h), float(cut), float(steepnessScale), 0.0f);
+            // The surf's measure (shaders/surf.glsl): the share of the
+            // shoaled height the breaking took (each wave's own cut in its
+            // march, then the sea's), 0 where no wave breaks (offshore, and
+            // on dry land, where no wave is).
+            const double breaking = unbrokenHeight > 0.0 ? std::max(0.0, 1.0 - cut * heights / unbrokenHeight) : 0.0;
+            common_[c] = glm::vec4(float(h), float(cut), float(steepnessScale), float(breaking));
         }
 }
 
@@ -261,9 +273,9 @@ CoastCommonSample CoastField::commonAt(glm::dvec2 world_m) const
 {
     Bilinear b;
     if (!bilinearAt(depth_, world_m, b))
-        return {depth_.outsideDepth_m, 1.0, 1.0};
+        return {depth_.outsideDepth_m, 1.0, 1.0, 0.0};
     const glm::dvec4 t = read(common_, b);
-    return {t.x, t.y, t.z};
+    return {t.x, t.y, t.z, t.w};
 }
 
 int CoastField::edgeBand() const { return blendBand(depth_); }

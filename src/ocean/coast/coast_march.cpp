@@ -197,34 +197,39 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
         velocity[c] = length > 0.0 ? localGroupVelocity(wave.omega_radps, k[c], h) * kv / length : glm::dvec2(0.0);
     }
     const double openGroupVelocity = localGroupVelocity(wave.omega_radps, wave.wavenumber_radpm, depth.outsideDepth_m);
-    for (std::size_t c : order) {
+    // The energy arriving at cell c of a field marched in the order of
+    // arrival.
+    auto arriving = [&](const std::vector<double>& field, std::size_t c) {
         const int ci = int(c % std::size_t(g.nx)), cj = int(c / std::size_t(g.nx));
         // An entry cell shallower than the open sea has shoaled on the way
         // (the normal-incidence shoaling of eq. 4.104, C_g0 / C_g).
-        double energy = 0.0;
         if (entry[c]) {
             const double h = std::max(double(depth.depth_m[c]), kShallowest_m);
-            energy = openGroupVelocity / localGroupVelocity(wave.omega_radps, k[c], h);
-        } else {
-            double in = 0.0, out = 0.0, inflowing = 0.0;
-            for (const auto& nb : kNeighbours) {
-                const int i = ci + nb[0], j = cj + nb[1];
-                const glm::dvec2 normal(nb[0], nb[1]);
-                const bool wet = g.inside(i, j) && m.reached[g.index(i, j)];
-                const glm::dvec2 v = wet ? 0.5 * (velocity[c] + velocity[g.index(i, j)]) : velocity[c];
-                const double across = glm::dot(v, normal);
-                if (across > 0.0)
-                    out += across; // into a neighbour, or onto the shore, where it is spent
-                else if (wet) {
-                    in += -across * m.energy[g.index(i, j)];
-                    inflowing += -across;
-                }
-            }
-            // Nothing leaves (the rays stand still): the inflow's mean.
-            energy = out > 1e-12 ? in / out : (inflowing > 0.0 ? in / inflowing : 0.0);
+            return openGroupVelocity / localGroupVelocity(wave.omega_radps, k[c], h);
         }
+        double in = 0.0, out = 0.0, inflowing = 0.0;
+        for (const auto& nb : kNeighbours) {
+            const int i = ci + nb[0], j = cj + nb[1];
+            const glm::dvec2 normal(nb[0], nb[1]);
+            const bool wet = g.inside(i, j) && m.reached[g.index(i, j)];
+            const glm::dvec2 v = wet ? 0.5 * (velocity[c] + velocity[g.index(i, j)]) : velocity[c];
+            const double across = glm::dot(v, normal);
+            if (across > 0.0)
+                out += across; // into a neighbour, or onto the shore, where it is spent
+            else if (wet) {
+                in += -across * field[g.index(i, j)];
+                inflowing += -across;
+            }
+        }
+        // Nothing leaves (the rays stand still): the inflow's mean.
+        return out > 1e-12 ? in / out : (inflowing > 0.0 ? in / inflowing : 0.0);
+    };
+    m.unbroken.assign(n, 0.0);
+    for (std::size_t c : order) {
         // Depth-limited breaking: the wave's height 2 A0 sqrt(E) at most gamma h.
-        m.energy[c] = std::min(energy, breakingEnergyLimit(double(depth.depth_m[c]), wave.amplitude_m, breakerIndex));
+        m.energy[c] = std::min(arriving(m.energy, c),
+                               breakingEnergyLimit(double(depth.depth_m[c]), wave.amplitude_m, breakerIndex));
+        m.unbroken[c] = arriving(m.unbroken, c);
     }
     m.localWavenumber_radpm = std::move(k);
     return m;

@@ -28,6 +28,7 @@ double localGroupVelocity(double omega_radps, double wavenumber_radpm, double de
 struct WaveMarch {
     std::vector<double> phase_rad;
     std::vector<double> energy;
+    std::vector<double> unbroken; // the energy as it would be were no wave cut: shoaling and refraction alone
     std::vector<glm::dvec2> wavenumber_radpm; // grad S
     std::vector<std::uint8_t> reached;
     std::vector<double> localWavenumber_radpm; // k(h) of the cell's depth; 0 on dry land

@@ -106,6 +106,10 @@ struct alignas(16) FrameUniforms {
     // 0 (everything else 1), which the resolve reads as "this pixel's
     // pattern moves with the waves, not with the camera".
     int passMarksWater;
+    // The offshore sea's significant height times the deep-water wavelength
+    // of its peak period, m^2 (Stockdon et al. 2006's H0 L0): how far up the
+    // beaches the swash wets the sand (shaders/swash.glsl); 0: a calm sea.
+    float swashH0L0_m2;
     GridLevelUniform gridLevels[SWELL_GRID_LEVELS];
     WorldBoxUniform worldBoxes[SWELL_MAX_WORLD_BOXES];
     // World objects' ambient light: order-2 spherical harmonics of the sky's
@@ -229,6 +233,7 @@ inline const gl::BlockStruct& blockStructOf(const FrameUniforms*)
         SWELL_BLOCK_MEMBER(S, projectionFocalY),
         SWELL_BLOCK_MEMBER(S, footprintScale),
         SWELL_BLOCK_MEMBER(S, passMarksWater),
+        SWELL_BLOCK_MEMBER(S, swashH0L0_m2),
         SWELL_BLOCK_MEMBER(S, gridLevels),
         SWELL_BLOCK_MEMBER(S, worldBoxes),
         SWELL_BLOCK_MEMBER(S, ambientSh),
