@@ -18,6 +18,8 @@ size=(--size 960x540 --time 20)
 "$swell" render "$out/caustics.toml" -o "$out/caustics.png" "${size[@]}"
 "$swell" render "$out/shafts.toml" -o "$out/shafts.png" "${size[@]}"
 "$swell" render "$root/scenes/under-way.toml" -o "$out/under-way.png" "${size[@]}"
+"$swell" render "$root/scenes/coast.toml" -o "$out/coast.png" "${size[@]}"
+"$swell" render "$root/scenes/harbour.toml" -o "$out/harbour.png" "${size[@]}"
 
 # The low grazing camera: the trade wind preset with its camera at 1.2 m.
 scratch=$(mktemp -d)

@@ -15,6 +15,7 @@
 #ifndef SWELL_SURF_GLSL
 #define SWELL_SURF_GLSL
 #include "coast_field.glsl"
+#include "gpu/constants.glsl"
 #include "whitecap_foam.glsl"
 
 // The roller: the foam is a crest's own, breaking now, where the water
@@ -43,10 +44,10 @@ const float kSurfOldFoam = 0.05;
 // The breaking measure at which the surf is at its full strength: a crest
 // that has lost a fifth of its shoaled height is breaking in earnest.
 const float kSurfFullBreaking = 0.2;
-// The breaker index the coast field cut the waves with (swell::kBreakerIndex,
-// McCowan 1894): in the surf the waves are gamma h high, which places a
-// point's elevation in its wave.
-const float kSurfBreakerIndex = 0.78;
+// The breaker index the coast field cut the waves with (SWELL_BREAKER_INDEX,
+// swell::kBreakerIndex, McCowan 1894): in the surf the waves are gamma h
+// high, which places a point's elevation in its wave.
+const float kSurfBreakerIndex = SWELL_BREAKER_INDEX;
 
 // The surf foam's texture: the whitecaps' lattices (src/ocean/foam/
 // foam_texture.cpp: 3.3 m cells down to 3.4 cm, each turned by the golden

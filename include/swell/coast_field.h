@@ -41,6 +41,7 @@
 // land (they keep the open sea's phase): see RENDERING.md.
 #pragma once
 
+#include "swell/constants.h"
 #include "swell/export.h"
 #include "swell/surface_query.h"
 
@@ -73,9 +74,7 @@ struct SWELL_API DepthGrid {
 
 // The largest grid side a coast field accepts: 1024 x 1024 samples a wave.
 inline constexpr int kMaxCoastGridSide = 1024;
-// The breaker index gamma: the highest wave a depth h carries is gamma h
-// (McCowan 1894; Dean & Dalrymple 1991, sec. 4.6).
-inline constexpr double kBreakerIndex = 0.78;
+// The breaker index gamma, kBreakerIndex: swell/constants.h (the shaders' too).
 // How many of a set's waves, longest first, get a field of their own.
 inline constexpr std::size_t kMaxCoastWaves = 16;
 

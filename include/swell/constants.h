@@ -75,6 +75,11 @@ inline constexpr double kWaterPhaseG = 0.924;
 // 1020..1030 at 35 PSU and 0..25 degC): what floats the bodies, and what
 // the spray's sheets and drops weigh.
 inline constexpr double kSeaWaterDensity_kg_per_m3 = 1025.0;
+
+// The breaker index gamma: the highest wave a depth h carries is gamma h
+// (McCowan 1894; Dean & Dalrymple 1991, sec. 4.6). The coast field cuts the
+// waves with it; the surf's shader places a point in its wave by it.
+inline constexpr double kBreakerIndex = 0.78;
 // Sea water's surface tension, as a sheet of it tears (Taylor-Culick: the
 // bow spray's bowSheetRetraction_mps, shaders/spray.glsl).
 inline constexpr double kSeaWaterSurfaceTension_N_per_m = 0.073;

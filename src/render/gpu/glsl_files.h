@@ -91,6 +91,7 @@ inline std::vector<GlslConstant> glslConstants()
         {"SWELL_WATER_PHASE_G", kWaterPhaseG},
         {"SWELL_SEA_WATER_SURFACE_TENSION_N_PER_M", kSeaWaterSurfaceTension_N_per_m},
         {"SWELL_SEA_WATER_DENSITY_KG_PER_M3", kSeaWaterDensity_kg_per_m3},
+        {"SWELL_BREAKER_INDEX", kBreakerIndex},
     };
 }
 
