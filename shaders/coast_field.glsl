@@ -111,6 +111,23 @@ float coastTrainShare(CoastCell cell, vec4 everyWave, vec2 restOffset_m)
     return (1.0 - smoothstep(coastTrainsFullDepth_m, coastTrainsNoneDepth_m, everyWave.x)) * inside;
 }
 
+// One Gerstner wave's share of the sum at its phase theta, with the
+// amplitude its caller weighed: the displacement and the partials along
+// rest x and z (swell::gerstner::accumulate, the CPU's). Shared by the
+// Gerstner model's sum (ocean/gerstner.glsl) and the trains below.
+void accumulateGerstnerWave(CoastWave w, float amplitude, float theta, inout vec3 displacement, inout vec3 alongX,
+                            inout vec3 alongZ)
+{
+    vec2 d = w.direction;
+    float q = w.steepness;
+    float s = sin(theta);
+    float c = cos(theta);
+    displacement += vec3(-q * amplitude * d.x * s, amplitude * c, -q * amplitude * d.y * s);
+    float ka = w.wavenumber_rad_per_m * amplitude;
+    alongX -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
+    alongZ -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
+}
+
 // The trains' sum at the rest point, each weighed by waveLodWeight at the
 // footprint and by `scale` (the caller's sqrt(b) times its height fade):
 // the displacement and the partial derivatives along rest x and z, less
@@ -131,15 +148,7 @@ void coastTrainsSurface(vec2 restOffset_m, CoastCell cell, vec4 everyWave, float
         CoastWave w = coastWave(cell, everyWave, coastTrains[i].layer, openDirection, openK,
                                 coastTrains[i].amplitude_m, coastTrains[i].steepness);
         float theta = openK * dot(openDirection, restOffset_m) + coastTrains[i].phase_rad + w.phase_rad;
-        vec2 d = w.direction;
-        float amplitude = w.amplitude_m * weight * scale;
-        float q = w.steepness;
-        float s = sin(theta);
-        float c = cos(theta);
-        displacement += vec3(-q * amplitude * d.x * s, amplitude * c, -q * amplitude * d.y * s);
-        float ka = w.wavenumber_rad_per_m * amplitude;
-        alongX -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
-        alongZ -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
+        accumulateGerstnerWave(w, w.amplitude_m * weight * scale, theta, displacement, alongX, alongZ);
     }
 }
 #endif

@@ -50,16 +50,7 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
             break;
         float theta;
         CoastWave w = gerstnerWaveAt(i, restOffset_m, cell, everyWave, theta);
-        vec2 d = w.direction;
-        float k = w.wavenumber_rad_per_m;
-        float amplitude = w.amplitude_m * heightScale * weight;
-        float q = w.steepness;
-        float s = sin(theta);
-        float c = cos(theta);
-        displacement += vec3(-q * amplitude * d.x * s, amplitude * c, -q * amplitude * d.y * s);
-        float ka = k * amplitude;
-        tangent -= vec3(q * ka * d.x * d.x * c, ka * d.x * s, q * ka * d.x * d.y * c);
-        binormal -= vec3(q * ka * d.x * d.y * c, ka * d.y * s, q * ka * d.y * d.y * c);
+        accumulateGerstnerWave(w, w.amplitude_m * heightScale * weight, theta, displacement, tangent, binormal);
     }
     return SurfacePoint(displacement, normalize(cross(binormal, tangent)), 0.0, tangent, binormal, 0.0, 0.0, vec2(0.0));
 }
