@@ -83,10 +83,10 @@ struct Renderer::Impl {
     {
         return std::make_shared<const Seabed>(next, hostSeabed ? &*hostSeabed : nullptr);
     }
-    // The model `next` describes, over `seabed` (the spectral model does not feel it).
+    // The model `next` describes, over `seabed`.
     static std::unique_ptr<WaveModel> waveModelOf(const Scene& next, const Seabed& seabed)
     {
-        return next.waves.model == WaveModelKind::Spectral ? makeWaveModel(next) : makeWaveModel(next, seabed);
+        return makeWaveModel(next, seabed);
     }
 
     RenderContext context()

@@ -113,4 +113,35 @@ TEST_F(SeabedDrawn, HostHeightsJoinTheFloorUndrawn)
     EXPECT_EQ(renderer.seabed().elevation_m({0.0, -50.0}), -std::numeric_limits<double>::infinity());
 }
 
+// The spectral model feels the host's floor as the scene's, when the heights
+// are set and when a scene change builds the model again: over 1 m of the
+// host's water the breaking cut holds the sea under the depth.
+TEST_F(SeabedDrawn, HostHeightsReachTheSpectralSea)
+{
+    Scene scene = openSea();
+    scene.waves.model = WaveModelKind::Spectral;
+    scene.sea.wind->windSpeed_mps = 16.0;
+    Renderer renderer(scene);
+    const Renderer open(scene);
+    renderer.setSeabedHeights(SeabedHeights{.columns = 2, .rows = 2, .heights_m = {-1.0f, -1.0f, -1.0f, -1.0f},
+                                            .min_m = {-300.0, -300.0}, .max_m = {300.0, 300.0}});
+    double largest = 0.0, openLargest = 0.0;
+    for (double t = 0.0; t < 8.0; t += 0.5) {
+        largest = std::max(largest, std::abs(renderer.waveModel().heightAt({0.0, 0.0}, t)));
+        openLargest = std::max(openLargest, std::abs(open.waveModel().heightAt({0.0, 0.0}, t)));
+    }
+    // A 16 m/s sea stands metres high; over 1 m of water the cut holds it
+    // under 0.78 of the depth.
+    EXPECT_GT(openLargest, 1.0);
+    EXPECT_LT(largest, 0.78);
+    // And the model a scene change builds again feels it as well.
+    scene.sea.wind->seed += 1;
+    renderer.setScene(scene);
+    largest = 0.0;
+    for (double t = 0.0; t < 8.0; t += 0.5)
+        largest = std::max(largest, std::abs(renderer.waveModel().heightAt({0.0, 0.0}, t)));
+    EXPECT_LT(largest, 0.78) << "after setScene";
+}
+
 } // namespace
+
