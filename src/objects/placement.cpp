@@ -42,9 +42,10 @@ glm::dmat4 placedObjectPose(const SceneObject& o, glm::dvec3 position_m, const g
            glm::scale(glm::dmat4(1.0), glm::dvec3(o.scale));
 }
 
-SceneBodies buildBodies(const SceneShapes& shapes, const Scene& scene, std::shared_ptr<const SurfaceQuery> surface)
+SceneBodies buildBodies(const SceneShapes& shapes, const Scene& scene, std::shared_ptr<const SurfaceQuery> surface,
+                        std::shared_ptr<const Seabed> seabed)
 {
-    return SceneBodies(scene, shapes.list(), std::move(surface));
+    return SceneBodies(scene, shapes.list(), std::move(surface), std::move(seabed));
 }
 
 std::vector<glm::dvec2> floatingObjectPoints(const Scene& scene)

@@ -20,8 +20,9 @@
 namespace swell::detail {
 
 // The floating bodies of `scene` on `surface` (the water on the scene's
-// clock), built from the scene's shapes.
-SceneBodies buildBodies(const SceneShapes& shapes, const Scene& scene, std::shared_ptr<const SurfaceQuery> surface);
+// clock), built from the scene's shapes, their wake over `seabed`.
+SceneBodies buildBodies(const SceneShapes& shapes, const Scene& scene, std::shared_ptr<const SurfaceQuery> surface,
+                        std::shared_ptr<const Seabed> seabed);
 
 // Where the frame asks for the water under its floating objects (those that
 // ride the waves without being rigid bodies), x, z in the sea frame, m, in

@@ -142,19 +142,8 @@ std::shared_ptr<const WakeFrame> SceneBodies::sharedWakeFrameAt(double time_s) c
     return std::make_shared<const WakeFrame>(wake_->frameAt(clock_s(time_s)));
 }
 
-namespace {
-
-// The floor a wake feels, when the scene has one.
-std::shared_ptr<const Seabed> wakeSeabedOf(const Scene& scene)
-{
-    auto seabed = std::make_shared<const Seabed>(scene);
-    return seabed->extent() ? seabed : nullptr;
-}
-
-} // namespace
-
 SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes,
-                         std::shared_ptr<const SurfaceQuery> surface)
+                         std::shared_ptr<const SurfaceQuery> surface, std::shared_ptr<const Seabed> seabed)
     : start_s_(bodiesStart_s(scene))
 {
     const SurfaceFilter filter = bodySurfaceFilter(scene);
@@ -170,7 +159,8 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
         }
     }
     if (scene.wake.enabled && underWay)
-        wake_ = std::make_unique<SceneWake>(scene.wake, scene.sea.depth_m, wakeSeabedOf(scene));
+        wake_ = std::make_unique<SceneWake>(scene.wake, scene.sea.depth_m,
+                                            seabed && seabed->extent() ? std::move(seabed) : nullptr);
     // The waves on the bodies' clock (their time t is the scene's t +
     // start_s, so the bodies step from 0 whenever the history starts), plus
     // the wake, which runs on that clock.

@@ -50,9 +50,10 @@ public:
     // on and a body under way, the bodies stir a wake field and float on the
     // surface plus it (objects/scene_wake.h). Throws swell::InputError at
     // the object's path key (or naming the object) when a body cannot be
-    // built.
+    // built. The wake feels `seabed` where it has a shape (null: the sea's
+    // depth everywhere).
     SceneBodies(const Scene& scene, const std::vector<const MeshData*>& shapes,
-                std::shared_ptr<const SurfaceQuery> surface);
+                std::shared_ptr<const SurfaceQuery> surface, std::shared_ptr<const Seabed> seabed = nullptr);
 
     SceneBodies(SceneBodies&&) noexcept;
     SceneBodies& operator=(SceneBodies&&) noexcept;

@@ -51,8 +51,9 @@ SceneUpdate Renderer::Impl::prepare(const Scene& next, ParameterEffect effects,
     if (update.world || modelChanged || sourcesChanged || !sameBodies(scene, next)) {
         // The bodies float on the host's sources too.
         sim.bodyModel = std::make_shared<const ComposedSurface>(nextModel, nextHostSources);
+        sim.bodySeabed = update.seabed ? update.seabed : resources.seabed;
         sim.bodies = buildBodies(update.shapes ? *update.shapes : resources.shapes, Simulation::inSeaFrame(next),
-                                 sim.bodyModel);
+                                 sim.bodyModel, sim.bodySeabed);
     }
     update.gridChanged = first || hasEffect(effects, ParameterEffect::Grid);
     sim.sceneModel = std::move(nextSceneModel);

@@ -76,6 +76,7 @@ void Simulation::commit(const Scene& scene, SimulationUpdate update, bool intera
         bodies_ = std::move(*update.bodies); // after the worker of the bodies before is done
         bodiesTally_ = {};
         bodyModel_ = std::move(update.bodyModel);
+        bodySeabed_ = std::move(update.bodySeabed);
         queryBodies_.reset();
     }
     // What was simulated was for the scene before (the poses of objects
@@ -264,7 +265,7 @@ DrawnSurface Simulation::drawnSurface(glm::dvec3 eyeWorld, double time_s, const 
     std::shared_ptr<const WakeFrame> wake;
     if (bodies_.wake()) {
         if (!queryBodies_)
-            queryBodies_ = buildBodies(shapes, seaScene_, bodyModel_);
+            queryBodies_ = buildBodies(shapes, seaScene_, bodyModel_, bodySeabed_);
         queryBodies_->advanceTo(time_s);
         wake = std::make_shared<const WakeFrame>(queryBodies_->wakeFrameAt(time_s));
     }

@@ -55,6 +55,7 @@ struct SimulationUpdate {
     std::unique_ptr<WaveModelGpu> gpu;
     std::optional<SceneBodies> bodies;
     std::shared_ptr<const SurfaceQuery> bodyModel;
+    std::shared_ptr<const Seabed> bodySeabed; // the floor their wake feels
 };
 
 class Simulation {
@@ -147,6 +148,7 @@ private:
     std::vector<std::shared_ptr<const SurfaceSource>> hostSources_;
     // What the floating bodies float on: model() plus the host's sources.
     std::shared_ptr<const SurfaceQuery> bodyModel_;
+    std::shared_ptr<const Seabed> bodySeabed_; // the floor the bodies' wake feels
     std::unique_ptr<WaveModelGpu> gpu_;
     double seaMeanSquareSlope_ = 0.0; // of model(), for the reflection's masking (slope_statistics.h)
     std::optional<Simulated> simulated_;
