@@ -13,7 +13,8 @@ namespace {
 class FlatGpu final : public WaveModelGpu {
 public:
     std::string shaderFile() const override { return "ocean/flat.glsl"; }
-    void prepareFrame(glm::dvec2 gridCenter_m, double time_s) override { coast_.prepareView(gridCenter_m, time_s); }
+    // The empty field's block, written once when it was made, holds for every view.
+    void prepareFrame(glm::dvec2, double) override {}
     void prepareView(glm::dvec2) override {}
     void bind() const override { coast_.bind(); }
 
