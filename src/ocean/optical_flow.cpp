@@ -4,6 +4,7 @@
 // projected with the second frame's camera.
 #include "swell/dataset/flow.h"
 
+#include "ocean/drawn_search.h"
 #include "swell/dataset/sensor.h"
 #include "swell/drawn_surface.h"
 #include "swell/error.h"
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 
 namespace swell {
 
@@ -44,6 +46,51 @@ struct WaterPoint {
     std::optional<DrawnPoint> drawn;
 };
 
+// The grid vertices of one DrawnSurface, each displaced once however many
+// pixels ask for it (a cell near the eye spans many pixels).
+class VertexCache {
+public:
+    explicit VertexCache(const DrawnSurface& surface) : surface_(surface) {}
+    glm::dvec3 operator()(int i, int j)
+    {
+        const std::int64_t key = (std::int64_t(i) << 32) | std::int64_t(std::uint32_t(j));
+        auto [at, added] = vertices_.try_emplace(key);
+        if (added)
+            at->second = surface_.vertex(i, j);
+        return at->second;
+    }
+
+private:
+    const DrawnSurface& surface_;
+    std::unordered_map<std::int64_t, glm::dvec3> vertices_;
+};
+
+// How far the range's point may lie from the triangle it was measured to,
+// m: the label's float32 and the rasteriser's, well under a centimetre.
+constexpr double kOnTriangle_m = 0.02;
+
+// The drawn triangle under water point p: searched first round the cell of
+// the pixel before (neighbouring pixels mostly share a cell or touch), and
+// kept only if p lies on it (where the grid folds over itself, another
+// triangle may cover the same x, z); else as DrawnSurface::at() searches,
+// from the cell over the rest point under p.
+std::optional<DrawnPoint> drawnTriangleUnder(glm::dvec3 p, const SeaMotion& sea, const DrawnSurface& surface,
+                                             double time_s, VertexCache& vertices,
+                                             const std::optional<DrawnPoint>& before)
+{
+    const detail::DrawnVertexFunction vertex = [&](int i, int j) { return std::optional<glm::dvec3>(vertices(i, j)); };
+    const glm::dvec2 place(p.x, p.z);
+    if (before) {
+        std::optional<DrawnPoint> hit = detail::searchDrawnCells(sea.shape, {before->cellI, before->cellJ}, place, 1, vertex);
+        if (hit && std::abs(hit->position_m.y - p.y) <= kOnTriangle_m)
+            return hit;
+    }
+    const GridPlacement& placement = surface.placement();
+    const glm::dvec2 rest = sea.surface->restPointUnder(place, time_s);
+    return detail::searchDrawnCells(sea.shape, detail::restCellOf(sea.shape, placement, rest - placement.center_m),
+                                    place, detail::kMaxDrawnSearchRings, vertex);
+}
+
 // Moves each water point from time_s to time_s + interval_s as the same
 // material point of the drawn surface: the drawn triangle under it (the
 // plane the label's range was measured to) at time_s, its grid vertices
@@ -60,15 +107,20 @@ void moveWater(std::vector<WaterPoint>& points, const SeaMotion& sea, glm::dvec3
     const std::shared_ptr<const SurfaceQuery> surface(std::shared_ptr<const SurfaceQuery>(), sea.surface);
     const glm::dvec3 eyeSea = sea.sea.toSea(eye_m);
     const DrawnSurface before(surface, sea.shape, sea.fade, eyeSea, time_s, sea.sea);
-    for (WaterPoint& p : points)
-        p.drawn = before.at({p.position_m.x, p.position_m.z});
+    VertexCache verticesBefore(before);
+    std::optional<DrawnPoint> last;
+    for (WaterPoint& p : points) {
+        p.drawn = drawnTriangleUnder(p.position_m, sea, before, time_s, verticesBefore, last);
+        last = p.drawn;
+    }
     const DrawnSurface after(surface, sea.shape, sea.fade, eyeSea, time_s + interval_s, sea.sea);
+    VertexCache verticesAfter(after);
     for (WaterPoint& p : points) {
         if (!p.drawn)
             continue;
         glm::dvec3 moved(0.0);
-        for (int k = 0; k < 3; ++k)
-            moved += p.drawn->weights[k] * after.vertex(p.drawn->corners[std::size_t(k)].x, p.drawn->corners[std::size_t(k)].y);
+        for (std::size_t k = 0; k < 3; ++k)
+            moved += p.drawn->weights[int(k)] * verticesAfter(p.drawn->corners[k].x, p.drawn->corners[k].y);
         // The range's point lies on the triangle (to float32): carry what it lies off it along.
         p.position_m = moved + (p.position_m - p.drawn->position_m);
     }
