@@ -62,6 +62,31 @@ glm::dvec2 pinholeProject(const swell::CameraCalibration& c, glm::dvec3 world_m)
 
 glm::dvec2 flowAt(const swell::FrameFlow& flow, std::size_t i) { return glm::dvec2(flow.flow_px[i]); }
 
+// The scene's camera at position_m, looking north (-z), pitched and rolled.
+swell::Camera cameraLookingNorth(const swell::Scene& scene, glm::dvec3 position_m, double pitch_deg, double roll_deg = 0.0)
+{
+    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    camera.position_m = position_m;
+    camera.yaw_deg = 0.0;
+    camera.pitch_deg = pitch_deg;
+    camera.roll_deg = roll_deg;
+    return camera;
+}
+
+// The built-in boat as a floating rigid body (it heaves, rolls and pitches)
+// under way at velocity_mps.
+swell::SceneObject boatUnderWay(glm::dvec3 position_m, double yaw_deg, glm::dvec3 velocity_mps)
+{
+    swell::SceneObject boat;
+    boat.path = "builtin:boat";
+    boat.position_m = position_m;
+    boat.yaw_deg = yaw_deg;
+    boat.floats = true;
+    boat.density_kg_per_m3 = 400.0;
+    boat.velocity_m_per_s = velocity_mps;
+    return boat;
+}
+
 TEST_F(OpticalFlow, OnAStillSceneItIsTheProjectionOfTheCamerasMotion)
 {
     swell::Scene scene = swell::test::openSea();
@@ -71,11 +96,7 @@ TEST_F(OpticalFlow, OnAStillSceneItIsTheProjectionOfTheCamerasMotion)
     scene.objects.push_back(buoy);
     swell::Renderer renderer(scene);
     renderer.setWaveModel(std::make_shared<swell::FlatModel>());
-    swell::Camera before = swell::cameraAt(scene.camera, 0.0);
-    before.position_m = glm::dvec3(0.0, 3.0, 0.0);
-    before.yaw_deg = 0.0;
-    before.pitch_deg = -12.0;
-    before.roll_deg = 3.0;
+    const swell::Camera before = cameraLookingNorth(scene, glm::dvec3(0.0, 3.0, 0.0), -12.0, 3.0);
     swell::Camera after = before;
     after.position_m += glm::dvec3(0.4, 0.15, -0.6); // a translation alone
     const glm::ivec2 size(240, 180);
@@ -148,19 +169,9 @@ TEST_F(OpticalFlow, OnAStillSceneItIsTheProjectionOfTheCamerasMotion)
 TEST_F(OpticalFlow, OnAFloatingBodyItIsTheMotionOfItsMeshsPoints)
 {
     swell::Scene scene = swell::test::openSea();
-    swell::SceneObject boat;
-    boat.path = "builtin:boat";
-    boat.position_m = glm::dvec3(-2.0, 0.0, -18.0);
-    boat.yaw_deg = 20.0;
-    boat.floats = true;
-    boat.density_kg_per_m3 = 400.0;                  // a rigid body: it heaves, rolls and pitches
-    boat.velocity_m_per_s = glm::dvec3(1.5, 0.0, -0.5); // and is under way
-    scene.objects.push_back(boat);
+    scene.objects.push_back(boatUnderWay(glm::dvec3(-2.0, 0.0, -18.0), 20.0, glm::dvec3(1.5, 0.0, -0.5)));
     swell::Renderer renderer(scene);
-    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    camera.position_m = glm::dvec3(0.0, 6.0, 0.0);
-    camera.yaw_deg = 0.0;
-    camera.pitch_deg = -12.0;
+    const swell::Camera camera = cameraLookingNorth(scene, glm::dvec3(0.0, 6.0, 0.0), -12.0);
     const glm::ivec2 size(240, 180);
     const double time_s = 4.0, interval_s = 0.2;
     const LabelledFrame first = drawFrame(renderer, camera, time_s, size);
@@ -230,10 +241,7 @@ TEST_F(OpticalFlow, OnTheWaterItFollowsTheSeasMaterialPoints)
 {
     swell::Scene scene = swell::test::openSea();
     swell::Renderer renderer(scene);
-    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    camera.position_m = glm::dvec3(0.0, 4.0, 0.0);
-    camera.yaw_deg = 0.0;
-    camera.pitch_deg = -20.0;
+    const swell::Camera camera = cameraLookingNorth(scene, glm::dvec3(0.0, 4.0, 0.0), -20.0);
     const glm::ivec2 size(240, 180);
     const double time_s = 4.0, interval_s = 0.1;
     const LabelledFrame first = drawFrame(renderer, camera, time_s, size);
@@ -331,20 +339,10 @@ double linearAt(const swell::Image& image, glm::dvec2 place, int k)
 TEST_F(OpticalFlow, WarpingTheNextFrameBackByTheFlowGivesThisFrame)
 {
     swell::Scene scene = swell::test::openSea();
-    swell::SceneObject boat;
-    boat.path = "builtin:boat";
-    boat.position_m = glm::dvec3(3.0, 0.0, -22.0);
-    boat.yaw_deg = -30.0;
-    boat.floats = true;
-    boat.density_kg_per_m3 = 400.0;
-    boat.velocity_m_per_s = glm::dvec3(-1.0, 0.0, 0.0);
-    scene.objects.push_back(boat);
+    scene.objects.push_back(boatUnderWay(glm::dvec3(3.0, 0.0, -22.0), -30.0, glm::dvec3(-1.0, 0.0, 0.0)));
     scene.sun.direction = glm::dvec3(0.2, 0.6, 0.8); // behind the camera: no glitter in view
     swell::Renderer renderer(scene);
-    swell::Camera before = swell::cameraAt(scene.camera, 0.0);
-    before.position_m = glm::dvec3(0.0, 5.0, 0.0);
-    before.yaw_deg = 0.0;
-    before.pitch_deg = -14.0;
+    const swell::Camera before = cameraLookingNorth(scene, glm::dvec3(0.0, 5.0, 0.0), -14.0);
     swell::Camera after = before;
     after.position_m += glm::dvec3(0.6, 0.0, 0.0); // 18 m/s sideways
     after.yaw_deg += 1.0;                          // and turning 30 degrees a second
