@@ -81,7 +81,8 @@ std::optional<DrawnPoint> drawnTriangleUnder(glm::dvec3 p, const SeaMotion& sea,
     const detail::DrawnVertexFunction vertex = [&](int i, int j) { return std::optional<glm::dvec3>(vertices(i, j)); };
     const glm::dvec2 place(p.x, p.z);
     if (before) {
-        std::optional<DrawnPoint> hit = detail::searchDrawnCells(sea.shape, {before->cellI, before->cellJ}, place, 1, vertex);
+        const glm::ivec2 cell(before->cellI, before->cellJ);
+        std::optional<DrawnPoint> hit = detail::searchDrawnCells(sea.shape, cell, place, 1, vertex);
         if (hit && std::abs(hit->position_m.y - p.y) <= kOnTriangle_m)
             return hit;
     }

@@ -118,6 +118,8 @@ TEST_F(OpticalFlow, OnAStillSceneItIsTheProjectionOfTheCamerasMotion)
         for (int x = 0; x < size.x; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
             const glm::dvec3 d = centreRay(c0, x, y);
+            // Where the moved camera sees a world point, less this pixel's centre.
+            auto projectedMotion = [&](glm::dvec3 point) { return pinholeProject(c1, point) - glm::dvec2(x + 0.5, y + 0.5); };
             const std::uint16_t semantic = first.labels.semantic[i];
             if (semantic == SWELL_LABEL_SKY) {
                 sky += 1;
@@ -143,7 +145,7 @@ TEST_F(OpticalFlow, OnAStillSceneItIsTheProjectionOfTheCamerasMotion)
             glm::dvec3 point;
             if (semantic == SWELL_LABEL_WATER && d.y < 0.0) {
                 point = eye + (-eye.y / d.y) * d; // the sea level's plane, y = 0
-                const double error_px = glm::length(flowAt(flow, i) - (pinholeProject(c1, point) - glm::dvec2(x + 0.5, y + 0.5)));
+                const double error_px = glm::length(flowAt(flow, i) - projectedMotion(point));
                 worstWater_px = std::max(worstWater_px, error_px);
                 water += 1;
             } else if (first.labels.instance[i] == 1) {
@@ -151,7 +153,7 @@ TEST_F(OpticalFlow, OnAStillSceneItIsTheProjectionOfTheCamerasMotion)
                 if (!hit || std::abs(hit->distance_m - first.labels.range_m[i]) > 0.01)
                     continue; // the centre ray grazes the outline, or the label's range is a crease's
                 point = eye + hit->distance_m * d;
-                const double error_px = glm::length(flowAt(flow, i) - (pinholeProject(c1, point) - glm::dvec2(x + 0.5, y + 0.5)));
+                const double error_px = glm::length(flowAt(flow, i) - projectedMotion(point));
                 worstBuoy_px = std::max(worstBuoy_px, error_px);
                 onBuoy += 1;
             }
