@@ -14,6 +14,7 @@
 #include "swell/dataset/flow.h"
 #include "swell/drawn_surface.h"
 #include "swell/dataset/labels.h"
+#include "swell/dataset/sensor.h"
 #include "swell/flat_model.h"
 #include "swell/gpu/label_classes.h"
 #include "swell/renderer.h"
@@ -166,6 +167,63 @@ TEST_F(OpticalFlow, OnAStillSceneItIsTheProjectionOfTheCamerasMotion)
     EXPECT_LT(worstBuoy_px, 0.05) << "over " << onBuoy << " buoy pixels";
     std::printf("still scene: worst %.5f px on %d water pixels, %.5f px on %d buoy pixels; %d hidden\n",
                 worstWater_px, water, worstBuoy_px, onBuoy, hidden);
+}
+
+// Brown-Conrady's distortion as LABELS.md writes it (OpenCV's form), for the
+// calibration's coefficients, and the pixel it puts a world point on.
+glm::dvec2 projectThroughLens(const swell::CameraCalibration& c, glm::dvec3 world_m)
+{
+    const glm::dvec3 p(c.cameraFromWorld * glm::dvec4(world_m, 1.0));
+    const double x = p.x / p.z, y = p.y / p.z, r2 = x * x + y * y;
+    const double radial = 1.0 + c.k1 * r2 + c.k2 * r2 * r2 + c.k3 * r2 * r2 * r2;
+    const double xd = x * radial + 2.0 * c.p1 * x * y + c.p2 * (r2 + 2.0 * x * x);
+    const double yd = y * radial + c.p1 * (r2 + 2.0 * y * y) + 2.0 * c.p2 * x * y;
+    return {c.fx_px * xd + c.cx_px, c.fy_px * yd + c.cy_px};
+}
+
+// Through a distorting lens (the frames as `swell render` draws them, their
+// labels resampled through it): each calm water pixel's flow is where the
+// sea's plane, met by its centre ray (undistorted), lands through the lens
+// of the moved camera.
+TEST_F(OpticalFlow, ThroughALensItIsTheProjectionThroughTheLens)
+{
+    const swell::Scene scene = swell::test::openSeaThroughALens();
+    swell::Renderer renderer(scene);
+    renderer.setWaveModel(std::make_shared<swell::FlatModel>());
+    const swell::Camera before = cameraLookingNorth(scene, glm::dvec3(0.0, 4.0, 0.0), -15.0, 5.0);
+    swell::Camera after = before;
+    after.position_m += glm::dvec3(-0.3, 0.1, -0.5);
+    after.yaw_deg += 0.8;
+    const glm::ivec2 size(240, 180);
+    const double interval_s = 0.1;
+    const swell::SensorFrame first = swell::renderSensorFrame(renderer, before, 1.0, size, true);
+    const swell::SensorFrame second = swell::renderSensorFrame(renderer, after, 1.0 + interval_s, size, true);
+    ASSERT_TRUE(first.labels && second.labels);
+    const swell::FrameFlow flow = swell::opticalFlowOf(*first.labels, 1.0, *second.labels, interval_s,
+                                                       swell::seaMotionOf(scene, renderer.waveModel()));
+    const swell::CameraCalibration& c0 = first.labels->camera;
+    ASSERT_EQ(c0.k1, -0.22);
+    const swell::LensDistortion lens = swell::lensOf(scene.camera);
+    const glm::dvec3 eye(c0.worldFromCamera[3]);
+    double worst_px = 0.0;
+    int water = 0;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
+            if (first.labels->semantic[i] != SWELL_LABEL_WATER || !flow.valid[i])
+                continue;
+            const glm::dvec2 u = swell::undistort(lens, {(x + 0.5 - c0.cx_px) / c0.fx_px, (y + 0.5 - c0.cy_px) / c0.fy_px});
+            const glm::dvec3 d = glm::normalize(glm::dmat3(c0.worldFromCamera) * glm::dvec3(u, 1.0));
+            if (d.y > -0.01)
+                continue; // near the horizon: where the plane's point is kilometres off
+            const glm::dvec3 point = eye + (-eye.y / d.y) * d;
+            const glm::dvec2 expected = projectThroughLens(second.labels->camera, point) - glm::dvec2(x + 0.5, y + 0.5);
+            worst_px = std::max(worst_px, glm::length(flowAt(flow, i) - expected));
+            water += 1;
+        }
+    EXPECT_GT(water, size.x * size.y / 3);
+    EXPECT_LT(worst_px, 0.05) << "over " << water << " water pixels";
+    std::printf("through a lens: worst %.5f px over %d water pixels\n", worst_px, water);
 }
 
 TEST_F(OpticalFlow, OnAFloatingBodyItIsTheMotionOfItsMeshsPoints)
