@@ -193,9 +193,10 @@ int runRender(const RenderOptions& options)
                 writeLabelsWithFlow(*pending, *sensor.labels, interval_s, renderer);
             pending = PendingLabels{std::move(*sensor.labels), frame, t};
         }
-        // The bodies step towards the next frame while this one is written.
+        // The bodies step towards the next frame (or the last frame's labels
+        // for its flow) while this one is written.
         if (i + 1 < frames || options.labels)
-            renderer.anticipate(t + interval_s);
+            renderer.anticipate(options.time_s + double(i + 1) / options.fps);
         if (video)
             videoWriter->write(sensor.image);
         else
@@ -203,7 +204,7 @@ int runRender(const RenderOptions& options)
         progress.advance();
     }
     if (pending) {
-        const double next_s = pending->time_s + interval_s;
+        const double next_s = options.time_s + double(frames) / options.fps;
         const SensorFrame next = renderSensorFrame(renderer, renderer.sceneCameraAt(next_s), next_s, size, true);
         writeLabelsWithFlow(*pending, *next.labels, interval_s, renderer);
     }
