@@ -47,6 +47,8 @@ std::array<std::uint8_t, 3> previewColour(std::uint16_t semantic, std::uint16_t 
     case SWELL_LABEL_WHITECAP_FOAM: return {240, 240, 240};
     case SWELL_LABEL_WAKE_FOAM: return {250, 200, 60};
     case SWELL_LABEL_TERRAIN: return {110, 90, 60};
+    case SWELL_LABEL_SURF: return {170, 240, 235};
+    case SWELL_LABEL_WET_SAND: return {70, 55, 35};
     default: break;
     }
     // Golden-angle hues: neighbouring ids far apart.

@@ -203,6 +203,8 @@ void bindLabels(py::module_& m)
     m.attr("CLASS_WHITECAP_FOAM") = SWELL_LABEL_WHITECAP_FOAM;
     m.attr("CLASS_WAKE_FOAM") = SWELL_LABEL_WAKE_FOAM;
     m.attr("CLASS_TERRAIN") = SWELL_LABEL_TERRAIN;
+    m.attr("CLASS_SURF") = SWELL_LABEL_SURF;
+    m.attr("CLASS_WET_SAND") = SWELL_LABEL_WET_SAND;
     m.attr("CLASS_FIRST_OBJECT") = SWELL_LABEL_FIRST_OBJECT_CLASS;
 
     m.def("calibration_of", [](const Camera& camera, py::handle size) { return calibrationOf(camera, imageSize(size)); },

@@ -207,6 +207,8 @@ std::vector<std::string> labelClassesOf(const Scene& scene)
     classes[SWELL_LABEL_WHITECAP_FOAM] = "whitecap_foam";
     classes[SWELL_LABEL_WAKE_FOAM] = "wake_foam";
     classes[SWELL_LABEL_TERRAIN] = "terrain";
+    classes[SWELL_LABEL_SURF] = "surf";
+    classes[SWELL_LABEL_WET_SAND] = "wet_sand";
     for (const SceneObject& object : scene.objects) {
         const std::string name = objectClassOf(object);
         if (std::find(classes.begin() + SWELL_LABEL_FIRST_OBJECT_CLASS, classes.end(), name) == classes.end())

@@ -78,12 +78,9 @@ void distortImage(const Image& wide, Image& out, const LensDistortion& lens, con
 // finite range: one object, or the water (foam or not), or the island.
 bool oneSurface(const FrameLabels& wide, std::size_t a, std::size_t b)
 {
-    auto isWater = [](std::uint16_t s) {
-        return s == SWELL_LABEL_WATER || s == SWELL_LABEL_WHITECAP_FOAM || s == SWELL_LABEL_WAKE_FOAM;
-    };
     const std::uint16_t sa = wide.semantic[a], sb = wide.semantic[b];
     return std::isfinite(wide.range_m[b]) && wide.instance[a] == wide.instance[b] &&
-           (sa == sb || (isWater(sa) && isWater(sb)));
+           (sa == sb || (isSeaClass(sa) && isSeaClass(sb)) || (isGroundClass(sa) && isGroundClass(sb)));
 }
 
 // The range along the ray through s (the pinhole frame's pixels, continuous)

@@ -179,6 +179,18 @@ SWELL_API std::string objectClassOf(const SceneObject& object);
 // The class names of a scene: the fixed ones, then each object class once.
 SWELL_API std::vector<std::string> labelClassesOf(const Scene& scene);
 
+// Whether a semantic class is the sea's surface (the water and its foam,
+// the surf's included) or the ground it meets (the terrain, wet or dry).
+inline bool isSeaClass(std::uint16_t semantic)
+{
+    return semantic == SWELL_LABEL_WATER || semantic == SWELL_LABEL_WHITECAP_FOAM ||
+           semantic == SWELL_LABEL_WAKE_FOAM || semantic == SWELL_LABEL_SURF;
+}
+inline bool isGroundClass(std::uint16_t semantic)
+{
+    return semantic == SWELL_LABEL_TERRAIN || semantic == SWELL_LABEL_WET_SAND;
+}
+
 // Fills each object's visible pixels and box from the instance image.
 SWELL_API void measureObjectBoxes(FrameLabels& labels);
 
