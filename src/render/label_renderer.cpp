@@ -34,7 +34,7 @@ glm::dmat3 rayFromPixel(const Camera& camera, const glm::dmat4& view, glm::ivec2
 } // namespace
 
 void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const View& view, glm::ivec2 size,
-                             const std::vector<ObjectLabel>& objects)
+                             const std::vector<ObjectLabel>& objects, std::optional<std::size_t> alone)
 {
     Resources& resources = context.resources;
     updateLabelPrograms(resources.sources, programs_, resources.programs.flags);
@@ -67,6 +67,7 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     own.setLabels(glm::uvec2(SWELL_LABEL_TERRAIN, 0u), std::move(objectLabels));
     own.setMainPassInAir(false);
     own.setIslandTolerance(context.islandTolerance_px);
+    own.setAlone(alone);
     drawGeometry(context, pass, PassKind::Main, &own, nullptr, view);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     drawGeometry(context, pass, PassKind::WaterMask, &own, nullptr, view);
@@ -98,6 +99,7 @@ std::vector<ObjectLabel> LabelRenderer::objectLabels(RenderContext& context,
     const Scene& scene = context.scene;
     const World& world = context.resources.world;
     const std::vector<glm::dmat4> poses = context.simulation.objectTransforms();
+    const std::vector<std::optional<FloatingBody::Velocity>> velocities = context.simulation.objectVelocities();
     std::vector<ObjectLabel> objects;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         ObjectLabel o;
@@ -107,6 +109,11 @@ std::vector<ObjectLabel> LabelRenderer::objectLabels(RenderContext& context,
             std::uint16_t(std::find(classes.begin(), classes.end(), o.className) - classes.begin());
         if (i < poses.size())
             o.pose = objectPoseOf(poses[i]);
+        if (i < velocities.size() && velocities[i]) {
+            o.velocityKnown = true;
+            o.velocity_m_per_s = velocities[i]->origin_m_per_s;
+            o.angularVelocity_rad_per_s = velocities[i]->angular_rad_per_s;
+        }
         if (i < world.meshBounds_m.size() && i < poses.size()) {
             const auto& [lo, hi] = world.meshBounds_m[i];
             for (int c = 0; c < 8; ++c) {
@@ -133,6 +140,7 @@ FrameLabels LabelRenderer::draw(RenderContext& context, const Camera& camera, gl
         const HostStateScope hostState;
         drawPass(context, camera, view, size, labels.objects);
         target_.read(labels.range_m, labels.normal, labels.semantic, labels.instance);
+        measureSilhouettes(context, camera, labels);
     }
     labels.camera = calibrationOf(camera, size);
     labels.horizon = horizonOf(labels.camera);
@@ -140,6 +148,7 @@ FrameLabels LabelRenderer::draw(RenderContext& context, const Camera& camera, gl
     labels.trueHorizonDip_deg = glm::degrees(horizonDip_rad(eyeHeight_m));
     labels.trueHorizon_px = trueHorizonOf(labels.camera, eyeHeight_m);
     measureObjectBoxes(labels);
+    measureOcclusion(labels);
     measureShoreline(labels);
     return labels;
 }

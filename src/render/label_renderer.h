@@ -13,6 +13,7 @@
 #include "swell/dataset/labels.h"
 #include "swell/view.h"
 
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -31,8 +32,18 @@ public:
 private:
     // Each object's instance, class and 3D box at its pose.
     std::vector<ObjectLabel> objectLabels(RenderContext& context, const std::vector<std::string>& classes) const;
+    // The label pass; with `alone`, that object alone (its silhouette, over the water).
     void drawPass(RenderContext& context, const Camera& camera, const View& view, glm::ivec2 size,
-                  const std::vector<ObjectLabel>& objects);
+                  const std::vector<ObjectLabel>& objects, std::optional<std::size_t> alone = std::nullopt);
+    // Each object's silhouette drawn alone (label_silhouettes.cpp): the
+    // amodal masks, and each object's truncation and silhouettePixels.
+    void measureSilhouettes(RenderContext& context, const Camera& camera, FrameLabels& labels);
+    // Object k's silhouette over a field three times the image's width and
+    // height, centred on it: its pixels there, and those inside the image.
+    struct Silhouette {
+        long long total = 0, inImage = 0;
+    };
+    Silhouette wideSilhouette(RenderContext& context, const Camera& camera, const FrameLabels& labels, std::size_t k);
 
     // Built when first asked for and again where the colour programs' flags change.
     std::optional<LabelPrograms> programs_;
