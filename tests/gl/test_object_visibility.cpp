@@ -14,6 +14,7 @@
 #include "support/open_sea.h"
 #include "support/projected_mask.h"
 #include "swell/dataset/labels.h"
+#include "swell/dataset/sensor.h"
 #include "swell/renderer.h"
 #include "swell/scene/scene.h"
 
@@ -116,6 +117,67 @@ TEST_F(ObjectVisibility, ABoatHalfOutOfTheImageHasItsMeshsTruncation)
     EXPECT_EQ(o.occlusion, 0.0);
     EXPECT_EQ(o.amodalPixels, o.visiblePixels);
     std::printf("truncation %.4f, the mesh's %.4f (%lld of %lld pixels inside)\n", o.truncation, truncated, inside, total);
+}
+
+// Through a lens (renderSensorFrame): the masks are resampled as the
+// instance image is, so the amodal mask still holds the visible pixels, and
+// the truncation is the share of the silhouette whose rays the distorted
+// image does not show: against the mesh rasterised on the CPU over a
+// pinhole canvas three images wide and high at the output's focal length,
+// each covered pixel's ray put through the lens, within 0.02 (the label
+// pass's pinhole frame samples the silhouette 1.5 times as finely).
+TEST_F(ObjectVisibility, ThroughALensTheTruncationIsOfTheRaysTheImageShows)
+{
+    swell::Scene scene = swell::test::openSea();
+    scene.objects = {boatAt({0.0, 4.0, -12.0}, 10.0)};
+    scene.camera.fovY_deg = 50.0;
+    scene.camera.distortionK1 = -0.15;
+    swell::Renderer renderer(scene);
+    swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    camera.position_m = glm::dvec3(7.5, 5.0, 0.0);
+    camera.yaw_deg = 0.0;
+    camera.pitch_deg = -3.0;
+    const glm::ivec2 size(320, 240);
+    const swell::SensorFrame frame = swell::renderSensorFrame(renderer, camera, 2.0, size, true);
+    ASSERT_TRUE(frame.labels.has_value());
+    const swell::FrameLabels& labels = *frame.labels;
+    ASSERT_EQ(labels.objects.size(), 1u);
+    const swell::ObjectLabel& o = labels.objects[0];
+    long long visibleOutside = 0;
+    for (std::size_t i = 0; i < labels.instance.size(); ++i)
+        visibleOutside += labels.instance[i] == o.instance && labels.amodal[i] == 0;
+    EXPECT_EQ(visibleOutside, 0) << "visible pixels outside the amodal mask";
+    EXPECT_GT(o.amodalPixels, 500);
+
+    swell::CameraCalibration canvas = labels.camera;
+    canvas.k1 = canvas.k2 = canvas.k3 = canvas.p1 = canvas.p2 = 0.0;
+    canvas.size = 3 * size;
+    canvas.cx_px += size.x;
+    canvas.cy_px += size.y;
+    const std::vector<bool> mesh =
+        swell::test::projectedMask(swell::detail::makeBuiltinModel("boat"), o.pose.worldFromObject, canvas);
+    const swell::LensDistortion lens{labels.camera.k1, labels.camera.k2, labels.camera.k3, labels.camera.p1,
+                                     labels.camera.p2};
+    long long total = 0, shown = 0;
+    for (int y = 0; y < canvas.size.y; ++y)
+        for (int x = 0; x < canvas.size.x; ++x) {
+            if (!mesh[std::size_t(y) * std::size_t(canvas.size.x) + std::size_t(x)])
+                continue;
+            ++total;
+            const glm::dvec2 u((x + 0.5 - canvas.cx_px) / canvas.fx_px, (y + 0.5 - canvas.cy_px) / canvas.fy_px);
+            if (!swell::insideFold(lens, u))
+                continue;
+            const glm::dvec2 d = swell::distort(lens, u);
+            const double px = labels.camera.fx_px * d.x + labels.camera.cx_px,
+                         py = labels.camera.fy_px * d.y + labels.camera.cy_px;
+            shown += px >= 0.0 && py >= 0.0 && px < size.x && py < size.y;
+        }
+    ASSERT_GT(total, 1000);
+    const double truncated = 1.0 - double(shown) / double(total);
+    EXPECT_GT(truncated, 0.2) << "the boat is not partly out of the image";
+    EXPECT_LT(truncated, 0.8);
+    EXPECT_NEAR(o.truncation, truncated, 0.02);
+    std::printf("through the lens: truncation %.4f, the mesh's %.4f\n", o.truncation, truncated);
 }
 
 } // namespace
