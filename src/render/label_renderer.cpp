@@ -34,7 +34,7 @@ glm::dmat3 rayFromPixel(const Camera& camera, const glm::dmat4& view, glm::ivec2
 } // namespace
 
 void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const View& view, glm::ivec2 size,
-                             const std::vector<ObjectLabel>& objects, std::optional<std::size_t> alone)
+                             const std::vector<ObjectLabel>& objects, std::optional<Alone> alone)
 {
     Resources& resources = context.resources;
     updateLabelPrograms(resources.sources, programs_, resources.programs.flags);
@@ -47,16 +47,17 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     WaterlinePass{medium}.draw(context, waterline_, v);
     glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline_.texture());
 
-    target_.resize(size);
+    LabelTarget& target = alone && alone->wide ? wideTarget_ : target_;
+    target.resize(size);
     PassState pass;
     pass.slot = PassMain;
     pass.frame = v.base;
     pass.frame.viewportOrigin = glm::vec2(0.0f);
-    pass.framebuffer = target_.framebuffer();
+    pass.framebuffer = target.framebuffer();
     pass.viewport = glm::ivec4(0, 0, size);
     pass.depth = v.depth;
     pass.begin(resources, context.telemetry);
-    target_.clear(float(v.depth.cleared));
+    target.clear(float(v.depth.cleared));
 
     // The world: the terrain, then each object with its class and instance;
     // the hulls' volumes into depth only.
@@ -67,13 +68,19 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     own.setLabels(glm::uvec2(SWELL_LABEL_TERRAIN, 0u), std::move(objectLabels));
     own.setMainPassInAir(false);
     own.setIslandTolerance(context.islandTolerance_px);
-    own.setAlone(alone);
+    own.setAlone(alone ? std::optional(alone->object) : std::nullopt);
     drawGeometry(context, pass, PassKind::Main, &own, nullptr, view);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     drawGeometry(context, pass, PassKind::WaterMask, &own, nullptr, view);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
-    // The water, then whatever no geometry covers.
+    // The water, then whatever no geometry covers; for an object alone,
+    // only where it can show (the rest keeps the clear's values).
+    if (alone) {
+        const glm::ivec4 r = alone->within_px;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(r.x, size.y - r.w, r.z - r.x, r.w - r.y);
+    }
     const glm::dmat3 rays = rayFromPixel(camera, view.view, size);
     p.water.setRayFromPixel(rays);
     p.sky.setRayFromPixel(rays);
@@ -89,6 +96,7 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++context.telemetry.counters.drawCalls;
     glDepthMask(GL_TRUE);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 std::vector<ObjectLabel> LabelRenderer::objectLabels(RenderContext& context,

@@ -9,9 +9,11 @@
 
 #include "render/view_frame.h"
 
+#include <glm/common.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace swell::detail {
 
@@ -25,6 +27,27 @@ bool inFrontOf(const CameraCalibration& camera, const ObjectLabel& object)
         if ((camera.cameraFromWorld * glm::dvec4(corner, 1.0)).z > 0.0)
             return true;
     return false;
+}
+
+// Where the object can show in an image of the calibration's size (its
+// lens left aside: the label pass is a pinhole frame): the pixels its box's
+// corners span, widened by one, clipped to the image (x0, y0, x1, y1, rows
+// top first); the whole image when a corner is behind the eye; empty
+// (x0 >= x1 or y0 >= y1) when the box lies beside the image.
+glm::ivec4 boxInImage(const CameraCalibration& camera, const ObjectLabel& object)
+{
+    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (const glm::dvec3& corner : object.box3d_m) {
+        const glm::dvec4 p = camera.cameraFromWorld * glm::dvec4(corner, 1.0);
+        if (p.z <= 0.0)
+            return glm::ivec4(0, 0, camera.size);
+        const glm::dvec2 at(camera.fx_px * p.x / p.z + camera.cx_px, camera.fy_px * p.y / p.z + camera.cy_px);
+        lo = glm::min(lo, at);
+        hi = glm::max(hi, at);
+    }
+    const glm::dvec2 from = glm::clamp(glm::floor(lo) - 1.0, glm::dvec2(0.0), glm::dvec2(camera.size));
+    const glm::dvec2 to = glm::clamp(glm::ceil(hi) + 1.0, glm::dvec2(0.0), glm::dvec2(camera.size));
+    return glm::ivec4(int(from.x), int(from.y), int(to.x), int(to.y));
 }
 
 // How many times the image's width and height the truncation is measured over.
@@ -46,7 +69,10 @@ void LabelRenderer::measureSilhouettes(RenderContext& context, const Camera& cam
         o.silhouettePixels = 0;
         if (!inFrontOf(calibration, o))
             continue;
-        drawPass(context, camera, view, size, labels.objects, k);
+        const glm::ivec4 within = boxInImage(calibration, o);
+        if (within.x >= within.z || within.y >= within.w)
+            continue; // beside the image
+        drawPass(context, camera, view, size, labels.objects, Alone{k, within});
         target_.readInstance(alone);
         std::uint8_t* mask = labels.amodal.data() + k * pixels;
         long long count = 0;
@@ -84,9 +110,10 @@ LabelRenderer::Silhouette LabelRenderer::wideSilhouette(RenderContext& context, 
     Camera wide = camera;
     wide.fovY_deg = glm::degrees(2.0 * std::atan(kWideField * std::tan(0.5 * glm::radians(camera.fovY_deg))));
     const glm::ivec2 size = kWideField * labels.size;
-    drawPass(context, wide, viewOf(wide, size), size, labels.objects, k);
+    const glm::ivec4 within = boxInImage(calibrationOf(wide, size), labels.objects[k]);
+    drawPass(context, wide, viewOf(wide, size), size, labels.objects, Alone{k, within, true});
     std::vector<std::uint16_t> alone;
-    target_.readInstance(alone);
+    wideTarget_.readInstance(alone);
     const glm::ivec2 lo = (kWideField - 1) / 2 * labels.size, hi = lo + labels.size;
     Silhouette s;
     for (int y = 0; y < size.y; ++y)
