@@ -191,7 +191,7 @@ void writeSample(const fs::path& out, int i, const Sweep& sweep, const SweepSamp
     try {
         writePngAtomically(sensor.image, png);
         if (sensor.labels)
-            writeLabelArrays(labels, png);
+            writeLabelArrays(labels, png, sample.scene.labels.worldFrame);
         writeFrameJson(json, png); // last: the sample is done
     } catch (...) {
         removeSample(out, i); // a disk that filled half way: none of the sample stays

@@ -104,7 +104,7 @@ fs::path samplePng(const fs::path& out, int index) { return out / "samples" / fm
 std::vector<fs::path> sampleFiles(const fs::path& out, int index, bool labels)
 {
     const fs::path png = samplePng(out, index);
-    std::vector<fs::path> files = labelFilePaths(png); // .range.npy ... .labels.png, .json
+    std::vector<fs::path> files = labelFilePaths(png); // .range.npy ... .labels.png, .amodal.npy, .json
     if (!labels)
         files = {files.back()};
     files.insert(files.begin(), png);
@@ -229,6 +229,9 @@ std::string sampleNotDone(const fs::path& out, int index, const Sweep& sweep, co
             return named(files[i + 1], arrays[i]);
     if (const std::string p = pngProblem(files[6], sweep.size); !p.empty())
         return named(files[6], p);
+    const int objects = json.contains("objects") && json["objects"].is_array() ? int(json["objects"].size()) : 0;
+    if (const std::string p = npyProblem(files[7], "|u1", {objects, h, w}, 1); !p.empty())
+        return named(files[7], p);
     return {};
 }
 

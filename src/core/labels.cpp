@@ -239,4 +239,17 @@ void measureObjectBoxes(FrameLabels& labels)
             o.box_px = glm::ivec4(0);
 }
 
+void measureOcclusion(FrameLabels& labels)
+{
+    const std::size_t pixels = std::size_t(labels.size.x) * std::size_t(labels.size.y);
+    for (std::size_t k = 0; k < labels.objects.size(); ++k) {
+        ObjectLabel& o = labels.objects[k];
+        o.amodalPixels = 0;
+        if ((k + 1) * pixels <= labels.amodal.size())
+            o.amodalPixels = std::count(labels.amodal.begin() + std::ptrdiff_t(k * pixels),
+                                        labels.amodal.begin() + std::ptrdiff_t((k + 1) * pixels), std::uint8_t(1));
+        o.occlusion = o.amodalPixels > 0 ? std::max(0.0, 1.0 - double(o.visiblePixels) / double(o.amodalPixels)) : 0.0;
+    }
+}
+
 } // namespace swell

@@ -232,6 +232,39 @@ check("serial", serial_run, 0, f"{count} samples to render, 0 done already")
 check_rate("serial", serial_run, serial, count)
 if not os.path.exists(os.path.join(serial, "coco.json")):
     failures.append("serial: no coco.json")
+else:
+    # Each annotation's amodal RLE decodes to its object's amodal mask and holds its visible one.
+    def decoded(rle):
+        height, width = rle["size"]
+        flat, value = [], False
+        for run_length in rle["counts"]:
+            flat += [value] * run_length
+            value = not value
+        return [[flat[x * height + y] for x in range(width)] for y in range(height)]
+
+    with open(os.path.join(serial, "coco.json")) as f:
+        coco = json.load(f)
+    checked = 0
+    for a in coco["annotations"]:
+        name = os.path.join(serial, "samples", f"{a['image_id']:06d}")
+        with open(name + ".json") as f:
+            objects = json.load(f)["objects"]
+        k = [o["instance"] for o in objects].index(a["instance"])
+        with open(name + ".amodal.npy", "rb") as f:
+            raw = f.read()
+        header = 10 + raw[8] + 256 * raw[9]
+        h, w = a["amodal_segmentation"]["size"]
+        mask = raw[header + k * h * w: header + (k + 1) * h * w]
+        amodal, visible = decoded(a["amodal_segmentation"]), decoded(a["segmentation"])
+        if any(amodal[y][x] != (mask[y * w + x] == 1) or (visible[y][x] and not amodal[y][x])
+               for y in range(h) for x in range(w)):
+            failures.append(f"serial: annotation {a['id']}'s amodal_segmentation is not its amodal mask "
+                            "or does not hold its segmentation")
+        if a["amodal_area"] != objects[k]["amodal_pixels"]:
+            failures.append(f"serial: annotation {a['id']}'s amodal_area is not its object's amodal_pixels")
+        checked += 1
+    if checked == 0:
+        failures.append("serial: coco.json has no annotation to check the amodal masks on")
 sharded = os.path.join(work, "sharded")
 first_shard = run(sweep, "--out", sharded, "--shard", "1/2")
 check("shard 1/2", first_shard, 0, "6 samples to render")
