@@ -1,4 +1,5 @@
 // World geometry: Phong diffuse from the sun, the sky's ambient light, fog.
+#include "swell/gpu/label_classes.h"
 #include "swell/gpu/variants.h"
 #include "frame.glsl"
 #include "fog.glsl"
@@ -33,7 +34,16 @@ void main()
     if (!gl_FrontFacing)
         n = -n;
 #if SWELL_LABEL_PASS
-    writeLabels(distance(vPosition, eyePosition), n, label.x, label.y);
+    // The ground the swash wets, where it is at least half wet (its sand
+    // is drawn darker there, below); and the beach below the still water
+    // level that a trough leaves bare, which the water has only just left
+    // (the shading keeps its dry albedo, as it does the floor seen through
+    // the shallows, whose colour is the water's own numbers).
+    uint semantic = label.x;
+    float wetness = vPosition.y < 0.0 && n.y >= 0.7 ? 1.0 : swashWetness(vPosition.y, n);
+    if (semantic == SWELL_LABEL_TERRAIN && swashWets * wetness >= SWELL_LABEL_WET_SAND_WETNESS)
+        semantic = SWELL_LABEL_WET_SAND;
+    writeLabels(distance(vPosition, eyePosition), n, semantic, label.y);
     return;
 #endif
     vec3 ambient = max(skyAmbient(n), vec3(0.0));

@@ -174,11 +174,16 @@ void main()
 #else
     float pointSourceFoam = 0.0;
 #endif
-    // The surf's whitewater is the waves' breaking, as the whitecaps are.
-    pointFoam = max(pointFoam, surfFoamAtPoint(surfFoamAmount, vRestPoint));
+    // The surf's whitewater is a class of its own: the coast's breaking,
+    // where its foam is the larger share at the point.
+    float pointSurfFoam = surfFoamAtPoint(surfFoamAmount, vRestPoint);
     uint label = SWELL_LABEL_WATER;
-    if (max(pointFoam, pointSourceFoam) >= SWELL_LABEL_FOAM_COVER)
-        label = pointSourceFoam >= pointFoam ? SWELL_LABEL_WAKE_FOAM : SWELL_LABEL_WHITECAP_FOAM;
+    if (max(max(pointFoam, pointSurfFoam), pointSourceFoam) >= SWELL_LABEL_FOAM_COVER) {
+        if (pointSourceFoam >= max(pointFoam, pointSurfFoam))
+            label = SWELL_LABEL_WAKE_FOAM;
+        else
+            label = pointSurfFoam > pointFoam ? SWELL_LABEL_SURF : SWELL_LABEL_WHITECAP_FOAM;
+    }
     writeLabels(labelRangeToPlane(vPosition, normalize(vNormal)), n, label, 0u);
     return;
 #endif

@@ -28,31 +28,40 @@ std::string readFileBytes(const fs::path& path)
 
 namespace {
 
-// A uint16 (H, W) array from an .npy file this program wrote.
-std::vector<std::uint16_t> readInstances(const fs::path& path, int width, int height)
+// The values of an .npy file this program wrote, `count` of `itemBytes` each.
+std::string npyValues(const fs::path& path, std::size_t count, std::size_t itemBytes, const char* what)
 {
     const std::string bytes = readFileBytes(path);
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
     if (bytes.size() < 10 || bytes.compare(0, 6, "\x93NUMPY") != 0)
         throw Error(fmt::format("{} is not an .npy file", path.string()));
     const std::size_t header = 10 + std::size_t(std::uint8_t(bytes[8])) + 256 * std::size_t(std::uint8_t(bytes[9]));
-    if (bytes.size() != header + 2 * pixels)
-        throw Error(fmt::format("{} does not hold {}x{} uint16 values", path.string(), width, height));
-    std::vector<std::uint16_t> values(pixels);
-    std::memcpy(values.data(), bytes.data() + header, 2 * pixels);
-    return values;
+    if (bytes.size() != header + itemBytes * count)
+        throw Error(fmt::format("{} does not hold {}", path.string(), what));
+    return bytes.substr(header);
 }
 
-// COCO's uncompressed RLE of one instance's mask: run lengths alternating
-// from "not in it", over the pixels in column-major order.
-Json runLengths(const std::vector<std::uint16_t>& instances, int width, int height, std::uint16_t instance)
+// A uint16 (H, W) array from an .npy file this program wrote.
+std::vector<std::uint16_t> readInstances(const fs::path& path, int width, int height)
+{
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    const std::string values = npyValues(path, pixels, 2, fmt::format("{}x{} uint16 values", width, height).c_str());
+    std::vector<std::uint16_t> instances(pixels);
+    std::memcpy(instances.data(), values.data(), 2 * pixels);
+    return instances;
+}
+
+// COCO's uncompressed RLE of a mask (inMask(i): whether pixel i, rows top
+// first, is in it): run lengths alternating from "not in it", over the
+// pixels in column-major order.
+template <typename InMask>
+Json runLengths(int width, int height, InMask inMask)
 {
     Json counts = Json::array();
     bool inside = false;
     long long run = 0;
     for (int x = 0; x < width; ++x)
         for (int y = 0; y < height; ++y) {
-            const bool here = instances[std::size_t(y) * std::size_t(width) + std::size_t(x)] == instance;
+            const bool here = inMask(std::size_t(y) * std::size_t(width) + std::size_t(x));
             if (here != inside) {
                 counts.push_back(run);
                 run = 0;
@@ -81,9 +90,16 @@ void addFrame(const fs::path& png, long long imageId, Json image, Json& images, 
     if (frame["objects"].empty())
         return;
     const std::vector<std::uint16_t> instances = readInstances(files[3], width, height);
-    for (const Json& o : frame["objects"]) {
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    // Each object's amodal mask (label_files.h: .amodal.npy, (N, H, W), the JSON's order).
+    const std::string amodal = npyValues(files[6], frame["objects"].size() * pixels, 1, "a mask per object of the JSON");
+    for (std::size_t k = 0; k < frame["objects"].size(); ++k) {
+        const Json& o = frame["objects"][k];
         if (o["visible_pixels"].get<long long>() == 0)
             continue;
+        const std::uint16_t id = o["instance"].get<std::uint16_t>();
+        const auto visible = [&](std::size_t p) { return instances[p] == id; };
+        const auto hiddenOrNot = [&](std::size_t p) { return amodal[k * pixels + p] != 0; };
         const int x0 = o["box_px"][0], y0 = o["box_px"][1], x1 = o["box_px"][2], y1 = o["box_px"][3];
         annotations.push_back({{"id", nextId++},
                                {"image_id", imageId},
@@ -92,7 +108,11 @@ void addFrame(const fs::path& png, long long imageId, Json image, Json& images, 
                                {"bbox", {x0, y0, x1 - x0, y1 - y0}},
                                {"area", o["visible_pixels"]},
                                {"iscrowd", 0},
-                               {"segmentation", runLengths(instances, width, height, o["instance"].get<std::uint16_t>())}});
+                               {"segmentation", runLengths(width, height, visible)},
+                               {"amodal_segmentation", runLengths(width, height, hiddenOrNot)},
+                               {"amodal_area", o["amodal_pixels"]},
+                               {"occlusion", o["occlusion"]},
+                               {"truncation", o["truncation"]}});
     }
 }
 

@@ -208,7 +208,7 @@ void writeFrame(const fs::path& out, int i, const Sweep& sweep, const SweepSampl
     try {
         writePngAtomically(f.sensor.image, png);
         if (f.sensor.labels)
-            writeLabelArrays(labels, png);
+            writeLabelArrays(labels, png, sample.scene.labels.worldFrame);
         if (flow)
             writeFlowFiles(*flow, png);
         writeFrameJson(json, png); // last: the frame is done

@@ -115,7 +115,7 @@ fs::path framePng(const fs::path& out, int index, const Sweep& sweep, int frame)
 std::vector<fs::path> frameFiles(const fs::path& out, int index, const Sweep& sweep, int frame)
 {
     const fs::path png = framePng(out, index, sweep, frame);
-    std::vector<fs::path> files = labelFilePaths(png); // .range.npy ... .labels.png, .json
+    std::vector<fs::path> files = labelFilePaths(png); // .range.npy ... .labels.png, .amodal.npy, .json
     if (!sweep.labels)
         files = {files.back()};
     else if (sweep.clip)
@@ -256,13 +256,18 @@ std::string frameNotDone(const fs::path& out, int index, const Sweep& sweep, con
             return named(files[i + 1], arrays[i]);
     if (const std::string p = pngProblem(files[6], sweep.size); !p.empty())
         return named(files[6], p);
+    const int objects = json.contains("objects") && json["objects"].is_array() ? int(json["objects"].size()) : 0;
+    if (const std::string p = npyProblem(files[7], "|u1", {objects, h, w}, 1); !p.empty())
+        return named(files[7], p);
     if (!sweep.clip)
         return {};
-    const std::array<std::string, 2> flow = {npyProblem(files[7], "<f4", {h, w, 2}, 4),
-                                             npyProblem(files[8], "|u1", {h, w}, 1)};
+    // A clip frame's flow: its two files, just before the JSON (frameFiles()).
+    const std::size_t flowFile = files.size() - 3;
+    const std::array<std::string, 2> flow = {npyProblem(files[flowFile], "<f4", {h, w, 2}, 4),
+                                             npyProblem(files[flowFile + 1], "|u1", {h, w}, 1)};
     for (std::size_t i = 0; i < flow.size(); ++i)
         if (!flow[i].empty())
-            return named(files[i + 7], flow[i]);
+            return named(files[flowFile + i], flow[i]);
     return {};
 }
 

@@ -1,5 +1,9 @@
 #include "label_files.h"
 
+#include "label_kitti.h"
+#include "label_object_json.h"
+#include "label_world_frame.h"
+
 #include "swell/dataset/atomic_file.h"
 #include "swell/image.h"
 #include "swell/scene/spectrum.h"
@@ -47,6 +51,8 @@ std::array<std::uint8_t, 3> previewColour(std::uint16_t semantic, std::uint16_t 
     case SWELL_LABEL_WHITECAP_FOAM: return {240, 240, 240};
     case SWELL_LABEL_WAKE_FOAM: return {250, 200, 60};
     case SWELL_LABEL_TERRAIN: return {110, 90, 60};
+    case SWELL_LABEL_SURF: return {170, 240, 235};
+    case SWELL_LABEL_WET_SAND: return {70, 55, 35};
     default: break;
     }
     // Golden-angle hues: neighbouring ids far apart.
@@ -99,11 +105,13 @@ std::vector<fs::path> labelFilePaths(const fs::path& colour)
 {
     return {besides(colour, ".range.npy"),    besides(colour, ".normal.npy"), besides(colour, ".semantic.npy"),
             besides(colour, ".instance.npy"), besides(colour, ".depth.npy"),  besides(colour, ".labels.png"),
+            besides(colour, ".amodal.npy"),   besides(colour, ".kitti.txt"),  besides(colour, ".kitti_calib.txt"),
             besides(colour, ".json")};
 }
 
-void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
+void writeLabelArrays(const FrameLabels& swellLabels, const fs::path& colour, LabelWorldFrame frame)
 {
+    const FrameLabels labels = inWorldFrame(swellLabels, frame);
     const std::vector<fs::path> paths = labelFilePaths(colour);
     const int w = labels.size.x, h = labels.size.y;
     const std::size_t pixels = std::size_t(w) * std::size_t(h);
@@ -125,6 +133,12 @@ void writeLabelArrays(const FrameLabels& labels, const fs::path& colour)
         preview.rgba[4 * i + 3] = 255;
     }
     writePngAtomically(preview, paths[5]);
+    // Each object's amodal mask, in the JSON's object order: (N, H, W).
+    writeFileAtomically(paths[6], npyBytes(labels.amodal.data(), labels.amodal.size(), "|u1",
+                                           {int(labels.objects.size()), h, w}));
+    const glm::dvec3 up = frameFromSwell(frame) * glm::dvec3(0.0, 1.0, 0.0);
+    writeFileAtomically(paths[7], kittiLabels(labels, up));
+    writeFileAtomically(paths[8], kittiCalibration(labels, up));
 }
 
 namespace {
@@ -148,11 +162,13 @@ Json poseJson(const ObjectPose& p, const CameraCalibration& c)
 
 } // namespace
 
-Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
+Json frameJson(const FrameLabels& swellLabels, const Scene& scene, double time_s, double significantHeight_m,
                const fs::path& colour)
 {
+    const FrameLabels labels = inWorldFrame(swellLabels, scene.labels.worldFrame);
     Json j;
     j["image"] = colour.filename().string();
+    j["world_frame"] = worldFrameName(scene.labels.worldFrame);
     j["size"] = {labels.size.x, labels.size.y};
     j["time_s"] = time_s;
     const CameraCalibration& c = labels.camera;
@@ -212,7 +228,11 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
                            {"visible_pixels", o.visiblePixels},
                            {"box_px", {o.box_px.x, o.box_px.y, o.box_px.z, o.box_px.w}},
                            {"box3d_m", box3d},
-                           {"pose", poseJson(o.pose, c)}});
+                           {"pose", poseJson(o.pose, c)},
+                           {"velocity", velocityJson(o, c)},
+                           {"amodal_pixels", o.amodalPixels},
+                           {"occlusion", o.occlusion},
+                           {"truncation", o.truncation}});
     }
     j["objects"] = objects;
     Json sea = {{"level_m", scene.sea.level_m}, {"significant_wave_height_m", significantHeight_m}};
@@ -228,9 +248,10 @@ Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, dou
         if (parts.size() > 1)
             sea["swell_peak_period_s"] = 2.0 * 3.14159265358979323846 / parts[1].spectrum.peakFrequency_radps;
     }
-    const glm::dvec3 sun = glm::normalize(scene.sun.direction);
+    const glm::dvec3 sunInSwell = glm::normalize(scene.sun.direction);
+    const glm::dvec3 sun = frameFromSwell(scene.labels.worldFrame) * sunInSwell;
     sea["sun_direction"] = {sun.x, sun.y, sun.z};
-    sea["sun_elevation_deg"] = glm::degrees(std::asin(sun.y));
+    sea["sun_elevation_deg"] = glm::degrees(std::asin(sunInSwell.y));
     j["sea"] = sea;
     return j;
 }
@@ -243,7 +264,7 @@ void writeFrameJson(const Json& json, const fs::path& colour)
 void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
                      const fs::path& colour)
 {
-    writeLabelArrays(labels, colour);
+    writeLabelArrays(labels, colour, scene.labels.worldFrame);
     writeFrameJson(frameJson(labels, scene, time_s, significantHeight_m, colour), colour);
 }
 

@@ -6,6 +6,9 @@
 //   NAME.instance.npy  uint16 (H, W): 0, or an object's instance id
 //   NAME.depth.npy     float32 (H, W): z-depth, metres along the optical axis; inf: sky
 //   NAME.labels.png    the classes and instances in colour, for people
+//   NAME.amodal.npy    uint8 (N, H, W): each object's amodal mask, in NAME.json's object order
+//   NAME.kitti.txt     the objects as KITTI's 3D boxes (label_kitti.h)
+//   NAME.kitti_calib.txt  the calibration that projects them (KITTI's calib file)
 //   NAME.json          camera, horizon, objects and their boxes, sea state
 // (docs/LABELS.md describes each field.)
 #pragma once
@@ -31,9 +34,12 @@ using Json = nlohmann::ordered_json;
 // height drawn, m.
 void writeLabelFiles(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
                      const std::filesystem::path& colour);
-// The arrays and the preview alone.
-void writeLabelArrays(const FrameLabels& labels, const std::filesystem::path& colour);
-// The JSON's content (camera, horizon, classes, objects, sea), and writing it.
+// The arrays and the preview alone, the world's normals and the KITTI
+// files' world in `frame`'s axes (scene.labels.world_frame).
+void writeLabelArrays(const FrameLabels& labels, const std::filesystem::path& colour,
+                      LabelWorldFrame frame = LabelWorldFrame::Swell);
+// The JSON's content (camera, horizon, classes, objects, sea; its world
+// quantities in the axes of scene.labels.world_frame), and writing it.
 Json frameJson(const FrameLabels& labels, const Scene& scene, double time_s, double significantHeight_m,
                const std::filesystem::path& colour);
 void writeFrameJson(const Json& json, const std::filesystem::path& colour);

@@ -214,9 +214,9 @@ int main(int argc, char** argv)
         ->capture_default_str();
     renderCommand->add_flag("--labels", render.labels,
                             "Also write each frame's ground truth beside its PNG: NAME.range.npy, NAME.normal.npy, "
-                            "NAME.semantic.npy, NAME.instance.npy, NAME.depth.npy, NAME.labels.png and NAME.json, "
-                            "and its optical flow to the next frame (one --fps interval on): NAME.flow.npy and "
-                            "NAME.flow_valid.npy (docs/LABELS.md)");
+                            "NAME.semantic.npy, NAME.instance.npy, NAME.depth.npy, NAME.labels.png, NAME.amodal.npy, "
+                            "NAME.kitti.txt, NAME.kitti_calib.txt and NAME.json, and its optical flow to the next "
+                            "frame (one --fps interval on): NAME.flow.npy and NAME.flow_valid.npy (docs/LABELS.md)");
     addOutputOptions(*renderCommand, render.outputSettings);
 
     swell::app::BenchOptions bench;

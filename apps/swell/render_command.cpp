@@ -129,7 +129,7 @@ void writeLabelsWithFlow(const PendingLabels& frame, const FrameLabels& next, do
 {
     const FrameFlow flow = opticalFlowOf(frame.labels, frame.time_s, next, interval_s,
                                          seaMotionOf(renderer.scene(), renderer.waveModel()));
-    writeLabelArrays(frame.labels, frame.colour);
+    writeLabelArrays(frame.labels, frame.colour, renderer.scene().labels.worldFrame);
     writeFlowFiles(flow, frame.colour);
     Json json = frameJson(frame.labels, renderer.scene(), frame.time_s,
                           4.0 * renderer.waveModel().heightDeviation_m(), frame.colour);

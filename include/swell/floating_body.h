@@ -160,6 +160,18 @@ public:
         glm::dvec3 velocity_m_per_s{0.0};
     };
     PointMotion pointAt(glm::dvec3 shapePoint_m) const;
+    // How the shape's origin and axes move at time_s, world frame, once
+    // poseAt(time_s) has stepped there (the state brackets time_s): the
+    // origin's velocity, m/s, and the angular velocity, rad/s. The state's
+    // own velocities: a semi-implicit Euler step moves the state with the
+    // velocities it ends with, so over the step poseAt() interpolates
+    // within they are the drawn pose's derivative (exactly for the centre of
+    // mass, to first order in the step for the turn slerp takes).
+    struct Velocity {
+        glm::dvec3 origin_m_per_s{0.0};
+        glm::dvec3 angular_rad_per_s{0.0};
+    };
+    Velocity velocityAt(double time_s) const;
     // The water the steps float the body on at world x, z near it (within
     // its reach of the centre of mass), at the last step: its height, m, and
     // how fast it rises there, m/s (the samples' interpolation in time the

@@ -29,6 +29,8 @@ PyLabels toPython(FrameLabels&& labels)
     out.normal = arrayOwning<float>(std::move(labels.normal), {labels.size.y, labels.size.x, 3});
     out.semantic = arrayOwning<std::uint16_t>(std::move(labels.semantic), shape);
     out.instance = arrayOwning<std::uint16_t>(std::move(labels.instance), shape);
+    out.amodal = arrayOwning<std::uint8_t>(std::move(labels.amodal),
+                                           {py::ssize_t(labels.objects.size()), labels.size.y, labels.size.x});
     out.classes = std::move(labels.classes);
     out.objects = std::move(labels.objects);
     out.camera = labels.camera;
@@ -149,6 +151,24 @@ void bindLabels(py::module_& m)
         .def_property_readonly("heading_deg", [](const ObjectLabel& o) { return o.pose.heading_deg; },
                                "The bearing of its model's +x axis, from -z towards +x, 0..360 degrees.")
         .def_property_readonly("scale", [](const ObjectLabel& o) { return o.pose.scale; }, "Its uniform scale.")
+        .def_readonly("amodal_pixels", &ObjectLabel::amodalPixels,
+                      "How many pixels its silhouette (Labels.amodal) covers in the image, hidden or not.")
+        .def_readonly("occlusion", &ObjectLabel::occlusion,
+                      "The share of its silhouette's pixels in the image that something nearer hides, 0..1.")
+        .def_readonly("truncation", &ObjectLabel::truncation,
+                      "The share of its whole silhouette outside the image, 0..1 (1 when none of it is in the image).")
+        .def_property_readonly(
+            "velocity_mps",
+            [](const ObjectLabel& o) { return o.velocityKnown ? py::object(toArray(o.velocity_m_per_s)) : py::none(); },
+            "(3,): its model origin's velocity, world axes, m/s (a rigid body's from the simulation's state, a fixed "
+            "object's 0); None for an object that rides the water without being a rigid body.")
+        .def_property_readonly(
+            "angular_velocity_radps",
+            [](const ObjectLabel& o) {
+                return o.velocityKnown ? py::object(toArray(o.angularVelocity_rad_per_s)) : py::none();
+            },
+            "(3,): its angular velocity, world axes, rad/s (the axis it turns about, right-handed, its length the "
+            "rate); None where velocity_mps is.")
         .def("__repr__", [](const ObjectLabel& o) {
             return "<swell.ObjectLabel " + std::to_string(o.instance) + " " + o.className + ", "
                    + std::to_string(o.visiblePixels) + " px>";
@@ -169,6 +189,9 @@ void bindLabels(py::module_& m)
                       "uint16 (H, W): the class id (classes[id]): 1 sky, 2 water, 3 whitecap foam, 4 wake foam, "
                       "5 terrain, 16 and up the objects' classes.")
         .def_readonly("instance", &PyLabels::instance, "uint16 (H, W): 0, or the instance id of the object shown.")
+        .def_readonly("amodal", &PyLabels::amodal,
+                      "uint8 (N, H, W): objects[k]'s amodal mask at [k]: 1 where its silhouette (the object drawn "
+                      "alone, over the water) covers the pixel, hidden or not.")
         .def_readonly("classes", &PyLabels::classes, "Each class id's name ('' where none).")
         .def_readonly("objects", &PyLabels::objects, "Every scene object's ObjectLabel, in the scene's order.")
         .def_readonly("camera", &PyLabels::camera, "The Calibration of this frame.")
@@ -216,6 +239,8 @@ void bindLabels(py::module_& m)
     m.attr("CLASS_WHITECAP_FOAM") = SWELL_LABEL_WHITECAP_FOAM;
     m.attr("CLASS_WAKE_FOAM") = SWELL_LABEL_WAKE_FOAM;
     m.attr("CLASS_TERRAIN") = SWELL_LABEL_TERRAIN;
+    m.attr("CLASS_SURF") = SWELL_LABEL_SURF;
+    m.attr("CLASS_WET_SAND") = SWELL_LABEL_WET_SAND;
     m.attr("CLASS_FIRST_OBJECT") = SWELL_LABEL_FIRST_OBJECT_CLASS;
 
     m.def("calibration_of", [](const Camera& camera, py::handle size) { return calibrationOf(camera, imageSize(size)); },

@@ -21,6 +21,7 @@ struct PyLabels {
     pybind11::array_t<float> normal;          // (H, W, 3)
     pybind11::array_t<std::uint16_t> semantic; // (H, W)
     pybind11::array_t<std::uint16_t> instance; // (H, W)
+    pybind11::array_t<std::uint8_t> amodal;    // (N, H, W): each object's amodal mask
     std::vector<std::string> classes;
     std::vector<ObjectLabel> objects;
     CameraCalibration camera;

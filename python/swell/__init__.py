@@ -51,9 +51,11 @@ from ._swell import (
     CLASS_FIRST_OBJECT,
     CLASS_NONE,
     CLASS_SKY,
+    CLASS_SURF,
     CLASS_TERRAIN,
     CLASS_WAKE_FOAM,
     CLASS_WATER,
+    CLASS_WET_SAND,
     CLASS_WHITECAP_FOAM,
     Calibration,
     Camera,
@@ -77,8 +79,8 @@ from ._swell import (
 )
 
 __all__ = [
-    "CLASS_FIRST_OBJECT", "CLASS_NONE", "CLASS_SKY", "CLASS_TERRAIN", "CLASS_WAKE_FOAM", "CLASS_WATER",
-    "CLASS_WHITECAP_FOAM",
+    "CLASS_FIRST_OBJECT", "CLASS_NONE", "CLASS_SKY", "CLASS_SURF", "CLASS_TERRAIN", "CLASS_WAKE_FOAM",
+    "CLASS_WATER", "CLASS_WET_SAND", "CLASS_WHITECAP_FOAM",
     "Calibration", "Camera", "DrawnSurface", "Error", "Horizon", "InputError", "Labels", "ObjectLabel",
     "Renderer", "Scene", "calibration_of", "default_scene", "horizon_of", "load", "load_scene", "parameter",
     "parameter_keys", "parse_scene", "preset_names", "presets_folder", "read_image", "write_png",

@@ -207,6 +207,8 @@ std::vector<std::string> labelClassesOf(const Scene& scene)
     classes[SWELL_LABEL_WHITECAP_FOAM] = "whitecap_foam";
     classes[SWELL_LABEL_WAKE_FOAM] = "wake_foam";
     classes[SWELL_LABEL_TERRAIN] = "terrain";
+    classes[SWELL_LABEL_SURF] = "surf";
+    classes[SWELL_LABEL_WET_SAND] = "wet_sand";
     for (const SceneObject& object : scene.objects) {
         const std::string name = objectClassOf(object);
         if (std::find(classes.begin() + SWELL_LABEL_FIRST_OBJECT_CLASS, classes.end(), name) == classes.end())
@@ -235,6 +237,19 @@ void measureObjectBoxes(FrameLabels& labels)
     for (ObjectLabel& o : labels.objects)
         if (o.visiblePixels == 0)
             o.box_px = glm::ivec4(0);
+}
+
+void measureOcclusion(FrameLabels& labels)
+{
+    const std::size_t pixels = std::size_t(labels.size.x) * std::size_t(labels.size.y);
+    for (std::size_t k = 0; k < labels.objects.size(); ++k) {
+        ObjectLabel& o = labels.objects[k];
+        o.amodalPixels = 0;
+        if ((k + 1) * pixels <= labels.amodal.size())
+            o.amodalPixels = std::count(labels.amodal.begin() + std::ptrdiff_t(k * pixels),
+                                        labels.amodal.begin() + std::ptrdiff_t((k + 1) * pixels), std::uint8_t(1));
+        o.occlusion = o.amodalPixels > 0 ? std::max(0.0, 1.0 - double(o.visiblePixels) / double(o.amodalPixels)) : 0.0;
+    }
 }
 
 } // namespace swell

@@ -49,6 +49,10 @@ static_assert(static_cast<int>(DebugView::Shaded) == SWELL_VIEW_SHADED && static
               && static_cast<int>(DebugView::Refraction) == SWELL_VIEW_REFRACTION
               && static_cast<int>(DebugView::Lod) == SWELL_VIEW_LOD && static_cast<int>(DebugView::Wireframe) == SWELL_VIEW_WIREFRAME);
 
+constexpr std::array<std::string_view, 3> kLabelWorldFrames{"swell", "enu", "ned"};
+static_assert(static_cast<int>(LabelWorldFrame::Swell) == 0 && static_cast<int>(LabelWorldFrame::Enu) == 1
+              && static_cast<int>(LabelWorldFrame::Ned) == 2);
+
 constexpr std::array<std::string_view, 3> kAntialiasing{"off", "msaa4", "fxaa"};
 static_assert(static_cast<int>(Antialiasing::Off) == 0 && static_cast<int>(Antialiasing::Msaa4) == 1
               && static_cast<int>(Antialiasing::Fxaa) == 2);
@@ -464,6 +468,13 @@ std::vector<Parameter> buildTable()
            {.key = "camera.path.roll_deg", .list = L::CameraPath, .unit = "deg", .min = -180.0, .max = 180.0,
             .sliderMin = -180.0, .sliderMax = 180.0,
             .description = "about the view direction: + banks right (the horizon turns counter-clockwise)"}),
+        // [labels]
+        at([](auto& s, std::size_t) -> auto& { return s.labels.worldFrame; },
+           {.key = "labels.world_frame", .kind = K::Choice, .min = 0.0, .max = kLabelWorldFrames.size() - 1.0,
+            .sliderMin = 0.0, .sliderMax = kLabelWorldFrames.size() - 1.0,
+            .description = "the axes of the labels' world quantities: swell (x east, y up, -z north), enu (east, "
+                           "north, up) or ned (north, east, down)",
+            .choices = kLabelWorldFrames}),
         // top level
         at([](auto& s, std::size_t) -> auto& { return s.debugView; },
            {.key = "debug_view", .kind = K::Choice, .effect = E::Programs, .min = 0.0, .max = kDebugViews.size() - 1.0, .sliderMin = 0.0,

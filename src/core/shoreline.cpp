@@ -18,12 +18,9 @@ namespace swell {
 
 namespace {
 
-bool isWater(std::uint16_t s)
-{
-    return s == SWELL_LABEL_WATER || s == SWELL_LABEL_WHITECAP_FOAM || s == SWELL_LABEL_WAKE_FOAM;
-}
+bool isWater(std::uint16_t s) { return isSeaClass(s); }
 
-bool isLand(std::uint16_t s) { return s == SWELL_LABEL_TERRAIN; }
+bool isLand(std::uint16_t s) { return isGroundClass(s); }
 
 // The pixel grid's corners as one index, and the sides between them.
 struct Corners {

@@ -437,4 +437,16 @@ glm::dmat4 FloatingBody::poseAt(double time_s)
            glm::translate(glm::dmat4(1.0), -centerOfMassInShape_m_);
 }
 
+FloatingBody::Velocity FloatingBody::velocityAt(double time_s) const
+{
+    const double t = std::isfinite(time_s) && time_s > 0.0 ? time_s : 0.0;
+    const double f = std::clamp(t * kBodyStepsPerSecond - double(next_.step - 1), 0.0, 1.0);
+    const glm::dquat q = glm::slerp(previous_.orientation, next_.orientation, f);
+    // The centre of mass: carried at the start's horizontal velocity, heaving at the state's.
+    const glm::dvec3 centre(start_.velocity_m_per_s.x, next_.heaveVelocity_m_per_s, start_.velocity_m_per_s.z);
+    const glm::dvec3 w = next_.angularVelocity_rad_per_s;
+    // The shape's origin stands at -centerOfMassInShape_m_ from the centre of mass, turned.
+    return {centre + glm::cross(w, q * -centerOfMassInShape_m_), w};
+}
+
 } // namespace swell

@@ -74,4 +74,21 @@ std::vector<glm::dmat4> objectPoses(const Scene& scene, const std::vector<Probed
     return poses;
 }
 
+std::vector<std::optional<FloatingBody::Velocity>> objectVelocities(const Scene& scene, const SceneBodies& bodies,
+                                                                    double time_s)
+{
+    std::vector<std::optional<FloatingBody::Velocity>> velocities;
+    velocities.reserve(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        if (std::optional<FloatingBody::Velocity> body = bodies.velocityAt(i, time_s))
+            velocities.push_back(*body);
+        else if (o.floats)
+            velocities.emplace_back(); // on the drawn water: no state of its own
+        else
+            velocities.push_back(FloatingBody::Velocity{}); // fixed
+    }
+    return velocities;
+}
+
 } // namespace swell::detail

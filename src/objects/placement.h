@@ -15,6 +15,7 @@
 #include <glm/vec2.hpp>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace swell::detail {
@@ -37,6 +38,14 @@ std::vector<glm::dvec2> floatingObjectPoints(const Scene& scene);
 // the frame's answers for floatingObjectPoints(), in its order.
 std::vector<glm::dmat4> objectPoses(const Scene& scene, const std::vector<ProbedPoint>& water, SceneBodies& bodies,
                                     double time_s);
+
+// Each object's motion at time_s (sea frame), once objectPoses() has
+// stepped the bodies there: a rigid body's from its state
+// (SceneBodies::velocityAt), a fixed object's zero; nothing for an object
+// that rides the drawn water without being a rigid body (it has no state:
+// the frame's water under it sets its pose).
+std::vector<std::optional<FloatingBody::Velocity>> objectVelocities(const Scene& scene, const SceneBodies& bodies,
+                                                                    double time_s);
 
 // An object's transform standing at position_m (sea frame), tilted by
 // `tilt`, turned by its yaw and scaled: a fixed object's at its own position.

@@ -376,6 +376,16 @@ std::optional<glm::dmat4> SceneBodies::poseAt(std::size_t i, double time_s)
     return bodies_[i]->poseAt(clock_s(time_s)) * glm::scale(glm::dmat4(1.0), glm::dvec3(scale_[i]));
 }
 
+std::optional<FloatingBody::Velocity> SceneBodies::velocityAt(std::size_t i, double time_s) const
+{
+    settle();
+    if (i >= bodies_.size() || !bodies_[i])
+        return std::nullopt;
+    if (time_s < start_s_)
+        return FloatingBody::Velocity{};
+    return bodies_[i]->velocityAt(clock_s(time_s));
+}
+
 std::int64_t SceneBodies::stepsTaken() const
 {
     settle();

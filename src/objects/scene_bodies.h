@@ -83,6 +83,11 @@ public:
     // Object i's transform from model space (scale included) to the world at
     // time_s, stepping its body there; nothing when it is not a rigid body.
     std::optional<glm::dmat4> poseAt(std::size_t i, double time_s);
+    // How object i moves at time_s, sea frame (its model origin's velocity,
+    // m/s, and its angular velocity, rad/s), once poseAt(i, time_s) has
+    // stepped it there (FloatingBody::velocityAt); zero before the bodies'
+    // start, where they wait; nothing when it is not a rigid body.
+    std::optional<FloatingBody::Velocity> velocityAt(std::size_t i, double time_s) const;
     // Integration steps taken by all bodies so far.
     std::int64_t stepsTaken() const;
 

@@ -34,7 +34,7 @@ glm::dmat3 rayFromPixel(const Camera& camera, const glm::dmat4& view, glm::ivec2
 } // namespace
 
 void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const View& view, glm::ivec2 size,
-                             const std::vector<ObjectLabel>& objects)
+                             const std::vector<ObjectLabel>& objects, std::optional<Alone> alone)
 {
     Resources& resources = context.resources;
     updateLabelPrograms(resources.sources, programs_, resources.programs.flags);
@@ -47,16 +47,17 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     WaterlinePass{medium}.draw(context, waterline_, v);
     glBindTextureUnit(SWELL_UNIT_WATERLINE, waterline_.texture());
 
-    target_.resize(size);
+    LabelTarget& target = alone && alone->wide ? wideTarget_ : target_;
+    target.resize(size);
     PassState pass;
     pass.slot = PassMain;
     pass.frame = v.base;
     pass.frame.viewportOrigin = glm::vec2(0.0f);
-    pass.framebuffer = target_.framebuffer();
+    pass.framebuffer = target.framebuffer();
     pass.viewport = glm::ivec4(0, 0, size);
     pass.depth = v.depth;
     pass.begin(resources, context.telemetry);
-    target_.clear(float(v.depth.cleared));
+    target.clear(float(v.depth.cleared));
 
     // The world: the terrain, then each object with its class and instance;
     // the hulls' volumes into depth only.
@@ -67,12 +68,19 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     own.setLabels(glm::uvec2(SWELL_LABEL_TERRAIN, 0u), std::move(objectLabels));
     own.setMainPassInAir(false);
     own.setIslandTolerance(context.islandTolerance_px);
+    own.setAlone(alone ? std::optional(alone->object) : std::nullopt);
     drawGeometry(context, pass, PassKind::Main, &own, nullptr, view);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     drawGeometry(context, pass, PassKind::WaterMask, &own, nullptr, view);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
-    // The water, then whatever no geometry covers.
+    // The water, then whatever no geometry covers; for an object alone,
+    // only where it can show (the rest keeps the clear's values).
+    if (alone) {
+        const glm::ivec4 r = alone->within_px;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(r.x, size.y - r.w, r.z - r.x, r.w - r.y);
+    }
     const glm::dmat3 rays = rayFromPixel(camera, view.view, size);
     p.water.setRayFromPixel(rays);
     p.sky.setRayFromPixel(rays);
@@ -88,6 +96,7 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++context.telemetry.counters.drawCalls;
     glDepthMask(GL_TRUE);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 std::vector<ObjectLabel> LabelRenderer::objectLabels(RenderContext& context,
@@ -98,6 +107,7 @@ std::vector<ObjectLabel> LabelRenderer::objectLabels(RenderContext& context,
     const Scene& scene = context.scene;
     const World& world = context.resources.world;
     const std::vector<glm::dmat4> poses = context.simulation.objectTransforms();
+    const std::vector<std::optional<FloatingBody::Velocity>> velocities = context.simulation.objectVelocities();
     std::vector<ObjectLabel> objects;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         ObjectLabel o;
@@ -107,6 +117,11 @@ std::vector<ObjectLabel> LabelRenderer::objectLabels(RenderContext& context,
             std::uint16_t(std::find(classes.begin(), classes.end(), o.className) - classes.begin());
         if (i < poses.size())
             o.pose = objectPoseOf(poses[i]);
+        if (i < velocities.size() && velocities[i]) {
+            o.velocityKnown = true;
+            o.velocity_m_per_s = velocities[i]->origin_m_per_s;
+            o.angularVelocity_rad_per_s = velocities[i]->angular_rad_per_s;
+        }
         if (i < world.meshBounds_m.size() && i < poses.size()) {
             const auto& [lo, hi] = world.meshBounds_m[i];
             for (int c = 0; c < 8; ++c) {
@@ -133,6 +148,7 @@ FrameLabels LabelRenderer::draw(RenderContext& context, const Camera& camera, gl
         const HostStateScope hostState;
         drawPass(context, camera, view, size, labels.objects);
         target_.read(labels.range_m, labels.normal, labels.semantic, labels.instance);
+        measureSilhouettes(context, camera, labels);
     }
     labels.camera = calibrationOf(camera, size);
     labels.horizon = horizonOf(labels.camera);
@@ -140,6 +156,7 @@ FrameLabels LabelRenderer::draw(RenderContext& context, const Camera& camera, gl
     labels.trueHorizonDip_deg = glm::degrees(horizonDip_rad(eyeHeight_m));
     labels.trueHorizon_px = trueHorizonOf(labels.camera, eyeHeight_m);
     measureObjectBoxes(labels);
+    measureOcclusion(labels);
     measureShoreline(labels);
     return labels;
 }

@@ -13,6 +13,7 @@
 #include "swell/dataset/labels.h"
 #include "swell/view.h"
 
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -31,12 +32,33 @@ public:
 private:
     // Each object's instance, class and 3D box at its pose.
     std::vector<ObjectLabel> objectLabels(RenderContext& context, const std::vector<std::string>& classes) const;
+    // One object drawn alone (its silhouette, over the water): its index,
+    // and the pixels the water and the sky are drawn on (x0, y0, x1, y1,
+    // rows top first: where its box can show; nothing can show elsewhere).
+    struct Alone {
+        std::size_t object = 0;
+        glm::ivec4 within_px{0};
+        bool wide = false; // into wideTarget_ (the truncation's wide field), not target_
+    };
+    // The label pass; with `alone`, that object alone.
     void drawPass(RenderContext& context, const Camera& camera, const View& view, glm::ivec2 size,
-                  const std::vector<ObjectLabel>& objects);
+                  const std::vector<ObjectLabel>& objects, std::optional<Alone> alone = std::nullopt);
+    // Each object's silhouette drawn alone (label_silhouettes.cpp): the
+    // amodal masks, and each object's truncation and silhouettePixels.
+    void measureSilhouettes(RenderContext& context, const Camera& camera, FrameLabels& labels);
+    // Object k's silhouette over a field three times the image's width and
+    // height, centred on it: its pixels there, and those inside the image.
+    struct Silhouette {
+        long long total = 0, inImage = 0;
+    };
+    Silhouette wideSilhouette(RenderContext& context, const Camera& camera, const FrameLabels& labels, std::size_t k);
 
     // Built when first asked for and again where the colour programs' flags change.
     std::optional<LabelPrograms> programs_;
     LabelTarget target_;
+    // The silhouettes' wide field (three times the image's width and
+    // height): kept apart, so neither target is made again each frame.
+    LabelTarget wideTarget_;
     WaterlineMask waterline_;
 };
 

@@ -29,7 +29,43 @@ void flipRows(std::vector<T>& rows, glm::ivec2 size, int perPixel)
                          rows.begin() + std::ptrdiff_t(std::size_t(size.y - 1 - y) * row));
 }
 
+// Tightly packed rows while it lives (the alignment the caller had is put back).
+class PackedRows {
+public:
+    PackedRows()
+    {
+        glGetIntegerv(GL_PACK_ALIGNMENT, &alignment_);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    }
+    ~PackedRows() { glPixelStorei(GL_PACK_ALIGNMENT, alignment_); }
+    PackedRows(const PackedRows&) = delete;
+    PackedRows& operator=(const PackedRows&) = delete;
+
+private:
+    GLint alignment_ = 4;
+};
+
 } // namespace
+
+std::vector<std::uint16_t> LabelTarget::readClassInstance() const
+{
+    std::vector<std::uint16_t> classInstance(std::size_t(size_.x) * std::size_t(size_.y) * 2);
+    {
+        const PackedRows packed;
+        glGetTextureImage(classInstance_.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_SHORT,
+                          GLsizei(classInstance.size() * sizeof(std::uint16_t)), classInstance.data());
+    }
+    flipRows(classInstance, size_, 2);
+    return classInstance;
+}
+
+void LabelTarget::readInstance(std::vector<std::uint16_t>& instance) const
+{
+    const std::vector<std::uint16_t> classInstance = readClassInstance();
+    instance.resize(classInstance.size() / 2);
+    for (std::size_t i = 0; i < instance.size(); ++i)
+        instance[i] = classInstance[2 * i + 1];
+}
 
 void LabelTarget::resize(glm::ivec2 size)
 {
@@ -67,18 +103,13 @@ void LabelTarget::read(std::vector<float>& range_m, std::vector<glm::vec3>& norm
 {
     const std::size_t pixels = std::size_t(size_.x) * std::size_t(size_.y);
     std::vector<float> rangeNormal(pixels * 4);
-    std::vector<std::uint16_t> classInstance(pixels * 2);
-    // Tightly packed rows (the alignment the caller had is put back).
-    GLint packAlignment = 4;
-    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(rangeNormal_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rangeNormal.size() * sizeof(float)),
-                      rangeNormal.data());
-    glGetTextureImage(classInstance_.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_SHORT,
-                      GLsizei(classInstance.size() * sizeof(std::uint16_t)), classInstance.data());
-    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+    {
+        const PackedRows packed;
+        glGetTextureImage(rangeNormal_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rangeNormal.size() * sizeof(float)),
+                          rangeNormal.data());
+    }
     flipRows(rangeNormal, size_, 4);
-    flipRows(classInstance, size_, 2);
+    const std::vector<std::uint16_t> classInstance = readClassInstance();
     range_m.resize(pixels);
     normal.resize(pixels);
     semantic.resize(pixels);

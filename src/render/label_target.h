@@ -23,8 +23,13 @@ public:
     // Reads the target back, rows top first.
     void read(std::vector<float>& range_m, std::vector<glm::vec3>& normal, std::vector<std::uint16_t>& semantic,
               std::vector<std::uint16_t>& instance) const;
+    // Reads the instance image alone, rows top first.
+    void readInstance(std::vector<std::uint16_t>& instance) const;
 
 private:
+    // Class and instance interleaved, rows top first.
+    std::vector<std::uint16_t> readClassInstance() const;
+
     glm::ivec2 size_{0, 0};
     gl::Framebuffer framebuffer_;
     gl::Texture rangeNormal_, classInstance_, depth_;

@@ -104,8 +104,9 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
 void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
 {
     program.use();
-    drawIsland(program, pass);
-    if (world_.seabed.indexCount() > 0) {
+    if (!alone_)
+        drawIsland(program, pass);
+    if (!alone_ && world_.seabed.indexCount() > 0) {
         program.setModel(seabed_);
         program.setLabel(islandLabel_);
         program.setSwashWets(true);
@@ -115,6 +116,8 @@ void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
     }
     program.setSwashWets(false);
     for (std::size_t i = 0; i < world_.meshes.size() && i < poses_.size(); ++i) {
+        if (!draws(i))
+            continue;
         program.setModel(poses_[i]);
         if (i < objectLabels_.size())
             program.setLabel(objectLabels_[i]);
@@ -134,7 +137,7 @@ void SceneWorld::drawHullVolumes(const MeshProgram& program)
 {
     program.use();
     for (std::size_t i = 0; i < world_.hullVolumes.size() && i < poses_.size(); ++i)
-        if (world_.hullVolumes[i]) {
+        if (world_.hullVolumes[i] && draws(i)) {
             program.setModel(poses_[i]);
             world_.hullVolumes[i]->draw();
             ++counters_.drawCalls;

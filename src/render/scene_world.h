@@ -12,6 +12,8 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace swell::detail {
@@ -33,6 +35,11 @@ public:
     void setIslandTolerance(double tolerance_px) { islandTolerance_px_ = tolerance_px; }
 
     void drawPass(const PassView& pass) override;
+
+    // For the label pass's silhouettes: draw object `index` alone (its mesh
+    // and its hull's volume; no island, sea floor or other object); empty:
+    // the whole world (the default).
+    void setAlone(std::optional<std::size_t> index) { alone_ = index; }
 
     // For the label pass (its mesh program): the island's class and
     // instance (the seabed's too: both are terrain), and each object's, set
@@ -63,6 +70,9 @@ private:
     std::vector<const void*> tileOffsets_;
     glm::uvec2 islandLabel_{0};
     std::vector<glm::uvec2> objectLabels_;
+    std::optional<std::size_t> alone_;
+
+    bool draws(std::size_t object) const { return !alone_ || *alone_ == object; }
 };
 
 } // namespace swell::detail

@@ -3,6 +3,7 @@
 
 #include "core/counter_random.h"
 #include "core/lens_fold.h"
+#include "render/sensor_silhouettes.h"
 #include "swell/error.h"
 #include "swell/gpu/label_classes.h"
 #include "swell/renderer.h"
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace swell {
 
@@ -78,12 +80,9 @@ void distortImage(const Image& wide, Image& out, const LensDistortion& lens, con
 // finite range: one object, or the water (foam or not), or the island.
 bool oneSurface(const FrameLabels& wide, std::size_t a, std::size_t b)
 {
-    auto isWater = [](std::uint16_t s) {
-        return s == SWELL_LABEL_WATER || s == SWELL_LABEL_WHITECAP_FOAM || s == SWELL_LABEL_WAKE_FOAM;
-    };
     const std::uint16_t sa = wide.semantic[a], sb = wide.semantic[b];
     return std::isfinite(wide.range_m[b]) && wide.instance[a] == wide.instance[b] &&
-           (sa == sb || (isWater(sa) && isWater(sb)));
+           (sa == sb || (isSeaClass(sa) && isSeaClass(sb)) || (isGroundClass(sa) && isGroundClass(sb)));
 }
 
 // The range along the ray through s (the pinhole frame's pixels, continuous)
@@ -142,6 +141,7 @@ FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, c
     out.normal.resize(pixels);
     out.semantic.resize(pixels);
     out.instance.resize(pixels);
+    std::vector<std::size_t> sources(pixels); // each pixel's pinhole pixel
     for (int y = 0; y < c.size.y; ++y)
         for (int x = 0; x < c.size.x; ++x) {
             // Nearest: a label is never a blend of two; the range the
@@ -155,6 +155,7 @@ FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, c
             out.normal[to] = wide.normal[from];
             out.semantic[to] = wide.semantic[from];
             out.instance[to] = wide.instance[from];
+            sources[to] = from;
         }
     out.classes = wide.classes;
     out.trueHorizonDip_deg = wide.trueHorizonDip_deg;
@@ -162,7 +163,9 @@ FrameLabels distortLabels(const FrameLabels& wide, const LensDistortion& lens, c
     out.camera = c;
     out.horizon = horizonOf(c);
     out.horizon.curve_px = horizonCurveOf(c, out.horizon);
+    detail::distortSilhouettes(wide, lens, c, detail::kPinholeScale * c.fy_px, sources, out);
     measureObjectBoxes(out);
+    measureOcclusion(out);
     measureShoreline(out);
     return out;
 }

@@ -177,6 +177,7 @@ void Simulation::answerQueries(Simulated& next, const GridPlacement& grid, const
         water.pop_back();
     }
     next.poses = objectPoses(seaScene_, water, bodies_, next.time_s);
+    next.velocities = detail::objectVelocities(seaScene_, bodies_, next.time_s);
 }
 
 std::vector<ProbedPoint> Simulation::probeWater(const std::vector<glm::dvec2>& points, const Simulated& next,
@@ -285,6 +286,19 @@ std::vector<glm::dmat4> Simulation::objectTransforms() const
         return out;
     for (const glm::dmat4& pose : simulated_->poses)
         out.push_back(sea_.worldFromSea() * pose);
+    return out;
+}
+
+std::vector<std::optional<FloatingBody::Velocity>> Simulation::objectVelocities() const
+{
+    std::vector<std::optional<FloatingBody::Velocity>> out;
+    if (!simulated_)
+        return out;
+    // The sea frame's axes are the world's turned by worldFromSea's rotation (none but a shift today).
+    const glm::dmat3 turn(sea_.worldFromSea());
+    for (const std::optional<FloatingBody::Velocity>& v : simulated_->velocities)
+        out.push_back(v ? std::optional(FloatingBody::Velocity{turn * v->origin_m_per_s, turn * v->angular_rad_per_s})
+                        : std::nullopt);
     return out;
 }
 

@@ -35,6 +35,8 @@ struct Simulated {
     glm::dvec3 viewpoint{0.0};
     // Each scene object's transform, object to sea frame (see world.h).
     std::vector<glm::dmat4> poses;
+    // Each object's motion then (objectVelocities(): sea frame; nothing where it has no state).
+    std::vector<std::optional<FloatingBody::Velocity>> velocities;
     std::shared_ptr<const WakeFrame> wake; // null when the scene has none
     // The surface sources drawn, in the programs' order: the wake's (when
     // the scene has one) and the host's.
@@ -118,6 +120,8 @@ public:
     DrawnSurface drawnSurface(glm::dvec3 eyeWorld, double time_s, const SceneShapes& shapes) const;
     DrawnSurface drawnSurface(glm::dvec3 lodViewpointWorld) const;
     std::vector<glm::dmat4> objectTransforms() const;
+    // Each object's motion at that time, world axes (objectVelocities()).
+    std::vector<std::optional<FloatingBody::Velocity>> objectVelocities() const;
     // The scene's camera at time_s, on its mount (Renderer::sceneCameraAt).
     Camera sceneCameraAt(const Scene& scene, double time_s);
 

@@ -342,7 +342,7 @@ constexpr StringKey kStringKeys[] = {
     {"`[[objects]]`", "hull_node", "a node name of the glTF file", "`\"\"`",
      "the node whose mesh is the closed hull volume: kept dry, and the body's shape"},
     {"`[[objects]]`", "class",
-     "a non-empty name, not one of the fixed classes (none, sky, water, whitecap_foam, wake_foam, terrain)",
+     "a non-empty name, not one of the fixed classes (none, sky, water, whitecap_foam, wake_foam, terrain, surf, wet_sand)",
      "the model's name",
      "its class in the labels and COCO (docs/LABELS.md): \"boat\" for \"builtin:boat\", the file's name without folder "
      "or extension for a model"},

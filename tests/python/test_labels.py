@@ -150,7 +150,8 @@ class Sensor(unittest.TestCase):
 
 
 class Shoreline(unittest.TestCase):
-    """The coast preset's shoreline: each chain's corners lie between a water and a terrain pixel, and each
+    """The coast preset's shoreline: each chain's corners lie between a water (or foam, or surf) and a terrain
+    (dry or wet) pixel, and each
     corner's water point is a touching water pixel's range along its ray."""
 
     def test_corners_lie_between_water_and_land(self):
@@ -160,8 +161,11 @@ class Shoreline(unittest.TestCase):
         renderer.render(camera, 20.0, SIZE)
         labels = renderer.render_labels(camera, SIZE)
         self.assertTrue(labels.shoreline)
-        water = np.isin(labels.semantic, [swell.CLASS_WATER, swell.CLASS_WHITECAP_FOAM, swell.CLASS_WAKE_FOAM])
-        land = labels.semantic == swell.CLASS_TERRAIN
+        water = np.isin(labels.semantic,
+                        [swell.CLASS_WATER, swell.CLASS_WHITECAP_FOAM, swell.CLASS_WAKE_FOAM, swell.CLASS_SURF])
+        land = np.isin(labels.semantic, [swell.CLASS_TERRAIN, swell.CLASS_WET_SAND])
+        self.assertTrue(np.any(labels.semantic == swell.CLASS_SURF))
+        self.assertTrue(np.any(labels.semantic == swell.CLASS_WET_SAND))
         rays = pixel_rays(labels.camera)
         eye = eye_of(labels.camera)
         w, h = SIZE

@@ -61,6 +61,13 @@ class SameAsTheExecutable(unittest.TestCase):
             self.assertEqual(ours.dtype, dtype, name)
             self.assertEqual(ours.shape, shape, name)
             np.testing.assert_array_equal(ours, np.load(self.cli(suffix + ".npy")), err_msg=name)
+        # The amodal masks, one per object: each holds the object's visible pixels.
+        amodal = self.labels.amodal
+        self.assertEqual((amodal.dtype, amodal.shape), (np.uint8, (len(self.labels.objects), h, w)))
+        np.testing.assert_array_equal(amodal, np.load(self.cli("amodal.npy")))
+        for k, o in enumerate(self.labels.objects):
+            self.assertEqual(int(amodal[k].sum()), o.amodal_pixels)
+            self.assertTrue(np.all(amodal[k][self.labels.instance == o.instance] == 1), o.class_name)
         semantic = self.labels.semantic
         for cls in [swell.CLASS_SKY, swell.CLASS_WATER, swell.CLASS_FIRST_OBJECT]:
             self.assertIn(cls, semantic, "class %d not in the frame" % cls)
@@ -91,6 +98,9 @@ class SameAsTheExecutable(unittest.TestCase):
                              (theirs["instance"], theirs["class"], theirs["class_id"], theirs["visible_pixels"],
                               theirs["box_px"]))
             np.testing.assert_array_equal(ours.box3d_m, np.array(theirs["box3d_m"]))
+            # How much of it shows.
+            self.assertEqual((ours.amodal_pixels, ours.occlusion, ours.truncation),
+                             (theirs["amodal_pixels"], theirs["occlusion"], theirs["truncation"]))
             # The pose, in world axes and in the camera's.
             pose = theirs["pose"]
             np.testing.assert_array_equal(ours.world_from_object, np.array(pose["world_from_object"]))
@@ -100,6 +110,19 @@ class SameAsTheExecutable(unittest.TestCase):
             camera_from_object = camera.camera_from_world @ ours.world_from_object
             np.testing.assert_allclose(np.array(pose["camera_from_object"]), camera_from_object, atol=1e-9)
             np.testing.assert_allclose(np.array(pose["camera_position_m"]), camera_from_object[:3, 3], atol=1e-9)
+            # The velocity, in world axes and the camera's; null (None) for an object that rides the
+            # water without being a rigid body.
+            velocity = theirs["velocity"]
+            if velocity is None:
+                self.assertIsNone(ours.velocity_mps)
+                self.assertIsNone(ours.angular_velocity_radps)
+                continue
+            np.testing.assert_array_equal(ours.velocity_mps, np.array(velocity["linear_mps"]))
+            np.testing.assert_array_equal(ours.angular_velocity_radps, np.array(velocity["angular_radps"]))
+            turn = camera.camera_from_world[:3, :3]
+            np.testing.assert_allclose(np.array(velocity["camera_linear_mps"]), turn @ ours.velocity_mps, atol=1e-12)
+            np.testing.assert_allclose(np.array(velocity["camera_angular_radps"]), turn @ ours.angular_velocity_radps,
+                                       atol=1e-12)
         # The calibration computed on the CPU for the same camera is the frame's.
         cpu = swell.calibration_of(self.camera, SIZE)
         np.testing.assert_array_equal(cpu.camera_from_world, camera.camera_from_world)

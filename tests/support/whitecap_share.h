@@ -32,7 +32,7 @@ inline double whitecapShare(const FrameLabels& labels)
     long long sea = 0, white = 0;
     for (const std::uint16_t c : labels.semantic) {
         const bool whitecap = c == SWELL_LABEL_WHITECAP_FOAM;
-        sea += whitecap || c == SWELL_LABEL_WATER || c == SWELL_LABEL_WAKE_FOAM;
+        sea += isSeaClass(c);
         white += whitecap;
     }
     return sea > 0 ? double(white) / double(sea) : 0.0;

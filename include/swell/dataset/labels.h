@@ -120,6 +120,32 @@ struct SWELL_API ObjectLabel {
     std::array<glm::dvec3, 8> box3d_m{};
     // Its pose this frame (a floating body's heave, roll and pitch included).
     ObjectPose pose;
+    // How it moves this frame, world axes: its model origin's (position_m's)
+    // velocity, m/s, and its angular velocity, rad/s (along the axis it turns
+    // about, right-handed, its length the rate). A floating rigid body's from
+    // the simulation's state (FloatingBody::velocityAt), a fixed object's
+    // zero; not known (velocityKnown false, both zero) for an object that
+    // rides the drawn water without being a rigid body (it has no state).
+    bool velocityKnown = false;
+    glm::dvec3 velocity_m_per_s{0.0};
+    glm::dvec3 angularVelocity_rad_per_s{0.0};
+    // How much of it shows. Its silhouette is the object drawn alone (the
+    // label pass with no other object, no island and no sea floor; the
+    // water's surface kept, so the hull under the waterline is no part of
+    // it): FrameLabels::amodal, amodalPixels of them in the image.
+    // occlusion: the share of those that something nearer hides, 1 -
+    // visiblePixels / amodalPixels. truncation: the share of its whole
+    // silhouette that falls outside the image, measured on a render of it
+    // alone over a field three times the image's width and height (one
+    // image past each border: a part farther out is not counted). With no
+    // silhouette pixel in the image, occlusion is 0 and truncation 1.
+    long long amodalPixels = 0;
+    double occlusion = 0.0;
+    double truncation = 0.0;
+    // The whole silhouette's pixels in the pinhole frame it was drawn in,
+    // inside the image and out (the lens's resampling measures the
+    // truncation of its own image against it).
+    long long silhouettePixels = 0;
 };
 
 // The water's edge in the image: a chain of the pixel grid's corners along
@@ -145,6 +171,10 @@ struct SWELL_API FrameLabels {
     std::vector<glm::vec3> normal; // unit, world axes; zero for the sky
     std::vector<std::uint16_t> semantic; // SWELL_LABEL_* and the objects' classes
     std::vector<std::uint16_t> instance; // 0, or an object's ObjectLabel::instance
+    // Each object's amodal mask, in the order of `objects`: 1 where its
+    // silhouette (ObjectLabel::amodalPixels) covers the pixel, hidden or
+    // not, else 0; object k's mask at [k * W * H, (k + 1) * W * H), rows top first.
+    std::vector<std::uint8_t> amodal;
     // Each semantic class's name by its value ("" where none): "none",
     // "sky", "water", "whitecap_foam", "wake_foam", "terrain", then from
     // SWELL_LABEL_FIRST_OBJECT_CLASS the objects' classes in the order they
@@ -179,8 +209,24 @@ SWELL_API std::string objectClassOf(const SceneObject& object);
 // The class names of a scene: the fixed ones, then each object class once.
 SWELL_API std::vector<std::string> labelClassesOf(const Scene& scene);
 
+// Whether a semantic class is the sea's surface (the water and its foam,
+// the surf's included) or the ground it meets (the terrain, wet or dry).
+inline bool isSeaClass(std::uint16_t semantic)
+{
+    return semantic == SWELL_LABEL_WATER || semantic == SWELL_LABEL_WHITECAP_FOAM ||
+           semantic == SWELL_LABEL_WAKE_FOAM || semantic == SWELL_LABEL_SURF;
+}
+inline bool isGroundClass(std::uint16_t semantic)
+{
+    return semantic == SWELL_LABEL_TERRAIN || semantic == SWELL_LABEL_WET_SAND;
+}
+
 // Fills each object's visible pixels and box from the instance image.
 SWELL_API void measureObjectBoxes(FrameLabels& labels);
+
+// Fills each object's amodalPixels from labels.amodal, and its occlusion
+// from them and its visiblePixels (measureObjectBoxes first).
+SWELL_API void measureOcclusion(FrameLabels& labels);
 
 // Fills labels.shoreline from the semantic image, the ranges and the
 // camera: the pixel sides between a water pixel and a land pixel, joined

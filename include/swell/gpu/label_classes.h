@@ -14,6 +14,13 @@
 #define SWELL_LABEL_WHITECAP_FOAM 3
 #define SWELL_LABEL_WAKE_FOAM 4
 #define SWELL_LABEL_TERRAIN 5
+// The coast's breaking waves' whitewater (shaders/surf.glsl): water whose
+// point is under the surf's foam, where that is more than the whitecaps'.
+#define SWELL_LABEL_SURF 6
+// The beach the swash wets (shaders/swash.glsl): terrain the sea runs up,
+// at least SWELL_LABEL_WET_SAND_WETNESS wet.
+#define SWELL_LABEL_WET_SAND 7
+#define SWELL_LABEL_WET_SAND_WETNESS 0.5
 #define SWELL_LABEL_FIRST_OBJECT_CLASS 16
 // A water pixel is labelled foam where foam covers the point its centre ray
 // meets (the foam's texture at full detail there, 1 or 0): at least this.

@@ -272,6 +272,16 @@ struct SWELL_API AssetReference {
     SourcePlace place; // where it was written
 };
 
+// The axes the labels give world quantities in (docs/LABELS.md, "World
+// frames"): Swell's own (x east, y up, z south: -z is north), or the
+// marine conventions, ENU (x east, y north, z up) and NED (x north, y
+// east, z down); all with their origin at Swell's.
+enum class LabelWorldFrame { Swell, Enu, Ned };
+
+struct SWELL_API LabelSettings {
+    LabelWorldFrame worldFrame = LabelWorldFrame::Swell;
+};
+
 struct SWELL_API Scene {
     SeaSettings sea;
     WaveSource waves;
@@ -288,6 +298,7 @@ struct SWELL_API Scene {
     // island (showTerrain) is part of the floor too (swell/scene/seabed.h).
     SeabedSettings seabed;
     CameraSettings camera;
+    LabelSettings labels;
     DebugView debugView = DebugView::Shaded;
     // Where relative object and sky paths are found: the scene file's folder
     // (set by loadScene/parseScene); empty means the working directory.
