@@ -224,6 +224,9 @@ std::vector<TermVariant> termVariants();
 
 // The pass --labels records after each frame (Renderer::renderLabels).
 inline constexpr const char* kLabelsPass = "labels";
+// With --labels, the optical flow from the last frame's labels to this
+// one's (swell::opticalFlowOf, on the CPU), recorded after the label pass.
+inline constexpr const char* kFlowPass = "flow";
 
 struct Results {
     Machine machine;
@@ -237,6 +240,9 @@ struct Results {
     // With --labels: each measured frame's label pass, recorded apart right
     // after it (one pass, "labels"); empty otherwise.
     std::vector<FrameSample> labels;
+    // With --labels: each measured frame's flow from the frame before it
+    // (one pass, "flow"); none for a first frame without one before it.
+    std::vector<FrameSample> flow;
     std::vector<double> realTimes_s;     // simulation time of each measured frame
     std::vector<Camera> realCameras;     // camera of each measured frame
     std::vector<LodSample> lod;

@@ -7,6 +7,7 @@
 #include "progress.h"
 #include "scene_loading.h"
 
+#include "swell/dataset/flow.h"
 #include "swell/error.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
@@ -185,6 +186,7 @@ int runBench(const BenchOptions& options)
                                          : std::string("measured frames"),
                       options.warmup + options.frames);
     // The real frames: warm-up at the path's start, then the measured ones.
+    std::optional<FrameLabels> previousLabels; // with --labels: the last frame's, for the flow
     for (int i = 0; i < options.warmup + options.frames; ++i) {
         const bool measured = i >= options.warmup;
         const int k = i - options.warmup;
@@ -199,14 +201,24 @@ int runBench(const BenchOptions& options)
         // The label pass before the bodies' worker starts on the next frame,
         // so that it does not share the cores with it (`swell dataset` has no
         // next frame).
-        std::optional<FrameSample> labels;
+        std::optional<FrameSample> labels, flow;
         if (options.labels) {
+            FrameLabels frameLabels;
             labels = recorder.recordFrame([&] {
                 recorder.beginPass(kLabelsPass);
-                (void)renderer.renderLabels(camera, r.size);
+                frameLabels = renderer.renderLabels(camera, r.size);
                 recorder.endPass(kLabelsPass);
             });
             checkGl("drawing the label pass");
+            if (previousLabels)
+                flow = recorder.recordFrame([&] {
+                    recorder.beginPass(kFlowPass);
+                    const double previous_s = double(i - 1) * kFrameStep_s;
+                    (void)opticalFlowOf(*previousLabels, previous_s, frameLabels, t - previous_s,
+                                        seaMotionOf(renderer.scene(), renderer.waveModel()));
+                    recorder.endPass(kFlowPass);
+                });
+            previousLabels = std::move(frameLabels);
         }
         // As a video does (`swell render`): the bodies step towards the
         // next frame on their own thread meanwhile (Renderer::anticipate).
@@ -215,6 +227,8 @@ int runBench(const BenchOptions& options)
             r.real.push_back(std::move(frame));
             if (labels)
                 r.labels.push_back(std::move(*labels));
+            if (flow)
+                r.flow.push_back(std::move(*flow));
             r.realTimes_s.push_back(t);
             r.bodySteps.push_back(counters.bodySteps);
             r.wakeSteps.push_back(counters.wakeSteps);

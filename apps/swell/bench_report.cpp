@@ -289,12 +289,16 @@ void printReport(const Results& r)
             passSeries(r.labels, kLabelsPass, &PassSample::cpu_ms), {}, {}, passGpu(r.labels, kLabelsPass));
         row("frame + labels", labelledSampleSeries(r, &FrameSample::wall_ms),
             labelledSampleSeries(r, &FrameSample::cpu_ms), {}, {}, {});
+        if (!r.flow.empty())
+            row(kFlowPass, passSeries(r.flow, kFlowPass, &PassSample::wall_ms),
+                passSeries(r.flow, kFlowPass, &PassSample::cpu_ms), {}, {}, {});
     }
     std::printf("  (an inner pass is part of the pass above it; the floor is each pass's target cleared and covered\n"
                 "   by one full-screen triangle of a constant colour)\n");
     if (!r.labels.empty())
         std::printf("  (--labels: \"labels\" is the label pass drawn after each frame for its camera and time, its\n"
-                    "   arrays read back, apart from the frame; \"frame + labels\" their sum a frame: a labelled sample)\n");
+                    "   arrays read back, apart from the frame; \"frame + labels\" their sum a frame: a labelled sample;\n"
+                    "   \"flow\" the optical flow from the frame before's labels to these, on the CPU)\n");
     long long steps = 0;
     for (long long s : r.bodySteps)
         steps += s;
@@ -456,6 +460,10 @@ void writeJson(const Results& r, const std::string& path)
                        {"labelled_sample",
                         {{"wall_ms", summaryJson(summarize(labelledSampleSeries(r, &FrameSample::wall_ms)))},
                          {"cpu_ms", summaryJson(summarize(labelledSampleSeries(r, &FrameSample::cpu_ms)))}}}};
+        j["labels"]["flow"] =
+            r.flow.empty() ? Json(nullptr)
+                           : Json{{"wall_ms", summaryJson(summarize(passSeries(r.flow, kFlowPass, &PassSample::wall_ms)))},
+                                  {"cpu_ms", summaryJson(summarize(passSeries(r.flow, kFlowPass, &PassSample::cpu_ms)))}};
     }
 
     Json lod = Json::array();

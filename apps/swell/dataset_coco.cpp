@@ -73,54 +73,70 @@ Json runLengths(int width, int height, InMask inMask)
     return {{"counts", counts}, {"size", {height, width}}};
 }
 
+// One frame's image and its objects' annotations, from its JSON and instance mask.
+void addFrame(const fs::path& png, long long imageId, Json image, Json& images, Json& annotations, long long& nextId)
+{
+    const std::vector<fs::path> files = labelFilePaths(png);
+    Json frame;
+    try {
+        frame = Json::parse(readFileBytes(files.back()));
+    } catch (const Json::exception& e) {
+        throw Error(fmt::format("{}: {}", files.back().string(), e.what()));
+    }
+    const int width = frame["size"][0], height = frame["size"][1];
+    image["width"] = width;
+    image["height"] = height;
+    images.push_back(std::move(image));
+    if (frame["objects"].empty())
+        return;
+    const std::vector<std::uint16_t> instances = readInstances(files[3], width, height);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    // Each object's amodal mask (label_files.h: .amodal.npy, (N, H, W), the JSON's order).
+    const std::string amodal = npyValues(files[6], frame["objects"].size() * pixels, 1, "a mask per object of the JSON");
+    for (std::size_t k = 0; k < frame["objects"].size(); ++k) {
+        const Json& o = frame["objects"][k];
+        if (o["visible_pixels"].get<long long>() == 0)
+            continue;
+        const std::uint16_t id = o["instance"].get<std::uint16_t>();
+        const auto visible = [&](std::size_t p) { return instances[p] == id; };
+        const auto hiddenOrNot = [&](std::size_t p) { return amodal[k * pixels + p] != 0; };
+        const int x0 = o["box_px"][0], y0 = o["box_px"][1], x1 = o["box_px"][2], y1 = o["box_px"][3];
+        annotations.push_back({{"id", nextId++},
+                               {"image_id", imageId},
+                               {"category_id", o["class_id"]},
+                               {"instance", o["instance"]},
+                               {"bbox", {x0, y0, x1 - x0, y1 - y0}},
+                               {"area", o["visible_pixels"]},
+                               {"iscrowd", 0},
+                               {"segmentation", runLengths(width, height, visible)},
+                               {"amodal_segmentation", runLengths(width, height, hiddenOrNot)},
+                               {"amodal_area", o["amodal_pixels"]},
+                               {"occlusion", o["occlusion"]},
+                               {"truncation", o["truncation"]}});
+    }
+}
+
 } // namespace
 
-Json cocoJson(const fs::path& out, int count, const std::vector<std::string>& classes)
+Json cocoJson(const fs::path& out, const Sweep& sweep, const std::vector<std::string>& classes)
 {
     Json images = Json::array(), annotations = Json::array(), categories = Json::array();
     for (std::size_t c = SWELL_LABEL_FIRST_OBJECT_CLASS; c < classes.size(); ++c)
         categories.push_back({{"id", c}, {"name", classes[c]}, {"supercategory", "object"}});
     long long nextId = 1;
-    for (int i = 0; i < count; ++i) {
-        const fs::path png = out / "samples" / fmt::format("{:06d}.png", i);
-        const std::vector<fs::path> files = labelFilePaths(png);
-        Json sample;
-        try {
-            sample = Json::parse(readFileBytes(files.back()));
-        } catch (const Json::exception& e) {
-            throw Error(fmt::format("{}: {}", files.back().string(), e.what()));
+    const int frames = sweep.clip ? sweep.clip->frames : 1;
+    for (int i = 0; i < sweep.count; ++i)
+        for (int k = 0; k < frames; ++k) {
+            const long long id = (long long)i * frames + k;
+            const std::string name =
+                sweep.clip ? fmt::format("samples/{:06d}_{:05d}.png", i, k) : fmt::format("samples/{:06d}.png", i);
+            Json image = {{"id", id}, {"file_name", name}};
+            if (sweep.clip) {
+                image["sample"] = i;
+                image["frame"] = k;
+            }
+            addFrame(out / name, id, std::move(image), images, annotations, nextId);
         }
-        const int width = sample["size"][0], height = sample["size"][1];
-        images.push_back({{"id", i}, {"file_name", fmt::format("samples/{:06d}.png", i)}, {"width", width}, {"height", height}});
-        if (sample["objects"].empty())
-            continue;
-        const std::vector<std::uint16_t> instances = readInstances(files[3], width, height);
-        const std::size_t pixels = std::size_t(width) * std::size_t(height);
-        // Each object's amodal mask (label_files.h: .amodal.npy, (N, H, W), the JSON's order).
-        const std::string amodal =
-            npyValues(files[6], sample["objects"].size() * pixels, 1, "a mask per object of the JSON");
-        for (std::size_t k = 0; k < sample["objects"].size(); ++k) {
-            const Json& o = sample["objects"][k];
-            if (o["visible_pixels"].get<long long>() == 0)
-                continue;
-            const std::uint16_t id = o["instance"].get<std::uint16_t>();
-            const auto visible = [&](std::size_t p) { return instances[p] == id; };
-            const auto hiddenOrNot = [&](std::size_t p) { return amodal[k * pixels + p] != 0; };
-            const int x0 = o["box_px"][0], y0 = o["box_px"][1], x1 = o["box_px"][2], y1 = o["box_px"][3];
-            annotations.push_back({{"id", nextId++},
-                                   {"image_id", i},
-                                   {"category_id", o["class_id"]},
-                                   {"instance", o["instance"]},
-                                   {"bbox", {x0, y0, x1 - x0, y1 - y0}},
-                                   {"area", o["visible_pixels"]},
-                                   {"iscrowd", 0},
-                                   {"segmentation", runLengths(width, height, visible)},
-                                   {"amodal_segmentation", runLengths(width, height, hiddenOrNot)},
-                                   {"amodal_area", o["amodal_pixels"]},
-                                   {"occlusion", o["occlusion"]},
-                                   {"truncation", o["truncation"]}});
-        }
-    }
     return {{"info", {{"description", "rendered by swell dataset"}}},
             {"images", images},
             {"annotations", annotations},

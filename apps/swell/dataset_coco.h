@@ -4,6 +4,8 @@
 
 #include "label_files.h"
 
+#include "swell/dataset/sweep.h"
+
 #include "swell/scene/scene.h"
 
 #include <filesystem>
@@ -16,8 +18,10 @@ namespace swell::app {
 // COCO's object-detection format: images, annotations (bbox [x, y, width,
 // height] in pixels, area = visible pixels, segmentation as uncompressed
 // run-length counts in column-major order), categories (the objects'
-// classes, with the ids of the samples' semantic masks).
-Json cocoJson(const std::filesystem::path& out, int count, const std::vector<std::string>& classes);
+// classes, with the ids of the samples' semantic masks). A clip's frames are
+// an image each (id: the sample's index times the clip's frames plus the
+// frame's), with its "sample" and "frame".
+Json cocoJson(const std::filesystem::path& out, const Sweep& sweep, const std::vector<std::string>& classes);
 
 // A file's whole content; throws swell::Error when it cannot be read.
 std::string readFileBytes(const std::filesystem::path& path);

@@ -15,11 +15,13 @@
 #include "core/thread_cpu.h"
 #include "dataset_coco.h"
 #include "dataset_folder.h"
+#include "flow_files.h"
 #include "label_files.h"
 #include "progress.h"
 #include "scene_loading.h"
 
 #include "swell/dataset/atomic_file.h"
+#include "swell/dataset/flow.h"
 #include "swell/dataset/sensor.h"
 #include "swell/dataset/sweep.h"
 #include "swell/error.h"
@@ -114,7 +116,9 @@ void checkSamples(const Sweep& sweep, const Scene& base, const fs::path& scenePa
         } catch (const InputError& e) {
             throw InputError(e.place(), fmt::format("sample {}, as the sweep draws it: {}", i, e.message()));
         }
-        if (const std::string problem = historyProblem(sample.scene, sample.time_s); !problem.empty())
+        // A clip steps on to its last frame's time (and the labels one frame on, its flow's).
+        const double last_s = sweep.clip ? sweep.clip->frameTime_s(sample.time_s, sweep.clip->frames) : sample.time_s;
+        if (const std::string problem = historyProblem(sample.scene, last_s); !problem.empty())
             throw InputError(sweep.timePlace, fmt::format("time_s: sample {} at {}", i, problem));
     }
 }
@@ -162,16 +166,25 @@ public:
     HoldStops& operator=(const HoldStops&) = delete;
 };
 
-void writeSample(const fs::path& out, int i, const Sweep& sweep, const SweepSample& sample, const Renderer& renderer,
-                 const Camera& camera, SensorFrame& sensor)
+// One frame of a sample: a still, or frame `frame` of a clip drawn at
+// time_s, with its flow to the next frame when it has one.
+struct SampleFrame {
+    int frame = 0;
+    double time_s = 0.0;
+    Camera camera;
+    SensorFrame sensor;
+};
+
+void writeFrame(const fs::path& out, int i, const Sweep& sweep, const SweepSample& sample, const Renderer& renderer,
+                const SampleFrame& f, const std::optional<FrameFlow>& flow)
 {
-    const fs::path png = samplePng(out, i);
+    const fs::path png = framePng(out, i, sweep, f.frame);
     FrameLabels labels;
-    if (sensor.labels) {
-        labels = *sensor.labels;
+    if (f.sensor.labels) {
+        labels = *f.sensor.labels;
     } else {
         labels.size = sweep.size;
-        labels.camera = calibrationOf(camera, sweep.size);
+        labels.camera = calibrationOf(f.camera, sweep.size);
         const LensDistortion lens = lensOf(sample.scene.camera);
         labels.camera.k1 = lens.k1;
         labels.camera.k2 = lens.k2;
@@ -181,22 +194,66 @@ void writeSample(const fs::path& out, int i, const Sweep& sweep, const SweepSamp
         labels.horizon = horizonOf(labels.camera);
         labels.classes = labelClassesOf(sample.scene);
     }
-    Json json = frameJson(labels, sample.scene, sample.time_s, 4.0 * renderer.waveModel().heightDeviation_m(), png);
+    Json json = frameJson(labels, sample.scene, f.time_s, 4.0 * renderer.waveModel().heightDeviation_m(), png);
     json["sample"] = i;
+    if (sweep.clip)
+        json["frame"] = f.frame;
+    if (flow)
+        json["flow"] = {{"interval_s", flow->interval_s}, {"next_time_s", f.time_s + flow->interval_s}};
     Json varied = Json::object();
     for (std::size_t k = 0; k < sweep.vary.size(); ++k)
         varied[sweep.vary[k].key] = sweptValueJson(sweep.vary[k], sample.values[k]);
     json["varied"] = varied;
     const HoldStops hold;
     try {
-        writePngAtomically(sensor.image, png);
-        if (sensor.labels)
+        writePngAtomically(f.sensor.image, png);
+        if (f.sensor.labels)
             writeLabelArrays(labels, png, sample.scene.labels.worldFrame);
-        writeFrameJson(json, png); // last: the sample is done
+        if (flow)
+            writeFlowFiles(*flow, png);
+        writeFrameJson(json, png); // last: the frame is done
     } catch (...) {
-        removeSample(out, i); // a disk that filled half way: none of the sample stays
+        removeSample(out, i, sweep); // a disk that filled half way: none of the sample stays
         throw;
     }
+}
+
+SampleFrame drawFrame(Renderer& renderer, const Sweep& sweep, int frame, double time_s)
+{
+    SampleFrame f;
+    f.frame = frame;
+    f.time_s = time_s;
+    f.camera = renderer.sceneCameraAt(time_s);
+    f.sensor = renderSensorFrame(renderer, f.camera, time_s, sweep.size, sweep.labels);
+    return f;
+}
+
+// A clip's frames in order, the camera and the bodies moving as the
+// simulation moves them, one renderer throughout: each frame written once
+// the next one's labels give its flow (the last frame's: labels drawn one
+// frame on for it alone).
+void writeClip(const fs::path& out, int i, const Sweep& sweep, const SweepSample& sample, Renderer& renderer)
+{
+    const SweepClip& clip = *sweep.clip;
+    const double interval_s = 1.0 / clip.fps;
+    std::optional<SampleFrame> pending;
+    const auto flowTo = [&](const SampleFrame& from, const FrameLabels& next) {
+        return std::optional<FrameFlow>(opticalFlowOf(*from.sensor.labels, from.time_s, next, interval_s,
+                                                      seaMotionOf(renderer.scene(), renderer.waveModel())));
+    };
+    for (int k = 0; k < clip.frames; ++k) {
+        SampleFrame f = drawFrame(renderer, sweep, k, clip.frameTime_s(sample.time_s, k));
+        if (pending)
+            writeFrame(out, i, sweep, sample, renderer, *pending, sweep.labels ? flowTo(*pending, *f.sensor.labels)
+                                                                                : std::nullopt);
+        pending = std::move(f);
+    }
+    std::optional<FrameFlow> lastFlow;
+    if (sweep.labels) {
+        const SampleFrame next = drawFrame(renderer, sweep, clip.frames, clip.frameTime_s(sample.time_s, clip.frames));
+        lastFlow = flowTo(*pending, *next.sensor.labels);
+    }
+    writeFrame(out, i, sweep, sample, renderer, *pending, lastFlow);
 }
 
 void renderSamples(const fs::path& out, const Sweep& sweep, const Scene& base, const std::vector<int>& todo)
@@ -214,9 +271,10 @@ void renderSamples(const fs::path& out, const Sweep& sweep, const Scene& base, c
             renderer = std::make_unique<Renderer>(sample.scene);
         else
             renderer->setScene(sample.scene);
-        const Camera camera = renderer->sceneCameraAt(sample.time_s);
-        SensorFrame sensor = renderSensorFrame(*renderer, camera, sample.time_s, sweep.size, sweep.labels);
-        writeSample(out, i, sweep, sample, *renderer, camera, sensor);
+        if (sweep.clip)
+            writeClip(out, i, sweep, sample, *renderer);
+        else
+            writeFrame(out, i, sweep, sample, *renderer, drawFrame(*renderer, sweep, 0, sample.time_s), std::nullopt);
         progress.advance();
     }
     progress.finish();
@@ -279,11 +337,11 @@ int runDataset(const DatasetOptions& options)
             continue;
         }
         std::error_code error;
-        if (fs::exists(labelFilePaths(samplePng(out, i)).back(), error))
+        if (fs::exists(frameFiles(out, i, sweep, 0).back(), error))
             std::fprintf(stderr, "swell: sample %d is not whole (%s): %s\n", i, why.c_str(),
                          options.dryRun ? "it would be rendered again" : "rendering it again");
         if (!options.dryRun)
-            removeSample(out, i);
+            removeSample(out, i, sweep);
         todo.push_back(i);
     }
     std::fprintf(stderr, "swell: shard %d/%d of %s: %d samples to render, %d done already\n", shard, shards,
@@ -305,7 +363,7 @@ int runDataset(const DatasetOptions& options)
             return kExitOk;
         }
     if (sweep.labels) {
-        const std::string coco = cocoJson(out, sweep.count, labelClassesOf(base)).dump() + "\n";
+        const std::string coco = cocoJson(out, sweep, labelClassesOf(base)).dump() + "\n";
         const HoldStops hold;
         writeFileAtomically(out / "coco.json", coco);
     }

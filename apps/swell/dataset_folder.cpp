@@ -1,5 +1,7 @@
 #include "dataset_folder.h"
 
+#include "flow_files.h"
+
 #include "dataset_coco.h"
 
 #include "swell/dataset/atomic_file.h"
@@ -101,12 +103,24 @@ std::string npyProblem(const fs::path& path, const std::string& descr, const std
 
 fs::path samplePng(const fs::path& out, int index) { return out / "samples" / fmt::format("{:06d}.png", index); }
 
-std::vector<fs::path> sampleFiles(const fs::path& out, int index, bool labels)
+int framesOf(const Sweep& sweep) { return sweep.clip ? sweep.clip->frames : 1; }
+
+fs::path framePng(const fs::path& out, int index, const Sweep& sweep, int frame)
 {
-    const fs::path png = samplePng(out, index);
+    if (!sweep.clip)
+        return samplePng(out, index);
+    return out / "samples" / fmt::format("{:06d}_{:05d}.png", index, frame);
+}
+
+std::vector<fs::path> frameFiles(const fs::path& out, int index, const Sweep& sweep, int frame)
+{
+    const fs::path png = framePng(out, index, sweep, frame);
     std::vector<fs::path> files = labelFilePaths(png); // .range.npy ... .labels.png, .amodal.npy, .json
-    if (!labels)
+    if (!sweep.labels)
         files = {files.back()};
+    else if (sweep.clip)
+        for (const fs::path& f : flowFilePaths(png))
+            files.insert(files.end() - 1, f);
     files.insert(files.begin(), png);
     return files;
 }
@@ -129,6 +143,14 @@ Json manifestJson(const Sweep& sweep, const Scene& base)
     manifest["classes"] = classes;
     manifest["samples"] = "samples/NNNNNN.png, and beside each its labels (docs/LABELS.md); a sample is done when "
                           "its .json is there and its files are whole";
+    if (sweep.clip) {
+        // Stills' manifests stay as they were.
+        manifest["clip"] = {{"frames", sweep.clip->frames},
+                            {"fps", sweep.clip->fps},
+                            {"frame_files", "samples/NNNNNN_FFFFF.png (frame F of sample N), and beside each its "
+                                            "labels and its optical flow to the next frame (docs/LABELS.md); a "
+                                            "sample is done when every frame's files are whole"}};
+    }
     return manifest;
 }
 
@@ -187,9 +209,12 @@ void prepareOutputFolder(const fs::path& out, const Sweep& sweep, const Scene& b
     }
 }
 
-std::string sampleNotDone(const fs::path& out, int index, const Sweep& sweep, const SweepSample& sample)
+namespace {
+
+// Why frame `frame` of sample `index` is not done ("" when it is).
+std::string frameNotDone(const fs::path& out, int index, const Sweep& sweep, const SweepSample& sample, int frame)
 {
-    const std::vector<fs::path> files = sampleFiles(out, index, sweep.labels);
+    const std::vector<fs::path> files = frameFiles(out, index, sweep, frame);
     const fs::path& jsonPath = files.back();
     std::error_code error;
     for (const fs::path& f : files)
@@ -212,9 +237,11 @@ std::string sampleNotDone(const fs::path& out, int index, const Sweep& sweep, co
     for (std::size_t k = 0; k < sweep.vary.size(); ++k)
         varied[sweep.vary[k].key] = sweptValueJson(sweep.vary[k], sample.values[k]);
     const auto holds = [&json](const char* key, const Json& value) { return json.contains(key) && json[key] == value; };
+    const double time_s = sweep.clip ? sweep.clip->frameTime_s(sample.time_s, frame) : sample.time_s;
     if (!json.is_object() || !holds("sample", index) || !holds("size", Json::array({sweep.size.x, sweep.size.y})) ||
-        !holds("time_s", sample.time_s) || !holds("varied", varied))
-        return named(jsonPath, "not this sweep's sample (its index, size, time or varied values are not the manifest's)");
+        !holds("time_s", time_s) || !holds("varied", varied) || (sweep.clip && !holds("frame", frame)))
+        return named(jsonPath, "not this sweep's sample (its index, frame, size, time or varied values are not the "
+                               "manifest's)");
     if (const std::string p = pngProblem(files[0], sweep.size); !p.empty())
         return named(files[0], p);
     if (!sweep.labels)
@@ -232,22 +259,45 @@ std::string sampleNotDone(const fs::path& out, int index, const Sweep& sweep, co
     const int objects = json.contains("objects") && json["objects"].is_array() ? int(json["objects"].size()) : 0;
     if (const std::string p = npyProblem(files[7], "|u1", {objects, h, w}, 1); !p.empty())
         return named(files[7], p);
+    if (!sweep.clip)
+        return {};
+    // A clip frame's flow: its two files, just before the JSON (frameFiles()).
+    const std::size_t flowFile = files.size() - 3;
+    const std::array<std::string, 2> flow = {npyProblem(files[flowFile], "<f4", {h, w, 2}, 4),
+                                             npyProblem(files[flowFile + 1], "|u1", {h, w}, 1)};
+    for (std::size_t i = 0; i < flow.size(); ++i)
+        if (!flow[i].empty())
+            return named(files[flowFile + i], flow[i]);
     return {};
 }
 
-void removeSample(const fs::path& out, int index)
+} // namespace
+
+std::string sampleNotDone(const fs::path& out, int index, const Sweep& sweep, const SweepSample& sample)
+{
+    for (int frame = 0; frame < framesOf(sweep); ++frame)
+        if (std::string why = frameNotDone(out, index, sweep, sample, frame); !why.empty())
+            return why;
+    return {};
+}
+
+void removeSample(const fs::path& out, int index, const Sweep& sweep)
 {
     std::error_code error;
-    // The JSON first: from then on the sample is not done, whatever is left.
-    const std::vector<fs::path> files = sampleFiles(out, index, true);
-    fs::remove(files.back(), error);
-    for (const fs::path& f : files)
-        fs::remove(f, error);
-    // The temporary files of its writes (swell/dataset/atomic_file.h: ".NAME.*.tmp").
-    const std::string prefix = fmt::format(".{:06d}.", index);
+    // The JSONs first: from then on the sample is not done, whatever is left.
+    Sweep everything = sweep;
+    everything.labels = true;
+    for (int frame = 0; frame < framesOf(sweep); ++frame)
+        fs::remove(frameFiles(out, index, everything, frame).back(), error);
+    for (int frame = 0; frame < framesOf(sweep); ++frame)
+        for (const fs::path& f : frameFiles(out, index, everything, frame))
+            fs::remove(f, error);
+    // The temporary files of its writes (swell/dataset/atomic_file.h:
+    // ".NAME.*.tmp"; a clip's frames ".NNNNNN_FFFFF.*.tmp").
+    const std::string still = fmt::format(".{:06d}.", index), clip = fmt::format(".{:06d}_", index);
     for (const fs::directory_entry& e : fs::directory_iterator(out / "samples", error)) {
         const std::string name = e.path().filename().string();
-        if (name.starts_with(prefix) && name.ends_with(".tmp"))
+        if ((name.starts_with(still) || name.starts_with(clip)) && name.ends_with(".tmp"))
             fs::remove(e.path(), error);
     }
 }

@@ -17,9 +17,16 @@ namespace swell::app {
 
 // samples/NNNNNN.png, and beside it its label files (label_files.h).
 std::filesystem::path samplePng(const std::filesystem::path& out, int index);
-// Every file of sample `index`, the JSON last; the PNG and the JSON alone
-// when the sweep writes no labels.
-std::vector<std::filesystem::path> sampleFiles(const std::filesystem::path& out, int index, bool labels);
+// The frames of each of the sweep's samples: its clip's, or 1 (a still).
+int framesOf(const Sweep& sweep);
+// Frame `frame` of sample `index`: a still's samplePng(); frame F of a
+// clip's samples/NNNNNN_FFFFF.png.
+std::filesystem::path framePng(const std::filesystem::path& out, int index, const Sweep& sweep, int frame);
+// Every file of one frame, the JSON last: the PNG, the label files and, for
+// a clip's frame, its flow (flow_files.h); the PNG and the JSON alone when
+// the sweep writes no labels.
+std::vector<std::filesystem::path> frameFiles(const std::filesystem::path& out, int index, const Sweep& sweep,
+                                              int frame);
 
 // The manifest's content for this sweep and base scene.
 Json manifestJson(const Sweep& sweep, const Scene& base);
@@ -34,14 +41,16 @@ void checkOutputFolder(const std::filesystem::path& out, const Sweep& sweep);
 // there yet. checkOutputFolder() first.
 void prepareOutputFolder(const std::filesystem::path& out, const Sweep& sweep, const Scene& base);
 
-// Why sample `index` is not done ("" when it is): a file missing, cut short
-// or not parsing, or a JSON that is another sample's (its index, size, time
-// or varied values not those `sample` has).
+// Why sample `index` is not done ("" when it is): a file of one of its
+// frames missing, cut short or not parsing, or a JSON that is another
+// sample's (its index, frame, size, time or varied values not those
+// `sample` has).
 std::string sampleNotDone(const std::filesystem::path& out, int index, const Sweep& sweep, const SweepSample& sample);
 
-// Removes what a run that stopped left of sample `index`: its files, the
-// JSON first (so that it never looks done), and its temporary files.
-void removeSample(const std::filesystem::path& out, int index);
+// Removes what a run that stopped left of sample `index`: its frames'
+// files, the JSONs first (so that it never looks done), and its temporary
+// files.
+void removeSample(const std::filesystem::path& out, int index, const Sweep& sweep);
 
 // Removes the temporary files of the manifest and COCO file whose writer
 // (the process named in their names, swell/dataset/atomic_file.h) is gone.

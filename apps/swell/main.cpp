@@ -215,8 +215,8 @@ int main(int argc, char** argv)
     renderCommand->add_flag("--labels", render.labels,
                             "Also write each frame's ground truth beside its PNG: NAME.range.npy, NAME.normal.npy, "
                             "NAME.semantic.npy, NAME.instance.npy, NAME.depth.npy, NAME.labels.png, NAME.amodal.npy, "
-                            "NAME.kitti.txt, NAME.kitti_calib.txt and NAME.json "
-                            "(docs/LABELS.md)");
+                            "NAME.kitti.txt, NAME.kitti_calib.txt and NAME.json, and its optical flow to the next "
+                            "frame (one --fps interval on): NAME.flow.npy and NAME.flow_valid.npy (docs/LABELS.md)");
     addOutputOptions(*renderCommand, render.outputSettings);
 
     swell::app::BenchOptions bench;
@@ -242,8 +242,8 @@ int main(int argc, char** argv)
                            "around each, which adds to the pass's time)");
     benchCommand->add_flag("--labels", bench.labels,
                            "Also draw the label pass after each frame, its arrays read back, as `swell dataset` "
-                           "draws a labelled sample: its own rows (labels, frame + labels) beside the frame, "
-                           "with the same counters");
+                           "draws a labelled sample, and the optical flow from the frame before's labels: its own "
+                           "rows (labels, frame + labels, flow) beside the frame, with the same counters");
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");

@@ -1,11 +1,13 @@
 // `swell render`: headless frames to PNG, a PNG sequence, or an MP4 through
 // the ffmpeg program.
 #include "commands.h"
+#include "flow_files.h"
 #include "label_files.h"
 #include "progress.h"
 #include "scene_loading.h"
 
 #include "swell/camera.h"
+#include "swell/dataset/flow.h"
 #include "swell/dataset/sensor.h"
 #include "swell/error.h"
 #include "swell/frame_request.h"
@@ -19,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <unistd.h>
 
 namespace swell::app {
@@ -112,6 +115,28 @@ void createOutputFolder(const fs::path& output)
                                                    output.string(), error.message()));
 }
 
+// A labelled frame waiting for the next frame's labels, which its flow needs.
+struct PendingLabels {
+    FrameLabels labels;
+    fs::path colour;
+    double time_s = 0.0;
+};
+
+// Writes a frame's labels with its flow to `next` (drawn interval_s later):
+// the arrays, the flow, then the JSON, last, as for every labelled frame.
+void writeLabelsWithFlow(const PendingLabels& frame, const FrameLabels& next, double interval_s,
+                         const Renderer& renderer)
+{
+    const FrameFlow flow = opticalFlowOf(frame.labels, frame.time_s, next, interval_s,
+                                         seaMotionOf(renderer.scene(), renderer.waveModel()));
+    writeLabelArrays(frame.labels, frame.colour, renderer.scene().labels.worldFrame);
+    writeFlowFiles(flow, frame.colour);
+    Json json = frameJson(frame.labels, renderer.scene(), frame.time_s,
+                          4.0 * renderer.waveModel().heightDeviation_m(), frame.colour);
+    json["flow"] = {{"interval_s", interval_s}, {"next_time_s", frame.time_s + interval_s}};
+    writeFrameJson(json, frame.colour);
+}
+
 } // namespace
 
 int runRender(const RenderOptions& options)
@@ -151,22 +176,37 @@ int runRender(const RenderOptions& options)
     if (video)
         videoWriter = std::make_unique<VideoWriter>(output, options.width, options.height, options.fps);
     Progress progress("rendering frames", frames);
+    // A frame's flow goes to the next frame, one frame interval on (a still's
+    // and the last frame's: to a frame of labels drawn for it alone).
+    const double interval_s = 1.0 / options.fps;
+    std::optional<PendingLabels> pending;
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
         const Camera camera = renderer.sceneCameraAt(t);
         // Through the camera's lens and sensor (swell/dataset/sensor.h).
-        const SensorFrame sensor = renderSensorFrame(renderer, camera, t, size, options.labels);
-        // The bodies step towards the next frame while this one is written.
-        if (i + 1 < frames)
-            renderer.anticipate(options.time_s + double(i + 1) / options.fps);
+        SensorFrame sensor = renderSensorFrame(renderer, camera, t, size, options.labels);
         const fs::path frame = options.duration_s ? sequencePath(output, i) : output;
+        // The flow asks the waves at the last frame's time and this one's
+        // before the bodies' thread asks them at the next.
+        if (sensor.labels) {
+            if (pending)
+                writeLabelsWithFlow(*pending, *sensor.labels, interval_s, renderer);
+            pending = PendingLabels{std::move(*sensor.labels), frame, t};
+        }
+        // The bodies step towards the next frame (or the last frame's labels
+        // for its flow) while this one is written.
+        if (i + 1 < frames || options.labels)
+            renderer.anticipate(options.time_s + double(i + 1) / options.fps);
         if (video)
             videoWriter->write(sensor.image);
         else
             writePngAtomically(sensor.image, frame);
-        if (sensor.labels)
-            writeLabelFiles(*sensor.labels, scene, t, 4.0 * renderer.waveModel().heightDeviation_m(), frame);
         progress.advance();
+    }
+    if (pending) {
+        const double next_s = options.time_s + double(frames) / options.fps;
+        const SensorFrame next = renderSensorFrame(renderer, renderer.sceneCameraAt(next_s), next_s, size, true);
+        writeLabelsWithFlow(*pending, *next.labels, interval_s, renderer);
     }
     if (videoWriter)
         videoWriter->finish();

@@ -16,6 +16,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -27,6 +28,11 @@ struct SWELL_API DrawnPoint {
     glm::dvec3 position_m{0.0}; // absolute world position on the triangle, m
     glm::dvec3 normal{0.0, 1.0, 0.0}; // the triangle's unit normal, pointing up
     int cellI = 0, cellJ = 0;   // the grid cell whose triangle it is
+    // The triangle's three grid vertices (i, j) and the point's barycentric
+    // weights on them: at another time, the same material point of the
+    // drawn surface is the sum of those vertices (vertex()) so weighted.
+    std::array<glm::ivec2, 3> corners{};
+    glm::dvec3 weights{0.0};
 };
 
 class SWELL_API DrawnSurface {

@@ -41,6 +41,19 @@ PyLabels toPython(FrameLabels&& labels)
     return out;
 }
 
+FrameLabels motionLabelsOf(const PyLabels& labels)
+{
+    FrameLabels out;
+    out.size = labels.size;
+    const std::size_t pixels = std::size_t(labels.size.x) * std::size_t(labels.size.y);
+    out.range_m.assign(labels.range_m.data(), labels.range_m.data() + pixels);
+    out.semantic.assign(labels.semantic.data(), labels.semantic.data() + pixels);
+    out.instance.assign(labels.instance.data(), labels.instance.data() + pixels);
+    out.camera = labels.camera;
+    out.objects = labels.objects;
+    return out;
+}
+
 void bindLabels(py::module_& m)
 {
     py::class_<CameraCalibration>(m, "Calibration",

@@ -33,6 +33,9 @@ struct PyLabels {
 
 // Takes the frame's buffers over. Needs the GIL.
 PyLabels toPython(FrameLabels&& labels);
+// What the optical flow reads of a frame's labels (swell/dataset/flow.h):
+// its size, range, class, instance, calibration and objects, copied. Needs the GIL.
+FrameLabels motionLabelsOf(const PyLabels& labels);
 
 } // namespace swell::python
 

@@ -15,6 +15,7 @@
 #include "labels.h"
 #include "scene.h"
 
+#include "swell/dataset/flow.h"
 #include "swell/dataset/sensor.h"
 #include "swell/error.h"
 #include "swell/flat_model.h"
@@ -227,6 +228,25 @@ public:
         viewpoint_m_ = v;
     }
 
+    // The forward optical flow from `now` (drawn at time_s) to `next` (drawn
+    // interval_s later) with this renderer's sea (swell/dataset/flow.h).
+    py::tuple opticalFlow(const PyLabels& now, double time_s, const PyLabels& next, double interval_s)
+    {
+        frameTime(time_s);
+        frameTime(time_s + interval_s);
+        if (now.size != next.size)
+            throw py::value_error("next_labels: its size differs from labels'");
+        use();
+        const FrameLabels a = motionLabelsOf(now), b = motionLabelsOf(next);
+        FrameFlow flow;
+        {
+            py::gil_scoped_release release;
+            flow = opticalFlowOf(a, time_s, b, interval_s, seaMotionOf(renderer_->scene(), renderer_->waveModel()));
+        }
+        return py::make_tuple(arrayOwning<float>(std::move(flow.flow_px), {now.size.y, now.size.x, 2}),
+                              arrayOwning<std::uint8_t>(std::move(flow.valid), {now.size.y, now.size.x}));
+    }
+
     std::optional<double> simulatedTime() const { return renderer_->simulatedTime_s(); }
 
     py::array_t<double> objectTransforms()
@@ -349,6 +369,12 @@ void bindRenderer(py::module_& m)
              "As `swell render` draws a frame: through the scene camera's lens distortion, exposure and "
              "noise (camera.distortion_*, exposure_ev, noise_*; docs/LABELS.md), its labels resampled "
              "through the same lens. Returns (uint8 (H, W, 4) RGBA, swell.Labels or None).")
+        .def("optical_flow", &PyRenderer::opticalFlow, py::arg("labels"), py::arg("time_s"), py::arg("next_labels"),
+             py::arg("interval_s"),
+             "The forward optical flow from labels (drawn at time_s) to next_labels (drawn interval_s later), as "
+             "`swell render --labels` writes it (docs/LABELS.md, \"Optical flow\"): (float32 (H, W, 2) pixels "
+             "where each pixel's point is seen in the next frame less its centre, uint8 (H, W) 1 where it is seen "
+             "there).")
         .def("scene_camera_at", &PyRenderer::sceneCameraAt, py::arg("time_s"),
              "The scene's camera at time_s; a camera mounted on an object (camera.mount_object) placed "
              "on that object's pose there (it heaves, rolls and pitches with a floating body).")

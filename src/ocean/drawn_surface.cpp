@@ -47,7 +47,12 @@ std::optional<DrawnPoint> inCell(const GridShape& shape, int i, int j, glm::dvec
     const glm::dvec3 a = *va, b = *vb, c = *vc, d = *vd;
     const bool antiDiagonal = (i < half) != (j < half);
     const glm::dvec3 triangles[2][3] = {{a, c, antiDiagonal ? b : d}, {antiDiagonal ? b : a, antiDiagonal ? c : d, antiDiagonal ? d : b}};
-    for (const auto& t : triangles) {
+    // The same triangles' vertices by their grid indices.
+    const glm::ivec2 ia(i, j), ib(i + 1, j), ic(i, j + 1), id(i + 1, j + 1);
+    const glm::ivec2 corners[2][3] = {{ia, ic, antiDiagonal ? ib : id},
+                                      {antiDiagonal ? ib : ia, antiDiagonal ? ic : id, antiDiagonal ? id : ib}};
+    for (int k = 0; k < 2; ++k) {
+        const glm::dvec3(&t)[3] = triangles[k];
         const std::optional<glm::dvec3> w = barycentric(p, xz(t[0]), xz(t[1]), xz(t[2]));
         constexpr double kEdge = -1e-9; // a point on a shared edge belongs to either triangle
         if (!w || w->x < kEdge || w->y < kEdge || w->z < kEdge)
@@ -58,6 +63,8 @@ std::optional<DrawnPoint> inCell(const GridShape& shape, int i, int j, glm::dvec
         out.normal = glm::normalize(n.y < 0.0 ? -n : n);
         out.cellI = i;
         out.cellJ = j;
+        out.corners = {corners[k][0], corners[k][1], corners[k][2]};
+        out.weights = *w;
         return out;
     }
     return std::nullopt;

@@ -27,7 +27,8 @@ using detail::scenefile::Places;
 
 namespace {
 
-const std::vector<std::string> kTopKeys{"scene", "count", "seed", "size", "time_s", "labels", "vary"};
+const std::vector<std::string> kTopKeys{"scene", "count", "seed", "size", "time_s", "labels", "clip", "vary"};
+const std::vector<std::string> kClipKeys{"frames", "fps"};
 
 // A key as written, resolved: its parameter and list item.
 struct ResolvedKey {
@@ -238,6 +239,42 @@ std::vector<ParameterValue> extremes(const SweepKey& k)
 
 } // namespace
 
+namespace {
+
+// [clip]: frames (1..kMaxClipFrames) at fps (more than 0, at most 240, as
+// `swell render --fps`), each refused at its own place.
+SweepClip readClip(const toml::node& node, const Places& places)
+{
+    const toml::table* t = node.as_table();
+    if (!t)
+        fail(places.of(node.source()), "clip: a table ([clip]) with frames and fps");
+    SweepClip clip;
+    clip.place = places.of(node.source());
+    for (const auto& [key, value] : *t)
+        if (std::find(kClipKeys.begin(), kClipKeys.end(), key.str()) == kClipKeys.end()) {
+            const std::optional<std::string> near = detail::scenefile::closest(key.str(), kClipKeys);
+            fail(places.of(key.source()), fmt::format("unknown key '{}' in [clip]{}", key.str(),
+                                                      near ? fmt::format(" (did you mean '{}'?)", *near) : ""));
+        }
+    const toml::node* frames = t->get("frames");
+    if (!frames || !frames->is_integer() || **frames->as_integer() < 1 || **frames->as_integer() > kMaxClipFrames)
+        fail(frames ? places.of(frames->source()) : clip.place,
+             fmt::format("clip.frames: the frames of each sample's clip, a whole number from 1 to {}, is missing "
+                         "or out of range",
+                         kMaxClipFrames));
+    clip.frames = int(**frames->as_integer());
+    const toml::node* fps = t->get("fps");
+    const std::optional<double> rate = fps ? fps->value<double>() : std::nullopt;
+    if (!rate || !(*rate > 0.0 && *rate <= 240.0))
+        fail(fps ? places.of(fps->source()) : clip.place,
+             "clip.fps: the clip's frames per second of simulated time, a number above 0 and at most 240, is "
+             "missing or out of range");
+    clip.fps = *rate;
+    return clip;
+}
+
+} // namespace
+
 Sweep loadSweepFile(const fs::path& path)
 {
     Sweep sweep;
@@ -294,6 +331,8 @@ Sweep loadSweepFile(const fs::path& path)
             fail(places.of(labels->source()), "labels: true or false");
         sweep.labels = **labels->as_boolean();
     }
+    if (const toml::node* clip = root.get("clip"))
+        sweep.clip = readClip(*clip, places);
     if (const toml::node* vary = root.get("vary")) {
         const toml::table* t = vary->as_table();
         if (!t)

@@ -2,7 +2,8 @@
 """`swell dataset`: bad sweeps and arguments refused with their place and exit
 code 2; a sweep rendered serially, in two shards, and killed half way and
 started again gives the same bytes, and the restart renders only what was not
-done; and, with --dask, the same sweep on a 2-worker Dask LocalCluster
+done; a sweep of clips, each frame with its labels and flow; and, with
+--dask, the same sweep on a 2-worker Dask LocalCluster
 (scripts/dataset-dask.py), again killed half way and resumed.
 
 usage: test_dataset.py SWELL_EXECUTABLE DASK_RUNNER WORK_DIR [--dask]
@@ -172,6 +173,10 @@ BAD += [
      '"camera.distortion_p2" = 0.1\n', "13:", "camera.distortion_p1 = 0.09"),
     ("history", sweep_text(4).replace('time_s = [0.0, 100.0]', 'time_s = [100000.0, 200000.0]')
      .replace('"base.toml"', '"floating.toml"'), "5:", "history_start_s"),
+    # Issue 46: a clip of 0 frames or 10^9, a frame rate of 0.
+    ("clip_no_frames", sweep_text(4, "[clip]\nframes = 0\nfps = 10\n"), "7:10", "clip.frames"),
+    ("clip_billion", sweep_text(4, "[clip]\nframes = 1000000000\nfps = 10\n"), "7:10", "clip.frames"),
+    ("clip_no_rate", sweep_text(4, "[clip]\nframes = 3\nfps = 0\n"), "8:7", "clip.fps"),
 ]
 # A lens that folds in the base scene: at the scene file's line.
 BAD_IN_SCENE = [("lens_in_scene", with_scene("folding.toml"), "folding.toml:10:", "camera.distortion_p1 = 0.1 and")]
@@ -393,5 +398,58 @@ if not all(0.0 <= v <= 360.0 for v in values) or max(values) < 180.0:
     failures.append(f"azimuth: varied values {values} are not the [0, 360] drawn")
 if sorted(os.listdir(os.path.join(azimuth_out, "samples")))[:2] != ["000000.json", "000000.png"]:
     failures.append("azimuth: a sample without labels is its PNG and JSON")
+
+# --- Clips (issue 46, item 1): each sample 3 frames at 10 frames a second,
+# the camera on the floating buoy: every frame's files and its flow; its
+# JSON's frame, time and flow interval; the same instance ids in every
+# frame; the buoy and the camera riding it moving; COCO listing each frame;
+# a frame's file deleted: that sample alone rendered again, the same bytes.
+clip_sweep = write("clip.toml", sweep_text(2, "[clip]\nframes = 3\nfps = 10\n").replace('"base.toml"', '"floating.toml"')
+                   + '"camera.mount_object" = 0\n"camera.mount_offset_m" = { one_of = [[0.0, 2.0, 4.0]] }\n')
+clip_out = os.path.join(work, "clip")
+check("clip", run(clip_sweep, "--out", clip_out), 0, "2 samples to render")
+clip_frames = {}
+for i in range(2):
+    for k in range(3):
+        stem = os.path.join(clip_out, "samples", f"{i:06d}_{k:05d}")
+        missing = [x for x in [".png", ".json", ".range.npy", ".instance.npy", ".flow.npy", ".flow_valid.npy"]
+                   if not os.path.isfile(stem + x)]
+        if missing:
+            failures.append(f"clip: sample {i} frame {k} lacks {missing}")
+            continue
+        with open(stem + ".json") as f:
+            clip_frames[i, k] = json.load(f)
+for i in range(2):
+    frames = [clip_frames.get((i, k)) for k in range(3)]
+    if None in frames:
+        continue
+    times = [f["time_s"] for f in frames]
+    if [f["frame"] for f in frames] != [0, 1, 2] or any(abs(t - (times[0] + k / 10.0)) > 1e-9 for k, t in enumerate(times)):
+        failures.append(f"clip: sample {i}'s frames {[f['frame'] for f in frames]} at {times}, not 0.1 s apart")
+    if any(f["flow"]["interval_s"] != 0.1 for f in frames):
+        failures.append(f"clip: sample {i}'s flow intervals {[f['flow'] for f in frames]}")
+    if len({tuple((o["instance"], o["class"]) for o in f["objects"]) for f in frames}) != 1:
+        failures.append(f"clip: sample {i}'s instance ids change along the clip")
+    poses = [f["objects"][0]["pose"]["position_m"] for f in frames]
+    cameras = [f["camera"]["camera_from_world"] for f in frames]
+    if poses[0] == poses[2] or cameras[0] == cameras[2]:
+        failures.append(f"clip: sample {i}'s buoy ({poses}) or the camera on it does not move")
+if not os.path.isfile(os.path.join(clip_out, "coco.json")):
+    failures.append("clip: no coco.json: a sample not done after its run")
+else:
+    with open(os.path.join(clip_out, "coco.json")) as f:
+        clip_coco = json.load(f)
+    names = [(im["file_name"], im["sample"], im["frame"]) for im in clip_coco["images"]]
+    if names != [(f"samples/{i:06d}_{k:05d}.png", i, k) for i in range(2) for k in range(3)]:
+        failures.append(f"clip: COCO's images {names}")
+with open(os.path.join(clip_out, "manifest.json")) as f:
+    if json.load(f).get("clip", {}).get("frames") != 3:
+        failures.append("clip: the manifest does not say the clip's frames")
+clip_again = os.path.join(work, "clip_again")
+shutil.copytree(clip_out, clip_again)
+os.remove(os.path.join(clip_again, "samples", "000001_00001.flow_valid.npy"))
+check("clip resumed", run(clip_sweep, "--out", clip_again), 0, "sample 1 is not whole",
+      "1 samples to render, 1 done already")
+same_tree(clip_out, clip_again, "a clip's frame deleted and rendered again")
 
 finish()

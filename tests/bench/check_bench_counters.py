@@ -9,8 +9,8 @@ Timings vary and are only checked for being there, the simulation's CPU time
 (second line, and its parts in the JSON) among them. The second run adds --terms: only it may print the
 shading terms' table and the reflection lookups; both print frames per second
 on their first line. It adds --labels too: only it prints the label pass's rows
-("labels" and "frame + labels" in the table of times, "labels" in the
-counters) and writes them in the JSON, with a label pass in every measured
+("labels", "frame + labels" and the optical flow's "flow" in the table of
+times, "labels" in the counters) and writes them in the JSON, with a label pass in every measured
 frame that drew something; the colour frames' counters stay those of the
 first run.
 
@@ -43,10 +43,10 @@ def run(swell, json_path, terms):
         if (table in result.stdout) != terms:
             sys.exit(f"FAIL: '{table}' {'missing with' if terms else 'printed without'} --terms:\n{result.stdout}")
     labels = terms
-    rows = [re.match(r"\s+(labels|frame \+ labels)\s+[0-9.]+ ", line) for line in result.stdout.splitlines()]
+    rows = [re.match(r"\s+(labels|frame \+ labels|flow)\s+[0-9.]+ ", line) for line in result.stdout.splitlines()]
     rows = [m.group(1) for m in rows if m]
-    # "labels" twice (times, counters), "frame + labels" once, only with --labels.
-    if sorted(rows) != (["frame + labels", "labels", "labels"] if labels else []):
+    # "labels" twice (times, counters), "frame + labels" and "flow" once, only with --labels.
+    if sorted(rows) != (["flow", "frame + labels", "labels", "labels"] if labels else []):
         sys.exit(f"FAIL: the label pass's rows {rows} {'with' if labels else 'without'} --labels:\n{result.stdout}")
     # The progress counts frames of the path: warm-up and measured, then the floor's.
     frames, warmup = ARGS[ARGS.index("--frames") + 1], ARGS[ARGS.index("--warmup") + 1]
@@ -67,6 +67,9 @@ def run(swell, json_path, terms):
                 or not sample["wall_ms"]["median"] >= results["labels"]["wall_ms"]["median"]
                 or (results["pipeline_statistics"] and totals["fragment_shader_invocations"] <= 0)):
             sys.exit(f"FAIL: the label pass drew nothing, or its sample costs less than itself: {results['labels']!r}")
+        flow = results["labels"]["flow"]
+        if flow is None or not flow["cpu_ms"]["median"] > 0.0:
+            sys.exit(f"FAIL: no optical flow's time with --labels: {results['labels']!r}")
         if any("labels" not in f for f in results["measured_frames"]):
             sys.exit("FAIL: a measured frame without its label pass in the JSON")
     if not results["frames_per_second"] > 0.0:

@@ -176,3 +176,36 @@ TEST(Sweep, ASamplesVariedKeysPointAtTheirLinesAndKeepTheValuesDrawn)
 }
 
 } // namespace
+
+namespace {
+
+// A sample may be a clip ([clip]: frames at fps along the simulated time,
+// docs/DATASETS.md "Clips"): read as written, its frames' times one frame
+// interval apart from the sample's; a clip of 0 frames or 10^9, a rate of
+// 0, or a key [clip] does not have refused at its place.
+TEST(Sweep, AClipIsReadAndItsBadValuesAreRefusedAtTheirPlace)
+{
+    const std::string head = "scene = \"storm\"\ncount = 4\n[clip]\n";
+    const swell::Sweep sweep = sweepFrom("clip.toml", head + "frames = 12\nfps = 24\n");
+    ASSERT_TRUE(sweep.clip);
+    EXPECT_EQ(sweep.clip->frames, 12);
+    EXPECT_EQ(sweep.clip->fps, 24.0);
+    EXPECT_EQ(sweep.clip->frameTime_s(10.0, 6), 10.25);
+    EXPECT_FALSE(sweepFrom("still.toml", "scene = \"storm\"\ncount = 4\n").clip) << "a sweep without [clip] is of stills";
+    struct Bad {
+        std::string body, words;
+        int line, column;
+    };
+    for (const Bad& bad : {Bad{"frames = 0\nfps = 24\n", "clip.frames", 4, 10},
+                           Bad{"frames = 1000000000\nfps = 24\n", "clip.frames", 4, 10},
+                           Bad{"frames = 8\nfps = 0\n", "clip.fps", 5, 7},
+                           Bad{"frames = 8\nfps = 24\nframe_rate = 3\n", "unknown key 'frame_rate' in [clip]", 6, 1},
+                           Bad{"fps = 24\n", "clip.frames", 3, 1}}) {
+        const swell::InputError e = refusal([&] { sweepFrom("bad_clip.toml", head + bad.body); });
+        EXPECT_EQ(e.place().line, bad.line) << bad.body << e.what();
+        EXPECT_EQ(e.place().column, bad.column) << bad.body << e.what();
+        EXPECT_NE(e.message().find(bad.words), std::string::npos) << e.what();
+    }
+}
+
+} // namespace

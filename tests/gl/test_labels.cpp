@@ -258,11 +258,7 @@ namespace {
 // meets the sea (the range converted to pixels by its gradient).
 TEST_F(Labels, ThroughALensTheWrittenModelFindsEachPixelsRay)
 {
-    swell::Scene scene = swell::test::openSea();
-    scene.camera.distortionK1 = -0.22;
-    scene.camera.distortionK2 = 0.05;
-    scene.camera.distortionP1 = 0.002;
-    scene.camera.distortionP2 = -0.001;
+    const swell::Scene scene = swell::test::openSeaThroughALens();
     swell::Renderer renderer(scene);
     renderer.setWaveModel(std::make_shared<swell::FlatModel>());
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);

@@ -61,7 +61,8 @@ class ObjectsMadeWithoutTheirConstructor(unittest.TestCase):
                          "set": ("fog.start_m", 1.0), "__getitem__": ("fog.start_m",),
                          "__setitem__": ("fog.start_m", 1.0), "list_size": ("objects",), "add_object": ("builtin:buoy",),
                          "remove_object": (0,), "object_path": (0,), "camera_at": (0.0,), "save": ("/nonexistent/x",),
-                         "project": ((0.0, 0.0, -5.0),), "__deepcopy__": ({},)}
+                         "project": ((0.0, 0.0, -5.0),), "__deepcopy__": ({},),
+                         "optical_flow": (swell.Labels.__new__(swell.Labels), 0.0, swell.Labels.__new__(swell.Labels), 0.1)}
             for cls in classes:
                 for name in sorted(vars(cls)):
                     if name.startswith("__") and name not in ("__getitem__", "__setitem__", "__copy__", "__deepcopy__", "__repr__"):

@@ -128,6 +128,27 @@ class SameAsTheExecutable(unittest.TestCase):
         np.testing.assert_array_equal(cpu.camera_from_world, camera.camera_from_world)
         self.assertEqual(swell.horizon_of(cpu).line, self.labels.horizon.line)
 
+    def test_the_optical_flow_is_the_executables(self):
+        # The executable's still: its flow to labels drawn one frame (1/30 s) later.
+        with open(self.cli("json")) as f:
+            interval_s = json.load(f)["flow"]["interval_s"]
+        self.assertEqual(interval_s, 1.0 / 30.0)
+        renderer = swell.Renderer(self.scene)
+        now_s, next_s = TIME_S, TIME_S + interval_s
+        renderer.render(renderer.scene_camera_at(now_s), now_s, SIZE)
+        labels = renderer.render_labels(renderer.scene_camera_at(now_s), SIZE)
+        renderer.render(renderer.scene_camera_at(next_s), next_s, SIZE)
+        later = renderer.render_labels(renderer.scene_camera_at(next_s), SIZE)
+        flow, valid = renderer.optical_flow(labels, now_s, later, interval_s)
+        self.assertEqual((flow.dtype, flow.shape), (np.float32, (SIZE[1], SIZE[0], 2)))
+        self.assertEqual((valid.dtype, valid.shape), (np.uint8, (SIZE[1], SIZE[0])))
+        np.testing.assert_array_equal(flow, np.load(self.cli("flow.npy")))
+        np.testing.assert_array_equal(valid, np.load(self.cli("flow_valid.npy")))
+        # The sky is never valid; most of the sea and the boats are.
+        sky = labels.semantic == swell.CLASS_SKY
+        self.assertFalse(np.any(valid[sky]))
+        self.assertGreater(valid[~sky].mean(), 0.9)
+
 
 class RenderArguments(support.SmallRendererCase):
     def test_bad_sizes_times_and_cameras_raise(self):

@@ -23,4 +23,16 @@ inline Scene openSpectralStorm()
     return scene;
 }
 
+// The open sea seen through a strong lens with a tangential part (k1 -0.22,
+// k2 0.05, p1 0.002, p2 -0.001): the label tests' lens.
+inline Scene openSeaThroughALens()
+{
+    Scene scene = openSea();
+    scene.camera.distortionK1 = -0.22;
+    scene.camera.distortionK2 = 0.05;
+    scene.camera.distortionP1 = 0.002;
+    scene.camera.distortionP2 = -0.001;
+    return scene;
+}
+
 } // namespace swell::test

@@ -39,6 +39,19 @@ struct SWELL_API SweepKey {
     std::vector<ParameterValue> choices;
 };
 
+// The longest clip a sample may be, frames.
+inline constexpr int kMaxClipFrames = 10000;
+
+// A sample that is a clip (docs/DATASETS.md, "Clips"): `frames` frames at
+// `fps` along the simulated time from the sample's time, each with its
+// labels and its optical flow to the next.
+struct SWELL_API SweepClip {
+    int frames = 1;      // 1..kMaxClipFrames
+    double fps = 30.0;   // frames per second of simulated time, (0, 240]
+    SourcePlace place;   // where [clip] was written
+    double frameTime_s(double start_s, int frame) const { return start_s + double(frame) / fps; }
+};
+
 struct SWELL_API Sweep {
     std::filesystem::path file;
     // The base scene: a scene file in the sweep file's folder (or below it),
@@ -51,6 +64,7 @@ struct SWELL_API Sweep {
     glm::ivec2 size{640, 480};  // pixels
     double timeMin_s = 0.0, timeMax_s = 0.0; // each sample's time, uniform in [min, max], s
     bool labels = true;         // write each sample's ground truth (swell/dataset/labels.h)
+    std::optional<SweepClip> clip; // each sample a clip; empty: a still
     std::vector<SweepKey> vary; // in the file's order
     std::string text;           // the file as read (a dataset's manifest keeps it)
 };
