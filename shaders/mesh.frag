@@ -35,12 +35,14 @@ void main()
         n = -n;
 #if SWELL_LABEL_PASS
     // The ground the swash wets, where it is at least half wet (its sand
-    // is drawn darker there, below); and the beach below the still water
-    // level that a trough leaves bare, which the water has only just left
-    // (the shading keeps its dry albedo, as it does the floor seen through
-    // the shallows, whose colour is the water's own numbers).
+    // is drawn darker there, below); and, seen from above the sea, the
+    // beach below the still water level that a trough leaves bare, which
+    // the water has only just left (the shading keeps its dry albedo, as it
+    // does the floor seen through the shallows, whose colour is the water's
+    // own numbers). From below the sea the floor is under the water.
     uint semantic = label.x;
-    float wetness = vPosition.y < 0.0 && n.y >= 0.7 ? 1.0 : swashWetness(vPosition.y, n);
+    bool bared = vPosition.y < 0.0 && n.y >= 0.7 && eyePosition.y > 0.0;
+    float wetness = bared ? 1.0 : swashWetness(vPosition.y, n);
     if (semantic == SWELL_LABEL_TERRAIN && swashWets * wetness >= SWELL_LABEL_WET_SAND_WETNESS)
         semantic = SWELL_LABEL_WET_SAND;
     writeLabels(distance(vPosition, eyePosition), n, semantic, label.y);

@@ -121,6 +121,32 @@ TEST_F(CoastLabels, SurfAndWetSandAreWhereTheShoreHasThem)
     EXPECT_EQ(dryTooLow, 0) << "dry sand below the half-wet line";
     EXPECT_GT(resolvedWet, 50) << "near wet sand, where a pixel spans under " << kResolvedRise_m << " m";
     EXPECT_GT(resolvedDry, 50) << "near dry sand, where a pixel spans under " << kResolvedRise_m << " m";
+    // From under the sea (a diver 1.2 m down over 2.5 m of water, looking at the
+    // beach's slope) the floor below the still level is under the water,
+    // not bared sand: terrain.
+    swell::CameraSettings diver = onTheBeach;
+    diver.position_m = {0.0, -1.2, 200.0};
+    diver.pitch_deg = -10.0;
+    const swell::Camera below = swell::cameraAt(diver, 0.0);
+    renderer.renderImage(below, 20.0, size);
+    const swell::FrameLabels underwater = renderer.renderLabels(below, size);
+    int floorSeen = 0, floorCalledWet = 0;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
+            const std::uint16_t s = underwater.semantic[i];
+            if (!swell::isGroundClass(s) || !std::isfinite(underwater.range_m[i]))
+                continue;
+            const glm::dvec3 p = below.position_m + double(underwater.range_m[i]) * pixelRay(underwater.camera, x, y);
+            if (p.y >= -0.05)
+                continue;
+            ++floorSeen;
+            floorCalledWet += s == SWELL_LABEL_WET_SAND;
+        }
+    std::printf("from 1.2 m under the sea: %d pixels of floor below the still level, %d called wet sand\n", floorSeen,
+                floorCalledWet);
+    EXPECT_GT(floorSeen, 1000) << "the diver sees the floor";
+    EXPECT_EQ(floorCalledWet, 0) << "of " << floorSeen << " pixels of floor under the water";
     // The classes have their names.
     const std::vector<std::string> classes = swell::labelClassesOf(scene);
     EXPECT_EQ(classes[SWELL_LABEL_SURF], "surf");
