@@ -53,6 +53,23 @@ glm::ivec4 boxInImage(const CameraCalibration& camera, const ObjectLabel& object
 // How many times the image's width and height the truncation is measured over.
 constexpr int kWideField = 3;
 
+// Whether the frame shows nothing but the object, the sea and the sky
+// where the object can show (its box's pixels): then nothing hides any of
+// it, and its render alone (the water kept, over the same rectangle) is
+// the frame's own pixels of it, so it need not be drawn again. Anything
+// else there (another object, the ground), in front or behind, and it is.
+bool nothingElseWithin(const FrameLabels& labels, std::uint16_t instance, glm::ivec4 within)
+{
+    for (int y = within.y; y < within.w; ++y)
+        for (int x = within.x; x < within.z; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(labels.size.x) + std::size_t(x);
+            const std::uint16_t shown = labels.instance[i];
+            if ((shown != 0 && shown != instance) || isGroundClass(labels.semantic[i]))
+                return false;
+        }
+    return true;
+}
+
 } // namespace
 
 void LabelRenderer::measureSilhouettes(RenderContext& context, const Camera& camera, FrameLabels& labels)
@@ -72,15 +89,19 @@ void LabelRenderer::measureSilhouettes(RenderContext& context, const Camera& cam
         const glm::ivec4 within = boxInImage(calibration, o);
         if (within.x >= within.z || within.y >= within.w)
             continue; // beside the image
-        drawPass(context, camera, view, size, labels.objects, Alone{k, within});
-        target_.readInstance(alone);
+        const bool alreadyAlone = nothingElseWithin(labels, o.instance, within);
+        if (!alreadyAlone) {
+            drawPass(context, camera, view, size, labels.objects, Alone{k, within});
+            target_.readInstance(alone);
+        }
+        const std::vector<std::uint16_t>& shown = alreadyAlone ? labels.instance : alone;
         std::uint8_t* mask = labels.amodal.data() + k * pixels;
         long long count = 0;
         bool atBorder = false;
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x) {
                 const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
-                if (alone[i] != o.instance)
+                if (shown[i] != o.instance)
                     continue;
                 mask[i] = 1;
                 ++count;
