@@ -199,7 +199,7 @@ void writeFrame(const fs::path& out, int i, const Sweep& sweep, const SweepSampl
     if (sweep.clip)
         json["frame"] = f.frame;
     if (flow)
-        json["flow"] = {{"interval_s", flow->interval_s}, {"next_time_s", f.time_s + flow->interval_s}};
+        json["flow"] = flowJson(*flow, f.time_s);
     Json varied = Json::object();
     for (std::size_t k = 0; k < sweep.vary.size(); ++k)
         varied[sweep.vary[k].key] = sweptValueJson(sweep.vary[k], sample.values[k]);

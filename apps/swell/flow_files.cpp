@@ -1,6 +1,5 @@
 #include "flow_files.h"
 
-#include "label_files.h"
 #include "swell/dataset/atomic_file.h"
 
 #include <fmt/format.h>
@@ -26,6 +25,11 @@ void writeFlowFiles(const FrameFlow& flow, const fs::path& colour)
     static_assert(std::endian::native == std::endian::little, "the .npy descriptors say little-endian");
     writeFileAtomically(paths[0], npyBytes(flow.flow_px.data(), pixels * sizeof(glm::vec2), "<f4", {h, w, 2}));
     writeFileAtomically(paths[1], npyBytes(flow.valid.data(), pixels, "|u1", {h, w}));
+}
+
+Json flowJson(const FrameFlow& flow, double time_s)
+{
+    return {{"interval_s", flow.interval_s}, {"next_time_s", time_s + flow.interval_s}};
 }
 
 } // namespace swell::app

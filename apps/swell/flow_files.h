@@ -6,6 +6,7 @@
 // (docs/LABELS.md, "Optical flow").
 #pragma once
 
+#include "label_files.h"
 #include "swell/dataset/flow.h"
 
 #include <filesystem>
@@ -17,5 +18,9 @@ namespace swell::app {
 std::vector<std::filesystem::path> flowFilePaths(const std::filesystem::path& colour);
 
 void writeFlowFiles(const FrameFlow& flow, const std::filesystem::path& colour);
+
+// The frame JSON's "flow" entry for a frame drawn at time_s whose flow goes
+// to the frame flow.interval_s later: {"interval_s", "next_time_s"}.
+Json flowJson(const FrameFlow& flow, double time_s);
 
 } // namespace swell::app

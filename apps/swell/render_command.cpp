@@ -133,7 +133,7 @@ void writeLabelsWithFlow(const PendingLabels& frame, const FrameLabels& next, do
     writeFlowFiles(flow, frame.colour);
     Json json = frameJson(frame.labels, renderer.scene(), frame.time_s,
                           4.0 * renderer.waveModel().heightDeviation_m(), frame.colour);
-    json["flow"] = {{"interval_s", interval_s}, {"next_time_s", frame.time_s + interval_s}};
+    json["flow"] = flowJson(flow, frame.time_s);
     writeFrameJson(json, frame.colour);
 }
 
