@@ -24,11 +24,6 @@ namespace swell {
 
 namespace {
 
-bool isWater(std::uint16_t semantic)
-{
-    return semantic == SWELL_LABEL_WATER || semantic == SWELL_LABEL_WHITECAP_FOAM || semantic == SWELL_LABEL_WAKE_FOAM;
-}
-
 // The world direction of pixel (x, y)'s centre ray, through the lens.
 glm::dvec3 centreRay(const CameraCalibration& c, int x, int y)
 {
@@ -158,7 +153,7 @@ std::vector<std::optional<glm::dvec3>> movedPoints(const FrameLabels& now, doubl
                 if (before && after)
                     moved[i] = glm::dvec3(after->pose.worldFromObject * glm::inverse(before->pose.worldFromObject) *
                                           glm::dvec4(p, 1.0));
-            } else if (isWater(now.semantic[i])) {
+            } else if (isSeaClass(now.semantic[i])) {
                 water.push_back(WaterPoint{i, p, std::nullopt});
             } else {
                 moved[i] = p; // the land does not move

@@ -20,6 +20,7 @@
 #include "swell/renderer.h"
 #include "swell/scene/grid.h"
 #include "swell/scene/scene.h"
+#include "swell/scene/scene_file.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -27,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <vector>
 
@@ -439,6 +441,33 @@ TEST_F(OpticalFlow, WarpingTheNextFrameBackByTheFlowGivesThisFrame)
     // water). Without the flow: 0.027.
     EXPECT_LT(warped, 0.012);
     EXPECT_GT(unwarped, 2.5 * warped);
+}
+
+// Every class of the sea moves with it: the coast's surf (a class of its
+// own) as the water does. From the coast preset's camera, still, over a
+// tenth of a second, the surf's points move with the breaking waves: most
+// of them by more than a hundredth of a pixel (a point taken for land stays
+// put, and its flow is the still camera's, 0).
+TEST_F(OpticalFlow, TheSurfMovesWithTheWater)
+{
+    const swell::Scene scene = swell::loadScene(std::filesystem::path(SWELL_SOURCE_DIR) / "scenes" / "coast.toml");
+    swell::Renderer renderer(scene);
+    const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
+    const glm::ivec2 size(256, 144);
+    const double time_s = 20.0, interval_s = 0.1;
+    const LabelledFrame first = drawFrame(renderer, camera, time_s, size);
+    const LabelledFrame second = drawFrame(renderer, camera, time_s + interval_s, size);
+    const swell::FrameFlow flow = swell::opticalFlowOf(first.labels, time_s, second.labels, interval_s,
+                                                       swell::seaMotionOf(scene, renderer.waveModel()));
+    int surf = 0, moving = 0;
+    for (std::size_t i = 0; i < first.labels.semantic.size(); ++i)
+        if (first.labels.semantic[i] == SWELL_LABEL_SURF && flow.valid[i]) {
+            ++surf;
+            moving += glm::length(flowAt(flow, i)) > 0.01;
+        }
+    std::printf("surf %d valid pixels, %d moving by more than 0.01 px\n", surf, moving);
+    EXPECT_GT(surf, 200);
+    EXPECT_GT(moving, surf / 2);
 }
 
 } // namespace
