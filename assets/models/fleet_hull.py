@@ -147,3 +147,26 @@ def displacement(tris):
     buoyancy."""
     volume, centre = boat_model.volume_below(tris)
     return volume * boat_model.WATER_DENSITY_KG_PER_M3, centre
+
+
+def metacentric_height(tris, center_of_mass_height_m, beam_scale=1.0):
+    """GM = KB + BM - KG, m, heights from the waterline: the initial
+    stability of a floating body (Bouguer's metacentre; Journee & Massie
+    2001, Offshore Hydromechanics, sec. 2.4): BM is the waterplane's second
+    moment about the centreline over the displaced volume. The waterplane is
+    the loop where the hull's triangles cross y = 0; its second moment comes
+    from Green's theorem over those segments. Stretching the beam by s
+    multiplies the moment by s^3 and the volume by s: BM by s^2."""
+    moment = 0.0
+    for t in tris:
+        cut = []
+        for k in range(3):
+            p, q = t[k], t[(k + 1) % 3]
+            if (p[1] < 0) != (q[1] < 0):
+                f = -p[1] / (q[1] - p[1])
+                cut.append((p[0] + f * (q[0] - p[0]), p[2] + f * (q[2] - p[2])))
+        if len(cut) == 2:
+            (x0, z0), (x1, z1) = cut
+            moment += (x0 * z1 - x1 * z0) * (z0 * z0 + z0 * z1 + z1 * z1) / 12.0
+    volume, centre = boat_model.volume_below(tris)
+    return centre[1] + abs(moment) / volume * beam_scale ** 2 - center_of_mass_height_m

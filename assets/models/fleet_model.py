@@ -9,9 +9,12 @@ Every model is drawn at its design size, its origin on its design waterline
   the waterline: the keel, a yacht's fin, a buoy's float bottom),
   displacement_kg (the sea water the hull volume displaces below the
   waterline, computed here from the mesh) and center_of_mass_m (above the
-  centre of buoyancy, at a height chosen for the type: a yacht's and a
-  buoy's ballast low, a ship's cargo high), so that a rigid body of that mass
-  there floats level with its origin on the water;
+  centre of buoyancy, at a height low enough that the metacentric height
+  GM = KB + BM - KG stays positive down to 0.75 of the design beam, where BM,
+  the waterplane's second moment over the volume, falls with the beam
+  squared: a yacht's and a buoy's ballast low, the ships' 0.5 to 2 m under
+  the waterline), so that a rigid body of that mass there floats level with
+  its origin on the water;
 - a node "hull": the closed hull volume (never drawn; the body's shape);
 - materials named "hull" (the topsides' or a buoy's body's paint) and
   "superstructure", which a scene may recolour (hull_color,
@@ -208,7 +211,7 @@ def tube(p, q, r, sides):
 def fishing_trawler():
     lines = Lines(18.0, 6.0, 2.2, 1.5, 2.6, n=3.0, stern=0.75, mid=(0.35, 0.5), run=2.0, entrance=1.5, flare=1.06,
                   rake_m=1.5, forefoot=0.35, stations=32)
-    m = Model("fishing_trawler", lines.closed(), 0.25, {"hull": (0.02, 0.09, 0.25),
+    m = Model("fishing_trawler", lines.closed(), -0.45, {"hull": (0.02, 0.09, 0.25),
                                                         "superstructure": PAINT["white"]})
     painted_hull(m, lines, (0.10, 0.30), "antifouling red")
     m.add("deck", "deck grey", lines.deck())
@@ -250,7 +253,7 @@ def bulwark(lines, height_m, last_u):
 def tug():
     lines = Lines(24.0, 9.0, 3.4, 1.4, 2.8, n=3.0, stern=0.85, mid=(0.3, 0.45), run=2.0, entrance=1.4, flare=1.08,
                   rake_m=1.2, forefoot=0.4, stations=32)
-    m = Model("tug", lines.closed(), 0.3, {"hull": (0.01, 0.01, 0.012), "superstructure": PAINT["white"]})
+    m = Model("tug", lines.closed(), -0.7, {"hull": (0.01, 0.01, 0.012), "superstructure": PAINT["white"]})
     painted_hull(m, lines, (0.10, 0.45), "antifouling red")
     m.add("deck", "deck grey", lines.deck())
     m.add("hull skin", "red", bulwark(lines, 1.0, 1.0))
@@ -284,7 +287,7 @@ def container_ship():
     """A 180 m feeder container ship at full size: 28 m beam, 9 m draft."""
     lines = Lines(180.0, 28.0, 9.0, 7.0, 9.0, n=6.0, stern=0.55, mid=(0.3, 0.6), run=1.8, entrance=1.6, flare=1.02,
                   rake_m=8.0, forefoot=0.5, stations=40)
-    m = Model("container_ship", lines.closed(), 2.0, {"hull": (0.02, 0.04, 0.09), "superstructure": PAINT["white"]})
+    m = Model("container_ship", lines.closed(), -1.0, {"hull": (0.02, 0.04, 0.09), "superstructure": PAINT["white"]})
     painted_hull(m, lines, (0.5, 2.0), "antifouling red")
     m.add("deck", "deck grey", lines.deck())
     # The accommodation block and bridge aft, with its wings.
@@ -320,7 +323,7 @@ def tanker():
     """A 150 m product tanker at full size: 24 m beam, 9.5 m draft."""
     lines = Lines(150.0, 24.0, 9.5, 4.5, 7.0, n=8.0, stern=0.6, mid=(0.25, 0.65), run=1.8, entrance=1.8, flare=1.0,
                   rake_m=5.0, forefoot=0.55, stations=40)
-    m = Model("tanker", lines.closed(), 0.0, {"hull": (0.03, 0.03, 0.035), "superstructure": PAINT["white"]})
+    m = Model("tanker", lines.closed(), -2.2, {"hull": (0.03, 0.03, 0.035), "superstructure": PAINT["white"]})
     painted_hull(m, lines, (0.5, 1.6), "antifouling red")
     m.add("deck", "red", lines.deck())
     deck_y, half = lines.deck_at(-60.0)
@@ -343,7 +346,7 @@ def tanker():
 def kayak():
     lines = Lines(4.8, 0.62, 0.12, 0.24, 0.30, n=2.0, stern=0.0, mid=(0.45, 0.5), run=1.6, entrance=1.5, flare=1.0,
                   rake_m=0.25, forefoot=0.35, stern_draft=0.35, stations=28, below_rows=4, above_rows=1)
-    m = Model("kayak", lines.closed(), 0.08, {"hull": (0.85, 0.40, 0.01), "superstructure": (0.02, 0.10, 0.45)})
+    m = Model("kayak", lines.closed(), 0.03, {"hull": (0.85, 0.40, 0.01), "superstructure": (0.02, 0.10, 0.45)})
     painted_hull(m, lines, (-0.2, -0.19), "hull")  # one colour all over: no bands on a kayak
     m.add("deck", "hull", lines.deck())
     deck_y, _ = lines.deck_at(-0.2)

@@ -17,6 +17,7 @@ sys.path.insert(0, str(MODELS))
 sys.dont_write_bytecode = True  # the models' folder is installed as it is
 
 import boat_model  # noqa: E402
+import fleet_hull  # noqa: E402
 import fleet_model  # noqa: E402
 import make_models  # noqa: E402
 
@@ -79,6 +80,18 @@ class MakeModels(unittest.TestCase):
                 self.assertAlmostEqual(design["draft_m"], -min(ys), delta=1e-4)
                 self.assertIn("hull", model.colors)
                 self.assertIn("superstructure", model.nodes, "a superstructure a scene can leave out")
+                # Upright: positive initial stability at the design beam and
+                # at the narrowest a scene may ask for (0.75 of it).
+                for beam_scale in (1.0, 0.75):
+                    self.assertGreater(fleet_hull.metacentric_height(model.hull_tris, model.com_height_m, beam_scale),
+                                       0.05, "GM at %.2f of the beam" % beam_scale)
+
+    def test_metacentric_height_of_a_box(self):
+        # A box barge of beam B and draft T, its centre of mass on the
+        # waterline: KB = -T/2, BM = B^2 / (12 T), so GM = B^2/(12 T) - T/2.
+        tris = boat_model.box_tris((0.0, 0.0, 0.0), (5.0, 1.0, 2.0))  # 10 m long, 4 m beam, 1 m draft
+        self.assertAlmostEqual(fleet_hull.metacentric_height(tris, 0.0), 16.0 / 12.0 - 0.5, places=9)
+        self.assertAlmostEqual(fleet_hull.metacentric_height(tris, 0.0, 0.5), 4.0 / 12.0 - 0.5, places=9)
 
 
 if __name__ == "__main__":
