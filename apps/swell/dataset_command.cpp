@@ -223,8 +223,9 @@ SampleFrame drawFrame(Renderer& renderer, const Sweep& sweep, int frame, double 
     SampleFrame f;
     f.frame = frame;
     f.time_s = time_s;
-    f.camera = renderer.sceneCameraAt(time_s);
-    f.sensor = renderSensorFrame(renderer, f.camera, time_s, sweep.size, sweep.labels);
+    f.sensor = renderSensorFrame(
+        renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, time_s, sweep.size, sweep.labels);
+    f.camera = f.sensor.camera;
     return f;
 }
 
