@@ -251,8 +251,10 @@ void writeClip(const fs::path& out, int i, const Sweep& sweep, const SweepSample
     }
     std::optional<FrameFlow> lastFlow;
     if (sweep.labels) {
-        const SampleFrame next = drawFrame(renderer, sweep, clip.frames, clip.frameTime_s(sample.time_s, clip.frames));
-        lastFlow = flowTo(*pending, *next.sensor.labels);
+        // Its labels alone: the sensor's draws of an image nobody sees would
+        // cost motion_samples frames with a shutter.
+        const double next_s = clip.frameTime_s(sample.time_s, clip.frames);
+        lastFlow = flowTo(*pending, renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, sweep.size));
     }
     writeFrame(out, i, sweep, sample, renderer, *pending, lastFlow);
 }
