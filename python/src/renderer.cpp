@@ -367,7 +367,7 @@ void bindRenderer(py::module_& m)
         .def("render_sensor", &PyRenderer::renderSensor, py::arg("camera"), py::arg("time_s"), py::arg("size"),
              py::arg("labels") = true,
              "As `swell render` draws a frame: through the scene camera's lens distortion, exposure and "
-             "noise (camera.distortion_*, exposure_ev, noise_*; docs/LABELS.md), its labels resampled "
+             "noise (camera.distortion_*, or camera.lens and fisheye_*; exposure_ev, noise_*; docs/LABELS.md), its labels resampled "
              "through the same lens. Returns (uint8 (H, W, 4) RGBA, swell.Labels or None).")
         .def("optical_flow", &PyRenderer::opticalFlow, py::arg("labels"), py::arg("time_s"), py::arg("next_labels"),
              py::arg("interval_s"),

@@ -204,12 +204,7 @@ SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double t
         if (labels)
             frame.labels = renderer.renderLabels(camera, size);
     } else {
-        CameraCalibration c = calibrationOf(camera, size);
-        c.k1 = lens.k1;
-        c.k2 = lens.k2;
-        c.k3 = lens.k3;
-        c.p1 = lens.p1;
-        c.p2 = lens.p2;
+        const CameraCalibration c = sensorCalibrationOf(camera, lens, size);
         checkLens(renderer.scene(), size, camera.fovY_deg); // the rule scenes and sweeps are checked by
         const glm::ivec2 wide = detail::pinholeSize(lens, c);
         Camera pinhole = camera;
