@@ -148,6 +148,29 @@ class Sensor(unittest.TestCase):
         self.assertTrue(labels.horizon.curve_px)
         self.assertFalse((labels.semantic == 0).any())
 
+    def test_through_a_fisheye_the_calibration_names_its_model(self):
+        """A fisheye (camera.lens = "kannala_brandt"): OpenCV's cv2.fisheye D, and the focal length that puts
+        the top and bottom borders fov_y_deg / 2 from the axis (docs/SCENE.md, "The lens")."""
+        scene = open_sea()
+        scene["camera.lens"] = "kannala_brandt"
+        scene["camera.fov_y_deg"] = 80.0
+        scene["camera.fisheye_k1"] = 0.02
+        scene["camera.fisheye_k4"] = -0.001
+        renderer = swell.Renderer(scene)
+        image, labels = renderer.render_sensor(scene.camera_at(0.0), 1.0, (96, 64))
+        self.assertEqual(image.shape, (64, 96, 4))
+        self.assertEqual(labels.camera.distortion_model, "kannala-brandt")
+        self.assertEqual(labels.camera.distortion, (0.02, 0.0, 0.0, -0.001))
+        half = np.radians(40.0)
+        theta_d = half * (1.0 + 0.02 * half ** 2 - 0.001 * half ** 8)
+        self.assertAlmostEqual(labels.camera.fy_px, 32.0 / theta_d, places=9)
+        self.assertFalse((labels.semantic == 0).any())
+        scene["camera.fisheye_k1"] = -0.3
+        scene["camera.fov_y_deg"] = 100.0
+        with self.assertRaises(swell.InputError) as refused:
+            swell.Renderer(scene).render_sensor(scene.camera_at(0.0), 1.0, (96, 64))
+        self.assertIn("theta_d stops growing", refused.exception.message)
+
 
 class Shoreline(unittest.TestCase):
     """The coast preset's shoreline: each chain's corners lie between a water (or foam, or surf) and a terrain
