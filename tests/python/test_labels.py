@@ -6,11 +6,15 @@ pixels carry its instance and class, its 2D box lies within its projected
 3D box, and every range on it lands inside that box, placed by the
 returned object transform."""
 
+import json
+import os
+import subprocess
 import unittest
 
 import numpy as np
 
 import swell
+import support
 
 SIZE = (320, 240)
 
@@ -165,6 +169,21 @@ class Sensor(unittest.TestCase):
         theta_d = half * (1.0 + 0.02 * half ** 2 - 0.001 * half ** 8)
         self.assertAlmostEqual(labels.camera.fy_px, 32.0 / theta_d, places=9)
         self.assertFalse((labels.semantic == 0).any())
+        # swell render writes the same calibration in its JSON: the model, cv2.fisheye's D and K.
+        app = support.needs_app(self)
+        folder = support.output_folder(self)
+        path = os.path.join(folder, "fisheye.toml")
+        with open(path, "w") as f:
+            f.write("[grid]\nresolution = 32\n\n[camera]\nlens = \"kannala_brandt\"\nfov_y_deg = 80.0\n"
+                    "fisheye_k1 = 0.02\nfisheye_k4 = -0.001\n")
+        subprocess.run([app, "render", path, "-o", os.path.join(folder, "fisheye.png"), "--size", "96x64", "--labels"],
+                       check=True, stdout=subprocess.DEVNULL)
+        with open(os.path.join(folder, "fisheye.json")) as f:
+            written = json.load(f)["camera"]
+        self.assertEqual(written["distortion_model"], "kannala-brandt")
+        self.assertEqual(written["distortion"], [0.02, 0.0, 0.0, -0.001])
+        for key in ["fx_px", "fy_px", "cx_px", "cy_px"]:
+            self.assertEqual(written[key], getattr(labels.camera, key), key)
         scene["camera.fisheye_k1"] = -0.3
         scene["camera.fov_y_deg"] = 100.0
         with self.assertRaises(swell.InputError) as refused:
