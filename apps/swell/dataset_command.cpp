@@ -218,8 +218,9 @@ SampleFrame drawFrame(Renderer& renderer, const Sweep& sweep, int frame, double 
     SampleFrame f;
     f.frame = frame;
     f.time_s = time_s;
-    f.camera = renderer.sceneCameraAt(time_s);
-    f.sensor = renderSensorFrame(renderer, f.camera, time_s, sweep.size, sweep.labels);
+    f.sensor = renderSensorFrame(
+        renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, time_s, sweep.size, sweep.labels);
+    f.camera = f.sensor.camera;
     return f;
 }
 
@@ -245,8 +246,10 @@ void writeClip(const fs::path& out, int i, const Sweep& sweep, const SweepSample
     }
     std::optional<FrameFlow> lastFlow;
     if (sweep.labels) {
-        const SampleFrame next = drawFrame(renderer, sweep, clip.frames, clip.frameTime_s(sample.time_s, clip.frames));
-        lastFlow = flowTo(*pending, *next.sensor.labels);
+        // Its labels alone: the sensor's draws of an image nobody sees would
+        // cost motion_samples frames with a shutter.
+        const double next_s = clip.frameTime_s(sample.time_s, clip.frames);
+        lastFlow = flowTo(*pending, renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, sweep.size));
     }
     writeFrame(out, i, sweep, sample, renderer, *pending, lastFlow);
 }

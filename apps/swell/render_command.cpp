@@ -182,9 +182,10 @@ int runRender(const RenderOptions& options)
     std::optional<PendingLabels> pending;
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
-        const Camera camera = renderer.sceneCameraAt(t);
-        // Through the camera's lens and sensor (swell/dataset/sensor.h).
-        SensorFrame sensor = renderSensorFrame(renderer, camera, t, size, options.labels);
+        // Through the camera's lens and sensor (swell/dataset/sensor.h), the
+        // camera where the scene puts it at each time the sensor draws.
+        SensorFrame sensor = renderSensorFrame(
+            renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, t, size, options.labels);
         const fs::path frame = options.duration_s ? sequencePath(output, i) : output;
         // The flow asks the waves at the last frame's time and this one's
         // before the bodies' thread asks them at the next.
@@ -196,7 +197,7 @@ int runRender(const RenderOptions& options)
         // The bodies step towards the next frame (or the last frame's labels
         // for its flow) while this one is written.
         if (i + 1 < frames || options.labels)
-            renderer.anticipate(options.time_s + double(i + 1) / options.fps);
+            renderer.anticipate(firstDrawTime_s(scene.camera, options.time_s + double(i + 1) / options.fps));
         if (video)
             videoWriter->write(sensor.image);
         else
@@ -205,8 +206,8 @@ int runRender(const RenderOptions& options)
     }
     if (pending) {
         const double next_s = options.time_s + double(frames) / options.fps;
-        const SensorFrame next = renderSensorFrame(renderer, renderer.sceneCameraAt(next_s), next_s, size, true);
-        writeLabelsWithFlow(*pending, *next.labels, interval_s, renderer);
+        const FrameLabels next = renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, size);
+        writeLabelsWithFlow(*pending, next, interval_s, renderer);
     }
     if (videoWriter)
         videoWriter->finish();
