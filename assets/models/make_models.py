@@ -34,6 +34,7 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the models: the folder is installed as it is
 import boat_model  # noqa: E402
+import fleet_model  # noqa: E402
 
 HERE = pathlib.Path(__file__).resolve().parent
 
@@ -384,11 +385,53 @@ def boat():
     return json.dumps(g.doc, indent=1).encode("utf-8") + b"\n"
 
 
+def fleet_file(model):
+    """One of the fleet (fleet_model.py): its root named after its class,
+    with its design numbers in extras, the node "hull" its closed volume, a
+    node per part, a material per paint."""
+    g = Gltf()
+    materials = {name: g.material(name, rgb) for name, rgb in model.colors.items()}
+    children = []
+    points, indices = welded(model.hull_tris)
+    view = g.view(b"".join(struct.pack("<3f", *p) for p in points), ARRAY_BUFFER)
+    pos = g.accessor(view, FLOAT, len(points), "VEC3", bounds=bounds_of(points))
+    children.append(g.node("hull", mesh=g.mesh("hull", [{"attributes": {"POSITION": pos},
+                                                         "indices": g.indices(indices)}])))
+    drawn = 0
+    for node_name, parts in model.nodes.items():
+        primitives = []
+        for material, tris in parts.items():
+            if not tris:
+                continue
+            verts, idx = creased_normals(tris)
+            pos, nrm = g.positions_normals(verts)
+            primitives.append({"attributes": {"POSITION": pos, "NORMAL": nrm}, "indices": g.indices(idx),
+                               "material": materials[material]})
+            drawn += len(idx)
+        children.append(g.node(node_name, mesh=g.mesh(node_name, primitives)))
+    design = model.design()
+    design["drawn_triangles"] = drawn
+    root = g.node(model.name, children=children, extras=design)
+    g.doc["scenes"][0]["nodes"] = [root]
+    g.doc["buffers"].append({
+        "byteLength": len(g.data),
+        "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(g.data)).decode("ascii"),
+    })
+    return json.dumps(g.doc, separators=(",", ":")).encode("utf-8") + b"\n", design
+
+
 def main(folder=HERE):
     folder = pathlib.Path(folder)
     for name, content in (("lighthouse.gltf", lighthouse()), ("crate.glb", crate()), ("boat.gltf", boat())):
         (folder / name).write_bytes(content)
         print("%s: %d bytes" % (name, len(content)))
+    (folder / "fleet").mkdir(exist_ok=True)
+    for model in fleet_model.models():
+        content, design = fleet_file(model)
+        (folder / "fleet" / (model.name + ".gltf")).write_bytes(content)
+        print("fleet/%s.gltf: %d bytes, %d drawn triangles, %.2f m x %.2f m, draft %.2f m, %.0f kg"
+              % (model.name, len(content), design["drawn_triangles"], design["length_m"], design["beam_m"],
+                 design["draft_m"], design["displacement_kg"]))
     mass, offset = boat_model.scene_keys(boat_model.fit_hull())
     print("boat.gltf floats level at its waterline with mass_kg = %.1f, center_of_mass_offset_m = %s"
           % (mass, offset))

@@ -308,7 +308,8 @@ void bindScene(py::module_& m)
                  return s.scene.objects.size() - 1;
              },
              py::arg("path"),
-             "Adds an object ('builtin:boat', 'builtin:buoy', 'builtin:rock', or a .gltf/.glb path relative "
+             "Adds an object ('builtin:boat', 'builtin:buoy', 'builtin:rock', one of the fleet such as "
+             "'builtin:tug' (docs/SCENE.md), or a .gltf/.glb path relative "
              "to the scene's folder) at the origin and returns its index; set its keys with "
              "scene['objects[i]....']. The model is read when a renderer takes the scene.")
         .def("remove_object",

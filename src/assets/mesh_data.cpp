@@ -1,6 +1,7 @@
 // Procedural built-in models and the island heightfield.
 #include "assets/mesh_data.h"
 
+#include "assets/fleet_mesh.h"
 #include "assets/island_terrain.h"
 
 #include "embedded_files.h"
@@ -155,6 +156,9 @@ MeshData makeBuiltinModel(const std::string& name)
     } else if (name == "boat") {
         // A 7 m motor workboat, normals and all from its file.
         return builtinBoat().mesh;
+    } else if (isFleetPath(std::string(kBuiltinObjectPrefix) + name)) {
+        // One of the fleet at its design size and paint (assets/fleet_mesh.h).
+        return makeFleetModel(name).mesh;
     }
     addTriangleNormals(mesh);
     return mesh;
@@ -167,6 +171,8 @@ MeshData makeBuiltinHullVolume(const std::string& name)
     // hull's, so the lid is the only part that can change the depth buffer.
     if (name == "boat")
         return builtinBoat().hull;
+    if (isFleetPath(std::string(kBuiltinObjectPrefix) + name))
+        return makeFleetModel(name).hull;
     return {};
 }
 

@@ -31,11 +31,13 @@ void addTriangleNormals(MeshData& mesh);
 // peak_m above the water, sloping into shallows and then deep water.
 MeshData makeIsland(double size_m, double peak_m, int resolution);
 
-// Built-in models by name ("buoy", "boat", "rock"); empty data for unknown names.
+// Built-in models by name ("buoy", "boat", "rock", and the fleet's at their
+// design look, swell::kFleetObjects); empty data for unknown names.
 MeshData makeBuiltinModel(const std::string& name);
 
 // The closed volume a built-in model's open hull encloses, from the keel up to
-// the sheer ("boat": the node "hull" of assets/models/boat.gltf); empty for
+// the sheer ("boat": the node "hull" of assets/models/boat.gltf; the fleet's
+// likewise, of assets/models/fleet/NAME.gltf); empty for
 // models with no open hull. The renderer draws
 // it into depth only before the water, so no water shows inside the hull.
 MeshData makeBuiltinHullVolume(const std::string& name);

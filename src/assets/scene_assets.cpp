@@ -1,6 +1,7 @@
 // Loading the files a scene names (scene_assets.h).
 #include "assets/scene_assets.h"
 
+#include "assets/fleet_mesh.h"
 #include "core/asset_path.h"
 #include "swell/error.h"
 
@@ -91,11 +92,19 @@ SceneAssets loadSceneAssets(const Scene& scene)
         const std::string& path = scene.objects[i].path;
         const std::string& hullNode = scene.objects[i].hullNode;
         const std::string key = fmt::format("objects[{}].path", i);
-        // The same file with another hull node is another model.
-        auto found = byPath.find(path + '\0' + hullNode);
+        // The same file with another hull node is another model, and so is
+        // one of the fleet in another look.
+        const std::optional<FleetLook> look =
+            isFleetPath(path) ? std::optional<FleetLook>(fleetLookOf(scene.objects[i])) : std::nullopt;
+        const std::string shared = path + '\0' + hullNode + (look ? '\0' + fleetLookKey(*look) : std::string());
+        auto found = byPath.find(shared);
         if (found == byPath.end()) {
             ObjectAssets object;
-            if (path.starts_with(kBuiltinObjectPrefix)) {
+            if (look) {
+                GltfModel model = makeFleetModel(path.substr(kBuiltinObjectPrefix.size()), *look);
+                object.mesh = std::make_shared<const MeshData>(std::move(model.mesh));
+                object.hullVolume = std::make_shared<const MeshData>(std::move(model.hull));
+            } else if (path.starts_with(kBuiltinObjectPrefix)) {
                 const std::string name = path.substr(kBuiltinObjectPrefix.size());
                 object.mesh = std::make_shared<const MeshData>(makeBuiltinModel(name));
                 if (object.mesh->vertices.empty())
@@ -112,7 +121,7 @@ SceneAssets loadSceneAssets(const Scene& scene)
                 object.hullVolume = std::make_shared<const MeshData>(std::move(model.hull));
             }
             object.reach_m = std::max(reachOf(*object.mesh), reachOf(*object.hullVolume));
-            found = byPath.emplace(path + '\0' + hullNode, std::move(object)).first;
+            found = byPath.emplace(shared, std::move(object)).first;
         }
         assets.objects.push_back(found->second);
     }

@@ -1,7 +1,9 @@
 // A scene's floating bodies (scene_bodies.h).
 #include "objects/scene_bodies.h"
 
+#include "core/fleet.h"
 #include "core/worker.h"
+#include "objects/design_loading.h"
 #include "swell/composed_surface.h"
 #include "swell/error.h"
 #include "swell/scene/grid.h"
@@ -185,6 +187,15 @@ SceneBodies::SceneBodies(const Scene& scene, const std::vector<const MeshData*>&
             BodySettings settings;
             settings.mass_kg = o.mass_kg > 0.0 ? o.mass_kg : o.density_kg_per_m3 * massPropertiesOf(shape).volume_m3;
             settings.centerOfMassOffset_m = o.centerOfMassOffset_m * o.scale;
+            if (isFleetPath(o.path) && !(o.mass_kg > 0.0) && !(o.density_kg_per_m3 > 0.0)) {
+                // One of the fleet, loaded to its design draft: its shape
+                // is already stretched as the scene asks, and scaled here.
+                const FleetDesign& design = fleetDesign(std::string_view(o.path).substr(kBuiltinObjectPrefix.size()));
+                const DesignLoading loading =
+                    designLoadingOf(shape, design.centerOfMass_m.y * o.scale, settings.waterDensity_kg_per_m3);
+                settings.mass_kg = loading.mass_kg;
+                settings.centerOfMassOffset_m += loading.centerOfMassOffset_m;
+            }
             settings.principalInertia_kg_m2 = o.inertia_kg_m2;
             settings.dampingRatio = o.dampingRatio;
             // Where it starts: back along its course by the time until t = 0

@@ -2,6 +2,7 @@
 #include "scene/checks.h"
 
 #include "core/asset_path.h"
+#include "core/fleet.h"
 #include "core/input_file.h"
 #include "core/seabed_shapes.h"
 #include "swell/dataset/labels.h"
@@ -117,6 +118,54 @@ void checkBody(const SceneObject& o, std::size_t i, const Places& places)
              fmt::format("{}.inertia_kg_m2 = [{}, {}, {}] is no solid's: each principal moment must be at most the "
                          "sum of the other two",
                          item, I.x, I.y, I.z));
+}
+
+// The fleet's keys (docs/SCENE.md, "The fleet"): only on one of the fleet,
+// stretched within its bounds, painted in colours or left at the model's own.
+void checkFleet(const SceneObject& o, std::size_t i, const Places& places)
+{
+    const std::string item = fmt::format("objects[{}]", i);
+    const auto refuse = [&](const std::string& key, const std::string& message) {
+        fail(places.first({item + "." + key, item}), fmt::format("{}.{} {}", item, key, message));
+    };
+    if (!isFleetPath(o.path)) {
+        const std::string fleet = fmt::format("builtin:{}", fmt::join(kFleetObjects, ", builtin:"));
+        const std::string why =
+            fmt::format("is for the fleet's built-ins, which carry their design's length, beam, draft and paints "
+                        "({}); '{}' is not one of them",
+                        fleet, o.path);
+        if (o.length_m > 0.0)
+            refuse("length_m", why);
+        if (o.beam_m > 0.0)
+            refuse("beam_m", why);
+        if (o.hullColor != glm::dvec3(-1.0))
+            refuse("hull_color", why);
+        if (o.superstructureColor != glm::dvec3(-1.0))
+            refuse("superstructure_color", why);
+        if (!o.superstructure)
+            refuse("superstructure", why);
+        return;
+    }
+    const FleetDesign& design = fleetDesign(std::string_view(o.path).substr(kBuiltinObjectPrefix.size()));
+    const auto stretch = [&](const char* key, double value_m, double design_m, const double (&range)[2]) {
+        if (value_m > 0.0 && (value_m < range[0] * design_m || value_m > range[1] * design_m))
+            refuse(key, fmt::format("= {} m is outside {:.3g} to {:.3g} m: {} to {} times the design's {} m of {} "
+                                    "(0: the design's)",
+                                    value_m, range[0] * design_m, range[1] * design_m, range[0], range[1], design_m,
+                                    o.path));
+    };
+    stretch("length_m", o.length_m, design.length_m, kFleetLengthRange);
+    stretch("beam_m", o.beam_m, design.beam_m, kFleetBeamRange);
+    const auto colour = [&](const char* key, const glm::dvec3& rgb) {
+        const bool own = rgb == glm::dvec3(-1.0);
+        const bool paint = rgb.x >= 0.0 && rgb.y >= 0.0 && rgb.z >= 0.0 && rgb.x <= 1.0 && rgb.y <= 1.0 && rgb.z <= 1.0;
+        if (!own && !paint)
+            refuse(key, fmt::format("= [{}, {}, {}]: give a linear RGB colour, each channel 0..1, or [-1, -1, -1] for "
+                                    "the model's own",
+                                    rgb.x, rgb.y, rgb.z));
+    };
+    colour("hull_color", o.hullColor);
+    colour("superstructure_color", o.superstructureColor);
 }
 
 void checkObjectPath(const fs::path& base, const fs::path& resolved, const std::string& path, const std::string& name,
@@ -288,6 +337,7 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base, 
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         checkBody(scene.objects[i], i, places);
         checkClass(scene.objects[i], i, places);
+        checkFleet(scene.objects[i], i, places);
     }
 
     checkSeabed(scene, places, base, hasEffect(scope, ParameterEffect::World) || hasEffect(scope, ParameterEffect::Seabed));

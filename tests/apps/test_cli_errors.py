@@ -121,7 +121,7 @@ ARGUMENTS = [
     # A scene file without a subcommand: the commands that take it.
     ("scene_without_subcommand", ["evening.toml"], 2, "swell view evening.toml"),
     # Neither a file nor a preset: the presets are listed.
-    ("unknown_preset", ["render", "no-such-sea", "-o", "x.png"], 2, "calm, cloud-shadows, coast, fog, gale-under-way, harbour, paper, storm"),
+    ("unknown_preset", ["render", "no-such-sea", "-o", "x.png"], 2, "calm, cloud-shadows, coast, fleet, fog, gale-under-way, harbour, paper, storm"),
     # The render scale: 0.1..2, a finite number, on every subcommand that draws.
     *[(f"render_scale_{v}", ["render", "-o", "x.png", "--scale", v], 2, "--scale")
       for v in ("0", "-1", "5", "abc", "nan", "0.05")],

@@ -218,7 +218,7 @@ TEST(SceneFile, PresetsLoad)
     const fs::path folder = fs::path(SWELL_SOURCE_DIR) / "scenes";
     const std::vector<std::string> presets{"calm.toml", "trade-wind.toml", "storm.toml", "sunset.toml", "fog.toml",
                                            "underwater.toml", "paper.toml", "under-way.toml", "cloud-shadows.toml",
-                                           "gale-under-way.toml", "coast.toml", "harbour.toml"};
+                                           "gale-under-way.toml", "coast.toml", "harbour.toml", "fleet.toml"};
     for (const std::string& name : presets) {
         SCOPED_TRACE(name);
         Scene scene;
@@ -337,7 +337,10 @@ struct StringKey {
 constexpr StringKey kStringKeys[] = {
     {"`[sky]`", "faces", "6 image paths (+x, -x, +y, -y, +z, -z), or none", "`[]`",
      "a cubemap sky instead of the procedural one"},
-    {"`[[objects]]`", "path", "a .gltf or .glb file, or \"builtin:buoy\", \"builtin:boat\" or \"builtin:rock\"",
+    {"`[[objects]]`", "path",
+     "a .gltf or .glb file, or \"builtin:\" and one of buoy, boat, rock or the fleet's sailing_yacht, rib, "
+     "fishing_trawler, tug, container_ship, tanker, kayak, lateral_port_buoy, lateral_starboard_buoy, "
+     "cardinal_north_buoy",
      "required", "the object's model, relative to the scene file's folder"},
     {"`[[objects]]`", "hull_node", "a node name of the glTF file", "`\"\"`",
      "the node whose mesh is the closed hull volume: kept dry, and the body's shape"},

@@ -190,7 +190,26 @@ struct SWELL_API ReflectionSettings {
 // SceneObject::path names a model drawn without a file when it is
 // kBuiltinObjectPrefix followed by one of kBuiltinObjects ("builtin:buoy").
 inline constexpr std::string_view kBuiltinObjectPrefix = "builtin:";
-inline constexpr std::array<std::string_view, 3> kBuiltinObjects{"buoy", "boat", "rock"};
+inline constexpr std::array<std::string_view, 13> kBuiltinObjects{
+    "buoy", "boat", "rock", "sailing_yacht", "rib", "fishing_trawler", "tug", "container_ship", "tanker", "kayak",
+    "lateral_port_buoy", "lateral_starboard_buoy", "cardinal_north_buoy"};
+// The fleet: the built-ins made at a design size with design numbers
+// (assets/models/fleet_model.py writes them), which a scene may stretch,
+// repaint and strip (SceneObject::length_m and the keys after it) and which
+// float at their design draft as rigid bodies without a mass given.
+inline constexpr std::array<std::string_view, 10> kFleetObjects{
+    "sailing_yacht", "rib", "fishing_trawler", "tug", "container_ship", "tanker", "kayak",
+    "lateral_port_buoy", "lateral_starboard_buoy", "cardinal_north_buoy"};
+// Whether `path` ("builtin:tug") names one of the fleet.
+constexpr bool isFleetPath(std::string_view path)
+{
+    if (!path.starts_with(kBuiltinObjectPrefix))
+        return false;
+    for (std::string_view name : kFleetObjects)
+        if (path.substr(kBuiltinObjectPrefix.size()) == name)
+            return true;
+    return false;
+}
 
 // A glTF model placed in the world.
 struct SWELL_API SceneObject {
@@ -215,9 +234,23 @@ struct SWELL_API SceneObject {
     // Its class in the labels (docs/LABELS.md): what a detector is to call
     // it. Empty: its model's name (objectClassOf, swell/dataset/labels.h).
     std::string className{};
+    // One of the fleet (isFleetPath) only: its hull and all on it stretched
+    // to this overall length and beam, m, its draft kept (0: the design's);
+    // its "hull" and "superstructure" paints, linear RGB ([-1, -1, -1]: the
+    // model's own); and whether its superstructure is drawn (a wheelhouse,
+    // a coachroof, a kayak's paddler, a buoy's topmark).
+    double length_m = 0.0;
+    double beam_m = 0.0;
+    glm::dvec3 hullColor{-1.0};
+    glm::dvec3 superstructureColor{-1.0};
+    bool superstructure = true;
 
-    // Whether this object is a floating rigid body.
-    bool isRigidBody() const { return floats && (mass_kg > 0.0 || density_kg_per_m3 > 0.0); }
+    // Whether this object is a floating rigid body: floating with a mass
+    // given, or one of the fleet, which floats at its design draft.
+    bool isRigidBody() const
+    {
+        return floats && (mass_kg > 0.0 || density_kg_per_m3 > 0.0 || isFleetPath(path));
+    }
 };
 
 // The wake field: waves the floating bodies make as they move (docs/BODIES.md).
