@@ -93,7 +93,8 @@ Scene loadBaseScene(const Sweep& sweep, const fs::path& path)
 bool variesTheLens(const Sweep& sweep)
 {
     return std::any_of(sweep.vary.begin(), sweep.vary.end(), [](const SweepKey& k) {
-        return k.key.starts_with("camera.distortion_") || k.key == "camera.fov_y_deg";
+        return k.key.starts_with("camera.distortion_") || k.key.starts_with("camera.fisheye_") ||
+               k.key == "camera.lens" || k.key == "camera.fov_y_deg";
     });
 }
 
@@ -184,13 +185,7 @@ void writeFrame(const fs::path& out, int i, const Sweep& sweep, const SweepSampl
         labels = *f.sensor.labels;
     } else {
         labels.size = sweep.size;
-        labels.camera = calibrationOf(f.camera, sweep.size);
-        const LensDistortion lens = lensOf(sample.scene.camera);
-        labels.camera.k1 = lens.k1;
-        labels.camera.k2 = lens.k2;
-        labels.camera.k3 = lens.k3;
-        labels.camera.p1 = lens.p1;
-        labels.camera.p2 = lens.p2;
+        labels.camera = sensorCalibrationOf(f.camera, lensOf(sample.scene.camera), sweep.size);
         labels.horizon = horizonOf(labels.camera);
         labels.classes = labelClassesOf(sample.scene);
     }

@@ -177,8 +177,11 @@ Json frameJson(const FrameLabels& swellLabels, const Scene& scene, double time_s
                    {"fy_px", c.fy_px},
                    {"cx_px", c.cx_px},
                    {"cy_px", c.cy_px},
-                   {"distortion_model", "brown-conrady"},
-                   {"distortion", {c.k1, c.k2, c.p1, c.p2, c.k3}},
+                   {"distortion_model", c.lensModel == LensModel::KannalaBrandt ? "kannala-brandt" : "brown-conrady"},
+                   // OpenCV's order for each model: cv2.fisheye's D, or the
+                   // distCoeffs of cv2.projectPoints.
+                   {"distortion", c.lensModel == LensModel::KannalaBrandt ? Json{c.k1, c.k2, c.k3, c.k4}
+                                                                           : Json{c.k1, c.k2, c.p1, c.p2, c.k3}},
                    {"camera_from_world", matrixJson(c.cameraFromWorld)},
                    {"world_from_camera", matrixJson(c.worldFromCamera)}};
     Json horizon = {{"line", {labels.horizon.line.x, labels.horizon.line.y, labels.horizon.line.z}},

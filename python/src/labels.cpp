@@ -58,7 +58,7 @@ void bindLabels(py::module_& m)
 {
     py::class_<CameraCalibration>(m, "Calibration",
                                   "A pinhole camera as perception code calibrates one (OpenCV's axes: x right, y "
-                                  "down, z forward), with its lens's Brown-Conrady distortion. Image conventions: x right, y down, pixel (i, j)'s "
+                                  "down, z forward), with its lens's distortion (Brown-Conrady's, or Kannala-Brandt's fisheye). Image conventions: x right, y down, pixel (i, j)'s "
                                   "centre at (i + 0.5, j + 0.5).")
         .def_property_readonly("size", [](const CameraCalibration& c) { return py::make_tuple(c.size.x, c.size.y); },
                                "(width, height), pixels.")
@@ -85,8 +85,20 @@ void bindLabels(py::module_& m)
             "world_from_camera", [](const CameraCalibration& c) { return toArray(c.worldFromCamera); },
             "4x4, the inverse of camera_from_world.")
         .def_property_readonly(
-            "distortion", [](const CameraCalibration& c) { return py::make_tuple(c.k1, c.k2, c.p1, c.p2, c.k3); },
-            "The lens's Brown-Conrady coefficients in OpenCV's order (k1, k2, p1, p2, k3); all 0 for a pinhole.")
+            "distortion_model",
+            [](const CameraCalibration& c) {
+                return c.lensModel == LensModel::KannalaBrandt ? "kannala-brandt" : "brown-conrady";
+            },
+            "The lens's model, as the labels' JSON names it: \"brown-conrady\" or \"kannala-brandt\" (a fisheye, "
+            "OpenCV's cv2.fisheye).")
+        .def_property_readonly(
+            "distortion",
+            [](const CameraCalibration& c) {
+                return c.lensModel == LensModel::KannalaBrandt ? py::make_tuple(c.k1, c.k2, c.k3, c.k4)
+                                                                : py::make_tuple(c.k1, c.k2, c.p1, c.p2, c.k3);
+            },
+            "The lens's coefficients in OpenCV's order: Brown-Conrady's (k1, k2, p1, p2, k3), all 0 for a pinhole; "
+            "a fisheye's (k1, k2, k3, k4), cv2.fisheye's D.")
         .def(
             "project",
             [](const CameraCalibration& c, py::handle world_m) -> py::object {

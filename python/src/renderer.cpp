@@ -376,10 +376,10 @@ void bindRenderer(py::module_& m)
         .def("render_sensor", &PyRenderer::renderSensor, py::arg("camera"), py::arg("time_s"), py::arg("size"),
              py::arg("labels") = true,
              "As `swell render` draws a frame: through the scene camera's lens distortion, shutter, "
-             "exposure and noise (camera.distortion_*, shutter_s, readout_s, exposure_ev, noise_*; "
-             "docs/LABELS.md), its labels resampled through the same lens. camera=None: the scene's own "
-             "camera at each time the sensor draws (its motion blurs). Returns (uint8 (H, W, 4) RGBA, "
-             "swell.Labels or None).")
+             "exposure and noise (camera.distortion_*, or camera.lens and fisheye_*; shutter_s, readout_s, "
+             "exposure_ev, noise_*; docs/LABELS.md), its labels resampled through the same lens. camera=None: "
+             "the scene's own camera at each time the sensor draws (its motion blurs). Returns (uint8 (H, W, 4) "
+             "RGBA, swell.Labels or None).")
         .def("optical_flow", &PyRenderer::opticalFlow, py::arg("labels"), py::arg("time_s"), py::arg("next_labels"),
              py::arg("interval_s"),
              "The forward optical flow from labels (drawn at time_s) to next_labels (drawn interval_s later), as "

@@ -46,7 +46,7 @@ std::optional<glm::dvec2> projectToImage(const CameraCalibration& camera, glm::d
     const glm::dvec4 p = camera.cameraFromWorld * glm::dvec4(world_m, 1.0);
     if (p.z <= 0.0)
         return std::nullopt;
-    const LensDistortion lens{camera.k1, camera.k2, camera.k3, camera.p1, camera.p2};
+    const LensDistortion lens = lensOf(camera);
     const glm::dvec2 u(p.x / p.z, p.y / p.z);
     if (!insideFold(lens, u))
         return std::nullopt; // the lens shows another ray where distort() puts it
@@ -101,7 +101,7 @@ HorizonLine horizonOf(const CameraCalibration& camera)
 std::vector<glm::dvec2> horizonCurveOf(const CameraCalibration& c, const HorizonLine& horizon)
 {
     std::vector<glm::dvec2> points;
-    const LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    const LensDistortion lens = lensOf(c);
     const glm::dvec3 l = horizon.line;
     if (lens.none() || (l.x == 0.0 && l.y == 0.0))
         return points;
@@ -176,7 +176,7 @@ glm::dmat4 worldFromObjectOf(glm::dvec3 position_m, double yaw_deg, double pitch
 std::vector<float> zDepthOf(const FrameLabels& labels)
 {
     const CameraCalibration& c = labels.camera;
-    const LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    const LensDistortion lens = lensOf(c);
     std::vector<float> depth(labels.range_m.size());
     for (int y = 0; y < labels.size.y; ++y)
         for (int x = 0; x < labels.size.x; ++x) {

@@ -31,6 +31,11 @@ namespace swell::detail {
 // lens does not magnify), inside the half pixel the labels promise.
 inline constexpr double kPinholeScale = 1.5;
 inline constexpr int kMaxPinholeOverOutput = 4;
+// The widest field across the diagonal that the pinhole frame lets a
+// fisheye draw, degrees: an equidistant fisheye (theta_d = theta) at 4 times
+// the image's side reaches 147.3 at 640x480 and 147.5 at 1280x720
+// (docs/SCENE.md, "The lens").
+inline constexpr double kFisheyeDiagonalField_deg = 147.0;
 
 // The pinhole frame's size (each side even, centred on the optical axis)
 // that holds the ray of every pixel of the distorted output: the output's

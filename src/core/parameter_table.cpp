@@ -53,6 +53,9 @@ constexpr std::array<std::string_view, 3> kLabelWorldFrames{"swell", "enu", "ned
 static_assert(static_cast<int>(LabelWorldFrame::Swell) == 0 && static_cast<int>(LabelWorldFrame::Enu) == 1
               && static_cast<int>(LabelWorldFrame::Ned) == 2);
 
+constexpr std::array<std::string_view, 2> kLensModels{"brown_conrady", "kannala_brandt"};
+static_assert(static_cast<int>(LensModel::BrownConrady) == 0 && static_cast<int>(LensModel::KannalaBrandt) == 1);
+
 constexpr std::array<std::string_view, 3> kAntialiasing{"off", "msaa4", "fxaa"};
 static_assert(static_cast<int>(Antialiasing::Off) == 0 && static_cast<int>(Antialiasing::Msaa4) == 1
               && static_cast<int>(Antialiasing::Fxaa) == 2);
@@ -448,6 +451,12 @@ std::vector<Parameter> buildTable()
            {.key = "camera.mount_offset_m", .kind = K::Vector3, .unit = "m", .min = -1.0e3, .max = 1.0e3,
             .sliderMin = -20.0, .sliderMax = 20.0,
             .description = "where a mounted camera stands in its object's axes (unscaled) [x, y, z]"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.lens; },
+           {.key = "camera.lens", .kind = K::Choice, .min = 0.0, .max = kLensModels.size() - 1.0, .sliderMin = 0.0,
+            .sliderMax = kLensModels.size() - 1.0,
+            .description = "the lens's model: brown_conrady (camera.distortion_*) or kannala_brandt, a fisheye "
+                           "(camera.fisheye_*; fov_y_deg then the angle between the top and bottom borders' rays)",
+            .choices = kLensModels}),
         at([](auto& s, std::size_t) -> auto& { return s.camera.distortionK1; },
            {.key = "camera.distortion_k1", .min = -1.0, .max = 1.0, .sliderMin = -0.5, .sliderMax = 0.5,
             .description = "lens: Brown-Conrady radial k1 (< 0 barrel, > 0 pincushion), on normalised image coordinates"}),
@@ -463,6 +472,19 @@ std::vector<Parameter> buildTable()
         at([](auto& s, std::size_t) -> auto& { return s.camera.distortionP2; },
            {.key = "camera.distortion_p2", .min = -0.1, .max = 0.1, .sliderMin = -0.02, .sliderMax = 0.02,
             .description = "lens: tangential p2 (decentring)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.fisheyeK1; },
+           {.key = "camera.fisheye_k1", .min = -1.0, .max = 1.0, .sliderMin = -0.2, .sliderMax = 0.2,
+            .description = "lens: Kannala-Brandt fisheye k1 (theta^3 in theta_d), OpenCV's cv2.fisheye; with "
+                           "camera.lens = \"kannala_brandt\""}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.fisheyeK2; },
+           {.key = "camera.fisheye_k2", .min = -1.0, .max = 1.0, .sliderMin = -0.2, .sliderMax = 0.2,
+            .description = "lens: fisheye k2 (theta^5)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.fisheyeK3; },
+           {.key = "camera.fisheye_k3", .min = -1.0, .max = 1.0, .sliderMin = -0.2, .sliderMax = 0.2,
+            .description = "lens: fisheye k3 (theta^7)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.fisheyeK4; },
+           {.key = "camera.fisheye_k4", .min = -1.0, .max = 1.0, .sliderMin = -0.2, .sliderMax = 0.2,
+            .description = "lens: fisheye k4 (theta^9)"}),
         at([](auto& s, std::size_t) -> auto& { return s.camera.exposure_ev; },
            {.key = "camera.exposure_ev", .unit = "EV", .min = -10.0, .max = 10.0, .sliderMin = -4.0, .sliderMax = 4.0,
             .description = "sensor exposure: the linear colour times 2^ev (what passes 1 clips)"}),

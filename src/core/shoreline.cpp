@@ -40,7 +40,7 @@ std::uint64_t sideKey(std::int64_t a, std::int64_t b)
 glm::dvec3 waterPointAt(const FrameLabels& labels, glm::ivec2 corner)
 {
     const CameraCalibration& c = labels.camera;
-    const LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    const LensDistortion lens = lensOf(c);
     const glm::dvec3 eye(c.worldFromCamera[3]);
     for (const glm::ivec2 d : {glm::ivec2(-1, -1), glm::ivec2(0, -1), glm::ivec2(-1, 0), glm::ivec2(0, 0)}) {
         const glm::ivec2 p = corner + d;

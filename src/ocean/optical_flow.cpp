@@ -27,7 +27,7 @@ namespace {
 // The world direction of pixel (x, y)'s centre ray, through the lens.
 glm::dvec3 centreRay(const CameraCalibration& c, int x, int y)
 {
-    const LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
+    const LensDistortion lens = lensOf(c);
     const glm::dvec2 u = undistort(lens, {(x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px});
     return glm::normalize(glm::dmat3(c.worldFromCamera) * glm::dvec3(u, 1.0));
 }

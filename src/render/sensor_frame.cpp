@@ -251,15 +251,7 @@ SensorFrame sensorFrame(Renderer& renderer, const CameraAt& cameraAt, double tim
         // The rule scenes and sweeps are checked by (the field is the
         // scene's, whatever the time).
         checkLens(renderer.scene(), size, settings.fovY_deg);
-        auto calibrated = [&lens, size](const Camera& at) {
-            CameraCalibration c = calibrationOf(at, size);
-            c.k1 = lens.k1;
-            c.k2 = lens.k2;
-            c.k3 = lens.k3;
-            c.p1 = lens.p1;
-            c.p2 = lens.p2;
-            return c;
-        };
+        auto calibrated = [&lens, size](const Camera& at) { return sensorCalibrationOf(at, lens, size); };
         auto pinholeOf = [&lens](const Camera& at, const CameraCalibration& c) {
             const glm::ivec2 wide = detail::pinholeSize(lens, c);
             Camera pinhole = at;

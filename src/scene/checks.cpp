@@ -16,6 +16,8 @@
 #include <cctype>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
+#include <utility>
 
 namespace swell::detail::scenefile {
 
@@ -242,6 +244,32 @@ void checkSeabed(const Scene& scene, const Places& places, const fs::path& base,
     checkFile(base, resolvedFolder(base), seabed.heightmap.path, name, places.at(name));
 }
 
+// A scene sets the coefficients of its lens's model only (docs/SCENE.md,
+// "The lens"): a fisheye's beside Brown-Conrady's would be silently unused.
+void checkLensModel(const CameraSettings& camera, const Places& places)
+{
+    const bool fisheye = camera.lens == LensModel::KannalaBrandt;
+    const std::pair<const char*, double> others[] = {
+        {"camera.distortion_k1", camera.distortionK1}, {"camera.distortion_k2", camera.distortionK2},
+        {"camera.distortion_k3", camera.distortionK3}, {"camera.distortion_p1", camera.distortionP1},
+        {"camera.distortion_p2", camera.distortionP2}, {"camera.fisheye_k1", camera.fisheyeK1},
+        {"camera.fisheye_k2", camera.fisheyeK2},       {"camera.fisheye_k3", camera.fisheyeK3},
+        {"camera.fisheye_k4", camera.fisheyeK4}};
+    for (const auto& [key, value] : others) {
+        const bool fisheyeKey = std::string_view(key).starts_with("camera.fisheye_");
+        if (value == 0.0 || fisheyeKey == fisheye)
+            continue;
+        fail(places.first({key, "camera.lens", "camera"}),
+             fisheye ? fmt::format("{} = {:g}: a Brown-Conrady coefficient, but camera.lens = \"kannala_brandt\" "
+                                   "(a fisheye takes camera.fisheye_k1 .. k4)",
+                                   key, value)
+                     : fmt::format("{} = {:g}: a Kannala-Brandt fisheye's coefficient, but camera.lens is "
+                                   "\"brown_conrady\" (the default); set camera.lens = \"kannala_brandt\" for a "
+                                   "fisheye, or use camera.distortion_*",
+                                   key, value));
+    }
+}
+
 } // namespace
 
 void checkScene(const Scene& scene, const Places& places, const fs::path& base, ParameterEffect scope)
@@ -293,6 +321,7 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base, 
                              "or mount the camera on a rigid body or a fixed object",
                              mount, mount));
     }
+    checkLensModel(scene.camera, places);
     if (!(scene.camera.far_m > scene.camera.near_m))
         fail(places.first({"camera.far_m", "camera.near_m", "camera"}),
              fmt::format("camera.far_m ({} m) must be greater than camera.near_m ({} m)", scene.camera.far_m,

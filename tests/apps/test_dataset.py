@@ -171,6 +171,10 @@ BAD += [
      "unknown key 'weights'"),
     ("lens_varied", sweep_text(4) + '"camera.fov_y_deg" = 120.0\n"camera.distortion_p1" = [0.09, 0.1]\n'
      '"camera.distortion_p2" = 0.1\n', "13:", "camera.distortion_p1 = 0.09"),
+    # A fisheye whose theta_d stops growing inside the field: at its first
+    # coefficient's line, before anything is made.
+    ("fisheye_varied", sweep_text(4) + '"camera.fov_y_deg" = 100.0\n"camera.lens" = "kannala_brandt"\n'
+     '"camera.fisheye_k1" = [-0.35, -0.34]\n', "14:", "theta_d stops growing"),
     ("history", sweep_text(4).replace('time_s = [0.0, 100.0]', 'time_s = [100000.0, 200000.0]')
      .replace('"base.toml"', '"floating.toml"'), "5:", "history_start_s"),
     # Issue 46: a clip of 0 frames or 10^9, a frame rate of 0.

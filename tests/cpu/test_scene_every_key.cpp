@@ -190,6 +190,10 @@ bool placesTheSun(const Parameter& p)
 // key changed (the wind's scene then gives its sun so, not by its direction).
 bool anglesOfTheSun(const Parameter& p) { return p.key == "sun.elevation_deg" || p.key == "sun.azimuth_deg"; }
 
+// A fisheye's coefficients are taken only with the fisheye's model
+// (docs/SCENE.md, "The lens"): the scene that changes one sets camera.lens.
+bool fisheyeCoefficient(const Parameter& p) { return p.key.starts_with("camera.fisheye_"); }
+
 bool belongsToOtherSource(const Parameter& p, Waves waves)
 {
     if (anglesOfTheSun(p))
@@ -216,6 +220,8 @@ TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::s
         if (belongsToOtherSource(p, waves) && !(sunByAngles && anglesOfTheSun(p)))
             continue;
         std::string value = &p == changed ? changedValue : formatValue(p, p.defaultValue);
+        if (changed != nullptr && fisheyeCoefficient(*changed) && p.key == "camera.lens")
+            value = formatValue(p, std::int64_t(LensModel::KannalaBrandt));
         switch (p.list) {
         case ParameterList::None: root.table(tableOf(p)).values.emplace_back(leafOf(p), value); break;
         case ParameterList::Objects: object.values.emplace_back(leafOf(p), value); break;

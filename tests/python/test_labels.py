@@ -6,13 +6,16 @@ pixels carry its instance and class, its 2D box lies within its projected
 3D box, and every range on it lands inside that box, placed by the
 returned object transform."""
 
+import json
 import os
+import subprocess
 import tempfile
 import unittest
 
 import numpy as np
 
 import swell
+import support
 
 SIZE = (320, 240)
 
@@ -149,6 +152,44 @@ class Sensor(unittest.TestCase):
         self.assertEqual(labels.camera.distortion[0], -0.1)
         self.assertTrue(labels.horizon.curve_px)
         self.assertFalse((labels.semantic == 0).any())
+
+    def test_through_a_fisheye_the_calibration_names_its_model(self):
+        """A fisheye (camera.lens = "kannala_brandt"): OpenCV's cv2.fisheye D, and the focal length that puts
+        the top and bottom borders fov_y_deg / 2 from the axis (docs/SCENE.md, "The lens")."""
+        scene = open_sea()
+        scene["camera.lens"] = "kannala_brandt"
+        scene["camera.fov_y_deg"] = 80.0
+        scene["camera.fisheye_k1"] = 0.02
+        scene["camera.fisheye_k4"] = -0.001
+        renderer = swell.Renderer(scene)
+        image, labels = renderer.render_sensor(scene.camera_at(0.0), 1.0, (96, 64))
+        self.assertEqual(image.shape, (64, 96, 4))
+        self.assertEqual(labels.camera.distortion_model, "kannala-brandt")
+        self.assertEqual(labels.camera.distortion, (0.02, 0.0, 0.0, -0.001))
+        half = np.radians(40.0)
+        theta_d = half * (1.0 + 0.02 * half ** 2 - 0.001 * half ** 8)
+        self.assertAlmostEqual(labels.camera.fy_px, 32.0 / theta_d, places=9)
+        self.assertFalse((labels.semantic == 0).any())
+        # swell render writes the same calibration in its JSON: the model, cv2.fisheye's D and K.
+        app = support.needs_app(self)
+        folder = support.output_folder(self)
+        path = os.path.join(folder, "fisheye.toml")
+        with open(path, "w") as f:
+            f.write("[grid]\nresolution = 32\n\n[camera]\nlens = \"kannala_brandt\"\nfov_y_deg = 80.0\n"
+                    "fisheye_k1 = 0.02\nfisheye_k4 = -0.001\n")
+        subprocess.run([app, "render", path, "-o", os.path.join(folder, "fisheye.png"), "--size", "96x64", "--labels"],
+                       check=True, stdout=subprocess.DEVNULL)
+        with open(os.path.join(folder, "fisheye.json")) as f:
+            written = json.load(f)["camera"]
+        self.assertEqual(written["distortion_model"], "kannala-brandt")
+        self.assertEqual(written["distortion"], [0.02, 0.0, 0.0, -0.001])
+        for key in ["fx_px", "fy_px", "cx_px", "cy_px"]:
+            self.assertEqual(written[key], getattr(labels.camera, key), key)
+        scene["camera.fisheye_k1"] = -0.3
+        scene["camera.fov_y_deg"] = 100.0
+        with self.assertRaises(swell.InputError) as refused:
+            swell.Renderer(scene).render_sensor(scene.camera_at(0.0), 1.0, (96, 64))
+        self.assertIn("theta_d stops growing", refused.exception.message)
 
     def test_the_scenes_own_camera_moves_while_the_shutter_is_open(self):
         """camera=None: the scene's camera at each draw's time; a camera turning on its path blurs the sky's

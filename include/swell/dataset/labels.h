@@ -26,16 +26,20 @@
 namespace swell {
 
 // A pinhole camera as perception code calibrates one. Camera axes as in
-// computer vision: x right, y down, z forward (OpenCV's); no distortion.
+// computer vision: x right, y down, z forward (OpenCV's); with its lens's
+// model and coefficients (all 0 for a pinhole).
 struct SWELL_API CameraCalibration {
     glm::ivec2 size{0};          // pixels
     double fx_px = 0.0, fy_px = 0.0; // focal lengths, pixels
     double cx_px = 0.0, cy_px = 0.0; // principal point, pixels (image conventions above)
     glm::dmat4 cameraFromWorld{1.0}; // absolute world (m, y up) to camera axes
     glm::dmat4 worldFromCamera{1.0};
-    // The lens's Brown-Conrady coefficients (swell/dataset/sensor.h), OpenCV's
-    // order: k1, k2, p1, p2, k3; all 0 for a pinhole.
-    double k1 = 0.0, k2 = 0.0, p1 = 0.0, p2 = 0.0, k3 = 0.0;
+    // The lens (swell/dataset/sensor.h). Brown-Conrady: its coefficients in
+    // OpenCV's order k1, k2, p1, p2, k3 (k4 0); all 0 for a pinhole.
+    // Kannala-Brandt's fisheye: k1..k4 as OpenCV's cv2.fisheye takes them
+    // (p1, p2 0).
+    LensModel lensModel = LensModel::BrownConrady;
+    double k1 = 0.0, k2 = 0.0, p1 = 0.0, p2 = 0.0, k3 = 0.0, k4 = 0.0;
 };
 
 // The calibration of the image `size` that a Camera renders.

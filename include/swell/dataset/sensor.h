@@ -7,10 +7,22 @@
 // undistorted image coordinates (x, y) (x right, y down, 1 unit = the focal
 // length) and r^2 = x^2 + y^2,
 //   x_d = x (1 + k1 r^2 + k2 r^4 + k3 r^6) + 2 p1 x y + p2 (r^2 + 2 x^2)
-//   y_d = y (1 + k1 r^2 + k2 r^4 + k3 r^6) + p1 (r^2 + 2 y^2) + 2 p2 x y.
+//   y_d = y (1 + k1 r^2 + k2 r^4 + k3 r^6) + p1 (r^2 + 2 y^2) + 2 p2 x y;
+// or Kannala-Brandt's fisheye (Kannala & Brandt 2006, "A generic camera
+// model and calibration method for conventional, wide-angle, and fish-eye
+// lenses", IEEE TPAMI 28(8), eq. 6), in OpenCV's cv2.fisheye form: with
+// r = sqrt(x^2 + y^2) and theta = atan(r) the ray's angle from the axis,
+//   theta_d = theta (1 + k1 theta^2 + k2 theta^4 + k3 theta^6 + k4 theta^8)
+//   (x_d, y_d) = (theta_d / r) (x, y).
+// A fisheye's focal length follows from the field: the rays of the top and
+// bottom borders' middles lie fovY / 2 from the axis, so
+// f = (height / 2) / theta_d(fovY / 2) (a pinhole's is (height / 2) /
+// tan(fovY / 2)).
 // A distorted frame is drawn as a pinhole frame wide enough to hold every
 // distorted pixel's ray, then resampled: colour bilinear, labels nearest
-// (never a blend of two), ranges and normals with their labels.
+// (never a blend of two), ranges and normals with their labels. The
+// pinhole frame bounds the field a fisheye can draw (docs/SCENE.md, "The
+// lens": about 147 degrees across the diagonal).
 #pragma once
 
 #include "swell/export.h"
@@ -32,17 +44,40 @@ namespace swell {
 
 class Renderer;
 
+// A lens: Brown-Conrady's k1, k2, k3, p1, p2, or (model KannalaBrandt) the
+// fisheye's k1, k2, k3, k4 (p1, p2 unused).
 struct SWELL_API LensDistortion {
     double k1 = 0.0, k2 = 0.0, k3 = 0.0, p1 = 0.0, p2 = 0.0;
-    bool none() const { return k1 == 0.0 && k2 == 0.0 && k3 == 0.0 && p1 == 0.0 && p2 == 0.0; }
+    double k4 = 0.0;
+    LensModel model = LensModel::BrownConrady;
+    // A pinhole: Brown-Conrady with every coefficient 0 (a fisheye with
+    // every coefficient 0 is the equidistant fisheye, theta_d = theta).
+    bool none() const
+    {
+        return model == LensModel::BrownConrady && k1 == 0.0 && k2 == 0.0 && k3 == 0.0 && p1 == 0.0 && p2 == 0.0;
+    }
 };
 
 SWELL_API LensDistortion lensOf(const CameraSettings& camera);
+// The lens a calibration holds, and a lens written into one.
+SWELL_API LensDistortion lensOf(const CameraCalibration& calibration);
+SWELL_API void setLens(CameraCalibration& calibration, const LensDistortion& lens);
+// The calibration of the image `size` that `camera` draws through `lens`:
+// calibrationOf() with the lens's coefficients, and for a fisheye the focal
+// length that puts the field's borders fovY_deg / 2 from the axis (above).
+SWELL_API CameraCalibration sensorCalibrationOf(const Camera& camera, const LensDistortion& lens, glm::ivec2 size);
 
-// Normalised undistorted coordinates to distorted (the equations above).
+// The fisheye's theta_d for a ray theta_rad from the axis (the equation
+// above; the coefficients of a Kannala-Brandt lens).
+SWELL_API double fisheyeThetaD(const LensDistortion& lens, double theta_rad);
+
+// Normalised undistorted coordinates to distorted (the equations above, by
+// the lens's model).
 SWELL_API glm::dvec2 distort(const LensDistortion& lens, glm::dvec2 undistorted);
-// The inverse, by fixed-point iteration (converging where the lens maps
-// the image one to one; within 1e-12 or after 50 steps).
+// The inverse: Brown-Conrady's by fixed-point iteration (converging where
+// the lens maps the image one to one; within 1e-12 or after 50 steps), the
+// fisheye's by Newton's method on theta_d(theta) (as OpenCV's
+// fisheye::undistortPoints), within 1e-14 rad.
 SWELL_API glm::dvec2 undistort(const LensDistortion& lens, glm::dvec2 distorted);
 // Whether the ray at normalised undistorted coordinates `undistorted` lies
 // inside the lens's fold: the distortion keeps the image's orientation all
@@ -50,17 +85,21 @@ SWELL_API glm::dvec2 undistort(const LensDistortion& lens, glm::dvec2 distorted)
 // distort() gives the one place in the image that shows that ray. Past the
 // fold, distort() lands on a place that shows another ray, nearer the axis
 // (a radial k1 < 0 alone folds at r = 1 / sqrt(-3 k1)): no pixel shows it.
+// A fisheye keeps it while theta_d grows with theta.
 SWELL_API bool insideFold(const LensDistortion& lens, glm::dvec2 undistorted);
 
 // Why `lens` cannot draw an image of `size` pixels at fovY_deg degrees of
 // vertical field ("" when it can), by the one rule of docs/SCENE.md ("The
 // lens"): every pixel of the image's border must have a ray, the lens must
-// not fold between the image's centre and it, and the pinhole frame drawn
+// not fold between the image's centre and it (a fisheye's theta_d must grow
+// with theta out to the farthest pixel's ray), and the pinhole frame drawn
 // to hold those rays must be at most 4 times the image's side.
 SWELL_API std::string lensProblem(const LensDistortion& lens, double fovY_deg, glm::ivec2 size);
-// The same for a scene's lens (camera.distortion_*): throws InputError
-// naming every coefficient it sets, at the first one's place
-// (Scene::keyPlaces), else at `sceneFile` ("camera" when empty).
+// The same for a scene's lens (camera.distortion_*, or camera.lens and
+// camera.fisheye_*): throws InputError naming every coefficient it sets
+// (and a fisheye's camera.lens), at the first coefficient's place
+// (Scene::keyPlaces), else camera.lens's, else at `sceneFile` ("camera"
+// when empty).
 SWELL_API void checkLens(const Scene& scene, glm::ivec2 size, double fovY_deg, const std::filesystem::path& sceneFile = {});
 
 // When each row of the sensor gathers light (camera.shutter_s, readout_s,

@@ -269,6 +269,9 @@ struct SWELL_API CameraKey {
     double roll_deg = 0.0;        // about the view direction, degrees, -180..180 (swell/camera.h)
 };
 
+// A camera lens's model (docs/SCENE.md, "The lens"; swell/dataset/sensor.h).
+enum class LensModel { BrownConrady, KannalaBrandt };
+
 struct SWELL_API CameraSettings {
     glm::dvec3 position_m{0.0, 6.0, 0.0}; // world position, m
     double yaw_deg = 0.0;                  // heading, degrees from -z towards +x
@@ -286,11 +289,17 @@ struct SWELL_API CameraSettings {
     int mountObject = -1;
     glm::dvec3 mountOffset_m{0.0};
     // The lens and the sensor (swell/dataset/sensor.h), applied to stills, videos
-    // and datasets, and to their labels alike: Brown-Conrady distortion
-    // (k1, k2, k3 radial, p1, p2 tangential, OpenCV's order and sign), the
-    // exposure, and Gaussian noise on each colour channel.
+    // and datasets, and to their labels alike: the lens's model and its
+    // coefficients, the exposure, and Gaussian noise on each colour channel.
+    // Brown-Conrady (lens = BrownConrady, the default): k1, k2, k3 radial,
+    // p1, p2 tangential, OpenCV's order and sign. Kannala-Brandt's fisheye
+    // (lens = KannalaBrandt): k1..k4 of OpenCV's cv2.fisheye; fovY_deg is
+    // then the angle between the rays of the top and bottom borders'
+    // middles. A scene sets the coefficients of its lens's model only.
+    LensModel lens = LensModel::BrownConrady;
     double distortionK1 = 0.0, distortionK2 = 0.0, distortionK3 = 0.0;
     double distortionP1 = 0.0, distortionP2 = 0.0;
+    double fisheyeK1 = 0.0, fisheyeK2 = 0.0, fisheyeK3 = 0.0, fisheyeK4 = 0.0;
     double exposure_ev = 0.0;       // stops: the linear colour times 2^ev before it is encoded
     double noiseStdDev = 0.0;       // of each 8-bit channel, as a share of full scale, 0..0.5
     std::uint32_t noiseSeed = 0;
