@@ -194,13 +194,14 @@ void exposeAndNoise(Image& image, const CameraSettings& s, double time_s)
 
 } // namespace
 
-SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size, bool labels)
+SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size, bool labels,
+                              std::optional<glm::dvec3> simulatedAround_m)
 {
     const CameraSettings& settings = renderer.scene().camera;
     const LensDistortion lens = lensOf(settings);
     SensorFrame frame;
     if (lens.none()) {
-        frame.image = renderer.renderImage(camera, time_s, size);
+        frame.image = renderer.renderImage(camera, time_s, size, simulatedAround_m);
         if (labels)
             frame.labels = renderer.renderLabels(camera, size);
     } else {
@@ -214,7 +215,7 @@ SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double t
         const glm::ivec2 wide = detail::pinholeSize(lens, c);
         Camera pinhole = camera;
         pinhole.fovY_deg = glm::degrees(2.0 * std::atan(0.5 * wide.y / (detail::kPinholeScale * c.fy_px)));
-        const Image source = renderer.renderImage(pinhole, time_s, wide);
+        const Image source = renderer.renderImage(pinhole, time_s, wide, simulatedAround_m);
         frame.image.width = size.x;
         frame.image.height = size.y;
         frame.image.rgba.resize(std::size_t(size.x) * std::size_t(size.y) * 4);
@@ -227,6 +228,17 @@ SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double t
     }
     exposeAndNoise(frame.image, settings, time_s);
     return frame;
+}
+
+std::vector<RigFrame> renderRigFrames(Renderer& renderer, double time_s, glm::ivec2 size, bool labels)
+{
+    const Camera platform = renderer.sceneCameraAt(time_s);
+    std::vector<RigFrame> frames;
+    for (const RigCamera& rig : renderer.scene().camera.rig) {
+        const Camera camera = rigCameraOf(platform, rig);
+        frames.push_back({rig.name, camera, renderSensorFrame(renderer, camera, time_s, size, labels, platform.position_m)});
+    }
+    return frames;
 }
 
 } // namespace swell

@@ -346,6 +346,8 @@ constexpr StringKey kStringKeys[] = {
      "the model's name",
      "its class in the labels and COCO (docs/LABELS.md): \"boat\" for \"builtin:boat\", the file's name without folder "
      "or extension for a model"},
+    {"`[[camera.rig]]`", "name", "1 to 32 letters, digits, '_' or '-'; each camera's own", "required",
+     "the rig camera's name, in its files' names (NAME.left.png) and its JSON's rig block"},
 };
 
 // The parameter reference of docs/SCENE.md, written from the table.

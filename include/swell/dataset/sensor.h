@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace swell {
 
@@ -74,7 +75,20 @@ struct SWELL_API SensorFrame {
     Image image;
     std::optional<FrameLabels> labels;
 };
+// `simulatedAround_m`: as Renderer::renderImage's (a rig's platform).
 SWELL_API SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size,
-                                        bool labels);
+                                        bool labels, std::optional<glm::dvec3> simulatedAround_m = std::nullopt);
+
+// The frames of the scene's rig ([[camera.rig]], swell/dataset/platform.h)
+// at time_s: the simulation advanced once, around the platform (the
+// scene's camera at time_s, Renderer::sceneCameraAt), and every rig camera
+// drawn from that one state, in the rig's order, through the scene's lens
+// and sensor.
+struct SWELL_API RigFrame {
+    std::string name;  // the rig camera's name
+    Camera camera;     // where it stands at time_s, world
+    SensorFrame frame;
+};
+SWELL_API std::vector<RigFrame> renderRigFrames(Renderer& renderer, double time_s, glm::ivec2 size, bool labels);
 
 } // namespace swell
