@@ -484,7 +484,7 @@ std::vector<Parameter> buildTable()
             .sliderMin = -180.0, .sliderMax = 180.0, .description = "about its view direction: + banks right"}),
         at([](auto& s, std::size_t i) -> auto& { return s.camera.rig[i].fovY_deg; },
            {.key = "camera.rig.fov_y_deg", .list = L::CameraRig, .unit = "deg", .min = 0.0, .max = 150.0,
-            .sliderMin = 0.0, .sliderMax = 150.0, .description = "vertical field of view, 10..150; 0: the [camera]'s"}),
+            .sliderMin = 0.0, .sliderMax = 150.0, .description = "vertical field of view; 0: the [camera]'s"}),
         // [labels]
         at([](auto& s, std::size_t) -> auto& { return s.labels.worldFrame; },
            {.key = "labels.world_frame", .kind = K::Choice, .min = 0.0, .max = kLabelWorldFrames.size() - 1.0,

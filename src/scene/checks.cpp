@@ -113,9 +113,6 @@ void checkRig(const std::vector<RigCamera>& rig, const Places& places)
                                  "name, which its files carry",
                                  item, name, other, where));
             }
-        if (const double fov = rig[i].fovY_deg; fov != 0.0 && fov < 10.0)
-            fail(places.first({item + ".fov_y_deg", item}),
-                 fmt::format("{}.fov_y_deg = {} deg: 0 (the [camera]'s) or 10..150", item, fov));
     }
 }
 

@@ -146,8 +146,6 @@ std::vector<Malformed> malformedCases()
         {"RigCameraWithoutName", "[[camera.rig]]\nposition_m = [0.1, 0.0, 0.0]\n", 1, 1, "camera.rig[0] needs a name"},
         {"RigCameraNameNotAFileName", "[[camera.rig]]\nname = \"left/eye\"\n", 2, 8,
          "a rig camera's name is part of its files' names"},
-        {"RigCameraFieldTooNarrow", "[[camera.rig]]\nname = \"left\"\nfov_y_deg = 5.0\n", 3, 13,
-         "camera.rig[0].fov_y_deg = 5 deg: 0 (the [camera]'s) or 10..150"},
         {"WindAndList", "[waves.wind]\nspeed_mps = 5.0\n[[waves.list]]\nwavelength_m = 10.0\n", 3, 1,
          "waves.list and waves.wind exclude each other"},
         // Sizes

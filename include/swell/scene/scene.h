@@ -249,7 +249,7 @@ struct SWELL_API RigCamera {
     double yaw_deg = 0.0;             // from the platform's heading, degrees
     double pitch_deg = 0.0;           // from the platform's, degrees, -89..89
     double roll_deg = 0.0;            // about its view direction, degrees, -180..180
-    double fovY_deg = 0.0;            // vertical field of view, degrees, 10..150; 0: the [camera]'s
+    double fovY_deg = 0.0;            // vertical field of view, degrees, up to 150; 0: the [camera]'s
 };
 
 // The most cameras a rig holds: each is a whole frame drawn and labelled.
