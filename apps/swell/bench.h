@@ -227,6 +227,9 @@ inline constexpr const char* kLabelsPass = "labels";
 // With --labels, the optical flow from the last frame's labels to this
 // one's (swell::opticalFlowOf, on the CPU), recorded after the label pass.
 inline constexpr const char* kFlowPass = "flow";
+// With --sensor, the frame drawn again through the scene camera's sensor
+// (swell::renderSensorFrame: lens, shutter, readout), recorded apart.
+inline constexpr const char* kSensorPass = "sensor";
 
 struct Results {
     Machine machine;
@@ -243,6 +246,10 @@ struct Results {
     // With --labels: each measured frame's flow from the frame before it
     // (one pass, "flow"); none for a first frame without one before it.
     std::vector<FrameSample> flow;
+    // With --sensor: each measured frame drawn through the sensor (one
+    // pass, "sensor"), and how many draws it took.
+    std::vector<FrameSample> sensor;
+    int sensorDraws = 0;
     std::vector<double> realTimes_s;     // simulation time of each measured frame
     std::vector<Camera> realCameras;     // camera of each measured frame
     std::vector<LodSample> lod;

@@ -8,6 +8,7 @@
 #include "scene_loading.h"
 
 #include "swell/dataset/flow.h"
+#include "swell/dataset/sensor.h"
 #include "swell/error.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
@@ -187,6 +188,15 @@ int runBench(const BenchOptions& options)
                       options.warmup + options.frames);
     // The real frames: warm-up at the path's start, then the measured ones.
     std::optional<FrameLabels> previousLabels; // with --labels: the last frame's, for the flow
+    // With --sensor, a renderer of its own: the sensor's draws span the
+    // frame's time on both sides, and time going back for the frame's own
+    // renderer would simulate its bodies again from their start.
+    std::unique_ptr<Renderer> sensorRenderer;
+    if (options.sensor) {
+        sensorRenderer = std::make_unique<Renderer>(scene);
+        sensorRenderer->setRenderScale(options.outputSettings.renderScale);
+        r.sensorDraws = int(sensorTimingOf(scene.camera, 0.0, 0).drawTimes_s.size());
+    }
     for (int i = 0; i < options.warmup + options.frames; ++i) {
         const bool measured = i >= options.warmup;
         const int k = i - options.warmup;
@@ -220,6 +230,15 @@ int runBench(const BenchOptions& options)
                 });
             previousLabels = std::move(frameLabels);
         }
+        std::optional<FrameSample> sensor;
+        if (options.sensor) {
+            sensor = recorder.recordFrame([&] {
+                recorder.beginPass(kSensorPass);
+                (void)renderSensorFrame(*sensorRenderer, camera, t, r.size, false);
+                recorder.endPass(kSensorPass);
+            });
+            checkGl("drawing the frame through the sensor");
+        }
         // As a video does (`swell render`): the bodies step towards the
         // next frame on their own thread meanwhile (Renderer::anticipate).
         renderer.anticipate(double(i + 1) * kFrameStep_s);
@@ -229,6 +248,8 @@ int runBench(const BenchOptions& options)
                 r.labels.push_back(std::move(*labels));
             if (flow)
                 r.flow.push_back(std::move(*flow));
+            if (sensor)
+                r.sensor.push_back(std::move(*sensor));
             r.realTimes_s.push_back(t);
             r.bodySteps.push_back(counters.bodySteps);
             r.wakeSteps.push_back(counters.wakeSteps);

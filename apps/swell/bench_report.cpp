@@ -293,12 +293,19 @@ void printReport(const Results& r)
             row(kFlowPass, passSeries(r.flow, kFlowPass, &PassSample::wall_ms),
                 passSeries(r.flow, kFlowPass, &PassSample::cpu_ms), {}, {}, {});
     }
+    if (!r.sensor.empty())
+        row(kSensorPass, passSeries(r.sensor, kSensorPass, &PassSample::wall_ms),
+            passSeries(r.sensor, kSensorPass, &PassSample::cpu_ms), {}, {}, passGpu(r.sensor, kSensorPass));
     std::printf("  (an inner pass is part of the pass above it; the floor is each pass's target cleared and covered\n"
                 "   by one full-screen triangle of a constant colour)\n");
     if (!r.labels.empty())
         std::printf("  (--labels: \"labels\" is the label pass drawn after each frame for its camera and time, its\n"
                     "   arrays read back, apart from the frame; \"frame + labels\" their sum a frame: a labelled sample;\n"
                     "   \"flow\" the optical flow from the frame before's labels to these, on the CPU)\n");
+    if (!r.sensor.empty())
+        std::printf("  (--sensor: \"sensor\" is the frame drawn again through the camera's sensor, as `swell render`\n"
+                    "   draws it: %d draw%s a frame through the lens, the shutter and the readout)\n",
+                    r.sensorDraws, r.sensorDraws == 1 ? "" : "s");
     long long steps = 0;
     for (long long s : r.bodySteps)
         steps += s;
@@ -465,6 +472,12 @@ void writeJson(const Results& r, const std::string& path)
                            : Json{{"wall_ms", summaryJson(summarize(passSeries(r.flow, kFlowPass, &PassSample::wall_ms)))},
                                   {"cpu_ms", summaryJson(summarize(passSeries(r.flow, kFlowPass, &PassSample::cpu_ms)))}};
     }
+
+    j["sensor"] = r.sensor.empty()
+                      ? Json(nullptr)
+                      : Json{{"draws", r.sensorDraws},
+                             {"wall_ms", summaryJson(summarize(passSeries(r.sensor, kSensorPass, &PassSample::wall_ms)))},
+                             {"cpu_ms", summaryJson(summarize(passSeries(r.sensor, kSensorPass, &PassSample::cpu_ms)))}};
 
     Json lod = Json::array();
     for (const LodSample& s : r.lod) {

@@ -87,6 +87,10 @@ struct BenchOptions {
     // arrays read back), as `swell dataset` draws a labelled sample, and
     // report it beside the colour frame.
     bool labels = false;
+    // Also draw each frame through the scene camera's sensor
+    // (swell::renderSensorFrame: its lens, shutter and readout) and report
+    // it beside the frame.
+    bool sensor = false;
     OutputSettings outputSettings;
     // Every frame from the scene's own camera (the view `swell view` opens
     // on) instead of the camera path, to compare with the viewer.

@@ -237,12 +237,17 @@ SampleFrame drawFrame(Renderer& renderer, const Sweep& sweep, int frame, double 
     SampleFrame f;
     f.frame = frame;
     f.time_s = time_s;
-    f.camera = renderer.sceneCameraAt(time_s);
-    f.platform = renderer.platformAt(time_s);
-    if (!renderer.scene().camera.rig.empty())
+    if (!renderer.scene().camera.rig.empty()) {
         f.shots = renderRigFrames(renderer, time_s, sweep.size, sweep.labels);
-    else
-        f.shots.push_back({"", f.camera, renderSensorFrame(renderer, f.camera, time_s, sweep.size, sweep.labels)});
+        f.camera = renderer.sceneCameraAt(time_s);
+    } else {
+        SensorFrame sensor = renderSensorFrame(
+            renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, time_s, sweep.size, sweep.labels);
+        f.camera = sensor.camera;
+        f.shots.push_back({"", f.camera, std::move(sensor)});
+    }
+    // After the draws, which go through the sensor's times in order.
+    f.platform = renderer.platformAt(time_s);
     return f;
 }
 
@@ -269,10 +274,21 @@ void writeClip(const fs::path& out, int i, const Sweep& sweep, const SweepSample
             writeFrame(out, i, sweep, sample, renderer, *pending, flowsTo(*pending, sweep.labels ? &f : nullptr));
         pending = std::move(f);
     }
-    std::optional<SampleFrame> next;
-    if (sweep.labels)
-        next = drawFrame(renderer, sweep, clip.frames, clip.frameTime_s(sample.time_s, clip.frames));
-    writeFrame(out, i, sweep, sample, renderer, *pending, flowsTo(*pending, next ? &*next : nullptr));
+    std::vector<std::optional<FrameFlow>> lastFlows(pending->shots.size());
+    if (sweep.labels) {
+        const double next_s = clip.frameTime_s(sample.time_s, clip.frames);
+        if (renderer.scene().camera.rig.empty()) {
+            // Its labels alone: the sensor's draws of an image nobody sees
+            // would cost motion_samples frames with a shutter.
+            lastFlows[0] = opticalFlowOf(*pending->shots[0].frame.labels, pending->time_s,
+                                         renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, sweep.size),
+                                         interval_s, seaMotionOf(renderer.scene(), renderer.waveModel()));
+        } else {
+            const SampleFrame next = drawFrame(renderer, sweep, clip.frames, next_s);
+            lastFlows = flowsTo(*pending, &next);
+        }
+    }
+    writeFrame(out, i, sweep, sample, renderer, *pending, lastFlows);
 }
 
 void renderSamples(const fs::path& out, const Sweep& sweep, const Scene& base, const std::vector<int>& todo)

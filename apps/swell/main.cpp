@@ -244,6 +244,9 @@ int main(int argc, char** argv)
                            "Also draw the label pass after each frame, its arrays read back, as `swell dataset` "
                            "draws a labelled sample, and the optical flow from the frame before's labels: its own "
                            "rows (labels, frame + labels, flow) beside the frame, with the same counters");
+    benchCommand->add_flag("--sensor", bench.sensor,
+                           "Also draw each frame through the scene camera's sensor as `swell render` does (its lens, "
+                           "and with camera.shutter_s or readout_s its motion_samples draws): its own row (sensor)");
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");

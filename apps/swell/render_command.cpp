@@ -152,9 +152,10 @@ std::vector<RigFrame> cameraFrames(Renderer& renderer, double time_s, glm::ivec2
 {
     if (!renderer.scene().camera.rig.empty())
         return renderRigFrames(renderer, time_s, size, labels);
-    const Camera camera = renderer.sceneCameraAt(time_s);
+    SensorFrame frame = renderSensorFrame(
+        renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, time_s, size, labels);
     std::vector<RigFrame> frames;
-    frames.push_back({"", camera, renderSensorFrame(renderer, camera, time_s, size, labels)});
+    frames.push_back({"", frame.camera, std::move(frame)});
     return frames;
 }
 
@@ -208,7 +209,8 @@ int runRender(const RenderOptions& options)
     std::vector<PendingLabels> pending;
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
-        // Through the camera's lens and sensor (swell/dataset/sensor.h).
+        // Through the camera's lens and sensor (swell/dataset/sensor.h), the
+        // camera where the scene puts it at each time the sensor draws.
         std::vector<RigFrame> shots = cameraFrames(renderer, t, size, options.labels);
         const fs::path frame = options.duration_s ? sequencePath(output, i) : output;
         // The flow asks the waves at the last frame's time and this one's
@@ -226,7 +228,7 @@ int runRender(const RenderOptions& options)
         // The bodies step towards the next frame (or the last frame's labels
         // for its flow) while this one is written.
         if (i + 1 < frames || options.labels)
-            renderer.anticipate(options.time_s + double(i + 1) / options.fps);
+            renderer.anticipate(firstDrawTime_s(scene.camera, options.time_s + double(i + 1) / options.fps));
         for (const RigFrame& shot : shots) {
             if (video)
                 videoWriter->write(shot.frame.image);
@@ -237,9 +239,14 @@ int runRender(const RenderOptions& options)
     }
     if (!pending.empty()) {
         const double next_s = options.time_s + double(frames) / options.fps;
-        const std::vector<RigFrame> next = cameraFrames(renderer, next_s, size, true);
-        for (std::size_t c = 0; c < pending.size(); ++c)
-            writeLabelsWithFlow(pending[c], *next[c].frame.labels, interval_s, renderer);
+        if (scene.camera.rig.empty()) {
+            const FrameLabels next = renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, size);
+            writeLabelsWithFlow(pending.front(), next, interval_s, renderer);
+        } else {
+            const std::vector<RigFrame> next = renderRigFrames(renderer, next_s, size, true);
+            for (std::size_t c = 0; c < pending.size(); ++c)
+                writeLabelsWithFlow(pending[c], *next[c].frame.labels, interval_s, renderer);
+        }
     }
     if (videoWriter)
         videoWriter->finish();

@@ -186,18 +186,27 @@ public:
     }
 
     // The frame through the scene camera's lens and sensor (swell/dataset/sensor.h).
-    py::tuple renderSensor(const Camera& camera, double time_s, py::handle size, bool labels)
+    // camera: None for the scene's own camera at each draw's time (on its
+    // path or on a deck: its motion blurs with the shutter).
+    py::tuple renderSensor(const std::optional<Camera>& camera, double time_s, py::handle size, bool labels)
     {
         const glm::ivec2 s = imageSize(size);
-        checkCamera(camera);
+        if (camera)
+            checkCamera(*camera);
         checkSteps(frameTime(time_s));
+        // The sensor draws up to half its span after time_s (SensorTiming).
+        const SensorTiming timing = sensorTimingOf(renderer_->scene().camera, time_s, 0);
+        checkSteps(frameTime(timing.drawTimes_s.back()));
         use();
         SensorFrame frame;
         {
             py::gil_scoped_release release;
-            frame = renderSensorFrame(*renderer_, camera, time_s, s, labels);
+            frame = camera ? renderSensorFrame(*renderer_, *camera, time_s, s, labels)
+                           : renderSensorFrame(
+                                 *renderer_, [this](double t) { return renderer_->sceneCameraAt(t); }, time_s, s,
+                                 labels);
         }
-        viewpoint_m_ = camera.position_m;
+        viewpoint_m_ = frame.camera.position_m;
         py::object image = arrayOwning<std::uint8_t>(std::move(frame.image.rgba), {s.y, s.x, 4});
         return py::make_tuple(image, frame.labels ? py::cast(toPython(std::move(*frame.labels))) : py::none());
     }
@@ -366,9 +375,11 @@ void bindRenderer(py::module_& m)
              "before the first render() or advance_to().")
         .def("render_sensor", &PyRenderer::renderSensor, py::arg("camera"), py::arg("time_s"), py::arg("size"),
              py::arg("labels") = true,
-             "As `swell render` draws a frame: through the scene camera's lens distortion, exposure and "
-             "noise (camera.distortion_*, exposure_ev, noise_*; docs/LABELS.md), its labels resampled "
-             "through the same lens. Returns (uint8 (H, W, 4) RGBA, swell.Labels or None).")
+             "As `swell render` draws a frame: through the scene camera's lens distortion, shutter, "
+             "exposure and noise (camera.distortion_*, shutter_s, readout_s, exposure_ev, noise_*; "
+             "docs/LABELS.md), its labels resampled through the same lens. camera=None: the scene's own "
+             "camera at each time the sensor draws (its motion blurs). Returns (uint8 (H, W, 4) RGBA, "
+             "swell.Labels or None).")
         .def("optical_flow", &PyRenderer::opticalFlow, py::arg("labels"), py::arg("time_s"), py::arg("next_labels"),
              py::arg("interval_s"),
              "The forward optical flow from labels (drawn at time_s) to next_labels (drawn interval_s later), as "

@@ -450,6 +450,15 @@ std::vector<Parameter> buildTable()
            {.key = "camera.noise_seed", .kind = K::Integer, .min = 0.0, .max = 4294967295.0, .sliderMin = 0.0,
             .sliderMax = 100.0, .description = "sensor noise: its random seed (with the frame's time: the same noise "
                                                "for the same frame)"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.shutter_s; },
+           {.key = "camera.shutter_s", .unit = "s", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.1,
+            .description = "sensor: how long each row gathers light (motion blur); 0: an instant"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.readout_s; },
+           {.key = "camera.readout_s", .unit = "s", .min = 0.0, .max = 1.0, .sliderMin = 0.0, .sliderMax = 0.1,
+            .description = "sensor: rolling shutter, from the top row's exposure to the bottom row's; 0: global"}),
+        at([](auto& s, std::size_t) -> auto& { return s.camera.motionSamples; },
+           {.key = "camera.motion_samples", .kind = K::Integer, .min = 2.0, .max = 256.0, .sliderMin = 2.0,
+            .sliderMax = 64.0, .description = "sensor: frames drawn over shutter_s + readout_s, when either is set"}),
         // [[camera.path]]
         at([](auto& s, std::size_t i) -> auto& { return s.camera.path[i].time_s; },
            {.key = "camera.path.time_s", .list = L::CameraPath, .unit = "s", .min = 0.0, .max = 1.0e6, .sliderMin = 0.0,

@@ -18,7 +18,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace swell {
@@ -192,53 +194,165 @@ void exposeAndNoise(Image& image, const CameraSettings& s, double time_s)
     }
 }
 
+// The rows of `draws` (images of one size, drawn at timing.drawTimes_s)
+// each averaged over the draws it gathers light from, in linear light.
+Image exposeRows(const std::vector<Image>& draws, const SensorTiming& timing)
+{
+    const std::array<double, 256>& linear = srgbToLinear();
+    Image out;
+    out.width = draws.front().width;
+    out.height = draws.front().height;
+    out.rgba.resize(draws.front().rgba.size());
+    const std::size_t row = std::size_t(out.width) * 4;
+    for (int y = 0; y < out.height; ++y) {
+        const glm::ivec2 from = timing.rowDraws[std::size_t(y)];
+        const double weight = 1.0 / double(from.y - from.x + 1);
+        for (std::size_t i = std::size_t(y) * row; i < std::size_t(y + 1) * row; ++i) {
+            if (i % 4 == 3) {
+                out.rgba[i] = 255;
+                continue;
+            }
+            double sum = 0.0;
+            for (int j = from.x; j <= from.y; ++j)
+                sum += linear[draws[std::size_t(j)].rgba[i]];
+            out.rgba[i] = toByte(sum * weight);
+        }
+    }
+    return out;
+}
+
 } // namespace
 
-SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size, bool labels,
-                              std::optional<glm::dvec3> simulatedAround_m)
+namespace {
+
+// The frame's image (when `image`) and its labels (when `labels`).
+SensorFrame sensorFrame(Renderer& renderer, const CameraAt& cameraAt, double time_s, glm::ivec2 size, bool image,
+                        bool labels, const CameraAt& around = {})
 {
+    // Where the simulation is advanced for a draw at time t: around the
+    // platform of a rig (its eye at t), else around the drawn camera.
+    auto aroundAt = [&around](double t) {
+        return around ? std::optional<glm::dvec3>(around(t).position_m) : std::nullopt;
+    };
     const CameraSettings& settings = renderer.scene().camera;
     const LensDistortion lens = lensOf(settings);
+    const SensorTiming timing = image ? sensorTimingOf(settings, time_s, size.y) : SensorTiming{{time_s}, {}};
+    // The camera of each time is asked for in the order of the times: a
+    // camera on a deck steps its body there, and a step back in time would
+    // simulate the bodies again from their start.
     SensorFrame frame;
+    auto cameraNow = [&] {
+        frame.camera = cameraAt(time_s);
+        return frame.camera;
+    };
+    // The image one draw at time t makes through the lens, and the labels
+    // of the simulated time.
+    std::function<Image(double)> drawAt;
+    std::function<FrameLabels()> labelsNow;
     if (lens.none()) {
-        frame.image = renderer.renderImage(camera, time_s, size, simulatedAround_m);
-        if (labels)
-            frame.labels = renderer.renderLabels(camera, size);
+        drawAt = [&](double t) {
+            return renderer.renderImage(t == time_s ? cameraNow() : cameraAt(t), t, size, aroundAt(t));
+        };
+        labelsNow = [&] { return renderer.renderLabels(frame.camera, size); };
     } else {
-        CameraCalibration c = calibrationOf(camera, size);
-        c.k1 = lens.k1;
-        c.k2 = lens.k2;
-        c.k3 = lens.k3;
-        c.p1 = lens.p1;
-        c.p2 = lens.p2;
-        checkLens(renderer.scene(), size, camera.fovY_deg); // the rule scenes and sweeps are checked by
-        const glm::ivec2 wide = detail::pinholeSize(lens, c);
-        Camera pinhole = camera;
-        pinhole.fovY_deg = glm::degrees(2.0 * std::atan(0.5 * wide.y / (detail::kPinholeScale * c.fy_px)));
-        const Image source = renderer.renderImage(pinhole, time_s, wide, simulatedAround_m);
-        frame.image.width = size.x;
-        frame.image.height = size.y;
-        frame.image.rgba.resize(std::size_t(size.x) * std::size_t(size.y) * 4);
-        distortImage(source, frame.image, lens, c);
-        if (labels) {
-            frame.labels = distortLabels(renderer.renderLabels(pinhole, wide), lens, c);
-            frame.labels->trueHorizon_px =
-                trueHorizonOf(c, seaFrameOf(renderer.scene()).heightInSea(camera.position_m.y));
+        // The rule scenes and sweeps are checked by (the field is the
+        // scene's, whatever the time).
+        checkLens(renderer.scene(), size, settings.fovY_deg);
+        auto calibrated = [&lens, size](const Camera& at) {
+            CameraCalibration c = calibrationOf(at, size);
+            c.k1 = lens.k1;
+            c.k2 = lens.k2;
+            c.k3 = lens.k3;
+            c.p1 = lens.p1;
+            c.p2 = lens.p2;
+            return c;
+        };
+        auto pinholeOf = [&lens](const Camera& at, const CameraCalibration& c) {
+            const glm::ivec2 wide = detail::pinholeSize(lens, c);
+            Camera pinhole = at;
+            pinhole.fovY_deg = glm::degrees(2.0 * std::atan(0.5 * wide.y / (detail::kPinholeScale * c.fy_px)));
+            return std::pair(pinhole, wide);
+        };
+        drawAt = [&, calibrated, pinholeOf](double t) {
+            const Camera at = t == time_s ? cameraNow() : cameraAt(t);
+            const CameraCalibration c = calibrated(at);
+            const auto [pinhole, wide] = pinholeOf(at, c);
+            const Image source = renderer.renderImage(pinhole, t, wide, aroundAt(t));
+            Image out;
+            out.width = size.x;
+            out.height = size.y;
+            out.rgba.resize(std::size_t(size.x) * std::size_t(size.y) * 4);
+            distortImage(source, out, lens, c);
+            return out;
+        };
+        labelsNow = [&, calibrated, pinholeOf] {
+            const CameraCalibration c = calibrated(frame.camera);
+            const auto [pinhole, wide] = pinholeOf(frame.camera, c);
+            FrameLabels out = distortLabels(renderer.renderLabels(pinhole, wide), lens, c);
+            out.trueHorizon_px =
+                trueHorizonOf(c, seaFrameOf(renderer.scene()).heightInSea(frame.camera.position_m.y));
+            return out;
+        };
+    }
+    // The labels' instant among the draws (at its place in time): the
+    // simulation advanced there for the camera of that time.
+    auto labelTheInstant = [&] {
+        renderer.advanceTo(time_s, aroundAt(time_s).value_or(cameraNow().position_m));
+        frame.labels = labelsNow();
+    };
+    if (!image) {
+        labelTheInstant();
+        return frame;
+    }
+    if (timing.drawTimes_s.size() == 1) {
+        frame.image = drawAt(time_s);
+        if (labels)
+            frame.labels = labelsNow();
+    } else {
+        std::vector<Image> draws;
+        for (const double t : timing.drawTimes_s) {
+            if (labels && !frame.labels && t > time_s)
+                labelTheInstant();
+            draws.push_back(drawAt(t));
         }
+        if (labels && !frame.labels)
+            labelTheInstant();
+        if (!labels)
+            (void)cameraNow(); // the camera of the instant, for the frame's JSON
+        frame.image = exposeRows(draws, timing);
     }
     exposeAndNoise(frame.image, settings, time_s);
     return frame;
 }
 
+} // namespace
+
+SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size, bool labels)
+{
+    return sensorFrame(renderer, [&camera](double) { return camera; }, time_s, size, true, labels);
+}
+
+SensorFrame renderSensorFrame(Renderer& renderer, const CameraAt& cameraAt, double time_s, glm::ivec2 size, bool labels,
+                              const CameraAt& simulatedAround)
+{
+    return sensorFrame(renderer, cameraAt, time_s, size, true, labels, simulatedAround);
+}
+
 std::vector<RigFrame> renderRigFrames(Renderer& renderer, double time_s, glm::ivec2 size, bool labels)
 {
-    const Camera platform = renderer.sceneCameraAt(time_s);
+    const CameraAt platformAt = [&renderer](double t) { return renderer.sceneCameraAt(t); };
     std::vector<RigFrame> frames;
     for (const RigCamera& rig : renderer.scene().camera.rig) {
-        const Camera camera = rigCameraOf(platform, rig);
-        frames.push_back({rig.name, camera, renderSensorFrame(renderer, camera, time_s, size, labels, platform.position_m)});
+        const CameraAt cameraAt = [&platformAt, &rig](double t) { return rigCameraOf(platformAt(t), rig); };
+        SensorFrame frame = sensorFrame(renderer, cameraAt, time_s, size, true, labels, platformAt);
+        frames.push_back({rig.name, frame.camera, std::move(frame)});
     }
     return frames;
+}
+
+FrameLabels renderSensorLabels(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size)
+{
+    return *sensorFrame(renderer, [&camera](double) { return camera; }, time_s, size, false, true).labels;
 }
 
 } // namespace swell

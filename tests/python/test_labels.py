@@ -6,6 +6,8 @@ pixels carry its instance and class, its 2D box lies within its projected
 3D box, and every range on it lands inside that box, placed by the
 returned object transform."""
 
+import os
+import tempfile
 import unittest
 
 import numpy as np
@@ -147,6 +149,50 @@ class Sensor(unittest.TestCase):
         self.assertEqual(labels.camera.distortion[0], -0.1)
         self.assertTrue(labels.horizon.curve_px)
         self.assertFalse((labels.semantic == 0).any())
+
+    def test_the_scenes_own_camera_moves_while_the_shutter_is_open(self):
+        """camera=None: the scene's camera at each draw's time; a camera turning on its path blurs the sky's
+        buoy, a camera held at the instant (the Camera given) does not move, and the labels are the instant's."""
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "turning.toml")
+            with open(path, "w") as f:
+                f.write(TURNING_PAST_A_BUOY)
+            scene = swell.load(path)
+        renderer = swell.Renderer(scene)
+        moving, labels = renderer.render_sensor(None, 1.0, (96, 64))
+        held, held_labels = renderer.render_sensor(renderer.scene_camera_at(1.0), 1.0, (96, 64))
+        instant = renderer.render(renderer.scene_camera_at(1.0), 1.0, (96, 64))
+        sky = slice(0, 30)
+        self.assertGreater(np.abs(moving[sky].astype(int) - instant[sky].astype(int)).mean(), 1.0)
+        self.assertLess(np.abs(held[sky].astype(int) - instant[sky].astype(int)).mean(), 0.1)
+        np.testing.assert_array_equal(labels.instance, held_labels.instance)
+
+
+# A camera turning at 30 degrees a second past a buoy standing in the sky, its shutter open 0.1 s.
+TURNING_PAST_A_BUOY = """
+terrain = false
+
+[[objects]]
+path = "builtin:buoy"
+position_m = [0.0, 6.0, -20.0]
+scale = 3.0
+
+[camera]
+shutter_s = 0.1
+motion_samples = 8
+
+[[camera.path]]
+time_s = 0.0
+position_m = [0.0, 2.0, 0.0]
+yaw_deg = -30.0
+pitch_deg = 0.0
+
+[[camera.path]]
+time_s = 2.0
+position_m = [0.0, 2.0, 0.0]
+yaw_deg = 30.0
+pitch_deg = 0.0
+"""
 
 
 class Shoreline(unittest.TestCase):

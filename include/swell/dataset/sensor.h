@@ -23,6 +23,7 @@
 #include <glm/vec2.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +63,28 @@ SWELL_API std::string lensProblem(const LensDistortion& lens, double fovY_deg, g
 // (Scene::keyPlaces), else at `sceneFile` ("camera" when empty).
 SWELL_API void checkLens(const Scene& scene, glm::ivec2 size, double fovY_deg, const std::filesystem::path& sceneFile = {});
 
+// When each row of the sensor gathers light (camera.shutter_s, readout_s,
+// motion_samples). The frame's time is the middle of the exposure of the
+// image's middle: row y (0 at the top, of `rows`) is read out at
+//   t_y = t + ((y + 0.5) / rows - 0.5) readout_s
+// (a rolling shutter reads the rows in turn from the top; readout_s = 0 is a
+// global shutter) and gathers light over [t_y - shutter_s / 2,
+// t_y + shutter_s / 2] (motion blur: the light of that window averaged,
+// a box filter in time). The frame is drawn motion_samples times, evenly
+// over the span [t - (readout_s + shutter_s) / 2, t + (readout_s +
+// shutter_s) / 2], each draw at the middle of its share of it; a row
+// averages, in linear light, the draws whose times lie in its window, or
+// takes the draw nearest t_y when none does (a shutter shorter than the
+// draws' spacing). With neither set, one draw at t. A draw that would come
+// before time 0, when the simulation starts, is drawn at 0.
+struct SWELL_API SensorTiming {
+    std::vector<double> drawTimes_s; // ascending
+    // For each row, the first and last draw (indices into drawTimes_s,
+    // inclusive) it averages.
+    std::vector<glm::ivec2> rowDraws;
+};
+SWELL_API SensorTiming sensorTimingOf(const CameraSettings& camera, double time_s, int rows);
+
 // A frame as the scene's camera sees it: drawn by `renderer` for `camera`
 // at time_s (Renderer::renderImage, advancing to time_s), distorted,
 // exposed and noised as the renderer's scene says; with `labels`, its
@@ -74,16 +97,33 @@ SWELL_API void checkLens(const Scene& scene, glm::ivec2 size, double fovY_deg, c
 struct SWELL_API SensorFrame {
     Image image;
     std::optional<FrameLabels> labels;
+    Camera camera; // the camera of time_s (of the labels' instant)
 };
-// `simulatedAround_m`: as Renderer::renderImage's (a rig's platform).
 SWELL_API SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size,
-                                        bool labels, std::optional<glm::dvec3> simulatedAround_m = std::nullopt);
+                                        bool labels);
+// The same for a camera that moves while the sensor gathers light
+// (SensorTiming): each draw is seen by cameraAt(its time), e.g.
+// Renderer::sceneCameraAt for the scene's own camera (on its path or on a
+// deck). The labels are of time_s alone, seen by cameraAt(time_s): the
+// instant at the middle of the middle row's exposure (docs/LABELS.md).
+using CameraAt = std::function<Camera(double time_s)>;
+// `simulatedAround`: the camera whose eye the simulation is advanced around
+// at each draw's time (a rig's platform, so that its cameras are drawn
+// from one state); empty: the drawn camera's own.
+SWELL_API SensorFrame renderSensorFrame(Renderer& renderer, const CameraAt& cameraAt, double time_s, glm::ivec2 size,
+                                        bool labels, const CameraAt& simulatedAround = {});
+// The labels renderSensorFrame() gives, without drawing the image (the
+// next frame's labels a still's optical flow is measured to).
+SWELL_API FrameLabels renderSensorLabels(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size);
+// When the first draw of the frame at time_s is (SensorTiming): a host that
+// anticipates its next frame (Renderer::anticipate) anticipates this.
+SWELL_API double firstDrawTime_s(const CameraSettings& camera, double time_s);
 
 // The frames of the scene's rig ([[camera.rig]], swell/dataset/platform.h)
-// at time_s: the simulation advanced once, around the platform (the
-// scene's camera at time_s, Renderer::sceneCameraAt), and every rig camera
-// drawn from that one state, in the rig's order, through the scene's lens
-// and sensor.
+// at time_s: the simulation advanced around the platform (the scene's
+// camera, Renderer::sceneCameraAt), once for each time drawn, and every rig
+// camera drawn from that state, in the rig's order, through the scene's
+// lens and sensor.
 struct SWELL_API RigFrame {
     std::string name;  // the rig camera's name
     Camera camera;     // where it stands at time_s, world

@@ -280,6 +280,13 @@ struct SWELL_API CameraSettings {
     double exposure_ev = 0.0;       // stops: the linear colour times 2^ev before it is encoded
     double noiseStdDev = 0.0;       // of each 8-bit channel, as a share of full scale, 0..0.5
     std::uint32_t noiseSeed = 0;
+    // Time on the sensor (swell/dataset/sensor.h, SensorTiming): how long
+    // each row gathers light (motion blur), how long the rows take to be
+    // read out from top to bottom (rolling shutter; 0: a global shutter),
+    // and how many frames are drawn over the span the two cover.
+    double shutter_s = 0.0;         // s, 0..1: each row's exposure; 0: an instant
+    double readout_s = 0.0;         // s, 0..1: from the top row's exposure to the bottom's
+    int motionSamples = 16;         // frames drawn over shutter_s + readout_s, 2..256
     // Cameras on the platform this camera places ([[camera.rig]]); empty:
     // the camera itself is the one sensor. With a rig, the rig's cameras
     // are the sensors (the lens and sensor settings above are theirs too).
