@@ -118,25 +118,31 @@ void addFrame(const fs::path& png, long long imageId, Json image, Json& images, 
 
 } // namespace
 
-Json cocoJson(const fs::path& out, const Sweep& sweep, const std::vector<std::string>& classes)
+Json cocoJson(const fs::path& out, const Sweep& sweep, const std::vector<std::string>& classes,
+              const std::vector<std::string>& cameras)
 {
     Json images = Json::array(), annotations = Json::array(), categories = Json::array();
     for (std::size_t c = SWELL_LABEL_FIRST_OBJECT_CLASS; c < classes.size(); ++c)
         categories.push_back({{"id", c}, {"name", classes[c]}, {"supercategory", "object"}});
     long long nextId = 1;
     const int frames = sweep.clip ? sweep.clip->frames : 1;
+    const long long views = (long long)cameras.size();
     for (int i = 0; i < sweep.count; ++i)
-        for (int k = 0; k < frames; ++k) {
-            const long long id = (long long)i * frames + k;
-            const std::string name =
-                sweep.clip ? fmt::format("samples/{:06d}_{:05d}.png", i, k) : fmt::format("samples/{:06d}.png", i);
-            Json image = {{"id", id}, {"file_name", name}};
-            if (sweep.clip) {
-                image["sample"] = i;
-                image["frame"] = k;
+        for (int k = 0; k < frames; ++k)
+            for (std::size_t c = 0; c < cameras.size(); ++c) {
+                const long long id = ((long long)i * frames + k) * views + (long long)c;
+                const std::string frame =
+                    sweep.clip ? fmt::format("samples/{:06d}_{:05d}.png", i, k) : fmt::format("samples/{:06d}.png", i);
+                const std::string name = rigCameraPath(frame, cameras[c]).string();
+                Json image = {{"id", id}, {"file_name", name}};
+                if (sweep.clip) {
+                    image["sample"] = i;
+                    image["frame"] = k;
+                }
+                if (!cameras[c].empty())
+                    image["camera"] = cameras[c];
+                addFrame(out / name, id, std::move(image), images, annotations, nextId);
             }
-            addFrame(out / name, id, std::move(image), images, annotations, nextId);
-        }
     return {{"info", {{"description", "rendered by swell dataset"}}},
             {"images", images},
             {"annotations", annotations},

@@ -21,7 +21,10 @@ namespace swell::app {
 // classes, with the ids of the samples' semantic masks). A clip's frames are
 // an image each (id: the sample's index times the clip's frames plus the
 // frame's), with its "sample" and "frame".
-Json cocoJson(const std::filesystem::path& out, const Sweep& sweep, const std::vector<std::string>& classes);
+// `cameras`: the rig's camera names (an image per camera per frame, its
+// "camera" named), or {""}.
+Json cocoJson(const std::filesystem::path& out, const Sweep& sweep, const std::vector<std::string>& classes,
+              const std::vector<std::string>& cameras);
 
 // A file's whole content; throws swell::Error when it cannot be read.
 std::string readFileBytes(const std::filesystem::path& path);

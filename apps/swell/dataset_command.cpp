@@ -17,6 +17,7 @@
 #include "dataset_folder.h"
 #include "flow_files.h"
 #include "label_files.h"
+#include "label_rig.h"
 #include "progress.h"
 #include "scene_loading.h"
 
@@ -106,6 +107,9 @@ void checkSamples(const Sweep& sweep, const Scene& base, const fs::path& scenePa
     const bool eachLens = variesTheLens(sweep);
     if (!eachLens)
         checkLens(base, sweep.size, base.camera.fovY_deg, scenePath);
+    for (const RigCamera& rig : base.camera.rig) // a rig camera's own field of view, through the same lens
+        if (rig.fovY_deg > 0.0)
+            checkLens(base, sweep.size, rig.fovY_deg, scenePath);
     for (int i = shard - 1; i < sweep.count; i += shards) {
         const SweepSample sample = sweepSample(sweep, base, i);
         try {
@@ -172,43 +176,53 @@ public:
 struct SampleFrame {
     int frame = 0;
     double time_s = 0.0;
-    Camera camera;
-    SensorFrame sensor;
+    Camera camera;               // the scene's camera: the platform of a rig
+    PlatformMotion platform;     // how it moves
+    std::vector<RigFrame> shots; // each camera's frame: the rig's, or the scene's camera alone (named "")
 };
 
 void writeFrame(const fs::path& out, int i, const Sweep& sweep, const SweepSample& sample, const Renderer& renderer,
-                const SampleFrame& f, const std::optional<FrameFlow>& flow)
+                const SampleFrame& f, const std::vector<std::optional<FrameFlow>>& flows)
 {
-    const fs::path png = framePng(out, i, sweep, f.frame);
-    FrameLabels labels;
-    if (f.sensor.labels) {
-        labels = *f.sensor.labels;
-    } else {
-        labels.size = sweep.size;
-        labels.camera = sensorCalibrationOf(f.camera, lensOf(sample.scene.camera), sweep.size);
-        labels.horizon = horizonOf(labels.camera);
-        labels.classes = labelClassesOf(sample.scene);
-    }
-    Json json = frameJson(labels, sample.scene, f.time_s, 4.0 * renderer.waveModel().heightDeviation_m(), png);
-    json["sample"] = i;
-    if (sweep.clip)
-        json["frame"] = f.frame;
-    if (flow)
-        json["flow"] = flowJson(*flow, f.time_s);
-    Json varied = Json::object();
-    for (std::size_t k = 0; k < sweep.vary.size(); ++k)
-        varied[sweep.vary[k].key] = sweptValueJson(sweep.vary[k], sample.values[k]);
-    json["varied"] = varied;
+    const std::vector<std::string> cameras = frameCameras(sample.scene);
     const HoldStops hold;
     try {
-        writePngAtomically(f.sensor.image, png);
-        if (f.sensor.labels)
-            writeLabelArrays(labels, png, sample.scene.labels.worldFrame);
-        if (flow)
-            writeFlowFiles(*flow, png);
-        writeFrameJson(json, png); // last: the frame is done
+        for (std::size_t c = 0; c < f.shots.size(); ++c) {
+            const RigFrame& shot = f.shots[c];
+            const std::optional<FrameFlow>& flow = flows[c];
+            const fs::path png = rigCameraPath(framePng(out, i, sweep, f.frame), shot.name);
+            FrameLabels labels;
+            if (shot.frame.labels) {
+                labels = *shot.frame.labels;
+            } else {
+                labels.size = sweep.size;
+                labels.camera = sensorCalibrationOf(shot.camera, lensOf(sample.scene.camera), sweep.size);
+                labels.horizon = horizonOf(labels.camera);
+                labels.classes = labelClassesOf(sample.scene);
+            }
+            Json json =
+                frameJson(labels, sample.scene, f.time_s, 4.0 * renderer.waveModel().heightDeviation_m(), png);
+            json["sample"] = i;
+            if (sweep.clip)
+                json["frame"] = f.frame;
+            if (flow)
+                json["flow"] = flowJson(*flow, f.time_s);
+            json["platform"] = platformJson(f.platform, f.camera, sample.scene.labels.worldFrame);
+            if (!shot.name.empty())
+                json["rig"] = rigJson(shot.name, labels.camera, f.platform, cameras);
+            Json varied = Json::object();
+            for (std::size_t k = 0; k < sweep.vary.size(); ++k)
+                varied[sweep.vary[k].key] = sweptValueJson(sweep.vary[k], sample.values[k]);
+            json["varied"] = varied;
+            writePngAtomically(shot.frame.image, png);
+            if (shot.frame.labels)
+                writeLabelArrays(labels, png, sample.scene.labels.worldFrame);
+            if (flow)
+                writeFlowFiles(*flow, png);
+            writeFrameJson(json, png); // last: the camera's frame is done
+        }
     } catch (...) {
-        removeSample(out, i, sweep); // a disk that filled half way: none of the sample stays
+        removeSample(out, i, sweep, cameras); // a disk that filled half way: none of the sample stays
         throw;
     }
 }
@@ -218,9 +232,17 @@ SampleFrame drawFrame(Renderer& renderer, const Sweep& sweep, int frame, double 
     SampleFrame f;
     f.frame = frame;
     f.time_s = time_s;
-    f.sensor = renderSensorFrame(
-        renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, time_s, sweep.size, sweep.labels);
-    f.camera = f.sensor.camera;
+    if (!renderer.scene().camera.rig.empty()) {
+        f.shots = renderRigFrames(renderer, time_s, sweep.size, sweep.labels);
+        f.camera = renderer.sceneCameraAt(time_s);
+    } else {
+        SensorFrame sensor = renderSensorFrame(
+            renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, time_s, sweep.size, sweep.labels);
+        f.camera = sensor.camera;
+        f.shots.push_back({"", f.camera, std::move(sensor)});
+    }
+    // After the draws, which go through the sensor's times in order.
+    f.platform = renderer.platformAt(time_s);
     return f;
 }
 
@@ -233,25 +255,35 @@ void writeClip(const fs::path& out, int i, const Sweep& sweep, const SweepSample
     const SweepClip& clip = *sweep.clip;
     const double interval_s = 1.0 / clip.fps;
     std::optional<SampleFrame> pending;
-    const auto flowTo = [&](const SampleFrame& from, const FrameLabels& next) {
-        return std::optional<FrameFlow>(opticalFlowOf(*from.sensor.labels, from.time_s, next, interval_s,
-                                                      seaMotionOf(renderer.scene(), renderer.waveModel())));
+    // Each camera's flow to its own frame in `next` (none without labels).
+    const auto flowsTo = [&](const SampleFrame& from, const SampleFrame* next) {
+        std::vector<std::optional<FrameFlow>> flows(from.shots.size());
+        for (std::size_t c = 0; next != nullptr && c < from.shots.size(); ++c)
+            flows[c] = opticalFlowOf(*from.shots[c].frame.labels, from.time_s, *next->shots[c].frame.labels,
+                                     interval_s, seaMotionOf(renderer.scene(), renderer.waveModel()));
+        return flows;
     };
     for (int k = 0; k < clip.frames; ++k) {
         SampleFrame f = drawFrame(renderer, sweep, k, clip.frameTime_s(sample.time_s, k));
         if (pending)
-            writeFrame(out, i, sweep, sample, renderer, *pending, sweep.labels ? flowTo(*pending, *f.sensor.labels)
-                                                                                : std::nullopt);
+            writeFrame(out, i, sweep, sample, renderer, *pending, flowsTo(*pending, sweep.labels ? &f : nullptr));
         pending = std::move(f);
     }
-    std::optional<FrameFlow> lastFlow;
+    std::vector<std::optional<FrameFlow>> lastFlows(pending->shots.size());
     if (sweep.labels) {
-        // Its labels alone: the sensor's draws of an image nobody sees would
-        // cost motion_samples frames with a shutter.
         const double next_s = clip.frameTime_s(sample.time_s, clip.frames);
-        lastFlow = flowTo(*pending, renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, sweep.size));
+        if (renderer.scene().camera.rig.empty()) {
+            // Its labels alone: the sensor's draws of an image nobody sees
+            // would cost motion_samples frames with a shutter.
+            lastFlows[0] = opticalFlowOf(*pending->shots[0].frame.labels, pending->time_s,
+                                         renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, sweep.size),
+                                         interval_s, seaMotionOf(renderer.scene(), renderer.waveModel()));
+        } else {
+            const SampleFrame next = drawFrame(renderer, sweep, clip.frames, next_s);
+            lastFlows = flowsTo(*pending, &next);
+        }
     }
-    writeFrame(out, i, sweep, sample, renderer, *pending, lastFlow);
+    writeFrame(out, i, sweep, sample, renderer, *pending, lastFlows);
 }
 
 void renderSamples(const fs::path& out, const Sweep& sweep, const Scene& base, const std::vector<int>& todo)
@@ -272,7 +304,8 @@ void renderSamples(const fs::path& out, const Sweep& sweep, const Scene& base, c
         if (sweep.clip)
             writeClip(out, i, sweep, sample, *renderer);
         else
-            writeFrame(out, i, sweep, sample, *renderer, drawFrame(*renderer, sweep, 0, sample.time_s), std::nullopt);
+            writeFrame(out, i, sweep, sample, *renderer, drawFrame(*renderer, sweep, 0, sample.time_s),
+                       std::vector<std::optional<FrameFlow>>(frameCameras(sample.scene).size()));
         progress.advance();
     }
     progress.finish();
@@ -335,11 +368,11 @@ int runDataset(const DatasetOptions& options)
             continue;
         }
         std::error_code error;
-        if (fs::exists(frameFiles(out, i, sweep, 0).back(), error))
+        if (fs::exists(frameFiles(out, i, sweep, 0, frameCameras(base).front()).back(), error))
             std::fprintf(stderr, "swell: sample %d is not whole (%s): %s\n", i, why.c_str(),
                          options.dryRun ? "it would be rendered again" : "rendering it again");
         if (!options.dryRun)
-            removeSample(out, i, sweep);
+            removeSample(out, i, sweep, frameCameras(base));
         todo.push_back(i);
     }
     std::fprintf(stderr, "swell: shard %d/%d of %s: %d samples to render, %d done already\n", shard, shards,
@@ -361,7 +394,7 @@ int runDataset(const DatasetOptions& options)
             return kExitOk;
         }
     if (sweep.labels) {
-        const std::string coco = cocoJson(out, sweep, labelClassesOf(base)).dump() + "\n";
+        const std::string coco = cocoJson(out, sweep, labelClassesOf(base), frameCameras(base)).dump() + "\n";
         const HoldStops hold;
         writeFileAtomically(out / "coco.json", coco);
     }

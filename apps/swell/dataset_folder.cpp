@@ -1,6 +1,7 @@
 #include "dataset_folder.h"
 
 #include "flow_files.h"
+#include "label_rig.h"
 
 #include "dataset_coco.h"
 
@@ -112,9 +113,10 @@ fs::path framePng(const fs::path& out, int index, const Sweep& sweep, int frame)
     return out / "samples" / fmt::format("{:06d}_{:05d}.png", index, frame);
 }
 
-std::vector<fs::path> frameFiles(const fs::path& out, int index, const Sweep& sweep, int frame)
+std::vector<fs::path> frameFiles(const fs::path& out, int index, const Sweep& sweep, int frame,
+                                 const std::string& camera)
 {
-    const fs::path png = framePng(out, index, sweep, frame);
+    const fs::path png = rigCameraPath(framePng(out, index, sweep, frame), camera);
     std::vector<fs::path> files = labelFilePaths(png); // .range.npy ... .labels.png, .amodal.npy, .json
     if (!sweep.labels)
         files = {files.back()};
@@ -212,9 +214,10 @@ void prepareOutputFolder(const fs::path& out, const Sweep& sweep, const Scene& b
 namespace {
 
 // Why frame `frame` of sample `index` is not done ("" when it is).
-std::string frameNotDone(const fs::path& out, int index, const Sweep& sweep, const SweepSample& sample, int frame)
+std::string frameNotDone(const fs::path& out, int index, const Sweep& sweep, const SweepSample& sample, int frame,
+                         const std::string& camera)
 {
-    const std::vector<fs::path> files = frameFiles(out, index, sweep, frame);
+    const std::vector<fs::path> files = frameFiles(out, index, sweep, frame, camera);
     const fs::path& jsonPath = files.back();
     std::error_code error;
     for (const fs::path& f : files)
@@ -276,22 +279,25 @@ std::string frameNotDone(const fs::path& out, int index, const Sweep& sweep, con
 std::string sampleNotDone(const fs::path& out, int index, const Sweep& sweep, const SweepSample& sample)
 {
     for (int frame = 0; frame < framesOf(sweep); ++frame)
-        if (std::string why = frameNotDone(out, index, sweep, sample, frame); !why.empty())
-            return why;
+        for (const std::string& camera : frameCameras(sample.scene))
+            if (std::string why = frameNotDone(out, index, sweep, sample, frame, camera); !why.empty())
+                return why;
     return {};
 }
 
-void removeSample(const fs::path& out, int index, const Sweep& sweep)
+void removeSample(const fs::path& out, int index, const Sweep& sweep, const std::vector<std::string>& cameras)
 {
     std::error_code error;
     // The JSONs first: from then on the sample is not done, whatever is left.
     Sweep everything = sweep;
     everything.labels = true;
     for (int frame = 0; frame < framesOf(sweep); ++frame)
-        fs::remove(frameFiles(out, index, everything, frame).back(), error);
+        for (const std::string& camera : cameras)
+            fs::remove(frameFiles(out, index, everything, frame, camera).back(), error);
     for (int frame = 0; frame < framesOf(sweep); ++frame)
-        for (const fs::path& f : frameFiles(out, index, everything, frame))
-            fs::remove(f, error);
+        for (const std::string& camera : cameras)
+            for (const fs::path& f : frameFiles(out, index, everything, frame, camera))
+                fs::remove(f, error);
     // The temporary files of its writes (swell/dataset/atomic_file.h:
     // ".NAME.*.tmp"; a clip's frames ".NNNNNN_FFFFF.*.tmp").
     const std::string still = fmt::format(".{:06d}.", index), clip = fmt::format(".{:06d}_", index);

@@ -25,8 +25,10 @@ std::filesystem::path framePng(const std::filesystem::path& out, int index, cons
 // Every file of one frame, the JSON last: the PNG, the label files and, for
 // a clip's frame, its flow (flow_files.h); the PNG and the JSON alone when
 // the sweep writes no labels.
+// With a rig, camera names the rig camera whose files they are
+// (NNNNNN.CAM.png, ...: rigCameraPath()).
 std::vector<std::filesystem::path> frameFiles(const std::filesystem::path& out, int index, const Sweep& sweep,
-                                              int frame);
+                                              int frame, const std::string& camera = "");
 
 // The manifest's content for this sweep and base scene.
 Json manifestJson(const Sweep& sweep, const Scene& base);
@@ -44,13 +46,15 @@ void prepareOutputFolder(const std::filesystem::path& out, const Sweep& sweep, c
 // Why sample `index` is not done ("" when it is): a file of one of its
 // frames missing, cut short or not parsing, or a JSON that is another
 // sample's (its index, frame, size, time or varied values not those
-// `sample` has).
+// `sample` has); each camera's files, for a rig (frameCameras of its scene).
 std::string sampleNotDone(const std::filesystem::path& out, int index, const Sweep& sweep, const SweepSample& sample);
 
 // Removes what a run that stopped left of sample `index`: its frames'
 // files, the JSONs first (so that it never looks done), and its temporary
 // files.
-void removeSample(const std::filesystem::path& out, int index, const Sweep& sweep);
+// `cameras`: frameCameras() of the sweep's scene.
+void removeSample(const std::filesystem::path& out, int index, const Sweep& sweep,
+                  const std::vector<std::string>& cameras);
 
 // Removes the temporary files of the manifest and COCO file whose writer
 // (the process named in their names, swell/dataset/atomic_file.h) is gone.

@@ -33,14 +33,6 @@ fs::path besides(const fs::path& colour, const std::string& suffix)
     return colour.parent_path() / fmt::format("{}{}", colour.stem().string(), suffix);
 }
 
-Json matrixJson(const glm::dmat4& m)
-{
-    Json rows = Json::array();
-    for (int r = 0; r < 4; ++r)
-        rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
-    return rows;
-}
-
 // A colour per class, and objects tinted by instance so that two boats differ.
 std::array<std::uint8_t, 3> previewColour(std::uint16_t semantic, std::uint16_t instance)
 {
@@ -99,6 +91,21 @@ std::string npyBytes(const void* data, std::size_t bytes, const std::string& des
     out += header;
     out.append(static_cast<const char*>(data), bytes);
     return out;
+}
+
+Json matrixJson(const glm::dmat4& m)
+{
+    Json rows = Json::array();
+    for (int r = 0; r < 4; ++r)
+        rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
+    return rows;
+}
+
+fs::path rigCameraPath(const fs::path& colour, const std::string& camera)
+{
+    if (camera.empty())
+        return colour;
+    return colour.parent_path() / fmt::format("{}.{}{}", colour.stem().string(), camera, colour.extension().string());
 }
 
 std::vector<fs::path> labelFilePaths(const fs::path& colour)

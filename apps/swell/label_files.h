@@ -25,10 +25,18 @@
 
 namespace swell::app {
 
+using Json = nlohmann::ordered_json;
+
+// A 4x4 matrix as JSON rows.
+Json matrixJson(const glm::dmat4& m);
+
+// A rig camera's colour image beside the frame's: NAME.png -> NAME.CAM.png
+// (its labels then NAME.CAM.range.npy, ...); `colour` itself for "" (no rig).
+std::filesystem::path rigCameraPath(const std::filesystem::path& colour, const std::string& camera);
+
 // The files written for the colour image `colour`, in the order above.
 std::vector<std::filesystem::path> labelFilePaths(const std::filesystem::path& colour);
 
-using Json = nlohmann::ordered_json;
 
 // Writes them, the JSON last. `significantHeight_m`: the significant wave
 // height drawn, m.

@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "flow_files.h"
 #include "label_files.h"
+#include "label_rig.h"
 #include "progress.h"
 #include "scene_loading.h"
 
@@ -115,11 +116,15 @@ void createOutputFolder(const fs::path& output)
                                                    output.string(), error.message()));
 }
 
-// A labelled frame waiting for the next frame's labels, which its flow needs.
+// A labelled frame of one camera waiting for the next frame's labels, which
+// its flow needs, with the platform's state at its time.
 struct PendingLabels {
     FrameLabels labels;
     fs::path colour;
     double time_s = 0.0;
+    std::string camera; // its rig camera's name; "" without a rig
+    PlatformMotion platform;
+    Camera platformCamera;
 };
 
 // Writes a frame's labels with its flow to `next` (drawn interval_s later):
@@ -129,12 +134,29 @@ void writeLabelsWithFlow(const PendingLabels& frame, const FrameLabels& next, do
 {
     const FrameFlow flow = opticalFlowOf(frame.labels, frame.time_s, next, interval_s,
                                          seaMotionOf(renderer.scene(), renderer.waveModel()));
-    writeLabelArrays(frame.labels, frame.colour, renderer.scene().labels.worldFrame);
+    const Scene& scene = renderer.scene();
+    writeLabelArrays(frame.labels, frame.colour, scene.labels.worldFrame);
     writeFlowFiles(flow, frame.colour);
-    Json json = frameJson(frame.labels, renderer.scene(), frame.time_s,
-                          4.0 * renderer.waveModel().heightDeviation_m(), frame.colour);
+    Json json = frameJson(frame.labels, scene, frame.time_s, 4.0 * renderer.waveModel().heightDeviation_m(),
+                          frame.colour);
     json["flow"] = flowJson(flow, frame.time_s);
+    json["platform"] = platformJson(frame.platform, frame.platformCamera, scene.labels.worldFrame);
+    if (!frame.camera.empty())
+        json["rig"] = rigJson(frame.camera, frame.labels.camera, frame.platform, frameCameras(scene));
     writeFrameJson(json, frame.colour);
+}
+
+// Every camera's frame at time_s: the rig's, drawn from one simulated
+// state, or the scene's one camera.
+std::vector<RigFrame> cameraFrames(Renderer& renderer, double time_s, glm::ivec2 size, bool labels)
+{
+    if (!renderer.scene().camera.rig.empty())
+        return renderRigFrames(renderer, time_s, size, labels);
+    SensorFrame frame = renderSensorFrame(
+        renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, time_s, size, labels);
+    std::vector<RigFrame> frames;
+    frames.push_back({"", frame.camera, std::move(frame)});
+    return frames;
 }
 
 } // namespace
@@ -156,12 +178,17 @@ int runRender(const RenderOptions& options)
                                        "(apt-get install ffmpeg), or write a PNG sequence instead");
     Scene scene = loadSceneOrDefault(options.scenePath);
     options.outputSettings.applyTo(scene);
+    if (video && !scene.camera.rig.empty())
+        throw InputError({"--output"}, "a rig's cameras are written as PNG frames, one per camera: give a .png output");
     if (const std::string problem = historyProblem(scene, options.time_s); !problem.empty())
         throw InputError({"--time"}, problem);
     // A long wait before the first frame says what it is spent on.
     if (const std::string note = historyNote(scene, options.time_s); !note.empty())
         std::fprintf(stderr, "swell: %s\n", note.c_str());
     checkLens(scene, {options.width, options.height}, scene.camera.fovY_deg, options.scenePath);
+    for (const RigCamera& rig : scene.camera.rig)
+        if (rig.fovY_deg > 0.0)
+            checkLens(scene, {options.width, options.height}, rig.fovY_deg, options.scenePath);
     // Everything checked: only now is anything made on disk.
     createOutputFolder(output);
     gl::HeadlessContext context(true);
@@ -179,35 +206,47 @@ int runRender(const RenderOptions& options)
     // A frame's flow goes to the next frame, one frame interval on (a still's
     // and the last frame's: to a frame of labels drawn for it alone).
     const double interval_s = 1.0 / options.fps;
-    std::optional<PendingLabels> pending;
+    std::vector<PendingLabels> pending;
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
         // Through the camera's lens and sensor (swell/dataset/sensor.h), the
         // camera where the scene puts it at each time the sensor draws.
-        SensorFrame sensor = renderSensorFrame(
-            renderer, [&renderer](double s) { return renderer.sceneCameraAt(s); }, t, size, options.labels);
+        std::vector<RigFrame> shots = cameraFrames(renderer, t, size, options.labels);
         const fs::path frame = options.duration_s ? sequencePath(output, i) : output;
         // The flow asks the waves at the last frame's time and this one's
         // before the bodies' thread asks them at the next.
-        if (sensor.labels) {
-            if (pending)
-                writeLabelsWithFlow(*pending, *sensor.labels, interval_s, renderer);
-            pending = PendingLabels{std::move(*sensor.labels), frame, t};
+        if (options.labels) {
+            const PlatformMotion platform = renderer.platformAt(t);
+            const Camera platformCamera = renderer.sceneCameraAt(t);
+            for (std::size_t c = 0; c < pending.size(); ++c)
+                writeLabelsWithFlow(pending[c], *shots[c].frame.labels, interval_s, renderer);
+            pending.clear();
+            for (RigFrame& shot : shots)
+                pending.push_back(PendingLabels{std::move(*shot.frame.labels), rigCameraPath(frame, shot.name), t,
+                                                shot.name, platform, platformCamera});
         }
         // The bodies step towards the next frame (or the last frame's labels
         // for its flow) while this one is written.
         if (i + 1 < frames || options.labels)
             renderer.anticipate(firstDrawTime_s(scene.camera, options.time_s + double(i + 1) / options.fps));
-        if (video)
-            videoWriter->write(sensor.image);
-        else
-            writePngAtomically(sensor.image, frame);
+        for (const RigFrame& shot : shots) {
+            if (video)
+                videoWriter->write(shot.frame.image);
+            else
+                writePngAtomically(shot.frame.image, rigCameraPath(frame, shot.name));
+        }
         progress.advance();
     }
-    if (pending) {
+    if (!pending.empty()) {
         const double next_s = options.time_s + double(frames) / options.fps;
-        const FrameLabels next = renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, size);
-        writeLabelsWithFlow(*pending, next, interval_s, renderer);
+        if (scene.camera.rig.empty()) {
+            const FrameLabels next = renderSensorLabels(renderer, renderer.sceneCameraAt(next_s), next_s, size);
+            writeLabelsWithFlow(pending.front(), next, interval_s, renderer);
+        } else {
+            const std::vector<RigFrame> next = renderRigFrames(renderer, next_s, size, true);
+            for (std::size_t c = 0; c < pending.size(); ++c)
+                writeLabelsWithFlow(pending[c], *next[c].frame.labels, interval_s, renderer);
+        }
     }
     if (videoWriter)
         videoWriter->finish();

@@ -172,6 +172,21 @@ public:
         glm::dvec3 angular_rad_per_s{0.0};
     };
     Velocity velocityAt(double time_s) const;
+    // How fast the state's velocities change over the step that brackets
+    // time_s (once poseAt(time_s) has stepped there), world frame: the
+    // centre of mass's acceleration, m/s^2, and the angular acceleration,
+    // rad/s^2, the differences of the two states' velocities over the step.
+    // A semi-implicit Euler step changes the velocities by exactly the
+    // forces' acceleration times the step, so these are what moved the body
+    // (the pose is interpolated within the step with the step's end
+    // velocities); with centerOfMass_m, the centre of mass where poseAt()
+    // puts it at time_s. All 0 before the first step.
+    struct Acceleration {
+        glm::dvec3 centerOfMass_m{0.0};
+        glm::dvec3 centerOfMass_m_per_s2{0.0};
+        glm::dvec3 angular_rad_per_s2{0.0};
+    };
+    Acceleration accelerationAt(double time_s) const;
     // The water the steps float the body on at world x, z near it (within
     // its reach of the centre of mass), at the last step: its height, m, and
     // how fast it rises there, m/s (the samples' interpolation in time the

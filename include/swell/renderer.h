@@ -19,6 +19,7 @@
 
 #include "swell/camera.h"
 #include "swell/dataset/labels.h"
+#include "swell/dataset/platform.h"
 #include "swell/drawn_surface.h"
 #include "swell/gl/shader_sources.h"
 #include "swell/gpu/limits.h"
@@ -120,6 +121,12 @@ public:
     // transform at time_s applied (mountedCamera): a floating body's heave,
     // roll and pitch, stepped to time_s as advanceTo() steps it.
     Camera sceneCameraAt(double time_s);
+    // The platform that camera stands for (swell/dataset/platform.h), and how
+    // it moves at time_s: on a body, the body's simulated state carried to
+    // the camera's eye (its velocities, and their change over the body's
+    // step for the acceleration); on a path, the path's derivatives; fixed,
+    // at rest. Steps the bodies as sceneCameraAt() does.
+    PlatformMotion platformAt(double time_s);
     // render()'s own view, drawn as DrawOptions::renderScale and
     // DrawOptions::temporal draw one of draw()'s (swell/view.h), with the
     // scene's antialiasing where it is not resolved over time. Scale:
@@ -189,7 +196,11 @@ public:
     // render scale. A zero-sized frame draws nothing.
     void render(const Camera& camera, double time_s, glm::ivec2 size, unsigned framebuffer = 0);
     // Draws one frame offscreen and reads it back (top row first).
-    Image renderImage(const Camera& camera, double time_s, glm::ivec2 size);
+    // `simulatedAround_m`: where advanceTo() centres the simulation (the
+    // camera's eye when empty); a rig's cameras give their platform's, so
+    // that each is drawn from the one state simulated for the time.
+    Image renderImage(const Camera& camera, double time_s, glm::ivec2 size,
+                      std::optional<glm::dvec3> simulatedAround_m = std::nullopt);
 
     // The ground truth of the frame render() draws for this camera at the
     // simulated time (swell/dataset/labels.h, docs/LABELS.md): per pixel range,

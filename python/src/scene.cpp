@@ -288,15 +288,15 @@ void bindScene(py::module_& m)
              "Every key this scene has a value for, list items spelt out ('objects[0].scale').")
         .def("list_size", [](const PyScene& s, const std::string& list) {
                  for (ParameterList l : {ParameterList::Waves, ParameterList::Objects, ParameterList::CameraPath,
-                                         ParameterList::SeabedBeaches, ParameterList::SeabedShelves,
+                                         ParameterList::CameraRig, ParameterList::SeabedBeaches, ParameterList::SeabedShelves,
                                          ParameterList::SeabedBreakwaters})
                      if (listKey(l) == list)
                          return listSize(s.scene, l);
                  throw py::key_error(list + ": not a list; the lists are waves.list, objects, camera.path, "
-                                            "seabed.beaches, seabed.shelves, seabed.breakwaters");
+                                            "camera.rig, seabed.beaches, seabed.shelves, seabed.breakwaters");
              },
              py::arg("list"),
-             "How many items the list 'waves.list', 'objects', 'camera.path' or a seabed's 'seabed.beaches', "
+             "How many items the list 'waves.list', 'objects', 'camera.path', 'camera.rig' or a seabed's 'seabed.beaches', "
              "'seabed.shelves', 'seabed.breakwaters' holds.")
         .def("add_object",
              [](PyScene& s, const std::string& path) {

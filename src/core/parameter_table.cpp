@@ -522,6 +522,23 @@ std::vector<Parameter> buildTable()
            {.key = "camera.path.roll_deg", .list = L::CameraPath, .unit = "deg", .min = -180.0, .max = 180.0,
             .sliderMin = -180.0, .sliderMax = 180.0,
             .description = "about the view direction: + banks right (the horizon turns counter-clockwise)"}),
+        // [[camera.rig]] (its name is a string: scene_file.h reads it)
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.rig[i].position_m; },
+           {.key = "camera.rig.position_m", .kind = K::Vector3, .list = L::CameraRig, .unit = "m", .min = -1.0e3,
+            .max = 1.0e3, .sliderMin = -5.0, .sliderMax = 5.0,
+            .description = "where the rig camera stands in the platform's axes (the [camera]'s: x right, y up, z back) [x, y, z]"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.rig[i].yaw_deg; },
+           {.key = "camera.rig.yaw_deg", .list = L::CameraRig, .unit = "deg", .min = -180.0, .max = 180.0,
+            .sliderMin = -180.0, .sliderMax = 180.0, .description = "heading from the platform's, towards its right"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.rig[i].pitch_deg; },
+           {.key = "camera.rig.pitch_deg", .list = L::CameraRig, .unit = "deg", .min = -89.0, .max = 89.0,
+            .sliderMin = -89.0, .sliderMax = 89.0, .description = "up (+) or down (-) from the platform's"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.rig[i].roll_deg; },
+           {.key = "camera.rig.roll_deg", .list = L::CameraRig, .unit = "deg", .min = -180.0, .max = 180.0,
+            .sliderMin = -180.0, .sliderMax = 180.0, .description = "about its view direction: + banks right"}),
+        at([](auto& s, std::size_t i) -> auto& { return s.camera.rig[i].fovY_deg; },
+           {.key = "camera.rig.fov_y_deg", .list = L::CameraRig, .unit = "deg", .min = 0.0, .max = 150.0,
+            .sliderMin = 0.0, .sliderMax = 150.0, .description = "vertical field of view; 0: the [camera]'s"}),
         // [labels]
         at([](auto& s, std::size_t) -> auto& { return s.labels.worldFrame; },
            {.key = "labels.world_frame", .kind = K::Choice, .min = 0.0, .max = kLabelWorldFrames.size() - 1.0,
@@ -561,6 +578,7 @@ std::vector<Parameter> buildTable()
     prototype.waves.listed.emplace_back();
     prototype.objects.emplace_back();
     prototype.camera.path.emplace_back();
+    prototype.camera.rig.emplace_back();
     prototype.seabed.beaches.emplace_back();
     prototype.seabed.shelves.emplace_back();
     prototype.seabed.breakwaters.emplace_back();

@@ -109,6 +109,7 @@ std::string_view listKey(ParameterList list)
     case L::Waves: return "waves.list";
     case L::Objects: return "objects";
     case L::CameraPath: return "camera.path";
+    case L::CameraRig: return "camera.rig";
     case L::SeabedBeaches: return "seabed.beaches";
     case L::SeabedShelves: return "seabed.shelves";
     case L::SeabedBreakwaters: return "seabed.breakwaters";
@@ -142,6 +143,7 @@ std::size_t listSize(const Scene& scene, ParameterList list)
     case L::Waves: return scene.waves.listed.size();
     case L::Objects: return scene.objects.size();
     case L::CameraPath: return scene.camera.path.size();
+    case L::CameraRig: return scene.camera.rig.size();
     case L::SeabedBeaches: return scene.seabed.beaches.size();
     case L::SeabedShelves: return scene.seabed.shelves.size();
     case L::SeabedBreakwaters: return scene.seabed.breakwaters.size();

@@ -437,6 +437,21 @@ glm::dmat4 FloatingBody::poseAt(double time_s)
            glm::translate(glm::dmat4(1.0), -centerOfMassInShape_m_);
 }
 
+FloatingBody::Acceleration FloatingBody::accelerationAt(double time_s) const
+{
+    const double t = std::isfinite(time_s) && time_s > 0.0 ? time_s : 0.0;
+    const double f = std::clamp(t * kBodyStepsPerSecond - double(next_.step - 1), 0.0, 1.0);
+    Acceleration a;
+    a.centerOfMass_m = glm::mix(previous_.centerOfMass_m, next_.centerOfMass_m, f);
+    if (next_.step <= previous_.step)
+        return a;
+    const double span_s = double(next_.step - previous_.step) * kBodyStep_s;
+    // Carried at a constant velocity across the water: only the heave changes.
+    a.centerOfMass_m_per_s2.y = (next_.heaveVelocity_m_per_s - previous_.heaveVelocity_m_per_s) / span_s;
+    a.angular_rad_per_s2 = (next_.angularVelocity_rad_per_s - previous_.angularVelocity_rad_per_s) / span_s;
+    return a;
+}
+
 FloatingBody::Velocity FloatingBody::velocityAt(double time_s) const
 {
     const double t = std::isfinite(time_s) && time_s > 0.0 ? time_s : 0.0;

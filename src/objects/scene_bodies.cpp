@@ -397,6 +397,17 @@ std::optional<FloatingBody::Velocity> SceneBodies::velocityAt(std::size_t i, dou
     return bodies_[i]->velocityAt(clock_s(time_s));
 }
 
+std::optional<FloatingBody::Acceleration> SceneBodies::accelerationAt(std::size_t i, double time_s) const
+{
+    settle();
+    if (i >= bodies_.size() || !bodies_[i])
+        return std::nullopt;
+    FloatingBody::Acceleration a = bodies_[i]->accelerationAt(clock_s(std::max(time_s, start_s_)));
+    if (time_s < start_s_)
+        a.centerOfMass_m_per_s2 = a.angular_rad_per_s2 = glm::dvec3(0.0);
+    return a;
+}
+
 std::int64_t SceneBodies::stepsTaken() const
 {
     settle();

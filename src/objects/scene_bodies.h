@@ -88,6 +88,9 @@ public:
     // stepped it there (FloatingBody::velocityAt); zero before the bodies'
     // start, where they wait; nothing when it is not a rigid body.
     std::optional<FloatingBody::Velocity> velocityAt(std::size_t i, double time_s) const;
+    // Its accelerations at time_s, sea frame (FloatingBody::accelerationAt),
+    // on the same terms; zero before the bodies' start.
+    std::optional<FloatingBody::Acceleration> accelerationAt(std::size_t i, double time_s) const;
     // Integration steps taken by all bodies so far.
     std::int64_t stepsTaken() const;
 

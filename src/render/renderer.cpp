@@ -178,14 +178,15 @@ void Renderer::render(const Camera& camera, double time_s, glm::ivec2 size, unsi
     impl_->render(camera, time_s, size, framebuffer);
 }
 
-Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size)
+Image Renderer::renderImage(const Camera& camera, double time_s, glm::ivec2 size,
+                            std::optional<glm::dvec3> simulatedAround_m)
 {
     Image image;
     if (size.x <= 0 || size.y <= 0)
         return image;
     RenderTarget& output = impl_->output;
     output.resize(size, GL_RGBA8);
-    impl_->render(camera, time_s, size, output.framebuffer());
+    impl_->render(camera, time_s, size, output.framebuffer(), simulatedAround_m);
     image.width = size.x;
     image.height = size.y;
     image.rgba.resize(size_t(size.x) * size_t(size.y) * 4);
@@ -209,6 +210,8 @@ FrameLabels Renderer::renderLabels(const Camera& camera, glm::ivec2 size)
 }
 
 Camera Renderer::sceneCameraAt(double time_s) { return impl_->simulation.sceneCameraAt(impl_->scene, time_s); }
+
+PlatformMotion Renderer::platformAt(double time_s) { return impl_->simulation.platformAt(impl_->scene, time_s); }
 std::vector<glm::dmat4> Renderer::objectTransforms() const { return impl_->simulation.objectTransforms(); }
 
 DrawnSurface Renderer::drawnSurface(const Camera& camera, double time_s) const

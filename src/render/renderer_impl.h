@@ -121,7 +121,8 @@ struct Renderer::Impl {
     // render()'s frame, and draw()'s view, as the passes are asked for them.
     ViewRequest renderRequest(const Camera& camera, glm::ivec2 outputSize, GLuint framebuffer);
     ViewRequest drawRequest(const View& view, GLuint framebuffer, const DrawOptions& options, ViewState& state);
-    void render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer);
+    void render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer,
+                std::optional<glm::dvec3> simulatedAround_m = std::nullopt);
 };
 
 } // namespace swell

@@ -227,8 +227,13 @@ namespace {
 
 // The frame's image (when `image`) and its labels (when `labels`).
 SensorFrame sensorFrame(Renderer& renderer, const CameraAt& cameraAt, double time_s, glm::ivec2 size, bool image,
-                        bool labels)
+                        bool labels, const CameraAt& around = {})
 {
+    // Where the simulation is advanced for a draw at time t: around the
+    // platform of a rig (its eye at t), else around the drawn camera.
+    auto aroundAt = [&around](double t) {
+        return around ? std::optional<glm::dvec3>(around(t).position_m) : std::nullopt;
+    };
     const CameraSettings& settings = renderer.scene().camera;
     const LensDistortion lens = lensOf(settings);
     const SensorTiming timing = image ? sensorTimingOf(settings, time_s, size.y) : SensorTiming{{time_s}, {}};
@@ -245,7 +250,9 @@ SensorFrame sensorFrame(Renderer& renderer, const CameraAt& cameraAt, double tim
     std::function<Image(double)> drawAt;
     std::function<FrameLabels()> labelsNow;
     if (lens.none()) {
-        drawAt = [&](double t) { return renderer.renderImage(t == time_s ? cameraNow() : cameraAt(t), t, size); };
+        drawAt = [&](double t) {
+            return renderer.renderImage(t == time_s ? cameraNow() : cameraAt(t), t, size, aroundAt(t));
+        };
         labelsNow = [&] { return renderer.renderLabels(frame.camera, size); };
     } else {
         // The rule scenes and sweeps are checked by (the field is the
@@ -262,7 +269,7 @@ SensorFrame sensorFrame(Renderer& renderer, const CameraAt& cameraAt, double tim
             const Camera at = t == time_s ? cameraNow() : cameraAt(t);
             const CameraCalibration c = calibrated(at);
             const auto [pinhole, wide] = pinholeOf(at, c);
-            const Image source = renderer.renderImage(pinhole, t, wide);
+            const Image source = renderer.renderImage(pinhole, t, wide, aroundAt(t));
             Image out;
             out.width = size.x;
             out.height = size.y;
@@ -282,7 +289,7 @@ SensorFrame sensorFrame(Renderer& renderer, const CameraAt& cameraAt, double tim
     // The labels' instant among the draws (at its place in time): the
     // simulation advanced there for the camera of that time.
     auto labelTheInstant = [&] {
-        renderer.advanceTo(time_s, cameraNow().position_m);
+        renderer.advanceTo(time_s, aroundAt(time_s).value_or(cameraNow().position_m));
         frame.labels = labelsNow();
     };
     if (!image) {
@@ -317,9 +324,22 @@ SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera, double t
     return sensorFrame(renderer, [&camera](double) { return camera; }, time_s, size, true, labels);
 }
 
-SensorFrame renderSensorFrame(Renderer& renderer, const CameraAt& cameraAt, double time_s, glm::ivec2 size, bool labels)
+SensorFrame renderSensorFrame(Renderer& renderer, const CameraAt& cameraAt, double time_s, glm::ivec2 size, bool labels,
+                              const CameraAt& simulatedAround)
 {
-    return sensorFrame(renderer, cameraAt, time_s, size, true, labels);
+    return sensorFrame(renderer, cameraAt, time_s, size, true, labels, simulatedAround);
+}
+
+std::vector<RigFrame> renderRigFrames(Renderer& renderer, double time_s, glm::ivec2 size, bool labels)
+{
+    const CameraAt platformAt = [&renderer](double t) { return renderer.sceneCameraAt(t); };
+    std::vector<RigFrame> frames;
+    for (const RigCamera& rig : renderer.scene().camera.rig) {
+        const CameraAt cameraAt = [&platformAt, &rig](double t) { return rigCameraOf(platformAt(t), rig); };
+        SensorFrame frame = sensorFrame(renderer, cameraAt, time_s, size, true, labels, platformAt);
+        frames.push_back({rig.name, frame.camera, std::move(frame)});
+    }
+    return frames;
 }
 
 FrameLabels renderSensorLabels(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size)

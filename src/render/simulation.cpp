@@ -318,4 +318,36 @@ Camera Simulation::sceneCameraAt(const Scene& scene, double time_s)
     return mountedCamera(camera, sea_.worldFromSea() * pose);
 }
 
+PlatformMotion Simulation::platformAt(const Scene& scene, double time_s)
+{
+    const int mount = scene.camera.mountObject;
+    if (mount < 0 || std::size_t(mount) >= seaScene_.objects.size())
+        return unmountedCameraMotion(scene.camera, time_s);
+    // Mounted: the camera's pose on its object (its steps taken here), and
+    // the body's motion carried to the camera's eye as a rigid body's point
+    // moves: v = v_c + w x r, a = a_c + alpha x r + w x (w x r), r from the
+    // centre of mass. A fixed object stands still.
+    const Camera camera = sceneCameraAt(scene, time_s);
+    PlatformMotion m;
+    m.time_s = time_s;
+    m.position_m = camera.position_m;
+    m.orientation = platformOrientationOf(camera);
+    const std::optional<FloatingBody::Velocity> velocity = bodies_.velocityAt(std::size_t(mount), time_s);
+    const std::optional<FloatingBody::Acceleration> acceleration =
+        bodies_.accelerationAt(std::size_t(mount), time_s);
+    if (!velocity || !acceleration)
+        return m;
+    // The sea frame's axes are the world's (worldFromSea is a shift).
+    const glm::dvec3 r = sea_.toSea(camera.position_m) - acceleration->centerOfMass_m;
+    const glm::dvec3 w = velocity->angular_rad_per_s;
+    // The centre of mass's velocity, from its model origin's (where the pose puts the origin).
+    const glm::dvec3 origin = glm::dvec3(bodies_.poseAt(std::size_t(mount), time_s).value()[3]);
+    const glm::dvec3 centre = velocity->origin_m_per_s - glm::cross(w, origin - acceleration->centerOfMass_m);
+    m.velocity_m_per_s = centre + glm::cross(w, r);
+    m.angularVelocity_rad_per_s = w;
+    m.acceleration_m_per_s2 = acceleration->centerOfMass_m_per_s2 + glm::cross(acceleration->angular_rad_per_s2, r) +
+                              glm::cross(w, glm::cross(w, r));
+    return m;
+}
+
 } // namespace swell::detail

@@ -15,6 +15,7 @@
 #include "render/telemetry.h"
 #include "render/wake_texture.h"
 #include "swell/camera.h"
+#include "swell/dataset/platform.h"
 #include "swell/drawn_surface.h"
 #include "swell/scene/scene.h"
 #include "swell/sea_frame.h"
@@ -124,6 +125,8 @@ public:
     std::vector<std::optional<FloatingBody::Velocity>> objectVelocities() const;
     // The scene's camera at time_s, on its mount (Renderer::sceneCameraAt).
     Camera sceneCameraAt(const Scene& scene, double time_s);
+    // The platform that camera stands for, and how it moves (Renderer::platformAt).
+    PlatformMotion platformAt(const Scene& scene, double time_s);
 
     // The grid shape the drawn surface is built on (the water grid's).
     void setGridShape(const GridShape& shape) { gridShape_ = shape; }

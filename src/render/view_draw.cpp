@@ -88,12 +88,13 @@ ViewRequest Renderer::Impl::drawRequest(const View& view, GLuint framebuffer, co
     return request;
 }
 
-void Renderer::Impl::render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer)
+void Renderer::Impl::render(const Camera& camera, double time_s, glm::ivec2 outputSize, GLuint framebuffer,
+                            std::optional<glm::dvec3> simulatedAround_m)
 {
     telemetry.counters = {};
     if (outputSize.x <= 0 || outputSize.y <= 0)
         return;
-    advanceTo(time_s, camera.position_m);
+    advanceTo(time_s, simulatedAround_m.value_or(camera.position_m));
     drawRestoring(renderRequest(camera, outputSize, framebuffer), views.own());
 }
 

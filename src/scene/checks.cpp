@@ -88,6 +88,37 @@ void checkClass(const SceneObject& o, std::size_t i, const Places& places)
                          key, o.className, fmt::join(fixed, ", ")));
 }
 
+// The rig's cameras (docs/SCENE.md, [[camera.rig]]): each named, its name
+// usable in its files' names and its own (two cameras of one name would
+// write the same files), its field of view the [camera]'s (0) or a lens's.
+void checkRig(const std::vector<RigCamera>& rig, const Places& places)
+{
+    if (rig.size() > kMaxRigCameras)
+        fail(places.first({"camera.rig", "camera"}),
+             fmt::format("camera.rig has {} cameras; at most {} are allowed", rig.size(), kMaxRigCameras));
+    for (std::size_t i = 0; i < rig.size(); ++i) {
+        const std::string item = fmt::format("camera.rig[{}]", i);
+        const std::string& name = rig[i].name;
+        const bool allowed = std::all_of(name.begin(), name.end(), [](char c) {
+            return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+        });
+        if (name.empty() || name.size() > 32 || !allowed)
+            fail(places.first({item + ".name", item, "camera.rig"}),
+                 fmt::format("{}.name = \"{}\": a rig camera's name is part of its files' names: 1 to 32 letters, "
+                             "digits, '_' or '-'",
+                             item, shortText(name)));
+        for (std::size_t j = 0; j < i; ++j)
+            if (rig[j].name == name) {
+                const std::string other = fmt::format("camera.rig[{}].name", j);
+                const std::string where = places.has(other) ? fmt::format(" (at {})", places.at(other).str()) : "";
+                fail(places.first({item + ".name", item, "camera.rig"}),
+                     fmt::format("{}.name = \"{}\": {} has that name too{}; each camera of a rig needs its own "
+                                 "name, which its files carry",
+                                 item, name, other, where));
+            }
+    }
+}
+
 // A floating object's body keys agree: it gives its mass one way, and its
 // inertia is a solid's. On an object that does not float they mean nothing
 // (docs/SCENE.md) and are left as they are, like every key a scene does not
@@ -326,6 +357,7 @@ void checkScene(const Scene& scene, const Places& places, const fs::path& base, 
         fail(places.first({"camera.far_m", "camera.near_m", "camera"}),
              fmt::format("camera.far_m ({} m) must be greater than camera.near_m ({} m)", scene.camera.far_m,
                          scene.camera.near_m));
+    checkRig(scene.camera.rig, places);
     for (std::size_t i = 1; i < scene.camera.path.size(); ++i)
         if (!(scene.camera.path[i].time_s > scene.camera.path[i - 1].time_s)) {
             std::string name = fmt::format("camera.path[{}].time_s", i);

@@ -27,7 +27,7 @@ namespace {
 // tables ([waves], [wake], ...) are not listed here: the parameter table says
 // which they are (parameterTables), so a table added there is read without a
 // second list to keep in step.
-enum class Shape { Table, TableList, Faces, ObjectPath, HullNode, ObjectClass, HeightmapPath };
+enum class Shape { Table, TableList, Faces, ObjectPath, HullNode, ObjectClass, HeightmapPath, RigName };
 
 struct StructuralKey {
     std::string_view key;
@@ -43,6 +43,8 @@ constexpr StructuralKey kStructure[] = {
     {"objects.hull_node", Shape::HullNode, ParameterList::Objects},
     {"objects.class", Shape::ObjectClass, ParameterList::Objects},
     {"camera.path", Shape::TableList, ParameterList::None},
+    {"camera.rig", Shape::TableList, ParameterList::None},
+    {"camera.rig.name", Shape::RigName, ParameterList::CameraRig},
     {"seabed.beaches", Shape::TableList, ParameterList::None},
     {"seabed.shelves", Shape::TableList, ParameterList::None},
     {"seabed.breakwaters", Shape::TableList, ParameterList::None},
@@ -50,7 +52,8 @@ constexpr StructuralKey kStructure[] = {
 };
 
 constexpr ParameterList kLists[] = {ParameterList::Waves,         ParameterList::Objects,
-                                    ParameterList::CameraPath,    ParameterList::SeabedBeaches,
+                                    ParameterList::CameraPath,    ParameterList::CameraRig,
+                                    ParameterList::SeabedBeaches,
                                     ParameterList::SeabedShelves, ParameterList::SeabedBreakwaters};
 
 // The shape of a key that is not a parameter, or nothing when it is unknown.
@@ -85,6 +88,7 @@ std::size_t listLimit(ParameterList list)
     case ParameterList::Waves: return SWELL_MAX_WAVES;
     case ParameterList::Objects: return kMaxSceneObjects;
     case ParameterList::CameraPath: return kMaxCameraKeys;
+    case ParameterList::CameraRig: return kMaxRigCameras;
     case ParameterList::SeabedBeaches:
     case ParameterList::SeabedShelves:
     case ParameterList::SeabedBreakwaters: return kMaxSeabedShapes;
@@ -232,6 +236,10 @@ private:
                 scene_.objects[item].className = readClass(*node, childShown);
                 places_.add(childShown, node->source());
                 break;
+            case Shape::RigName:
+                scene_.camera.rig[item].name = readRigName(*node, childShown);
+                places_.add(childShown, node->source());
+                break;
             case Shape::HeightmapPath:
                 scene_.seabed.heightmap.path = readPath(*node, childShown);
                 places_.add(childShown, node->source());
@@ -366,6 +374,7 @@ private:
             case ParameterList::Waves: scene_.waves.listed.emplace_back(); break;
             case ParameterList::Objects: scene_.objects.emplace_back(); break;
             case ParameterList::CameraPath: scene_.camera.path.emplace_back(); break;
+            case ParameterList::CameraRig: scene_.camera.rig.emplace_back(); break;
             case ParameterList::SeabedBeaches: scene_.seabed.beaches.emplace_back(); break;
             case ParameterList::SeabedShelves: scene_.seabed.shelves.emplace_back(); break;
             case ParameterList::SeabedBreakwaters: scene_.seabed.breakwaters.emplace_back(); break;
@@ -375,6 +384,9 @@ private:
             if (list == ParameterList::Objects && !places_.has(itemShown + ".path"))
                 fail(places_.of(element.source()),
                      fmt::format("{} needs a path: a .gltf or .glb file, or \"builtin:NAME\"", itemShown));
+            if (list == ParameterList::CameraRig && !places_.has(itemShown + ".name"))
+                fail(places_.of(element.source()),
+                     fmt::format("{} needs a name (its files are NAME.<name>.png, ...): name = \"left\"", itemShown));
         }
     }
 
@@ -408,6 +420,26 @@ private:
         if (hasControlCharacter(s->get()))
             fail(places_.of(node.source()), fmt::format("{} contains a control character", shown));
         return s->get();
+    }
+
+    // A rig camera's name: a part of its files' names (NAME.left.png), so
+    // letters, digits, '_' and '-' alone, 1 to 32 of them.
+    std::string readRigName(const toml::node& node, const std::string& shown)
+    {
+        const auto* s = node.as_string();
+        if (s == nullptr)
+            fail(places_.of(node.source()), fmt::format("{} must be a string (the camera's name), not {}", shown,
+                                                        typeName(node)));
+        const std::string& name = s->get();
+        const bool allowed = std::all_of(name.begin(), name.end(), [](char c) {
+            return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+        });
+        if (name.empty() || name.size() > 32 || !allowed)
+            fail(places_.of(node.source()),
+                 fmt::format("{} = \"{}\": a rig camera's name is part of its files' names: 1 to 32 letters, digits, "
+                             "'_' or '-'",
+                             shown, shortText(name)));
+        return name;
     }
 
     // A glTF node name: any non-empty string without control characters.

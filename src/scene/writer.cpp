@@ -146,6 +146,11 @@ std::string saveScene(const Scene& scene)
         out += "\n[[camera.path]]\n";
         writeParameters(out, scene, "camera.path", ParameterList::CameraPath, i);
     }
+    for (std::size_t i = 0; i < scene.camera.rig.size(); ++i) {
+        out += "\n[[camera.rig]]\n";
+        writeLine(out, "name", tomlString(scene.camera.rig[i].name), "its files: NAME.<name>.png, ...");
+        writeParameters(out, scene, "camera.rig", ParameterList::CameraRig, i);
+    }
     return out;
 }
 

@@ -209,10 +209,11 @@ bool belongsToOtherSource(const Parameter& p, Waves waves)
 TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::string& changedValue = {})
 {
     TomlTable root;
-    TomlTable object, wave, cameraKey, beach, shelf, breakwater;
+    TomlTable object, wave, cameraKey, rigCamera, beach, shelf, breakwater;
     object.values.emplace_back("path", "\"hull.glb\"");
     object.values.emplace_back("hull_node", "\"Hull\"");
     object.values.emplace_back("class", "\"tug\"");
+    rigCamera.values.emplace_back("name", "\"left\"");
     for (const Parameter& p : parameters()) {
         const bool sunByAngles = changed != nullptr && anglesOfTheSun(*changed);
         if (sunByAngles && p.key == "sun.direction")
@@ -227,6 +228,7 @@ TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::s
         case ParameterList::Objects: object.values.emplace_back(leafOf(p), value); break;
         case ParameterList::Waves: wave.values.emplace_back(leafOf(p), value); break;
         case ParameterList::CameraPath: cameraKey.values.emplace_back(leafOf(p), value); break;
+        case ParameterList::CameraRig: rigCamera.values.emplace_back(leafOf(p), value); break;
         case ParameterList::SeabedBeaches: beach.values.emplace_back(leafOf(p), value); break;
         case ParameterList::SeabedShelves: shelf.values.emplace_back(leafOf(p), value); break;
         case ParameterList::SeabedBreakwaters: breakwater.values.emplace_back(leafOf(p), value); break;
@@ -236,6 +238,7 @@ TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::s
         "faces", R"(["sky/px.png", "sky/nx.png", "sky/py.png", "sky/ny.png", "sky/pz.png", "sky/nz.png"])");
     root.lists["objects"].push_back(object);
     root.table("camera").lists["path"].push_back(cameraKey);
+    root.table("camera").lists["rig"].push_back(rigCamera);
     root.table("seabed").lists["beaches"].push_back(beach);
     root.table("seabed").lists["shelves"].push_back(shelf);
     root.table("seabed").lists["breakwaters"].push_back(breakwater);
@@ -282,6 +285,8 @@ TEST(SceneEveryKey, EveryDocumentedKeyLoadsInEachForm)
             EXPECT_EQ(scene.objects[0].className, "tug");
             EXPECT_EQ(scene.sky.cubemapFaces.size(), 6u);
             ASSERT_EQ(scene.camera.path.size(), 1u);
+            ASSERT_EQ(scene.camera.rig.size(), 1u);
+            EXPECT_EQ(scene.camera.rig[0].name, "left");
             EXPECT_EQ(scene.sea.wind.has_value(), waves == Waves::Wind);
             EXPECT_EQ(scene.sun.place.has_value(), waves == Waves::Listed);
             for (const Parameter& p : parameters()) {

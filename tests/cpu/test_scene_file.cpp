@@ -182,7 +182,13 @@ TEST(SceneFile, EverythingRoundTrips)
     s.reflection = {ReflectionMode::FixedDistance, 1e-3, 0.1, 0.0};
     s.objects.push_back({"models/boat.glb", {1.5, -2.0, 1e5}, -3600.0, 1e4, true});
     s.objects.push_back({"builtin:rock", {0.0, 0.0, 0.0}, 45.0, 0.001, false});
-    s.camera = {{1.0, 2.0, 3.0}, 90.0, 89.0, 150.0, 1e-4, 1e7, {}};
+    s.camera = CameraSettings{};
+    s.camera.position_m = {1.0, 2.0, 3.0};
+    s.camera.yaw_deg = 90.0;
+    s.camera.pitch_deg = 89.0;
+    s.camera.fovY_deg = 150.0;
+    s.camera.near_m = 1e-4;
+    s.camera.far_m = 1e7;
     s.camera.path.push_back({0.0, {0.0, 5.0, 0.0}, 0.0, 0.0});
     s.camera.path.push_back({0.5, {1.0, 5.0, -1.0}, 720.0, -89.0});
     s.debugView = DebugView::Wireframe;
@@ -349,6 +355,8 @@ constexpr StringKey kStringKeys[] = {
      "the model's name",
      "its class in the labels and COCO (docs/LABELS.md): \"boat\" for \"builtin:boat\", the file's name without folder "
      "or extension for a model"},
+    {"`[[camera.rig]]`", "name", "1 to 32 letters, digits, '_' or '-'; each camera's own", "required",
+     "the rig camera's name, in its files' names (NAME.left.png) and its JSON's rig block"},
 };
 
 // The parameter reference of docs/SCENE.md, written from the table.

@@ -140,6 +140,12 @@ std::vector<Malformed> malformedCases()
          "camera.path[1].time_s (2 s) must be later than camera.path[0].time_s (5 s)"},
         {"CameraPathRepeatedTime", "[[camera.path]]\ntime_s = 1.0\n[[camera.path]]\ntime_s = 1.0\n", 4, 10,
          "camera.path[1].time_s"},
+        {"RigCameraNamedTwice",
+         "[camera]\nfov_y_deg = 50.0\n[[camera.rig]]\nname = \"left\"\n[[camera.rig]]\nname = \"left\"\n", 6, 8,
+         "camera.rig[1].name = \"left\": camera.rig[0].name has that name too (at "},
+        {"RigCameraWithoutName", "[[camera.rig]]\nposition_m = [0.1, 0.0, 0.0]\n", 1, 1, "camera.rig[0] needs a name"},
+        {"RigCameraNameNotAFileName", "[[camera.rig]]\nname = \"left/eye\"\n", 2, 8,
+         "a rig camera's name is part of its files' names"},
         {"WindAndList", "[waves.wind]\nspeed_mps = 5.0\n[[waves.list]]\nwavelength_m = 10.0\n", 3, 1,
          "waves.list and waves.wind exclude each other"},
         // Sizes

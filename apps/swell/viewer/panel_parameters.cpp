@@ -153,7 +153,7 @@ void Panel::drawParameters(Session& session, Scene& edited, bool& changed)
         }
 
         for (ParameterList list : {ParameterList::Waves, ParameterList::Objects, ParameterList::CameraPath,
-                                   ParameterList::SeabedBeaches, ParameterList::SeabedShelves,
+                                   ParameterList::CameraRig, ParameterList::SeabedBeaches, ParameterList::SeabedShelves,
                                    ParameterList::SeabedBreakwaters}) {
             const std::string_view key = listKey(list);
             if (key.substr(0, key.find('.')) != section)

@@ -319,6 +319,7 @@ std::string itemLabel(ParameterList list, const Scene& scene, std::size_t i)
     }
     case ParameterList::Objects: return fmt::format("object {}: {}", i + 1, scene.objects[i].path);
     case ParameterList::CameraPath: return fmt::format("key {}: at {:.2f} s", i + 1, scene.camera.path[i].time_s);
+    case ParameterList::CameraRig: return fmt::format("rig camera {}: {}", i + 1, scene.camera.rig[i].name);
     case ParameterList::SeabedBeaches: return fmt::format("beach {}: slope {:.3g}", i + 1, scene.seabed.beaches[i].slope);
     case ParameterList::SeabedShelves: return fmt::format("shelf {}: {:.3g} m deep", i + 1, scene.seabed.shelves[i].depth_m);
     case ParameterList::SeabedBreakwaters:

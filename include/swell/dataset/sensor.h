@@ -146,13 +146,28 @@ SWELL_API SensorFrame renderSensorFrame(Renderer& renderer, const Camera& camera
 // deck). The labels are of time_s alone, seen by cameraAt(time_s): the
 // instant at the middle of the middle row's exposure (docs/LABELS.md).
 using CameraAt = std::function<Camera(double time_s)>;
+// `simulatedAround`: the camera whose eye the simulation is advanced around
+// at each draw's time (a rig's platform, so that its cameras are drawn
+// from one state); empty: the drawn camera's own.
 SWELL_API SensorFrame renderSensorFrame(Renderer& renderer, const CameraAt& cameraAt, double time_s, glm::ivec2 size,
-                                        bool labels);
+                                        bool labels, const CameraAt& simulatedAround = {});
 // The labels renderSensorFrame() gives, without drawing the image (the
 // next frame's labels a still's optical flow is measured to).
 SWELL_API FrameLabels renderSensorLabels(Renderer& renderer, const Camera& camera, double time_s, glm::ivec2 size);
 // When the first draw of the frame at time_s is (SensorTiming): a host that
 // anticipates its next frame (Renderer::anticipate) anticipates this.
 SWELL_API double firstDrawTime_s(const CameraSettings& camera, double time_s);
+
+// The frames of the scene's rig ([[camera.rig]], swell/dataset/platform.h)
+// at time_s: the simulation advanced around the platform (the scene's
+// camera, Renderer::sceneCameraAt), once for each time drawn, and every rig
+// camera drawn from that state, in the rig's order, through the scene's
+// lens and sensor.
+struct SWELL_API RigFrame {
+    std::string name;  // the rig camera's name
+    Camera camera;     // where it stands at time_s, world
+    SensorFrame frame;
+};
+SWELL_API std::vector<RigFrame> renderRigFrames(Renderer& renderer, double time_s, glm::ivec2 size, bool labels);
 
 } // namespace swell

@@ -67,6 +67,7 @@ enum class ParameterList {
     Waves,      // [[waves.list]]  -> Scene::waves.listed[item]
     Objects,    // [[objects]]     -> Scene::objects[item]
     CameraPath, // [[camera.path]] -> Scene::camera.path[item]
+    CameraRig,  // [[camera.rig]]  -> Scene::camera.rig[item]
     SeabedBeaches,     // [[seabed.beaches]]     -> Scene::seabed.beaches[item]
     SeabedShelves,     // [[seabed.shelves]]     -> Scene::seabed.shelves[item]
     SeabedBreakwaters, // [[seabed.breakwaters]] -> Scene::seabed.breakwaters[item]

@@ -272,6 +272,25 @@ struct SWELL_API CameraKey {
 // A camera lens's model (docs/SCENE.md, "The lens"; swell/dataset/sensor.h).
 enum class LensModel { BrownConrady, KannalaBrandt };
 
+// A camera of a rig (docs/LABELS.md, "Rigs and the platform"): one of
+// several cameras on one platform, the platform being what [camera] places
+// (fixed, on its path, or riding a body). Its pose is relative to the
+// platform: it stands at position_m in the platform's axes (the [camera]'s
+// own: x right, y up, z back; at yaw, pitch and roll 0 the world's) and its
+// yaw, pitch and roll turn it from them, as a mounted camera's turn it from
+// its object's. Every rig camera is drawn at the same simulated time.
+struct SWELL_API RigCamera {
+    std::string name;                 // its files' middle name (NAME.left.png); letters, digits, '_', '-'
+    glm::dvec3 position_m{0.0};       // in the platform's axes, m
+    double yaw_deg = 0.0;             // from the platform's heading, degrees
+    double pitch_deg = 0.0;           // from the platform's, degrees, -89..89
+    double roll_deg = 0.0;            // about its view direction, degrees, -180..180
+    double fovY_deg = 0.0;            // vertical field of view, degrees, up to 150; 0: the [camera]'s
+};
+
+// The most cameras a rig holds: each is a whole frame drawn and labelled.
+inline constexpr std::size_t kMaxRigCameras = 16;
+
 struct SWELL_API CameraSettings {
     glm::dvec3 position_m{0.0, 6.0, 0.0}; // world position, m
     double yaw_deg = 0.0;                  // heading, degrees from -z towards +x
@@ -310,6 +329,10 @@ struct SWELL_API CameraSettings {
     double shutter_s = 0.0;         // s, 0..1: each row's exposure; 0: an instant
     double readout_s = 0.0;         // s, 0..1: from the top row's exposure to the bottom's
     int motionSamples = 16;         // frames drawn over shutter_s + readout_s, 2..256
+    // Cameras on the platform this camera places ([[camera.rig]]); empty:
+    // the camera itself is the one sensor. With a rig, the rig's cameras
+    // are the sensors (the lens and sensor settings above are theirs too).
+    std::vector<RigCamera> rig;
 };
 
 // Where a scene file named a file the renderer reads (a model or a sky
