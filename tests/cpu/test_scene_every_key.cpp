@@ -2,6 +2,7 @@
 // a hand list) in its documented place, in each form TOML allows: [table]
 // sections, inline tables and dotted keys. A table the reader forgets (as it
 // once forgot [wake]) fails here the day a parameter is added to it.
+#include "core/fleet.h"
 #include "swell/camera.h"
 #include "swell/error.h"
 #include "swell/scene/parameters.h"
@@ -203,6 +204,14 @@ bool belongsToOtherSource(const Parameter& p, Waves waves)
     return p.key.starts_with("waves.wind.") || p.key.starts_with("waves.swell.") || p.key == "sun.direction";
 }
 
+// The keys that mean something only on one of the fleet's built-ins (docs/SCENE.md,
+// "The fleet"): set, the object is the tug.
+bool fleetKey(const Parameter& p)
+{
+    return p.key == "objects.length_m" || p.key == "objects.beam_m" || p.key == "objects.hull_color" ||
+           p.key == "objects.superstructure_color" || p.key == "objects.superstructure";
+}
+
 // Every parameter of the table at its default, plus the keys that are not
 // parameters (sky faces, an object's path, hull node and class), in one
 // tree; with `changed` written as `changedValue` instead of its default.
@@ -210,8 +219,12 @@ TomlTable everyKey(Waves waves, const Parameter* changed = nullptr, const std::s
 {
     TomlTable root;
     TomlTable object, wave, cameraKey, rigCamera, beach, shelf, breakwater;
-    object.values.emplace_back("path", "\"hull.glb\"");
-    object.values.emplace_back("hull_node", "\"Hull\"");
+    if (changed != nullptr && fleetKey(*changed)) {
+        object.values.emplace_back("path", "\"builtin:tug\""); // a built-in brings its own hull
+    } else {
+        object.values.emplace_back("path", "\"hull.glb\"");
+        object.values.emplace_back("hull_node", "\"Hull\"");
+    }
     object.values.emplace_back("class", "\"tug\"");
     rigCamera.values.emplace_back("name", "\"left\"");
     for (const Parameter& p : parameters()) {
@@ -351,7 +364,15 @@ TEST(SceneEveryKey, EachKeySetsItsOwnField)
     ASSERT_NE(model, nullptr);
     const ParameterValue spectral = std::int64_t(WaveModelKind::Spectral);
     for (const Parameter& p : parameters()) {
-        const ParameterValue value = &p == model ? spectral : otherValue(p);
+        ParameterValue value = &p == model ? spectral : otherValue(p);
+        // A stretch of the tug's design, within the fleet's bounds.
+        if (p.key == "objects.length_m")
+            value = 1.25 * detail::fleetDesign("tug").length_m;
+        if (p.key == "objects.beam_m")
+            value = 1.25 * detail::fleetDesign("tug").beam_m;
+        // A paint: a colour (its default, [-1, -1, -1], is the model's own).
+        if (p.key == "objects.hull_color" || p.key == "objects.superstructure_color")
+            value = glm::dvec3(0.25, 0.5, 0.75);
         EXPECT_EQ(valueProblem(p, value), "") << p.key;
         EXPECT_NE(formatValue(p, value), formatValue(p, p.defaultValue)) << p.key;
         const Waves waves = p.list == ParameterList::Waves || placesTheSun(p) ? Waves::Listed : Waves::Wind;

@@ -3,6 +3,7 @@
 // with that parameter changed must draw exactly what a renderer built afresh
 // for the changed scene draws. A parameter declared cheaper than it is (say
 // Frame where the grid must be rebuilt) leaves stale state and fails here.
+#include "core/fleet.h"
 #include "support/gl_test.h"
 #include "swell/debug.h"
 #include "swell/error.h"
@@ -45,11 +46,42 @@ Scene baseScene()
     return scene;
 }
 
+// What a key needs of the scene to mean anything (true when it needs
+// something): the fleet's keys one of the fleet's models as objects[0]
+// (docs/SCENE.md, "The fleet"), the fisheye's coefficients the fisheye lens.
+bool fleetKey(const Parameter& p)
+{
+    const std::string key(p.key);
+    return key == "objects.length_m" || key == "objects.beam_m" || key == "objects.hull_color" ||
+           key == "objects.superstructure_color" || key == "objects.superstructure";
+}
+
+bool prepareFor(const Parameter& p, Scene& scene)
+{
+    if (std::string(p.key).starts_with("camera.fisheye_")) {
+        scene.camera.lens = LensModel::KannalaBrandt;
+        return true;
+    }
+    if (fleetKey(p)) {
+        scene.objects[0] = SceneObject{.path = "builtin:tug", .position_m = {-12.0, 0.0, -45.0}};
+        return true;
+    }
+    return false;
+}
+
 // A value different from `value` that the parameter allows, picked inside
 // its slider span; `attempt` gives other candidates when one is refused by
 // a rule between parameters (fog end after start, say).
 ParameterValue otherValue(const Parameter& p, const ParameterValue& value, int attempt)
 {
+    // The fleet's stretches: within their bounds of the tug's design.
+    if (std::string(p.key) == "objects.length_m")
+        return (1.1 + 0.1 * attempt) * detail::fleetDesign("tug").length_m;
+    if (std::string(p.key) == "objects.beam_m")
+        return (1.1 + 0.05 * attempt) * detail::fleetDesign("tug").beam_m;
+    // The fleet's paints: a colour ([-1, -1, -1], the default, is the model's own).
+    if (std::string(p.key) == "objects.hull_color" || std::string(p.key) == "objects.superstructure_color")
+        return glm::dvec3(0.2 + 0.1 * attempt, 0.5, 0.7);
     const double fractions[] = {0.37, 0.81, 0.13, 0.07, 0.013, 0.004};
     const double f = fractions[attempt % 6];
     const double x = p.sliderMin + f * (p.sliderMax - p.sliderMin);
@@ -101,13 +133,20 @@ TEST_F(SceneChanges, EveryParameterChangeDrawsWhatAFreshRendererDraws)
     draw(running);
     int checked = 0;
     for (const Parameter& p : parameters()) {
-        Scene changed = base;
+        // The scene the key means something in, drawn first.
+        Scene prepared = base;
+        const bool needsMore = prepareFor(p, prepared);
+        Scene changed = prepared;
         if (!isPresent(p, changed) || listSize(changed, p.list) == 0)
             continue;
+        if (needsMore) {
+            running.setScene(prepared);
+            draw(running);
+        }
         const ParameterValue before = p.get(changed, 0);
         bool valid = false;
         for (int attempt = 0; attempt < 6 && !valid; ++attempt) {
-            changed = base;
+            changed = prepared;
             p.set(changed, 0, otherValue(p, before, attempt));
             try {
                 validateScene(changed, "changes.toml");
