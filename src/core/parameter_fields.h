@@ -20,6 +20,12 @@
 
 namespace swell::parameter_fields {
 
+// World coordinates beyond this lose too much precision in the GPU's floats
+// (1 mm steps at 1e4 m, 10 cm at 1e6 m), so positions stop here, m.
+inline constexpr double kWorldLimit_m = 1.0e6;
+// Angles may wind round several times (a camera path that turns twice), deg.
+inline constexpr double kAngleLimit_deg = 3600.0;
+
 // The wind settings, for reading (defaults when the wind is not set) and for
 // writing (setting a wind parameter turns the wind on).
 inline const WindSettings& wind(const Scene& s)

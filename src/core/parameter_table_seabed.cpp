@@ -16,9 +16,6 @@ using K = ParameterKind;
 using L = ParameterList;
 using E = ParameterEffect;
 
-// As the table's other world positions: float precision on the GPU, m.
-constexpr double kWorldLimit_m = 1.0e6;
-constexpr double kAngleLimit_deg = 3600.0;
 // The deepest sea on Earth, m: no floor lies deeper or stands higher.
 constexpr double kDeepest_m = 11000.0;
 // The steepest slope a shape may have (rise over run): 1000, a cliff.

@@ -2,6 +2,7 @@
 #include "scene/reader.h"
 
 #include "scene/suggestions.h"
+#include "scene/text_values.h"
 #include "swell/gpu/limits.h"
 #include "swell/scene/parameters.h"
 #include "swell/scene/scene_file.h"
@@ -225,23 +226,23 @@ private:
             case Shape::TableList: readTableList(*node, childSchema, childShown); break;
             case Shape::Faces: readFaces(*node, childShown); break;
             case Shape::ObjectPath:
-                scene_.objects[item].path = readPath(*node, childShown);
+                scene_.objects[item].path = readPath(*node, childShown, places_);
                 places_.add(childShown, node->source());
                 break;
             case Shape::HullNode:
-                scene_.objects[item].hullNode = readName(*node, childShown);
+                scene_.objects[item].hullNode = readNodeName(*node, childShown, places_);
                 places_.add(childShown, node->source());
                 break;
             case Shape::ObjectClass:
-                scene_.objects[item].className = readClass(*node, childShown);
+                scene_.objects[item].className = readClass(*node, childShown, places_);
                 places_.add(childShown, node->source());
                 break;
             case Shape::RigName:
-                scene_.camera.rig[item].name = readRigName(*node, childShown);
+                scene_.camera.rig[item].name = readRigName(*node, childShown, places_);
                 places_.add(childShown, node->source());
                 break;
             case Shape::HeightmapPath:
-                scene_.seabed.heightmap.path = readPath(*node, childShown);
+                scene_.seabed.heightmap.path = readPath(*node, childShown, places_);
                 places_.add(childShown, node->source());
                 break;
             }
@@ -405,74 +406,9 @@ private:
         scene_.sky.cubemapFaces.clear();
         for (std::size_t i = 0; i < array->size(); ++i) {
             std::string faceShown = fmt::format("{}[{}]", shown, i);
-            scene_.sky.cubemapFaces.push_back(readPath((*array)[i], faceShown));
+            scene_.sky.cubemapFaces.push_back(readPath((*array)[i], faceShown, places_));
             places_.add(faceShown, (*array)[i].source());
         }
-    }
-
-    std::string readPath(const toml::node& node, const std::string& shown)
-    {
-        const auto* s = node.as_string();
-        if (s == nullptr)
-            fail(places_.of(node.source()), fmt::format("{} must be a string (a file path), not {}", shown, typeName(node)));
-        if (s->get().empty())
-            fail(places_.of(node.source()), fmt::format("{} is empty; it must name a file", shown));
-        if (hasControlCharacter(s->get()))
-            fail(places_.of(node.source()), fmt::format("{} contains a control character", shown));
-        return s->get();
-    }
-
-    // A rig camera's name: a part of its files' names (NAME.left.png), so
-    // letters, digits, '_' and '-' alone, 1 to 32 of them.
-    std::string readRigName(const toml::node& node, const std::string& shown)
-    {
-        const auto* s = node.as_string();
-        if (s == nullptr)
-            fail(places_.of(node.source()), fmt::format("{} must be a string (the camera's name), not {}", shown,
-                                                        typeName(node)));
-        const std::string& name = s->get();
-        const bool allowed = std::all_of(name.begin(), name.end(), [](char c) {
-            return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-        });
-        if (name.empty() || name.size() > 32 || !allowed)
-            fail(places_.of(node.source()),
-                 fmt::format("{} = \"{}\": a rig camera's name is part of its files' names: 1 to 32 letters, digits, "
-                             "'_' or '-'",
-                             shown, shortText(name)));
-        return name;
-    }
-
-    // A glTF node name: any non-empty string without control characters.
-    std::string readName(const toml::node& node, const std::string& shown)
-    {
-        const auto* s = node.as_string();
-        if (s == nullptr)
-            fail(places_.of(node.source()), fmt::format("{} must be a string (a glTF node's name), not {}", shown,
-                                                        typeName(node)));
-        if (s->get().empty())
-            fail(places_.of(node.source()), fmt::format("{} is empty; it must name a node of the model", shown));
-        if (hasControlCharacter(s->get()))
-            fail(places_.of(node.source()), fmt::format("{} contains a control character", shown));
-        return s->get();
-    }
-
-    // An object's class: a non-empty string without control characters
-    // (the rest, a fixed class's name, is validateScene()'s, for scenes made
-    // in code too).
-    std::string readClass(const toml::node& node, const std::string& shown)
-    {
-        const auto* s = node.as_string();
-        if (s == nullptr)
-            fail(places_.of(node.source()), fmt::format("{} must be a string (the object's class in the labels), not {}",
-                                                        shown, typeName(node)));
-        if (s->get().empty())
-            fail(places_.of(node.source()),
-                 fmt::format("{} is empty; give the object's class (\"sailing_yacht\"), or leave the key out for its "
-                             "model's name",
-                             shown));
-        if (hasControlCharacter(s->get()))
-            fail(places_.of(node.source()), fmt::format("{} contains a control character", shown));
-        return s->get();
     }
 
     [[noreturn]] void wrongType(const Parameter& p, const toml::node& node, const std::string& shown)
