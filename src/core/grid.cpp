@@ -74,12 +74,6 @@ double snapToLattice(double s, double step, double offset, double& margin)
     return step * std::floor(t) - offset;
 }
 
-double smoothstep(double edge0, double edge1, double x)
-{
-    const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
-
 } // namespace
 
 GridShape gridShapeFor(const GridSettings& grid, const CameraSettings& camera)
@@ -129,7 +123,7 @@ HorizonFade horizonFadeFor(const GridSettings& grid, const GridShape& shape)
 
 double horizonFadeAt(const HorizonFade& fade, double distance_m)
 {
-    return 1.0 - smoothstep(fade.start_m, fade.end_m, distance_m);
+    return 1.0 - glm::smoothstep(fade.start_m, fade.end_m, distance_m);
 }
 
 double gridLineOffset(const GridShape& shape, int i)

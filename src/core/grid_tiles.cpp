@@ -134,7 +134,7 @@ private:
 // tile's unsnapped places, which do not depend on where the centre snapped;
 // each vertex snaps within half a lattice step of its place.
 template <typename ExtentAt>
-Bounds boundsOf(const GridTile& tile, int cells, const WaveReach& reach, const ExtentAt& extentAt)
+Bounds tileBounds(const GridTile& tile, int cells, const WaveReach& reach, const ExtentAt& extentAt)
 {
     Bounds box{glm::dvec3(std::numeric_limits<double>::infinity()), glm::dvec3(-std::numeric_limits<double>::infinity())};
     double margin = 0.0;
@@ -165,7 +165,7 @@ Bounds boundsOf(const GridTile& tile, int cells, const WaveReach& reach, const E
 Bounds tileBounds(const GridShape& shape, const GridPlacement& placement, const GridTile& tile, const WaveReach& reach)
 {
     const VertexExtents extents(shape, placement);
-    return boundsOf(tile, shape.cells, reach, [&](int i, int j) { return extents.at(i, j); });
+    return tileBounds(tile, shape.cells, reach, [&](int i, int j) { return extents.at(i, j); });
 }
 
 GridBounds gridBounds(const GridShape& shape, const GridPlacement& placement, const TiledGrid& grid, const WaveReach& reach)
@@ -182,9 +182,9 @@ GridBounds gridBounds(const GridShape& shape, const GridPlacement& placement, co
     out.blocks.reserve(grid.blocks.size());
     out.tiles.reserve(grid.tiles.size());
     for (const GridTile& block : grid.blocks)
-        out.blocks.push_back(boundsOf(block, shape.cells, reach, extentAt));
+        out.blocks.push_back(tileBounds(block, shape.cells, reach, extentAt));
     for (const GridTile& tile : grid.tiles)
-        out.tiles.push_back(boundsOf(tile, shape.cells, reach, extentAt));
+        out.tiles.push_back(tileBounds(tile, shape.cells, reach, extentAt));
     return out;
 }
 

@@ -1,7 +1,7 @@
 // Where a hull under way throws spray from its bow (bow_spray.h).
 #include "objects/bow_spray.h"
 
-#include "objects/hydrostatics.h"
+#include "objects/design_loading.h"
 #include "swell/constants.h"
 
 #include <glm/geometric.hpp>
@@ -12,24 +12,6 @@
 #include <vector>
 
 namespace swell::detail {
-
-namespace {
-
-// The volume of the closed shape below the plane y = h, m^3: the
-// hydrostatic sum's submerged volume on a flat sea at that height.
-double volumeBelow(const BodyShape& shape, double h_m)
-{
-    WaterPatch flat;
-    flat.halfSize_m = 1e9;
-    flat.corner_m = glm::dvec2(-1e9);
-    flat.spacing_m = 2e9 / (kPatchSamples - 1);
-    std::vector<glm::dvec3> shifted(shape.positions_m);
-    for (glm::dvec3& p : shifted)
-        p.y -= h_m;
-    return hydrostaticLoad(shifted, shape.indices, glm::dvec3(0.0), flat, 1.0).submergedVolume_m3;
-}
-
-} // namespace
 
 std::optional<BowLine> bowLineOf(const BodyShape& shape, double mass_kg, double density_kg_per_m3,
                                  glm::dvec3 forwardInShape, double speed_mps)
@@ -52,7 +34,7 @@ std::optional<BowLine> bowLineOf(const BodyShape& shape, double mass_kg, double 
     const double displaced_m3 = mass_kg / density_kg_per_m3;
     for (int i = 0; i < 60; ++i) {
         const double mid = 0.5 * (lo + hi);
-        (volumeBelow(shape, mid) < displaced_m3 ? lo : hi) = mid;
+        (volumeBelow(shape, mid).volume_m3 < displaced_m3 ? lo : hi) = mid;
     }
     line.waterline_m = 0.5 * (lo + hi);
     line.climb_m = std::min(speed_mps * speed_mps / (2.0 * kGravity), 0.5 * (top_m - line.waterline_m));

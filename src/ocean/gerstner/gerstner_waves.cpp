@@ -9,6 +9,7 @@
 #include "swell/coast_field.h"
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -269,12 +270,6 @@ glm::dvec3 normalOf(const SurfacePartials& p)
     return n / std::sqrt(glm::dot(n, n));
 }
 
-double smoothstep(double edge0, double edge1, double x)
-{
-    const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
-
 } // namespace
 
 glm::dvec3 normalAt(const WaveSet& set, glm::dvec2 restPoint_m, double time_s)
@@ -286,7 +281,7 @@ double waveLodWeight(double wavelength_m, double footprint_m)
 {
     if (!(footprint_m > 0.0))
         return 1.0;
-    return smoothstep(SWELL_MIN_CELLS_PER_WAVELENGTH * footprint_m, SWELL_FULL_CELLS_PER_WAVELENGTH * footprint_m,
+    return glm::smoothstep(SWELL_MIN_CELLS_PER_WAVELENGTH * footprint_m, SWELL_FULL_CELLS_PER_WAVELENGTH * footprint_m,
                       wavelength_m);
 }
 
