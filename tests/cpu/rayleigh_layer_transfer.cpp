@@ -2,6 +2,8 @@
 // (rayleigh_layer_transfer.h).
 #include "rayleigh_layer_transfer.h"
 
+#include "swell/constants.h"
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -13,7 +15,7 @@
 namespace swell::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using swell::kPi;
 constexpr double kRayleighNorm = 3.0 / (16.0 * kPi); // Rayleigh's phase function is this times 1 + cos^2
 
 // Uniform in [0, 1) from the top 53 bits: the same on every standard library.

@@ -22,7 +22,7 @@ namespace {
 
 using swell::Atmosphere;
 
-constexpr double kPi = std::numbers::pi;
+using swell::kPi;
 constexpr double kBottom_m = swell::kAtmosphereBottomRadius_m;
 
 const Atmosphere& clearAir()

@@ -37,7 +37,7 @@ detail::MeshData shapeOf(const std::string& path)
     return hull.indices.empty() ? detail::makeBuiltinModel(name) : hull;
 }
 
-struct Outcome {
+struct SimulatedRun {
     std::optional<std::string> refusal; // the message, when the bodies were refused
     bool finite = true;                 // every pose of the hour was finite
     std::string stopped;                // what stopped the simulation, if anything did
@@ -46,14 +46,14 @@ struct Outcome {
 // Builds the scene's bodies for one object and steps them for `duration_s`,
 // checking the pose every simulated second. Without a wake unless asked: an
 // hour of it is minutes of transforms, and it does not move the body.
-Outcome simulate(const SceneObject& object, double duration_s, bool wake = false)
+SimulatedRun simulate(const SceneObject& object, double duration_s, bool wake = false)
 {
     Scene scene;
     scene.objects = {object};
     scene.wake.enabled = wake;
     scene.wake.cells = 64; // a quarter of the default's side: the same waves near the body, at a 16th of the cost
     const detail::MeshData shape = shapeOf(object.path);
-    Outcome outcome;
+    SimulatedRun outcome;
     try {
         detail::SceneBodies bodies(scene, {&shape}, swellWater());
         for (double t = 1.0; t <= duration_s; t += 1.0) {
@@ -92,7 +92,7 @@ TEST(BodyLimits, AHullOfCubicMetresWeighingAGramIsRefusedAtItsMass)
 {
     SceneObject o = floatingBoat();
     o.mass_kg = 0.001;
-    const Outcome out = simulate(o, 3600.0);
+    const SimulatedRun out = simulate(o, 3600.0);
     ASSERT_TRUE(out.refusal.has_value()) << "simulated: " << out.stopped;
     EXPECT_NE(out.refusal->find("objects[0].mass_kg = 0.001"), std::string::npos) << *out.refusal;
     EXPECT_NE(out.refusal->find("it needs at least"), std::string::npos) << *out.refusal;
@@ -104,7 +104,7 @@ TEST(BodyLimits, TheSmallestDensityIsRefusedAtItsDensity)
 {
     SceneObject o = floatingBoat();
     o.density_kg_per_m3 = 5e-324;
-    const Outcome out = simulate(o, 3600.0);
+    const SimulatedRun out = simulate(o, 3600.0);
     ASSERT_TRUE(out.refusal.has_value()) << "simulated: " << out.stopped;
     EXPECT_NE(out.refusal->find("objects[0].density_kg_per_m3 = 5e-324"), std::string::npos) << *out.refusal;
 }
@@ -116,7 +116,7 @@ TEST(BodyLimits, ACentreOfMassAKilometreUpSimulatesAnHourFinite)
     SceneObject o = floatingBoat();
     o.density_kg_per_m3 = 300.0;
     o.centerOfMassOffset_m = {0.0, 1000.0, 0.0};
-    const Outcome out = simulate(o, 3600.0);
+    const SimulatedRun out = simulate(o, 3600.0);
     ASSERT_FALSE(out.refusal.has_value()) << *out.refusal;
     EXPECT_TRUE(out.finite) << out.stopped;
 }
@@ -127,11 +127,11 @@ TEST(BodyLimits, ABodyAsDenseAsTheWaterFloatsAndADenserOneIsRefused)
 {
     SceneObject o = floatingBoat();
     o.density_kg_per_m3 = kSeaWaterDensity_kg_per_m3;
-    const Outcome awash = simulate(o, 60.0);
+    const SimulatedRun awash = simulate(o, 60.0);
     EXPECT_FALSE(awash.refusal.has_value()) << *awash.refusal;
     EXPECT_TRUE(awash.finite) << awash.stopped;
     o.density_kg_per_m3 = 1.001 * kSeaWaterDensity_kg_per_m3;
-    const Outcome sinks = simulate(o, 1.0);
+    const SimulatedRun sinks = simulate(o, 1.0);
     ASSERT_TRUE(sinks.refusal.has_value());
     EXPECT_NE(sinks.refusal->find("sinks"), std::string::npos) << *sinks.refusal;
     EXPECT_NE(sinks.refusal->find("objects[0].density_kg_per_m3"), std::string::npos) << *sinks.refusal;
@@ -146,7 +146,7 @@ TEST(BodyLimits, EveryBuiltinIsAClosedBody)
         o.path = path;
         o.floats = true;
         o.density_kg_per_m3 = 500.0;
-        const Outcome out = simulate(o, 10.0);
+        const SimulatedRun out = simulate(o, 10.0);
         EXPECT_FALSE(out.refusal.has_value()) << path << ": " << *out.refusal;
         EXPECT_TRUE(out.finite) << path << ": " << out.stopped;
     }
@@ -158,7 +158,7 @@ TEST(BodyLimits, AFastLightBoatWithItsWakeStaysFinite)
     SceneObject o = floatingBoat();
     o.density_kg_per_m3 = 50.0;
     o.velocity_m_per_s = {100.0, 100.0, -100.0};
-    const Outcome out = simulate(o, 20.0, true);
+    const SimulatedRun out = simulate(o, 20.0, true);
     ASSERT_FALSE(out.refusal.has_value()) << *out.refusal;
     EXPECT_TRUE(out.finite) << out.stopped;
 }
@@ -208,7 +208,7 @@ TEST(BodyLimits, RandomBodiesOverTheDocumentedRangesAreRefusedOrStayFinite)
         o.velocity_m_per_s = {uniform(-100.0, 100.0), uniform(-100.0, 100.0), uniform(-100.0, 100.0)};
         o.dampingRatio = uniform(0.0, 2.0);
         o.position_m.y = uniform(-10.0, 10.0);
-        const Outcome out = simulate(o, 3600.0);
+        const SimulatedRun out = simulate(o, 3600.0);
         SCOPED_TRACE(testing::Message() << "body " << i << ": " << o.path << ", scale " << o.scale << ", mass "
                                         << o.mass_kg << " kg, density " << o.density_kg_per_m3
                                         << " kg/m^3, centre of mass offset [" << o.centerOfMassOffset_m.x << ", "

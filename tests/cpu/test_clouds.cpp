@@ -9,6 +9,7 @@
 #include "swell/scene/atmosphere.h"
 #include "swell/gpu/sky.h"
 #include "swell/scene/clouds.h"
+#include "swell/constants.h"
 
 #include <gtest/gtest.h>
 
@@ -27,9 +28,9 @@ namespace {
 
 using swell::CloudSettings;
 
-constexpr double kPi = std::numbers::pi;
+using swell::kPi;
 
-const swell::Atmosphere& clearAir()
+const swell::Atmosphere& cloudlessAir()
 {
     static const swell::Atmosphere atmosphere{swell::AtmosphereSettings{}};
     return atmosphere;
@@ -150,7 +151,7 @@ TEST(CloudLayer, CoverZeroLeavesTheSkyAlone)
     const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.5, -0.8));
     for (const glm::dvec3 d : {glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(0.6, 0.2, 0.1), glm::dvec3(-0.5, -0.1, 0.3)}) {
         const glm::dvec3 clear(0.0123, 0.0456, 0.0789);
-        EXPECT_EQ(swell::cloudySkyRadiance(clearAir(), clouds, d, sun, clear), clear);
+        EXPECT_EQ(swell::cloudySkyRadiance(cloudlessAir(), clouds, d, sun, clear), clear);
         EXPECT_EQ(swell::cloudTransmittance(clouds, glm::vec3(d)), 1.0f);
     }
 }
@@ -162,13 +163,13 @@ TEST(CloudLayer, ThickerDeckIsDarkerAndGrey)
 {
     const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.6, -0.6));
     const glm::dvec3 up(0.0, 1.0, 0.0);
-    const glm::dvec3 clear = clearAir().skyRadiance(up, sun);
+    const glm::dvec3 clear = cloudlessAir().skyRadiance(up, sun);
     CloudSettings clouds;
     clouds.cover = 1.0;
     double last = 1e9;
     for (const double depth : {10.0, 20.0, 40.0, 80.0}) {
         clouds.opticalDepth = depth;
-        const glm::dvec3 l = swell::cloudySkyRadiance(clearAir(), clouds, up, sun, clear);
+        const glm::dvec3 l = swell::cloudySkyRadiance(cloudlessAir(), clouds, up, sun, clear);
         const double luminance = 0.2126 * l.r + 0.7152 * l.g + 0.0722 * l.b;
         std::printf("deck of optical depth %.0f: zenith (%.5f, %.5f, %.5f), blue over red %.2f (clear sky %.2f)\n",
                     depth, l.r, l.g, l.b, l.b / l.r, clear.b / clear.r);
@@ -188,8 +189,8 @@ TEST(CloudLayer, ThinCloudShinesTowardsTheSun)
     clouds.opticalDepth = 1.0;
     const glm::dvec3 towards = glm::normalize(glm::dvec3(0.0, 0.55, -1.0));
     const glm::dvec3 away = glm::normalize(glm::dvec3(0.0, 0.55, 1.0));
-    const glm::dvec3 lt = swell::cloudySkyRadiance(clearAir(), clouds, towards, sun, glm::dvec3(0.0));
-    const glm::dvec3 la = swell::cloudySkyRadiance(clearAir(), clouds, away, sun, glm::dvec3(0.0));
+    const glm::dvec3 lt = swell::cloudySkyRadiance(cloudlessAir(), clouds, towards, sun, glm::dvec3(0.0));
+    const glm::dvec3 la = swell::cloudySkyRadiance(cloudlessAir(), clouds, away, sun, glm::dvec3(0.0));
     std::printf("thin cloud: towards the sun %.5f, away %.5f (green)\n", lt.g, la.g);
     EXPECT_GT(lt.g, 5.0 * la.g);
 }

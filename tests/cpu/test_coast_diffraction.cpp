@@ -6,6 +6,7 @@
 // shadow line (Wiegel 1962, as the Coastal Engineering Manual, EM
 // 1110-2-1100, Part II, ch. 7, 2002, sec. II-7-2.c(e), sums them up).
 #include "swell/coast_field.h"
+#include "support/numbers.h"
 #include "swell/constants.h"
 #include "swell/scene/waves.h"
 
@@ -23,7 +24,7 @@ using swell::Wave;
 using swell::WaveSet;
 using Complex = std::complex<double>;
 
-constexpr double kDeg = swell::kPi / 180.0;
+using swell::test::kDeg;
 
 // The Fresnel integrals C(x) + i S(x) = integral from 0 to x of
 // exp(i pi u^2 / 2) du (Abramowitz & Stegun 1964, eqs. 7.3.1 and 7.3.2), by

@@ -6,6 +6,7 @@
 // as a check of the law itself), Snell's law on straight parallel contours,
 // McCowan's breaker index, and dry land.
 #include "ocean/coast/coast_march.h"
+#include "support/numbers.h"
 
 #include "swell/coast_field.h"
 #include "swell/constants.h"
@@ -29,8 +30,8 @@ using swell::DepthGrid;
 using swell::Wave;
 using swell::WaveSet;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kDeg = swell::kPi / 180.0;
+using swell::test::kDeg;
+using swell::test::kInf;
 
 // A grid whose depth is a function of x alone: straight contours along z.
 DepthGrid contoursAlongZ(int nx, int nz, double cell_m, const std::function<double(double)>& depthAtX)

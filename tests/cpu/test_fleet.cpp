@@ -31,7 +31,7 @@ namespace {
 using swell::detail::FleetDesign;
 using swell::detail::MeshData;
 
-swell::BodyShape shapeOf(const MeshData& mesh)
+swell::BodyShape hullShapeOf(const MeshData& mesh)
 {
     swell::BodyShape s;
     for (const auto& v : mesh.vertices)
@@ -40,13 +40,13 @@ swell::BodyShape shapeOf(const MeshData& mesh)
     return s;
 }
 
-struct Extent {
+struct HullExtent {
     glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{-std::numeric_limits<double>::max()};
 };
 
-Extent extentOf(const MeshData& mesh)
+HullExtent hullExtentOf(const MeshData& mesh)
 {
-    Extent e;
+    HullExtent e;
     for (const auto& v : mesh.vertices) {
         e.lo = glm::min(e.lo, glm::dvec3(v.position));
         e.hi = glm::max(e.hi, glm::dvec3(v.position));
@@ -64,13 +64,13 @@ TEST(Fleet, EachModelIsItsDesign)
         const FleetDesign& d = swell::detail::fleetDesign(name);
         const MeshData hull = swell::detail::makeBuiltinHullVolume(std::string(name));
         ASSERT_FALSE(hull.indices.empty());
-        ASSERT_NO_THROW((void)swell::massPropertiesOf(shapeOf(hull))); // closed and wound outwards
-        const Extent e = extentOf(hull);
+        ASSERT_NO_THROW((void)swell::massPropertiesOf(hullShapeOf(hull))); // closed and wound outwards
+        const HullExtent e = hullExtentOf(hull);
         EXPECT_NEAR(e.hi.x - e.lo.x, d.length_m, 1e-3);
         EXPECT_NEAR(e.hi.z - e.lo.z, d.beam_m, 1e-3);
         EXPECT_NEAR(-e.lo.y, d.draft_m, 1e-3);
         const double displaced_kg =
-            swell::kSeaWaterDensity_kg_per_m3 * swell::detail::volumeBelow(shapeOf(hull), 0.0).volume_m3;
+            swell::kSeaWaterDensity_kg_per_m3 * swell::detail::volumeBelow(hullShapeOf(hull), 0.0).volume_m3;
         EXPECT_NEAR(displaced_kg / d.displacement_kg, 1.0, 0.005);
         EXPECT_FALSE(swell::detail::makeBuiltinModel(std::string(name)).vertices.empty());
     }
@@ -168,7 +168,7 @@ TEST(Fleet, ALookStretchesRepaintsAndStrips)
     look.hullColor = {0.0, 0.5, 0.0};
     look.superstructureColor = {0.0, 0.0, 0.5};
     const swell::detail::GltfModel changed = swell::detail::makeFleetModel("tug", look);
-    const Extent a = extentOf(design.hull), b = extentOf(changed.hull);
+    const HullExtent a = hullExtentOf(design.hull), b = hullExtentOf(changed.hull);
     EXPECT_NEAR(b.hi.x - b.lo.x, 1.25 * d.length_m, 1e-3);
     EXPECT_NEAR(b.hi.z - b.lo.z, 0.8 * d.beam_m, 1e-3);
     EXPECT_NEAR(b.lo.y, a.lo.y, 1e-6) << "the draft is kept";
@@ -183,7 +183,7 @@ TEST(Fleet, ALookStretchesRepaintsAndStrips)
     stripped.superstructure = false;
     const MeshData bare = swell::detail::makeFleetModel("tug", stripped).mesh;
     EXPECT_LT(bare.vertices.size(), design.mesh.vertices.size());
-    EXPECT_LT(extentOf(bare).hi.y + 3.0, extentOf(design.mesh).hi.y) << "no wheelhouse, no mast";
+    EXPECT_LT(hullExtentOf(bare).hi.y + 3.0, hullExtentOf(design.mesh).hi.y) << "no wheelhouse, no mast";
 }
 
 // Every class is a class in the labels, by its model's name.

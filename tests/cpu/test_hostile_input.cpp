@@ -42,7 +42,7 @@ fs::path freshFolder(const std::string& name)
     return folder;
 }
 
-void writeFile(const fs::path& path, const std::string& bytes)
+void writeBytes(const fs::path& path, const std::string& bytes)
 {
     fs::create_directories(path.parent_path());
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
@@ -190,8 +190,6 @@ protected:
     void TearDown() override { ::alarm(0); }
 };
 
-} // namespace
-
 // (1) The scene file itself.
 TEST_F(SpecialFiles, AsTheSceneFileAreRefusedNamingTheFile)
 {
@@ -228,7 +226,7 @@ TEST_F(SpecialFiles, AsModelsAndSkyFacesAreRefusedAtTheSceneKey)
     ::close(fd);
     const std::string faces = "[sky]\nfaces = [\"a.png\", \"b.png\", \"c.png\", \"fifo.png\", \"e.png\", \"f.png\"]\n";
     for (const char* face : {"a.png", "b.png", "c.png", "e.png", "f.png"})
-        writeFile(folder / face, blackPng(4, 4));
+        writeBytes(folder / face, blackPng(4, 4));
     ASSERT_EQ(::mkfifo((folder / "fifo.png").c_str(), 0600), 0);
     const InputError e = expectInputError([&] { (void)parseScene(faces, folder / "scene.toml"); });
     EXPECT_NE(e.message().find("sky.faces[3]"), std::string::npos) << e.message();
@@ -248,7 +246,7 @@ TEST_F(SpecialFiles, ReachingTheLoadersAreRefused)
     }
     for (const auto& [path, kind] : specialFiles(folder, ".bin")) {
         const fs::path model = folder / ("uses_" + path.stem().string() + ".gltf");
-        writeFile(model, triangleGltf(path.filename().string()));
+        writeBytes(model, triangleGltf(path.filename().string()));
         const InputError e = expectInputError([&] { (void)detail::loadGltf(model); });
         EXPECT_NE(e.message().find("buffer 0"), std::string::npos) << e.message();
     }
@@ -274,25 +272,25 @@ TEST(Confinement, BufferUrisStayInTheModelsFolder)
 {
     const fs::path root = freshFolder("confinement");
     const fs::path models = root / "models" / "deep";
-    writeFile(root / "outside.bin", std::string(4321, 'x'));
-    writeFile(models / "inside.bin", triangleBin());
+    writeBytes(root / "outside.bin", std::string(4321, 'x'));
+    writeBytes(models / "inside.bin", triangleBin());
     fs::create_symlink(root / "outside.bin", models / "link.bin");
     for (const std::string uri : {"../../outside.bin", "..%2F..%2Foutside.bin", "%2E%2E/%2E%2E/outside.bin",
                                   "sub/../../../outside.bin", "%2Fetc%2Fpasswd", "link.bin"}) {
         const fs::path model = models / "escape.gltf";
-        writeFile(model, triangleGltf(uri));
+        writeBytes(model, triangleGltf(uri));
         const InputError e = expectInputError([&] { (void)detail::loadGltf(model); });
         EXPECT_NE(e.message().find("lies outside the model's folder"), std::string::npos) << uri << ": " << e.message();
         EXPECT_EQ(e.message().find("4321"), std::string::npos) << e.message();
         EXPECT_EQ(e.message().find("bytes"), std::string::npos) << e.message();
     }
     // /etc/passwd's size must not show either.
-    writeFile(models / "passwd.gltf", triangleGltf("../../../../../../../../../../../../etc/passwd"));
+    writeBytes(models / "passwd.gltf", triangleGltf("../../../../../../../../../../../../etc/passwd"));
     const InputError e = expectInputError([&] { (void)detail::loadGltf(models / "passwd.gltf"); });
     EXPECT_EQ(e.message().find(std::to_string(fs::file_size("/etc/passwd"))), std::string::npos) << e.message();
     // Paths that wander but end inside are fine.
     for (const std::string uri : {"inside.bin", "./inside.bin", "sub/../inside.bin", "..%2Fdeep%2Finside.bin"}) {
-        writeFile(models / "fine.gltf", triangleGltf(uri));
+        writeBytes(models / "fine.gltf", triangleGltf(uri));
         EXPECT_EQ(detail::loadGltf(models / "fine.gltf").indices.size(), 3u) << uri;
     }
 }
@@ -302,9 +300,9 @@ TEST(Confinement, BufferUrisStayInTheModelsFolder)
 TEST(Confinement, SceneAssetsStayInTheScenesFolder)
 {
     const fs::path root = freshFolder("scene_confinement");
-    writeFile(root / "outside.gltf", triangleGltf("inside.bin"));
-    writeFile(root / "scene" / "inside.gltf", triangleGltf("inside.bin"));
-    writeFile(root / "scene" / "inside.bin", triangleBin());
+    writeBytes(root / "outside.gltf", triangleGltf("inside.bin"));
+    writeBytes(root / "scene" / "inside.gltf", triangleGltf("inside.bin"));
+    writeBytes(root / "scene" / "inside.bin", triangleBin());
     fs::create_symlink(root / "outside.gltf", root / "scene" / "link.gltf");
     for (const std::string& path : {std::string("../outside.gltf"), (root / "outside.gltf").string(), std::string("link.gltf")}) {
         const std::string text = fmt::format("[[objects]]\npath = \"{}\"\n", path);
@@ -328,11 +326,11 @@ TEST(Confinement, SceneAssetsStayInTheScenesFolder)
 TEST(AssetErrors, NameTheSceneKeyAndItsPlace)
 {
     const fs::path folder = freshFolder("asset_errors");
-    writeFile(folder / "good.gltf", triangleGltf("good.bin"));
-    writeFile(folder / "good.bin", triangleBin());
-    writeFile(folder / "broken.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [{\"mesh\": 7}]}");
+    writeBytes(folder / "good.gltf", triangleGltf("good.bin"));
+    writeBytes(folder / "good.bin", triangleBin());
+    writeBytes(folder / "broken.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [{\"mesh\": 7}]}");
     const fs::path sceneFile = folder / "scene.toml";
-    writeFile(sceneFile, "[[objects]]\npath = \"good.gltf\"\n"
+    writeBytes(sceneFile, "[[objects]]\npath = \"good.gltf\"\n"
                          "[[objects]]\npath = \"builtin:buoy\"\n"
                          "[[objects]]\n  path = \"broken.gltf\"\n");
     const Scene scene = loadScene(sceneFile); // the files exist: the scene is fine
@@ -347,9 +345,9 @@ TEST(AssetErrors, NameTheSceneKeyAndItsPlace)
 
     // A sky face that declares too many pixels.
     for (const char* face : {"px.png", "nx.png", "py.png", "ny.png", "pz.png"})
-        writeFile(folder / face, blackPng(8, 8));
-    writeFile(folder / "nz.png", blackPng(16384, 16384));
-    writeFile(sceneFile, "[sky]\nfaces = [\"px.png\", \"nx.png\", \"py.png\", \"ny.png\", \"pz.png\", \"nz.png\"]\n");
+        writeBytes(folder / face, blackPng(8, 8));
+    writeBytes(folder / "nz.png", blackPng(16384, 16384));
+    writeBytes(sceneFile, "[sky]\nfaces = [\"px.png\", \"nx.png\", \"py.png\", \"ny.png\", \"pz.png\", \"nz.png\"]\n");
     const Scene sky = loadScene(sceneFile);
     const InputError f = expectInputError([&] { (void)detail::loadSceneAssets(sky); });
     const std::string face = fmt::format("{}:2:60: sky.faces[5]: {}: ", sceneFile.string(), (folder / "nz.png").string());
@@ -364,8 +362,6 @@ TEST(AssetErrors, NameTheSceneKeyAndItsPlace)
 // cap (support/bounded_run.h); the CPU bound is checked on the child's own
 // CPU time, which a busy machine does not inflate. Under the sanitizers
 // (no memory cap there) the CPU bound is ten times wider.
-
-namespace {
 
 constexpr std::uint64_t kMemoryBound_bytes = std::uint64_t(256) << 20;
 const double kCpuBound_s = test::kUnderAddressSanitizer ? 20.0 : 2.0;
@@ -420,14 +416,14 @@ TEST(Bombs, ImagesAreJudgedByTheirHeader)
 {
     const fs::path folder = freshFolder("image_bombs");
     // A gigabyte of pixels, declared and present: 1 GiB of zeros compresses to 4.2 MB.
-    writeFile(folder / "huge.png", blackPng(16384, 16384));
+    writeBytes(folder / "huge.png", blackPng(16384, 16384));
     expectWithinBounds("16384x16384 PNG", [&] { (void)readImage(folder / "huge.png"); }, Outcome::Refused,
                        "is 16384x16384 pixels; images are at most 4096x4096");
-    writeFile(folder / "wide.png", blackPng(1u << 24, 1));
+    writeBytes(folder / "wide.png", blackPng(1u << 24, 1));
     expectWithinBounds("16777216x1 PNG", [&] { (void)readImage(folder / "wide.png"); }, Outcome::Refused,
                        "pixels; images are at most");
     // The largest image accepted decodes within the bound.
-    writeFile(folder / "limit.png", blackPng(kMaxImageSide, kMaxImageSide));
+    writeBytes(folder / "limit.png", blackPng(kMaxImageSide, kMaxImageSide));
     expectWithinBounds("4096x4096 PNG", [&] { (void)readImage(folder / "limit.png"); }, Outcome::Loaded);
 }
 
@@ -444,7 +440,7 @@ TEST(Bombs, ModelsThatClaimMoreThanTheyHold)
                {{"componentType": 5126, "count": {0}, "type": "VEC3"}},
                {{"componentType": 5126, "count": {0}, "type": "VEC4"}}]}})",
         2'000'000);
-    writeFile(folder / "at_the_caps.gltf", claim);
+    writeBytes(folder / "at_the_caps.gltf", claim);
     expectWithinBounds("model at the vertex/index caps", [&] { (void)detail::loadGltf(folder / "at_the_caps.gltf"); },
                        Outcome::Loaded);
 
@@ -460,7 +456,7 @@ TEST(Bombs, ModelsThatClaimMoreThanTheyHold)
         while (json.size() + entry.size() + 8 < jsonLimit)
             json += entry;
         json += entry.substr(0, entry.size() - 1) + "]}";
-        writeFile(folder / "structure.gltf", json);
+        writeBytes(folder / "structure.gltf", json);
         expectWithinBounds(name, [&] { (void)detail::loadGltf(folder / "structure.gltf"); }, Outcome::Refused,
                            "the JSON holds more than 1000000 values");
     }
@@ -476,7 +472,7 @@ TEST(Bombs, ModelsThatClaimMoreThanTheyHold)
         for (int i = 0; i < 499'000; ++i)
             json += entry;
         json += entry.substr(0, entry.size() - 1) + (name[8] == 'e' ? "]}]}" : "]}");
-        writeFile(folder / "under.gltf", json);
+        writeBytes(folder / "under.gltf", json);
         expectWithinBounds(name, [&] { (void)detail::loadGltf(folder / "under.gltf"); }, Outcome::Refused, needle);
     }
 }

@@ -30,7 +30,7 @@ namespace {
 
 // A folder holding the files the generated scenes name (sky faces, a model).
 // The loader checks that they exist and are regular files; it does not decode them.
-fs::path workFolder()
+fs::path everyKeyFolder()
 {
     static const fs::path folder = [] {
         fs::path f = fs::path(SWELL_TEST_OUTPUT_DIR) / "scene_every_key";
@@ -44,7 +44,7 @@ fs::path workFolder()
     return folder;
 }
 
-std::string scenePath() { return (workFolder() / "every_key.toml").string(); }
+std::string everyKeyScenePath() { return (everyKeyFolder() / "every_key.toml").string(); }
 
 // A TOML table as a tree: its own key = value lines, its sub-tables, and its
 // arrays of tables (each item a table).
@@ -275,7 +275,7 @@ TEST(SceneEveryKey, EveryTableOfTheParameterTableIsATable)
         std::string text = fmt::format("[{}]\n", t);
         if (t == "waves.swell")
             text = "[waves.wind]\n" + text;
-        EXPECT_NO_THROW(parseScene(text, scenePath())) << text;
+        EXPECT_NO_THROW(parseScene(text, everyKeyScenePath())) << text;
     }
 }
 
@@ -287,7 +287,7 @@ TEST(SceneEveryKey, EveryDocumentedKeyLoadsInEachForm)
             SCOPED_TRACE(fmt::format("{}, {}:\n{}", waves == Waves::Wind ? "wind" : "listed waves", formName(form), text));
             Scene scene;
             try {
-                scene = parseScene(text, scenePath());
+                scene = parseScene(text, everyKeyScenePath());
             } catch (const InputError& e) {
                 ADD_FAILURE() << e.what();
                 continue;
@@ -383,12 +383,12 @@ TEST(SceneEveryKey, EachKeySetsItsOwnField)
                     v = formatValue(*model, spectral);
         const std::string text = write(root, Form::Sections);
         try {
-            const Scene scene = parseScene(text, scenePath());
+            const Scene scene = parseScene(text, everyKeyScenePath());
             EXPECT_TRUE(isPresent(p, scene)) << p.key;
             if (isPresent(p, scene)) {
                 EXPECT_EQ(formatValue(p, p.get(scene, 0)), formatValue(p, value)) << p.key;
                 // And saveScene() writes it where the reader finds it again.
-                const Scene again = parseScene(saveScene(scene), scenePath());
+                const Scene again = parseScene(saveScene(scene), everyKeyScenePath());
                 EXPECT_EQ(formatValue(p, p.get(again, 0)), formatValue(p, value)) << p.key << " after saveScene";
             }
         } catch (const InputError& e) {

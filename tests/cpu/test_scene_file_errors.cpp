@@ -178,8 +178,6 @@ std::vector<Malformed> malformedCases()
 
 class MalformedScene : public testing::TestWithParam<Malformed> {};
 
-} // namespace
-
 TEST_P(MalformedScene, ThrowsInputErrorAtThePlace)
 {
     const Malformed& c = GetParam();
@@ -200,8 +198,6 @@ INSTANTIATE_TEST_SUITE_P(SceneFile, MalformedScene, testing::ValuesIn(malformedC
 
 // ---------------------------------------------------------------------------
 // Malformed files
-
-namespace {
 
 using test::expectInputError;
 

@@ -4,6 +4,7 @@
 // Jacobian), the swell has its height, period and direction, and generated
 // directions follow the spreading.
 #include "swell/gpu/limits.h"
+#include "support/numbers.h"
 #include "swell/scene/spectrum.h"
 
 #include <glm/geometric.hpp>
@@ -21,8 +22,8 @@ using swell::Spreading;
 using swell::SpreadingModel;
 using swell::WindSettings;
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using swell::kPi;
+using swell::test::kInf;
 
 // The integral of f(theta) over [a, b], Simpson with n (even) intervals.
 template <class F>

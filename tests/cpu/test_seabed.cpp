@@ -5,6 +5,7 @@
 // read through the image loader, the drawn mesh's vertices on
 // elevation_m(), and the refusals.
 #include "assets/island_terrain.h"
+#include "support/numbers.h"
 #include "assets/mesh_data.h"
 #include "assets/seabed_mesh.h"
 #include "swell/error.h"
@@ -33,7 +34,7 @@ using namespace swell;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using swell::test::kInf;
 
 // A scene with nothing but its sea floor: no island.
 Scene floorScene(double depth_m = kInf)

@@ -5,6 +5,7 @@
 // relation), and the slope variance it resolves plus what the spectrum holds
 // beyond it (Cox & Munk 1954). Tiling: test_spectral_tiling.cpp.
 #include "ocean/spectral/spectral_cpu.h"
+#include "support/numbers.h"
 #include "ocean/spectral/spectral_field.h"
 #include "published_sea_laws.h"
 #include "swell/scene/spectrum.h"
@@ -28,7 +29,7 @@ using namespace swell::spectral;
 
 constexpr double kG = 9.80665; // m/s^2
 constexpr double k2Pi = 2.0 * std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using swell::test::kInf;
 constexpr double kFullyDeveloped_km = 10000.0; // past any fetch limit at 5..20 m/s
 
 WindSettings windOf(double windSpeed_mps, double fetch_km, double depth_m = kInf)

@@ -23,17 +23,17 @@ namespace {
 using namespace swell;
 using namespace swell::spectral;
 
-constexpr double kFullyDeveloped_km = 10000.0; // past any fetch limit at 5..20 m/s
+constexpr double kTilingFullyDeveloped_km = 10000.0; // past any fetch limit at 5..20 m/s
 
-struct SeaCase {
+struct TilingSea {
     double windSpeed_mps, fetch_km;
 };
 // The seas the statistics tests use: fully developed at 5, 10, 15, 20 m/s,
 // and fetches of 10 and 40 km at 5, 10, 20 m/s.
-const SeaCase kCases[] = {{5, kFullyDeveloped_km}, {10, kFullyDeveloped_km}, {15, kFullyDeveloped_km},
-                          {20, kFullyDeveloped_km}, {5, 10},  {5, 40},  {10, 10}, {10, 40}, {20, 10}, {20, 40}};
+const TilingSea kTilingSeas[] = {{5, kTilingFullyDeveloped_km}, {10, kTilingFullyDeveloped_km}, {15, kTilingFullyDeveloped_km},
+                          {20, kTilingFullyDeveloped_km}, {5, 10},  {5, 40},  {10, 10}, {10, 40}, {20, 10}, {20, 40}};
 
-SeaSpectrum seaOf(const SeaCase& sc)
+SeaSpectrum seaOf(const TilingSea& sc)
 {
     WindSettings w;
     w.windSpeed_mps = sc.windSpeed_mps;
@@ -138,7 +138,7 @@ TilingResult worstHeightCorrelation(const SpectralField& full, int c, std::uint3
 // irrational fraction of it.
 TEST(SpectralTiling, MeasureGivesOneForARepeatedPatch)
 {
-    const SpectralField unwarped = makeSpectralField(seaOf({10, kFullyDeveloped_km}), 0.0, 1, 0.0);
+    const SpectralField unwarped = makeSpectralField(seaOf({10, kTilingFullyDeveloped_km}), 0.0, 1, 0.0);
     auto onlyLargest = std::make_shared<SpectralField>(unwarped);
     for (int c = 1; c < kCascades; ++c) {
         std::fill(onlyLargest->h0[size_t(c)].begin(), onlyLargest->h0[size_t(c)].end(), std::complex<float>(0.0f));
@@ -157,7 +157,7 @@ TEST(SpectralTiling, MeasureGivesOneForARepeatedPatch)
 // which holds most of the variance: far above the criterion (about 0.9).
 TEST(SpectralTiling, WithoutTheWarpTheLargestPatchRepeats)
 {
-    for (const SeaCase& sc : {kCases[1], kCases[3], kCases[4]}) {
+    for (const TilingSea& sc : {kTilingSeas[1], kTilingSeas[3], kTilingSeas[4]}) {
         const SpectralField unwarped = makeSpectralField(seaOf(sc), 0.0, 1, 0.0);
         const TilingResult r = worstHeightCorrelation(unwarped, 0, 11);
         std::printf("U10 %4.1f m/s fetch %6.0f km, no warp: worst autocorrelation at L0 = %.1f m: %.3f (+-%.3f)\n",
@@ -171,7 +171,7 @@ TEST(SpectralTiling, WithoutTheWarpTheLargestPatchRepeats)
 // the margin, so a pass is not luck.
 TEST(SpectralTiling, NoPatchRepeatsVisibly)
 {
-    for (const SeaCase& sc : kCases) {
+    for (const TilingSea& sc : kTilingSeas) {
         const SpectralField field = makeSpectralField(seaOf(sc), 0.0, 1);
         std::printf("U10 %4.1f m/s fetch %6.0f km: worst autocorrelation at each patch:", sc.windSpeed_mps, sc.fetch_km);
         for (int c = 0; c < kCascades; ++c) {
@@ -192,7 +192,7 @@ constexpr double kLargestStrain = 0.12;
 TEST(SpectralTiling, WarpStrainStaysSmall)
 {
     double worst = 0.0;
-    for (const SeaCase& sc : kCases) {
+    for (const TilingSea& sc : kTilingSeas) {
         const SpectralField field = makeSpectralField(seaOf(sc), 0.0, 1);
         std::printf("U10 %4.1f m/s fetch %6.0f km: warp strain rms / largest:", sc.windSpeed_mps, sc.fetch_km);
         for (int c = 0; c < kCascades; ++c) {

@@ -209,8 +209,8 @@ TEST(SpectralTwin, NormalIsTheDrawnSurfacesThroughTheWarp)
     const double texel_m = patch_m / kSize;
     const double h = 1e-3 * texel_m;
     double worst = 0.0, steepest = 0.0;
-    constexpr int kPoints = 400;
-    for (int i = 0; i < kPoints; ++i) {
+    constexpr int kTwinPoints = 400;
+    for (int i = 0; i < kTwinPoints; ++i) {
         // Spread over ten patches, where the warp takes every value.
         const glm::dvec2 p = glm::dvec2(std::fmod(37.31 * i, 10.0), std::fmod(53.77 * i, 10.0)) * patch_m;
         auto at = [&](glm::dvec2 q) { return glm::dvec3(q.x, 0.0, q.y) + surface.displacementAt(q, 10.0, {}); };

@@ -3,6 +3,7 @@
 // laws (Pierson-Moskowitz for a fully developed sea, the JONSWAP growth laws
 // for a fetch-limited one) within 5%.
 #include "swell/gpu/limits.h"
+#include "support/numbers.h"
 #include "swell/scene/spectrum.h"
 
 #include <glm/geometric.hpp>
@@ -19,7 +20,7 @@ namespace {
 using swell::WindSettings;
 
 using swell::kPi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using swell::test::kInf;
 
 bool bitIdentical(const swell::WaveSet& a, const swell::WaveSet& b)
 {

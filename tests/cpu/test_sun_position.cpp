@@ -128,7 +128,7 @@ TEST(SunPosition, AzimuthIsACameraHeading)
         }
 }
 
-swell::InputError errorOf(const std::string& toml)
+swell::InputError sunError(const std::string& toml)
 {
     try {
         swell::parseScene(toml, "sun.toml");
@@ -188,7 +188,7 @@ TEST(SunPosition, BadPlacementsAreRefusedWithTheKeysPlace)
         {"[sun]\ntime = 2003-10-17T12:30:30Z\nlongitude_deg = 0.0\n", 2, 8, "sun.latitude_deg is missing"},
     };
     for (const Case& c : cases) {
-        const swell::InputError e = errorOf(c.toml);
+        const swell::InputError e = sunError(c.toml);
         EXPECT_EQ(e.place().line, c.line) << c.toml << e.what();
         EXPECT_EQ(e.place().column, c.column) << c.toml << e.what();
         EXPECT_NE(e.message().find(c.says), std::string::npos) << c.toml << e.what();
@@ -314,7 +314,7 @@ TEST(SunAngles, BadAnglesAreRefusedWithTheKeysPlace)
         {"[sun]\nazimuth_rad = 1.0\n", 2, "did you mean 'sun.azimuth_deg', in deg?"},
     };
     for (const Case& c : cases) {
-        const swell::InputError e = errorOf(c.toml);
+        const swell::InputError e = sunError(c.toml);
         EXPECT_EQ(e.place().line, c.line) << c.toml << e.what();
         EXPECT_NE(e.message().find(c.says), std::string::npos) << c.toml << e.what();
     }

@@ -101,7 +101,7 @@ TEST(Sweep, ARangeOutsideTheParametersOrAListItemThatIsNotThereIsRefusedAtItsPla
 // made: a table's stray key, a scene out of the sweep's folder, an object's
 // index the base scene lacks; a sample's varied key keeps its line, and its
 // "varied" azimuth is the value drawn, within its range.
-swell::InputError refusal(const std::function<void()>& f)
+swell::InputError sweepRefusal(const std::function<void()>& f)
 {
     try {
         f();
@@ -114,7 +114,7 @@ swell::InputError refusal(const std::function<void()>& f)
 
 TEST(Sweep, ATablesUnknownKeyIsNamed)
 {
-    const swell::InputError e = refusal([] {
+    const swell::InputError e = sweepRefusal([] {
         sweepFrom("weights.toml", kHead + "\"reflection.mode\" = { one_of = [\"fixed\", \"raymarch\"], weights = [1, 2] }\n");
     });
     EXPECT_EQ(e.place().line, 5);
@@ -126,7 +126,7 @@ TEST(Sweep, AScenePathOutOfTheSweepsFolderIsRefusedAtItsLine)
     for (const char* scene : {"../../../../etc/passwd", "/etc/passwd", "/dev/zero", "", ".", "sub/../.."}) {
         const swell::Sweep sweep =
             sweepFrom("escape.toml", std::string("scene = \"") + scene + "\"\ncount = 1\n");
-        const swell::InputError e = refusal([&] { swell::sweepSceneFile(sweep); });
+        const swell::InputError e = sweepRefusal([&] { swell::sweepSceneFile(sweep); });
         EXPECT_EQ(e.place().line, 1) << scene;
         EXPECT_EQ(e.message().find("root:"), std::string::npos) << "the outside file was read: " << e.what();
     }
@@ -141,7 +141,7 @@ TEST(Sweep, AMountedObjectsIndexIsHeldToTheBaseScenesObjects)
     swell::Scene base = swell::defaultScene();
     base.objects.resize(2);
     const swell::Sweep sweep = sweepFrom("mount.toml", kHead + "\"camera.mount_object\" = [0, 5]\n");
-    const swell::InputError e = refusal([&] { swell::checkSweep(sweep, base); });
+    const swell::InputError e = sweepRefusal([&] { swell::checkSweep(sweep, base); });
     EXPECT_EQ(e.place().line, 5);
     EXPECT_NE(e.message().find("2 object(s)"), std::string::npos) << e.what();
     swell::checkSweep(sweepFrom("mount_ok.toml", kHead + "\"camera.mount_object\" = [-1, 1]\n"), base);
@@ -170,7 +170,7 @@ TEST(Sweep, ASamplesVariedKeysPointAtTheirLinesAndKeepTheValuesDrawn)
     int index = 0;
     while (swell::sweepSample(sweep, foggy, index).scene.fog.end_m > 1000.0)
         ASSERT_LT(++index, 100);
-    const swell::InputError e = refusal([&] { swell::validateScene(swell::sweepSample(sweep, foggy, index).scene, "base.toml"); });
+    const swell::InputError e = sweepRefusal([&] { swell::validateScene(swell::sweepSample(sweep, foggy, index).scene, "base.toml"); });
     EXPECT_EQ(e.place().path, sweep.file.string());
     EXPECT_EQ(e.place().line, 5);
 }
@@ -201,7 +201,7 @@ TEST(Sweep, AClipIsReadAndItsBadValuesAreRefusedAtTheirPlace)
                            Bad{"frames = 8\nfps = 0\n", "clip.fps", 5, 7},
                            Bad{"frames = 8\nfps = 24\nframe_rate = 3\n", "unknown key 'frame_rate' in [clip]", 6, 1},
                            Bad{"fps = 24\n", "clip.frames", 3, 1}}) {
-        const swell::InputError e = refusal([&] { sweepFrom("bad_clip.toml", head + bad.body); });
+        const swell::InputError e = sweepRefusal([&] { sweepFrom("bad_clip.toml", head + bad.body); });
         EXPECT_EQ(e.place().line, bad.line) << bad.body << e.what();
         EXPECT_EQ(e.place().column, bad.column) << bad.body << e.what();
         EXPECT_NE(e.message().find(bad.words), std::string::npos) << e.what();

@@ -11,7 +11,7 @@
 
 namespace {
 
-swell::InputError errorOf(const std::string& toml)
+swell::InputError tomlError(const std::string& toml)
 {
     try {
         swell::parseScene(toml, "mistake.toml");
@@ -24,7 +24,7 @@ swell::InputError errorOf(const std::string& toml)
 
 TEST(TomlMessages, TopLevelKeyAfterATableSaysTopLevelKeysComeFirst)
 {
-    const swell::InputError e = errorOf("terrain = true\n[camera]\nposition_m = [0.0, 6.0, 0.0]\ndebug_view = \"normals\"\n");
+    const swell::InputError e = tomlError("terrain = true\n[camera]\nposition_m = [0.0, 6.0, 0.0]\ndebug_view = \"normals\"\n");
     EXPECT_EQ(e.place().line, 4);
     EXPECT_NE(e.message().find("unknown key 'camera.debug_view'"), std::string::npos) << e.message();
     EXPECT_NE(e.message().find("'debug_view' is a top-level key"), std::string::npos) << e.message();
@@ -33,14 +33,14 @@ TEST(TomlMessages, TopLevelKeyAfterATableSaysTopLevelKeysComeFirst)
 
 TEST(TomlMessages, AnUnknownKeyInATableDoesNotClaimToBeTopLevel)
 {
-    const swell::InputError e = errorOf("[camera]\nheight_m = 3.0\n");
+    const swell::InputError e = tomlError("[camera]\nheight_m = 3.0\n");
     EXPECT_EQ(e.message().find("top-level"), std::string::npos) << e.message();
 }
 
 TEST(TomlMessages, MissingClosingBracketIsReportedOnTheArraysLine)
 {
     //                                  column 28: just after "0.0"
-    const swell::InputError e = errorOf("[camera]\nposition_m = [0.0, 6.0, 0.0\npitch_deg = -5.0\n");
+    const swell::InputError e = tomlError("[camera]\nposition_m = [0.0, 6.0, 0.0\npitch_deg = -5.0\n");
     EXPECT_EQ(e.place().line, 2) << e.what();
     EXPECT_EQ(e.place().column, 28) << e.what();
     EXPECT_NE(e.message().find("no closing ']'"), std::string::npos) << e.message();
@@ -48,7 +48,7 @@ TEST(TomlMessages, MissingClosingBracketIsReportedOnTheArraysLine)
 
 TEST(TomlMessages, MissingBracketBeforeATableHeaderIsReportedOnTheArraysLine)
 {
-    const swell::InputError e = errorOf("[sun]\ncolor = [1.0, 0.9, 0.8   # warm\n\n[fog]\nstart_m = 10.0\n");
+    const swell::InputError e = tomlError("[sun]\ncolor = [1.0, 0.9, 0.8   # warm\n\n[fog]\nstart_m = 10.0\n");
     EXPECT_EQ(e.place().line, 2) << e.what();
     EXPECT_EQ(e.place().column, 23) << e.what();
 }
@@ -56,7 +56,7 @@ TEST(TomlMessages, MissingBracketBeforeATableHeaderIsReportedOnTheArraysLine)
 TEST(TomlMessages, MissingCommaInAOneElementALineArrayStaysWhereTheParserStopped)
 {
     // The '[' ends its line: the fault is the missing comma after 6.0, not a bracket.
-    const swell::InputError e = errorOf("[camera]\nposition_m = [\n  0.0,\n  6.0\n  0.0\n]\n");
+    const swell::InputError e = tomlError("[camera]\nposition_m = [\n  0.0,\n  6.0\n  0.0\n]\n");
     EXPECT_EQ(e.place().line, 5) << e.what();
     EXPECT_EQ(e.message().find("no closing"), std::string::npos) << e.message();
 }
@@ -66,14 +66,14 @@ TEST(TomlMessages, MissingCommaInAOneElementALineArrayStaysWhereTheParserStopped
 // missing, at the opening quote.
 TEST(TomlMessages, AStringWithoutItsClosingQuoteIsReportedAtItsOpeningQuote)
 {
-    const swell::InputError e = errorOf("[[objects]]\npath = \"builtin:boat\nfloats = true\n");
+    const swell::InputError e = tomlError("[[objects]]\npath = \"builtin:boat\nfloats = true\n");
     EXPECT_EQ(e.place().line, 2) << e.what();
     EXPECT_EQ(e.place().column, 8) << e.what();
     EXPECT_NE(e.message().find("no closing \" before the end of its line"), std::string::npos) << e.message();
     EXPECT_EQ(e.message().find("control character"), std::string::npos) << e.message();
 
     // A closed string and a quote in a comment before it do not count.
-    const swell::InputError literal = errorOf("[[objects]]\npath = 'a' # \"\nhull_node = 'Hull\n");
+    const swell::InputError literal = tomlError("[[objects]]\npath = 'a' # \"\nhull_node = 'Hull\n");
     EXPECT_EQ(literal.place().line, 3) << literal.what();
     EXPECT_EQ(literal.place().column, 13) << literal.what();
     EXPECT_NE(literal.message().find("no closing '"), std::string::npos) << literal.message();
@@ -83,9 +83,9 @@ TEST(TomlMessages, AStringWithoutItsClosingQuoteIsReportedAtItsOpeningQuote)
 // though it is further than a typo from what was written.
 TEST(TomlMessages, AKeyInAnotherUnitSuggestsTheKeyAndItsUnit)
 {
-    const swell::InputError e = errorOf("[waves.wind]\ndirection_rad = 1.2\n");
+    const swell::InputError e = tomlError("[waves.wind]\ndirection_rad = 1.2\n");
     EXPECT_NE(e.message().find("did you mean 'waves.wind.direction_deg', in deg?"), std::string::npos) << e.message();
-    const swell::InputError inItem = errorOf("[[camera.path]]\nyaw_rad = 1.2\n");
+    const swell::InputError inItem = tomlError("[[camera.path]]\nyaw_rad = 1.2\n");
     EXPECT_NE(inItem.message().find("did you mean 'camera.path[0].yaw_deg', in deg?"), std::string::npos)
         << inItem.message();
 }

@@ -24,7 +24,7 @@ namespace {
 
 class AtmosphereGpu : public swell::test::GlTest {};
 
-const char* const kProbe = R"(
+const char* const kAtmosphereGpuProbe = R"(
 #include "atmosphere.glsl"
 layout(local_size_x = 64) in;
 // Each: altitude (m), the sun's zenith cosine, the view's, the cosine between them.
@@ -75,7 +75,7 @@ TEST_F(AtmosphereGpu, MultipleScatteringLookupsAreTheCppModels)
         textures.bind();
 
         const std::vector<glm::vec4> in = points();
-        const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
+        const swell::gl::Program program = swell::test::buildShaderProbe(kAtmosphereGpuProbe);
         glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "atmosphereMieScale"), 1.0f);
         glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "atmosphereRayleighScale"), float(rayleighScale));
         const std::vector<glm::vec4> out =

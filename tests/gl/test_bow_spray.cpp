@@ -27,10 +27,10 @@ using namespace swell;
 
 class BowSpray : public test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 180};
+constexpr glm::ivec2 kBowSpraySize{320, 180};
 // At t = 0 a body under way passes its position_m (docs/BODIES.md): the
 // hull under way and the hull at rest are in the same place.
-constexpr double kTime_s = 0.0;
+constexpr double kBowSprayTime_s = 0.0;
 // The preset's heading of travel, 40 degrees from +x towards +z.
 const glm::dvec3 kHeading(0.766044443, 0.0, 0.642787610);
 
@@ -44,7 +44,7 @@ Scene gale(double wind_mps, bool spray, double speed_mps, bool crestSpray = fals
     scene.objects.at(0).velocity_m_per_s = kHeading * speed_mps;
     // Six seconds of steps, and no wake (its steps would cost the most):
     // the spray needs neither more history nor the wake.
-    scene.historyStart_s = kTime_s - 6.0;
+    scene.historyStart_s = kBowSprayTime_s - 6.0;
     scene.wake.enabled = false;
     // The deck opened, the sun lighting the spray (as tests/gl/test_spray.cpp).
     scene.sky.clouds.cover = 0.0;
@@ -64,18 +64,18 @@ Camera overTheBow(const Scene& scene)
     return c;
 }
 
-Image still(const Scene& scene, const Camera& camera, double time_s = kTime_s)
+Image still(const Scene& scene, const Camera& camera, double time_s = kBowSprayTime_s)
 {
     Renderer renderer(scene);
-    return renderer.renderImage(camera, time_s, kSize);
+    return renderer.renderImage(camera, time_s, kBowSpraySize);
 }
 
 glm::dvec2 toPixel(const Camera& camera, glm::dvec3 p)
 {
     const glm::dmat4 viewProj =
-        camera.projection(double(kSize.x) / kSize.y) * camera.viewRelativeTo(camera.position_m);
+        camera.projection(double(kBowSpraySize.x) / kBowSpraySize.y) * camera.viewRelativeTo(camera.position_m);
     const glm::dvec4 c = viewProj * glm::dvec4(p - camera.position_m, 1.0);
-    return {(c.x / c.w + 1.0) * 0.5 * kSize.x, (1.0 - c.y / c.w) * 0.5 * kSize.y};
+    return {(c.x / c.w + 1.0) * 0.5 * kBowSpraySize.x, (1.0 - c.y / c.w) * 0.5 * kBowSpraySize.y};
 }
 
 // What the spray added: pixels changed and lighter, and the brightness it
@@ -244,7 +244,7 @@ TEST_F(BowSpray, SheetsFromBothSidesOfTheBowInAHeadWind)
     const double heading_deg = std::atan2(kHeading.z, kHeading.x) * 180.0 / 3.14159265358979;
     const FromAbove r = fromAbove(heading_deg + 180.0);
     const Added& a = r.added;
-    EXPECT_GT(a.pixels, kSize.x * kSize.y / 200) << "too little spray from a bow at 5 m/s in a gale";
+    EXPECT_GT(a.pixels, kBowSpraySize.x * kBowSpraySize.y / 200) << "too little spray from a bow at 5 m/s in a gale";
     EXPECT_GT(a.lighter, a.pixels * 9 / 10) << "bow spray is white water over a dark sea";
     EXPECT_GT(a.left, 0.3 * (a.left + a.right)) << "too little spray on the bow's left";
     EXPECT_GT(a.right, 0.3 * (a.left + a.right)) << "too little spray on the bow's right";
@@ -275,8 +275,8 @@ TEST_F(BowSpray, StillsReproduceBitForBitWhateverCameBefore)
     // the last two seconds before it (the bodies step on from there).
     Renderer sequence(scene);
     for (const double t : {-4.0, 2.5, -2.0})
-        sequence.renderImage(camera, t, kSize);
-    const Image arrived = sequence.renderImage(camera, kTime_s, kSize);
+        sequence.renderImage(camera, t, kBowSpraySize);
+    const Image arrived = sequence.renderImage(camera, kBowSprayTime_s, kBowSpraySize);
     EXPECT_TRUE(first.rgba == arrived.rgba) << "the frame depends on the frames before it";
 }
 

@@ -25,11 +25,11 @@ namespace {
 class Caustics : public swell::test::GlTest {};
 
 // A high sun, off to one side: its rays reach the slices drifted.
-const glm::vec3 kSun = glm::normalize(glm::vec3(-0.3f, 0.8f, -0.5f));
+const glm::vec3 kCausticsSun = glm::normalize(glm::vec3(-0.3f, 0.8f, -0.5f));
 // A low one, 10 degrees up: the level surface reflects a third of its light.
 const glm::vec3 kLowSun = glm::normalize(glm::vec3(0.98f, 0.17f, 0.0f));
 // The water's absorption in tests/golden's scenes, 1/m (r, g, b).
-const glm::vec3 kAbsorption_per_m(0.40f, 0.07f, 0.09f);
+const glm::vec3 kCausticsAbsorption_per_m(0.40f, 0.07f, 0.09f);
 
 using swell::test::fresnelAirToWater;
 
@@ -77,7 +77,7 @@ void main()
 
 class CausticsRun {
 public:
-    explicit CausticsRun(const swell::WaveModel& model, glm::vec3 sun = kSun)
+    explicit CausticsRun(const swell::WaveModel& model, glm::vec3 sun = kCausticsSun)
         : drawn_(model.createGpu(swell::gl::ShaderSources::embedded()), sun)
     {
     }
@@ -115,8 +115,8 @@ public:
         glNamedBufferData(buffer.id(), kPoints * sizeof(glm::vec4), nullptr, GL_DYNAMIC_READ);
         glUseProgram(program.id());
         glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "depth_m"), depth_m);
-        glProgramUniform3f(program.id(), glGetUniformLocation(program.id(), "absorption_per_m"), kAbsorption_per_m.r,
-                           kAbsorption_per_m.g, kAbsorption_per_m.b);
+        glProgramUniform3f(program.id(), glGetUniformLocation(program.id(), "absorption_per_m"), kCausticsAbsorption_per_m.r,
+                           kCausticsAbsorption_per_m.g, kCausticsAbsorption_per_m.b);
         drawn_.map().bind();
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
         glDispatchCompute(kPoints / 64, 1, 1);
@@ -139,9 +139,9 @@ private:
 // E sun.y: Fresnel's transmittance, then Beer-Lambert along the refracted ray.
 glm::dvec3 expectedFloor(double depth_m)
 {
-    const double cosI = kSun.y;
+    const double cosI = kCausticsSun.y;
     const double path_m = depth_m / refractedCosine(cosI);
-    return (1.0 - fresnelAirToWater(cosI)) * glm::exp(-glm::dvec3(kAbsorption_per_m) * path_m);
+    return (1.0 - fresnelAirToWater(cosI)) * glm::exp(-glm::dvec3(kCausticsAbsorption_per_m) * path_m);
 }
 
 TEST_F(Caustics, FlatWaterLetsTheSunsTransmittedLightDownEverywhere)
@@ -149,7 +149,7 @@ TEST_F(Caustics, FlatWaterLetsTheSunsTransmittedLightDownEverywhere)
     const swell::FlatModel flat;
     const CausticsRun run(flat);
     EXPECT_EQ(run.triangles(), 2LL * SWELL_CAUSTICS_CELLS * SWELL_CAUSTICS_CELLS);
-    const double transmittance = 1.0 - fresnelAirToWater(kSun.y);
+    const double transmittance = 1.0 - fresnelAirToWater(kCausticsSun.y);
     for (const SliceStats& s : run.slices()) {
         // The bound: the mean within 5% of the transmitted light.
         EXPECT_NEAR(s.mean, transmittance, 0.05 * transmittance);
@@ -175,7 +175,7 @@ TEST_F(Caustics, FlatWaterLetsTheSunsTransmittedLightDownEverywhere)
 
 TEST_F(Caustics, WavesMoveTheLightAboutKeepingItsMeanAndSharpenWithSlope)
 {
-    const double transmittance = 1.0 - fresnelAirToWater(kSun.y);
+    const double transmittance = 1.0 - fresnelAirToWater(kCausticsSun.y);
     std::vector<std::vector<SliceStats>> byScale;
     std::vector<glm::dvec3> floors;
     for (double scale : {1.0, 2.0}) {

@@ -31,7 +31,7 @@ namespace {
 
 class CloudsGpu : public swell::test::GlTest {};
 
-const char* const kProbe = R"(
+const char* const kCloudsProbe = R"(
 #include "clouds.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Directions { vec4 directions[]; };
@@ -49,7 +49,7 @@ void main()
 // For each direction: transmittance, optical depth, distance, footprint.
 std::vector<glm::vec4> gpuLayer(const swell::CloudSettings& clouds, const std::vector<glm::vec4>& directions)
 {
-    const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
+    const swell::gl::Program program = swell::test::buildShaderProbe(kCloudsProbe);
     auto uniform = [&](const char* name, double v) {
         glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), name), float(v));
     };

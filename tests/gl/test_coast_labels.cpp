@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 class CoastLabels : public swell::test::GlTest {};
 
 // The world direction of the ray through pixel (x, y)'s centre, unit.
-glm::dvec3 pixelRay(const swell::CameraCalibration& c, int x, int y)
+glm::dvec3 coastLabelsPixelRay(const swell::CameraCalibration& c, int x, int y)
 {
     const glm::dvec3 camera((x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px, 1.0);
     return glm::normalize(glm::dmat3(c.worldFromCamera) * camera);
@@ -81,7 +81,7 @@ TEST_F(CoastLabels, SurfAndWetSandAreWhereTheShoreHasThem)
             const std::uint16_t s = labels.semantic[i];
             if (!std::isfinite(labels.range_m[i]))
                 continue;
-            const glm::dvec3 p = camera.position_m + double(labels.range_m[i]) * pixelRay(labels.camera, x, y);
+            const glm::dvec3 p = camera.position_m + double(labels.range_m[i]) * coastLabelsPixelRay(labels.camera, x, y);
             const double floor_m = seabed.elevation_m({p.x, p.z});
             // The height a pixel's footprint spans up the beach at its
             // grazing angle: a pixel on the boundary may lie either side.
@@ -137,7 +137,7 @@ TEST_F(CoastLabels, SurfAndWetSandAreWhereTheShoreHasThem)
             const std::uint16_t s = underwater.semantic[i];
             if (!swell::isGroundClass(s) || !std::isfinite(underwater.range_m[i]))
                 continue;
-            const glm::dvec3 p = below.position_m + double(underwater.range_m[i]) * pixelRay(underwater.camera, x, y);
+            const glm::dvec3 p = below.position_m + double(underwater.range_m[i]) * coastLabelsPixelRay(underwater.camera, x, y);
             if (p.y >= -0.05)
                 continue;
             ++floorSeen;

@@ -31,9 +31,9 @@ class DrawnSurfaceTest : public swell::test::GlTest {};
 
 // Float positions carry ~1e-7 of up to ~100 lattice steps: far below this
 // (as in test_wave_agreement.cpp).
-constexpr double kTieMargin = 1e-4;
+constexpr double kDrawnSurfaceTieMargin = 1e-4;
 
-struct Result {
+struct DrawnSurfaceResult {
     int compared = 0, missed = 0;
     double worst_m = 0.0;
 };
@@ -41,7 +41,7 @@ struct Result {
 // The comparison in a given renderer (its scene: scene), which may have drawn
 // other times before: what it draws at a time does not depend on the frames
 // before (BodiesRender.SameTimeSameImageHoweverTheFramesFell).
-Result compareAtCentroids(swell::Renderer& renderer, const swell::Scene& scene, glm::dvec3 eye_m, double time_s)
+DrawnSurfaceResult compareAtCentroids(swell::Renderer& renderer, const swell::Scene& scene, glm::dvec3 eye_m, double time_s)
 {
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.position_m = eye_m;
@@ -59,12 +59,12 @@ Result compareAtCentroids(swell::Renderer& renderer, const swell::Scene& scene, 
     const int last = int(std::lround(std::sqrt(double(count)))) - 1;
     auto usable = [&](std::uint32_t v) {
         const swell::test::WaterVertex& w = cpu[v];
-        return w.snapMargin >= kTieMargin && w.i > 0 && w.j > 0 && w.i < last && w.j < last;
+        return w.snapMargin >= kDrawnSurfaceTieMargin && w.i > 0 && w.j > 0 && w.i < last && w.j < last;
     };
 
     const swell::DrawnSurface drawn = renderer.drawnSurface(camera, time_s);
     const glm::dvec3 origin(eye_m.x, 0.0, eye_m.z);
-    Result r;
+    DrawnSurfaceResult r;
     // Every 7th drawn triangle: thousands, spread over the whole view.
     for (size_t t = 0; t + 2 < triangles.size(); t += 3 * 7) {
         if (!usable(triangles[t]) || !usable(triangles[t + 1]) || !usable(triangles[t + 2]))
@@ -86,7 +86,7 @@ Result compareAtCentroids(swell::Renderer& renderer, const swell::Scene& scene, 
     return r;
 }
 
-Result compareAtCentroids(const swell::Scene& scene, glm::dvec3 eye_m, double time_s,
+DrawnSurfaceResult compareAtCentroids(const swell::Scene& scene, glm::dvec3 eye_m, double time_s,
                           std::shared_ptr<const swell::SurfaceSource> source = nullptr)
 {
     swell::Renderer renderer(scene);
@@ -95,7 +95,7 @@ Result compareAtCentroids(const swell::Scene& scene, glm::dvec3 eye_m, double ti
     return compareAtCentroids(renderer, scene, eye_m, time_s);
 }
 
-void expectAgreement(const Result& r, double time_s)
+void expectAgreement(const DrawnSurfaceResult& r, double time_s)
 {
     SCOPED_TRACE("t = " + std::to_string(time_s));
     EXPECT_GT(r.compared, 1000);
@@ -316,7 +316,7 @@ TEST_F(DrawnSurfaceTest, AHostsSurfaceSourceIsInTheDrawnTrianglesAlike)
     const glm::dvec3 eye(3.7, 6.0, -12.2);
     for (const double t : {9.0, 12.0}) {
         SCOPED_TRACE("t = " + std::to_string(t));
-        const Result r = compareAtCentroids(plainScene(), eye, t, ring);
+        const DrawnSurfaceResult r = compareAtCentroids(plainScene(), eye, t, ring);
         EXPECT_GT(r.compared, 1000);
         EXPECT_EQ(r.missed, 0);
         EXPECT_LT(r.worst_m, 1e-3);

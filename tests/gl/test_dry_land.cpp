@@ -43,7 +43,7 @@ constexpr double kShoreReach_m = 0.1;
 constexpr double kIslandDetail_m = 1000.0;
 
 // The world direction of the ray through pixel (x, y)'s centre, unit.
-glm::dvec3 pixelRay(const swell::CameraCalibration& c, int x, int y)
+glm::dvec3 dryLandPixelRay(const swell::CameraCalibration& c, int x, int y)
 {
     const glm::dvec3 camera((x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px, 1.0);
     return glm::normalize(glm::dmat3(c.worldFromCamera) * camera);
@@ -81,7 +81,7 @@ Wet waterOverLand(swell::Renderer& renderer, const swell::Seabed& seabed, const 
             if (labels.range_m[i] > kIslandDetail_m && besideAnotherClass(labels.semantic, size, x, y))
                 continue;
             ++wet.waterPixels;
-            const glm::dvec3 p = camera.position_m + double(labels.range_m[i]) * pixelRay(labels.camera, x, y);
+            const glm::dvec3 p = camera.position_m + double(labels.range_m[i]) * dryLandPixelRay(labels.camera, x, y);
             const double floor_m = seabed.elevation_m({p.x, p.z});
             wet.highest_m = std::max(wet.highest_m, floor_m);
             if (floor_m > kShoreReach_m) {

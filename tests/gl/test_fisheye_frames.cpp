@@ -69,7 +69,7 @@ glm::dvec2 pixelOf(const swell::CameraCalibration& c, glm::dvec3 world_m)
     return {c.fx_px * thetaD(c, theta) * p.x / r + c.cx_px, c.fy_px * thetaD(c, theta) * p.y / r + c.cy_px};
 }
 
-double quantile(std::vector<double> v, double q)
+double fisheyeFramesQuantile(std::vector<double> v, double q)
 {
     if (v.empty())
         return 0.0;
@@ -160,17 +160,17 @@ TEST_F(FisheyeFrames, EachPixelsLabelsLieAlongTheRayThePublishedEquationsGiveIt)
         }
     EXPECT_EQ(wrongSide, 0);
     EXPECT_GT(waterOff_px.size(), std::size_t(size.x * size.y / 3));
-    EXPECT_EQ(farOff, 0) << "water pixels' points: median " << quantile(waterOff_px, 0.5) << " px, 99th percentile "
-                         << quantile(waterOff_px, 0.99) << " px, worst " << quantile(waterOff_px, 1.0) << " px";
+    EXPECT_EQ(farOff, 0) << "water pixels' points: median " << fisheyeFramesQuantile(waterOff_px, 0.5) << " px, 99th percentile "
+                         << fisheyeFramesQuantile(waterOff_px, 0.99) << " px, worst " << fisheyeFramesQuantile(waterOff_px, 1.0) << " px";
     EXPECT_GT(buoyErrors_m.size(), 100u);
-    EXPECT_LE(quantile(buoyErrors_m, 0.5), 0.001);
-    EXPECT_LE(buoyOff, int(buoyErrors_m.size()) / 10) << "median " << quantile(buoyErrors_m, 0.5) << " m";
+    EXPECT_LE(fisheyeFramesQuantile(buoyErrors_m, 0.5), 0.001);
+    EXPECT_LE(buoyOff, int(buoyErrors_m.size()) / 10) << "median " << fisheyeFramesQuantile(buoyErrors_m, 0.5) << " m";
     // The buoy's box is measured on the fisheye's mask: it holds every buoy pixel.
     ASSERT_EQ(labels.objects.size(), 1u);
     EXPECT_GT(labels.objects[0].visiblePixels, 100);
     std::printf("fisheye: water points worst %.3g px (median %.3g) over %zu pixels; buoy median %.3g m over %zu\n",
-                quantile(waterOff_px, 1.0), quantile(waterOff_px, 0.5), waterOff_px.size(),
-                quantile(buoyErrors_m, 0.5), buoyErrors_m.size());
+                fisheyeFramesQuantile(waterOff_px, 1.0), fisheyeFramesQuantile(waterOff_px, 0.5), waterOff_px.size(),
+                fisheyeFramesQuantile(buoyErrors_m, 0.5), buoyErrors_m.size());
 }
 
 // The widest field the fisheye draws at 160x120: an equidistant fisheye

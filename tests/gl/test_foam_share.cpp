@@ -16,7 +16,7 @@ namespace {
 
 class FoamShare : public swell::test::GlTest {};
 
-const char* const kProbe = R"(
+const char* const kFoamShareProbe = R"(
 #include "whitecap_foam.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Amounts { vec2 amounts[]; }; // amount, breakingFoamAmount
@@ -40,7 +40,7 @@ TEST_F(FoamShare, TheLooksShareIsItsCppTwins)
             pairs.push_back(float(std::exp(-swell::foam::kBreakingFoamAge_s / lifetime_s)));
         }
     const size_t n = pairs.size() / 2;
-    const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
+    const swell::gl::Program program = swell::test::buildShaderProbe(kFoamShareProbe);
     const std::vector<float> got = swell::test::runShaderProbe<float, float>(program, pairs, n, GLuint(n / 64));
     double worst = 0.0, total = 0.0;
     for (size_t i = 0; i < n; ++i) {

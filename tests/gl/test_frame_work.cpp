@@ -29,7 +29,7 @@ using namespace swell;
 
 class FrameWork : public test::GlTest {};
 
-constexpr glm::ivec2 kSize{32, 18};
+constexpr glm::ivec2 kFrameWorkSize{32, 18};
 constexpr double kFrame_s = 1.0 / 60.0;
 
 // What a view in the air over the storm's sea (20 m/s: past the spray's
@@ -48,7 +48,7 @@ static_assert(kSprayBytes == 2555936, "today's 64^2 cells of 12 slots");
 // the frame and the reset of the tiles' draw command (four uints). The
 // tiles listed are the GPU's to count.
 constexpr int kWaterDispatches = 1, kWaterBarriers = 2;
-constexpr long long kWaterBytes = 4LL * kSize.x * kSize.y + 16;
+constexpr long long kWaterBytes = 4LL * kFrameWorkSize.x * kFrameWorkSize.y + 16;
 static_assert(kWaterBytes == 2320, "32 x 18 pixels of 4 bytes, and 16");
 
 // Texels of levels 1 .. log2(size) of a square mip chain, `layers` layers.
@@ -66,8 +66,8 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     const Scene scene = test::openSpectralStorm();
     Renderer renderer(scene);
     const Camera camera = cameraAt(scene.camera, 0.0);
-    renderer.renderImage(camera, 0.0, kSize); // the first frame replays the foam's history
-    renderer.renderImage(camera, kFrame_s, kSize);
+    renderer.renderImage(camera, 0.0, kFrameWorkSize); // the first frame replays the foam's history
+    renderer.renderImage(camera, kFrame_s, kFrameWorkSize);
     const FrameCounters& c = renderer.counters();
     ASSERT_EQ(c.oceanTransforms, 1);
     ASSERT_EQ(c.foamSteps, 1);
@@ -141,7 +141,7 @@ TEST_F(FrameWork, AViewUnderTheWaterCountsTheCausticsMapsClearAndMipChain)
     Renderer renderer(scene);
     Camera camera = cameraAt(scene.camera, 0.0);
     camera.position_m.y = -6.0;
-    renderer.renderImage(camera, 0.0, kSize);
+    renderer.renderImage(camera, 0.0, kFrameWorkSize);
     const FrameCounters& c = renderer.counters();
     ASSERT_GT(c.causticsTriangles, 0) << "the view under the water drew the caustics map";
     long long texels = 0;
@@ -160,7 +160,7 @@ TEST_F(FrameWork, AViewUnderTheWaterCountsTheCausticsMapsClearAndMipChain)
     EXPECT_EQ(c.viewsGpu.bytesWritten, 25182236 + kWaterBytes);
 
     camera.position_m.y = 40.0;
-    renderer.renderImage(camera, 1.0, kSize);
+    renderer.renderImage(camera, 1.0, kFrameWorkSize);
     EXPECT_EQ(renderer.counters().causticsTriangles, 0);
     EXPECT_EQ(renderer.counters().viewsGpu.mipmaps, 0);
     EXPECT_EQ(renderer.counters().viewsGpu.bytesWritten, kSprayBytes + kWaterBytes);
@@ -206,11 +206,11 @@ TEST_F(FrameWork, SimulationCpuTimeIsTheCallingThreadsWithoutTheObserver)
     const Scene scene = test::openSpectralStorm();
     Renderer renderer(scene);
     const Camera camera = cameraAt(scene.camera, 0.0);
-    renderer.renderImage(camera, 0.0, kSize); // shaders compiled, the history replayed
+    renderer.renderImage(camera, 0.0, kFrameWorkSize); // shaders compiled, the history replayed
     BusyObserver observer;
     renderer.setPassObserver(&observer);
     const double before_ms = threadCpu_ms();
-    renderer.renderImage(camera, kFrame_s, kSize);
+    renderer.renderImage(camera, kFrame_s, kFrameWorkSize);
     const double around_ms = threadCpu_ms() - before_ms;
     renderer.setPassObserver(nullptr);
 
@@ -241,10 +241,10 @@ TEST_F(FrameWork, TheSpectralStepsStagesArePassesInsideTheOceanPass)
     const Scene scene = test::openSpectralStorm();
     Renderer renderer(scene);
     const Camera camera = cameraAt(scene.camera, 0.0);
-    renderer.renderImage(camera, 0.0, kSize);
+    renderer.renderImage(camera, 0.0, kFrameWorkSize);
     PassLog observer;
     renderer.setPassObserver(&observer);
-    renderer.renderImage(camera, kFrame_s, kSize);
+    renderer.renderImage(camera, kFrame_s, kFrameWorkSize);
     renderer.setPassObserver(nullptr);
     EXPECT_EQ(observer.depth, 0);
     const std::vector<std::string> expected{

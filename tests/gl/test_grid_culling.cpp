@@ -21,7 +21,7 @@
 
 namespace {
 
-struct Case {
+struct GridCullingCase {
     swell::GridLayout layout;
     glm::dvec3 position_m;
     double yaw_deg, pitch_deg;
@@ -46,20 +46,20 @@ std::string nameNumber(double x)
 // What the name (caseName) leaves out, the camera's place: GetParam() is
 // otherwise the struct's bytes, its padding included, which differ from
 // build to build.
-void PrintTo(const Case& c, std::ostream* os)
+void PrintTo(const GridCullingCase& c, std::ostream* os)
 {
     *os << "camera at (" << c.position_m.x << ", " << c.position_m.y << ", " << c.position_m.z << ") m";
 }
 
 // The test's name: layout, camera height, yaw, pitch and wind (every case
 // differs in one of them), e.g. Geometric_H6_Yaw0_Pitchm5_Wind20.
-std::string caseName(const Case& c)
+std::string caseName(const GridCullingCase& c)
 {
     return swell::paramName(c.layout) + "_H" + nameNumber(c.position_m.y) + "_Yaw" + nameNumber(c.yaw_deg) + "_Pitch" +
            nameNumber(c.pitch_deg) + "_Wind" + nameNumber(c.windSpeed_mps);
 }
 
-class GridCulling : public swell::test::GlTest, public testing::WithParamInterface<Case> {};
+class GridCulling : public swell::test::GlTest, public testing::WithParamInterface<GridCullingCase> {};
 
 // Bits of the clip-space planes a point lies outside of.
 unsigned outcode(const glm::dvec4& c)
@@ -70,7 +70,7 @@ unsigned outcode(const glm::dvec4& c)
 
 TEST_P(GridCulling, EveryTriangleThatReachesTheViewIsDrawn)
 {
-    const Case c = GetParam();
+    const GridCullingCase c = GetParam();
     swell::Scene scene = swell::defaultScene();
     scene.objects.clear();
     scene.showTerrain = false;
@@ -135,18 +135,18 @@ TEST_P(GridCulling, EveryTriangleThatReachesTheViewIsDrawn)
 
 INSTANTIATE_TEST_SUITE_P(
     Views, GridCulling,
-    testing::Values(Case{swell::GridLayout::Geometric, {0.0, 6.0, 0.0}, 0.0, -5.0},
-                    Case{swell::GridLayout::Geometric, {123.4, 2.0, -56.7}, 137.0, -1.0},
-                    Case{swell::GridLayout::Geometric, {-40.0, 60.0, 10.0}, -60.0, -35.0},
-                    Case{swell::GridLayout::Geometric, {5.0e5, 12.0, -3.0e5}, 250.0, 10.0},
+    testing::Values(GridCullingCase{swell::GridLayout::Geometric, {0.0, 6.0, 0.0}, 0.0, -5.0},
+                    GridCullingCase{swell::GridLayout::Geometric, {123.4, 2.0, -56.7}, 137.0, -1.0},
+                    GridCullingCase{swell::GridLayout::Geometric, {-40.0, 60.0, 10.0}, -60.0, -35.0},
+                    GridCullingCase{swell::GridLayout::Geometric, {5.0e5, 12.0, -3.0e5}, 250.0, 10.0},
                     // Cameras in the morph between scales: vertices between two lattices.
-                    Case{swell::GridLayout::Geometric, {17.0, 25.0, -33.0}, 75.0, -15.0},
-                    Case{swell::GridLayout::Geometric, {-250.3, 4.0, 71.9}, -120.0, -3.0},
-                    Case{swell::GridLayout::Geometric, {17.0, 25.0, -33.0}, 75.0, -15.0, 2.0},
-                    Case{swell::GridLayout::Geometric, {-250.3, 4.0, 71.9}, -120.0, -3.0, 2.0},
-                    Case{swell::GridLayout::Geometric, {31.0, 40.0, 7.0}, 10.0, -45.0, 2.0},
-                    Case{swell::GridLayout::Paper, {0.0, 6.0, 0.0}, 45.0, -5.0},
-                    Case{swell::GridLayout::Paper, {-7.0, 25.0, 3.0}, 200.0, -50.0}),
-    [](const testing::TestParamInfo<Case>& view) { return caseName(view.param); });
+                    GridCullingCase{swell::GridLayout::Geometric, {17.0, 25.0, -33.0}, 75.0, -15.0},
+                    GridCullingCase{swell::GridLayout::Geometric, {-250.3, 4.0, 71.9}, -120.0, -3.0},
+                    GridCullingCase{swell::GridLayout::Geometric, {17.0, 25.0, -33.0}, 75.0, -15.0, 2.0},
+                    GridCullingCase{swell::GridLayout::Geometric, {-250.3, 4.0, 71.9}, -120.0, -3.0, 2.0},
+                    GridCullingCase{swell::GridLayout::Geometric, {31.0, 40.0, 7.0}, 10.0, -45.0, 2.0},
+                    GridCullingCase{swell::GridLayout::Paper, {0.0, 6.0, 0.0}, 45.0, -5.0},
+                    GridCullingCase{swell::GridLayout::Paper, {-7.0, 25.0, 3.0}, 200.0, -50.0}),
+    [](const testing::TestParamInfo<GridCullingCase>& view) { return caseName(view.param); });
 
 } // namespace

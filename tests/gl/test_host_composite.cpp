@@ -33,7 +33,7 @@ using swell::test::HostBox;
 using swell::test::HostScene;
 using swell::test::HostTarget;
 
-constexpr glm::ivec2 kSize{320, 180};
+constexpr glm::ivec2 kHostCompositeSize{320, 180};
 const glm::vec4 kHostClear{0.1f, 0.9f, 0.1f, 1.0f}; // a green no water or sky has
 const glm::vec3 kCubeColor{1.0f, 0.0f, 0.0f};
 const glm::vec3 kWallColor{0.6f, 0.6f, 0.65f};
@@ -80,9 +80,9 @@ swell::View hostView(const Config& c)
     camera.position_m = {0.0, c.level_m + 3.0, 0.0};
     camera.pitch_deg = -6.0;
     camera.roll_deg = c.roll_deg;
-    swell::View view = swell::viewOf(camera, kSize);
+    swell::View view = swell::viewOf(camera, kHostCompositeSize);
     if (c.reversedZ) {
-        view.projection = reversedInfinite(camera.fovY_deg, double(kSize.x) / kSize.y, camera.near_m);
+        view.projection = reversedInfinite(camera.fovY_deg, double(kHostCompositeSize.x) / kHostCompositeSize.y, camera.near_m);
         view.depth = swell::DepthMode::Reversed;
     }
     return view;
@@ -95,7 +95,7 @@ struct Pixels {
     std::vector<std::uint8_t> rgba;
     glm::u8vec4 at(int x, int y) const
     {
-        const std::size_t i = (std::size_t(y) * kSize.x + std::size_t(x)) * 4;
+        const std::size_t i = (std::size_t(y) * kHostCompositeSize.x + std::size_t(x)) * 4;
         return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
     }
 };
@@ -104,12 +104,12 @@ struct Pixels {
 void writeFrame(const Pixels& p, const std::string& name)
 {
     swell::Image image;
-    image.width = kSize.x;
-    image.height = kSize.y;
+    image.width = kHostCompositeSize.x;
+    image.height = kHostCompositeSize.y;
     image.rgba.resize(p.rgba.size());
-    const std::size_t row = std::size_t(kSize.x) * 4;
-    for (int y = 0; y < kSize.y; ++y)
-        std::copy_n(&p.rgba[std::size_t(kSize.y - 1 - y) * row], row, &image.rgba[std::size_t(y) * row]);
+    const std::size_t row = std::size_t(kHostCompositeSize.x) * 4;
+    for (int y = 0; y < kHostCompositeSize.y; ++y)
+        std::copy_n(&p.rgba[std::size_t(kHostCompositeSize.y - 1 - y) * row], row, &image.rgba[std::size_t(y) * row]);
     std::filesystem::create_directories(SWELL_TEST_OUTPUT_DIR);
     swell::writePng(image, std::string(SWELL_TEST_OUTPUT_DIR) + "/" + name + ".png");
 }
@@ -119,16 +119,16 @@ bool isRed(glm::u8vec4 p) { return p.r > 110 && p.g < 60 && p.b < 60; }
 // A mask of the pixels where `boxes` alone cover the frame, seen through viewProj.
 std::vector<bool> coverage(const std::vector<HostBox>& boxes, const swell::View& view, const glm::dmat4& world)
 {
-    HostTarget target(kSize, GL_RGBA8, view.depth == swell::DepthMode::Reversed ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24);
+    HostTarget target(kHostCompositeSize, GL_RGBA8, view.depth == swell::DepthMode::Reversed ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24);
     HostScene scene(boxes);
     swell::View v = view;
     v.view = view.view * world;
     swell::test::drawHostFrame(target, scene, v, glm::vec4(0.0f));
     const Pixels p{target.pixels()};
-    std::vector<bool> mask(std::size_t(kSize.x) * kSize.y);
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x)
-            mask[std::size_t(y) * kSize.x + std::size_t(x)] = p.at(x, y).a > 0;
+    std::vector<bool> mask(std::size_t(kHostCompositeSize.x) * kHostCompositeSize.y);
+    for (int y = 0; y < kHostCompositeSize.y; ++y)
+        for (int x = 0; x < kHostCompositeSize.x; ++x)
+            mask[std::size_t(y) * kHostCompositeSize.x + std::size_t(x)] = p.at(x, y).a > 0;
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     return mask;
 }
@@ -140,9 +140,9 @@ bool near(const std::vector<bool>& mask, int x, int y, int radius, bool all)
     for (int dy = -radius; dy <= radius; ++dy)
         for (int dx = -radius; dx <= radius; ++dx) {
             const int u = x + dx, v = y + dy;
-            if (u < 0 || v < 0 || u >= kSize.x || v >= kSize.y)
+            if (u < 0 || v < 0 || u >= kHostCompositeSize.x || v >= kHostCompositeSize.y)
                 continue;
-            const bool in = mask[std::size_t(v) * kSize.x + std::size_t(u)];
+            const bool in = mask[std::size_t(v) * kHostCompositeSize.x + std::size_t(u)];
             if (all && !in)
                 return false;
             if (!all && in)
@@ -162,7 +162,7 @@ TEST_P(HostComposite, TheHostsCubeIsMirroredItsWallHidesTheWaterAndNothingElseCh
     const swell::View view = hostView(c);
     const std::vector<HostBox> boxes{cube(c.level_m), wall(c.level_m)};
     HostScene host(boxes);
-    HostTarget target(kSize, GL_RGBA8, c.reversedZ ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24);
+    HostTarget target(kHostCompositeSize, GL_RGBA8, c.reversedZ ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24);
     swell::test::drawHostFrame(target, host, view, kHostClear);
     const Pixels before{target.pixels()};
 
@@ -186,12 +186,12 @@ TEST_P(HostComposite, TheHostsCubeIsMirroredItsWallHidesTheWaterAndNothingElseCh
     const glm::dmat4 inverse = glm::inverse(view.projection * view.view);
 
     int water = 0, reflected = 0, footprintOnWater = 0, strayRed = 0, unfilled = 0, changedHost = 0, changedSky = 0;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
-            const std::size_t i = std::size_t(y) * kSize.x + std::size_t(x);
+    for (int y = 0; y < kHostCompositeSize.y; ++y)
+        for (int x = 0; x < kHostCompositeSize.x; ++x) {
+            const std::size_t i = std::size_t(y) * kHostCompositeSize.x + std::size_t(x);
             const bool changed = after.at(x, y) != before.at(x, y);
             // The pixel's ray: does it head up, well above the horizon?
-            const glm::dvec2 ndc((x + 0.5) / kSize.x * 2.0 - 1.0, (y + 0.5) / kSize.y * 2.0 - 1.0);
+            const glm::dvec2 ndc((x + 0.5) / kHostCompositeSize.x * 2.0 - 1.0, (y + 0.5) / kHostCompositeSize.y * 2.0 - 1.0);
             const double nearZ = c.reversedZ ? 1.0 : -1.0;
             const glm::dvec4 p = inverse * glm::dvec4(ndc, nearZ, 1.0);
             const glm::dvec3 direction = glm::normalize(glm::dvec3(p) / p.w - view.eye_m());
@@ -215,7 +215,7 @@ TEST_P(HostComposite, TheHostsCubeIsMirroredItsWallHidesTheWaterAndNothingElseCh
                 unfilled += !red;
             }
         }
-    EXPECT_GT(water, kSize.x * kSize.y / 4) << "the water was drawn";
+    EXPECT_GT(water, kHostCompositeSize.x * kHostCompositeSize.y / 4) << "the water was drawn";
     EXPECT_EQ(changedHost, 0) << "the host's boxes hide the water behind them, and are not drawn over";
     EXPECT_EQ(changedSky, 0) << "nothing changes above the horizon (no sky asked for)";
     EXPECT_GT(footprintOnWater, 100) << "the cube's mirror image lies on the water";
@@ -237,15 +237,15 @@ TEST_P(HostComposite, TheHostsGeometryUnderTheWaterIsSeenThroughIt)
     camera.position_m = {0.0, c.level_m - 3.0, 0.0};
     camera.pitch_deg = -10.0;
     camera.roll_deg = c.roll_deg;
-    swell::View view = swell::viewOf(camera, kSize);
+    swell::View view = swell::viewOf(camera, kHostCompositeSize);
     if (c.reversedZ) {
-        view.projection = reversedInfinite(camera.fovY_deg, double(kSize.x) / kSize.y, camera.near_m);
+        view.projection = reversedInfinite(camera.fovY_deg, double(kHostCompositeSize.x) / kHostCompositeSize.y, camera.near_m);
         view.depth = swell::DepthMode::Reversed;
     }
     // A white block 12 m ahead, from 8 m down to 4 m down.
     const HostBox block{{-3.0, c.level_m - 8.0, -14.0}, {3.0, c.level_m - 4.0, -10.0}, {1.0f, 1.0f, 1.0f}};
     HostScene host({block});
-    HostTarget target(kSize, GL_RGBA16F, c.reversedZ ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24);
+    HostTarget target(kHostCompositeSize, GL_RGBA16F, c.reversedZ ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24);
     swell::test::drawHostFrame(target, host, view, kHostClear);
     renderer.advanceTo(10.0, view.eye_m());
     swell::DrawOptions options;

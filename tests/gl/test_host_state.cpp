@@ -30,7 +30,7 @@ namespace {
 
 using swell::test::GlTest;
 
-constexpr int kWidth = 160, kHeight = 90;
+constexpr int kHostStateWidth = 160, kHostStateHeight = 90;
 
 // A framebuffer with an sRGB colour attachment and a depth and stencil
 // buffer (a stencil test a host leaves on acts only where there is one).
@@ -40,14 +40,14 @@ struct SrgbTarget {
     swell::gl::Framebuffer framebuffer = swell::gl::Framebuffer::create();
     SrgbTarget()
     {
-        glTextureStorage2D(color.id(), 1, GL_SRGB8_ALPHA8, kWidth, kHeight);
-        glTextureStorage2D(depth.id(), 1, GL_DEPTH24_STENCIL8, kWidth, kHeight);
+        glTextureStorage2D(color.id(), 1, GL_SRGB8_ALPHA8, kHostStateWidth, kHostStateHeight);
+        glTextureStorage2D(depth.id(), 1, GL_DEPTH24_STENCIL8, kHostStateWidth, kHostStateHeight);
         glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
         glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth.id(), 0);
     }
     std::vector<std::uint8_t> pixels() const
     {
-        std::vector<std::uint8_t> rgba(std::size_t(kWidth) * kHeight * 4);
+        std::vector<std::uint8_t> rgba(std::size_t(kHostStateWidth) * kHostStateHeight * 4);
         glFinish();
         glGetTextureImage(color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
         return rgba;
@@ -64,7 +64,7 @@ swell::gl::Program hostProgram()
     return swell::gl::buildProgram(sources, {{GL_VERTEX_SHADER, "host.vert"}, {GL_FRAGMENT_SHADER, "host.frag"}});
 }
 
-int largestDifference(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b)
+int hostStateLargestDifference(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b)
 {
     int largest = 0;
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -82,7 +82,7 @@ TEST_F(HostState, FrameIsTheSameAfterAHostLeftSrgbBlendingScissorAndItsProgram)
     const swell::Camera camera = swell::cameraAt(scene.camera, time_s);
     SrgbTarget target;
 
-    renderer.render(camera, time_s, {kWidth, kHeight}, target.framebuffer.id());
+    renderer.render(camera, time_s, {kHostStateWidth, kHostStateHeight}, target.framebuffer.id());
     const std::vector<std::uint8_t> clean = target.pixels();
 
     // What a host (a UI library, a game's own passes) might leave behind.
@@ -102,7 +102,7 @@ TEST_F(HostState, FrameIsTheSameAfterAHostLeftSrgbBlendingScissorAndItsProgram)
     glDepthMask(GL_FALSE);
     glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
 
-    renderer.render(camera, time_s, {kWidth, kHeight}, target.framebuffer.id());
+    renderer.render(camera, time_s, {kHostStateWidth, kHostStateHeight}, target.framebuffer.id());
     glUseProgram(0);
     glBindVertexArray(0);
     glDisable(GL_FRAMEBUFFER_SRGB);
@@ -115,7 +115,7 @@ TEST_F(HostState, FrameIsTheSameAfterAHostLeftSrgbBlendingScissorAndItsProgram)
     const std::vector<std::uint8_t> hosted = target.pixels();
 
     // The same frame in the same context: the same pixels, exactly.
-    EXPECT_EQ(largestDifference(clean, hosted), 0);
+    EXPECT_EQ(hostStateLargestDifference(clean, hosted), 0);
     // And a frame was drawn: the sky is not black.
     int brightest = 0;
     for (std::uint8_t v : clean)
@@ -282,12 +282,12 @@ Work work(const swell::Scene& scene, const SrgbTarget& target, const SrgbTarget&
     {
         std::unique_ptr<HostileState> state = hostile ? std::make_unique<HostileState>() : nullptr;
         renderer.advanceTo(time_s, camera.position_m);
-        const swell::View view = swell::viewOf(camera, {kWidth, kHeight});
+        const swell::View view = swell::viewOf(camera, {kHostStateWidth, kHostStateHeight});
         renderer.draw(view, target.framebuffer.id(), {.sceneWorld = true});
         renderer.draw(view, through.framebuffer.id(),
                       {.sceneWorld = true, .renderScale = 0.5, .antialiasing = swell::Antialiasing::Msaa4});
-        const swell::Image image = renderer.renderImage(camera, time_s, {kWidth, kHeight});
-        const swell::FrameLabels labels = renderer.renderLabels(camera, {kWidth, kHeight});
+        const swell::Image image = renderer.renderImage(camera, time_s, {kHostStateWidth, kHostStateHeight});
+        const swell::FrameLabels labels = renderer.renderLabels(camera, {kHostStateWidth, kHostStateHeight});
         if (state)
             state->expectIntact();
         w.image = image.rgba;
@@ -311,10 +311,10 @@ TEST_F(HostState, EveryPieceOfHostileStateLeavesTheWorkAsInACleanContextAndIsPut
         // Frames were drawn: the sky lies over most of the frame.
         EXPECT_GT(std::count_if(clean.frame.begin(), clean.frame.end(), [](std::uint8_t v) { return v > 60; }),
                   long(clean.frame.size() / 4));
-        EXPECT_EQ(largestDifference(clean.frame, hostile.frame), 0) << preset << ": draw()";
-        EXPECT_EQ(largestDifference(clean.frameThrough, hostile.frameThrough), 0)
+        EXPECT_EQ(hostStateLargestDifference(clean.frame, hostile.frame), 0) << preset << ": draw()";
+        EXPECT_EQ(hostStateLargestDifference(clean.frameThrough, hostile.frameThrough), 0)
             << preset << ": draw() through the view's target";
-        EXPECT_EQ(largestDifference(clean.image, hostile.image), 0) << preset << ": renderImage()";
+        EXPECT_EQ(hostStateLargestDifference(clean.image, hostile.image), 0) << preset << ": renderImage()";
         EXPECT_TRUE(clean.range == hostile.range) << preset << ": renderLabels()' ranges";
         EXPECT_TRUE(clean.instance == hostile.instance) << preset << ": renderLabels()' instances";
     }

@@ -170,7 +170,7 @@ TEST_F(HostViews, LinearOutputIsTheDisplayFrameBeforeItsEncoding)
 }
 
 // What a host's passes leave, read back through GL.
-struct HostState {
+struct SavedHostState {
     GLint drawFramebuffer, readFramebuffer, program, vertexArray, activeTexture, depthFunc, frontFace, clipDepth;
     std::array<GLint, 4> viewport, scissor;
     std::array<GLboolean, 4> colorMask;
@@ -181,9 +181,9 @@ struct HostState {
     std::array<GLint, 4> blendFactors;
     GLint blendEquation;
 
-    static HostState read()
+    static SavedHostState read()
     {
-        HostState s{};
+        SavedHostState s{};
         glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &s.drawFramebuffer);
         glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &s.readFramebuffer);
         glGetIntegerv(GL_CURRENT_PROGRAM, &s.program);
@@ -213,7 +213,7 @@ struct HostState {
         glGetIntegerv(GL_BLEND_EQUATION_RGB, &s.blendEquation);
         return s;
     }
-    bool operator==(const HostState&) const = default;
+    bool operator==(const SavedHostState&) const = default;
 };
 
 // Unusual state a host may leave current when it calls draw().
@@ -260,18 +260,18 @@ TEST_F(HostViews, TheGlStateAHostLeftIsTheStateItFindsAfterADraw)
     options.sceneWorld = true;
     clearHost(target);
     const swell::gl::VertexArray vao = leaveUnusualState(other, boxes);
-    const HostState before = HostState::read();
+    const SavedHostState before = SavedHostState::read();
     renderer.draw(swell::viewOf(camera, kHalf), target.framebuffer(), options);
-    EXPECT_TRUE(HostState::read() == before) << "draw() put back every piece of state it changed";
+    EXPECT_TRUE(SavedHostState::read() == before) << "draw() put back every piece of state it changed";
     // From under the water, with the pass that fogs the host's geometry (blending).
     swell::Camera under = camera;
     under.position_m.y = -3.0;
     renderer.advanceTo(3.0, under.position_m);
     renderer.draw(swell::viewOf(under, kHalf), target.framebuffer(), options);
-    EXPECT_TRUE(HostState::read() == before) << "draw() from under the water put back every piece of state";
+    EXPECT_TRUE(SavedHostState::read() == before) << "draw() from under the water put back every piece of state";
     // And render(), which owns the frame, too.
     renderer.render(camera, 3.0, kHalf, target.framebuffer());
-    EXPECT_TRUE(HostState::read() == before) << "render() put back every piece of state it changed";
+    EXPECT_TRUE(SavedHostState::read() == before) << "render() put back every piece of state it changed";
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

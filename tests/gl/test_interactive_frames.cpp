@@ -18,7 +18,7 @@ using namespace swell;
 class InteractiveFrames : public test::GlTest {};
 
 
-constexpr glm::ivec2 kSize{32, 18};
+constexpr glm::ivec2 kInteractiveFramesSize{32, 18};
 
 TEST_F(InteractiveFrames, ALongFrameTakesOneStepNotAReplay)
 {
@@ -27,7 +27,7 @@ TEST_F(InteractiveFrames, ALongFrameTakesOneStepNotAReplay)
     renderer.setInteractive(true);
     Camera camera = cameraAt(scene.camera, 0.0);
     // The first frame has no history to go on from: it replays.
-    renderer.renderImage(camera, 0.0, kSize);
+    renderer.renderImage(camera, 0.0, kInteractiveFramesSize);
     EXPECT_GT(renderer.counters().foamSteps, 1);
     // Frames 1.5 to 5 s apart, longer than the longest foam step (1 s),
     // each of which used to replay about 20 transforms, and the camera cut
@@ -35,19 +35,19 @@ TEST_F(InteractiveFrames, ALongFrameTakesOneStepNotAReplay)
     double time_s = 0.0;
     for (const double frame_s : {1.5, 3.0, 5.0}) {
         time_s += frame_s;
-        renderer.renderImage(camera, time_s, kSize);
+        renderer.renderImage(camera, time_s, kInteractiveFramesSize);
         EXPECT_EQ(renderer.counters().oceanTransforms, 1) << "a frame of " << frame_s << " s";
         EXPECT_EQ(renderer.counters().foamSteps, 1) << "a frame of " << frame_s << " s";
     }
     camera.position_m.x += 5000.0;
-    renderer.renderImage(camera, time_s, kSize);
+    renderer.renderImage(camera, time_s, kInteractiveFramesSize);
     EXPECT_EQ(renderer.counters().oceanTransforms, 0) << "the same time, the camera cut";
     EXPECT_LE(renderer.counters().foamSteps, 1) << "the same time, the camera cut";
-    renderer.renderImage(camera, time_s + 2.0, kSize);
+    renderer.renderImage(camera, time_s + 2.0, kInteractiveFramesSize);
     EXPECT_EQ(renderer.counters().oceanTransforms, 1);
     EXPECT_EQ(renderer.counters().foamSteps, 1);
     // Back in time (the viewer's restart or scrub): a replay, once.
-    renderer.renderImage(camera, 1.0, kSize);
+    renderer.renderImage(camera, 1.0, kInteractiveFramesSize);
     EXPECT_GT(renderer.counters().foamSteps, 1);
 }
 
@@ -59,10 +59,10 @@ TEST_F(InteractiveFrames, ARenderersLongFrameReplaysTheHistory)
     const Scene scene = test::openSpectralStorm();
     Renderer renderer(scene);
     const Camera camera = cameraAt(scene.camera, 0.0);
-    renderer.renderImage(camera, 0.0, kSize);
-    renderer.renderImage(camera, 0.5, kSize);
+    renderer.renderImage(camera, 0.0, kInteractiveFramesSize);
+    renderer.renderImage(camera, 0.5, kInteractiveFramesSize);
     EXPECT_EQ(renderer.counters().foamSteps, 1) << "a sequence's frame goes on from the last";
-    renderer.renderImage(camera, 2.5, kSize);
+    renderer.renderImage(camera, 2.5, kInteractiveFramesSize);
     EXPECT_GT(renderer.counters().foamSteps, 10) << "a long frame replays";
 }
 

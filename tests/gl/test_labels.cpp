@@ -29,7 +29,7 @@ namespace {
 class Labels : public swell::test::GlTest {};
 
 // The world direction of the ray through pixel (x, y)'s centre (not unit).
-glm::dvec3 pixelRay(const swell::CameraCalibration& c, int x, int y)
+glm::dvec3 labelsPixelRay(const swell::CameraCalibration& c, int x, int y)
 {
     const glm::dvec3 camera((x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px, 1.0);
     return glm::dmat3(c.worldFromCamera) * camera;
@@ -59,7 +59,7 @@ CalmResult renderCalm(double height_m, double roll_deg, double pitch_deg, double
     for (int y = 0; y < size.y; ++y)
         for (int x = 0; x < size.x; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
-            const glm::dvec3 d = pixelRay(labels.camera, x, y);
+            const glm::dvec3 d = labelsPixelRay(labels.camera, x, y);
             // Which side of the horizon line the pixel's centre is on: a
             // pixel more than 1 px inside the water's side must be water,
             // more than 1 px inside the sky's, sky.
@@ -167,7 +167,7 @@ TEST_F(Labels, AnObjectsPixelsBoxAndRangesAreItsOwn)
             if (isBuoy(x, y)) {
                 ++inside;
                 wrongClass += labels.semantic[i] != o.semanticClass;
-                const glm::dvec3 p = eye + double(labels.range_m[i]) * glm::normalize(pixelRay(labels.camera, x, y));
+                const glm::dvec3 p = eye + double(labels.range_m[i]) * glm::normalize(labelsPixelRay(labels.camera, x, y));
                 if (glm::any(glm::lessThan(p, boxLo)) || glm::any(glm::greaterThan(p, boxHi)))
                     ++outside;
                 // Its reflection and the water's refraction also change around
@@ -198,7 +198,7 @@ TEST_F(Labels, AnObjectsPixelsBoxAndRangesAreItsOwn)
         for (int x = 0; x < size.x; ++x) {
             if (!isBuoy(x, y))
                 continue;
-            const glm::dvec3 d = glm::normalize(pixelRay(labels.camera, x, y));
+            const glm::dvec3 d = glm::normalize(labelsPixelRay(labels.camera, x, y));
             const double nearest = swell::test::rayCastMesh(mesh, pose, eye, d);
             if (!std::isfinite(nearest)) {
                 ++misses;

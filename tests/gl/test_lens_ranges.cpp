@@ -30,14 +30,14 @@ namespace {
 class LensRanges : public swell::test::GlTest {};
 
 // The unit world direction of the ray the written model gives pixel (x, y)'s centre.
-glm::dvec3 centreRay(const swell::CameraCalibration& c, int x, int y)
+glm::dvec3 lensRangesCentreRay(const swell::CameraCalibration& c, int x, int y)
 {
     const swell::LensDistortion lens{c.k1, c.k2, c.k3, c.p1, c.p2};
     const glm::dvec2 u = swell::undistort(lens, {(x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px});
     return glm::normalize(glm::dmat3(c.worldFromCamera) * glm::dvec3(u, 1.0));
 }
 
-double quantile(std::vector<double> v, double q)
+double lensRangesQuantile(std::vector<double> v, double q)
 {
     if (v.empty())
         return 0.0;
@@ -80,7 +80,7 @@ TEST_F(LensRanges, ARangeIsMeasuredAlongThePixelsCentreRay)
     for (int y = 0; y < size.y; ++y)
         for (int x = 0; x < size.x; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
-            const glm::dvec3 d = centreRay(c, x, y);
+            const glm::dvec3 d = lensRangesCentreRay(c, x, y);
             const double range_m = labels.range_m[i];
             if (labels.semantic[i] == SWELL_LABEL_WATER && d.y < -std::sin(glm::radians(0.5))) {
                 // Half a degree below the horizon and more: rays whose
@@ -103,17 +103,17 @@ TEST_F(LensRanges, ARangeIsMeasuredAlongThePixelsCentreRay)
         }
     EXPECT_GT(water, size.x * size.y / 3);
     EXPECT_GT(buoyHits, 200);
-    EXPECT_EQ(waterOff, 0) << "water below 50 m: median " << quantile(waterErrors_m, 0.5) << " m, 99th percentile "
-                           << quantile(waterErrors_m, 0.99) << " m, worst " << quantile(waterErrors_m, 1.0) << " m";
+    EXPECT_EQ(waterOff, 0) << "water below 50 m: median " << lensRangesQuantile(waterErrors_m, 0.5) << " m, 99th percentile "
+                           << lensRangesQuantile(waterErrors_m, 0.99) << " m, worst " << lensRangesQuantile(waterErrors_m, 1.0) << " m";
     // On the buoy the range is exact where the nearest pinhole pixel's
     // surface goes on smoothly to the centre ray; at its outline and at the
     // creases between its parts (those pixels' classes are the nearest's,
     // within half a pixel) it is carried from the side the nearest lies on.
     // Measured: a median of 0.04 mm and 94% within 1 cm (before, 7 mm and 64%).
-    EXPECT_LE(quantile(buoyErrors_m, 0.5), 0.001);
+    EXPECT_LE(lensRangesQuantile(buoyErrors_m, 0.5), 0.001);
     EXPECT_LE(buoyOff, buoyHits / 10) << "of " << buoyHits << " on the buoy off by over 1 cm: median "
-                                      << quantile(buoyErrors_m, 0.5) << " m, 99th percentile "
-                                      << quantile(buoyErrors_m, 0.99) << " m, worst " << quantile(buoyErrors_m, 1.0)
+                                      << lensRangesQuantile(buoyErrors_m, 0.5) << " m, 99th percentile "
+                                      << lensRangesQuantile(buoyErrors_m, 0.99) << " m, worst " << lensRangesQuantile(buoyErrors_m, 1.0)
                                       << " m";
 }
 

@@ -25,9 +25,9 @@ namespace {
 class LightShafts : public swell::test::GlTest {};
 
 // A high sun, off to one side (as in tests/gl/test_caustics.cpp).
-const glm::dvec3 kSun = glm::normalize(glm::dvec3(-0.3, 0.8, -0.5));
+const glm::dvec3 kLightShaftsSun = glm::normalize(glm::dvec3(-0.3, 0.8, -0.5));
 // The water's absorption in tests/golden's scenes, 1/m (r, g, b).
-const glm::dvec3 kAbsorption_per_m(0.40, 0.07, 0.09);
+const glm::dvec3 kLightShaftsAbsorption_per_m(0.40, 0.07, 0.09);
 const glm::dvec3 kSunIrradiance(1.0, 0.96, 0.9);
 // A pixel's width over its distance: 540 rows over a 75-degree field.
 const double kPixelSpread = 2.0 * std::tan(0.5 * 75.0 * 3.14159265358979 / 180.0) / 540.0;
@@ -50,7 +50,7 @@ struct Ray {
     glm::vec4 d_dither;   // xyz direction; w dither in [0, 1)
 };
 
-const char* const kProbe = R"(
+const char* const kLightShaftsProbe = R"(
 #include "light_shafts.glsl"
 layout(local_size_x = 1) in;
 struct Ray { vec4 startPath; vec4 dDither; };
@@ -71,20 +71,20 @@ void main()
 class ShaftsRun {
 public:
     explicit ShaftsRun(const swell::WaveModel& model)
-        : drawn_(model.createGpu(swell::gl::ShaderSources::embedded()), glm::vec3(kSun))
+        : drawn_(model.createGpu(swell::gl::ShaderSources::embedded()), glm::vec3(kLightShaftsSun))
     {
     }
 
     std::vector<glm::dvec3> shafts(const std::vector<Ray>& rays) const
     {
-        const swell::gl::Program program = drawn_.probe(kProbe);
+        const swell::gl::Program program = drawn_.probe(kLightShaftsProbe);
         swell::gl::Buffer in = swell::gl::Buffer::create(), out = swell::gl::Buffer::create();
         glNamedBufferData(in.id(), GLsizeiptr(rays.size() * sizeof(Ray)), rays.data(), GL_STATIC_DRAW);
         glNamedBufferData(out.id(), GLsizeiptr(rays.size() * sizeof(glm::vec4)), nullptr, GL_DYNAMIC_READ);
         glUseProgram(program.id());
         const GLuint id = program.id();
-        glProgramUniform3f(id, glGetUniformLocation(id, "absorption_per_m"), float(kAbsorption_per_m.r),
-                           float(kAbsorption_per_m.g), float(kAbsorption_per_m.b));
+        glProgramUniform3f(id, glGetUniformLocation(id, "absorption_per_m"), float(kLightShaftsAbsorption_per_m.r),
+                           float(kLightShaftsAbsorption_per_m.g), float(kLightShaftsAbsorption_per_m.b));
         glProgramUniform3f(id, glGetUniformLocation(id, "sunIrradiance"), float(kSunIrradiance.r),
                            float(kSunIrradiance.g), float(kSunIrradiance.b));
         glProgramUniform1f(id, glGetUniformLocation(id, "pixelSpread"), float(kPixelSpread));
@@ -110,7 +110,7 @@ private:
 
 glm::dvec3 expected(const Ray& r)
 {
-    return swell::detail::levelShaftsRadiance(kSun, kSunIrradiance, kAbsorption_per_m, 1.0 - fresnelAirToWater(kSun.y),
+    return swell::detail::levelShaftsRadiance(kLightShaftsSun, kSunIrradiance, kLightShaftsAbsorption_per_m, 1.0 - fresnelAirToWater(kLightShaftsSun.y),
                                               glm::dvec3(r.start_path), glm::dvec3(r.d_dither), double(r.start_path.w));
 }
 
@@ -119,7 +119,7 @@ glm::dvec3 expected(const Ray& r)
 // degrees off it, level towards the sun's side, and down and away.
 std::vector<glm::dvec3> directions()
 {
-    const glm::dvec3 towardsSun = -swell::detail::levelRefractedRay(kSun);
+    const glm::dvec3 towardsSun = -swell::detail::levelRefractedRay(kLightShaftsSun);
     const glm::dvec3 side = glm::normalize(glm::dvec3(towardsSun.x, 0.0, towardsSun.z));
     const double off = 25.0 * 3.14159265358979 / 180.0;
     return {towardsSun, glm::normalize(towardsSun * std::cos(off) + side * std::sin(off)), side,
@@ -213,7 +213,7 @@ TEST_F(LightShafts, TheLightFallsWithDepthAsTheBeamIsAbsorbed)
     // A level ray's light, z down: exp(-a z / cosT) (the beam's slant path
     // from the surface), per channel, under flat water exactly and under
     // ripples on the line's mean.
-    const double cosT = -swell::detail::levelRefractedRay(kSun).y;
+    const double cosT = -swell::detail::levelRefractedRay(kLightShaftsSun).y;
     const glm::dvec3 level = directions()[2];
     const swell::FlatModel flat;
     const ShaftsRun calm(flat);
@@ -221,7 +221,7 @@ TEST_F(LightShafts, TheLightFallsWithDepthAsTheBeamIsAbsorbed)
     const ShaftsRun rippled(waves);
     const std::vector<glm::dvec3> calm2 = calm.shafts(line(2.0, level, 1.0e6));
     const std::vector<glm::dvec3> calm8 = calm.shafts(line(8.0, level, 1.0e6));
-    const glm::dvec3 fall = glm::exp(-kAbsorption_per_m * 6.0 / cosT);
+    const glm::dvec3 fall = glm::exp(-kLightShaftsAbsorption_per_m * 6.0 / cosT);
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(calm8[0][c] / calm2[0][c], fall[c], 0.005 * fall[c]) << "flat water, channel " << c;
     const LineStats r2 = stats(rippled.shafts(line(2.0, level, 1.0e6)));

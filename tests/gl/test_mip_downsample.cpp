@@ -22,7 +22,7 @@ using namespace swell;
 
 class MipDownsample : public test::GlTest {};
 
-struct Case {
+struct MipDownsampleCase {
     GLenum format;
     int size, levels, layers, channels;
     double tolerance; // relative to the values' range (1): R16F keeps 11 bits
@@ -31,7 +31,7 @@ struct Case {
 // A texture for the case whose level 0 holds values in [-1, 1] whose means
 // differ from level to level (no constant or smooth field, which a wrong
 // offset would reproduce); `seed` tells two textures apart.
-gl::Texture filledTexture(const Case& c, unsigned seed)
+gl::Texture filledTexture(const MipDownsampleCase& c, unsigned seed)
 {
     gl::Texture texture = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
     glTextureStorage3D(texture.id(), c.levels, c.format, c.size, c.size, c.layers);
@@ -48,7 +48,7 @@ gl::Texture filledTexture(const Case& c, unsigned seed)
 // Every level of the texture's chain against the box filter of the level
 // below as the texture holds it (the format's rounding at each level, as
 // the GPU's chain has it). Returns the texels of levels 1 and up.
-long long expectBoxFiltered(const gl::Texture& texture, const Case& c)
+long long expectBoxFiltered(const gl::Texture& texture, const MipDownsampleCase& c)
 {
     std::vector<float> level(size_t(c.size) * c.size * c.layers * 4);
     glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(level.size() * sizeof(float)), level.data());
@@ -90,7 +90,7 @@ long long expectBoxFiltered(const gl::Texture& texture, const Case& c)
     return texels;
 }
 
-void check(const Case& c, gl::MipDownsampler::Path path)
+void check(const MipDownsampleCase& c, gl::MipDownsampler::Path path)
 {
     SCOPED_TRACE(testing::Message() << "size " << c.size << ", levels " << c.levels << ", layers " << c.layers
                                     << ", channels " << c.channels);
@@ -133,9 +133,9 @@ TEST_F(MipDownsample, EveryLevelIsTheMeanOfTheTwoByTwoBelowIt)
 TEST_F(MipDownsample, TwoChainsInOneCall)
 {
     using Path = gl::MipDownsampler::Path;
-    const Case slopes{GL_RGBA32F, 1 << SWELL_FFT_LOG2_SIZE, SWELL_FFT_LOG2_SIZE + 1, 2 * SWELL_FFT_CASCADES, 4, 1e-6};
-    const Case foam{GL_R16F, 1 << SWELL_FOAM_LOG2_SIZE, SWELL_FOAM_LOG2_SIZE + 1, SWELL_FOAM_LEVELS, 1, 1e-3};
-    const Case smaller{GL_RGBA32F, 64, 7, 3, 4, 1e-6};
+    const MipDownsampleCase slopes{GL_RGBA32F, 1 << SWELL_FFT_LOG2_SIZE, SWELL_FFT_LOG2_SIZE + 1, 2 * SWELL_FFT_CASCADES, 4, 1e-6};
+    const MipDownsampleCase foam{GL_R16F, 1 << SWELL_FOAM_LOG2_SIZE, SWELL_FOAM_LOG2_SIZE + 1, SWELL_FOAM_LEVELS, 1, 1e-3};
+    const MipDownsampleCase smaller{GL_RGBA32F, 64, 7, 3, 4, 1e-6};
     for (const auto path : {Path::SharedMemory, Path::Blocks}) {
         SCOPED_TRACE(path == Path::SharedMemory ? "shared memory" : "blocks");
         const gl::MipDownsampler downsampler(gl::ShaderSources::embedded(), path);

@@ -50,7 +50,7 @@ LabelledFrame drawFrame(swell::Renderer& renderer, const swell::Camera& camera, 
 }
 
 // The world ray through pixel (x, y)'s centre of a pinhole calibration.
-glm::dvec3 centreRay(const swell::CameraCalibration& c, int x, int y)
+glm::dvec3 opticalFlowCentreRay(const swell::CameraCalibration& c, int x, int y)
 {
     const glm::dvec3 v((x + 0.5 - c.cx_px) / c.fx_px, (y + 0.5 - c.cy_px) / c.fy_px, 1.0);
     return glm::normalize(glm::dmat3(c.worldFromCamera) * v);
@@ -120,7 +120,7 @@ TEST_F(OpticalFlow, OnAStillSceneItIsTheProjectionOfTheCamerasMotion)
     for (int y = 0; y < size.y; ++y)
         for (int x = 0; x < size.x; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
-            const glm::dvec3 d = centreRay(c0, x, y);
+            const glm::dvec3 d = opticalFlowCentreRay(c0, x, y);
             // Where the moved camera sees a world point, less this pixel's centre.
             auto projectedMotion = [&](glm::dvec3 point) { return pinholeProject(c1, point) - glm::dvec2(x + 0.5, y + 0.5); };
             const std::uint16_t semantic = first.labels.semantic[i];
@@ -253,7 +253,7 @@ TEST_F(OpticalFlow, OnAFloatingBodyItIsTheMotionOfItsMeshsPoints)
             const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
             if (first.labels.instance[i] != 1)
                 continue;
-            const glm::dvec3 d = centreRay(c0, x, y);
+            const glm::dvec3 d = opticalFlowCentreRay(c0, x, y);
             const std::optional<swell::test::MeshHit> hit = swell::test::rayHitOnMesh(mesh, poseBefore, eye, d);
             if (!hit || std::abs(hit->distance_m - first.labels.range_m[i]) > 0.01)
                 continue; // the centre ray grazes the outline, or the label's range is a crease's
@@ -347,7 +347,7 @@ TEST_F(OpticalFlow, OnTheWaterItFollowsTheSeasMaterialPoints)
                         const std::size_t p = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
                         if (first.labels.semantic[p] != SWELL_LABEL_WATER || !flow.valid[p])
                             continue;
-                        const std::optional<TriangleHit> hit = rayHitsTriangle(eye, centreRay(c, x, y), tri);
+                        const std::optional<TriangleHit> hit = rayHitsTriangle(eye, opticalFlowCentreRay(c, x, y), tri);
                         if (!hit || std::abs(hit->distance_m - first.labels.range_m[p]) > 1e-3)
                             continue; // not the triangle this pixel shows
                         const glm::dvec3 moved = hit->weights.x * v1[t.x] + hit->weights.y * v1[t.y] + hit->weights.z * v1[t.z];

@@ -15,7 +15,7 @@ namespace {
 
 class Precision : public swell::test::GlTest {};
 
-swell::Scene openSea()
+swell::Scene precisionOpenSea()
 {
     swell::Scene scene = swell::defaultScene();
     scene.objects.clear();
@@ -61,7 +61,7 @@ void expectSameOcean(const swell::Image& a, const swell::Image& b, const char* n
 
 TEST_F(Precision, AMillionMetresOutLooksLikeTheOrigin)
 {
-    const swell::Scene scene = openSea();
+    const swell::Scene scene = precisionOpenSea();
     // About 10^6 m out, on a point of every LOD level's lattice (the finest
     // step times 2^12), so the grid samples the field where it does at the origin.
     const double lattice = swell::finestGridStep(swell::gridShapeFor(scene.grid, scene.camera)) * 4096.0;
@@ -71,7 +71,7 @@ TEST_F(Precision, AMillionMetresOutLooksLikeTheOrigin)
 
 TEST_F(Precision, AMillionSecondsLaterLooksLikeTheStart)
 {
-    const swell::Scene scene = openSea();
+    const swell::Scene scene = precisionOpenSea();
     // Rendering at t = 20 + 10^6 s with phases that undo the extra 10^6 s.
     expectSameOcean(render(scene, {0.0, 0.0}, 20.0), render(shifted(scene, {0.0, 0.0}, 1.0e6), {0.0, 0.0}, 20.0 + 1.0e6),
                     "precision_late");
@@ -81,7 +81,7 @@ TEST_F(Precision, ConsecutiveFramesAtSixtyHertzDoNotJitterFarOut)
 {
     // With time frozen, two frames whose camera moved by one 60 Hz step of a
     // slow drift (0.05 m) 10^6 m out must differ no more than near the origin.
-    const swell::Scene scene = openSea();
+    const swell::Scene scene = precisionOpenSea();
     auto frameDelta = [&](glm::dvec2 at) {
         const swell::ImageDifference d =
             swell::compareImages(render(scene, at, 5.0), render(scene, at + glm::dvec2(0.05 / 60.0, 0.0), 5.0));

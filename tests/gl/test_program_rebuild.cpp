@@ -49,7 +49,7 @@ public:
     SurfaceSourceParameters gpuParameters(double, glm::dvec3) const override { return {}; }
 };
 
-struct Change {
+struct ProgramRebuildChange {
     const char* name;
     std::function<void(Scene&)> edit;
     Names rebuilt; // in detail::Programs' order
@@ -72,7 +72,7 @@ detail::ProgramFlags flagsOf(const Scene& scene, const gl::ShaderSources& source
 const Names kUnderwater{SWELL_WATER_SHADING, "waterline", "sky", "skyInAir", "underwaterHost", "mesh", "meshInAir"};
 const Names kSurface{"water", "waterInAir", "waterVisibility", "waterDeferred", "waterDeferredInAir", "waterline", "capture", "probe"};
 
-std::vector<Change> changes()
+std::vector<ProgramRebuildChange> changes()
 {
     Names cloudShadows = kUnderwater;
     cloudShadows.push_back("bowSpray");
@@ -101,7 +101,7 @@ TEST_F(ProgramRebuild, EachSceneSettingRebuildsOnlyTheProgramsThatReadIt)
     const Scene base = defaultScene();
     const detail::ProgramFlags baseFlags = flagsOf(base, sources, false);
     const detail::Programs current = detail::buildChangedPrograms(sources, {}, baseFlags);
-    for (const Change& change : changes()) {
+    for (const ProgramRebuildChange& change : changes()) {
         SCOPED_TRACE(change.name);
         Scene scene = base;
         change.edit(scene);
@@ -160,7 +160,7 @@ TEST_F(ProgramRebuild, TheRendererBuildsOnlyTheChangedPrograms)
     const gl::ShaderSources sources = gl::ShaderSources::embedded();
     const Scene base = defaultScene();
     Renderer renderer(base);
-    for (const Change& change : changes()) {
+    for (const ProgramRebuildChange& change : changes()) {
         SCOPED_TRACE(change.name);
         Scene scene = base;
         change.edit(scene);

@@ -28,8 +28,8 @@ class SceneChanges : public test::GlTest {};
 
 // Small and early in time: enough pixels to show the sky, the island, an
 // object and the waves, cheap enough for a renderer per parameter.
-constexpr glm::ivec2 kSize{96, 54};
-constexpr double kTime_s = 3.0;
+constexpr glm::ivec2 kSceneChangesSize{96, 54};
+constexpr double kSceneChangesTime_s = 3.0;
 
 Scene baseScene()
 {
@@ -106,21 +106,21 @@ ParameterValue otherValue(const Parameter& p, const ParameterValue& value, int a
 
 // What the renderer draws: the image, and the water's vertices (which show
 // a stale grid even where fog hides it in the image).
-struct Drawn {
+struct SceneChangesDrawn {
     Image image;
     std::vector<float> vertices;
 };
 
-Drawn draw(Renderer& renderer)
+SceneChangesDrawn draw(Renderer& renderer)
 {
     // The scene's camera as the renderer places it (on its mount, if any).
-    const Camera camera = renderer.sceneCameraAt(kTime_s);
-    Drawn d;
-    d.image = renderer.renderImage(camera, kTime_s, kSize);
+    const Camera camera = renderer.sceneCameraAt(kSceneChangesTime_s);
+    SceneChangesDrawn d;
+    d.image = renderer.renderImage(camera, kSceneChangesTime_s, kSceneChangesSize);
     const int count = swell::RendererTesting::waterVertexCount(renderer);
     gl::Buffer buffer = gl::Buffer::create();
     glNamedBufferStorage(buffer.id(), GLsizeiptr(count) * 8 * 4, nullptr, 0);
-    swell::RendererTesting::captureWaterVertices(renderer, camera, kTime_s, buffer.id(), kSize);
+    swell::RendererTesting::captureWaterVertices(renderer, camera, kSceneChangesTime_s, buffer.id(), kSceneChangesSize);
     d.vertices.resize(size_t(count) * 8);
     glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(d.vertices.size() * 4), d.vertices.data());
     return d;
@@ -160,9 +160,9 @@ TEST_F(SceneChanges, EveryParameterChangeDrawsWhatAFreshRendererDraws)
         }
         SCOPED_TRACE(std::string(p.key) + " = " + formatValue(p, p.get(changed, 0)));
         running.setScene(changed);
-        const Drawn incremental = draw(running);
+        const SceneChangesDrawn incremental = draw(running);
         Renderer fresh(changed);
-        const Drawn expected = draw(fresh);
+        const SceneChangesDrawn expected = draw(fresh);
         EXPECT_TRUE(incremental.image.rgba == expected.image.rgba) << "a change of " << p.key << " left a stale image";
         EXPECT_TRUE(incremental.vertices == expected.vertices) << "a change of " << p.key << " left a stale grid";
         running.setScene(base);
@@ -179,7 +179,7 @@ TEST_F(SceneChanges, AReplacedWaveModelIsDrawnAndTheScenesComesBack)
     const Image waves = draw(renderer).image;
     renderer.setWaveModel(std::make_shared<FlatModel>());
     EXPECT_EQ(renderer.waveModel().name(), "flat");
-    EXPECT_EQ(renderer.waveModel().heightAt({3.0, 4.0}, kTime_s), 0.0);
+    EXPECT_EQ(renderer.waveModel().heightAt({3.0, 4.0}, kSceneChangesTime_s), 0.0);
     const Image flat = draw(renderer).image;
     EXPECT_FALSE(flat.rgba == waves.rgba);
     renderer.setWaveModel(nullptr);

@@ -18,12 +18,12 @@ using namespace swell;
 
 class SeabedDrawn : public test::GlTest {};
 
-constexpr glm::ivec2 kSize{160, 90};
-constexpr double kTime_s = 4.0;
+constexpr glm::ivec2 kSeabedDrawnSize{160, 90};
+constexpr double kSeabedDrawnTime_s = 4.0;
 
 // The open sea, no island, no objects; the camera 40 m up looking -z,
 // down at the water ahead.
-Scene openSea()
+Scene seabedDrawnOpenSea()
 {
     Scene scene = defaultScene();
     scene.objects.clear();
@@ -51,40 +51,40 @@ int landPixels(const Image& image)
 
 TEST_F(SeabedDrawn, ABeachAheadIsDrawnAsLand)
 {
-    Scene scene = openSea();
+    Scene scene = seabedDrawnOpenSea();
     Renderer sea(scene);
-    const Camera camera = cameraAt(scene.camera, kTime_s);
-    sea.renderImage(camera, kTime_s, kSize); // the first frame's own work done
-    const Image before = sea.renderImage(camera, kTime_s, kSize);
+    const Camera camera = cameraAt(scene.camera, kSeabedDrawnTime_s);
+    sea.renderImage(camera, kSeabedDrawnTime_s, kSeabedDrawnSize); // the first frame's own work done
+    const Image before = sea.renderImage(camera, kSeabedDrawnTime_s, kSeabedDrawnSize);
     const int callsBefore = sea.counters().drawCalls;
 
     // The land 100 m ahead, rising away from the camera (the beach faces +z).
     scene.seabed.beaches.push_back(SeabedBeach{.shorePoint_m = {0.0, -100.0}, .seawardAzimuth_deg = 180.0,
                                                .slope = 0.05, .length_m = 2000.0, .top_m = 8.0, .landWidth_m = 400.0});
     sea.setScene(scene);
-    sea.renderImage(camera, kTime_s, kSize);
-    const Image after = sea.renderImage(camera, kTime_s, kSize);
-    EXPECT_LT(landPixels(before), kSize.x * kSize.y / 100);
-    EXPECT_GT(landPixels(after), kSize.x * kSize.y / 10);
+    sea.renderImage(camera, kSeabedDrawnTime_s, kSeabedDrawnSize);
+    const Image after = sea.renderImage(camera, kSeabedDrawnTime_s, kSeabedDrawnSize);
+    EXPECT_LT(landPixels(before), kSeabedDrawnSize.x * kSeabedDrawnSize.y / 100);
+    EXPECT_GT(landPixels(after), kSeabedDrawnSize.x * kSeabedDrawnSize.y / 10);
     // One draw call more in each pass that draws the world.
     EXPECT_GT(sea.counters().drawCalls, callsBefore);
     EXPECT_NEAR(sea.seabed().elevation_m({0.0, -200.0}), 5.0, 1e-9);
 
     // What a fresh renderer draws for the scene is what the change drew.
     Renderer fresh(scene);
-    fresh.renderImage(camera, kTime_s, kSize);
-    EXPECT_TRUE(fresh.renderImage(camera, kTime_s, kSize).rgba == after.rgba);
+    fresh.renderImage(camera, kSeabedDrawnTime_s, kSeabedDrawnSize);
+    EXPECT_TRUE(fresh.renderImage(camera, kSeabedDrawnTime_s, kSeabedDrawnSize).rgba == after.rgba);
 }
 
 TEST_F(SeabedDrawn, HostHeightsJoinTheFloorUndrawn)
 {
-    const Scene scene = openSea();
+    const Scene scene = seabedDrawnOpenSea();
     Renderer renderer(scene);
     // Flat water while the picture is compared: the host's floor is not
     // drawn, but the scene's waves feel it (checked below).
     renderer.setWaveModel(std::make_shared<FlatModel>());
-    const Camera camera = cameraAt(scene.camera, kTime_s);
-    const Image before = renderer.renderImage(camera, kTime_s, kSize);
+    const Camera camera = cameraAt(scene.camera, kSeabedDrawnTime_s);
+    const Image before = renderer.renderImage(camera, kSeabedDrawnTime_s, kSeabedDrawnSize);
     EXPECT_EQ(renderer.seabed().elevation_m({0.0, -50.0}), -std::numeric_limits<double>::infinity());
 
     SeabedHeights heights{.columns = 2, .rows = 2, .heights_m = {-4.0f, -4.0f, -2.0f, -2.0f}, .min_m = {-100.0, -100.0},
@@ -99,7 +99,7 @@ TEST_F(SeabedDrawn, HostHeightsJoinTheFloorUndrawn)
 
     renderer.setSeabedHeights(heights);
     EXPECT_NEAR(renderer.seabed().elevation_m({0.0, -50.0}), -3.0, 1e-9);
-    EXPECT_TRUE(renderer.renderImage(camera, kTime_s, kSize).rgba == before.rgba);
+    EXPECT_TRUE(renderer.renderImage(camera, kSeabedDrawnTime_s, kSeabedDrawnSize).rgba == before.rgba);
     // The scene's Gerstner waves run over the host's floor: in 3 m of
     // water they are no longer the open sea's.
     renderer.setWaveModel(nullptr);
@@ -118,7 +118,7 @@ TEST_F(SeabedDrawn, HostHeightsJoinTheFloorUndrawn)
 // host's water the breaking cut holds the sea under the depth.
 TEST_F(SeabedDrawn, HostHeightsReachTheSpectralSea)
 {
-    Scene scene = openSea();
+    Scene scene = seabedDrawnOpenSea();
     scene.waves.model = WaveModelKind::Spectral;
     scene.sea.wind->windSpeed_mps = 16.0;
     Renderer renderer(scene);

@@ -31,9 +31,9 @@ namespace {
 
 class SensorMotion : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize(320, 240);
+constexpr glm::ivec2 kSensorMotionSize(320, 240);
 constexpr double kTurn_rad_s = 0.5; // the camera's yaw rate
-constexpr double kTime_s = 1.0;     // the frame's time: the camera looks north then
+constexpr double kSensorMotionTime_s = 1.0;     // the frame's time: the camera looks north then
 
 // The open sea with a buoy four times its size standing in the air 30 m
 // north, seen against the sky by a camera 2 m up that turns right at
@@ -46,12 +46,12 @@ swell::Scene turningPastABuoy()
     buoy.position_m = glm::dvec3(0.0, 10.0, -30.0);
     buoy.scale = 4.0;
     scene.objects.push_back(buoy);
-    const double swing_deg = glm::degrees(kTurn_rad_s * kTime_s);
-    for (const double t : {0.0, 2.0 * kTime_s}) {
+    const double swing_deg = glm::degrees(kTurn_rad_s * kSensorMotionTime_s);
+    for (const double t : {0.0, 2.0 * kSensorMotionTime_s}) {
         swell::CameraKey key;
         key.time_s = t;
         key.position_m = glm::dvec3(0.0, 2.0, 0.0);
-        key.yaw_deg = -swing_deg + 2.0 * swing_deg * t / (2.0 * kTime_s);
+        key.yaw_deg = -swing_deg + 2.0 * swing_deg * t / (2.0 * kSensorMotionTime_s);
         key.pitch_deg = 0.0;
         scene.camera.path.push_back(key);
     }
@@ -62,21 +62,21 @@ swell::Image frameOf(const swell::Scene& scene)
 {
     swell::Renderer renderer(scene);
     return swell::renderSensorFrame(
-               renderer, [&renderer](double t) { return renderer.sceneCameraAt(t); }, kTime_s, kSize, false)
+               renderer, [&renderer](double t) { return renderer.sceneCameraAt(t); }, kSensorMotionTime_s, kSensorMotionSize, false)
         .image;
 }
 
 // The image's vertical focal length, pixels.
-double focal_px(const swell::Scene& scene) { return 0.5 * kSize.y / std::tan(glm::radians(0.5 * scene.camera.fovY_deg)); }
+double focal_px(const swell::Scene& scene) { return 0.5 * kSensorMotionSize.y / std::tan(glm::radians(0.5 * scene.camera.fovY_deg)); }
 
 struct Linear {
     std::vector<double> v; // linear RGB, rows top first
-    double at(int x, int y, int ch) const { return v[(std::size_t(y) * kSize.x + std::size_t(x)) * 3 + std::size_t(ch)]; }
+    double at(int x, int y, int ch) const { return v[(std::size_t(y) * kSensorMotionSize.x + std::size_t(x)) * 3 + std::size_t(ch)]; }
     // Linear interpolation along the row.
     double along(double x, int y, int ch) const
     {
-        x = std::clamp(x, 0.0, double(kSize.x - 1));
-        const int x0 = std::min(int(std::floor(x)), kSize.x - 2);
+        x = std::clamp(x, 0.0, double(kSensorMotionSize.x - 1));
+        const int x0 = std::min(int(std::floor(x)), kSensorMotionSize.x - 2);
         const double f = x - x0;
         return (1.0 - f) * at(x0, y, ch) + f * at(x0 + 1, y, ch);
     }
@@ -85,8 +85,8 @@ struct Linear {
 Linear linearOf(const swell::Image& image)
 {
     Linear l;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x)
+    for (int y = 0; y < kSensorMotionSize.y; ++y)
+        for (int x = 0; x < kSensorMotionSize.x; ++x)
             for (int ch = 0; ch < 3; ++ch)
                 l.v.push_back(swell::test::srgbToLinear(image.pixel(x, y)[ch]));
     return l;
@@ -97,9 +97,9 @@ Linear linearOf(const swell::Image& image)
 std::vector<int> buoyRows(const Linear& instant)
 {
     std::vector<int> rows;
-    for (int y = 0; y < kSize.y / 2 - 4; ++y) {
+    for (int y = 0; y < kSensorMotionSize.y / 2 - 4; ++y) {
         double lo = 1e9, hi = -1e9;
-        for (int x = kSize.x / 2 - 80; x < kSize.x / 2 + 80; ++x) {
+        for (int x = kSensorMotionSize.x / 2 - 80; x < kSensorMotionSize.x / 2 + 80; ++x) {
             lo = std::min(lo, instant.at(x, y, 0));
             hi = std::max(hi, instant.at(x, y, 0));
         }
@@ -118,7 +118,7 @@ double boxError(const Linear& image, const Linear& instant, const std::vector<in
     double error = 0.0;
     std::size_t n = 0;
     for (const int y : rows)
-        for (int x = kSize.x / 2 - 80; x < kSize.x / 2 + 80; ++x)
+        for (int x = kSensorMotionSize.x / 2 - 80; x < kSensorMotionSize.x / 2 + 80; ++x)
             for (int ch = 0; ch < 3; ++ch) {
                 double box = 0.0;
                 for (int k = 0; k < kTaps; ++k)
@@ -136,7 +136,7 @@ double slideOf(const Linear& image, const Linear& instant, int y)
     double best = 0.0, bestError = std::numeric_limits<double>::infinity();
     for (double s = -20.0; s <= 20.0; s += 0.05) {
         double error = 0.0;
-        for (int x = kSize.x / 2 - 60; x < kSize.x / 2 + 60; ++x)
+        for (int x = kSensorMotionSize.x / 2 - 60; x < kSensorMotionSize.x / 2 + 60; ++x)
             for (int ch = 0; ch < 3; ++ch)
                 error += std::abs(image.at(x, y, ch) - instant.along(x + s, y, ch));
         if (error < bestError) {
@@ -198,8 +198,8 @@ TEST_F(SensorMotion, ARollingShutterSlidesEachRowByTheMotionUntilItsReadout)
     const double intercept = (ss - slope * sy) / n;
     // Row y's slide, v (t_y - t), with the row's time from its readout.
     const double v_px_s = focal_px(scene) * kTurn_rad_s;
-    const double expectedSlope = v_px_s * scene.camera.readout_s / kSize.y;
-    const double expectedAt0 = v_px_s * scene.camera.readout_s * (0.5 / kSize.y - 0.5);
+    const double expectedSlope = v_px_s * scene.camera.readout_s / kSensorMotionSize.y;
+    const double expectedAt0 = v_px_s * scene.camera.readout_s * (0.5 / kSensorMotionSize.y - 0.5);
     std::printf("rolling shutter: each row slides %.4f px a row (v R / H = %.4f); row 0 by %.2f px (%.2f)\n", slope,
                 expectedSlope, intercept, expectedAt0);
     EXPECT_NEAR(slope, expectedSlope, 0.1 * expectedSlope);
@@ -217,8 +217,8 @@ TEST_F(SensorMotion, BlurAndRollingShutterAreTheSameBytesTwice)
     // And with the labels of the instant, in one renderer drawing twice.
     swell::Renderer renderer(scene);
     const auto cameraAt = [&renderer](double t) { return renderer.sceneCameraAt(t); };
-    const swell::SensorFrame first = swell::renderSensorFrame(renderer, cameraAt, kTime_s, kSize, true);
-    const swell::SensorFrame second = swell::renderSensorFrame(renderer, cameraAt, kTime_s, kSize, true);
+    const swell::SensorFrame first = swell::renderSensorFrame(renderer, cameraAt, kSensorMotionTime_s, kSensorMotionSize, true);
+    const swell::SensorFrame second = swell::renderSensorFrame(renderer, cameraAt, kSensorMotionTime_s, kSensorMotionSize, true);
     EXPECT_TRUE(first.image.rgba == a.rgba);
     EXPECT_TRUE(second.image.rgba == a.rgba);
     ASSERT_TRUE(first.labels && second.labels);
@@ -229,7 +229,7 @@ TEST_F(SensorMotion, BlurAndRollingShutterAreTheSameBytesTwice)
     still.camera.shutter_s = still.camera.readout_s = 0.0;
     swell::Renderer stillRenderer(still);
     const swell::SensorFrame instant = swell::renderSensorFrame(
-        stillRenderer, [&stillRenderer](double t) { return stillRenderer.sceneCameraAt(t); }, kTime_s, kSize, true);
+        stillRenderer, [&stillRenderer](double t) { return stillRenderer.sceneCameraAt(t); }, kSensorMotionTime_s, kSensorMotionSize, true);
     EXPECT_TRUE(first.labels->instance == instant.labels->instance);
     EXPECT_TRUE(first.labels->range_m == instant.labels->range_m);
     EXPECT_EQ(first.camera.yaw_deg, instant.camera.yaw_deg);

@@ -41,7 +41,7 @@ out float shadedSlopeVariance;
 )";
 
 // xy: rest offset from the grid centre, m; z: pixel footprint, m; w: grid footprint, m.
-const char* kProbe = R"(
+const char* kShadingNormalsProbe = R"(
 void main()
 {
     SurfacePoint grid = oceanSurface(probe.xy, probe.w, 1.0);
@@ -68,7 +68,7 @@ struct Probed {
 
 // The probes run through `probeShader` (after kProbeInterface).
 std::vector<Probed> runProbes(const swell::Scene& scene, double time_s, const std::vector<glm::vec4>& probes,
-                              const char* probeShader = kProbe)
+                              const char* probeShader = kShadingNormalsProbe)
 {
     const swell::gl::ShaderSources embedded = swell::gl::ShaderSources::embedded();
     std::map<std::string, std::string> files;

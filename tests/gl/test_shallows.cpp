@@ -27,7 +27,7 @@ using namespace swell;
 
 class Shallows : public test::GlTest {};
 
-constexpr glm::ivec2 kSize{64, 64};
+constexpr glm::ivec2 kShallowsSize{64, 64};
 constexpr double kCameraHeight_m = 12.0;
 
 // A level sand shelf depth_m down under the camera, which looks straight
@@ -86,7 +86,7 @@ glm::dvec3 renderedThroughWater(double depth_m)
     const Scene scene = shelfScene(depth_m);
     Renderer renderer(scene);
     renderer.setWaveModel(std::make_shared<FlatModel>());
-    return middleColor(renderer.renderImage(cameraAt(scene.camera, 0.0), 0.0, kSize));
+    return middleColor(renderer.renderImage(cameraAt(scene.camera, 0.0), 0.0, kShallowsSize));
 }
 
 // The floor's albedo where the camera looks: the drawn mesh's colour at the

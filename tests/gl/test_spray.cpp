@@ -22,8 +22,8 @@ using namespace swell;
 
 class Spray : public test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 180};
-constexpr double kTime_s = 20.0;
+constexpr glm::ivec2 kSpraySize{320, 180};
+constexpr double kSprayTime_s = 20.0;
 
 Scene storm(double wind_mps, bool spray)
 {
@@ -37,20 +37,20 @@ Scene storm(double wind_mps, bool spray)
     return scene;
 }
 
-Image still(const Scene& scene, double time_s = kTime_s, glm::ivec2 size = kSize)
+Image still(const Scene& scene, double time_s = kSprayTime_s, glm::ivec2 size = kSpraySize)
 {
     Renderer renderer(scene);
     return renderer.renderImage(cameraAt(scene.camera, time_s), time_s, size);
 }
 
 // Pixels that differ, and how many of those the spray made lighter.
-struct Change {
+struct SprayChange {
     int pixels = 0, lighter = 0;
 };
 
-Change changeOf(const Image& off, const Image& on)
+SprayChange changeOf(const Image& off, const Image& on)
 {
-    Change c;
+    SprayChange c;
     for (int y = 0; y < off.height; ++y)
         for (int x = 0; x < off.width; ++x) {
             const std::uint8_t *a = off.pixel(x, y), *b = on.pixel(x, y);
@@ -73,10 +73,10 @@ TEST_F(Spray, NoneBelowBeaufortSeven)
 TEST_F(Spray, StormCrestsTrailWhiteMist)
 {
     const Image off = still(storm(20.0, false)), on = still(storm(20.0, true));
-    const Change c = changeOf(off, on);
+    const SprayChange c = changeOf(off, on);
     std::printf("storm at 20 m/s: spray changes %d of %d pixels, %d of them lighter\n", c.pixels,
-                kSize.x * kSize.y, c.lighter);
-    EXPECT_GT(c.pixels, kSize.x * kSize.y / 200) << "too little spray over a gale's breaking crests";
+                kSpraySize.x * kSpraySize.y, c.lighter);
+    EXPECT_GT(c.pixels, kSpraySize.x * kSpraySize.y / 200) << "too little spray over a gale's breaking crests";
     EXPECT_GT(c.lighter, c.pixels * 9 / 10) << "spray is white mist over a dark sea: it lightens what it covers";
 }
 
@@ -90,8 +90,8 @@ TEST_F(Spray, StillsReproduceBitForBitWhateverCameBefore)
     // alone could carry anything over) draws the same frame as the still.
     Renderer sequence(scene);
     for (const double t : {5.0, 12.0, 31.0})
-        sequence.renderImage(cameraAt(scene.camera, t), t, kSize);
-    const Image arrived = sequence.renderImage(cameraAt(scene.camera, kTime_s), kTime_s, kSize);
+        sequence.renderImage(cameraAt(scene.camera, t), t, kSpraySize);
+    const Image arrived = sequence.renderImage(cameraAt(scene.camera, kSprayTime_s), kSprayTime_s, kSpraySize);
     EXPECT_EQ(changeOf(first, arrived).pixels, 0) << "the frame depends on the frames before it";
 }
 
@@ -137,7 +137,7 @@ Streaks streaksOf(const Image& off, const Image& on)
 // the sea's mean level under a pixel.
 double imageWindAt(const Scene& scene, glm::ivec2 size, glm::dvec2 pixel)
 {
-    const Camera camera = cameraAt(scene.camera, kTime_s);
+    const Camera camera = cameraAt(scene.camera, kSprayTime_s);
     const glm::dmat4 viewProj = camera.projection(double(size.x) / size.y) * camera.viewRelativeTo(camera.position_m);
     const glm::dmat4 inverse = glm::inverse(viewProj);
     const glm::dvec2 ndc(2.0 * pixel.x / size.x - 1.0, 1.0 - 2.0 * pixel.y / size.y);
@@ -161,7 +161,7 @@ TEST_F(Spray, StreaksRunDownwind)
 {
     const glm::ivec2 size{640, 360};
     const Scene off = storm(20.0, false), on = storm(20.0, true);
-    const Streaks s = streaksOf(still(off, kTime_s, size), still(on, kTime_s, size));
+    const Streaks s = streaksOf(still(off, kSprayTime_s, size), still(on, kSprayTime_s, size));
     const double wind_deg = imageWindAt(on, size, s.centroid);
     double apart_deg = std::abs(s.orientation_deg - wind_deg);
     apart_deg = std::min(apart_deg, 180.0 - apart_deg);

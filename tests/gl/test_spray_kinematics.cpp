@@ -29,7 +29,7 @@ struct Seed {
     glm::vec4 timeFoam;  // x, y: the period's time; z: foam; w: the wind's share
 };
 
-struct Result {
+struct SprayKinematicsResult {
     glm::uvec4 keyLives; // x: key; y: lives
     glm::vec4 ageInCell; // x: age; y, z: in cell
     glm::vec4 drops[SWELL_SPRAY_DROPS];
@@ -37,7 +37,7 @@ struct Result {
     glm::vec4 air[SWELL_SPRAY_DROPS];
 };
 
-constexpr float kWind_mps = 20.0f;
+constexpr float kSprayKinematicsWind_mps = 20.0f;
 
 std::uint32_t floatBitsOf(float x)
 {
@@ -48,13 +48,13 @@ std::uint32_t floatBitsOf(float x)
 constexpr float kYoungFoam = 0.6f;
 const glm::vec2 kWindDirection(std::cos(200.0f * 0.0174532925f), std::sin(200.0f * 0.0174532925f));
 
-const char* const kProbe = R"(
+const char* const kSprayKinematicsProbe = R"(
 #include "spray.glsl"
 layout(local_size_x = 1) in;
 struct Seed { ivec4 cellSlot; vec4 timeFoam; };
-struct Result { uvec4 keyLives; vec4 ageInCell; vec4 drops[SWELL_SPRAY_DROPS]; vec4 launch[SWELL_SPRAY_DROPS]; vec4 air[SWELL_SPRAY_DROPS]; };
+struct SprayKinematicsResult { uvec4 keyLives; vec4 ageInCell; vec4 drops[SWELL_SPRAY_DROPS]; vec4 launch[SWELL_SPRAY_DROPS]; vec4 air[SWELL_SPRAY_DROPS]; };
 layout(std430, binding = 0) readonly buffer Seeds { Seed seeds[]; };
-layout(std430, binding = 1) writeonly buffer Results { Result results[]; };
+layout(std430, binding = 1) writeonly buffer Results { SprayKinematicsResult results[]; };
 uniform vec2 windDirection;
 uniform float windSpeed_mps;
 uniform float youngFoam;
@@ -62,7 +62,7 @@ void main()
 {
     Seed s = seeds[gl_GlobalInvocationID.x];
     SprayLife l = sprayLife(s.cellSlot.xy, s.cellSlot.z, s.timeFoam.xy);
-    Result r;
+    SprayKinematicsResult r;
     r.keyLives = uvec4(l.key, sprayLives(l.key, s.timeFoam.z, youngFoam, s.timeFoam.w) ? 1u : 0u, 0u, 0u);
     r.ageInCell = vec4(l.age_s, l.inCell, 0.0);
     for (uint d = 0u; d < uint(SWELL_SPRAY_DROPS); ++d) {
@@ -76,23 +76,23 @@ void main()
 }
 )";
 
-std::vector<Result> runShader(const std::vector<Seed>& seeds)
+std::vector<SprayKinematicsResult> runShader(const std::vector<Seed>& seeds)
 {
-    const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
+    const swell::gl::Program program = swell::test::buildShaderProbe(kSprayKinematicsProbe);
     swell::gl::Buffer in = swell::gl::Buffer::create(), out = swell::gl::Buffer::create();
     glNamedBufferData(in.id(), GLsizeiptr(seeds.size() * sizeof(Seed)), seeds.data(), GL_STATIC_DRAW);
-    glNamedBufferData(out.id(), GLsizeiptr(seeds.size() * sizeof(Result)), nullptr, GL_DYNAMIC_READ);
+    glNamedBufferData(out.id(), GLsizeiptr(seeds.size() * sizeof(SprayKinematicsResult)), nullptr, GL_DYNAMIC_READ);
     const GLuint id = program.id();
     glUseProgram(id);
     glProgramUniform2f(id, glGetUniformLocation(id, "windDirection"), kWindDirection.x, kWindDirection.y);
-    glProgramUniform1f(id, glGetUniformLocation(id, "windSpeed_mps"), kWind_mps);
+    glProgramUniform1f(id, glGetUniformLocation(id, "windSpeed_mps"), kSprayKinematicsWind_mps);
     glProgramUniform1f(id, glGetUniformLocation(id, "youngFoam"), kYoungFoam);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
     glDispatchCompute(GLuint(seeds.size()), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<Result> results(seeds.size());
-    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(results.size() * sizeof(Result)), results.data());
+    std::vector<SprayKinematicsResult> results(seeds.size());
+    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(results.size() * sizeof(SprayKinematicsResult)), results.data());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
     glUseProgram(0);
@@ -101,7 +101,7 @@ std::vector<Result> runShader(const std::vector<Seed>& seeds)
 
 TEST_F(SprayKinematicsTwin, ShaderAndCppAgreeForEverySeed)
 {
-    static_assert(sizeof(Result) == 32 + 3 * 16 * SWELL_SPRAY_DROPS, "std430 layout");
+    static_assert(sizeof(SprayKinematicsResult) == 32 + 3 * 16 * SWELL_SPRAY_DROPS, "std430 layout");
     std::vector<Seed> seeds;
     // Cells on both sides of the origin, every slot, times within the first
     // period and in later ones, foam from none to a crest breaking now, the
@@ -117,7 +117,7 @@ TEST_F(SprayKinematicsTwin, ShaderAndCppAgreeForEverySeed)
                 seeds.push_back({glm::ivec4(cx * 977, cz * 31 - 5, slot, 0),
                                  glm::vec4(t, foams[(n / 5) % 5], amounts[n % 3])});
             }
-    const std::vector<Result> gpu = runShader(seeds);
+    const std::vector<SprayKinematicsResult> gpu = runShader(seeds);
     int compared = 0, living = 0;
     for (std::size_t i = 0; i < seeds.size(); ++i) {
         const Seed& s = seeds[i];
@@ -127,7 +127,7 @@ TEST_F(SprayKinematicsTwin, ShaderAndCppAgreeForEverySeed)
         if (l.age_s < 1e-4f || l.age_s > float(SWELL_SPRAY_LIFETIME_S) - 1e-4f)
             continue;
         ++compared;
-        const Result& g = gpu[i];
+        const SprayKinematicsResult& g = gpu[i];
         ASSERT_EQ(g.keyLives.x, l.key) << "seed " << i;
         EXPECT_NEAR(g.ageInCell.x, l.age_s, 1e-5f) << "seed " << i;
         EXPECT_EQ(glm::vec2(g.ageInCell.y, g.ageInCell.z), l.inCell) << "seed " << i;
@@ -135,8 +135,8 @@ TEST_F(SprayKinematicsTwin, ShaderAndCppAgreeForEverySeed)
         living += lives;
         EXPECT_EQ(g.keyLives.y != 0u, lives) << "seed " << i;
         for (std::uint32_t d = 0; d < SWELL_SPRAY_DROPS; ++d) {
-            const glm::vec3 launch = sprayLaunch(l.key, d, kWindDirection, kWind_mps);
-            const glm::vec3 air = sprayAir(l.key, d, kWindDirection, kWind_mps);
+            const glm::vec3 launch = sprayLaunch(l.key, d, kWindDirection, kSprayKinematicsWind_mps);
+            const glm::vec3 air = sprayAir(l.key, d, kWindDirection, kSprayKinematicsWind_mps);
             EXPECT_LT(glm::length(glm::vec3(g.launch[d]) - launch), 1e-5f) << "seed " << i << " drop " << d;
             EXPECT_LT(glm::length(glm::vec3(g.air[d]) - air), 1e-5f) << "seed " << i << " drop " << d;
             const float tau_s = sprayTau_s(l.key, d);
@@ -227,7 +227,7 @@ TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
     const GLuint id = program.id();
     glUseProgram(id);
     glProgramUniform2f(id, glGetUniformLocation(id, "windDirection"), kWindDirection.x, kWindDirection.y);
-    glProgramUniform1f(id, glGetUniformLocation(id, "windSpeed_mps"), kWind_mps);
+    glProgramUniform1f(id, glGetUniformLocation(id, "windSpeed_mps"), kSprayKinematicsWind_mps);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
     glDispatchCompute(GLuint(seeds.size()), 1, 1);
@@ -255,7 +255,7 @@ TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
             << "seed " << i;
         EXPECT_NEAR(gpu[i].sheetLaunch.w, bowSheetTau_s(), 1e-6f * bowSheetTau_s());
         const glm::vec3 sheet = sprayDropOffset(
-            sheetLaunch, sprayAir(key, SWELL_SPRAY_MIST_DROPS, kWindDirection, kWind_mps), bowSheetTau_s(), age_s);
+            sheetLaunch, sprayAir(key, SWELL_SPRAY_MIST_DROPS, kWindDirection, kSprayKinematicsWind_mps), bowSheetTau_s(), age_s);
         EXPECT_LT(glm::length(glm::vec3(gpu[i].sheet) - sheet), 1e-3f) << "seed " << i;
         const float torn = bowSheetTorn(key, age_s);
         EXPECT_NEAR(gpu[i].sheet.w, torn, 1e-5f) << "seed " << i;
@@ -267,7 +267,7 @@ TEST_F(SprayKinematicsTwin, BowShaderAndCppAgreeForEverySeed)
                 << "seed " << i << " drop " << d;
             const float tau_s = bowSprayTau_s(key, d);
             EXPECT_NEAR(gpu[i].drops[d].w, tau_s, 1e-6f * tau_s) << "seed " << i << " drop " << d;
-            const glm::vec3 air = sprayAir(key, d, kWindDirection, kWind_mps);
+            const glm::vec3 air = sprayAir(key, d, kWindDirection, kSprayKinematicsWind_mps);
             const glm::vec3 offset = sprayDropOffset(launch, air, tau_s, age_s);
             EXPECT_LT(glm::length(glm::vec3(gpu[i].drops[d]) - offset), 1e-3f) << "seed " << i << " drop " << d;
         }

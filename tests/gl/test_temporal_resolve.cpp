@@ -37,13 +37,13 @@ using namespace swell;
 
 class TemporalResolve : public test::GlTest {};
 
-constexpr glm::ivec2 kSize{192, 108};
+constexpr glm::ivec2 kTemporalResolveSize{192, 108};
 
-struct Difference {
+struct TemporalResolveDifference {
     double mean = 0.0, p99 = 0.0;
 };
 
-Difference difference(const Image& a, const Image& b)
+TemporalResolveDifference temporalResolveDifference(const Image& a, const Image& b)
 {
     EXPECT_EQ(a.width, b.width);
     EXPECT_EQ(a.height, b.height);
@@ -58,13 +58,13 @@ Difference difference(const Image& a, const Image& b)
         sum += v;
     }
     std::sort(d.begin(), d.end());
-    Difference r;
+    TemporalResolveDifference r;
     r.mean = sum / double(d.size());
     r.p99 = d[std::min(d.size() - 1, size_t(std::ceil(0.99 * double(d.size()))) - 1)];
     return r;
 }
 
-std::ostream& operator<<(std::ostream& out, const Difference& d)
+std::ostream& operator<<(std::ostream& out, const TemporalResolveDifference& d)
 {
     return out << "mean " << d.mean << ", p99 " << d.p99;
 }
@@ -93,7 +93,7 @@ double ghostShare(const Image& old, const Image& after, const Image& alone)
 Image reference(const Scene& scene, const Camera& camera, double time_s)
 {
     Renderer renderer(scene);
-    return renderer.renderImage(camera, time_s, kSize);
+    return renderer.renderImage(camera, time_s, kTemporalResolveSize);
 }
 
 // `frames` frames of a still camera at one time, half-size, resolved.
@@ -101,7 +101,7 @@ Image converged(Renderer& renderer, const Camera& camera, double time_s, int fra
 {
     Image image;
     for (int i = 0; i < frames; ++i)
-        image = renderer.renderImage(camera, time_s, kSize);
+        image = renderer.renderImage(camera, time_s, kTemporalResolveSize);
     return image;
 }
 
@@ -119,12 +119,12 @@ TEST_F(TemporalResolve, AStillCameraConvergesToTheFullResolutionFrame)
     // What the resolve starts from: one frame drawn at half size, scaled up.
     Renderer half(scene);
     half.setRenderScale(0.5);
-    const Difference upscaled = difference(half.renderImage(camera, time_s, kSize), full);
+    const TemporalResolveDifference upscaled = temporalResolveDifference(half.renderImage(camera, time_s, kTemporalResolveSize), full);
 
     Renderer temporal(scene);
     temporal.setRenderScale(0.5);
     temporal.setTemporalResolve(true);
-    const Difference resolved = difference(converged(temporal, camera, time_s, 48), full);
+    const TemporalResolveDifference resolved = temporalResolveDifference(converged(temporal, camera, time_s, 48), full);
     std::printf("half size scaled up: %.2f mean, %.0f p99; resolved after 48 frames: %.2f mean, %.0f p99\n",
                 upscaled.mean, upscaled.p99, resolved.mean, resolved.p99);
     // Measured: 2.63 mean, 27 p99 (scaled up: 4.50, 37).
@@ -153,11 +153,11 @@ TEST_F(TemporalResolve, AStillCameraConvergesAtTheViewersScales)
     for (const Case c : {Case{0.3, 5.0, 52.0, 0.75}, Case{0.75, 2.1, 22.0, 0.7}}) {
         Renderer one(scene);
         one.setRenderScale(c.scale);
-        const Difference upscaled = difference(one.renderImage(camera, time_s, kSize), full);
+        const TemporalResolveDifference upscaled = temporalResolveDifference(one.renderImage(camera, time_s, kTemporalResolveSize), full);
         Renderer temporal(scene);
         temporal.setRenderScale(c.scale);
         temporal.setTemporalResolve(true);
-        const Difference resolved = difference(converged(temporal, camera, time_s, 48), full);
+        const TemporalResolveDifference resolved = temporalResolveDifference(converged(temporal, camera, time_s, 48), full);
         std::printf("scale %.2f: one frame scaled up: %.2f mean, %.0f p99; resolved after 48 frames: %.2f mean, "
                     "%.0f p99\n",
                     c.scale, upscaled.mean, upscaled.p99, resolved.mean, resolved.p99);
@@ -180,7 +180,7 @@ TEST_F(TemporalResolve, WithoutTheJitterItDoesNotConverge)
     temporal.setRenderScale(0.5);
     temporal.setTemporalResolve(true);
     swell::RendererTesting::setTemporalJitter(temporal, false);
-    const Difference unjittered = difference(converged(temporal, camera, time_s, 48), full);
+    const TemporalResolveDifference unjittered = temporalResolveDifference(converged(temporal, camera, time_s, 48), full);
     std::printf("resolved without jitter: %.2f mean, %.0f p99\n", unjittered.mean, unjittered.p99);
     // Measured: 3.84 mean (with the jitter: 2.66).
     EXPECT_GT(unjittered.mean, 3.3) << unjittered;
@@ -198,14 +198,14 @@ TEST_F(TemporalResolve, AConvergedStillDoesNotSwim)
     temporal.setRenderScale(0.5);
     temporal.setTemporalResolve(true);
     const Image before = converged(temporal, camera, 20.0, 47);
-    const Image after = temporal.renderImage(camera, 20.0, kSize);
-    const Difference step = difference(before, after);
+    const Image after = temporal.renderImage(camera, 20.0, kTemporalResolveSize);
+    const TemporalResolveDifference step = temporalResolveDifference(before, after);
     // Without history: two successive jittered frames alone.
     temporal.resetTemporalHistory();
-    const Image alone1 = temporal.renderImage(camera, 20.0, kSize);
+    const Image alone1 = temporal.renderImage(camera, 20.0, kTemporalResolveSize);
     temporal.resetTemporalHistory();
-    const Image alone2 = temporal.renderImage(camera, 20.0, kSize);
-    const Difference jitterStep = difference(alone1, alone2);
+    const Image alone2 = temporal.renderImage(camera, 20.0, kTemporalResolveSize);
+    const TemporalResolveDifference jitterStep = temporalResolveDifference(alone1, alone2);
     std::printf("converged frame to frame: %.2f mean, %.0f p99; lone jittered frames: %.2f mean, %.0f p99\n",
                 step.mean, step.p99, jitterStep.mean, jitterStep.p99);
     EXPECT_LT(step.mean, 0.5) << step;
@@ -230,15 +230,15 @@ TEST_F(TemporalResolve, ACameraCutLeavesNoGhost)
     Renderer fresh(scene);
     fresh.setRenderScale(0.5);
     fresh.setTemporalResolve(true);
-    const Image alone = fresh.renderImage(after, time_s, kSize);
+    const Image alone = fresh.renderImage(after, time_s, kTemporalResolveSize);
 
     Renderer temporal(scene);
     temporal.setRenderScale(0.5);
     temporal.setTemporalResolve(true);
     const Image old = converged(temporal, before, time_s, 16);
-    const Image cut = temporal.renderImage(after, time_s, kSize);
-    const Difference ghost = difference(old, alone);
-    const Difference left = difference(cut, alone);
+    const Image cut = temporal.renderImage(after, time_s, kTemporalResolveSize);
+    const TemporalResolveDifference ghost = temporalResolveDifference(old, alone);
+    const TemporalResolveDifference left = temporalResolveDifference(cut, alone);
     std::printf("old view against the new: %.2f mean, %.0f p99; the frame after the cut against the new view "
                 "alone: %.2f mean, %.0f p99\n",
                 ghost.mean, ghost.p99, left.mean, left.p99);
@@ -267,14 +267,14 @@ TEST_F(TemporalResolve, AChangeUnderAStillCameraLeavesNoGhost)
     Renderer fresh(after);
     fresh.setRenderScale(0.5);
     fresh.setTemporalResolve(true);
-    const Image alone = fresh.renderImage(camera, time_s, kSize);
+    const Image alone = fresh.renderImage(camera, time_s, kTemporalResolveSize);
 
     Renderer temporal(before);
     temporal.setRenderScale(0.5);
     temporal.setTemporalResolve(true);
     const Image old = converged(temporal, camera, time_s, 16);
     temporal.setScene(after);
-    const Image changed = temporal.renderImage(camera, time_s, kSize);
+    const Image changed = temporal.renderImage(camera, time_s, kTemporalResolveSize);
     const double share = ghostShare(old, changed, alone);
     std::printf("the old picture left in the frame after the change: %.3f of it\n", share);
     EXPECT_LT(share, 0.6);
@@ -293,14 +293,14 @@ TEST_F(TemporalResolve, MovingWavesDoNotSmear)
     double time_s = 20.0;
     Image last;
     for (int i = 0; i < 24; ++i, time_s += 0.1)
-        last = temporal.renderImage(camera, time_s, kSize);
+        last = temporal.renderImage(camera, time_s, kTemporalResolveSize);
     time_s -= 0.1;
     const Image full = reference(scene, camera, time_s);
-    const Difference moving = difference(last, full);
+    const TemporalResolveDifference moving = temporalResolveDifference(last, full);
     // The same frame drawn at half size alone, scaled up (no resolve).
     Renderer half(scene);
     half.setRenderScale(0.5);
-    const Difference alone = difference(half.renderImage(camera, time_s, kSize), full);
+    const TemporalResolveDifference alone = temporalResolveDifference(half.renderImage(camera, time_s, kTemporalResolveSize), full);
     // What a smear would be: the full-quality frames of the last second
     // averaged (the history with nothing rejected).
     std::vector<double> sum(full.rgba.size(), 0.0);
@@ -312,7 +312,7 @@ TEST_F(TemporalResolve, MovingWavesDoNotSmear)
     Image smeared = full;
     for (size_t k = 0; k < sum.size(); ++k)
         smeared.rgba[k] = std::uint8_t(std::lround(sum[k] / 10.0));
-    const Difference smear = difference(smeared, full);
+    const TemporalResolveDifference smear = temporalResolveDifference(smeared, full);
     std::printf("moving waves, resolved against full quality: %.2f mean, %.0f p99; a second's frames averaged: "
                 "%.2f mean, %.0f p99; the half-size frame alone: %.2f mean, %.0f p99\n",
                 moving.mean, moving.p99, smear.mean, smear.p99, alone.mean, alone.p99);
@@ -337,25 +337,25 @@ TEST_F(TemporalResolve, EveryKindOfHostFramebufferGetsTheSameFrame)
         renderer.setRenderScale(0.5);
         renderer.setTemporalResolve(true);
         for (int i = 0; i < 6; ++i)
-            renderer.render(camera, 20.0, kSize, framebuffer);
+            renderer.render(camera, 20.0, kTemporalResolveSize, framebuffer);
     };
-    test::HostTarget bytes(kSize);
+    test::HostTarget bytes(kTemporalResolveSize);
     frames(bytes.framebuffer());
     const std::vector<std::uint8_t> expected = bytes.pixels();
 
     // Four samples a pixel, resolved into an 8-bit target to be read.
     gl::Texture samples = gl::Texture::create(GLenum(GL_TEXTURE_2D_MULTISAMPLE));
-    glTextureStorage2DMultisample(samples.id(), 4, GL_RGBA8, kSize.x, kSize.y, GL_TRUE);
+    glTextureStorage2DMultisample(samples.id(), 4, GL_RGBA8, kTemporalResolveSize.x, kTemporalResolveSize.y, GL_TRUE);
     gl::Framebuffer multisampled = gl::Framebuffer::create();
     glNamedFramebufferTexture(multisampled.id(), GL_COLOR_ATTACHMENT0, samples.id(), 0);
     ASSERT_EQ(glCheckNamedFramebufferStatus(multisampled.id(), GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
     frames(multisampled.id());
-    test::HostTarget resolved(kSize, GL_RGBA8, GL_NONE);
-    glBlitNamedFramebuffer(multisampled.id(), resolved.framebuffer(), 0, 0, kSize.x, kSize.y, 0, 0, kSize.x, kSize.y,
+    test::HostTarget resolved(kTemporalResolveSize, GL_RGBA8, GL_NONE);
+    glBlitNamedFramebuffer(multisampled.id(), resolved.framebuffer(), 0, 0, kTemporalResolveSize.x, kTemporalResolveSize.y, 0, 0, kTemporalResolveSize.x, kTemporalResolveSize.y,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
     const std::vector<std::uint8_t> fromSamples = resolved.pixels();
 
-    test::HostTarget floats(kSize, GL_RGBA32F);
+    test::HostTarget floats(kTemporalResolveSize, GL_RGBA32F);
     frames(floats.framebuffer());
     const std::vector<float> fromFloats = floats.floatPixels();
 

@@ -21,7 +21,7 @@ class UnderwaterOptics : public swell::test::GlTest {};
 // For each incidence angle (degrees, from the normal) in the input buffer:
 // the shader's reflectance from water into air, from air into water at the
 // refracted angle, and the length of GLSL's refracted ray from the water.
-const char* const kProbe = R"(
+const char* const kUnderwaterOpticsProbe = R"(
 #include "gpu/constants.glsl"
 #include "water_optics.glsl"
 layout(local_size_x = 1) in;
@@ -46,7 +46,7 @@ struct Probe {
 
 std::vector<Probe> runProbe(const std::vector<float>& angles_deg)
 {
-    const swell::gl::Program program = swell::test::buildShaderProbe(kProbe);
+    const swell::gl::Program program = swell::test::buildShaderProbe(kUnderwaterOpticsProbe);
     std::vector<Probe> probes;
     for (float a : angles_deg)
         probes.push_back({a, 0.0f, 0.0f, 0.0f});

@@ -35,8 +35,8 @@ using test::HostTarget;
 
 class ViewOptions : public test::GlTest {};
 
-constexpr glm::ivec2 kSize{192, 108};
-constexpr double kTime_s = 20.0;
+constexpr glm::ivec2 kViewOptionsSize{192, 108};
+constexpr double kViewOptionsTime_s = 20.0;
 
 struct Options {
     const char* name;
@@ -87,10 +87,10 @@ std::vector<std::uint8_t> rendered(const Scene& base, const Camera& camera, cons
     Renderer renderer(scene);
     renderer.setRenderScale(o.scale);
     renderer.setTemporalResolve(o.temporal);
-    const HostTarget target(kSize);
+    const HostTarget target(kViewOptionsSize);
     for (int i = 0; i < frames; ++i) {
         clear(target);
-        renderer.render(camera, kTime_s, kSize, target.framebuffer());
+        renderer.render(camera, kViewOptionsTime_s, kViewOptionsSize, target.framebuffer());
     }
     return target.pixels();
 }
@@ -99,11 +99,11 @@ std::vector<std::uint8_t> rendered(const Scene& base, const Camera& camera, cons
 std::vector<std::uint8_t> drawn(const Scene& scene, const Camera& camera, const Options& o, int frames)
 {
     Renderer renderer(scene);
-    const HostTarget target(kSize);
+    const HostTarget target(kViewOptionsSize);
     for (int i = 0; i < frames; ++i) {
         clear(target);
-        renderer.advanceTo(kTime_s, camera.position_m);
-        renderer.draw(viewOf(camera, kSize), target.framebuffer(), drawOptions(o));
+        renderer.advanceTo(kViewOptionsTime_s, camera.position_m);
+        renderer.draw(viewOf(camera, kViewOptionsSize), target.framebuffer(), drawOptions(o));
     }
     return target.pixels();
 }
@@ -138,20 +138,20 @@ TEST_F(ViewOptions, DrawThroughTheViewsTargetIsWhatRenderDraws)
 }
 
 // The mean and 99th percentile of the channels' differences, 8-bit levels.
-struct Difference {
+struct ViewOptionsDifference {
     double mean = 0.0, p99 = 0.0;
 };
 
-Difference difference(const std::vector<std::uint8_t>& a, const Image& b)
+ViewOptionsDifference viewOptionsDifference(const std::vector<std::uint8_t>& a, const Image& b)
 {
     std::vector<int> d;
     double sum = 0.0;
     // b is top row first, a bottom row first.
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x)
+    for (int y = 0; y < kViewOptionsSize.y; ++y)
+        for (int x = 0; x < kViewOptionsSize.x; ++x)
             for (int c = 0; c < 3; ++c) {
-                const int v = std::abs(int(a[(std::size_t(y) * kSize.x + x) * 4 + c]) -
-                                       int(b.pixel(x, kSize.y - 1 - y)[c]));
+                const int v = std::abs(int(a[(std::size_t(y) * kViewOptionsSize.x + x) * 4 + c]) -
+                                       int(b.pixel(x, kViewOptionsSize.y - 1 - y)[c]));
                 d.push_back(v);
                 sum += v;
             }
@@ -164,8 +164,8 @@ TEST_F(ViewOptions, AHostsViewResolvedOverTimeConvergesToTheFullResolutionFrame)
     const Scene scene = defaultScene();
     const Camera camera = cameraAt(scene.camera, 0.0);
     Renderer full(scene);
-    const Image reference = full.renderImage(camera, kTime_s, kSize);
-    const Difference resolved = difference(drawn(scene, camera, {"temporal", 0.5, Antialiasing::Off, true}, 48),
+    const Image reference = full.renderImage(camera, kViewOptionsTime_s, kViewOptionsSize);
+    const ViewOptionsDifference resolved = viewOptionsDifference(drawn(scene, camera, {"temporal", 0.5, Antialiasing::Off, true}, 48),
                                            reference);
     std::printf("draw() resolved after 48 frames: %.2f mean, %.0f p99\n", resolved.mean, resolved.p99);
     // render()'s bounds (TemporalResolve.AStillCameraConvergesToTheFullResolutionFrame).
@@ -183,30 +183,30 @@ TEST_F(ViewOptions, SplitScreenViewsKeepTheirOwnHistories)
     right.yaw_deg += 40.0;
     right.position_m.y += 3.0;
     const glm::dvec3 viewpoint = left.position_m;
-    const glm::ivec2 half(kSize.x / 2, kSize.y);
+    const glm::ivec2 half(kViewOptionsSize.x / 2, kViewOptionsSize.y);
     for (const Options& o : {kCases[4], kCases[3], Options{"MSAA at 0.75", 0.75, Antialiasing::Msaa4, false}}) {
         const int frames = o.temporal ? 12 : 1;
         Renderer both(scene), leftOnly(scene), rightOnly(scene);
-        const HostTarget split(kSize), leftAlone(half), rightAlone(half);
+        const HostTarget split(kViewOptionsSize), leftAlone(half), rightAlone(half);
         for (int i = 0; i < frames; ++i) {
             for (const HostTarget* t : {&split, &leftAlone, &rightAlone})
                 clear(*t);
-            both.advanceTo(kTime_s, viewpoint);
+            both.advanceTo(kViewOptionsTime_s, viewpoint);
             View l = viewOf(left, half), r = viewOf(right, half);
             r.viewport.x = half.x;
             both.draw(l, split.framebuffer(), drawOptions(o, 0));
             both.draw(r, split.framebuffer(), drawOptions(o, 1));
-            leftOnly.advanceTo(kTime_s, viewpoint);
+            leftOnly.advanceTo(kViewOptionsTime_s, viewpoint);
             leftOnly.draw(viewOf(left, half), leftAlone.framebuffer(), drawOptions(o, 7));
-            rightOnly.advanceTo(kTime_s, viewpoint);
+            rightOnly.advanceTo(kViewOptionsTime_s, viewpoint);
             rightOnly.draw(viewOf(right, half), rightAlone.framebuffer(), drawOptions(o, 8));
         }
         const std::vector<std::uint8_t> s = split.pixels(), a = leftAlone.pixels(), b = rightAlone.pixels();
         std::vector<std::uint8_t> leftHalf, rightHalf;
-        for (int y = 0; y < kSize.y; ++y) {
-            const auto row = s.begin() + std::ptrdiff_t(y) * kSize.x * 4;
+        for (int y = 0; y < kViewOptionsSize.y; ++y) {
+            const auto row = s.begin() + std::ptrdiff_t(y) * kViewOptionsSize.x * 4;
             leftHalf.insert(leftHalf.end(), row, row + half.x * 4);
-            rightHalf.insert(rightHalf.end(), row + half.x * 4, row + kSize.x * 4);
+            rightHalf.insert(rightHalf.end(), row + half.x * 4, row + kViewOptionsSize.x * 4);
         }
         const Differing l = differing(leftHalf, a), r = differing(rightHalf, b);
         EXPECT_EQ(l.channels, 0) << o.name << ", left: " << l.channels << " channels differ, by up to " << l.most;
@@ -221,10 +221,10 @@ TEST_F(ViewOptions, TheHostsDepthHoldsTheWaterThroughTheTarget)
     std::vector<float> straight, through;
     for (const Antialiasing a : {Antialiasing::Off, Antialiasing::Fxaa}) {
         Renderer renderer(scene);
-        const HostTarget target(kSize);
+        const HostTarget target(kViewOptionsSize);
         clear(target);
-        renderer.advanceTo(kTime_s, camera.position_m);
-        renderer.draw(viewOf(camera, kSize), target.framebuffer(), drawOptions({"", 1.0, a, false}));
+        renderer.advanceTo(kViewOptionsTime_s, camera.position_m);
+        renderer.draw(viewOf(camera, kViewOptionsSize), target.framebuffer(), drawOptions({"", 1.0, a, false}));
         (a == Antialiasing::Off ? straight : through) = target.depths();
     }
     long long nearer = 0, differ = 0;

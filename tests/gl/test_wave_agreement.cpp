@@ -27,7 +27,7 @@ swell::Scene agreementScene()
 }
 
 // Float positions carry ~1e-7 of up to ~100 lattice steps: far below this.
-constexpr double kTieMargin = 1e-4;
+constexpr double kWaveAgreementTieMargin = 1e-4;
 
 // Which normals must agree: the Gerstner model's vertex normals are its
 // analytic ones on both sides; the spectral model's GPU normals come from
@@ -58,7 +58,7 @@ void expectAgreement(swell::Renderer& renderer, const swell::Scene& scene, glm::
         // A nominal position within float rounding of a tie between two
         // lattice points may snap to either on the GPU; the CPU twin flags
         // those. They must be rare, and on a neighbouring lattice point.
-        if (cpu[k].snapMargin < kTieMargin) {
+        if (cpu[k].snapMargin < kWaveAgreementTieMargin) {
             ++ties;
             EXPECT_LT(rest, cpu[k].latticeStep_m * 1.5) << "vertex " << k << " is off both lattice points of its tie";
             continue;

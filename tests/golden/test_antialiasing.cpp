@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 class Antialiasing : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{160, 120};
+constexpr glm::ivec2 kAntialiasingSize{160, 120};
 
 // The box's edge against the sky is far brighter than anything on either
 // side varies over three pixels: the sky's gradient moves a few levels, the
@@ -96,7 +96,7 @@ swell::Image render(swell::Antialiasing mode, double renderScale, const std::str
     const swell::Scene scene = boxAgainstTheSky(mode);
     swell::Renderer renderer(scene);
     renderer.setRenderScale(renderScale);
-    const swell::Image image = renderer.renderImage(swell::cameraAt(scene.camera, 0.0), 0.0, kSize);
+    const swell::Image image = renderer.renderImage(swell::cameraAt(scene.camera, 0.0), 0.0, kAntialiasingSize);
     swell::test::saveTestImage(image, name);
     return image;
 }
@@ -158,10 +158,10 @@ TEST_F(Antialiasing, DebugViewsReadTheirTargetsTheSameWithMsaa)
         scene.antialiasing = swell::Antialiasing::Off;
         swell::Renderer renderer(scene);
         const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-        const swell::Image off = renderer.renderImage(camera, 0.0, kSize);
+        const swell::Image off = renderer.renderImage(camera, 0.0, kAntialiasingSize);
         scene.antialiasing = swell::Antialiasing::Msaa4;
         renderer.setScene(scene);
-        const swell::Image msaa = renderer.renderImage(camera, 0.0, kSize);
+        const swell::Image msaa = renderer.renderImage(camera, 0.0, kAntialiasingSize);
         swell::test::saveTestImage(msaa, "antialiasing_debug_view_" + std::to_string(int(view)));
         double sum = 0.0;
         int far = 0;
@@ -185,8 +185,8 @@ TEST_F(Antialiasing, RenderScaleKeepsTheImageSizeAndScalesUpFiltered)
 {
     const swell::Image full = render(swell::Antialiasing::Off, 1.0, "render_scale_1");
     const swell::Image half = render(swell::Antialiasing::Off, 0.5, "render_scale_0.5");
-    ASSERT_EQ(half.width, kSize.x);
-    ASSERT_EQ(half.height, kSize.y);
+    ASSERT_EQ(half.width, kAntialiasingSize.x);
+    ASSERT_EQ(half.height, kAntialiasingSize.y);
     // Drawn at 80x60 and scaled up bilinearly: the silhouette is a ramp
     // two output pixels wide, so it has intermediate pixels without AA.
     EXPECT_GE(countEdges(half).share(), kSmoothShare);

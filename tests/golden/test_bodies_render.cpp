@@ -17,8 +17,8 @@ namespace {
 
 class BodiesRender : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{256, 144};
-constexpr double kTime_s = 6.5;
+constexpr glm::ivec2 kBodiesRenderSize{256, 144};
+constexpr double kBodiesRenderTime_s = 6.5;
 
 // The built-in boat as a rigid body under way, dropped 0.3 m so it heaves,
 // and a ballasted buoy, seen from 14 m off.
@@ -48,16 +48,16 @@ swell::Scene bodiesScene()
 TEST_F(BodiesRender, SameTimeSameImageHoweverTheFramesFell)
 {
     const swell::Scene scene = bodiesScene();
-    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kBodiesRenderTime_s);
 
     swell::Renderer direct(scene);
-    const swell::Image once = direct.renderImage(camera, kTime_s, kSize);
+    const swell::Image once = direct.renderImage(camera, kBodiesRenderTime_s, kBodiesRenderSize);
 
     // A viewer's frames: uneven steps, one of them back in time (a scrub).
     swell::Renderer viewer(scene);
     for (double t : {0.0, 0.4, 1.37, 2.0, 1.1, 3.33, 5.02, 6.49})
-        (void)viewer.renderImage(swell::cameraAt(scene.camera, t), t, kSize);
-    const swell::Image afterFrames = viewer.renderImage(camera, kTime_s, kSize);
+        (void)viewer.renderImage(swell::cameraAt(scene.camera, t), t, kBodiesRenderSize);
+    const swell::Image afterFrames = viewer.renderImage(camera, kBodiesRenderTime_s, kBodiesRenderSize);
 
     const swell::ImageDifference d = swell::compareImages(once, afterFrames);
     EXPECT_EQ(d.maxChannel, 0) << swell::test::saveTestImage(once, "bodies_render_once") << " vs "
@@ -71,7 +71,7 @@ TEST_F(BodiesRender, SameTimeSameImageHoweverTheFramesFell)
         o.velocity_m_per_s = glm::dvec3(0.0);
     }
     swell::Renderer still(riders);
-    const swell::Image ridden = still.renderImage(camera, kTime_s, kSize);
+    const swell::Image ridden = still.renderImage(camera, kBodiesRenderTime_s, kBodiesRenderSize);
     int changed = 0;
     for (std::size_t i = 0; i < once.rgba.size(); i += 4)
         changed += std::abs(int(once.rgba[i]) - int(ridden.rgba[i])) > 8;

@@ -14,11 +14,11 @@
 #include <cstdint>
 #include <cstdio>
 
-namespace {
-
 class CameraRoll : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 240};
+namespace {
+
+constexpr glm::ivec2 kCameraRollSize{320, 240};
 
 // The image's colour at (x, y) in pixels (pixel centres at .5), bilinear.
 glm::dvec3 sample(const swell::Image& image, double x, double y)
@@ -76,11 +76,11 @@ TEST_F(CameraRoll, ARolledFrameIsTheLevelFrameTurnedByTheRoll)
     scene.objects.push_back({"builtin:buoy", {0.0, 0.0, -40.0}, 0.0, 2.0, false});
     swell::Renderer renderer(scene);
     const swell::Camera levelCamera = swell::cameraAt(scene.camera, 0.0);
-    const swell::Image level = renderer.renderImage(levelCamera, 0.0, kSize);
+    const swell::Image level = renderer.renderImage(levelCamera, 0.0, kCameraRollSize);
     for (double roll : {-30.0, 15.0, 90.0}) {
         swell::Camera camera = levelCamera;
         camera.roll_deg = roll;
-        const swell::Image rolled = renderer.renderImage(camera, 0.0, kSize);
+        const swell::Image rolled = renderer.renderImage(camera, 0.0, kCameraRollSize);
         const double turned = differenceFromTurned(rolled, level, roll);
         const double otherWay = differenceFromTurned(rolled, level, -roll);
         const double unturned = differenceFromTurned(rolled, level, 0.0);

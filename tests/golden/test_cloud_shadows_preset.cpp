@@ -28,14 +28,14 @@ namespace {
 
 class CloudShadowsPreset : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 180};
+constexpr glm::ivec2 kCloudShadowsPresetSize{320, 180};
 
 swell::Scene presetScene()
 {
     return swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/cloud-shadows.toml");
 }
 
-double luminance(const std::uint8_t* p)
+double cloudShadowsPresetLuminance(const std::uint8_t* p)
 {
     using swell::test::srgbToLinear;
     return 0.2126 * srgbToLinear(p[0]) + 0.7152 * srgbToLinear(p[1]) + 0.0722 * srgbToLinear(p[2]);
@@ -54,17 +54,17 @@ ShadowContrast shadowContrast(const swell::Scene& scene, const swell::Camera& ca
     const glm::vec3 sun = glm::vec3(glm::normalize(scene.sun.direction));
     ShadowContrast out;
     double ratioSum = 0.0;
-    for (int band = 0; band < kSize.y; band += 12) {
+    for (int band = 0; band < kCloudShadowsPresetSize.y; band += 12) {
         double shadedSum = 0.0, litSum = 0.0;
         int shaded = 0, lit = 0;
-        for (int y = band; y < std::min(band + 12, kSize.y); ++y)
-            for (int x = 0; x < kSize.x; ++x) {
-                const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+        for (int y = band; y < std::min(band + 12, kCloudShadowsPresetSize.y); ++y)
+            for (int x = 0; x < kCloudShadowsPresetSize.x; ++x) {
+                const glm::dvec3 d = swell::test::pixelRay(camera, kCloudShadowsPresetSize, x, y);
                 if (d.y > -0.02)
                     continue;
                 const glm::dvec3 sea = camera.position_m + d * (camera.position_m.y / -d.y);
                 const float t = swell::cloudShadowTransmittance(scene.sky.clouds, glm::vec3(sea), sun, 30.0f);
-                const double l = luminance(image.pixel(x, y));
+                const double l = cloudShadowsPresetLuminance(image.pixel(x, y));
                 if (t < 0.2f) {
                     shadedSum += l;
                     ++shaded;
@@ -97,13 +97,13 @@ TEST_F(CloudShadowsPreset, ShadowsShowOnTheSeaInView)
     swell::Renderer renderer(scene);
     for (const double time_s : {5.0, 20.0}) {
         const swell::Camera camera = swell::cameraAt(scene.camera, time_s);
-        const swell::Image image = renderer.renderImage(camera, time_s, kSize);
+        const swell::Image image = renderer.renderImage(camera, time_s, kCloudShadowsPresetSize);
         swell::test::saveTestImage(image, "cloud_shadows_preset_t" + std::to_string(int(time_s)));
         const ShadowContrast c = shadowContrast(scene, camera, image);
         std::printf("t = %.0f s: %d water pixels in shadow, %d in the sun; lit / shaded luminance %.3f over %d bands\n",
                     time_s, c.shaded, c.lit, c.litOverShaded, c.bands);
-        EXPECT_GT(c.shaded, kSize.x * kSize.y / 10);
-        EXPECT_GT(c.lit, kSize.x * kSize.y / 10);
+        EXPECT_GT(c.shaded, kCloudShadowsPresetSize.x * kCloudShadowsPresetSize.y / 10);
+        EXPECT_GT(c.lit, kCloudShadowsPresetSize.x * kCloudShadowsPresetSize.y / 10);
         EXPECT_GE(c.bands, 3);
         EXPECT_GE(c.litOverShaded, 1.2);
     }

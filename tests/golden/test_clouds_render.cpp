@@ -33,7 +33,7 @@ using swell::test::srgbLevel;
 
 class CloudsRender : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 240};
+constexpr glm::ivec2 kCloudsRenderSize{320, 240};
 const glm::dvec3 kSun = glm::normalize(glm::dvec3(0.4, 0.6, -0.7));
 
 swell::Scene cloudyStage(double cover)
@@ -69,10 +69,10 @@ TEST_F(CloudsRender, SkyIsTheCppModels)
     std::vector<int> errors;
     for (const auto& [yaw, pitch] : {std::pair{0.0, 30.0}, {90.0, 30.0}, {180.0, 30.0}, {270.0, 30.0}, {40.0, 75.0}}) {
         const swell::Camera camera = looking(scene, yaw, pitch);
-        const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
-        for (int y = 0; y < kSize.y; y += 3)
-            for (int x = 0; x < kSize.x; x += 3) {
-                const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+        const swell::Image image = renderer.renderImage(camera, 0.0, kCloudsRenderSize);
+        for (int y = 0; y < kCloudsRenderSize.y; y += 3)
+            for (int x = 0; x < kCloudsRenderSize.x; x += 3) {
+                const glm::dvec3 d = swell::test::pixelRay(camera, kCloudsRenderSize, x, y);
                 if (d.y < std::sin(glm::radians(5.0)) || glm::dot(d, kSun) > std::cos(glm::radians(2.0)))
                     continue;
                 const glm::dvec3 expected = scene.sky.exposure
@@ -113,8 +113,8 @@ TEST_F(CloudsRender, CoverZeroIsTheClearSky)
     b.sky.clouds.opticalDepth = 150.0;
     b.sky.clouds.scale_m = 9000.0;
     swell::Renderer ra(a), rb(b);
-    const swell::Image ia = ra.renderImage(looking(a, 20.0, 20.0), 0.0, kSize);
-    const swell::Image ib = rb.renderImage(looking(b, 20.0, 20.0), 0.0, kSize);
+    const swell::Image ia = ra.renderImage(looking(a, 20.0, 20.0), 0.0, kCloudsRenderSize);
+    const swell::Image ib = rb.renderImage(looking(b, 20.0, 20.0), 0.0, kCloudsRenderSize);
     EXPECT_TRUE(ia.rgba == ib.rgba);
 }
 
@@ -135,14 +135,14 @@ TEST_F(CloudsRender, WaterReflectsTheClouds)
     const swell::Scene scene = cloudyStage(0.5), clearScene = cloudyStage(0.0);
     swell::Renderer renderer(scene), clearRenderer(clearScene);
     const swell::Camera camera = looking(scene, 200.0, -35.0);
-    const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
-    const swell::Image clear = clearRenderer.renderImage(camera, 0.0, kSize);
+    const swell::Image image = renderer.renderImage(camera, 0.0, kCloudsRenderSize);
+    const swell::Image clear = clearRenderer.renderImage(camera, 0.0, kCloudsRenderSize);
     swell::test::saveTestImage(image, "clouds_reflected");
     double sum = 0.0, squares = 0.0;
     int n = 0;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
-            if (swell::test::pixelRay(camera, kSize, x, y).y > -0.05)
+    for (int y = 0; y < kCloudsRenderSize.y; ++y)
+        for (int x = 0; x < kCloudsRenderSize.x; ++x) {
+            if (swell::test::pixelRay(camera, kCloudsRenderSize, x, y).y > -0.05)
                 continue;
             const double change = blueness(image, x, y) - blueness(clear, x, y);
             sum += change;
@@ -169,7 +169,7 @@ swell::Scene shadowStage(double cover)
     return scene;
 }
 
-double luminance(const std::uint8_t* p)
+double cloudsRenderLuminance(const std::uint8_t* p)
 {
     using swell::test::srgbToLinear;
     return 0.2126 * srgbToLinear(p[0]) + 0.7152 * srgbToLinear(p[1]) + 0.0722 * srgbToLinear(p[2]);
@@ -221,13 +221,13 @@ TEST_F(CloudsRender, ShadowsFallWhereTheModelSays)
     }
     ASSERT_TRUE(found);
     swell::Renderer renderer(scene), clearRenderer(clearScene);
-    const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
-    const swell::Image clear = clearRenderer.renderImage(camera, 0.0, kSize);
+    const swell::Image image = renderer.renderImage(camera, 0.0, kCloudsRenderSize);
+    const swell::Image clear = clearRenderer.renderImage(camera, 0.0, kCloudsRenderSize);
     swell::test::saveTestImage(image, "clouds_shadows");
     std::vector<double> change, predicted;
-    for (int y = 0; y < kSize.y; y += 2)
-        for (int x = 0; x < kSize.x; x += 2) {
-            const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+    for (int y = 0; y < kCloudsRenderSize.y; y += 2)
+        for (int x = 0; x < kCloudsRenderSize.x; x += 2) {
+            const glm::dvec3 d = swell::test::pixelRay(camera, kCloudsRenderSize, x, y);
             if (d.y > -0.05)
                 continue;
             const glm::dvec3 sea = camera.position_m + d * (camera.position_m.y / -d.y);
@@ -271,8 +271,8 @@ TEST_F(CloudsRender, ALayerOfNoDepthIsNoLayer)
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.position_m = {0.0, 4.0, 0.0};
     camera.pitch_deg = -10.0;
-    const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
-    const swell::Image clear = clearRenderer.renderImage(camera, 0.0, kSize);
+    const swell::Image image = renderer.renderImage(camera, 0.0, kCloudsRenderSize);
+    const swell::Image clear = clearRenderer.renderImage(camera, 0.0, kCloudsRenderSize);
     int worst = 0;
     long long differing = 0;
     for (size_t i = 0; i < image.rgba.size(); ++i) {
@@ -312,19 +312,19 @@ RockLook rockAt(const swell::Scene& base, glm::dvec3 rock_m, const char* name)
     camera.fovY_deg = 30.0;
     swell::Renderer with(scene);
     with.setWaveModel(std::make_shared<swell::FlatModel>());
-    const swell::Image image = with.renderImage(camera, 0.0, kSize);
+    const swell::Image image = with.renderImage(camera, 0.0, kCloudsRenderSize);
     scene.objects.clear();
     swell::Renderer without(scene);
     without.setWaveModel(std::make_shared<swell::FlatModel>());
-    const swell::Image empty = without.renderImage(camera, 0.0, kSize);
+    const swell::Image empty = without.renderImage(camera, 0.0, kCloudsRenderSize);
     swell::test::saveTestImage(image, name);
     RockLook look;
-    for (int y = 0; y < kSize.y / 2 + 10; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
+    for (int y = 0; y < kCloudsRenderSize.y / 2 + 10; ++y)
+        for (int x = 0; x < kCloudsRenderSize.x; ++x) {
             const std::uint8_t* a = image.pixel(x, y);
             const std::uint8_t* b = empty.pixel(x, y);
             if (std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 24) {
-                look.luminance += luminance(a);
+                look.luminance += cloudsRenderLuminance(a);
                 ++look.pixels;
             }
         }
@@ -373,9 +373,9 @@ TEST_F(CloudsRender, ShadowedStillIsDeterministic)
     camera.position_m = {0.0, 60.0, 0.0};
     camera.pitch_deg = -30.0;
     swell::Renderer a(scene), b(scene);
-    const swell::Image first = a.renderImage(camera, 0.0, kSize);
-    const swell::Image again = a.renderImage(camera, 0.0, kSize);
-    const swell::Image other = b.renderImage(camera, 0.0, kSize);
+    const swell::Image first = a.renderImage(camera, 0.0, kCloudsRenderSize);
+    const swell::Image again = a.renderImage(camera, 0.0, kCloudsRenderSize);
+    const swell::Image other = b.renderImage(camera, 0.0, kCloudsRenderSize);
     EXPECT_TRUE(first.rgba == again.rgba);
     EXPECT_TRUE(first.rgba == other.rgba);
 }

@@ -15,7 +15,7 @@ namespace {
 
 class Effects : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 240};
+constexpr glm::ivec2 kEffectsSize{320, 240};
 
 // Still water, no island, a clear sky: the stage for each effect.
 swell::Scene stillWater()
@@ -29,13 +29,13 @@ swell::Scene stillWater()
 glm::dvec2 project(const swell::Camera& camera, glm::dvec3 point)
 {
     const glm::dvec3 origin(camera.position_m.x, 0.0, camera.position_m.z);
-    const glm::dvec4 clip = camera.projection(double(kSize.x) / kSize.y) * camera.viewRelativeTo(origin) *
+    const glm::dvec4 clip = camera.projection(double(kEffectsSize.x) / kEffectsSize.y) * camera.viewRelativeTo(origin) *
                             glm::dvec4(point - origin, 1.0);
     const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
-    return {(ndc.x * 0.5 + 0.5) * kSize.x, (0.5 - ndc.y * 0.5) * kSize.y};
+    return {(ndc.x * 0.5 + 0.5) * kEffectsSize.x, (0.5 - ndc.y * 0.5) * kEffectsSize.y};
 }
 
-double luminance(const swell::Image& image, int x, int y)
+double effectsLuminance(const swell::Image& image, int x, int y)
 {
     const std::uint8_t* p = image.pixel(x, y);
     return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
@@ -54,7 +54,7 @@ TEST_F(Effects, CalmWaterMirrorsABuoyWhereGeometryPredicts)
     scene.camera.pitch_deg = -4.0;
     swell::Renderer renderer(scene);
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
+    const swell::Image image = renderer.renderImage(camera, 0.0, kEffectsSize);
     // The buoy's upper red band ends at y = 2.05 m on scale 1 (4.1 m here),
     // where the white top begins. Directly seen, that edge is the topmost red
     // row; mirrored about the still water (y = -4.1 m) it is the lowest.
@@ -62,7 +62,7 @@ TEST_F(Effects, CalmWaterMirrorsABuoyWhereGeometryPredicts)
     const glm::dvec2 mirroredRedTop = project(camera, {0.0, -4.1, -40.0});
     const int column = int(std::lround(redTop.x));
     int highestRed = -1, lowestRed = -1;
-    for (int y = 0; y < kSize.y; ++y)
+    for (int y = 0; y < kEffectsSize.y; ++y)
         if (isBuoyRed(image.pixel(column, y))) {
             if (highestRed < 0)
                 highestRed = y;
@@ -89,14 +89,14 @@ TEST_F(Effects, FresnelReflectsMoreAtGrazingAngles)
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.position_m.y = 20.0;
     camera.pitch_deg = -89.0; // looking straight down
-    const swell::Image nadir = renderer.renderImage(camera, 0.0, kSize);
+    const swell::Image nadir = renderer.renderImage(camera, 0.0, kEffectsSize);
     camera.position_m.y = 2.0;
     camera.pitch_deg = -3.0;
-    const swell::Image grazing = renderer.renderImage(camera, 0.0, kSize);
-    const double down = luminance(nadir, kSize.x / 2, kSize.y / 2);
+    const swell::Image grazing = renderer.renderImage(camera, 0.0, kEffectsSize);
+    const double down = effectsLuminance(nadir, kEffectsSize.x / 2, kEffectsSize.y / 2);
     // Water seen 5 degrees below the horizon: 85 degrees from the normal.
     const glm::dvec2 at = project(camera, {camera.position_m.x, 0.0, camera.position_m.z - 2.0 / std::tan(glm::radians(5.0))});
-    const double across = luminance(grazing, kSize.x / 2, int(at.y));
+    const double across = effectsLuminance(grazing, kEffectsSize.x / 2, int(at.y));
     // Schlick with F0 = 0.02: 2% of the sky straight down, 64% at 85 degrees.
     // The sky is ~200 levels bright, so the grazing water must be several times
     // brighter than the nadir water.
@@ -117,15 +117,15 @@ TEST_F(Effects, FullFogMakesHorizonWaterAndSkyTheFogColour)
     swell::Renderer renderer(scene);
     swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     camera.pitch_deg = 0.0;
-    const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
+    const swell::Image image = renderer.renderImage(camera, 0.0, kEffectsSize);
     // Linear 0.5 in sRGB is 188 (0.7354 * 255 = 187.5).
     const int expected = 188;
-    const int horizon = kSize.y / 2;
+    const int horizon = kEffectsSize.y / 2;
     // Rows 1 and 3 pixels above (sky) and below (water) the horizon: 3 px is
     // 0.75 degrees, where the water 6 m below the eye is 458 m away and the
     // sky's fog layer (2% of the fog end, 6 m, up) likewise: past the 300 m end.
     for (int y : {horizon - 3, horizon - 1, horizon + 1, horizon + 3})
-        for (int x = 0; x < kSize.x; x += 16)
+        for (int x = 0; x < kEffectsSize.x; x += 16)
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(image.pixel(x, y)[c], expected, 2) << "pixel " << x << "," << y << " channel " << c;
     // 48 / 0.6: the fogged horizon is flat colour, so only the near water's
@@ -143,7 +143,7 @@ TEST_F(Effects, RefractionShowsShallowObjectsAndHidesDeepOnes)
         scene.camera.position_m = {0.0, 8.0, 0.0};
         scene.camera.pitch_deg = -35.0;
         swell::Renderer renderer(scene);
-        return renderer.renderImage(swell::cameraAt(scene.camera, 0.0), 0.0, kSize);
+        return renderer.renderImage(swell::cameraAt(scene.camera, 0.0), 0.0, kEffectsSize);
     };
     const swell::Image empty = render(0.0, false);
     const swell::Image shallow = render(0.3, true);

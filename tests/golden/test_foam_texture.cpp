@@ -49,7 +49,7 @@ namespace {
 
 using namespace swell;
 
-constexpr int kView = 256;      // pixels a side
+constexpr int kFoamTextureView = 256;      // pixels a side
 constexpr int kLowestRing = 10; // bins of radius left out: the patches' own scale (2.5 m from 20 m)
 constexpr int kArc = 12;        // bins each way along the ring the median is taken over
 constexpr double kPeakRatio = 12.0;
@@ -64,10 +64,10 @@ Scene stormFoam()
 }
 
 // The foam view straight down from height_m over (x, z), linear share.
-std::vector<double> foamView(Renderer& renderer, const Scene& scene, double x_m, double z_m, double height_m,
+std::vector<double> foamTextureFoamView(Renderer& renderer, const Scene& scene, double x_m, double z_m, double height_m,
                              const char* name)
 {
-    return test::foamViewDown(renderer, scene, {x_m, height_m, z_m}, std::nullopt, 20.0, kView, name);
+    return test::foamViewDown(renderer, scene, {x_m, height_m, z_m}, std::nullopt, 20.0, kFoamTextureView, name);
 }
 
 // |DFT|^2 of the view, mean removed and Hann-windowed, added to `power`
@@ -78,12 +78,12 @@ void addPeriodogram(const std::vector<double>& view, std::vector<double>& power)
     for (const double v : view)
         mean += v / double(view.size());
     std::vector<kiss_fft_cpx> in(view.size()), out(view.size());
-    for (int y = 0; y < kView; ++y)
-        for (int x = 0; x < kView; ++x) {
-            const double hann = std::sin(3.14159265358979 * (x + 0.5) / kView) * std::sin(3.14159265358979 * (y + 0.5) / kView);
-            in[size_t(y * kView + x)] = {float((view[size_t(y * kView + x)] - mean) * hann * hann), 0.0f};
+    for (int y = 0; y < kFoamTextureView; ++y)
+        for (int x = 0; x < kFoamTextureView; ++x) {
+            const double hann = std::sin(3.14159265358979 * (x + 0.5) / kFoamTextureView) * std::sin(3.14159265358979 * (y + 0.5) / kFoamTextureView);
+            in[size_t(y * kFoamTextureView + x)] = {float((view[size_t(y * kFoamTextureView + x)] - mean) * hann * hann), 0.0f};
         }
-    const int dims[2] = {kView, kView};
+    const int dims[2] = {kFoamTextureView, kFoamTextureView};
     kiss_fftnd_cfg cfg = kiss_fftnd_alloc(dims, 2, 0, nullptr, nullptr);
     kiss_fftnd(cfg, in.data(), out.data());
     kiss_fft_free(cfg);
@@ -99,22 +99,22 @@ struct Peak {
 // The bin that stands highest above the median of its ring's neighbours.
 Peak highestPeak(const std::vector<double>& power)
 {
-    auto signedIndex = [](int i) { return i < kView / 2 ? i : i - kView; };
+    auto signedIndex = [](int i) { return i < kFoamTextureView / 2 ? i : i - kFoamTextureView; };
     // Each ring's bins, by angle.
-    std::vector<std::vector<std::pair<double, double>>> rings(kView / 2);
-    for (int y = 0; y < kView; ++y)
-        for (int x = 0; x < kView; ++x) {
+    std::vector<std::vector<std::pair<double, double>>> rings(kFoamTextureView / 2);
+    for (int y = 0; y < kFoamTextureView; ++y)
+        for (int x = 0; x < kFoamTextureView; ++x) {
             const int kx = signedIndex(x), ky = signedIndex(y);
             const int ring = int(std::lround(std::hypot(kx, ky)));
-            if (ring >= kLowestRing && ring < kView / 2)
-                rings[size_t(ring)].push_back({std::atan2(double(ky), double(kx)), power[size_t(y * kView + x)]});
+            if (ring >= kLowestRing && ring < kFoamTextureView / 2)
+                rings[size_t(ring)].push_back({std::atan2(double(ky), double(kx)), power[size_t(y * kFoamTextureView + x)]});
         }
     Peak best;
-    for (int y = 0; y < kView; ++y)
-        for (int x = 0; x < kView; ++x) {
+    for (int y = 0; y < kFoamTextureView; ++y)
+        for (int x = 0; x < kFoamTextureView; ++x) {
             const int kx = signedIndex(x), ky = signedIndex(y);
             const int ring = int(std::lround(std::hypot(kx, ky)));
-            if (ring < kLowestRing || ring >= kView / 2)
+            if (ring < kLowestRing || ring >= kFoamTextureView / 2)
                 continue;
             const double angle = std::atan2(double(ky), double(kx));
             const double arc_rad = std::min(double(kArc) / ring, 3.14159265358979 / 4.0);
@@ -126,7 +126,7 @@ Peak highestPeak(const std::vector<double>& power)
             }
             std::nth_element(about.begin(), about.begin() + std::ptrdiff_t(about.size() / 2), about.end());
             const double median = about[about.size() / 2];
-            const double ratio = power[size_t(y * kView + x)] / std::max(median, 1e-30);
+            const double ratio = power[size_t(y * kFoamTextureView + x)] / std::max(median, 1e-30);
             if (ratio > best.ratio)
                 best = {ratio, kx, ky};
         }
@@ -137,12 +137,12 @@ void expectNoCells(double height_m, const char* name)
 {
     const Scene scene = stormFoam();
     Renderer renderer(scene);
-    std::vector<double> power(size_t(kView) * kView, 0.0);
+    std::vector<double> power(size_t(kFoamTextureView) * kFoamTextureView, 0.0);
     const double places[][2] = {{0.0, 0.0}, {1237.0, -2903.0}, {-3311.0, 877.0}, {5003.0, 4421.0}};
     double cover = 0.0;
     for (const auto& place : places) {
         const std::vector<double> view =
-            foamView(renderer, scene, place[0], place[1], height_m, &place == &places[0] ? name : nullptr);
+            foamTextureFoamView(renderer, scene, place[0], place[1], height_m, &place == &places[0] ? name : nullptr);
         for (const double v : view)
             cover += v / double(view.size() * std::size(places));
         addPeriodogram(view, power);
@@ -157,7 +157,7 @@ void expectNoCells(double height_m, const char* name)
 }
 
 // The views' margin left out of a match, as wide as the largest shift tried.
-constexpr int kMargin = 40;
+constexpr int kFoamTextureMargin = 40;
 
 // The foam from 20 m, and from the camera moved 2.4 m along x (24 pixels
 // at the sea's level; the waves' crests are nearer the camera, so the
@@ -170,9 +170,9 @@ TEST_F(FoamTexture, StaysOnTheWater)
 {
     const Scene scene = stormFoam();
     Renderer renderer(scene);
-    const std::vector<double> here = foamView(renderer, scene, 0.0, 0.0, 20.0, nullptr);
-    const std::vector<double> moved = foamView(renderer, scene, 2.390625, 0.0, 20.0, nullptr);
-    const test::ShiftMatch match = test::bestShift(here, moved, kView, kMargin);
+    const std::vector<double> here = foamTextureFoamView(renderer, scene, 0.0, 0.0, 20.0, nullptr);
+    const std::vector<double> moved = foamTextureFoamView(renderer, scene, 2.390625, 0.0, 20.0, nullptr);
+    const test::ShiftMatch match = test::bestShift(here, moved, kFoamTextureView, kFoamTextureMargin);
     EXPECT_LE(match.difference, 0.04);
     EXPECT_LE(match.dx, -12) << "the foam's texture moved with the camera";
 }
@@ -187,9 +187,9 @@ TEST_F(FoamTexture, AStillRepeatsBitForBit)
     camera.position_m = {0.0, 20.0, 0.0};
     camera.pitch_deg = -60.0;
     Renderer first(scene);
-    const Image a = first.renderImage(camera, 20.0, {kView, kView});
+    const Image a = first.renderImage(camera, 20.0, {kFoamTextureView, kFoamTextureView});
     Renderer second(scene);
-    const Image b = second.renderImage(camera, 20.0, {kView, kView});
+    const Image b = second.renderImage(camera, 20.0, {kFoamTextureView, kFoamTextureView});
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     EXPECT_TRUE(a.rgba == b.rgba);
 }
@@ -220,10 +220,10 @@ TEST_F(FoamTexture, ABreakingCrestsFoamIsDenseAndOlderFoamThins)
         return double(n) / double(view.size());
     };
     Renderer withHistory(scene);
-    const std::vector<double> all = foamView(withHistory, scene, 0.0, 0.0, 300.0, nullptr);
+    const std::vector<double> all = foamTextureFoamView(withHistory, scene, 0.0, 0.0, 300.0, nullptr);
     scene.historyStart_s = 20.0;
     Renderer breakingOnly(scene);
-    const std::vector<double> now = foamView(breakingOnly, scene, 0.0, 0.0, 300.0, "foam_breaking_now_from_300m");
+    const std::vector<double> now = foamTextureFoamView(breakingOnly, scene, 0.0, 0.0, 300.0, "foam_breaking_now_from_300m");
     const double nowDense = dense(now, 0.85), nowFoamed = dense(now, 0.05);
     const double allDense = dense(all, 0.85), allFoamed = dense(all, 0.05);
     std::printf("breaking now: %.4f of the view covered 0.85 or more of %.4f foamed (0.05 or more); whole "
@@ -259,14 +259,14 @@ TEST_F(FoamTexture, BubblesUnderTheFoamBrightenTheWater)
                 v.push_back(test::srgbToLinear(image.pixel(x, y)[1])); // green: what bubbles brighten most
         return v;
     };
-    Renderer foamView(scene);
-    const std::vector<double> cover = linear(foamView.renderImage(camera, 20.0, {kView, kView}));
+    Renderer foamTextureFoamView(scene);
+    const std::vector<double> cover = linear(foamTextureFoamView.renderImage(camera, 20.0, {kFoamTextureView, kFoamTextureView}));
     scene.debugView = DebugView::Refraction;
     Renderer withFoam(scene);
-    const std::vector<double> with = linear(withFoam.renderImage(camera, 20.0, {kView, kView}));
+    const std::vector<double> with = linear(withFoam.renderImage(camera, 20.0, {kFoamTextureView, kFoamTextureView}));
     scene.waves.foamLifetime_s = 0.0;
     Renderer withoutFoam(scene);
-    const std::vector<double> without = linear(withoutFoam.renderImage(camera, 20.0, {kView, kView}));
+    const std::vector<double> without = linear(withoutFoam.renderImage(camera, 20.0, {kFoamTextureView, kFoamTextureView}));
     std::vector<double> brighter(with.size());
     double mean = 0.0;
     for (size_t i = 0; i < with.size(); ++i) {
@@ -278,17 +278,17 @@ TEST_F(FoamTexture, BubblesUnderTheFoamBrightenTheWater)
     // holes are over the bubbles too).
     constexpr int kBox = 7;
     std::vector<double> near(cover.size(), 0.0);
-    for (int y = 0; y < kView; ++y)
-        for (int x = 0; x < kView; ++x) {
+    for (int y = 0; y < kFoamTextureView; ++y)
+        for (int x = 0; x < kFoamTextureView; ++x) {
             double sum = 0.0;
             int n = 0;
             for (int dy = -kBox; dy <= kBox; ++dy)
                 for (int dx = -kBox; dx <= kBox; ++dx)
-                    if (x + dx >= 0 && x + dx < kView && y + dy >= 0 && y + dy < kView) {
-                        sum += cover[size_t((y + dy) * kView + x + dx)];
+                    if (x + dx >= 0 && x + dx < kFoamTextureView && y + dy >= 0 && y + dy < kFoamTextureView) {
+                        sum += cover[size_t((y + dy) * kFoamTextureView + x + dx)];
                         ++n;
                     }
-            near[size_t(y * kView + x)] = sum / n;
+            near[size_t(y * kFoamTextureView + x)] = sum / n;
         }
     double underFoam = 0.0, elsewhere = 0.0;
     int nFoam = 0, nElsewhere = 0;

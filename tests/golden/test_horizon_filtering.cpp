@@ -19,7 +19,7 @@ namespace {
 
 class HorizonFiltering : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{640, 360};
+constexpr glm::ivec2 kHorizonFilteringSize{640, 360};
 constexpr int kFrames = 9;
 constexpr double kPan_degps = 10.0; // a slow pan: 6 s for 60 degrees
 
@@ -44,10 +44,10 @@ double shimmer(const swell::Scene& scene, unsigned omittedTerms)
     swell::Renderer& renderer = *created;
     const swell::Camera start = swell::cameraAt(scene.camera, 0.0);
     // The horizon's row: the camera looks pitch_deg below it.
-    const double halfHeight = 0.5 * kSize.y;
+    const double halfHeight = 0.5 * kHorizonFilteringSize.y;
     const double horizonRow =
         halfHeight - std::tan(glm::radians(-start.pitch_deg)) / std::tan(glm::radians(0.5 * scene.camera.fovY_deg)) * halfHeight;
-    const int first = int(std::ceil(horizonRow)) + 3, last = int((horizonRow + kSize.y) / 2.0);
+    const int first = int(std::ceil(horizonRow)) + 3, last = int((horizonRow + kHorizonFilteringSize.y) / 2.0);
     std::vector<double> previous;
     double sum = 0.0;
     long long count = 0;
@@ -55,10 +55,10 @@ double shimmer(const swell::Scene& scene, unsigned omittedTerms)
         const double t = k / 60.0;
         swell::Camera camera = start;
         camera.yaw_deg += kPan_degps * t;
-        const swell::Image image = renderer.renderImage(camera, t, kSize);
+        const swell::Image image = renderer.renderImage(camera, t, kHorizonFilteringSize);
         std::vector<double> luma;
         for (int y = first; y < last; ++y)
-            for (int x = 0; x < kSize.x; ++x) {
+            for (int x = 0; x < kHorizonFilteringSize.x; ++x) {
                 const std::uint8_t* p = image.pixel(x, y);
                 luma.push_back(0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]);
             }

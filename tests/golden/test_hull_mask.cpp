@@ -19,8 +19,8 @@ namespace {
 
 class HullMask : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 240};
-constexpr double kTime_s = 7.0;
+constexpr glm::ivec2 kHullMaskSize{320, 240};
+constexpr double kHullMaskTime_s = 7.0;
 const std::filesystem::path kBoatFile = std::filesystem::path(SWELL_SOURCE_DIR) / "assets" / "models" / "boat.gltf";
 // The built-in boat's opening (assets/models/boat_model.py): its sheer lies
 // 0.78 m above its origin at the transom (x = -3.5 m) and rises forward; from
@@ -62,11 +62,11 @@ struct Count {
 // centimetres; the margins are 0.3 m.
 Count waterInsideHull(const swell::Renderer& renderer, const swell::Camera& camera, const swell::Image& image)
 {
-    const double openingY = renderer.waveModel().heightAt({0.0, 0.0}, kTime_s) + kOpeningHeight_m;
+    const double openingY = renderer.waveModel().heightAt({0.0, 0.0}, kHullMaskTime_s) + kOpeningHeight_m;
     Count count;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
-            const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+    for (int y = 0; y < kHullMaskSize.y; ++y)
+        for (int x = 0; x < kHullMaskSize.x; ++x) {
+            const glm::dvec3 d = swell::test::pixelRay(camera, kHullMaskSize, x, y);
             const glm::dvec3 p = camera.position_m + d * ((openingY - camera.position_m.y) / d.y);
             if (p.x < kOpeningAft_m || p.x > kOpeningFore_m || std::abs(p.z) > kOpeningHalfWidth_m)
                 continue;
@@ -80,8 +80,8 @@ TEST_F(HullMask, NoWaterInsideTheFloatingBuiltinBoat)
 {
     const swell::Scene scene = boatFromAbove("builtin:boat");
     swell::Renderer renderer(scene);
-    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
-    const swell::Image image = renderer.renderImage(camera, kTime_s, kSize);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kHullMaskTime_s);
+    const swell::Image image = renderer.renderImage(camera, kHullMaskTime_s, kHullMaskSize);
     const std::string path = swell::test::saveTestImage(image, "hull_mask_builtin_boat");
     // The water outside is green, or the colour test means nothing.
     EXPECT_TRUE(isWaterGreen(image.pixel(8, 8))) << path;
@@ -99,8 +99,8 @@ TEST_F(HullMask, WaterShowsInsideTheOpenShellWithoutAVolume)
     swell::Scene scene = boatFromAbove("open_boat.gltf");
     scene.assetFolder = folder.string();
     swell::Renderer renderer(scene);
-    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
-    const swell::Image image = renderer.renderImage(camera, kTime_s, kSize);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kHullMaskTime_s);
+    const swell::Image image = renderer.renderImage(camera, kHullMaskTime_s, kHullMaskSize);
     const std::string path = swell::test::saveTestImage(image, "hull_mask_user_gltf_boat");
     const Count c = waterInsideHull(renderer, camera, image);
     // The boat floats with its origin on the water, 0.48 m above its keel, so
@@ -123,8 +123,8 @@ TEST_F(HullMask, NoWaterInsideAUserGltfBoatWithAHullNode)
     scene.objects[0].hullNode = "Hull";
     scene.assetFolder = folder.string();
     swell::Renderer renderer(scene);
-    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
-    const swell::Image image = renderer.renderImage(camera, kTime_s, kSize);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kHullMaskTime_s);
+    const swell::Image image = renderer.renderImage(camera, kHullMaskTime_s, kHullMaskSize);
     const std::string path = swell::test::saveTestImage(image, "hull_mask_user_gltf_hull_node");
     EXPECT_TRUE(isWaterGreen(image.pixel(8, 8))) << path;
     const Count c = waterInsideHull(renderer, camera, image);

@@ -22,16 +22,16 @@ namespace {
 
 class IslandLod : public swell::test::GlTest {};
 
-struct Drawn {
+struct IslandLodDrawn {
     swell::Image image;
     long long worldTriangles = 0;
 };
 
-Drawn draw(const swell::Scene& scene, const swell::Camera& camera, glm::ivec2 size, double tolerance_px)
+IslandLodDrawn draw(const swell::Scene& scene, const swell::Camera& camera, glm::ivec2 size, double tolerance_px)
 {
     swell::Renderer renderer(scene);
     swell::RendererTesting::setIslandTolerance(renderer, tolerance_px);
-    Drawn d;
+    IslandLodDrawn d;
     d.image = renderer.renderImage(camera, 12.0, size);
     d.worldTriangles = renderer.counters().worldTriangles;
     return d;
@@ -59,7 +59,7 @@ int pixelsNotFoundNearby(const swell::Image& lod, const swell::Image& full, int 
     return missing;
 }
 
-void expectWithinTolerance(const Drawn& lod, const Drawn& full, const std::string& name)
+void expectWithinTolerance(const IslandLodDrawn& lod, const IslandLodDrawn& full, const std::string& name)
 {
     const swell::ImageDifference d = swell::compareImages(lod.image, full.image);
     std::string where;
@@ -85,8 +85,8 @@ TEST_F(IslandLod, TheDefaultFrameDrawsAThirdOfTheTrianglesAndLooksTheSame)
 {
     const swell::Scene scene = swell::defaultScene();
     const swell::Camera camera = swell::cameraAt(scene.camera, 12.0);
-    const Drawn full = draw(scene, camera, {1280, 720}, 0.0);
-    const Drawn lod = draw(scene, camera, {1280, 720}, 0.5);
+    const IslandLodDrawn full = draw(scene, camera, {1280, 720}, 0.0);
+    const IslandLodDrawn lod = draw(scene, camera, {1280, 720}, 0.5);
     EXPECT_LE(lod.worldTriangles * 3, full.worldTriangles)
         << lod.worldTriangles << " triangles of the world drawn, " << full.worldTriangles << " at full detail";
     expectWithinTolerance(lod, full, "island_lod_default");
@@ -101,8 +101,8 @@ TEST_F(IslandLod, CloserToTheIslandThePictureStillMatches)
     camera.position_m = {-700.0, 12.0, -750.0}; // 250 m from the island's edge, looking at its peak
     camera.yaw_deg = 0.0;
     camera.pitch_deg = 0.0;
-    const Drawn full = draw(scene, camera, {640, 360}, 0.0);
-    const Drawn lod = draw(scene, camera, {640, 360}, 0.5);
+    const IslandLodDrawn full = draw(scene, camera, {640, 360}, 0.0);
+    const IslandLodDrawn lod = draw(scene, camera, {640, 360}, 0.5);
     EXPECT_LE(lod.worldTriangles * 2, full.worldTriangles);
     expectWithinTolerance(lod, full, "island_lod_shore");
 }

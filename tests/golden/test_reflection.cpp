@@ -34,7 +34,7 @@ class Reflection : public swell::test::GlTest, public ::testing::WithParamInterf
 // that finds the box only where the ray's point 5 m out happens to cover it.
 class ReflectionRayMarch : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{480, 360};
+constexpr glm::ivec2 kReflectionSize{480, 360};
 
 // The box: 3 m on a side, centred 3.5 m up and 40 m ahead, so it hangs
 // 2 m above the water (its mirror image is apart from it, and nothing of it is
@@ -120,7 +120,7 @@ Polygon footprint(const swell::Camera& camera, bool mirrored, glm::dvec3 centre_
         glm::dvec3 c = centre_m + kHalf_m * glm::dvec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
         if (mirrored)
             c.y = -c.y;
-        corners.push_back(projectToPixel(camera, kSize, c));
+        corners.push_back(projectToPixel(camera, kReflectionSize, c));
     }
     return convexHull(corners);
 }
@@ -138,8 +138,8 @@ bool changed(const swell::Image& a, const swell::Image& b, int x, int y)
 // of the two axes.
 double pixelsPerRadian(const swell::Camera& camera, glm::dvec2 p)
 {
-    const double focal_px = 0.5 * kSize.y / std::tan(glm::radians(camera.fovY_deg) * 0.5);
-    const double tx = (p.x - 0.5 * kSize.x) / focal_px, ty = (p.y - 0.5 * kSize.y) / focal_px;
+    const double focal_px = 0.5 * kReflectionSize.y / std::tan(glm::radians(camera.fovY_deg) * 0.5);
+    const double tx = (p.x - 0.5 * kReflectionSize.x) / focal_px, ty = (p.y - 0.5 * kReflectionSize.y) / focal_px;
     return focal_px * (1.0 + std::max(tx * tx, ty * ty));
 }
 
@@ -160,8 +160,8 @@ Tally judge(const swell::Camera& camera, const swell::Image& with, const swell::
     const Polygon direct = footprint(camera, false);
     const Polygon mirror = footprint(camera, true);
     Tally t;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
+    for (int y = 0; y < kReflectionSize.y; ++y)
+        for (int x = 0; x < kReflectionSize.x; ++x) {
             const glm::dvec2 p(x + 0.5, y + 0.5);
             // The box itself and its anti-aliased or rasterised edge.
             if (signedDistance(direct, p) <= 2.0)
@@ -189,9 +189,9 @@ TEST_P(Reflection, CalmWaterMirrorsTheBoxIntoItsMirrorFootprintAndFillsIt)
     const swell::Camera camera = swell::cameraAt(withBox.camera, 0.0);
     swell::Renderer renderer(withBox);
     renderer.setWaveModel(std::make_shared<swell::FlatModel>());
-    const swell::Image with = renderer.renderImage(camera, 0.0, kSize);
+    const swell::Image with = renderer.renderImage(camera, 0.0, kReflectionSize);
     renderer.setScene(stage(GetParam(), false));
-    const swell::Image without = renderer.renderImage(camera, 0.0, kSize);
+    const swell::Image without = renderer.renderImage(camera, 0.0, kReflectionSize);
 
     // 2 px: the bound; a pixel is 0.11 m at 40 m here, and rasterising
     // the box's edges into the reflection texture moves them up to a pixel.
@@ -215,10 +215,10 @@ TEST_F(ReflectionRayMarch, AFaceSeenInTheMirrorHasTheColourItHasSeenDirectly)
     swell::Renderer renderer(scene);
     renderer.setWaveModel(std::make_shared<swell::FlatModel>());
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
+    const swell::Image image = renderer.renderImage(camera, 0.0, kReflectionSize);
     const glm::dvec3 faceCentre = kCentre_m + glm::dvec3(0.0, 0.0, kHalf_m);
-    const glm::dvec2 direct = projectToPixel(camera, kSize, faceCentre);
-    const glm::dvec2 mirrored = projectToPixel(camera, kSize, faceCentre * glm::dvec3(1.0, -1.0, 1.0));
+    const glm::dvec2 direct = projectToPixel(camera, kReflectionSize, faceCentre);
+    const glm::dvec2 mirrored = projectToPixel(camera, kReflectionSize, faceCentre * glm::dvec3(1.0, -1.0, 1.0));
     const std::uint8_t* a = image.pixel(int(direct.x), int(direct.y));
     const std::uint8_t* b = image.pixel(int(mirrored.x), int(mirrored.y));
     // 3 levels: the face is one flat colour; its texel is sampled between
@@ -242,9 +242,9 @@ std::pair<swell::Image, swell::Image> renderWithAndWithout(const swell::Scene& w
 {
     swell::Renderer renderer(withBox);
     const double time_s = 3.0;
-    swell::Image with = renderer.renderImage(camera, time_s, kSize);
+    swell::Image with = renderer.renderImage(camera, time_s, kReflectionSize);
     renderer.setScene(without);
-    return {std::move(with), renderer.renderImage(camera, time_s, kSize)};
+    return {std::move(with), renderer.renderImage(camera, time_s, kReflectionSize)};
 }
 
 TEST_P(Reflection, RippledWaterKeepsTheBoxWithinWhatTheSlopesAllow)
@@ -289,12 +289,12 @@ TEST_P(Reflection, RippledWaterKeepsTheBoxWithinWhatTheSlopesAllow)
 // sees no water.
 std::vector<glm::dvec3> restPlanePoints(const swell::Camera& camera)
 {
-    std::vector<glm::dvec3> points(size_t(kSize.x) * kSize.y, glm::dvec3(std::nan("")));
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
-            const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+    std::vector<glm::dvec3> points(size_t(kReflectionSize.x) * kReflectionSize.y, glm::dvec3(std::nan("")));
+    for (int y = 0; y < kReflectionSize.y; ++y)
+        for (int x = 0; x < kReflectionSize.x; ++x) {
+            const glm::dvec3 d = swell::test::pixelRay(camera, kReflectionSize, x, y);
             if (d.y < -1e-3)
-                points[size_t(y) * kSize.x + x] = camera.position_m - camera.position_m.y / d.y * d;
+                points[size_t(y) * kReflectionSize.x + x] = camera.position_m - camera.position_m.y / d.y * d;
         }
     return points;
 }
@@ -330,7 +330,7 @@ bool facetSendsRayToBox(const swell::SurfaceQuery& waves, const swell::Camera& c
                         const std::vector<glm::dvec3>& plane, double band_m, int x, int y, glm::dvec3 centre_m,
                         double half_m, bool everyHeight)
 {
-    auto at = [&](int u, int v) { return plane[size_t(std::min(v, kSize.y - 1)) * kSize.x + std::min(u, kSize.x - 1)]; };
+    auto at = [&](int u, int v) { return plane[size_t(std::min(v, kReflectionSize.y - 1)) * kReflectionSize.x + std::min(u, kReflectionSize.x - 1)]; };
     const glm::dvec3 onPlane = at(x, y);
     if (std::isnan(onPlane.x))
         return false;
@@ -373,25 +373,25 @@ TEST_F(ReflectionRayMarch, EveryReflectedPixelHasAFacetThatSendsItsRayToTheBox)
     // One renderer for both images and the facets' waves.
     swell::Renderer renderer(withBox);
     const double time_s = 3.0;
-    const swell::Image with = renderer.renderImage(camera, time_s, kSize);
+    const swell::Image with = renderer.renderImage(camera, time_s, kReflectionSize);
     renderer.setScene(without);
-    const swell::Image withoutImage = renderer.renderImage(camera, time_s, kSize);
+    const swell::Image withoutImage = renderer.renderImage(camera, time_s, kReflectionSize);
 
     // Grown by 2 texels' width at the box (the texture is full size: 1 texel
     // is a pixel's angle), for where the texture's edge pixels fall: a ray
     // passing that close to the box may find its edge texels.
-    const double pixelAngle = 2.0 * std::tan(glm::radians(camera.fovY_deg) * 0.5) / kSize.y;
+    const double pixelAngle = 2.0 * std::tan(glm::radians(camera.fovY_deg) * 0.5) / kReflectionSize.y;
     const double margin_m = 2.0 * pixelAngle * (-centre_m.z + kHalf_m);
-    std::vector<char> reaches(size_t(kSize.x) * kSize.y), surelyReaches(size_t(kSize.x) * kSize.y);
+    std::vector<char> reaches(size_t(kReflectionSize.x) * kReflectionSize.y), surelyReaches(size_t(kReflectionSize.x) * kReflectionSize.y);
     const std::vector<glm::dvec3> plane = restPlanePoints(camera);
     double band_m = 0.0; // the highest the waves reach: sum of amplitudes
     for (const swell::Wave& w : set.waves)
         band_m += w.amplitude_m;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
-            reaches[size_t(y) * kSize.x + x] =
+    for (int y = 0; y < kReflectionSize.y; ++y)
+        for (int x = 0; x < kReflectionSize.x; ++x) {
+            reaches[size_t(y) * kReflectionSize.x + x] =
                 facetSendsRayToBox(renderer.waveModel(), camera, time_s, plane, band_m, x, y, centre_m, kHalf_m + margin_m, false);
-            surelyReaches[size_t(y) * kSize.x + x] =
+            surelyReaches[size_t(y) * kReflectionSize.x + x] =
                 facetSendsRayToBox(renderer.waveModel(), camera, time_s, plane, band_m, x, y, centre_m, kHalf_m - margin_m, true);
         }
     // 1 px: the CPU takes the facet at the pixel's centre, the GPU at the
@@ -402,8 +402,8 @@ TEST_F(ReflectionRayMarch, EveryReflectedPixelHasAFacetThatSendsItsRayToTheBox)
         bool any = false, every = true;
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
-                const int u = std::clamp(x + dx, 0, kSize.x - 1), v = std::clamp(y + dy, 0, kSize.y - 1);
-                const bool hit = map[size_t(v) * kSize.x + u] != 0;
+                const int u = std::clamp(x + dx, 0, kReflectionSize.x - 1), v = std::clamp(y + dy, 0, kReflectionSize.y - 1);
+                const bool hit = map[size_t(v) * kReflectionSize.x + u] != 0;
                 any = any || hit;
                 every = every && hit;
             }
@@ -412,8 +412,8 @@ TEST_F(ReflectionRayMarch, EveryReflectedPixelHasAFacetThatSendsItsRayToTheBox)
     const Polygon direct = footprint(camera, false, centre_m);
     int falseHits = 0, missed = 0, reflected = 0;
     glm::ivec2 firstFalse{-1}, firstMissed{-1};
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
+    for (int y = 0; y < kReflectionSize.y; ++y)
+        for (int x = 0; x < kReflectionSize.x; ++x) {
             if (signedDistance(direct, {x + 0.5, y + 0.5}) <= 2.0)
                 continue;
             if (changed(with, withoutImage, x, y)) {

@@ -24,7 +24,7 @@ using swell::test::srgbToLinear;
 
 class SkyCubemap : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 240};
+constexpr glm::ivec2 kSkyCubemapSize{320, 240};
 
 // No waves, island or objects, and fog far away: only sky above the horizon.
 swell::Scene clearSky()
@@ -61,10 +61,10 @@ int worstSkyError(swell::Renderer& renderer, const swell::Scene& scene, const ch
         swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
         camera.yaw_deg = v.yaw_deg;
         camera.pitch_deg = std::min(v.pitch_deg, 89.0);
-        const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
-        for (int y = 0; y < kSize.y; y += 4)
-            for (int x = 0; x < kSize.x; x += 4) {
-                const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+        const swell::Image image = renderer.renderImage(camera, 0.0, kSkyCubemapSize);
+        for (int y = 0; y < kSkyCubemapSize.y; y += 4)
+            for (int x = 0; x < kSkyCubemapSize.x; x += 4) {
+                const glm::dvec3 d = swell::test::pixelRay(camera, kSkyCubemapSize, x, y);
                 if (d.y < std::sin(glm::radians(3.0)) || glm::dot(d, sun) > std::cos(glm::radians(1.0)))
                     continue;
                 const glm::dvec3 expected = expectedSky(scene, d);
@@ -100,7 +100,7 @@ TEST_F(SkyCubemap, FollowsSunAndSkyChanges)
     swell::Scene scene = clearSky();
     swell::Renderer renderer(scene);
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    renderer.renderImage(camera, 0.0, kSize);
+    renderer.renderImage(camera, 0.0, kSkyCubemapSize);
     // What the viewer does when a slider moves: a new scene with another sun and sky.
     scene.sun.direction = {0.7, 0.5, 0.4};
     scene.sun.color = {1.0, 0.6, 0.3};

@@ -25,7 +25,7 @@ using swell::test::srgbLevel;
 
 class SkyPhysical : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 240};
+constexpr glm::ivec2 kSkyPhysicalSize{320, 240};
 
 swell::Scene physicalSky(glm::dvec3 sun, double exposure)
 {
@@ -57,10 +57,10 @@ SkyError skyError(swell::Renderer& renderer, const swell::Scene& scene, const ch
         swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
         camera.yaw_deg = v.yaw_deg;
         camera.pitch_deg = v.pitch_deg;
-        const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
-        for (int y = 0; y < kSize.y; y += 4)
-            for (int x = 0; x < kSize.x; x += 4) {
-                const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+        const swell::Image image = renderer.renderImage(camera, 0.0, kSkyPhysicalSize);
+        for (int y = 0; y < kSkyPhysicalSize.y; y += 4)
+            for (int x = 0; x < kSkyPhysicalSize.x; x += 4) {
+                const glm::dvec3 d = swell::test::pixelRay(camera, kSkyPhysicalSize, x, y);
                 if (d.y < std::sin(glm::radians(3.0)) || glm::dot(d, sun) > std::cos(glm::radians(2.0)))
                     continue;
                 const glm::dvec3 expected = scene.sky.exposure * atmosphere.skyRadiance(d, sun);
@@ -107,7 +107,7 @@ TEST_F(SkyPhysical, FollowsTheSunAndTheExposure)
 {
     swell::Scene scene = physicalSky({0.0, 0.8, -0.6}, 8.0);
     swell::Renderer renderer(scene);
-    renderer.renderImage(swell::cameraAt(scene.camera, 0.0), 0.0, kSize);
+    renderer.renderImage(swell::cameraAt(scene.camera, 0.0), 0.0, kSkyPhysicalSize);
     scene.sun.direction = {0.6, 0.1, 0.8};
     scene.sky.exposure = 16.0;
     renderer.setScene(scene);
@@ -147,17 +147,17 @@ TEST_F(SkyPhysical, AerialPerspectiveVeilsTheSeaByTheAirsTransmittance)
     veiled.fog.model = swell::FogModel::Atmosphere;
     swell::Renderer clearRenderer(clear), veiledRenderer(veiled);
     const swell::Camera camera = swell::cameraAt(clear.camera, 0.0);
-    const swell::Image a = clearRenderer.renderImage(camera, 0.0, kSize);
-    const swell::Image b = veiledRenderer.renderImage(camera, 0.0, kSize);
+    const swell::Image a = clearRenderer.renderImage(camera, 0.0, kSkyPhysicalSize);
+    const swell::Image b = veiledRenderer.renderImage(camera, 0.0, kSkyPhysicalSize);
 
     const swell::Atmosphere atmosphere(clear.sky.atmosphere);
     const glm::dvec3 extinction =
         swell::atmosphereAt(SWELL_ATMOSPHERE_OBSERVER_ALTITUDE_M, clear.sky.atmosphere).extinction;
     const glm::dvec3 sun = glm::normalize(clear.sun.direction);
     int worst = 0, checked = 0, veil = 0;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
-            const glm::dvec3 d = swell::test::pixelRay(camera, kSize, x, y);
+    for (int y = 0; y < kSkyPhysicalSize.y; ++y)
+        for (int x = 0; x < kSkyPhysicalSize.x; ++x) {
+            const glm::dvec3 d = swell::test::pixelRay(camera, kSkyPhysicalSize, x, y);
             const double t = clear.camera.position_m.y / -d.y;
             // Water only, within the drawn grid's reach.
             if (d.y > -0.01 || t > kReach_m)
@@ -214,14 +214,14 @@ TEST_F(SkyPhysical, AerialPerspectiveOnTheWorldIsTheSameInAFreshRenderersFirstFr
     scene.antialiasing = swell::Antialiasing::Off;
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
     swell::Renderer renderer(scene);
-    const swell::Image first = renderer.renderImage(camera, 0.0, kSize);
-    const swell::Image second = renderer.renderImage(camera, 0.0, kSize);
+    const swell::Image first = renderer.renderImage(camera, 0.0, kSkyPhysicalSize);
+    const swell::Image second = renderer.renderImage(camera, 0.0, kSkyPhysicalSize);
     swell::Scene unveiled = scene;
     unveiled.fog.model = swell::FogModel::Linear;
-    const swell::Image clear = swell::Renderer(unveiled).renderImage(camera, 0.0, kSize);
+    const swell::Image clear = swell::Renderer(unveiled).renderImage(camera, 0.0, kSkyPhysicalSize);
     int differing = 0, veil = 0;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x)
+    for (int y = 0; y < kSkyPhysicalSize.y; ++y)
+        for (int x = 0; x < kSkyPhysicalSize.x; ++x)
             for (int c = 0; c < 3; ++c) {
                 differing += first.pixel(x, y)[c] != second.pixel(x, y)[c];
                 veil = std::max(veil, std::abs(int(first.pixel(x, y)[c]) - int(clear.pixel(x, y)[c])));

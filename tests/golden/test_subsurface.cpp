@@ -15,7 +15,7 @@ namespace {
 
 class Subsurface : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{320, 180};
+constexpr glm::ivec2 kSubsurfaceSize{320, 180};
 
 // A 12 m/s sea, nothing else, the camera 3 m up looking along -z.
 swell::Scene sea(glm::dvec3 sunDirection)
@@ -40,10 +40,10 @@ Added addedLight(const swell::Scene& scene)
     swell::Renderer full(scene);
     const std::unique_ptr<swell::Renderer> without = swell::RendererTesting::create(scene, {}, SWELL_TERM_SUBSURFACE);
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    const swell::Image a = full.renderImage(camera, 2.0, kSize), b = without->renderImage(camera, 2.0, kSize);
+    const swell::Image a = full.renderImage(camera, 2.0, kSubsurfaceSize), b = without->renderImage(camera, 2.0, kSubsurfaceSize);
     Added added;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
+    for (int y = 0; y < kSubsurfaceSize.y; ++y)
+        for (int x = 0; x < kSubsurfaceSize.x; ++x) {
             const std::uint8_t *p = a.pixel(x, y), *q = b.pixel(x, y);
             added.red += double(p[0]) - q[0];
             added.green += double(p[1]) - q[1];
@@ -61,7 +61,7 @@ TEST_F(Subsurface, BacklitCrestsGlowBlueGreen)
     std::printf("added light, sun ahead: R %.0f G %.0f B %.0f; sun behind: R %.0f G %.0f B %.0f\n", ahead.red,
                 ahead.green, ahead.blue, behind.red, behind.green, behind.blue);
     // Visible: on average at least one level per water pixel in green or blue.
-    EXPECT_GT(ahead.green + ahead.blue, 2.0 * kSize.x * kSize.y / 2);
+    EXPECT_GT(ahead.green + ahead.blue, 2.0 * kSubsurfaceSize.x * kSubsurfaceSize.y / 2);
     // Blue-green: the water absorbs red first. In linear light the added
     // blue is about 2.7 times the red here; sRGB encoding compresses the
     // ratio of the 8-bit levels (measured: G 1.8x, B 1.4x). White light

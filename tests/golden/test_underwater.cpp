@@ -30,7 +30,7 @@ using swell::test::srgbToLinear;
 
 class Underwater : public swell::test::GlTest {};
 
-double luminance(const std::uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+double underwaterLuminance(const std::uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
 
 // The inverse of the camera's view-projection, for positions relative to
 // the render origin (the camera's x,z at y = 0), as the renderer draws.
@@ -83,7 +83,7 @@ TEST_F(Underwater, SnellsWindowHasTheCriticalAngleAndWaterColourOutside)
     for (int y = 0; y < size.y; ++y)
         for (int x = 0; x < size.x; ++x) {
             const double angle_deg = glm::degrees(std::acos(std::clamp(rays.direction(x, y).y, -1.0, 1.0)));
-            const double lum = luminance(image.pixel(x, y));
+            const double lum = underwaterLuminance(image.pixel(x, y));
             const auto bin = size_t(angle_deg / kBin_deg);
             if (bin < sum.size()) {
                 sum[bin] += lum;
@@ -139,7 +139,7 @@ TEST_F(Underwater, SnellsWindowHasTheCriticalAngleAndWaterColourOutside)
         const std::uint8_t* p = image.pixel(xy[0], xy[1]);
         // 40 levels: far more than rounding; the water outside differs from the sky by over a hundred.
         const bool nearSky = glm::length(glm::dvec3(p[0], p[1], p[2]) - skyEdge) < 40.0;
-        if (luminance(p) >= halfway || nearSky)
+        if (underwaterLuminance(p) >= halfway || nearSky)
             ++skyColoured;
     }
     EXPECT_EQ(skyColoured, 0) << "pixels beyond 50 degrees look like sky (sky edge colour " << skyEdge.x << ","

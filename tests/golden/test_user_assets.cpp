@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 class UserAssets : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{160, 120};
+constexpr glm::ivec2 kUserAssetsSize{160, 120};
 
 fs::path freshFolder(const std::string& name)
 {
@@ -79,12 +79,12 @@ TEST_F(UserAssets, EachCubemapFaceShowsAlongItsAxis)
         swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
         camera.yaw_deg = v.yaw_deg;
         camera.pitch_deg = v.pitch_deg;
-        const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
+        const swell::Image image = renderer.renderImage(camera, 0.0, kUserAssetsSize);
         const std::string name = std::string("user_sky_") + kFaceFiles[size_t(v.face)];
         // 2 levels: sRGB decode in the sampler and encode in the shader round
         // to 8 bits once each. A face in another slot is off by over 100.
-        for (int y = kSize.y / 2 - 4; y <= kSize.y / 2 + 4; y += 2)
-            for (int x = kSize.x / 2 - 4; x <= kSize.x / 2 + 4; x += 2)
+        for (int y = kUserAssetsSize.y / 2 - 4; y <= kUserAssetsSize.y / 2 + 4; y += 2)
+            for (int x = kUserAssetsSize.x / 2 - 4; x <= kUserAssetsSize.x / 2 + 4; x += 2)
                 for (int c = 0; c < 3; ++c)
                     ASSERT_NEAR(image.pixel(x, y)[c], kFaceColours[size_t(v.face)][size_t(c)], 2)
                         << "looking along face " << kFaceFiles[size_t(v.face)] << ", pixel " << x << "," << y
@@ -159,7 +159,7 @@ TEST_F(UserAssets, AGltfModelRendersWhereTheSceneFilePlacesIt)
     swell::Scene scene = swell::loadScene(folder / "scene.toml");
     swell::Renderer renderer(scene);
     const swell::Camera camera = swell::cameraAt(scene.camera, 0.0);
-    const swell::Image image = renderer.renderImage(camera, 0.0, kSize);
+    const swell::Image image = renderer.renderImage(camera, 0.0, kUserAssetsSize);
     const std::string path = swell::test::saveTestImage(image, "user_gltf_box");
     // The face towards the camera (normal +z) with no sun: albedo times the
     // sky ambient halfway between horizon and zenith (shaders/mesh.frag), no fog at 28 m.
@@ -169,7 +169,7 @@ TEST_F(UserAssets, AGltfModelRendersWhereTheSceneFilePlacesIt)
     // 3 levels: 8-bit rounding and float arithmetic in the shader.
     const double tolerance = 3.0;
     auto pixelAt = [&](glm::dvec3 p) {
-        const glm::dvec2 px = swell::test::projectToPixel(camera, kSize, p);
+        const glm::dvec2 px = swell::test::projectToPixel(camera, kUserAssetsSize, p);
         return image.pixel(int(px.x), int(px.y));
     };
     // The front face spans x 1..5 m and y 2..6 m at z = -28 m; its centre and
@@ -184,8 +184,8 @@ TEST_F(UserAssets, AGltfModelRendersWhereTheSceneFilePlacesIt)
 
     scene.objects.clear();
     renderer.setScene(scene);
-    const swell::Image without = renderer.renderImage(camera, 0.0, kSize);
-    const glm::dvec2 centre = swell::test::projectToPixel(camera, kSize, {3.0, 4.0, -28.0});
+    const swell::Image without = renderer.renderImage(camera, 0.0, kUserAssetsSize);
+    const glm::dvec2 centre = swell::test::projectToPixel(camera, kUserAssetsSize, {3.0, 4.0, -28.0});
     EXPECT_FALSE(near(without.pixel(int(centre.x), int(centre.y)), expected, 30.0))
         << "the box is still drawn after it was removed: " << swell::test::saveTestImage(without, "user_gltf_removed");
 }

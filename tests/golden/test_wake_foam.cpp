@@ -29,8 +29,8 @@ namespace {
 
 using namespace swell;
 
-constexpr int kView = 256; // pixels a side
-constexpr double kTime_s = 20.0;
+constexpr int kWakeFoamView = 256; // pixels a side
+constexpr double kWakeFoamTime_s = 20.0;
 
 class WakeFoam : public test::GlTest {};
 
@@ -40,13 +40,13 @@ Scene underWayFoam() { return test::foamDebugView(loadScene(SWELL_SOURCE_DIR "/s
 // centre is near z = -110 m (4 m/s towards -z from -30 m), its stern near
 // -106.5 m: the view over z = -100 m holds the wash from the stern to about
 // 13 m astern of it.
-std::vector<double> foamView(Renderer& renderer, const Scene& scene, double x_m, double z_m, double height_m,
+std::vector<double> wakeFoamFoamView(Renderer& renderer, const Scene& scene, double x_m, double z_m, double height_m,
                              const char* name)
 {
-    return test::foamViewDown(renderer, scene, {x_m, height_m, z_m}, 0.0, kTime_s, kView, name);
+    return test::foamViewDown(renderer, scene, {x_m, height_m, z_m}, 0.0, kWakeFoamTime_s, kWakeFoamView, name);
 }
 
-double at(const std::vector<double>& view, int x, int y) { return view[size_t(y * kView + x)]; }
+double at(const std::vector<double>& view, int x, int y) { return view[size_t(y * kWakeFoamView + x)]; }
 
 struct WashTexture {
     int foamed = 0;      // pixels whose 15 x 15 box averages 0.3 of cover or more
@@ -59,8 +59,8 @@ WashTexture washTexture(const std::vector<double>& view)
     constexpr int kBox = 7;
     WashTexture t;
     int edges = 0;
-    for (int y = kBox; y < kView - kBox; ++y)
-        for (int x = kBox; x < kView - kBox; ++x) {
+    for (int y = kBox; y < kWakeFoamView - kBox; ++y)
+        for (int x = kBox; x < kWakeFoamView - kBox; ++x) {
             double box = 0.0;
             for (int dy = -kBox; dy <= kBox; ++dy)
                 for (int dx = -kBox; dx <= kBox; ++dx)
@@ -91,16 +91,16 @@ TEST_F(WakeFoam, TheSternWashIsChurnedWaterBreakingIntoLace)
 {
     const Scene scene = underWayFoam();
     Renderer renderer(scene);
-    const WashTexture t = washTexture(foamView(renderer, scene, 0.0, -100.0, 10.0, "wake_foam_from_10m"));
+    const WashTexture t = washTexture(wakeFoamFoamView(renderer, scene, 0.0, -100.0, 10.0, "wake_foam_from_10m"));
     std::printf("the wash from 10 m: %d pixels foamed, their mean cover %.3f, %.3f of them on an edge\n", t.foamed,
                 t.meanCover, t.edges);
-    ASSERT_GT(t.foamed, kView * kView / 20) << "no stern wash in view";
+    ASSERT_GT(t.foamed, kWakeFoamView * kWakeFoamView / 20) << "no stern wash in view";
     EXPECT_GT(t.meanCover, 0.4) << "the wash is not white water";
     EXPECT_GT(t.edges, 0.12) << "the wash is a flat sheet: no lace, holes or flecks at the pixel's scale";
 }
 
 // The views' margin left out of a match, as wide as the largest shift tried.
-constexpr int kMargin = 40;
+constexpr int kWakeFoamMargin = 40;
 
 // The wash from 10 m, and from the camera moved 1.2 m along x (about 24
 // pixels at the sea's level): the second view, moved back by the best
@@ -113,9 +113,9 @@ TEST_F(WakeFoam, StaysOnTheWater)
 {
     const Scene scene = underWayFoam();
     Renderer renderer(scene);
-    const std::vector<double> here = foamView(renderer, scene, 0.0, -100.0, 10.0, nullptr);
-    const std::vector<double> moved = foamView(renderer, scene, 1.2, -100.0, 10.0, nullptr);
-    const test::ShiftMatch match = test::bestShift(here, moved, kView, kMargin);
+    const std::vector<double> here = wakeFoamFoamView(renderer, scene, 0.0, -100.0, 10.0, nullptr);
+    const std::vector<double> moved = wakeFoamFoamView(renderer, scene, 1.2, -100.0, 10.0, nullptr);
+    const test::ShiftMatch match = test::bestShift(here, moved, kWakeFoamView, kWakeFoamMargin);
     EXPECT_LE(match.difference, 0.03);
     EXPECT_LE(match.dx, -12) << "the wake foam's texture moved with the camera";
 }

@@ -26,8 +26,8 @@ namespace {
 
 class WakeRender : public swell::test::GlTest {};
 
-constexpr glm::ivec2 kSize{256, 256};
-constexpr double kTime_s = 20.0;
+constexpr glm::ivec2 kWakeRenderSize{256, 256};
+constexpr double kWakeRenderTime_s = 20.0;
 
 // The built-in boat at 4 m/s along -z on flat water, a camera 60 m above
 // the 60 m of water astern of it. It carries 450 kg over its design
@@ -63,9 +63,9 @@ Rendered render(const swell::Scene& scene, unsigned omittedWaterTerms = 0)
     const std::unique_ptr<swell::Renderer> created = swell::RendererTesting::create(scene, {}, omittedWaterTerms);
     swell::Renderer& renderer = *created;
     renderer.setWaveModel(std::make_shared<swell::FlatModel>());
-    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kWakeRenderTime_s);
     Rendered r;
-    r.image = renderer.renderImage(camera, kTime_s, kSize);
+    r.image = renderer.renderImage(camera, kWakeRenderTime_s, kWakeRenderSize);
     r.boat_m = glm::dvec3(renderer.objectTransforms()[0][3]);
     return r;
 }
@@ -83,7 +83,7 @@ TEST_F(WakeRender, TheWakeIsKelvinsWedgeAsternOfTheBoat)
     // The boat rides its own wake a little (it trims), but it is where it was carried.
     ASSERT_NEAR(with.boat_m.z, without.boat_m.z, 0.1);
 
-    const swell::Camera camera = swell::cameraAt(scene.camera, kTime_s);
+    const swell::Camera camera = swell::cameraAt(scene.camera, kWakeRenderTime_s);
     const double outer = std::tan(glm::radians(25.0)), inner = std::tan(glm::radians(10.0));
     auto differs = [](const swell::Image& a, const swell::Image& b, std::size_t i) {
         int d = 0;
@@ -92,10 +92,10 @@ TEST_F(WakeRender, TheWakeIsKelvinsWedgeAsternOfTheBoat)
         return d >= 2; // the renders differ by the wake alone: 2 steps of 8 bits is a change seen
     };
     int changed = 0, astern = 0, inWedge = 0, ahead = 0, wavesAstern = 0, onArms = 0;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
-            const std::size_t i = (std::size_t(y) * kSize.x + std::size_t(x)) * 4;
-            const glm::dvec3 ray = swell::test::pixelRay(camera, kSize, x, y);
+    for (int y = 0; y < kWakeRenderSize.y; ++y)
+        for (int x = 0; x < kWakeRenderSize.x; ++x) {
+            const std::size_t i = (std::size_t(y) * kWakeRenderSize.x + std::size_t(x)) * 4;
+            const glm::dvec3 ray = swell::test::pixelRay(camera, kWakeRenderSize, x, y);
             const glm::dvec3 water = camera.position_m + ray * (-camera.position_m.y / ray.y);
             const double behind_m = water.z - with.boat_m.z, across_m = std::abs(water.x - with.boat_m.x);
             if (behind_m > 10.0 && differs(wavesOnly.image, withoutWavesOnly.image, i)) {
@@ -123,7 +123,7 @@ TEST_F(WakeRender, TheWakeIsKelvinsWedgeAsternOfTheBoat)
     std::printf("changed %d, astern %d, in the wedge %d, ahead %d; the waves alone astern %d, on the arms %d\n", changed,
                 astern, inWedge, ahead, wavesAstern, onArms);
     // The wake covers a good part of the water astern in view...
-    EXPECT_GT(changed, kSize.x * kSize.y / 50) << saved;
+    EXPECT_GT(changed, kWakeRenderSize.x * kWakeRenderSize.y / 50) << saved;
     // ...nearly all of it inside the wedge, almost none ahead of the bow...
     EXPECT_GT(inWedge, astern * 9 / 10) << saved;
     EXPECT_LT(ahead, changed / 20) << saved;

@@ -22,7 +22,7 @@
 
 namespace {
 
-constexpr int kView = 192; // pixels a side of the top-down views
+constexpr int kWhitecapsView = 192; // pixels a side of the top-down views
 
 using namespace swell;
 
@@ -47,7 +47,7 @@ std::vector<double> foamFrom300m(Renderer& renderer, const Scene& scene, double 
     Camera camera = cameraAt(scene.camera, 0.0);
     camera.position_m = {x_m, 300.0, z_m};
     camera.pitch_deg = -89.0;
-    const Image image = renderer.renderImage(camera, time_s, {kView, kView});
+    const Image image = renderer.renderImage(camera, time_s, {kWhitecapsView, kWhitecapsView});
     std::vector<double> share;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
@@ -83,9 +83,9 @@ double largestShiftedCorrelation(const std::vector<double>& a, const std::vector
         for (int dx = -maxShift; dx <= maxShift; ++dx) {
             double sa = 0.0, sb = 0.0, saa = 0.0, sbb = 0.0, sab = 0.0;
             int n = 0;
-            for (int y = std::max(0, -dy); y < std::min(kView, kView - dy); ++y)
-                for (int x = std::max(0, -dx); x < std::min(kView, kView - dx); ++x) {
-                    const double va = a[size_t(y * kView + x)], vb = b[size_t((y + dy) * kView + x + dx)];
+            for (int y = std::max(0, -dy); y < std::min(kWhitecapsView, kWhitecapsView - dy); ++y)
+                for (int x = std::max(0, -dx); x < std::min(kWhitecapsView, kWhitecapsView - dx); ++x) {
+                    const double va = a[size_t(y * kWhitecapsView + x)], vb = b[size_t((y + dy) * kWhitecapsView + x + dx)];
                     sa += va;
                     sb += vb;
                     saa += va * va;
@@ -137,7 +137,7 @@ void expectTheStillsFoamIsItsHistorys(double lifetime_s)
     scene.waves.foamLifetime_s = lifetime_s;
     // Each pixel's own share: FXAA's blend across edges depends on the
     // contrast it finds, so it would not keep one view's foam within the other's.
-    scene.antialiasing = Antialiasing::Off;
+    scene.antialiasing = swell::Antialiasing::Off;
     const double span_s = spectral::foamReplayOffsets_s(lifetime_s).front();
     const int steps = int(std::lround(span_s / spectral::kFoamReplayStep_s));
     const double time_s = 60.0;
@@ -238,7 +238,7 @@ TEST_F(Whitecaps, FoamDoesNotRepeatWithThePatches)
         spectral::makeSpectralField(SeaSpectrum(*scene.sea.wind), scene.waves.choppiness, scene.sea.wind->seed);
     Renderer renderer(scene);
     // 346 m across: 1.8 m a pixel.
-    const int maxShift = int(std::lround(60.0 / (2.0 * 300.0 * std::tan(30.0 * 3.14159265358979 / 180.0) / kView)));
+    const int maxShift = int(std::lround(60.0 / (2.0 * 300.0 * std::tan(30.0 * 3.14159265358979 / 180.0) / kWhitecapsView)));
     const glm::dvec2 places[] = {{0.0, 0.0}, {-5231.0, 3877.0}, {8123.0, -6311.0}};
     std::vector<std::vector<double>> views;
     for (const glm::dvec2 place : places)
