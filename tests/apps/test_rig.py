@@ -193,6 +193,19 @@ def clip_sweep():
                 check(abs(j["platform"]["time_s"] - (5.0 + frame / 10.0)) < 1e-12, f"{stem}.json's platform time")
                 check(abs(np.linalg.norm(j["platform"]["imu"]["specific_force_mps2"]) - 9.80665) < 1e-9,
                       "a fixed platform's IMU reads g")
+                # The increments since the clip's frame before: none for its
+                # first; over 0.1 s at rest, g times 0.1 s and no turn.
+                increment = j["platform"]["imu"]["increment"]
+                if frame == 0:
+                    check(increment is None, f"{stem}.json: a clip's first frame has no increment")
+                else:
+                    check(increment is not None and abs(increment["from_s"] - 5.0) < 1e-12
+                          and abs(increment["to_s"] - 5.1) < 1e-12, f"{stem}.json's increment's interval")
+                    if increment is not None:
+                        check(abs(np.linalg.norm(increment["delta_velocity_mps"]) - 0.980665) < 1e-9,
+                              f"{stem}.json: at rest the delta velocity is g dt")
+                        check(np.linalg.norm(increment["delta_angle_rad"]) < 1e-12,
+                              f"{stem}.json: at rest no delta angle")
     with open(os.path.join(data, "coco.json")) as f:
         coco = json.load(f)
     check(len(coco["images"]) == 4 and {i["camera"] for i in coco["images"]} == {"left", "right"},
