@@ -45,17 +45,24 @@ class MotionVectors : public GlTest {};
 const glm::vec2 kUntouched{-777.0f, 555.0f};
 
 // A host's framebuffer: RGBA8 colour at attachment 0 (its draw buffer),
-// RG32F motion vectors at attachment 1, 32-bit float depth.
+// RG32F motion vectors at attachment 1, 32-bit float depth; `samples`
+// samples a pixel (0: not multisampled), the vectors then resolved to be read.
 class MotionTarget {
 public:
-    explicit MotionTarget(glm::ivec2 size)
-        : size_(size), color_(make(GL_RGBA8)), motion_(make(GL_RG32F)), depth_(make(GL_DEPTH_COMPONENT32F)),
-          framebuffer_(swell::gl::Framebuffer::create())
+    explicit MotionTarget(glm::ivec2 size, int samples = 0)
+        : size_(size), samples_(samples), color_(make(GL_RGBA8)), motion_(make(GL_RG32F)),
+          depth_(make(GL_DEPTH_COMPONENT32F)), framebuffer_(swell::gl::Framebuffer::create())
     {
         glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
         glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, motion_.id(), 0);
         glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
         glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
+        if (samples_ > 0) {
+            resolved_ = swell::gl::Texture::create(GLenum(GL_TEXTURE_2D));
+            glTextureStorage2D(resolved_.id(), 1, GL_RG32F, size.x, size.y);
+            resolve_ = swell::gl::Framebuffer::create();
+            glNamedFramebufferTexture(resolve_.id(), GL_COLOR_ATTACHMENT0, resolved_.id(), 0);
+        }
     }
     GLuint framebuffer() const { return framebuffer_.id(); }
 
@@ -98,21 +105,35 @@ public:
     std::vector<glm::vec2> motion() const
     {
         std::vector<glm::vec2> rg(std::size_t(size_.x) * std::size_t(size_.y));
+        GLuint read = motion_.id();
+        if (samples_ > 0) {
+            glNamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT1);
+            glBlitNamedFramebuffer(framebuffer_.id(), resolve_.id(), 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
+                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glNamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
+            read = resolved_.id();
+        }
         glFinish();
-        glGetTextureImage(motion_.id(), 0, GL_RG, GL_FLOAT, GLsizei(rg.size() * sizeof(glm::vec2)), rg.data());
+        glGetTextureImage(read, 0, GL_RG, GL_FLOAT, GLsizei(rg.size() * sizeof(glm::vec2)), rg.data());
         return rg;
     }
 
 private:
     swell::gl::Texture make(GLenum format) const
     {
+        if (samples_ > 0) {
+            swell::gl::Texture t = swell::gl::Texture::create(GLenum(GL_TEXTURE_2D_MULTISAMPLE));
+            glTextureStorage2DMultisample(t.id(), samples_, format, size_.x, size_.y, GL_TRUE);
+            return t;
+        }
         swell::gl::Texture t = swell::gl::Texture::create(GLenum(GL_TEXTURE_2D));
         glTextureStorage2D(t.id(), 1, format, size_.x, size_.y);
         return t;
     }
     glm::ivec2 size_;
-    swell::gl::Texture color_, motion_, depth_;
-    swell::gl::Framebuffer framebuffer_;
+    int samples_ = 0;
+    swell::gl::Texture color_, motion_, depth_, resolved_;
+    swell::gl::Framebuffer framebuffer_, resolve_;
 };
 
 // One draw of the host's: the simulation at time_s, then the view with
@@ -180,6 +201,7 @@ struct StillWaterCase {
     double renderScale = 1.0;
     swell::Antialiasing antialiasing = swell::Antialiasing::Off;
     glm::ivec4 viewport{0, 0, 160, 120}; // in a 200 x 150 framebuffer
+    int hostSamples = 0;                 // the host's framebuffer multisampled (its vectors resolved to be read)
 };
 
 void PrintTo(const StillWaterCase& c, std::ostream* os) { *os << c.name; }
@@ -211,7 +233,7 @@ TEST_P(MotionVectorsOnStillWater, EqualTheAnalyticReprojectionOfTheCamerasMotion
     swell::DrawOptions options;
     options.renderScale = c.renderScale;
     options.antialiasing = c.antialiasing;
-    MotionTarget target(framebuffer);
+    MotionTarget target(framebuffer, c.hostSamples);
     drawMotion(renderer, target, before, 1.0, options);
     const std::vector<glm::vec2> motion = drawMotion(renderer, target, after, 1.0 + 1.0 / 30.0, options);
 
@@ -273,7 +295,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(StillWaterCase{"Standard", false, 1.0, swell::Antialiasing::Off, {0, 0, 160, 120}},
                       StillWaterCase{"OffsetViewport", false, 1.0, swell::Antialiasing::Off, {30, 20, 160, 120}},
                       StillWaterCase{"ReversedZHalfScale", true, 0.5, swell::Antialiasing::Off, {0, 0, 160, 120}},
-                      StillWaterCase{"Msaa", false, 1.0, swell::Antialiasing::Msaa4, {20, 10, 160, 120}}),
+                      StillWaterCase{"Msaa", false, 1.0, swell::Antialiasing::Msaa4, {20, 10, 160, 120}},
+                      StillWaterCase{"MultisampledHost", true, 1.0, swell::Antialiasing::Off, {10, 10, 160, 120}, 4}),
     [](const ::testing::TestParamInfo<StillWaterCase>& c) { return c.param.name; });
 
 // Where the ray from `eye` along d first meets the drawn surface (bisection
