@@ -230,6 +230,9 @@ inline constexpr const char* kFlowPass = "flow";
 // With --sensor, the frame drawn again through the scene camera's sensor
 // (swell::renderSensorFrame: lens, shutter, readout), recorded apart.
 inline constexpr const char* kSensorPass = "sensor";
+// With --motion-vectors, the pass that draws a host's motion vectors
+// (DrawOptions::motionVectors) inside the frame drawn again as a host's.
+inline constexpr const char* kMotionVectorsPass = "motion vectors";
 
 struct Results {
     Machine machine;
@@ -250,6 +253,11 @@ struct Results {
     // pass, "sensor"), and how many draws it took.
     std::vector<FrameSample> sensor;
     int sensorDraws = 0;
+    // With --motion-vectors: each measured frame drawn again into a host's
+    // framebuffer with motion vectors (its passes; "motion vectors" is
+    // theirs), and that draw's counters (motionVectorDraws, motionVectorTriangles).
+    std::vector<FrameSample> motionVectors;
+    std::vector<FrameCounters> motionVectorCounters;
     std::vector<double> realTimes_s;     // simulation time of each measured frame
     std::vector<Camera> realCameras;     // camera of each measured frame
     std::vector<LodSample> lod;

@@ -9,11 +9,13 @@
 
 #include "swell/dataset/flow.h"
 #include "swell/dataset/sensor.h"
+#include "swell/debug.h"
 #include "swell/error.h"
 #include "swell/gl/context.h"
 #include "swell/renderer.h"
 #include "swell/scene/parameters.h"
 #include "swell/scene/scene.h"
+#include "swell/view.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>
@@ -197,6 +199,20 @@ int runBench(const BenchOptions& options)
         sensorRenderer->setRenderScale(options.outputSettings.renderScale);
         r.sensorDraws = int(sensorTimingOf(scene.camera, 0.0, 0).drawTimes_s.size());
     }
+    // With --motion-vectors, a renderer and a host's framebuffer of their
+    // own (colour, RG16F motion vectors, depth), drawn as a host draws.
+    std::unique_ptr<Renderer> motionRenderer;
+    OffscreenTarget motionTarget;
+    gl::Texture motionVectors;
+    if (options.motionVectors) {
+        motionRenderer = std::make_unique<Renderer>(scene);
+        motionRenderer->setPassObserver(&recorder);
+        motionTarget = makeOffscreenTarget(r.size, GL_RGBA8);
+        motionVectors = gl::Texture::create(GLenum(GL_TEXTURE_2D));
+        glTextureStorage2D(motionVectors.id(), 1, GL_RG16F, r.size.x, r.size.y);
+        glNamedFramebufferTexture(motionTarget.framebuffer.id(), GL_COLOR_ATTACHMENT1, motionVectors.id(), 0);
+        checkGl("creating the motion vectors' target");
+    }
     for (int i = 0; i < options.warmup + options.frames; ++i) {
         const bool measured = i >= options.warmup;
         const int k = i - options.warmup;
@@ -239,6 +255,20 @@ int runBench(const BenchOptions& options)
             });
             checkGl("drawing the frame through the sensor");
         }
+        std::optional<FrameSample> motion;
+        if (motionRenderer) {
+            const float far = 1.0f, none[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+            glClearNamedFramebufferfv(motionTarget.framebuffer.id(), GL_COLOR, 0, none);
+            glClearNamedFramebufferfv(motionTarget.framebuffer.id(), GL_DEPTH, 0, &far);
+            motion = recorder.recordFrame([&] {
+                motionRenderer->advanceTo(t, camera.position_m);
+                DrawOptions draw;
+                draw.sceneWorld = true;
+                draw.motionVectors = GL_COLOR_ATTACHMENT1;
+                motionRenderer->draw(viewOf(camera, r.size), motionTarget.framebuffer.id(), draw);
+            });
+            checkGl("drawing the frame with motion vectors");
+        }
         // As a video does (`swell render`): the bodies step towards the
         // next frame on their own thread meanwhile (Renderer::anticipate).
         renderer.anticipate(double(i + 1) * kFrameStep_s);
@@ -250,6 +280,10 @@ int runBench(const BenchOptions& options)
                 r.flow.push_back(std::move(*flow));
             if (sensor)
                 r.sensor.push_back(std::move(*sensor));
+            if (motion) {
+                r.motionVectors.push_back(std::move(*motion));
+                r.motionVectorCounters.push_back(motionRenderer->counters());
+            }
             r.realTimes_s.push_back(t);
             r.bodySteps.push_back(counters.bodySteps);
             r.wakeSteps.push_back(counters.wakeSteps);

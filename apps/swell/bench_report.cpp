@@ -296,6 +296,10 @@ void printReport(const Results& r)
     if (!r.sensor.empty())
         row(kSensorPass, passSeries(r.sensor, kSensorPass, &PassSample::wall_ms),
             passSeries(r.sensor, kSensorPass, &PassSample::cpu_ms), {}, {}, passGpu(r.sensor, kSensorPass));
+    if (!r.motionVectors.empty())
+        row(kMotionVectorsPass, passSeries(r.motionVectors, kMotionVectorsPass, &PassSample::wall_ms),
+            passSeries(r.motionVectors, kMotionVectorsPass, &PassSample::cpu_ms), {}, {},
+            passGpu(r.motionVectors, kMotionVectorsPass));
     std::printf("  (an inner pass is part of the pass above it; the floor is each pass's target cleared and covered\n"
                 "   by one full-screen triangle of a constant colour)\n");
     if (!r.labels.empty())
@@ -306,6 +310,12 @@ void printReport(const Results& r)
         std::printf("  (--sensor: \"sensor\" is the frame drawn again through the camera's sensor, as `swell render`\n"
                     "   draws it: %d draw%s a frame through the lens, the shutter and the readout)\n",
                     r.sensorDraws, r.sensorDraws == 1 ? "" : "s");
+    if (!r.motionVectors.empty()) {
+        const FrameCounters& c = r.motionVectorCounters.front();
+        std::printf("  (--motion-vectors: \"motion vectors\" is their pass after the frame drawn again into a host's\n"
+                    "   framebuffer with Swell's world and sky, DrawOptions::motionVectors: %d draws, %lld triangles a frame)\n",
+                    c.motionVectorDraws, c.motionVectorTriangles);
+    }
     long long steps = 0;
     for (long long s : r.bodySteps)
         steps += s;
@@ -478,6 +488,14 @@ void writeJson(const Results& r, const std::string& path)
                       : Json{{"draws", r.sensorDraws},
                              {"wall_ms", summaryJson(summarize(passSeries(r.sensor, kSensorPass, &PassSample::wall_ms)))},
                              {"cpu_ms", summaryJson(summarize(passSeries(r.sensor, kSensorPass, &PassSample::cpu_ms)))}};
+
+    j["motion_vectors"] =
+        r.motionVectors.empty()
+            ? Json(nullptr)
+            : Json{{"draws", r.motionVectorCounters.front().motionVectorDraws},
+                   {"triangles", r.motionVectorCounters.front().motionVectorTriangles},
+                   {"wall_ms", summaryJson(summarize(passSeries(r.motionVectors, kMotionVectorsPass, &PassSample::wall_ms)))},
+                   {"cpu_ms", summaryJson(summarize(passSeries(r.motionVectors, kMotionVectorsPass, &PassSample::cpu_ms)))}};
 
     Json lod = Json::array();
     for (const LodSample& s : r.lod) {

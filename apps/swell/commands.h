@@ -91,6 +91,10 @@ struct BenchOptions {
     // (swell::renderSensorFrame: its lens, shutter and readout) and report
     // it beside the frame.
     bool sensor = false;
+    // Also draw each frame as a host would (Renderer::draw, Swell's world
+    // and sky) with motion vectors (DrawOptions::motionVectors) and report
+    // their pass beside the frame.
+    bool motionVectors = false;
     OutputSettings outputSettings;
     // Every frame from the scene's own camera (the view `swell view` opens
     // on) instead of the camera path, to compare with the viewer.

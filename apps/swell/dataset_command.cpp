@@ -39,6 +39,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <sched.h>
 
 namespace swell::app {
@@ -178,6 +179,7 @@ struct SampleFrame {
     double time_s = 0.0;
     Camera camera;               // the scene's camera: the platform of a rig
     PlatformMotion platform;     // how it moves
+    std::optional<PlatformMotion> previousPlatform; // at the clip's frame before (none for its first, a still)
     std::vector<RigFrame> shots; // each camera's frame: the rig's, or the scene's camera alone (named "")
 };
 
@@ -207,7 +209,7 @@ void writeFrame(const fs::path& out, int i, const Sweep& sweep, const SweepSampl
                 json["frame"] = f.frame;
             if (flow)
                 json["flow"] = flowJson(*flow, f.time_s);
-            json["platform"] = platformJson(f.platform, f.camera, sample.scene.labels.worldFrame);
+            json["platform"] = platformJson(f.platform, f.camera, sample.scene.labels.worldFrame, f.previousPlatform);
             if (!shot.name.empty())
                 json["rig"] = rigJson(shot.name, labels.camera, f.platform, cameras);
             Json varied = Json::object();
@@ -265,6 +267,8 @@ void writeClip(const fs::path& out, int i, const Sweep& sweep, const SweepSample
     };
     for (int k = 0; k < clip.frames; ++k) {
         SampleFrame f = drawFrame(renderer, sweep, k, clip.frameTime_s(sample.time_s, k));
+        if (pending)
+            f.previousPlatform = pending->platform;
         if (pending)
             writeFrame(out, i, sweep, sample, renderer, *pending, flowsTo(*pending, sweep.labels ? &f : nullptr));
         pending = std::move(f);

@@ -27,11 +27,20 @@ std::vector<std::string> frameCameras(const Scene& scene)
     return names;
 }
 
-Json platformJson(const PlatformMotion& m, const Camera& platform, LabelWorldFrame frame)
+Json platformJson(const PlatformMotion& m, const Camera& platform, LabelWorldFrame frame,
+                  const std::optional<PlatformMotion>& previous)
 {
     const glm::dmat3 turn = frameFromSwell(frame);
     const glm::dquat orientation = glm::normalize(glm::quat_cast(turn * glm::mat3_cast(m.orientation)));
     const ImuReading imu = imuReadingOf(m);
+    Json increment = nullptr;
+    if (previous) {
+        const ImuIncrement d = imuIncrementOf(*previous, m);
+        increment = {{"from_s", d.from_s},
+                     {"to_s", d.to_s},
+                     {"delta_velocity_mps", vectorJson(d.deltaVelocity_m_per_s)},
+                     {"delta_angle_rad", vectorJson(d.deltaAngle_rad)}};
+    }
     return {{"time_s", m.time_s},
             {"axes", "the [camera]'s: x right, y up, z back"},
             {"position_m", vectorJson(turn * m.position_m)},
@@ -46,7 +55,8 @@ Json platformJson(const PlatformMotion& m, const Camera& platform, LabelWorldFra
             {"imu",
              {{"specific_force_mps2", vectorJson(imu.specificForce_m_per_s2)},
               {"angular_rate_radps", vectorJson(imu.angularRate_rad_per_s)},
-              {"gravity_mps2", kGravity}}}};
+              {"gravity_mps2", kGravity},
+              {"increment", increment}}}};
 }
 
 Json rigJson(const std::string& name, const CameraCalibration& camera, const PlatformMotion& motion,

@@ -10,6 +10,7 @@
 #include "swell/dataset/platform.h"
 #include "swell/scene/scene.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,11 @@ std::vector<std::string> frameCameras(const Scene& scene);
 // The platform at the frame's time: world quantities in `frame`'s axes
 // (labels.world_frame), the IMU's in the platform's own. `platform` is the
 // scene's camera the motion belongs to (its angles give the heading, pitch
-// and roll).
-Json platformJson(const PlatformMotion& motion, const Camera& platform, LabelWorldFrame frame);
+// and roll). `previous`: the platform at the clip's frame before, whose
+// interval the IMU's increment covers (imu.increment; null without one: a
+// clip's first frame, a still).
+Json platformJson(const PlatformMotion& motion, const Camera& platform, LabelWorldFrame frame,
+                  const std::optional<PlatformMotion>& previous);
 
 // Where the rig camera `name` (whose calibration `camera` is, Swell's axes)
 // stands on the platform: platform_from_camera (its OpenCV axes to the

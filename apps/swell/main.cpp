@@ -247,6 +247,10 @@ int main(int argc, char** argv)
     benchCommand->add_flag("--sensor", bench.sensor,
                            "Also draw each frame through the scene camera's sensor as `swell render` does (its lens, "
                            "and with camera.shutter_s or readout_s its motion_samples draws): its own row (sensor)");
+    benchCommand->add_flag("--motion-vectors", bench.motionVectors,
+                           "Also draw each frame into a host's framebuffer (Renderer::draw with Swell's world and sky) "
+                           "with motion vectors for a TAA (DrawOptions::motionVectors): their pass's own row "
+                           "(motion vectors) and their draws and triangles");
     addOutputOptions(*benchCommand, bench.outputSettings);
     benchCommand->add_flag("--still", bench.still,
                            "Every frame from the scene's own camera (the view `swell view` opens on), not the path");

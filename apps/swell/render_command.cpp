@@ -125,6 +125,7 @@ struct PendingLabels {
     std::string camera; // its rig camera's name; "" without a rig
     PlatformMotion platform;
     Camera platformCamera;
+    std::optional<PlatformMotion> previousPlatform; // at the frame before (none for the first)
 };
 
 // Writes a frame's labels with its flow to `next` (drawn interval_s later):
@@ -140,7 +141,7 @@ void writeLabelsWithFlow(const PendingLabels& frame, const FrameLabels& next, do
     Json json = frameJson(frame.labels, scene, frame.time_s, 4.0 * renderer.waveModel().heightDeviation_m(),
                           frame.colour);
     json["flow"] = flowJson(flow, frame.time_s);
-    json["platform"] = platformJson(frame.platform, frame.platformCamera, scene.labels.worldFrame);
+    json["platform"] = platformJson(frame.platform, frame.platformCamera, scene.labels.worldFrame, frame.previousPlatform);
     if (!frame.camera.empty())
         json["rig"] = rigJson(frame.camera, frame.labels.camera, frame.platform, frameCameras(scene));
     writeFrameJson(json, frame.colour);
@@ -207,6 +208,7 @@ int runRender(const RenderOptions& options)
     // and the last frame's: to a frame of labels drawn for it alone).
     const double interval_s = 1.0 / options.fps;
     std::vector<PendingLabels> pending;
+    std::optional<PlatformMotion> previousPlatform;
     for (int i = 0; i < frames; ++i) {
         const double t = options.time_s + double(i) / options.fps;
         // Through the camera's lens and sensor (swell/dataset/sensor.h), the
@@ -223,7 +225,8 @@ int runRender(const RenderOptions& options)
             pending.clear();
             for (RigFrame& shot : shots)
                 pending.push_back(PendingLabels{std::move(*shot.frame.labels), rigCameraPath(frame, shot.name), t,
-                                                shot.name, platform, platformCamera});
+                                                shot.name, platform, platformCamera, previousPlatform});
+            previousPlatform = platform;
         }
         // The bodies step towards the next frame (or the last frame's labels
         // for its flow) while this one is written.

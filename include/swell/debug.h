@@ -94,6 +94,12 @@ struct SWELL_API FrameCounters {
     // same in every run, for a figure of the culling's work that no load
     // moves.
     long long cullBoxesTested = 0;
+    // The host's motion vectors (DrawOptions::motionVectors): their draw
+    // calls (the water's previous vertices, the grid, Swell's world, the
+    // sky) and the triangles drawn again for them; 0 when no view asks for
+    // them, and in drawCalls and waterTriangles / worldTriangles never.
+    int motionVectorDraws = 0;
+    long long motionVectorTriangles = 0;
     // Every draw call of the views (the sky's bake and the anti-aliasing's
     // filter included) is drawCalls above; the rest of the GPU's work:
     GpuWork simulationGpu; // advanceTo()'s: the wave model's for the frame

@@ -181,6 +181,26 @@ struct SWELL_API DrawOptions {
     // alone, as stills and videos need. Turning it on or off and a new
     // viewport size start the view's history again.
     bool temporal = false;
+    // Motion vectors for the host's own TAA or motion blur (docs/LIBRARY.md
+    // "Motion vectors"): 0 for none (nothing written, nothing computed),
+    // else a colour attachment of the framebuffer draw() is given
+    // (GL_COLOR_ATTACHMENT0 + i, not framebuffer 0): a float texture of
+    // two or more channels (GL_RG16F, GL_RG32F) with the framebuffer's
+    // samples. Into its red and green channels, at each pixel of the
+    // viewport that Swell draws (the water, its sky, its own world with
+    // sceneWorld), depth-tested against the host's depth as the water is:
+    // where the pixel's point lay in this viewId's previous draw less the
+    // pixel's centre, in framebuffer pixels (GL's lower-left origin: x
+    // right, y up), so the previous place is the pixel plus the vector. The
+    // host's own pixels keep what the host wrote. The first draw of a
+    // viewId, and a draw after a time earlier than its last or more than
+    // kMotionVectorLongestGap_s later, writes zero.
+    std::uint32_t motionVectors = 0;
 };
+
+// The longest gap between two draws of one view across which motion
+// vectors are written (a longer one starts the view's motion again, s):
+// a TAA's history is no use after a cut or a pause this long.
+inline constexpr double kMotionVectorLongestGap_s = 0.5;
 
 } // namespace swell

@@ -61,6 +61,25 @@ public:
 
     // Binds the buffers and textures prepareFrame() filled.
     virtual void bind() const = 0;
+    // The host's motion vectors (DrawOptions::motionVectors) need the
+    // surface of the view's previous draw: uploads what the shaders read so
+    // that, once bound, oceanSurface() answers for earlier_s (earlier than
+    // the time prepareFrame() reached) on the grid centred at gridCenter_m,
+    // and says whether it could. prepareView() brings the shaders back to
+    // the current time. Simulates nothing. The default cannot (the motion
+    // vectors then leave the water's own motion out); the Gerstner sum and
+    // the flat sea can at any time, the spectral sea at the time of its step
+    // before the last, whose fields it keeps once keepPreviousStep(true).
+    virtual bool prepareEarlierView(glm::dvec2 gridCenter_m, double earlier_s)
+    {
+        (void)gridCenter_m;
+        (void)earlier_s;
+        return false;
+    }
+    // Asks a model that simulates to keep the fields of its step before the
+    // last from now on (a copy a step), for prepareEarlierView(). Off by
+    // default: nothing is kept or copied.
+    void keepPreviousStep(bool keep) { keepPrevious_ = keep; }
     // Whether the renderer answers its frame's own water queries (its
     // floating objects', its eye's side of the water) on the GPU from this
     // model's fields, reading the answers back in the frame, rather than
@@ -130,6 +149,7 @@ protected:
     }
 
     bool interactive_ = false;
+    bool keepPrevious_ = false;
     Work work_;
 
 private:

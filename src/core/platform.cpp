@@ -2,6 +2,7 @@
 
 #include "swell/constants.h"
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -14,6 +15,26 @@ ImuReading imuReadingOf(const PlatformMotion& m)
     const glm::dquat toPlatform = glm::conjugate(m.orientation);
     const glm::dvec3 gravity(0.0, -kGravity, 0.0);
     return {toPlatform * (m.acceleration_m_per_s2 - gravity), toPlatform * m.angularVelocity_rad_per_s};
+}
+
+ImuIncrement imuIncrementOf(const PlatformMotion& from, const PlatformMotion& to)
+{
+    const glm::dquat toPlatform = glm::conjugate(from.orientation);
+    const glm::dvec3 gravity(0.0, -kGravity, 0.0);
+    const double interval_s = to.time_s - from.time_s;
+    ImuIncrement increment;
+    increment.from_s = from.time_s;
+    increment.to_s = to.time_s;
+    increment.deltaVelocity_m_per_s =
+        toPlatform * (to.velocity_m_per_s - from.velocity_m_per_s - gravity * interval_s);
+    // The turn R(t0)^T R(t1) as a rotation vector: its shorter way round.
+    glm::dquat turn = glm::normalize(toPlatform * to.orientation);
+    if (turn.w < 0.0)
+        turn = -turn;
+    const glm::dvec3 axis(turn.x, turn.y, turn.z);
+    const double half = std::atan2(glm::length(axis), turn.w);
+    increment.deltaAngle_rad = half > 0.0 ? axis * (2.0 * half / glm::length(axis)) : glm::dvec3(0.0);
+    return increment;
 }
 
 glm::dquat platformOrientationOf(const Camera& camera)

@@ -24,6 +24,8 @@ public:
     // Copies its colour (its read buffer) into a texture of `format`
     // (GL_RGBA8, or GL_RGBA16F for a linear output), filtered bilinearly.
     GLuint copyColour(GLuint framebuffer, glm::ivec4 viewport, GLenum format);
+    // The last copy's texture (0 before the first).
+    GLuint texture() const { return texture_.id(); }
 
 private:
     GLuint copy(GLuint framebuffer, glm::ivec4 viewport, GLenum format, bool depth);

@@ -93,7 +93,7 @@ std::vector<std::string> UnderwaterHostFlags::defines() const
 std::vector<std::string> MeshFlags::defines() const
 {
     std::vector<std::string> d{fmt::format("SWELL_DEBUG_VIEW {}", debugViewDefine(debugView)),
-                               labelPassDefine(labelPass)};
+                               labelPassDefine(labelPass), flagDefine("SWELL_MOTION_PASS", motionPass)};
     underwater.addDefines(d);
     return d;
 }

@@ -109,6 +109,9 @@ struct MeshFlags {
     UnderwaterFlags underwater;
     DebugView debugView = DebugView::Shaded; // SWELL_DEBUG_VIEW
     bool labelPass = false;                  // SWELL_LABEL_PASS
+    // SWELL_MOTION_PASS: the host's motion vectors (mesh_motion.vert +
+    // motion.frag, render/motion_vectors.h) in place of mesh.vert + mesh.frag.
+    bool motionPass = false;
     bool operator==(const MeshFlags&) const = default;
     std::vector<std::string> defines() const;
 };

@@ -169,4 +169,31 @@ void updateLabelPrograms(const gl::ShaderSources& sources, std::optional<LabelPr
     labels = std::move(next);
 }
 
+void updateMotionPrograms(const gl::ShaderSources& sources, std::optional<MotionPrograms>& motion,
+                          const ProgramFlags& flags)
+{
+    // The water's vertices as the colour programs place them (never kept
+    // for a shading pass: the motion pass draws the grid in one pass).
+    std::optional<WaterVertexFlags> water = WaterVertexFlags{flags.water.surface};
+    water->surface.cachesVertices = false;
+    const std::optional<NoFlags> sky = NoFlags{};
+    std::optional<MeshFlags> mesh = flags.mesh;
+    mesh->labelPass = false;
+    mesh->motionPass = true;
+    MotionPrograms none;
+    MotionPrograms& current = motion ? *motion : none;
+    MotionPrograms next;
+    const BuildChanged build{sources};
+    build("waterPrevious", next.waterPrevious, current.waterPrevious, water);
+    build("water", next.water, current.water, water);
+    build("sky", next.sky, current.sky, sky);
+    build("mesh", next.mesh, current.mesh, mesh);
+    const KeepUnchanged keep;
+    keep("waterPrevious", next.waterPrevious, current.waterPrevious, water);
+    keep("water", next.water, current.water, water);
+    keep("sky", next.sky, current.sky, sky);
+    keep("mesh", next.mesh, current.mesh, mesh);
+    motion = std::move(next);
+}
+
 } // namespace swell::detail

@@ -109,6 +109,20 @@ struct LabelPrograms {
     MeshProgram mesh;
 };
 
+// The host's motion vectors' programs (render/motion_vectors.h), built
+// when a draw first asks for them, for the colour programs' flags.
+struct MotionPrograms {
+    WaterPreviousProgram waterPrevious;
+    WaterMotionProgram water;
+    SkyMotionProgram sky;
+    MeshProgram mesh;
+};
+
+// Makes `motion` the motion vectors' programs for `flags`, building only
+// those whose flags changed; `motion` as it was where one fails to build.
+void updateMotionPrograms(const gl::ShaderSources& sources, std::optional<MotionPrograms>& motion,
+                          const ProgramFlags& flags);
+
 // Makes `labels` the label programs for `flags` (the colour programs'),
 // building only those whose flags changed; `labels` as it was where one
 // fails to build.

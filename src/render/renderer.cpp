@@ -169,6 +169,8 @@ void Renderer::draw(const View& view, unsigned framebuffer, const DrawOptions& o
     checkView(view);
     checkFramebuffer(framebuffer, true);
     checkRenderScale(options.renderScale);
+    if (options.motionVectors != 0)
+        checkMotionVectors(framebuffer, options.motionVectors);
     ViewState& state = s.views.host(options.viewId);
     s.drawRestoring(s.drawRequest(view, framebuffer, options, state), state);
 }

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "render/label_renderer.h"
+#include "render/motion_vectors.h"
 #include "render/render_target.h"
 #include "render/resources.h"
 #include "render/simulation.h"
@@ -66,6 +67,7 @@ struct Renderer::Impl {
     Simulation simulation;
     SprayRenderer spray;
     LabelRenderer labels;
+    MotionVectors motionVectors;
     ViewStates views;
     RenderSettings settings;
     // The host's terrain (Renderer::setSeabedHeights), joined to the scene's seabed.

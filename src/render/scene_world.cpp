@@ -94,6 +94,7 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
     if (tileCounts_.empty())
         return;
     program.setModel(island_);
+    program.setPreviousModel(island_);
     program.setLabel(islandLabel_);
     program.setSwashWets(true);
     world_.island.drawRanges(tileCounts_, tileOffsets_);
@@ -108,6 +109,7 @@ void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
         drawIsland(program, pass);
     if (!alone_ && world_.seabed.indexCount() > 0) {
         program.setModel(seabed_);
+        program.setPreviousModel(seabed_);
         program.setLabel(islandLabel_);
         program.setSwashWets(true);
         world_.seabed.draw();
@@ -119,6 +121,7 @@ void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
         if (!draws(i))
             continue;
         program.setModel(poses_[i]);
+        program.setPreviousModel(previousPose(i));
         if (i < objectLabels_.size())
             program.setLabel(objectLabels_[i]);
         world_.meshes[i]->draw();
@@ -139,6 +142,7 @@ void SceneWorld::drawHullVolumes(const MeshProgram& program)
     for (std::size_t i = 0; i < world_.hullVolumes.size() && i < poses_.size(); ++i)
         if (world_.hullVolumes[i] && draws(i)) {
             program.setModel(poses_[i]);
+            program.setPreviousModel(previousPose(i));
             world_.hullVolumes[i]->draw();
             ++counters_.drawCalls;
         }

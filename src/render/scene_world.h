@@ -50,6 +50,12 @@ public:
         objectLabels_ = std::move(objects);
     }
 
+    // For the host's motion vectors (the motion program): each object's
+    // transform at the view's previous draw, relative to this draw's render
+    // origin, set before each draw (the island and seabed stay put); not
+    // owned. Null: none set (the other programs).
+    void setPreviousPoses(const std::vector<glm::mat4>* poses) { previousPoses_ = poses; }
+
 private:
     void drawObjects(const MeshProgram& program, const PassView& pass);
     void drawIsland(const MeshProgram& program, const PassView& pass);
@@ -71,6 +77,11 @@ private:
     glm::uvec2 islandLabel_{0};
     std::vector<glm::uvec2> objectLabels_;
     std::optional<std::size_t> alone_;
+    const std::vector<glm::mat4>* previousPoses_ = nullptr;
+    const glm::mat4& previousPose(std::size_t i) const
+    {
+        return previousPoses_ && i < previousPoses_->size() ? (*previousPoses_)[i] : poses_[i];
+    }
 
     bool draws(std::size_t object) const { return !alone_ || *alone_ == object; }
 };

@@ -116,12 +116,50 @@ void HostCopyProgram::setViewport(glm::ivec4 viewport) const
                        1.0f / float(viewport.w));
 }
 
+MotionReprojection::MotionReprojection(const gl::Program& program, bool motionPass)
+    : previousViewProj_(motionPass ? requiredUniform(program, "motionPreviousViewProj", "motion.glsl") : -1),
+      weight_(motionPass ? requiredUniform(program, "motionWeight", "motion.glsl") : -1)
+{
+}
+
+void MotionReprojection::set(const gl::Program& program, const glm::mat4& previousViewProj, bool moves) const
+{
+    glProgramUniformMatrix4fv(program.id(), previousViewProj_, 1, GL_FALSE, glm::value_ptr(previousViewProj));
+    glProgramUniform1f(program.id(), weight_, moves ? 1.0f : 0.0f);
+}
+
 MeshProgram::MeshProgram(const gl::ShaderSources& sources, const Flags& flags)
-    : FlaggedProgram(build(sources, flags, "mesh.vert", "mesh.frag"), flags),
-      model_(requiredUniform(program_, "model", "mesh.vert")),
+    : FlaggedProgram(build(sources, flags, flags.motionPass ? "mesh_motion.vert" : "mesh.vert",
+                           flags.motionPass ? "motion.frag" : "mesh.frag"),
+                     flags),
+      model_(requiredUniform(program_, "model", flags.motionPass ? "mesh_motion.vert" : "mesh.vert")),
       label_(flags.labelPass ? requiredUniform(program_, "label", "mesh.frag") : -1),
       // Left out of the variants that do not shade (the label pass, debug views).
-      swashWets_(glGetUniformLocation(program_.id(), "swashWets"))
+      swashWets_(glGetUniformLocation(program_.id(), "swashWets")),
+      previousModel_(flags.motionPass ? requiredUniform(program_, "previousModel", "mesh_motion.vert") : -1),
+      motion_(program_, flags.motionPass)
+{
+}
+
+void MeshProgram::setPreviousModel(const glm::mat4& model) const
+{
+    if (previousModel_ >= 0)
+        glProgramUniformMatrix4fv(program_.id(), previousModel_, 1, GL_FALSE, glm::value_ptr(model));
+}
+
+WaterMotionProgram::WaterMotionProgram(const gl::ShaderSources& sources, const Flags& flags)
+    : FlaggedProgram(build(sources, flags, "water_motion.vert", "motion.frag"), flags), motion_(program_, true)
+{
+}
+
+WaterPreviousProgram::WaterPreviousProgram(const gl::ShaderSources& sources, const Flags& flags)
+    : FlaggedProgram(build(sources, flags, "water_previous.vert", nullptr), flags)
+{
+}
+
+SkyMotionProgram::SkyMotionProgram(const gl::ShaderSources& sources, const Flags& flags)
+    : FlaggedProgram(build(sources, flags, "sky.vert", "sky_motion.frag"), flags), motion_(program_, true),
+      readsHostDepth_(requiredUniform(program_, "motionSkyReadsHostDepth", "sky_motion.frag"))
 {
 }
 

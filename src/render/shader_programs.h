@@ -152,13 +152,35 @@ private:
     GLint viewport_ = -1;
 };
 
-// World geometry: mesh.vert + mesh.frag.
+// The host's motion vectors' programs (render/motion_vectors.h) all take
+// the previous draw's view and projection (shaders/motion.glsl).
+class MotionReprojection {
+public:
+    MotionReprojection() = default;
+    MotionReprojection(const gl::Program& program, bool motionPass);
+    // Positions relative to this draw's render origin to the previous
+    // draw's clip space; `moves` false: no previous draw, every vector 0.
+    void set(const gl::Program& program, const glm::mat4& previousViewProj, bool moves) const;
+
+private:
+    GLint previousViewProj_ = -1, weight_ = -1;
+};
+
+// World geometry: mesh.vert + mesh.frag; the host's motion vectors'
+// (flags.motionPass): mesh_motion.vert + motion.frag.
 class MeshProgram : public FlaggedProgram<MeshFlags> {
 public:
     MeshProgram() = default;
     MeshProgram(const gl::ShaderSources& sources, const Flags& flags);
     // Object to render-origin-relative world transform, m.
     void setModel(const glm::mat4& model) const;
+    // The motion vectors' program only (nothing elsewhere): the same
+    // object's transform at the previous draw, to this draw's render origin.
+    void setPreviousModel(const glm::mat4& model) const;
+    void setPreviousViewProj(const glm::mat4& previousViewProj, bool moves) const
+    {
+        motion_.set(program_, previousViewProj, moves);
+    }
     // The label pass's program only (nothing elsewhere): the semantic class
     // and instance the next draws write (swell/dataset/labels.h).
     void setLabel(glm::uvec2 classAndInstance) const;
@@ -170,6 +192,47 @@ private:
     GLint model_ = -1;
     GLint label_ = -1; // the label pass's program only
     GLint swashWets_ = -1; // the shading variants only
+    GLint previousModel_ = -1; // the motion vectors' program only
+    MotionReprojection motion_;
+};
+
+// The host's motion vectors on the water: water_motion.vert + motion.frag
+// (reading the previous vertices), and water_previous.vert alone (writing them).
+class WaterMotionProgram : public FlaggedProgram<WaterVertexFlags> {
+public:
+    WaterMotionProgram() = default;
+    WaterMotionProgram(const gl::ShaderSources& sources, const Flags& flags);
+    void setPreviousViewProj(const glm::mat4& previousViewProj, bool moves) const
+    {
+        motion_.set(program_, previousViewProj, moves);
+    }
+
+private:
+    MotionReprojection motion_;
+};
+
+class WaterPreviousProgram : public FlaggedProgram<WaterVertexFlags> {
+public:
+    WaterPreviousProgram() = default;
+    WaterPreviousProgram(const gl::ShaderSources& sources, const Flags& flags);
+};
+
+// ... and on Swell's sky: sky.vert + sky_motion.frag.
+class SkyMotionProgram : public FlaggedProgram<NoFlags> {
+public:
+    SkyMotionProgram() = default;
+    SkyMotionProgram(const gl::ShaderSources& sources, const Flags& flags);
+    // Whether it tests the host's depth copy (SWELL_UNIT_HOST_DEPTH) for
+    // the host's geometry rather than the depth test for the far plane.
+    void setReadsHostDepth(bool reads) const { glProgramUniform1i(program_.id(), readsHostDepth_, reads ? 1 : 0); }
+    void setPreviousViewProj(const glm::mat4& previousViewProj, bool moves) const
+    {
+        motion_.set(program_, previousViewProj, moves);
+    }
+
+private:
+    MotionReprojection motion_;
+    GLint readsHostDepth_ = -1;
 };
 
 // The cloud layer's uniforms (shaders/clouds.glsl) in a program that

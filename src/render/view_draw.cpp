@@ -29,6 +29,8 @@ void Renderer::Impl::drawView(const ViewRequest& request, ViewState& state)
     MirrorPass{PassKind::Refraction}.draw(c, state, v, request, ownWorld);
     MainPass{}.draw(c, state, v, request, own);
     PresentPass{}.draw(c, state, v, request);
+    if (request.options.motionVectors != 0 && !request.ownsFrame)
+        motionVectors.draw(c, state, v, request);
 }
 
 void Renderer::Impl::drawRestoring(const ViewRequest& request, ViewState& state)

@@ -28,6 +28,7 @@ ViewFrame prepareView(RenderContext& context, const View& view, glm::ivec2 size,
     const glm::dvec3 lod = view.lodViewpoint_m ? sea.toSea(*view.lodViewpoint_m) : v.eye;
     const GridShape& gridShape = context.resources.gridShape;
     const GridPlacement grid = placeGrid(gridShape, lod);
+    v.gridCenter_m = grid.center_m;
     simulation.prepareView(grid.center_m, v.origin, telemetry);
     // Positions relative to the render origin (sea frame) to clip space.
     v.viewProj = view.projection * view.view * glm::translate(glm::dmat4(1.0), sea.toWorld(v.origin));

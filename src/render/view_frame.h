@@ -42,6 +42,7 @@ struct ViewFrame {
     FrameUniforms base{};
     glm::dvec3 origin{0.0};   // the render origin, sea frame: the eye's x, z at the mean level
     glm::dvec3 eye{0.0};      // sea frame
+    glm::dvec2 gridCenter_m{0.0}; // the water grid's centre (sea frame x, z), which the wave model is phased at
     glm::dmat4 viewProj{1.0}; // positions relative to the render origin to clip space
     DepthConvention depth;
     std::vector<glm::mat4> poses; // each object's transform relative to the origin

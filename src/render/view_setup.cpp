@@ -1,4 +1,5 @@
 #include "render/view_setup.h"
+#include "render/water_visibility.h"
 
 #include "swell/error.h"
 
@@ -105,6 +106,35 @@ void checkFramebuffer(GLuint framebuffer, bool needsDepth)
         throw Error(fmt::format("framebuffer {} has no depth buffer: the water is depth-tested against the host's "
                                 "scene, so draw() needs one",
                                 framebuffer));
+}
+
+void checkMotionVectors(GLuint framebuffer, std::uint32_t attachment)
+{
+    if (framebuffer == 0)
+        throw Error("DrawOptions::motionVectors needs a framebuffer object of the host's: framebuffer 0 has no "
+                    "attachment to write them into");
+    GLint attachments = 0;
+    glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &attachments);
+    if (attachment < GL_COLOR_ATTACHMENT0 || attachment >= GL_COLOR_ATTACHMENT0 + GLuint(attachments))
+        throw Error(fmt::format("DrawOptions::motionVectors 0x{:04x} is not a colour attachment "
+                                "(GL_COLOR_ATTACHMENT0 .. GL_COLOR_ATTACHMENT{})",
+                                attachment, attachments - 1));
+    const GLuint index = attachment - GL_COLOR_ATTACHMENT0;
+    GLint type = GL_NONE, component = GL_NONE, green = 0;
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type == GL_NONE)
+        throw Error(fmt::format("framebuffer {} has nothing at GL_COLOR_ATTACHMENT{} (DrawOptions::motionVectors)",
+                                framebuffer, index));
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE,
+                                               &component);
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE, &green);
+    if (component != GL_FLOAT || green == 0)
+        throw Error(fmt::format("framebuffer {}'s GL_COLOR_ATTACHMENT{} (DrawOptions::motionVectors) must be a float "
+                                "format of two channels or more (GL_RG16F, GL_RG32F)",
+                                framebuffer, index));
+    if (!vertexShadersStoreBuffers())
+        throw Error("DrawOptions::motionVectors: this GL's vertex shaders cannot use storage buffers "
+                    "(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS is 0), which the water's previous vertices need");
 }
 
 } // namespace swell::detail

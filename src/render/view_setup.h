@@ -7,6 +7,7 @@
 #include "swell/view.h"
 
 #include <epoxy/gl.h>
+#include <cstdint>
 #include <glm/mat4x4.hpp>
 
 namespace swell::detail {
@@ -31,5 +32,10 @@ void setDepthConvention(FrameUniforms& f, DepthMode mode);
 // framebuffer that is incomplete, or (for compositing) has no depth buffer.
 void checkView(const View& view);
 void checkFramebuffer(GLuint framebuffer, bool needsDepth);
+// Throws swell::Error naming what is wrong with DrawOptions::motionVectors
+// (not 0) for `framebuffer`: framebuffer 0, not a colour attachment,
+// nothing attached there, not a float format of two channels or more, or a
+// GL whose vertex shaders cannot use storage buffers.
+void checkMotionVectors(GLuint framebuffer, std::uint32_t attachment);
 
 } // namespace swell::detail

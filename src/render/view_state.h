@@ -12,10 +12,22 @@
 #include "render/water_visibility.h"
 #include "render/waterline.h"
 
+#include <glm/mat4x4.hpp>
+
 #include <cstdint>
 #include <map>
+#include <vector>
 
 namespace swell::detail {
+
+// What the host's motion vectors (render/motion_vectors.h) keep of a
+// view's last draw that wrote them.
+struct MotionHistory {
+    bool drawn = false;
+    double time_s = 0.0;      // the simulated time drawn, s
+    glm::dmat4 viewProj{1.0}; // the host's view and projection then: absolute world to clip
+    std::vector<glm::dmat4> poses; // each object's transform then, object to sea frame
+};
 
 struct ViewState {
     RenderTarget reflection, refraction;
@@ -33,6 +45,7 @@ struct ViewState {
     // Whether the last frame was resolved over time: turning it on or off
     // starts the history again.
     bool temporalOn = false;
+    MotionHistory motion;
 };
 
 class ViewStates {

@@ -193,6 +193,19 @@ def clip_sweep():
                 check(abs(j["platform"]["time_s"] - (5.0 + frame / 10.0)) < 1e-12, f"{stem}.json's platform time")
                 check(abs(np.linalg.norm(j["platform"]["imu"]["specific_force_mps2"]) - 9.80665) < 1e-9,
                       "a fixed platform's IMU reads g")
+                # The increments since the clip's frame before: none for its
+                # first; over 0.1 s at rest, g times 0.1 s and no turn.
+                increment = j["platform"]["imu"]["increment"]
+                if frame == 0:
+                    check(increment is None, f"{stem}.json: a clip's first frame has no increment")
+                else:
+                    check(increment is not None and abs(increment["from_s"] - 5.0) < 1e-12
+                          and abs(increment["to_s"] - 5.1) < 1e-12, f"{stem}.json's increment's interval")
+                    if increment is not None:
+                        check(abs(np.linalg.norm(increment["delta_velocity_mps"]) - 0.980665) < 1e-9,
+                              f"{stem}.json: at rest the delta velocity is g dt")
+                        check(np.linalg.norm(increment["delta_angle_rad"]) < 1e-12,
+                              f"{stem}.json: at rest no delta angle")
     with open(os.path.join(data, "coco.json")) as f:
         coco = json.load(f)
     check(len(coco["images"]) == 4 and {i["camera"] for i in coco["images"]} == {"left", "right"},
@@ -203,9 +216,36 @@ def clip_sweep():
           f"the rig's sample is done: {r.stderr.strip()}")
 
 
+def render_sequence():
+    # `swell render --duration --labels`: each frame after the first carries
+    # the IMU's increments since the frame before (at rest: g dt, no turn).
+    scene = write("rig-sequence.toml", STEREO)
+    out = os.path.join(work, "rig-sequence", "seq.png")
+    r = run("render", scene, "-o", out, "--size", "64x48", "--labels", "--time", "5", "--duration", "0.2",
+            "--fps", "10")
+    check(r.returncode == 0, f"rig sequence render exited {r.returncode}: {r.stderr}")
+    if r.returncode != 0:
+        return
+    for frame in range(2):
+        for name in ("left", "right"):
+            path = os.path.join(work, "rig-sequence", f"seq_{frame:05d}.{name}.json")
+            check(os.path.exists(path), f"{path} missing")
+            if not os.path.exists(path):
+                continue
+            with open(path) as f:
+                increment = json.load(f)["platform"]["imu"]["increment"]
+            if frame == 0:
+                check(increment is None, f"{path}: the sequence's first frame has no increment")
+            else:
+                check(increment is not None and abs(increment["to_s"] - increment["from_s"] - 0.1) < 1e-12
+                      and abs(np.linalg.norm(increment["delta_velocity_mps"]) - 0.980665) < 1e-9,
+                      f"{path}: the increment over 0.1 s at rest is g dt: {increment}")
+
+
 stereo_disparity()
 duplicate_names()
 clip_sweep()
+render_sequence()
 if failures:
     print(f"{len(failures)} failure(s)")
     sys.exit(1)

@@ -11,8 +11,11 @@ shading terms' table and the reflection lookups; both print frames per second
 on their first line. It adds --labels too: only it prints the label pass's rows
 ("labels", "frame + labels" and the optical flow's "flow" in the table of
 times, "labels" in the counters) and writes them in the JSON, with a label pass in every measured
-frame that drew something; the colour frames' counters stay those of the
-first run.
+frame that drew something; and --motion-vectors: only it prints their row
+("motion vectors", the pass that draws a host's motion vectors in the frame
+drawn again as a host's) and writes their draws and triangles in the JSON.
+The colour frames' counters stay those of the first run: the motion
+vectors cost the frame nothing where they are not asked for.
 
 Usage: check_bench_counters.py SWELL_EXECUTABLE OUTPUT_DIR
 """
@@ -26,7 +29,7 @@ ARGS = ["bench", "--size", "160x90", "--frames", "3", "--warmup", "1"]
 
 
 def run(swell, json_path, terms):
-    command = [swell, *ARGS, "--json", json_path, *(["--terms", "--labels"] if terms else [])]
+    command = [swell, *ARGS, "--json", json_path, *(["--terms", "--labels", "--motion-vectors"] if terms else [])]
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"FAIL: {' '.join(command)} exited {result.returncode}\n{result.stdout}\n{result.stderr}")
@@ -49,6 +52,10 @@ def run(swell, json_path, terms):
     if sorted(rows) != (["flow", "frame + labels", "labels", "labels"] if labels else []):
         sys.exit(f"FAIL: the label pass's rows {rows} {'with' if labels else 'without'} --labels:\n{result.stdout}")
     # The progress counts frames of the path: warm-up and measured, then the floor's.
+    motion = [line for line in result.stdout.splitlines() if re.match(r"\s+motion vectors\s+[0-9.]+ ", line)]
+    if len(motion) != (1 if terms else 0):
+        sys.exit(f"FAIL: the motion vectors' row {motion} {'with' if terms else 'without'} --motion-vectors:\n"
+                 f"{result.stdout}")
     frames, warmup = ARGS[ARGS.index("--frames") + 1], ARGS[ARGS.index("--warmup") + 1]
     path_frames = int(frames) + int(warmup)
     if f" {path_frames}/{path_frames} " not in result.stderr:
@@ -72,6 +79,10 @@ def run(swell, json_path, terms):
             sys.exit(f"FAIL: no optical flow's time with --labels: {results['labels']!r}")
         if any("labels" not in f for f in results["measured_frames"]):
             sys.exit("FAIL: a measured frame without its label pass in the JSON")
+    vectors = results["motion_vectors"]
+    if (vectors is not None) != terms or (terms and not (vectors["draws"] >= 3 and vectors["triangles"] > 0
+                                                        and vectors["wall_ms"]["median"] > 0.0)):
+        sys.exit(f"FAIL: JSON motion_vectors {vectors!r} {'with' if terms else 'without'} --motion-vectors")
     if not results["frames_per_second"] > 0.0:
         sys.exit(f"FAIL: frames_per_second {results['frames_per_second']!r}")
     cpu = results["simulation_cpu_ms"]

@@ -156,6 +156,88 @@ TEST_F(PlatformImu, IntegratesBackToTheWrittenPosesOver10s)
     }
 }
 
+// Strapdown integration of per-frame increments (swell::ImuIncrement, the
+// recipe platform.h gives): the attitude and velocity updates from each
+// increment, the position by the trapezoidal rule on the velocities.
+Drift integrateIncrements(const std::vector<swell::PlatformMotion>& written,
+                          const std::vector<swell::ImuIncrement>& increments)
+{
+    const glm::dvec3 gravity(0.0, -swell::kGravity, 0.0);
+    glm::dquat q = written.front().orientation;
+    glm::dvec3 v = written.front().velocity_m_per_s, p = written.front().position_m;
+    Drift drift;
+    for (std::size_t k = 0; k + 1 < written.size(); ++k) {
+        const swell::ImuIncrement& d = increments[k];
+        const double dt_s = d.to_s - d.from_s;
+        const glm::dvec3 nextV = v + q * d.deltaVelocity_m_per_s + gravity * dt_s;
+        q = glm::normalize(q * rotationOf(d.deltaAngle_rad));
+        p += 0.5 * dt_s * (v + nextV);
+        v = nextV;
+        const swell::PlatformMotion& truth = written[k + 1];
+        drift.position_m = std::max(drift.position_m, glm::length(p - truth.position_m));
+        drift.velocity_mps = std::max(drift.velocity_mps, glm::length(v - truth.velocity_m_per_s));
+        drift.attitude_deg = std::max(drift.attitude_deg, angleBetween_deg(q, truth.orientation));
+    }
+    return drift;
+}
+
+// The drift allowed after 10 s of a 30 Hz clip's increments: within what
+// the instantaneous readings give at the body's own 120 Hz (0.137 m).
+constexpr double kClipPositionDrift_m = 0.05;
+constexpr double kClipVelocityDrift_mps = 0.001;
+constexpr double kClipAttitudeDrift_deg = 0.001;
+
+// A 30 Hz clip's per-frame increments (docs/LABELS.md, the platform's
+// `imu.increment`), integrated over 10 s, stay with the written poses where
+// its instantaneous readings drift 0.87 m; the under-way boat of the test
+// above, sampled on the steps' ends and, as a clip may, between them.
+TEST_F(PlatformImu, ClipIncrementsAt30HzIntegrateBackOver10s)
+{
+    for (double offset_s : {0.0, 0.37 / double(swell::kBodyStepsPerSecond)}) {
+        swell::Renderer renderer(boatPlatform());
+        const double start_s = 2.0 + offset_s, span_s = 10.0, fps = 30.0;
+        std::vector<swell::PlatformMotion> frames;
+        std::vector<swell::ImuIncrement> increments;
+        double turned_deg = 0.0, changed_mps = 0.0;
+        for (int k = 0; k <= int(span_s * fps); ++k) {
+            frames.push_back(renderer.platformAt(start_s + double(k) / fps));
+            if (k > 0) {
+                increments.push_back(swell::imuIncrementOf(frames[frames.size() - 2], frames.back()));
+                turned_deg = std::max(turned_deg, glm::degrees(glm::length(increments.back().deltaAngle_rad)));
+                changed_mps = std::max(changed_mps, glm::length(increments.back().deltaVelocity_m_per_s));
+                EXPECT_NEAR(increments.back().to_s - increments.back().from_s, 1.0 / fps, 1e-12);
+            }
+        }
+        // A frame's turn and velocity change are more than rounding.
+        EXPECT_GT(turned_deg, 0.1);
+        EXPECT_GT(changed_mps, 0.3);
+        const Drift drift = integrateIncrements(frames, increments);
+        std::printf("increments of a 30 Hz clip (frames %.4f s past the steps' ends) integrated over 10 s: position "
+                    "%.4f m, velocity %.6f m/s, attitude %.6f deg off\n",
+                    offset_s, drift.position_m, drift.velocity_mps, drift.attitude_deg);
+        EXPECT_LT(drift.position_m, kClipPositionDrift_m);
+        EXPECT_LT(drift.velocity_mps, kClipVelocityDrift_mps);
+        EXPECT_LT(drift.attitude_deg, kClipAttitudeDrift_deg);
+    }
+}
+
+// At rest the increments are gravity's reaction over the interval and no turn;
+// a steady turn at a rate w about a fixed axis is w dt.
+TEST_F(PlatformImu, IncrementsOfRestAndOfASteadyTurn)
+{
+    swell::PlatformMotion a, b;
+    a.time_s = 1.0;
+    b.time_s = 1.5;
+    a.orientation = b.orientation = glm::angleAxis(0.3, glm::normalize(glm::dvec3(1.0, 2.0, 0.5)));
+    const swell::ImuIncrement rest = swell::imuIncrementOf(a, b);
+    const glm::dvec3 up = glm::conjugate(a.orientation) * glm::dvec3(0.0, swell::kGravity * 0.5, 0.0);
+    EXPECT_LT(glm::length(rest.deltaVelocity_m_per_s - up), 1e-12);
+    EXPECT_LT(glm::length(rest.deltaAngle_rad), 1e-12);
+    const glm::dvec3 rate(0.2, -0.4, 0.1); // platform axes, rad/s
+    b.orientation = a.orientation * rotationOf(rate * 0.5);
+    EXPECT_LT(glm::length(swell::imuIncrementOf(a, b).deltaAngle_rad - rate * 0.5), 1e-12);
+}
+
 TEST_F(PlatformImu, ReadsGravityUpAtRest)
 {
     // A fixed, level camera: +g along the platform's y (up), no rate; pitched

@@ -46,6 +46,31 @@ struct SWELL_API ImuReading {
 
 SWELL_API ImuReading imuReadingOf(const PlatformMotion& motion);
 
+// What a strapdown IMU reports between two frames, integrated inside the IMU
+// over the whole interval [t0, t1] (its coning and sculling taken into
+// account, as IMUs that output increments do), in the platform's axes at
+// t0, with R(t) its orientation and v(t) its velocity (world):
+//   delta velocity  dv = integral over [t0, t1] of R(t0)^T R(t) f(t) dt
+//                      = R(t0)^T (v(t1) - v(t0) - g (t1 - t0))
+//   delta angle     da = the rotation vector of R(t0)^T R(t1):
+//                        R(t1) = R(t0) exp(da), the integral of the angular
+//                        rate w_p wherever its axis holds still over the interval
+// Integrated back (Titterton & Weston 2004, sec. 3.5, the velocity and
+// attitude updates from increments):
+//   R(t1) = R(t0) exp(da),   v(t1) = v(t0) + R(t0) dv + g (t1 - t0)
+// exact for the attitude and velocity; the position then follows from the
+// velocities (trapezoidal rule: p(t1) = p(t0) + (v(t0) + v(t1)) (t1 - t0) / 2).
+// Unlike the instantaneous readings above, sampled at a frame rate these
+// do not alias the waves' motion between the samples.
+struct SWELL_API ImuIncrement {
+    double from_s = 0.0, to_s = 0.0;          // t0 and t1, s
+    glm::dvec3 deltaVelocity_m_per_s{0.0};    // dv, m/s
+    glm::dvec3 deltaAngle_rad{0.0};           // da, rad
+};
+
+// The increment from the platform's state `from` to its state `to` (later).
+SWELL_API ImuIncrement imuIncrementOf(const PlatformMotion& from, const PlatformMotion& to);
+
 // The camera's axes (x right, y up, z back) to the world's: its orientation
 // as a platform.
 SWELL_API glm::dquat platformOrientationOf(const Camera& camera);

@@ -110,6 +110,9 @@
 // (shaders/water_tiles.comp, water_tiles.vert): its indirect draw command,
 // then each tile's place.
 #define SWELL_STORAGE_WATER_TILES 10
+// The water's vertices at the view's previous draw, for the host's motion
+// vectors (shaders/water_previous.vert writes them, water_motion.vert reads them).
+#define SWELL_STORAGE_WATER_PREVIOUS 11
 
 // Workgroups.
 // The frame's water queries: the side of each answer's block of drawn

@@ -17,6 +17,8 @@ public:
     void prepareFrame(glm::dvec2, double) override {}
     void prepareView(glm::dvec2) override {}
     void bind() const override { coast_.bind(); }
+    // The flat sea is the same at every time.
+    bool prepareEarlierView(glm::dvec2, double) override { return true; }
 
 private:
     detail::CoastGpu coast_{nullptr};

@@ -61,9 +61,25 @@ public:
         prepareView(gridCenter_m);
     }
 
-    void prepareView(glm::dvec2 gridCenter_m) override
+    void prepareView(glm::dvec2 gridCenter_m) override { upload(gridCenter_m, time_s_); }
+
+    // Stateless: any time's phases are as exact as the current ones.
+    bool prepareEarlierView(glm::dvec2 gridCenter_m, double earlier_s) override
     {
-        const double time_s = time_s_;
+        upload(gridCenter_m, earlier_s);
+        return true;
+    }
+
+    void bind() const override
+    {
+        glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, buffer_.id());
+        coast_.bind();
+    }
+
+private:
+    // The waves' block for a grid centred at gridCenter_m at time_s.
+    void upload(glm::dvec2 gridCenter_m, double time_s)
+    {
         detail::GerstnerUniforms u{};
         const int count = int(order_.size());
         for (int i = 0; i < count; ++i) {
@@ -87,13 +103,6 @@ public:
         glNamedBufferSubData(buffer_.id(), 0, sizeof(u), &u);
     }
 
-    void bind() const override
-    {
-        glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, buffer_.id());
-        coast_.bind();
-    }
-
-private:
     WaveSet waves_;
     std::vector<const Wave*> order_; // into waves_, longest first
     std::vector<double> tailSlopeVariance_; // of each wave in order_ and every shorter one

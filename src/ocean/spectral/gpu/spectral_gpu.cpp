@@ -198,8 +198,21 @@ public:
 
     void prepareView(glm::dvec2 gridCenter_m) override
     {
+        earlier_ = false;
         updateUniforms(gridCenter_m);
         coast_.prepareView(gridCenter_m, time_s_);
+    }
+
+    // The displacements of the step before the last, when kept
+    // (keepPrevious(); transform() copies them) and of that time.
+    bool prepareEarlierView(glm::dvec2 gridCenter_m, double earlier_s) override
+    {
+        if (!keepPrevious_ || !previous_ || previousTime_s_ != earlier_s)
+            return false;
+        earlier_ = true;
+        updateUniforms(gridCenter_m);
+        coast_.prepareView(gridCenter_m, earlier_s);
+        return true;
     }
 
     // The CPU twin's queries transform every cascade at each new time.
@@ -255,7 +268,7 @@ public:
     {
         coast_.bind();
         glBindBufferBase(GL_UNIFORM_BUFFER, SWELL_BINDING_OCEAN, uniforms_.id());
-        glBindTextureUnit(SWELL_UNIT_OCEAN0, displacement_.id());
+        glBindTextureUnit(SWELL_UNIT_OCEAN0, earlier_ ? previous_.id() : displacement_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN1, slopes_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN2, foam_.id());
         glBindTextureUnit(SWELL_UNIT_OCEAN3, derivatives_.id());
@@ -415,6 +428,7 @@ private:
     // mipmaps only when every cascade is transformed (a full frame's fields).
     void transform(double time_s, int cascades = kCascades)
     {
+        keepFields(time_s, cascades);
         if (interactive_ && cpuReplay_) {
             uploadFields(time_s, cascades);
             return;
@@ -499,6 +513,24 @@ private:
             work_.bytesWritten += texelBytes(kFoamFormat) * mipTexels(kFoamSize, kFoamFieldLevels, kFoamLevels, 1);
         slopeMipmapsStale_ = foamMipmapsStale_ = false;
     }
+    // Before a transform to time_s: the fields there now copied for
+    // prepareEarlierView() when asked to keep them and they are of one
+    // time (the foam's replay transforms some cascades alone).
+    void keepFields(double time_s, int cascades)
+    {
+        if (keepPrevious_ && std::isfinite(fieldsTime_s_)) {
+            if (!previous_) {
+                previous_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
+                glTextureStorage3D(previous_.id(), 1, kSpectrumFormat, kSize, kSize, kCascades);
+            }
+            glCopyImageSubData(displacement_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, previous_.id(),
+                               GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, kSize, kSize, kCascades);
+            work_.bytesWritten += texelBytes(kSpectrumFormat) * kSize * kSize * kCascades;
+        }
+        previousTime_s_ = keepPrevious_ ? fieldsTime_s_ : kNoTime;
+        fieldsTime_s_ = cascades == kCascades ? time_s : kNoTime;
+    }
+
     // Every level of the foam's windows to none.
     void clearFoam()
     {
@@ -545,6 +577,12 @@ private:
     gl::Buffer uniforms_;
     bool transformed_ = false;
     double time_s_ = 0.0;
+    // The displacements' time (NaN where cascades of other times are
+    // mixed), and the kept copy of the step before's and its time.
+    static constexpr double kNoTime = std::numeric_limits<double>::quiet_NaN();
+    double fieldsTime_s_ = kNoTime, previousTime_s_ = kNoTime;
+    gl::Texture previous_;
+    bool earlier_ = false; // bind() binds previous_: prepareEarlierView() was last
 };
 
 } // namespace
