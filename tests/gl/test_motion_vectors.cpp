@@ -169,7 +169,7 @@ glm::dvec3 rayThrough(const swell::View& view, glm::dvec2 w)
     return glm::normalize(glm::dvec3(p) / p.w - view.eye_m());
 }
 
-swell::Camera cameraAt(glm::dvec3 position_m, double yaw_deg, double pitch_deg, double roll_deg = 0.0)
+swell::Camera cameraPosedAt(glm::dvec3 position_m, double yaw_deg, double pitch_deg, double roll_deg = 0.0)
 {
     swell::Camera camera;
     camera.position_m = position_m;
@@ -180,7 +180,7 @@ swell::Camera cameraAt(glm::dvec3 position_m, double yaw_deg, double pitch_deg, 
 }
 
 // A reversed-Z projection with its far plane at infinity (the host tests').
-glm::dmat4 reversedInfinite(const glm::dmat4& standard, double near_m)
+glm::dmat4 motionReversedInfinite(const glm::dmat4& standard, double near_m)
 {
     glm::dmat4 p = standard;
     p[2][2] = 0.0;
@@ -223,13 +223,13 @@ TEST_P(MotionVectorsOnStillWater, EqualTheAnalyticReprojectionOfTheCamerasMotion
         swell::View view = swell::viewOf(camera, size);
         view.viewport = c.viewport;
         if (c.reversedZ) {
-            view.projection = reversedInfinite(view.projection, 0.1);
+            view.projection = motionReversedInfinite(view.projection, 0.1);
             view.depth = swell::DepthMode::Reversed;
         }
         return view;
     };
-    const swell::View before = viewOf(cameraAt({0.0, 3.0, 0.0}, 0.0, -12.0, 3.0));
-    const swell::View after = viewOf(cameraAt({0.4, 3.15, -0.6}, 2.0, -10.5, 3.0));
+    const swell::View before = viewOf(cameraPosedAt({0.0, 3.0, 0.0}, 0.0, -12.0, 3.0));
+    const swell::View after = viewOf(cameraPosedAt({0.4, 3.15, -0.6}, 2.0, -10.5, 3.0));
     swell::DrawOptions options;
     options.renderScale = c.renderScale;
     options.antialiasing = c.antialiasing;
@@ -340,7 +340,7 @@ SeaFigures seaAgainstDrawnSurface(const swell::Scene& scene, const std::vector<d
 {
     swell::Renderer renderer(scene);
     const glm::ivec2 size(160, 120);
-    const swell::Camera camera = cameraAt({0.0, 6.0, 0.0}, 20.0, -18.0);
+    const swell::Camera camera = cameraPosedAt({0.0, 6.0, 0.0}, 20.0, -18.0);
     const swell::View view = swell::viewOf(camera, size);
     MotionTarget target(size);
     std::vector<glm::vec2> motion;
@@ -420,7 +420,7 @@ TEST_F(MotionVectors, OnAFloatingBodyFollowItsMeshsPoints)
     scene.objects.push_back(boat);
     swell::Renderer renderer(scene);
     const glm::ivec2 size(240, 180);
-    const swell::Camera camera = cameraAt({0.0, 1.0, 0.0}, 0.0, -2.0);
+    const swell::Camera camera = cameraPosedAt({0.0, 1.0, 0.0}, 0.0, -2.0);
     const swell::View view = swell::viewOf(camera, size);
     swell::DrawOptions options;
     options.sceneWorld = true;
@@ -509,7 +509,7 @@ TEST_F(MotionVectors, LeaveTheHostsPixelsAndAnOptionOffAlone)
 {
     swell::Renderer renderer(swell::test::openSea());
     const glm::ivec2 size(160, 120);
-    const swell::View view = swell::viewOf(cameraAt({0.0, 3.0, 0.0}, 0.0, -10.0), size);
+    const swell::View view = swell::viewOf(cameraPosedAt({0.0, 3.0, 0.0}, 0.0, -10.0), size);
     const glm::dvec3 lo(-1.0, 1.2, -9.0), hi(1.0, 2.5, -7.0);
     const swell::test::HostScene boxes({{lo, hi, {1.0f, 0.0f, 0.0f}}});
     MotionTarget target(size);
@@ -549,7 +549,7 @@ TEST_F(MotionVectors, RefuseAnAttachmentTheyCannotBeWrittenTo)
 {
     swell::Renderer renderer(swell::test::openSea());
     const glm::ivec2 size(64, 48);
-    const swell::View view = swell::viewOf(cameraAt({0.0, 3.0, 0.0}, 0.0, -10.0), size);
+    const swell::View view = swell::viewOf(cameraPosedAt({0.0, 3.0, 0.0}, 0.0, -10.0), size);
     swell::test::HostTarget host(size);
     renderer.advanceTo(1.0, view.eye_m());
     swell::DrawOptions options;
