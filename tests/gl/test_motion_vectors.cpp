@@ -377,17 +377,24 @@ SeaFigures seaAgainstDrawnSurface(const swell::Scene& scene, const std::vector<d
     return figures;
 }
 
+// Enough water seen moving, each pixel's vector within 0.1 px of the
+// drawn surface's motion; the figures printed and recorded.
+void expectTheWatersOwnMotion(const SeaFigures& f)
+{
+    EXPECT_GT(f.pixels, 500);
+    EXPECT_GT(f.median_px, 0.3) << "the waves' own motion must show";
+    EXPECT_LT(f.worst_px, 0.1) << f.pixels << " pixels";
+    testing::Test::RecordProperty("worst_px", std::to_string(f.worst_px));
+    testing::Test::RecordProperty("median_motion_px", std::to_string(f.median_px));
+    std::printf("worst %.5f px over %d water pixels moving %.3f px (median)\n", f.worst_px, f.pixels, f.median_px);
+}
+
 // A Gerstner sea and a still camera: the water's own motion between two
 // draws 0.1 s apart is the drawn surface's at t and t - dt.
 TEST_F(MotionVectors, OnAGerstnerSeaFollowTheDrawnSurfacesMaterialPoints)
 {
     const SeaFigures f = seaAgainstDrawnSurface(swell::test::openSea(), {2.0, 2.1});
-    EXPECT_GT(f.pixels, 500);
-    EXPECT_GT(f.median_px, 0.3) << "the waves' own motion must show";
-    EXPECT_LT(f.worst_px, 0.1) << f.pixels << " pixels";
-    RecordProperty("worst_px", std::to_string(f.worst_px));
-    RecordProperty("median_motion_px", std::to_string(f.median_px));
-    std::printf("worst %.5f px over %d water pixels moving %.3f px (median)\n", f.worst_px, f.pixels, f.median_px);
+    expectTheWatersOwnMotion(f);
 }
 
 // The spectral storm: the vectors need the previous draw's cascades, which
@@ -396,12 +403,7 @@ TEST_F(MotionVectors, OnTheSpectralStormFollowThePreviousCascades)
 {
     const SeaFigures f =
         seaAgainstDrawnSurface(swell::test::openSpectralStorm(), {3.0, 3.0 + 1.0 / 30.0, 3.0 + 2.0 / 30.0});
-    EXPECT_GT(f.pixels, 500);
-    EXPECT_GT(f.median_px, 0.3) << "the waves' own motion must show";
-    EXPECT_LT(f.worst_px, 0.1) << f.pixels << " pixels";
-    RecordProperty("worst_px", std::to_string(f.worst_px));
-    RecordProperty("median_motion_px", std::to_string(f.median_px));
-    std::printf("worst %.5f px over %d water pixels moving %.3f px (median)\n", f.worst_px, f.pixels, f.median_px);
+    expectTheWatersOwnMotion(f);
 }
 
 // A boat under way, heaving and rolling, seen by a still camera from its
