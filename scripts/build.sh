@@ -22,8 +22,17 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${SWELL_BUILD_DIR:-$root/build}
 launcher=()
 if [[ "${SWELL_CCACHE:-ON}" != OFF ]] && command -v ccache >/dev/null; then
-  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_DEPEND=true;ccache"
-            "-DCMAKE_C_COMPILER_LAUNCHER=env;CCACHE_DEPEND=true;ccache")
+  # Paths under the build folder written relative to where each compile
+  # runs, unless the cache has a base folder of its own: the static
+  # package's build (tests/outside/static.sh, a folder inside this one)
+  # then compiles the same batched sources under the same relative names,
+  # and finds them cached.
+  basedir=()
+  if [[ -z "$(ccache -k base_dir 2>/dev/null)" ]]; then
+    basedir=("CCACHE_BASEDIR=$(realpath -m "$build")")
+  fi
+  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;${basedir[*]:+${basedir[*]};}CCACHE_DEPEND=true;ccache"
+            "-DCMAKE_C_COMPILER_LAUNCHER=env;${basedir[*]:+${basedir[*]};}CCACHE_DEPEND=true;ccache")
 elif [[ "${SWELL_CCACHE:-ON}" == OFF ]]; then
   # Off again in a folder configured with it before.
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER= -DCMAKE_C_COMPILER_LAUNCHER=)
