@@ -15,6 +15,7 @@
 #include "ocean/foam/foam_texture.h"
 #include "ocean/spectral/foam_replay.h"
 #include "ocean/spectral/spectral_cpu.h"
+#include "ocean/spectral/gpu/spectral_formats.h"
 #include "ocean/spectral/gpu/spectral_uniforms.h"
 #include "ocean/spectral/whitecaps.h"
 #include "ocean/spectral/world_foam.h"
@@ -44,49 +45,6 @@ namespace {
 // A window that moves by more than this many texels since the foam's last
 // step (a camera cut) replays the foam's history, as a cut in time does.
 constexpr int kLongestFoamShift = kFoamSize / 4;
-
-// The images' formats, named once: the textures are made, bound and counted
-// (WaveModelGpu::Work::bytesWritten) with these. The compute shaders'
-// layout qualifiers name the same.
-constexpr GLenum kInitialFormat = GL_RGBA32F;  // h0(k) and conj(h0(-k))
-constexpr GLenum kOmegaFormat = GL_RG32UI;     // w(k) as a double's two words
-// The displacement's and the derivatives' spectra, then fields: the FFTs
-// work in place on these, in full float (the queries' millimetre stands on
-// the displacement; the foam's steps read the derivatives' base level).
-constexpr GLenum kSpectrumFormat = GL_RGBA32F;
-// The shading's copy of the derivatives, with the slopes' second moments
-// (as many layers again) so that one mip chain filters both: what every
-// water pixel filters four times over. Half floats halve the bytes each
-// filtered fetch reads and the chain's; their 11 significant bits hold a
-// slope to 1/2048 of itself, far below what a normal or a highlight's
-// spread shows (tests/gl/test_spectral_fields.cpp holds them to that).
-constexpr GLenum kSlopeFormat = GL_RGBA16F;
-constexpr GLenum kFoamFormat = GL_R16F;
-
-// Bytes a texel of `format` takes (the formats above).
-constexpr long long texelBytes(GLenum format)
-{
-    switch (format) {
-    case GL_RGBA32F: return 16;
-    case GL_RG32UI: return 8;
-    case GL_RGBA16F: return 8;
-    case GL_R16F: return 2;
-    default: return 0;
-    }
-}
-
-static_assert(texelBytes(kInitialFormat) > 0 && texelBytes(kOmegaFormat) > 0 && texelBytes(kSpectrumFormat) > 0 &&
-              texelBytes(kSlopeFormat) > 0 && texelBytes(kFoamFormat) > 0);
-
-// Texels of the levels `first` .. `levels` - 1 of a square mip chain of
-// `size`^2 at its base, each with `layers` layers.
-constexpr long long mipTexels(int size, int levels, int layers, int first = 0)
-{
-    long long texels = 0;
-    for (int level = first; level < levels; ++level)
-        texels += (long long)std::max(size >> level, 1) * std::max(size >> level, 1) * layers;
-    return texels;
-}
 
 // The foam step's workgroups (spectral_foam.comp): tiles of kTile x kTile
 // texels.
