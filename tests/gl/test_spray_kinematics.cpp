@@ -52,9 +52,9 @@ const char* const kSprayKinematicsProbe = R"(
 #include "spray.glsl"
 layout(local_size_x = 1) in;
 struct Seed { ivec4 cellSlot; vec4 timeFoam; };
-struct SprayKinematicsResult { uvec4 keyLives; vec4 ageInCell; vec4 drops[SWELL_SPRAY_DROPS]; vec4 launch[SWELL_SPRAY_DROPS]; vec4 air[SWELL_SPRAY_DROPS]; };
+struct Result { uvec4 keyLives; vec4 ageInCell; vec4 drops[SWELL_SPRAY_DROPS]; vec4 launch[SWELL_SPRAY_DROPS]; vec4 air[SWELL_SPRAY_DROPS]; };
 layout(std430, binding = 0) readonly buffer Seeds { Seed seeds[]; };
-layout(std430, binding = 1) writeonly buffer Results { SprayKinematicsResult results[]; };
+layout(std430, binding = 1) writeonly buffer Results { Result results[]; };
 uniform vec2 windDirection;
 uniform float windSpeed_mps;
 uniform float youngFoam;
@@ -62,7 +62,7 @@ void main()
 {
     Seed s = seeds[gl_GlobalInvocationID.x];
     SprayLife l = sprayLife(s.cellSlot.xy, s.cellSlot.z, s.timeFoam.xy);
-    SprayKinematicsResult r;
+    Result r;
     r.keyLives = uvec4(l.key, sprayLives(l.key, s.timeFoam.z, youngFoam, s.timeFoam.w) ? 1u : 0u, 0u, 0u);
     r.ageInCell = vec4(l.age_s, l.inCell, 0.0);
     for (uint d = 0u; d < uint(SWELL_SPRAY_DROPS); ++d) {
