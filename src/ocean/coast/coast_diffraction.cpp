@@ -211,12 +211,12 @@ struct MarchStep {
     }
 };
 
-// One march's answer on its own cells.
+// One march's answer on its own cells (in the scratch's buffers).
 struct MarchResult {
-    int firstRow = 0, lastRow = -1;        // the rows marched; the others hold the open sea's wave
-    std::vector<float> coefficientSquared; // |A|^2: the diffraction coefficient's square
-    std::vector<float> carriedEnergy;      // |B|^2: the energy the march carries, ray solution included
-    std::vector<std::uint8_t> wet;
+    int firstRow = 0, lastRow = -1;         // the rows marched; the others hold the open sea's wave
+    std::vector<float>& coefficientSquared; // |A|^2: the diffraction coefficient's square
+    std::vector<float>& carriedEnergy;      // |B|^2: the energy the march carries, ray solution included
+    std::vector<std::uint8_t>& wet;
 };
 
 // A is the diffraction coefficient of the open sea's unit wave; B the
@@ -227,11 +227,9 @@ struct MarchResult {
 // what the operator's damping takes from the open sea's wave, so that only
 // the modes the damping is there for lose height.
 MarchResult marchAcross(const MarchFrame& f, const DepthSampler& sampler, const IncidentWave& incident, int firstRow,
-                        int lastRow)
+                        int lastRow, MarchScratch& scratch)
 {
-    MarchResult r;
-    r.firstRow = firstRow;
-    r.lastRow = lastRow;
+    MarchResult r{firstRow, lastRow, scratch.coefficientSquared, scratch.carriedEnergy, scratch.wet};
     const std::size_t cells = std::size_t(f.rows) * std::size_t(f.columns);
     r.coefficientSquared.assign(cells, 0.0f);
     r.carriedEnergy.assign(cells, 0.0f);
@@ -392,9 +390,11 @@ namespace {
 // ends past the last untrusted sample, the only ones that read it, and
 // spans only their columns and a margin of lit sea beside them, from which
 // the wave diffracts in.
-std::vector<double> marchedEnergy(const DepthSampler& sampler, glm::dvec2 direction, double angle_rad,
-                                  double openWavenumber_radpm, int margin)
+// Into `energy` (left empty for no march).
+void marchedEnergy(const DepthSampler& sampler, glm::dvec2 direction, double angle_rad, double openWavenumber_radpm,
+                   int margin, MarchScratch& scratch, std::vector<double>& energy)
 {
+    energy.clear();
     const DepthGrid& depth = sampler.grid;
     const std::size_t n = depth.depth_m.size();
     const bool side = angle_rad != 0.0;
@@ -407,7 +407,7 @@ std::vector<double> marchedEnergy(const DepthSampler& sampler, glm::dvec2 direct
             untrustedHi = glm::max(untrustedHi, st);
         }
     if (side && untrustedHi.x < 0)
-        return {}; // no shadow: nothing reads a side march
+        return; // no shadow: nothing reads a side march
     if (side) {
         const int first = std::max(0, untrustedLo.y - 2 * margin - 4);
         const int last = std::min(frame.columns - 1, untrustedHi.y + 2 * margin + 4);
@@ -424,10 +424,10 @@ std::vector<double> marchedEnergy(const DepthSampler& sampler, glm::dvec2 direct
     const int firstRow = std::max(0, std::min(firstDry, untrustedLo.x) - 2);
     const int lastRow = side ? std::min(frame.rows - 1, untrustedHi.x + 2) : frame.rows - 1;
     if (firstRow > lastRow)
-        return {};
-    const MarchResult result =
-        marchAcross(frame, sampler, incidentOf(openWavenumber_radpm, angle_rad, depth.cell_m), firstRow, lastRow);
-    std::vector<double> energy(n, 0.0);
+        return;
+    const MarchResult result = marchAcross(frame, sampler, incidentOf(openWavenumber_radpm, angle_rad, depth.cell_m),
+                                           firstRow, lastRow, scratch);
+    energy.assign(n, 0.0);
     for (std::size_t c = 0; c < n; ++c) {
         const bool trusted = sampler.rayTrusted[c] != 0;
         if (!sampler.march.reached[c] || (side && trusted))
@@ -435,17 +435,18 @@ std::vector<double> marchedEnergy(const DepthSampler& sampler, glm::dvec2 direct
         const MarchAnswer answer = answerAt(frame, result, samplePoint(depth, c));
         energy[c] = trusted ? sampler.march.energy[c] * answer.coefficientSquared : answer.carriedEnergy;
     }
-    return energy;
 }
 
 } // namespace
 
-void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breakerIndex, WaveMarch& march)
+void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breakerIndex, WaveMarch& march,
+                  MarchScratch& scratch)
 {
     const std::size_t n = depth.depth_m.size();
     if (std::all_of(depth.depth_m.begin(), depth.depth_m.end(), [](float h) { return h > 0.0f; }))
         return; // no obstacle: the ray solution stands
-    std::vector<double> energyLimit(n);
+    std::vector<double>& energyLimit = scratch.energyLimit;
+    energyLimit.resize(n);
     for (std::size_t c = 0; c < n; ++c)
         energyLimit[c] = breakingEnergyLimit(double(depth.depth_m[c]), wave.amplitude_m, breakerIndex);
     const int margin = std::max(kShadowMargin, int(std::ceil(kTwoPi / wave.wavenumber_radpm / depth.cell_m)));
@@ -456,10 +457,10 @@ void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breake
     // Three marches: along the open sea's direction, and turned kSideAngle
     // to either side, so that no point of a lee up to 60 degrees deep is
     // more than 20 degrees off a march's axis, where the Pade operator holds.
-    const std::vector<double> energy[3] = {
-        marchedEnergy(sampler, wave.direction, -kSideAngle_rad, openWavenumber, margin),
-        marchedEnergy(sampler, wave.direction, 0.0, openWavenumber, margin),
-        marchedEnergy(sampler, wave.direction, kSideAngle_rad, openWavenumber, margin)};
+    const double angles_rad[3] = {-kSideAngle_rad, 0.0, kSideAngle_rad};
+    for (int i = 0; i < 3; ++i)
+        marchedEnergy(sampler, wave.direction, angles_rad[i], openWavenumber, margin, scratch, scratch.energy[i]);
+    const std::vector<double>(&energy)[3] = scratch.energy;
     if (energy[1].empty())
         return; // the dry land lies past the last row: nothing behind it
     // A sample in a shadow or beside it takes the marches on either side of

@@ -20,6 +20,7 @@ namespace swell::coast {
 // elsewhere the ray solution's times the diffraction coefficient's square
 // (the fringes beside a shadow's edge); the breaking cut applied to both.
 // Refraction stays the ray solution's: the march turns no crest.
-void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breakerIndex, WaveMarch& march);
+void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breakerIndex, WaveMarch& march,
+                  MarchScratch& scratch);
 
 } // namespace swell::coast

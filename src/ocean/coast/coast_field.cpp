@@ -155,6 +155,7 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
     std::vector<coast::WaveMarch> marches(coastWaves);
     std::atomic<std::size_t> next{0};
     auto march = [&] {
+        coast::MarchScratch scratch;
         for (std::size_t l; (l = next.fetch_add(1)) < coastWaves;) {
             const std::size_t w = longest[l];
             const Wave& wave = waves.waves[w];
@@ -163,8 +164,8 @@ CoastField::CoastField(const WaveSet& waves, DepthGrid depth, double breakerInde
             marched.direction = openK[w] / marched.wavenumber_radpm;
             marched.omega_radps = angularFrequency(marched.wavenumber_radpm, waves.depth_m);
             marched.amplitude_m = wave.amplitude_m;
-            marches[l] = coast::marchWave(g, marched, breakerIndex);
-            coast::diffractWave(g, marched, breakerIndex, marches[l]);
+            marches[l] = coast::marchWave(g, marched, breakerIndex, scratch);
+            coast::diffractWave(g, marched, breakerIndex, marches[l], scratch);
             extendPhase(g, marches[l], openK[w]);
         }
     };

@@ -13,7 +13,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 
 namespace swell::coast {
@@ -111,7 +110,7 @@ glm::dvec2 phaseGradient(const Grid& g, const WaveMarch& m, int i, int j, glm::d
 
 } // namespace
 
-WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double breakerIndex)
+WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double breakerIndex, MarchScratch& scratch)
 {
     const Grid g{depth.size.x, depth.size.y, depth.cell_m};
     const std::size_t n = std::size_t(g.nx) * std::size_t(g.nz);
@@ -132,9 +131,18 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
     // bottom, kh >= pi), or, when no cell of those edges does, all along
     // them. Cells of an entry edge in shallower water are reached from
     // inside, as rays from the open sea reach them.
+    // The trial cells: a heap of (phase, cell), the least on top, as
+    // std::priority_queue keeps one (the same push_heap and pop_heap), in
+    // the scratch's storage.
     using Entry = std::pair<double, std::size_t>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> trial;
-    std::vector<std::uint8_t> entry(n, 0);
+    std::vector<Entry>& trial = scratch.trial;
+    trial.clear();
+    auto push = [&trial](Entry e) {
+        trial.push_back(e);
+        std::push_heap(trial.begin(), trial.end(), std::greater<>{});
+    };
+    std::vector<std::uint8_t>& entry = scratch.entry;
+    entry.assign(n, 0);
     const double deepEnough_m = std::min(depth.outsideDepth_m, kPi / wave.wavenumber_radpm);
     for (int pass = 0; pass < 2 && trial.empty(); ++pass)
         for (int j = 0; j < g.nz; ++j)
@@ -147,14 +155,16 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
                 const glm::dvec2 p = depth.origin_m + depth.cell_m * glm::dvec2(i, j);
                 m.phase_rad[c] = wave.wavenumber_radpm * glm::dot(wave.direction, p);
                 entry[c] = 1;
-                trial.push({m.phase_rad[c], c});
+                push({m.phase_rad[c], c});
             }
 
-    std::vector<std::size_t> order;
+    std::vector<std::size_t>& order = scratch.order;
+    order.clear();
     order.reserve(n);
     while (!trial.empty()) {
-        const auto [s, c] = trial.top();
-        trial.pop();
+        std::pop_heap(trial.begin(), trial.end(), std::greater<>{});
+        const auto [s, c] = trial.back();
+        trial.pop_back();
         if (m.reached[c] || s > m.phase_rad[c])
             continue;
         m.reached[c] = 1;
@@ -175,7 +185,7 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
             const double candidate = upwindPhase(alongX, alongZ, k[d] * g.cell);
             if (candidate < m.phase_rad[d]) {
                 m.phase_rad[d] = candidate;
-                trial.push({candidate, d});
+                push({candidate, d});
             }
         }
     }
@@ -189,7 +199,8 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
     // the faces the group velocity crosses inwards leaves across the others
     // (upwind finite volumes of div(E C_g d) = 0). A cell on an entry edge
     // takes the open sea's energy, 1.
-    std::vector<glm::dvec2> velocity(n, glm::dvec2(0.0));
+    std::vector<glm::dvec2>& velocity = scratch.velocity;
+    velocity.assign(n, glm::dvec2(0.0));
     for (std::size_t c : order) {
         const double h = std::max(double(depth.depth_m[c]), kShallowest_m);
         const glm::dvec2 kv = m.wavenumber_radpm[c];

@@ -5,6 +5,7 @@
 #include "swell/coast_field.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace swell::coast {
@@ -46,6 +47,26 @@ struct MarchedWave {
 // breakerIndex times the depth.
 double breakingEnergyLimit(double depth_m, double amplitude_m, double breakerIndex);
 
-WaveMarch marchWave(const DepthGrid& grid, const MarchedWave& wave, double breakerIndex);
+// What one wave's marches use and drop, kept by the thread that solves
+// the waves one after another: every buffer is the grid's size whatever the
+// wave, and made afresh for each wave the kernel mapped and zeroed their
+// pages again, wave after wave (a default-scene still under the sanitizers,
+// whose allocator maps every large block: 159.6 thousand page faults
+// before, 125.0 thousand after). Each user sets what it reads before it
+// reads it.
+struct MarchScratch {
+    // marchWave
+    std::vector<std::uint8_t> entry;
+    std::vector<std::size_t> order;
+    std::vector<glm::dvec2> velocity;
+    std::vector<std::pair<double, std::size_t>> trial; // a heap, the least phase on top
+    // diffractWave
+    std::vector<double> energyLimit;
+    std::vector<double> energy[3];
+    std::vector<float> coefficientSquared, carriedEnergy;
+    std::vector<std::uint8_t> wet;
+};
+
+WaveMarch marchWave(const DepthGrid& grid, const MarchedWave& wave, double breakerIndex, MarchScratch& scratch);
 
 } // namespace swell::coast
