@@ -61,7 +61,12 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
     const IslandLevels& levels = world_.islandLevels;
     if (levels.levels.empty())
         return;
-    const double focal_px = 0.5 * double(pass.viewport.w) * pass.projection[1][1];
+    // The contact pass looks straight down through an orthographic
+    // projection: its texels are the same size at every distance, so a
+    // tile's error is measured in them at unit distance (texels per metre).
+    const bool orthographic = pass.pass == PassKind::Contact;
+    const double focal_px = orthographic ? 0.5 * double(pass.viewport.z) * pass.projection[0][0]
+                                         : 0.5 * double(pass.viewport.w) * pass.projection[1][1];
     const FrustumTest inPass(passPlanes(pass, pass.projection * pass.view), glm::dvec3(0.0));
     const std::size_t tiles = levels.boxLo.size();
     tileLevels_.assign(tiles, -1);
@@ -69,7 +74,8 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
         const glm::dvec3 lo = kIslandPosition_m + glm::dvec3(levels.boxLo[t]);
         const glm::dvec3 hi = kIslandPosition_m + glm::dvec3(levels.boxHi[t]);
         if (inPass(centred(Bounds{lo, hi})) != Containment::Outside)
-            tileLevels_[t] = int(islandTileLevel(levels, t, distanceToBox(pass.eye_m, lo, hi), focal_px, islandTolerance_px_));
+            tileLevels_[t] = int(islandTileLevel(levels, t, orthographic ? 1.0 : distanceToBox(pass.eye_m, lo, hi),
+                                                 focal_px, islandTolerance_px_));
     }
     tileCounts_.clear();
     tileOffsets_.clear();
