@@ -104,7 +104,10 @@ struct SWELL_API FrameCounters {
     // what stands in it"): those drawn (their draw calls are in drawCalls,
     // their distance passes in viewsGpu where anything was drawn); 0 where
     // nothing of the world reaches the water near the eye, or the sea is flat.
+    // Their triangles of Swell's world (not in worldTriangles, which counts
+    // the views' pictures).
     int contactMaps = 0;
+    long long contactTriangles = 0;
     // Every draw call of the views (the sky's bake and the anti-aliasing's
     // filter included) is drawCalls above; the rest of the GPU's work:
     GpuWork simulationGpu; // advanceTo()'s: the wave model's for the frame

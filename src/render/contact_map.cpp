@@ -38,7 +38,7 @@ double contactBand_m(double significantHeight_m)
     return std::max(kContactBandMin_m, 0.5 * significantHeight_m);
 }
 
-double contactTop_m(double significantHeight_m) { return std::max(0.5 * significantHeight_m, 0.5); }
+double contactTop_m(double significantHeight_m) { return std::max(0.5 * significantHeight_m, 0.01); }
 
 double contactExtent_m(double height_m)
 {

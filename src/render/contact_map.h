@@ -42,9 +42,10 @@ inline constexpr double kContactBandMin_m = 0.3;
 double contactBand_m(double significantHeight_m);
 // The band above the sea level in which geometry counts as meeting the
 // water (m), for a sea of significant height hs_m: the significant wave's
-// crest, hs / 2, at least half a metre (a pier's deck 0.4 m over a calm sea
-// is washed; one 1.85 m over a 2 m sea, the example host's, is not: only
-// the rare crest reaches it, and foam under the whole deck would be wrong).
+// crest, hs / 2, at least 1 cm (a pier's deck 1.85 m over a 2 m sea, the
+// example host's, is not washed: only the rare crest reaches it, and foam
+// under the whole deck would be wrong; a box 5 cm over ripples whose
+// crests reach 2.7 cm stays dry).
 double contactTop_m(double significantHeight_m);
 // The window's side (m) for an eye `height_m` above the sea level: the
 // smallest, SWELL_CONTACT_MIN_EXTENT_M, doubled until it holds
