@@ -104,8 +104,8 @@ enum class PassKind {
     // Draw the solid geometry that may reach the water (piles, walls,
     // hulls, rocks) as in any pass; the projection keeps only the band
     // from the sea level up to the waves' reach, and is sheared a little
-    // with height so that vertical walls cover texels. Called only while
-    // the sea has waves and only for a view that may show the sea.
+    // with height so that vertical walls cover texels. Called first in each
+    // draw, only while the sea has waves.
     Contact,
 };
 
