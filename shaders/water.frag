@@ -15,6 +15,7 @@
 #include "underwater_surface.glsl"
 #include "subsurface.glsl"
 #include "surf.glsl"
+#include "contact.glsl"
 #ifndef SWELL_CLOUD_SHADOWS
 #error "SWELL_CLOUD_SHADOWS is given by the program's flags (src/render/programs.h)"
 #endif
@@ -145,7 +146,10 @@ void main()
     // The surf where the coast's waves break (surf.glsl): its foam rides the
     // crests (the grid's normal: the long waves', not the ripples') and
     // thins behind them; where it is the larger share, the foam is the surf's.
-    float surfFoamAmount = surfAmount(vRestPoint - gridCenter, vPosition.y, normalize(vNormal));
+    // The waves' wash against what stands in the water (contact.glsl) is the
+    // surf's foam too: the larger of the two amounts.
+    float surfFoamAmount = max(surfAmount(vRestPoint - gridCenter, vPosition.y, normalize(vNormal)),
+                               contactAmount(vPosition, vPosition.y));
 #if SWELL_HAS_TERM(SWELL_TERM_FOAM)
     if (surfFoamAmount > 0.0) {
         vec2 surfFootprint = restWidth * footprintScale;
@@ -174,8 +178,9 @@ void main()
 #else
     float pointSourceFoam = 0.0;
 #endif
-    // The surf's whitewater is a class of its own: the coast's breaking,
-    // where its foam is the larger share at the point.
+    // The surf's whitewater is a class of its own: the coast's breaking and
+    // the waves' wash against what stands in them, where its foam is the
+    // larger share at the point.
     float pointSurfFoam = surfFoamAtPoint(surfFoamAmount, vRestPoint);
     uint label = SWELL_LABEL_WATER;
     if (max(max(pointFoam, pointSurfFoam), pointSourceFoam) >= SWELL_LABEL_FOAM_COVER) {
@@ -266,7 +271,8 @@ void main()
     bubbles = max(bubbles, sourceBelow * sourceBelow);
 #endif
     // And the surf's: its roller drives a cloud of bubbles (and the sand it
-    // stirs) through the shallow water under and behind it.
+    // stirs) through the shallow water under and behind it, as the wash
+    // does at a structure's face.
     bubbles = max(bubbles, surfFoamAmount * surfFoamAmount);
     bubbles *= step(kBubbleDepth_m, path_m);
     vec3 bubbleLight = (directSun * max(sunDirection.y, 0.0) + max(skyAmbient(vec3(0.0, 1.0, 0.0)), vec3(0.0))) *

@@ -138,11 +138,12 @@ public:
     ~FloorFrame();
     FloorFrame(const FloorFrame&) = delete;
     FloorFrame& operator=(const FloorFrame&) = delete;
-    // waterline: also the waterline mask's pass, which real frames draw
-    // only with the camera in the waves. The benchmark alternates: the
-    // frame's floor (the least) is then one without it, the pass's own floor
-    // comes from the frames with it.
-    void render(PassObserver& observer, bool waterline);
+    // occasional: also the passes real frames draw only at times: the
+    // waterline mask's (the camera in the waves) and the contact foam's
+    // (something standing in the water near the eye). The benchmark
+    // alternates: the frame's floor (the least) is then one without them,
+    // each pass's own floor comes from the frames with them.
+    void render(PassObserver& observer, bool occasional);
 
 private:
     struct State;

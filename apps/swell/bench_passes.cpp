@@ -8,6 +8,7 @@
 #include "swell/error.h"
 #include "swell/gl/handle.h"
 #include "swell/gl/shader.h"
+#include "swell/gpu/contact.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>
@@ -226,7 +227,7 @@ OffscreenTarget makeOffscreenTarget(glm::ivec2 size, GLenum colorFormat)
 struct FloorFrame::State {
     gl::Program program;
     gl::VertexArray vao;
-    OffscreenTarget reflection, refraction, waterline, output, presented;
+    OffscreenTarget contact, reflection, refraction, waterline, output, presented;
     bool present = false;
     bool waterInTwoPasses = false;
 
@@ -263,6 +264,9 @@ FloorFrame::FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outp
     const gl::ShaderSources sources = gl::ShaderSources::fromMap({{"floor.vert", kFloorVertex}, {"floor.frag", kFloorFragment}});
     state_->program = gl::buildProgram(sources, {{GL_VERTEX_SHADER, "floor.vert"}, {GL_FRAGMENT_SHADER, "floor.frag"}});
     state_->vao = gl::VertexArray::create();
+    // The contact pass's map (swell/gpu/contact.h): its depth, with an R8
+    // colour the offscreen target brings along.
+    state_->contact = makeOffscreenTarget(glm::ivec2(SWELL_CONTACT_SIZE), GL_R8);
     state_->reflection = makeOffscreenTarget(passSize, GL_RGBA16F);
     state_->refraction = makeOffscreenTarget(passSize, GL_RGBA16F);
     state_->waterline = makeOffscreenTarget(mainSize, GL_R8);
@@ -275,7 +279,7 @@ FloorFrame::FloorFrame(glm::ivec2 passSize, glm::ivec2 mainSize, glm::ivec2 outp
 
 FloorFrame::~FloorFrame() = default;
 
-void FloorFrame::render(PassObserver& observer, bool waterline)
+void FloorFrame::render(PassObserver& observer, bool occasional)
 {
     const State& s = *state_;
     // The wave model's own work for the frame: at the least, none.
@@ -287,6 +291,15 @@ void FloorFrame::render(PassObserver& observer, bool waterline)
     observer.endPass("wake");
     observer.beginPass("queries");
     observer.endPass("queries");
+
+    // The contact foam's pass, drawn only where something stands in the
+    // water near the eye: its map cleared and covered.
+    if (occasional) {
+        observer.beginPass("contact");
+        s.bind(s.contact);
+        s.triangle(0.5f);
+        observer.endPass("contact");
+    }
 
     observer.beginPass("reflection");
     s.bind(s.reflection);
@@ -300,7 +313,7 @@ void FloorFrame::render(PassObserver& observer, bool waterline)
 
     // The waterline mask, drawn only when the camera is in the waves: its
     // full-size R8 target.
-    if (waterline) {
+    if (occasional) {
         observer.beginPass("waterline");
         s.bind(s.waterline);
         s.triangle(0.5f);

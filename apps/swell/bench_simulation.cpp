@@ -123,6 +123,12 @@ void printSimulationCpuLine(const Results& r)
     std::printf("  the views' culling: %s boxes of the water grid tested against the frustum a frame (blocks, "
                 "quadtree nodes, tiles)\n",
                 perFrame(gpuSeries(r, [](const FrameCounters& c) { return c.cullBoxesTested; })).c_str());
+    // The contact pass (its time is the "contact" row above): drawn or left
+    // out, which no load changes.
+    std::printf("  the contact foam's pass: %s a frame, %s triangles of Swell's world (0: nothing of the world "
+                "meets the water near the eye, or the sea is flat)\n",
+                perFrame(gpuSeries(r, [](const FrameCounters& c) { return (long long)c.contactMaps; })).c_str(),
+                perFrame(gpuSeries(r, [](const FrameCounters& c) { return c.contactTriangles; })).c_str());
 }
 
 void printGpuWork(const Results& r)
@@ -190,6 +196,8 @@ nlohmann::ordered_json frameGpuWorkJson(const FrameCounters& c)
     j["simulation"] = gpuWorkJson(c.simulationGpu);
     j["views"] = gpuWorkJson(c.viewsGpu);
     j["views"]["draw_calls"] = c.drawCalls;
+    j["views"]["contact_maps"] = c.contactMaps;
+    j["views"]["contact_triangles"] = c.contactTriangles;
     return j;
 }
 

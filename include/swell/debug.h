@@ -100,6 +100,14 @@ struct SWELL_API FrameCounters {
     // them, and in drawCalls and waterTriangles / worldTriangles never.
     int motionVectorDraws = 0;
     long long motionVectorTriangles = 0;
+    // The views' contact passes (docs/RENDERING.md "Foam where water meets
+    // what stands in it"): those drawn (their draw calls are in drawCalls,
+    // their distance passes in viewsGpu where anything was drawn); 0 where
+    // nothing of the world reaches the water near the eye, or the sea is flat.
+    // Their triangles of Swell's world (not in worldTriangles, which counts
+    // the views' pictures).
+    int contactMaps = 0;
+    long long contactTriangles = 0;
     // Every draw call of the views (the sky's bake and the anti-aliasing's
     // filter included) is drawCalls above; the rest of the GPU's work:
     GpuWork simulationGpu; // advanceTo()'s: the wave model's for the frame
@@ -142,6 +150,11 @@ public:
     // levels of detail"); 0 draws its full grid in every pass. Default 0.5.
     // Throws swell::InputError below 0.
     static void setIslandTolerance(Renderer& renderer, double tolerance_px);
+
+    // Leaves the contact foam out (docs/RENDERING.md "Foam where water meets
+    // what stands in it"): no contact pass, no foam round what stands in the
+    // water, for measuring what it costs and shows. Default on.
+    static void setContactFoam(Renderer& renderer, bool on);
 };
 
 } // namespace swell

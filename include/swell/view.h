@@ -98,6 +98,15 @@ enum class PassKind {
     // open hull at its gunwale. Renderer::render only: before draw(), a
     // host draws its own volumes into its depth with its scene.
     WaterMask,
+    // Depth only, from straight above, before the other passes (colour
+    // writes are off): what stands in the water, whose meeting with it
+    // foams (docs/RENDERING.md "Foam where water meets what stands in it").
+    // Draw the solid geometry that may reach the water (piles, walls,
+    // hulls, rocks) as in any pass; the projection keeps only the band
+    // from the sea level up to the waves' reach, and is sheared a little
+    // with height so that vertical walls cover texels. Called first in each
+    // draw, only while the sea has waves.
+    Contact,
 };
 
 // What a pass's callback draws with: the host draws its objects with its

@@ -18,7 +18,7 @@ namespace swell::detail {
 
 // The texture units whose sampler bindings Swell clears: every
 // SWELL_UNIT_* lies below it (swell/gpu/bindings.h).
-inline constexpr int kSwellTextureUnits = 26;
+inline constexpr int kSwellTextureUnits = 28;
 
 // The capabilities Swell saves and puts back (kCapabilities in gl_state.cpp).
 inline constexpr std::size_t kSavedCapabilities = 33;

@@ -1,5 +1,6 @@
 #include "render/label_renderer.h"
 
+#include "render/contact_map.h"
 #include "render/gl_state.h"
 #include "render/scene_world.h"
 #include "render/view_frame.h"
@@ -40,6 +41,14 @@ void LabelRenderer::drawPass(RenderContext& context, const Camera& camera, const
     updateLabelPrograms(resources.sources, programs_, resources.programs.flags);
     const LabelPrograms& p = *programs_;
     ViewFrame v = prepareView(context, view, size, false);
+    // Where the world meets the water, as the colour frame draws it (an
+    // object's silhouette alone needs none: its water's foam is not read).
+    if (!alone) {
+        SceneWorld whole(resources.world, resources.programs.meshInAir, resources.programs.mesh, v.poses, v.island,
+                         v.seabed, context.telemetry.counters);
+        whole.setIslandTolerance(context.islandTolerance_px);
+        drawContact(context, v, &whole, nullptr, view);
+    }
     // Which side of the surface each pixel looks out from, as the colour
     // frame decides it (render/waterline.h).
     const NearPlaneMedium medium =

@@ -20,6 +20,7 @@ const char* passName(PassKind pass)
     case PassKind::Refraction: return "refraction";
     case PassKind::Main: return "main";
     case PassKind::WaterMask: return "water mask";
+    case PassKind::Contact: return "contact";
     }
     return "?";
 }
@@ -75,6 +76,7 @@ void PassState::restore(RenderContext& context) const
         context.resources.bindFrame(slot, frame);
     }
     context.resources.caustics.bind();
+    context.resources.contact.bind();
     context.simulation.bindForWater();
 }
 

@@ -35,6 +35,8 @@ void RendererTesting::setIslandTolerance(Renderer& renderer, double tolerance_px
     renderer.impl_->settings.islandTolerance_px = tolerance_px;
 }
 
+void RendererTesting::setContactFoam(Renderer& renderer, bool on) { renderer.impl_->resources.contact.setEnabled(on); }
+
 int RendererTesting::captureWaterVertices(Renderer& renderer, const Camera& camera, double time_s, unsigned buffer,
                                           glm::ivec2 size, std::vector<std::uint32_t>* drawnIndices)
 {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "render/caustics_map.h"
+#include "render/contact_map.h"
 #include "render/gpu/blocks.h"
 #include "render/programs.h"
 #include "render/telemetry.h"
@@ -21,8 +22,17 @@
 namespace swell::detail {
 
 // The uniform buffer of each kind of pass (Resources::frameUbo).
-// PassProbe: the frame's water queries (render/surface_probe.h).
-enum Pass { PassReflection = 0, PassRefraction = 1, PassMain = 2, PassWaterline = 3, PassProbe = 4, PassCount = 5 };
+// PassProbe: the frame's water queries (render/surface_probe.h);
+// PassContact: the contact foam's map (render/contact_map.h).
+enum Pass {
+    PassReflection = 0,
+    PassRefraction = 1,
+    PassMain = 2,
+    PassWaterline = 3,
+    PassProbe = 4,
+    PassContact = 5,
+    PassCount = 6
+};
 
 class Resources {
 public:
@@ -57,6 +67,9 @@ public:
     std::shared_ptr<const Seabed> seabed = std::make_shared<const Seabed>();
     // The sun's light under the water, drawn again by each view that needs it (caustics_map.h).
     CausticsMap caustics;
+    // Where solid geometry meets the water, drawn again by each view that
+    // may show it (contact_map.h).
+    ContactMap contact;
 
 private:
     std::array<gl::Buffer, PassCount> frameUbo_;

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace swell::detail {
@@ -61,7 +62,12 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
     const IslandLevels& levels = world_.islandLevels;
     if (levels.levels.empty())
         return;
-    const double focal_px = 0.5 * double(pass.viewport.w) * pass.projection[1][1];
+    // The contact pass looks straight down through an orthographic
+    // projection: its texels are the same size at every distance, so a
+    // tile's error is measured in them at unit distance (texels per metre).
+    const bool orthographic = pass.pass == PassKind::Contact;
+    const double focal_px = orthographic ? 0.5 * double(pass.viewport.z) * pass.projection[0][0]
+                                         : 0.5 * double(pass.viewport.w) * pass.projection[1][1];
     const FrustumTest inPass(passPlanes(pass, pass.projection * pass.view), glm::dvec3(0.0));
     const std::size_t tiles = levels.boxLo.size();
     tileLevels_.assign(tiles, -1);
@@ -69,7 +75,8 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
         const glm::dvec3 lo = kIslandPosition_m + glm::dvec3(levels.boxLo[t]);
         const glm::dvec3 hi = kIslandPosition_m + glm::dvec3(levels.boxHi[t]);
         if (inPass(centred(Bounds{lo, hi})) != Containment::Outside)
-            tileLevels_[t] = int(islandTileLevel(levels, t, distanceToBox(pass.eye_m, lo, hi), focal_px, islandTolerance_px_));
+            tileLevels_[t] = int(islandTileLevel(levels, t, orthographic ? 1.0 : distanceToBox(pass.eye_m, lo, hi),
+                                                 focal_px, islandTolerance_px_));
     }
     tileCounts_.clear();
     tileOffsets_.clear();
@@ -98,8 +105,22 @@ void SceneWorld::drawIsland(const MeshProgram& program, const PassView& pass)
     program.setLabel(islandLabel_);
     program.setSwashWets(true);
     world_.island.drawRanges(tileCounts_, tileOffsets_);
-    counters_.worldTriangles += triangles;
+    trianglesOf(pass) += triangles;
     ++counters_.drawCalls;
+}
+
+// Whether object i's sphere (its mesh's reach round its origin, scaled)
+// reaches the contact pass's window and band: its projection maps points
+// relative to the render origin (the poses' frame) to clip space, x and z
+// over the window and y over the band, without a perspective divide.
+bool SceneWorld::inContactWindow(const PassView& pass, std::size_t i) const
+{
+    const glm::dvec4 centre = pass.projection * glm::dvec4(glm::dvec3(poses_[i][3]), 1.0);
+    const double scale = glm::length(glm::dvec3(poses_[i][0]));
+    const double reach_m = (i < world_.meshReach_m.size() ? world_.meshReach_m[i] : 0.0) * scale;
+    const double across = std::abs(pass.projection[0][0]) * reach_m + 0.05;
+    const double up = std::abs(pass.projection[1][2]) * reach_m + 0.05;
+    return std::abs(centre.x) <= 1.0 + across && std::abs(centre.y) <= 1.0 + across && std::abs(centre.z) <= 1.0 + up;
 }
 
 void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
@@ -113,19 +134,19 @@ void SceneWorld::drawObjects(const MeshProgram& program, const PassView& pass)
         program.setLabel(islandLabel_);
         program.setSwashWets(true);
         world_.seabed.draw();
-        counters_.worldTriangles += world_.seabed.indexCount() / 3;
+        trianglesOf(pass) += world_.seabed.indexCount() / 3;
         ++counters_.drawCalls;
     }
     program.setSwashWets(false);
     for (std::size_t i = 0; i < world_.meshes.size() && i < poses_.size(); ++i) {
-        if (!draws(i))
+        if (!draws(i) || (pass.pass == PassKind::Contact && !inContactWindow(pass, i)))
             continue;
         program.setModel(poses_[i]);
         program.setPreviousModel(previousPose(i));
         if (i < objectLabels_.size())
             program.setLabel(objectLabels_[i]);
         world_.meshes[i]->draw();
-        counters_.worldTriangles += world_.meshes[i]->indexCount() / 3;
+        trianglesOf(pass) += world_.meshes[i]->indexCount() / 3;
         ++counters_.drawCalls;
     }
 }

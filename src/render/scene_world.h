@@ -60,6 +60,14 @@ private:
     void drawObjects(const MeshProgram& program, const PassView& pass);
     void drawIsland(const MeshProgram& program, const PassView& pass);
     void drawHullVolumes(const MeshProgram& program);
+    // Whether object `index` may reach the contact pass's window (render/contact_map.h).
+    bool inContactWindow(const PassView& pass, std::size_t index) const;
+    // The counter a pass's triangles go to: the contact pass's own, the
+    // others' worldTriangles.
+    long long& trianglesOf(const PassView& pass)
+    {
+        return pass.pass == PassKind::Contact ? counters_.contactTriangles : counters_.worldTriangles;
+    }
 
     const World& world_;
     const MeshProgram &meshInAir_, &mesh_;

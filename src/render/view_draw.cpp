@@ -2,6 +2,7 @@
 // and its passes in order (render/view_passes.h).
 #include "render/renderer_impl.h"
 
+#include "render/contact_map.h"
 #include "render/gl_state.h"
 #include "render/scene_world.h"
 #include "swell/gpu/bindings.h"
@@ -22,6 +23,8 @@ void Renderer::Impl::drawView(const ViewRequest& request, ViewState& state)
     if (request.temporal() && request.size.x < request.outputSize().x)
         v.base.footprintScale = float(double(request.size.x) / double(request.outputSize().x));
     prepareViewMaps(c, v, ownWorld != nullptr);
+    // Where the world meets the water, before every pass that shades it.
+    drawContact(c, v, ownWorld, request.options.geometry, request.view);
     // Passes before the main one see nothing from below the water.
     state.waterline.resize(v.size);
     glBindTextureUnit(SWELL_UNIT_WATERLINE, state.waterline.allAbove());

@@ -1,5 +1,7 @@
 // The passes of one view, each a small object drawn with a PassState
-// (render/pass_state.h), in the order Renderer::Impl::drawView lists them:
+// (render/pass_state.h), in the order Renderer::Impl::drawView lists them
+// (after the view's maps: the caustics, and the contact foam's map of what
+// stands in the water, render/contact_map.h):
 //   MirrorPass{Reflection}  the world mirrored about the sea level, then the sky
 //   MirrorPass{Refraction}  the world beyond the surface as the eye sees it
 //   MainPass                the waterline mask (WaterlinePass), then the

@@ -383,7 +383,9 @@ TEST_F(HostViews, BadViewsFramebuffersAndCallbacksAreRefusedWithTheHostsFrameKep
     HostScene erring({HostBox{{-2.0, 1.0, -20.0}, {2.0, 3.0, -16.0}, {1.0f, 0.0f, 0.0f}}});
     erring.afterPass = [](const swell::PassView&) { glEnable(GLenum(0x7fff)); };
     options.geometry = &erring;
-    refused(good, target.framebuffer(), options, "GL error 0x0500 in the reflection pass");
+    // The first pass the host draws in, with the sea's waves: the contact
+    // foam's (swell/view.h, PassKind::Contact).
+    refused(good, target.framebuffer(), options, "GL error 0x0500 in the contact pass");
     // The debug output reported the host's error too: it was the point.
     GlTest::messages().clear();
 

@@ -74,6 +74,11 @@
 // a wave model's, since every model reads them.
 #define SWELL_UNIT_COAST_WAVES 24
 #define SWELL_UNIT_COAST_COMMON 25
+// The contact foam's map (shaders/contact.glsl, render/contact_map.h): the
+// distance from each texel to where solid geometry meets the water; and the
+// depth its pass drew, which the distance's first pass reads.
+#define SWELL_UNIT_CONTACT 26
+#define SWELL_UNIT_CONTACT_SOURCE 27
 
 // Image units of the spectral model's compute passes (src/ocean/spectral/,
 // shaders/ocean/spectral_fft.comp and spectral_foam.comp): the initial
@@ -87,6 +92,9 @@
 #define SWELL_IMAGE_SPECTRAL_DERIVATIVES 3
 #define SWELL_IMAGE_SPECTRAL_SLOPES 4
 #define SWELL_IMAGE_SPECTRAL_FOAM 4
+// The contact map's distance passes (shaders/contact_distance.comp): the
+// image each pass writes (the rows' distances, then the map's).
+#define SWELL_IMAGE_CONTACT_OUT 0
 
 // Shader storage bindings: the frame's water queries' points and answers
 // (shaders/surface_probe.comp), the caustics pass's refracted grid and its

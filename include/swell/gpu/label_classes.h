@@ -14,7 +14,8 @@
 #define SWELL_LABEL_WHITECAP_FOAM 3
 #define SWELL_LABEL_WAKE_FOAM 4
 #define SWELL_LABEL_TERRAIN 5
-// The coast's breaking waves' whitewater (shaders/surf.glsl): water whose
+// The coast's breaking waves' whitewater (shaders/surf.glsl) and the waves'
+// wash against what stands in them (shaders/contact.glsl): water whose
 // point is under the surf's foam, where that is more than the whitecaps'.
 #define SWELL_LABEL_SURF 6
 // The beach the swash wets (shaders/swash.glsl): terrain the sea runs up,

@@ -120,6 +120,17 @@ struct alignas(16) FrameUniforms {
     // sky), and 1 when the fog takes the sky's colour at the horizon.
     glm::vec3 fogExtinction_per_m;
     int fogFromSky;
+    // The contact foam's map (render/contact_map.h, shaders/contact.glsl):
+    // its texel (0, 0)'s outer corner relative to the render origin (x, z,
+    // m) and its side (m); the foam band's e-folding width (m) and the
+    // distance at which it has faded out (m); 1 when the map holds contacts
+    // this view, else 0 (no contact foam anywhere).
+    glm::vec2 contactCorner_m;
+    float contactSize_m;
+    float contactBand_m;
+    float contactReach_m;
+    int contactOn;
+    glm::vec2 contactUnused;
 };
 
 // The Caustics block (shaders/caustics.glsl; render/caustics_map.h).
@@ -238,7 +249,13 @@ inline const gl::BlockStruct& blockStructOf(const FrameUniforms*)
         SWELL_BLOCK_MEMBER(S, worldBoxes),
         SWELL_BLOCK_MEMBER(S, ambientSh),
         SWELL_BLOCK_MEMBER(S, fogExtinction_per_m),
-        SWELL_BLOCK_MEMBER(S, fogFromSky)}};
+        SWELL_BLOCK_MEMBER(S, fogFromSky),
+        SWELL_BLOCK_MEMBER(S, contactCorner_m),
+        SWELL_BLOCK_MEMBER(S, contactSize_m),
+        SWELL_BLOCK_MEMBER(S, contactBand_m),
+        SWELL_BLOCK_MEMBER(S, contactReach_m),
+        SWELL_BLOCK_MEMBER(S, contactOn),
+        SWELL_BLOCK_PADDING(S, contactUnused)}};
     return s;
 }
 
