@@ -251,33 +251,46 @@ struct SlopeFootprint {
 
 SlopeFootprint squareFootprint(float size_m) { return SlopeFootprint(size_m, vec2(0.0), size_m); }
 
-// A pixel's footprint from its two sides on the water (steps_m's columns):
-// the longer side gives the direction, the parallelogram's area over it the
-// width, both scaled so that the length is size_m (the square a pixel is
-// filtered over without its shape: a square footprint keeps that filter).
+// A pixel's footprint from its two sides on the water (steps_m's columns
+// M): the ellipse they span, its long axis along M's first singular vector
+// (the eigenvector of M*M^T of the larger eigenvalue, which turns smoothly
+// with the steps, where the longer of the two sides would jump from one to
+// the other as their lengths cross) and its width the parallelogram's area
+// over the long axis's length, both scaled so that the length is size_m
+// (the square a pixel is filtered over without its shape: a square
+// footprint keeps that filter).
 SlopeFootprint pixelFootprint(float size_m, mat2 steps_m)
 {
     vec2 a = steps_m[0], b = steps_m[1];
-    vec2 side = dot(a, a) >= dot(b, b) ? a : b;
-    float length_m = length(side);
-    if (!(length_m > 0.0))
+    float p = a.x * a.x + b.x * b.x, r = a.y * a.y + b.y * b.y, q = a.x * a.y + b.x * b.y;
+    float halfDifference = 0.5 * (p - r);
+    float longest2 = 0.5 * (p + r) + sqrt(halfDifference * halfDifference + q * q);
+    if (!(longest2 > 0.0))
         return squareFootprint(size_m);
-    float width_m = abs(a.x * b.y - a.y * b.x) / length_m;
-    return SlopeFootprint(size_m, side / length_m, clamp(width_m / length_m, 0.0, 1.0) * size_m);
+    // atan(0, 0) is undefined: a round footprint's axis is any (its lookups coincide).
+    float angle = q == 0.0 && p == r ? 0.0 : 0.5 * atan(2.0 * q, p - r);
+    float width_m = abs(a.x * b.y - a.y * b.x) / sqrt(longest2);
+    return SlopeFootprint(size_m, vec2(cos(angle), sin(angle)), clamp(width_m / sqrt(longest2), 0.0, 1.0) * size_m);
 }
 
-// At most this many lookups along a footprint's length, each filtered over
-// a square as wide as the footprint: up to 4 to 1 the footprint's shape is
-// followed, beyond it each lookup widens to a quarter of its length.
-#define SWELL_SLOPE_FOOTPRINT_TAPS 4
+// How much longer than wide a footprint is followed: beyond it each lookup
+// widens to the footprint's length over this. Not more: the sharper the
+// slopes, the more the water drawn in one pass and in two differs
+// (WaterTwoPasses; docs/RENDERING.md, "Slopes the pixel cannot draw").
+#define SWELL_SLOPE_FOOTPRINT_ANISOTROPY 1.75
 
-// The lookups a footprint takes: its length over its width, rounded up,
-// at most SWELL_SLOPE_FOOTPRINT_TAPS. A square takes one; from one count to
-// the next the lookups' size and span are the same (footprintTapSize), so
-// the filter does not jump where the count changes.
+// The size of the square each lookup filters, m: the footprint's width,
+// at least its length over SWELL_SLOPE_FOOTPRINT_ANISOTROPY.
+float footprintTapSize(SlopeFootprint f) { return max(f.width_m, f.size_m / SWELL_SLOPE_FOOTPRINT_ANISOTROPY); }
+
+// The lookups a footprint takes along its length: its length over the
+// lookups' size, rounded up (a square takes one). The lookups sit at the
+// midpoints of equal parts of the stretch their centres cover, so that a
+// footprint whose lookups number one more takes nearly the same mean (each
+// lookup is at least as wide as a part).
 int footprintTaps(SlopeFootprint f)
 {
-    return int(clamp(ceil(f.size_m / max(f.width_m, 1e-6 * f.size_m) - 1e-3), 1.0, float(SWELL_SLOPE_FOOTPRINT_TAPS)));
+    return int(clamp(ceil(f.size_m / footprintTapSize(f) - 1e-3), 1.0, ceil(SWELL_SLOPE_FOOTPRINT_ANISOTROPY)));
 }
 
 // The normal at a footprint (the displacement left zero, the foam left to
@@ -295,7 +308,7 @@ SurfacePoint spectralSlopes(CascadeLookups lookups, vec2 restOffset_m, SpectralC
     vec2 gradDx = vec2(0.0), gradDy = vec2(0.0), gradDz = vec2(0.0);
     float slopeVariance = 0.0;
     int taps = footprintTaps(footprint);
-    float tap_m = max(footprint.width_m, footprint.size_m / float(taps));
+    float tap_m = footprintTapSize(footprint);
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         float coastWeight = coastCascadeWeight(coast, c);
         SpectralCascade cascade = cascades[c];
@@ -307,11 +320,12 @@ SurfacePoint spectralSlopes(CascadeLookups lookups, vec2 restOffset_m, SpectralC
         // a square footprint they coincide, one lookup at its size's mip.
         vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
         float lod = log2(max(tap_m * cascade.texelsPerMetre, 1.0));
-        // From the first lookup's centre to the last's, in the patch's uv.
+        // The stretch of the footprint's length the lookups' centres cover,
+        // in the patch's uv (footprintTaps).
         vec2 span = jacobian * footprint.axis * ((footprint.size_m - tap_m) * cascade.texelsPerMetre / float(SWELL_FFT_SIZE));
         vec4 d = vec4(0.0), moments = vec4(0.0); // dDy/dx, dDy/dz, dDx/dx, dDz/dz in the patch; the moments
         for (int t = 0; t < taps; ++t) {
-            vec3 at = uvw + vec3(span * (taps > 1 ? float(t) / float(taps - 1) - 0.5 : 0.0), 0.0);
+            vec3 at = uvw + vec3(span * ((float(t) + 0.5) / float(taps) - 0.5), 0.0);
             d += textureLod(oceanDerivatives, at, lod);
             moments += textureLod(oceanDerivatives, at + vec3(0.0, 0.0, float(SWELL_FFT_CASCADES)), lod);
         }
