@@ -114,8 +114,11 @@ TEST_F(DryLand, NoPresetDrawsWaterOnLandAboveTheSwash)
         above.pitch_deg = -35.0;
         above.roll_deg = 0.0;
         cameras.push_back(above);
-        for (const swell::Camera& camera : cameras)
-            for (const double t : {5.0, 20.0}) {
+        // Time outermost: the bodies' history runs forward once (0 to 5 to
+        // 20 s) for both cameras, where a camera outermost would step it
+        // from 0 again for the second.
+        for (const double t : {5.0, 20.0})
+            for (const swell::Camera& camera : cameras) {
                 const Wet wet = waterOverLand(renderer, seabed, camera, t);
                 EXPECT_GT(wet.waterPixels, 100) << "t = " << t;
                 EXPECT_EQ(wet.onLand, 0) << "t = " << t << ": water over land up to " << wet.highest_m << " m";

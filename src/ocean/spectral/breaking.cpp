@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <vector>
@@ -37,17 +38,35 @@ std::uint64_t fingerprint(const SpectralField& field, double windSpeed10_mps)
     return h;
 }
 
+// Each texel's lowest score over all the steps (NaN scores, which make no
+// foam, left out).
+std::vector<float> lowestOverSteps(const std::vector<std::vector<float>>& steps)
+{
+    std::vector<float> lowest(steps.front().size(), std::numeric_limits<float>::infinity());
+    for (const std::vector<float>& step : steps)
+        for (size_t p = 0; p < lowest.size(); ++p)
+            lowest[p] = std::min(lowest[p], step[p]);
+    return lowest;
+}
+
 // The mean share foam covers at the last of the steps whose lowest scores
 // are `steps` (one level's, every stored texel), with full foam at score
 // `full`: the foam kept from step to step as the replay keeps it.
-double coverAt(const std::vector<std::vector<float>>& steps, float full, double decay, double breakingAmount)
+// `lowestEver` (lowestOverSteps) skips the texels no step makes foam on:
+// their foam is 0 and its share exactly 0, so the sum is the same bits
+// (most texels, once the bisection nears the breaking's low scores).
+double coverAt(const std::vector<std::vector<float>>& steps, const std::vector<float>& lowestEver, float full,
+               double decay, double breakingAmount)
 {
     const size_t texels = steps.front().size();
+    const float start = full + kBreakingSpan;
     double sum = 0.0;
     for (size_t p = 0; p < texels; ++p) {
+        if (!(lowestEver[p] < start))
+            continue;
         float foam = 0.0f;
         for (const std::vector<float>& lowest : steps)
-            foam = std::max(foam * float(decay), foamMadeAt(lowest[p], full + kBreakingSpan, kBreakingSpan));
+            foam = std::max(foam * float(decay), foamMadeAt(lowest[p], start, kBreakingSpan));
         sum += foam::foamShare(foam, breakingAmount);
     }
     return sum / double(texels);
@@ -73,12 +92,14 @@ BreakingRamps findRamps(std::shared_ptr<const SpectralField> field, double windS
     const double breakingAmount = std::exp(-foam::kBreakingFoamAge_s / kSaltWaterFoamLifetime_s);
     BreakingRamps ramps;
     for (int level = 0; level < kFoamLevels; ++level) {
+        const std::vector<std::vector<float>>& steps = scores[size_t(level)];
+        const std::vector<float> lowestEver = lowestOverSteps(steps);
         // The cover grows with the score of full foam: bisect it. A box's
         // score lies within +-sqrt(24) (one texel against 24 others).
         float low = -6.0f, high = 6.0f;
         for (int i = 0; i < 32; ++i) {
             const float mid = 0.5f * (low + high);
-            (coverAt(scores[size_t(level)], mid, decay, breakingAmount) < target ? low : high) = mid;
+            (coverAt(steps, lowestEver, mid, decay, breakingAmount) < target ? low : high) = mid;
         }
         ramps[size_t(level)] = {0.5f * (low + high) + kBreakingSpan, kBreakingSpan};
     }
