@@ -6,6 +6,14 @@
 // for the normal and foam one pixel sees (displacement left zero), given the
 // partial derivatives the grid's vertices carry, interpolated, having summed
 // the surface at gridFootprint_m: a model may add only what the grid filtered out.
+// The water's fragment shader calls the overload
+//   SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, mat2 pixelSteps_m,
+//                             float gridFootprint_m, vec3 gridAlongX, vec3 gridAlongZ, float heightScale)
+// whose pixelSteps_m holds the footprint's two sides on the water (the
+// rest point's steps across one pixel along the screen's x and y, m; zero
+// for no footprint): a model may filter its normals over that shape (long
+// along the view, narrow across it, where the water is seen at a slant)
+// and otherwise does what the first does.
 // and
 //   float oceanFoamBelow(vec2 restOffset_m, float footprint_m)
 // for the bubbles a breaking drove under the surface there (0 for models without foam), and
@@ -18,6 +26,7 @@
 //   SurfacePoint oceanShadingFromVertices(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m,
 //                                         vec3 gridAlongX, vec3 gridAlongZ, float heightScale,
 //                                         vec4 data[SWELL_OCEAN_VERTEX_DATA], float cellSize_m)
+// (with the pixelSteps_m overload beside it, as oceanShading's)
 // and the water's fragment shader calls the latter with the data
 // interpolated over the triangle and the grid's cell size there (m).
 // The renderer builds them with SWELL_OCEAN_FILE naming the model's GLSL

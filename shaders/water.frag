@@ -65,9 +65,11 @@ void main()
 #if SWELL_WATER_DEFERRED
     loadDeferredWater();
     vec2 restWidth = deferredRestWidth;
+    mat2 restSteps = mat2(deferredRestDx, deferredRestDy);
     vec2 positionWidth = deferredPositionWidth;
 #else
     vec2 restWidth = fwidth(vRestPoint);
+    mat2 restSteps = mat2(dFdx(vRestPoint), dFdy(vRestPoint));
     vec2 positionWidth = fwidth(vPosition.xz);
 #endif
     // The sun's direct light here: the cloud layer's shadow shades it
@@ -85,19 +87,26 @@ void main()
     // every wave this pixel can resolve, filtered by the pixel's footprint on
     // the water instead of the grid spacing: the model adds to the grid's
     // interpolated derivatives what the two footprints see differently.
+    // The footprint's two sides on the water (the pixel's steps along the
+    // screen's x and y), m: seen at a slant it is long along the view and
+    // narrow across it, and a model may filter its normals over that shape
+    // rather than over a square as wide as it is long (ocean.glsl).
 #if SWELL_HAS_TERM(SWELL_TERM_FILTERING)
     vec2 footprint = restWidth * footprintScale;
     float pixelSize_m = max(max(footprint.x, footprint.y), 1e-3);
+    mat2 pixelSteps_m = restSteps * footprintScale;
 #else
     float pixelSize_m = 1e-3; // every wave, however small the pixel sees it
+    mat2 pixelSteps_m = mat2(0.0);
 #endif
     // The shading pass computes what the one pass interpolates from the
     // vertices (water_vertex_cache.glsl says why).
 #if defined(SWELL_OCEAN_VERTEX_DATA) && !SWELL_WATER_DEFERRED
-    SurfacePoint surface = oceanShadingFromVertices(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ,
-                                                    vHeightScale, vOceanData, vCellSize);
+    SurfacePoint surface = oceanShadingFromVertices(vRestPoint - gridCenter, pixelSize_m, pixelSteps_m, vCellSize,
+                                                    vAlongX, vAlongZ, vHeightScale, vOceanData, vCellSize);
 #else
-    SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, vCellSize, vAlongX, vAlongZ, vHeightScale);
+    SurfacePoint surface = oceanShading(vRestPoint - gridCenter, pixelSize_m, pixelSteps_m, vCellSize, vAlongX, vAlongZ,
+                                        vHeightScale);
 #endif
     vec3 n = surface.normal;
     float foam = surface.foam;

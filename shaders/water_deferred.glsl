@@ -31,9 +31,12 @@ vec2 vSourceSlope;
 // pixel; water_vertex_cache.glsl says why.)
 
 // fwidth() of the rest point and of the displaced position's x and z,
-// which water.frag takes for its footprints.
+// which water.frag takes for its footprints, and dFdx() and dFdy() of the
+// rest point, for the shading normal's footprint on the water (its long
+// axis and its width).
 vec2 deferredRestWidth;
 vec2 deferredPositionWidth;
+vec2 deferredRestDx, deferredRestDy;
 
 // 1 + the grid triangle that pixel `texel` of the viewport shows, 0 for none.
 uint visibleTriangle(ivec2 texel)
@@ -108,7 +111,10 @@ void loadDeferredWater()
     mat3x4 restAndPosition = mat3x4(vec4(a.v[2].w, a.v[3].w, a.v[0].xz), vec4(b.v[2].w, b.v[3].w, b.v[0].xz),
                                     vec4(c.v[2].w, c.v[3].w, c.v[0].xz));
     vec4 at0 = restAndPosition * w0;
-    vec4 width = abs(restAndPosition * wx - at0) + abs(restAndPosition * wy - at0);
+    vec4 stepX = restAndPosition * wx - at0, stepY = restAndPosition * wy - at0;
+    vec4 width = abs(stepX) + abs(stepY);
+    deferredRestDx = stepX.xy;
+    deferredRestDy = stepY.xy;
     deferredRestWidth = width.xy;
     deferredPositionWidth = width.zw;
     if (!water)

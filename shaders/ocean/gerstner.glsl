@@ -127,6 +127,14 @@ SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridF
     return SurfacePoint(vec3(0.0), normalize(cross(binormal, tangent)), 0.0, tangent, binormal, slopeVariance, 0.0, vec2(0.0));
 }
 
+// The footprint's shape left out: each wave is weighed by its length
+// against the footprint's size alone.
+SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, mat2 pixelSteps_m, float gridFootprint_m,
+                          vec3 gridAlongX, vec3 gridAlongZ, float heightScale)
+{
+    return oceanShading(restOffset_m, pixelFootprint_m, gridFootprint_m, gridAlongX, gridAlongZ, heightScale);
+}
+
 // No foam, so no bubbles under it.
 float oceanFoamBelow(vec2 restOffset_m, float footprint_m) { return 0.0; }
 float oceanFoamAtPoint(vec2 restOffset_m, float heightScale) { return 0.0; }

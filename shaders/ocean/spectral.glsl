@@ -234,6 +234,65 @@ CascadeLookups interpolatedLookups(vec2 restOffset_m, vec4 data[SWELL_OCEAN_VERT
     return l;
 }
 
+// Where the slopes are filtered: a square size_m wide (the vertices', or a
+// pixel's without a shape), or a pixel's footprint on the water: size_m
+// long along the unit vector axis, width_m wide across it (m). Seen at a
+// slant the footprint is several times longer along the view than across
+// it; filtered over a square its length wide, the slopes lose the waves it
+// resolves across the view, and the smooth mean that is left reflects the
+// sky as a mirror would: where the reflection holds the edges of clouds it
+// breaks into flat, straight-edged plates (the cloud-shadows preset's
+// mosaic, docs/RENDERING.md).
+struct SlopeFootprint {
+    float size_m;  // the footprint's length, m
+    vec2 axis;     // unit, along its length; zero for a square
+    float width_m; // its width, m (size_m for a square)
+};
+
+SlopeFootprint squareFootprint(float size_m) { return SlopeFootprint(size_m, vec2(0.0), size_m); }
+
+// A pixel's footprint from its two sides on the water (steps_m's columns
+// M): the ellipse they span, its long axis along M's first singular vector
+// (the eigenvector of M*M^T of the larger eigenvalue, which turns smoothly
+// with the steps, where the longer of the two sides would jump from one to
+// the other as their lengths cross) and its width the parallelogram's area
+// over the long axis's length, both scaled so that the length is size_m
+// (the square a pixel is filtered over without its shape: a square
+// footprint keeps that filter).
+SlopeFootprint pixelFootprint(float size_m, mat2 steps_m)
+{
+    vec2 a = steps_m[0], b = steps_m[1];
+    float p = a.x * a.x + b.x * b.x, r = a.y * a.y + b.y * b.y, q = a.x * a.y + b.x * b.y;
+    float halfDifference = 0.5 * (p - r);
+    float longest2 = 0.5 * (p + r) + sqrt(halfDifference * halfDifference + q * q);
+    if (!(longest2 > 0.0))
+        return squareFootprint(size_m);
+    // atan(0, 0) is undefined: a round footprint's axis is any (its lookups coincide).
+    float angle = q == 0.0 && p == r ? 0.0 : 0.5 * atan(2.0 * q, p - r);
+    float width_m = abs(a.x * b.y - a.y * b.x) / sqrt(longest2);
+    return SlopeFootprint(size_m, vec2(cos(angle), sin(angle)), clamp(width_m / sqrt(longest2), 0.0, 1.0) * size_m);
+}
+
+// How much longer than wide a footprint is followed: beyond it each lookup
+// widens to the footprint's length over this. Not more: the sharper the
+// slopes, the more the water drawn in one pass and in two differs
+// (WaterTwoPasses; docs/RENDERING.md, "Slopes the pixel cannot draw").
+#define SWELL_SLOPE_FOOTPRINT_ANISOTROPY 1.75
+
+// The size of the square each lookup filters, m: the footprint's width,
+// at least its length over SWELL_SLOPE_FOOTPRINT_ANISOTROPY.
+float footprintTapSize(SlopeFootprint f) { return max(f.width_m, f.size_m / SWELL_SLOPE_FOOTPRINT_ANISOTROPY); }
+
+// The lookups a footprint takes along its length: its length over the
+// lookups' size, rounded up (a square takes one). The lookups sit at the
+// midpoints of equal parts of the stretch their centres cover, so that a
+// footprint whose lookups number one more takes nearly the same mean (each
+// lookup is at least as wide as a part).
+int footprintTaps(SlopeFootprint f)
+{
+    return int(clamp(ceil(f.size_m / footprintTapSize(f) - 1e-3), 1.0, ceil(SWELL_SLOPE_FOOTPRINT_ANISOTROPY)));
+}
+
 // The normal at a footprint (the displacement left zero, the foam left to
 // oceanShading): the slopes through their mipmaps. The slope variance the mipmaps
 // average away comes back from the second moments (LEAN mapping, Olano &
@@ -242,23 +301,36 @@ CascadeLookups interpolatedLookups(vec2 restOffset_m, vec4 data[SWELL_OCEAN_VERT
 // Over a coast, each cascade's slopes are weighed as its displacement is
 // (the weights' own gradients left out, as the CPU twin leaves them: they
 // change over tens of metres) and the trains' added at the footprint.
-SurfacePoint spectralSlopes(CascadeLookups lookups, vec2 restOffset_m, SpectralCoast coast, float footprint_m,
+SurfacePoint spectralSlopes(CascadeLookups lookups, vec2 restOffset_m, SpectralCoast coast, SlopeFootprint footprint,
                             float heightScale)
 {
     // Gradients along rest x and z, each (d/dx, d/dz).
     vec2 gradDx = vec2(0.0), gradDy = vec2(0.0), gradDz = vec2(0.0);
     float slopeVariance = 0.0;
+    int taps = footprintTaps(footprint);
+    float tap_m = footprintTapSize(footprint);
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
         float coastWeight = coastCascadeWeight(coast, c);
         SpectralCascade cascade = cascades[c];
         mat2 jacobian = lookups.jacobian[c];
         vec2 s = lookups.texels[c];
         // Sample centres sit at integer texels: shift by half a texel for the
-        // hardware's filter, and pick the mip the footprint covers.
+        // hardware's filter. The footprint's length is covered by lookups
+        // spaced along it, each at the mip of a square its width wide; for
+        // a square footprint they coincide, one lookup at its size's mip.
         vec3 uvw = vec3((s + 0.5) / float(SWELL_FFT_SIZE), float(c));
-        float lod = log2(max(footprint_m * cascade.texelsPerMetre, 1.0));
-        vec4 d = textureLod(oceanDerivatives, uvw, lod); // dDy/dx, dDy/dz, dDx/dx, dDz/dz in the patch
-        vec4 moments = textureLod(oceanDerivatives, uvw + vec3(0.0, 0.0, float(SWELL_FFT_CASCADES)), lod);
+        float lod = log2(max(tap_m * cascade.texelsPerMetre, 1.0));
+        // The stretch of the footprint's length the lookups' centres cover,
+        // in the patch's uv (footprintTaps).
+        vec2 span = jacobian * footprint.axis * ((footprint.size_m - tap_m) * cascade.texelsPerMetre / float(SWELL_FFT_SIZE));
+        vec4 d = vec4(0.0), moments = vec4(0.0); // dDy/dx, dDy/dz, dDx/dx, dDz/dz in the patch; the moments
+        for (int t = 0; t < taps; ++t) {
+            vec3 at = uvw + vec3(span * ((float(t) + 0.5) / float(taps) - 0.5), 0.0);
+            d += textureLod(oceanDerivatives, at, lod);
+            moments += textureLod(oceanDerivatives, at + vec3(0.0, 0.0, float(SWELL_FFT_CASCADES)), lod);
+        }
+        d /= float(taps);
+        moments /= float(taps);
         // dDx/dz = dDz/dx, filtered by the footprint as its siblings are (the
         // displacement's own copy is sampled nearest: a texel's value over
         // the whole texel, at level 0 whatever the footprint).
@@ -279,8 +351,8 @@ SurfacePoint spectralSlopes(CascadeLookups lookups, vec2 restOffset_m, SpectralC
     }
     if (coast.share > 0.0) {
         vec3 trains = vec3(0.0), alongX = vec3(0.0), alongZ = vec3(0.0);
-        coastTrainsSurface(restOffset_m, coast.cell, coast.everyWave, footprint_m, sqrt(coast.share), trains, alongX,
-                           alongZ);
+        coastTrainsSurface(restOffset_m, coast.cell, coast.everyWave, footprint.size_m, sqrt(coast.share), trains,
+                           alongX, alongZ);
         gradDx += vec2(alongX.x, alongZ.x);
         gradDy += vec2(alongX.y, alongZ.y);
         gradDz += vec2(alongX.z, alongZ.z);
@@ -310,7 +382,8 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
         coastTrainsSurface(restOffset_m, coast.cell, coast.everyWave, footprint_m, sqrt(coast.share), displacement,
                            alongX, alongZ);
     }
-    SurfacePoint p = spectralSlopes(warpedLookups(restOffset_m), restOffset_m, coast, footprint_m, heightScale);
+    SurfacePoint p =
+        spectralSlopes(warpedLookups(restOffset_m), restOffset_m, coast, squareFootprint(footprint_m), heightScale);
     p.displacement = displacement * heightScale;
     return p;
 }
@@ -318,9 +391,11 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
 // The slope textures hold every wave the pixel resolves, at the cost of one
 // filtered fetch per cascade: the grid's normal adds nothing. The foam is
 // the pixel's alone (the vertices have no use for it).
-SurfacePoint spectralShading(CascadeLookups lookups, vec2 restOffset_m, float pixelFootprint_m, float heightScale)
+SurfacePoint spectralShading(CascadeLookups lookups, vec2 restOffset_m, float pixelFootprint_m, mat2 pixelSteps_m,
+                             float heightScale)
 {
-    SurfacePoint p = spectralSlopes(lookups, restOffset_m, spectralCoastAt(restOffset_m), pixelFootprint_m, heightScale);
+    SurfacePoint p = spectralSlopes(lookups, restOffset_m, spectralCoastAt(restOffset_m),
+                                    pixelFootprint(pixelFootprint_m, pixelSteps_m), heightScale);
     FoamLook foam = foamLook(foamNoise, breakingFoamAmount, heightScale * worldFoam(restOffset_m, pixelFootprint_m, true),
                              restOffset_m, pixelFootprint_m);
     p.foam = foam.cover;
@@ -329,20 +404,36 @@ SurfacePoint spectralShading(CascadeLookups lookups, vec2 restOffset_m, float pi
     return p;
 }
 
+SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, mat2 pixelSteps_m, float gridFootprint_m,
+                          vec3 gridAlongX, vec3 gridAlongZ, float heightScale)
+{
+    return spectralShading(warpedLookups(restOffset_m), restOffset_m, pixelFootprint_m, pixelSteps_m, heightScale);
+}
+
+// A square footprint.
 SurfacePoint oceanShading(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m, vec3 gridAlongX,
                           vec3 gridAlongZ, float heightScale)
 {
-    return spectralShading(warpedLookups(restOffset_m), restOffset_m, pixelFootprint_m, heightScale);
+    return oceanShading(restOffset_m, pixelFootprint_m, mat2(0.0), gridFootprint_m, gridAlongX, gridAlongZ, heightScale);
 }
 
 // oceanShading with what the pixel's vertices handed it (oceanVertexData,
 // interpolated) and the grid's cell there, m.
+SurfacePoint oceanShadingFromVertices(vec2 restOffset_m, float pixelFootprint_m, mat2 pixelSteps_m,
+                                      float gridFootprint_m, vec3 gridAlongX, vec3 gridAlongZ, float heightScale,
+                                      vec4 vertexData[SWELL_OCEAN_VERTEX_DATA], float cellSize_m)
+{
+    return spectralShading(interpolatedLookups(restOffset_m, vertexData, cellSize_m), restOffset_m,
+                           pixelFootprint_m, pixelSteps_m, heightScale);
+}
+
+// A square footprint.
 SurfacePoint oceanShadingFromVertices(vec2 restOffset_m, float pixelFootprint_m, float gridFootprint_m,
                                       vec3 gridAlongX, vec3 gridAlongZ, float heightScale,
                                       vec4 vertexData[SWELL_OCEAN_VERTEX_DATA], float cellSize_m)
 {
-    return spectralShading(interpolatedLookups(restOffset_m, vertexData, cellSize_m), restOffset_m,
-                           pixelFootprint_m, heightScale);
+    return oceanShadingFromVertices(restOffset_m, pixelFootprint_m, mat2(0.0), gridFootprint_m, gridAlongX, gridAlongZ,
+                                    heightScale, vertexData, cellSize_m);
 }
 
 // The bubbles under the whitecaps: a breaking crest drives a plume of them
