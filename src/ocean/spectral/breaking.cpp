@@ -53,8 +53,7 @@ std::vector<float> lowestOverSteps(const std::vector<std::vector<float>>& steps)
 // are `steps` (one level's, every stored texel), with full foam at score
 // `full`: the foam kept from step to step as the replay keeps it.
 // `lowestEver` (lowestOverSteps) skips the texels no step makes foam on:
-// their foam is 0 and its share exactly 0, so the sum is the same bits
-// (most texels, once the bisection nears the breaking's low scores).
+// their foam is 0 and its share exactly 0, so the sum is the same bits.
 double coverAt(const std::vector<std::vector<float>>& steps, const std::vector<float>& lowestEver, float full,
                double decay, double breakingAmount)
 {
