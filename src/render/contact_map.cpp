@@ -6,10 +6,8 @@
 #include "render/scene_world.h"
 #include "render/simulation.h"
 #include "render/view_frame.h"
-#include "swell/error.h"
 #include "swell/gpu/bindings.h"
 
-#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
@@ -204,15 +202,7 @@ void drawContact(RenderContext& context, ViewFrame& v, SceneWorld* own, PassGeom
     pv.depth = DepthMode::Standard;
     pv.eye_m = view.eye_m();
 
-    if (own)
-        own->drawPass(pv);
-    if (host) {
-        host->drawPass(pv);
-        if (const GLenum error = glGetError(); error != GL_NO_ERROR)
-            throw Error(fmt::format("the host's geometry left GL error 0x{:04x} in the contact pass", error));
-        pass.restore(context);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    }
+    drawGeometryAs(context, pass, pv, own, host);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glFrontFace(GL_CCW);
     ++context.telemetry.counters.contactMaps;

@@ -99,6 +99,13 @@ void drawGeometry(RenderContext& context, const PassState& state, PassKind kind,
     // and mesh.frag, which turns a back face's normal round, would light
     // each object's reflection from the wrong side.
     glFrontFace(state.mirrored ? GL_CW : GL_CCW);
+    drawGeometryAs(context, state, pass, own, host);
+    glFrontFace(GL_CCW);
+}
+
+void drawGeometryAs(RenderContext& context, const PassState& state, const PassView& pass, SceneWorld* own,
+                    PassGeometry* host)
+{
     // The world is drawn before the sky and the water, which bind the sky
     // cubemap for themselves; its fog looks the sky up too (fog.glsl's
     // aerial perspective), and the unit may hold nothing yet (a bake leaves
@@ -110,10 +117,9 @@ void drawGeometry(RenderContext& context, const PassState& state, PassKind kind,
         host->drawPass(pass);
         if (const GLenum error = glGetError(); error != GL_NO_ERROR)
             throw Error(fmt::format("the host's geometry left GL error 0x{:04x} in the {} pass", error,
-                                    passName(kind)));
+                                    passName(pass.pass)));
         state.restore(context);
     }
-    glFrontFace(GL_CCW);
 }
 
 } // namespace swell::detail

@@ -47,4 +47,11 @@ void setPassState(glm::ivec4 viewport, const DepthConvention& depth);
 void drawGeometry(RenderContext& context, const PassState& pass, PassKind kind, SceneWorld* own, PassGeometry* host,
                   const View& view);
 
+// The same for a pass whose view the caller made (the contact pass's, from
+// above): Swell's world and the host's drawn with `view`, the host's GL
+// error refused, and the pass's state put back after the host's drawing.
+// The front face is the caller's to set.
+void drawGeometryAs(RenderContext& context, const PassState& pass, const PassView& view, SceneWorld* own,
+                    PassGeometry* host);
+
 } // namespace swell::detail
