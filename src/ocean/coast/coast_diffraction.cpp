@@ -307,10 +307,9 @@ MarchAnswer answerAt(const MarchFrame& f, const MarchResult& r, glm::dvec2 world
     return answer;
 }
 
-// The wet cells the open sea's straight rays reach only across dry land
-// (the geometric shadow), widened by `margin` samples: where the ray
-// solution's energy is its own numerical spreading, not to be trusted.
-std::vector<std::uint8_t> rayTrustOf(const DepthGrid& g, glm::dvec2 direction, int margin)
+// The wet cells the open sea's straight rays reach only across dry land:
+// the geometric shadow.
+std::vector<std::uint8_t> shadowOf(const DepthGrid& g, glm::dvec2 direction)
 {
     const MarchFrame f = frameOf(g, direction);
     const std::size_t columns = std::size_t(f.columns);
@@ -326,8 +325,7 @@ std::vector<std::uint8_t> rayTrustOf(const DepthGrid& g, glm::dvec2 direction, i
             crossed[j] = crossed[j] || !(g.depth_m[nearestSample(f.world(s, int(j)))] > 0.0f);
             shadowed[std::size_t(s) * columns + j] = crossed[j];
         }
-    const std::size_t n = g.depth_m.size();
-    std::vector<std::uint8_t> untrusted(n, 0);
+    std::vector<std::uint8_t> untrusted(g.depth_m.size(), 0);
     for (int j = 0; j < g.size.y; ++j)
         for (int i = 0; i < g.size.x; ++i) {
             const glm::dvec2 u = glm::round(f.local(g.origin_m + g.cell_m * glm::dvec2(i, j)));
@@ -335,6 +333,14 @@ std::vector<std::uint8_t> rayTrustOf(const DepthGrid& g, glm::dvec2 direction, i
             const std::size_t c = std::size_t(j) * std::size_t(g.size.x) + std::size_t(i);
             untrusted[c] = g.depth_m[c] > 0.0f && shadowed[std::size_t(s) * columns + std::size_t(t)];
         }
+    return untrusted;
+}
+
+// The shadow widened by `margin` samples: where the ray solution's energy
+// is its own numerical spreading, not to be trusted.
+std::vector<std::uint8_t> rayTrustOf(const DepthGrid& g, std::vector<std::uint8_t> untrusted, int margin)
+{
+    const std::size_t n = g.depth_m.size();
     // Widen along x, then along z (a square of 2 margin + 1 samples): each
     // sample's distance to the nearest untrusted one along the line, from a
     // sweep each way.
@@ -443,6 +449,7 @@ void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breake
                   MarchScratch& scratch)
 {
     const std::size_t n = depth.depth_m.size();
+    scratch.shadowed.clear();
     if (std::all_of(depth.depth_m.begin(), depth.depth_m.end(), [](float h) { return h > 0.0f; }))
         return; // no obstacle: the ray solution stands
     std::vector<double>& energyLimit = scratch.energyLimit;
@@ -450,7 +457,8 @@ void diffractWave(const DepthGrid& depth, const MarchedWave& wave, double breake
     for (std::size_t c = 0; c < n; ++c)
         energyLimit[c] = breakingEnergyLimit(double(depth.depth_m[c]), wave.amplitude_m, breakerIndex);
     const int margin = std::max(kShadowMargin, int(std::ceil(kTwoPi / wave.wavenumber_radpm / depth.cell_m)));
-    const std::vector<std::uint8_t> rayTrusted = rayTrustOf(depth, wave.direction, margin);
+    scratch.shadowed = shadowOf(depth, wave.direction);
+    const std::vector<std::uint8_t> rayTrusted = rayTrustOf(depth, scratch.shadowed, margin);
     const DepthSampler sampler{depth, march, energyLimit, rayTrusted};
     const double openWavenumber = localWavenumber(wave.omega_radps, depth.outsideDepth_m);
 

@@ -110,7 +110,49 @@ glm::dvec2 phaseGradient(const Grid& g, const WaveMarch& m, int i, int j, glm::d
 
 } // namespace
 
+std::vector<double> localWavenumbers(const DepthGrid& depth, double omega_radps)
+{
+    std::vector<double> k(depth.depth_m.size(), 0.0);
+    for (std::size_t c = 0; c < k.size(); ++c)
+        k[c] = depth.depth_m[c] > 0.0f ? localWavenumber(omega_radps, std::max(double(depth.depth_m[c]), kShallowest_m))
+                                       : 0.0;
+    return k;
+}
+
 WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double breakerIndex, MarchScratch& scratch)
+{
+    const Grid g{depth.size.x, depth.size.y, depth.cell_m};
+    std::vector<double> k = localWavenumbers(depth, wave.omega_radps);
+
+    // The wave enters by the edges it runs into the grid across, as the open
+    // sea's plane wave: where the edge lies in the open sea (as deep as the
+    // sea beyond the grid, or deep enough for this wave not to feel the
+    // bottom, kh >= pi), or, when no cell of those edges does, all along
+    // them. Cells of an entry edge in shallower water are reached from
+    // inside, as rays from the open sea reach them. An entry cell shallower
+    // than the open sea has shoaled on the way (the normal-incidence
+    // shoaling of eq. 4.104, C_g0 / C_g).
+    const double openGroupVelocity = localGroupVelocity(wave.omega_radps, wave.wavenumber_radpm, depth.outsideDepth_m);
+    std::vector<MarchSeed> seeds;
+    const double deepEnough_m = std::min(depth.outsideDepth_m, kPi / wave.wavenumber_radpm);
+    for (int pass = 0; pass < 2 && seeds.empty(); ++pass)
+        for (int j = 0; j < g.nz; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                const bool edge = (i == 0 && wave.direction.x > 0.0) || (i == g.nx - 1 && wave.direction.x < 0.0)
+                                  || (j == 0 && wave.direction.y > 0.0) || (j == g.nz - 1 && wave.direction.y < 0.0);
+                const std::size_t c = g.index(i, j);
+                if (!edge || !(k[c] > 0.0) || (pass == 0 && double(depth.depth_m[c]) < deepEnough_m))
+                    continue;
+                const glm::dvec2 p = depth.origin_m + depth.cell_m * glm::dvec2(i, j);
+                const double h = std::max(double(depth.depth_m[c]), kShallowest_m);
+                seeds.push_back({c, wave.wavenumber_radpm * glm::dot(wave.direction, p),
+                                 openGroupVelocity / localGroupVelocity(wave.omega_radps, k[c], h)});
+            }
+    return marchFromSeeds(depth, wave, std::move(k), seeds, breakerIndex, scratch);
+}
+
+WaveMarch marchFromSeeds(const DepthGrid& depth, const MarchedWave& wave, std::vector<double> k,
+                         const std::vector<MarchSeed>& seeds, double breakerIndex, MarchScratch& scratch)
 {
     const Grid g{depth.size.x, depth.size.y, depth.cell_m};
     const std::size_t n = std::size_t(g.nx) * std::size_t(g.nz);
@@ -119,18 +161,9 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
     m.energy.assign(n, 0.0);
     m.wavenumber_radpm.assign(n, wave.wavenumber_radpm * wave.direction);
     m.reached.assign(n, 0);
-    std::vector<double> k(n, 0.0);
-    for (std::size_t c = 0; c < n; ++c)
-        k[c] = depth.depth_m[c] > 0.0f
-                   ? localWavenumber(wave.omega_radps, std::max(double(depth.depth_m[c]), kShallowest_m))
-                   : 0.0;
+    std::vector<std::size_t>& parent = scratch.parent;
+    parent.assign(n, std::size_t(-1));
 
-    // The wave enters by the edges it runs into the grid across, as the open
-    // sea's plane wave: where the edge lies in the open sea (as deep as the
-    // sea beyond the grid, or deep enough for this wave not to feel the
-    // bottom, kh >= pi), or, when no cell of those edges does, all along
-    // them. Cells of an entry edge in shallower water are reached from
-    // inside, as rays from the open sea reach them.
     // The trial cells: a heap of (phase, cell), the least on top, as
     // std::priority_queue keeps one (the same push_heap and pop_heap), in
     // the scratch's storage.
@@ -143,20 +176,14 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
     };
     std::vector<std::uint8_t>& entry = scratch.entry;
     entry.assign(n, 0);
-    const double deepEnough_m = std::min(depth.outsideDepth_m, kPi / wave.wavenumber_radpm);
-    for (int pass = 0; pass < 2 && trial.empty(); ++pass)
-        for (int j = 0; j < g.nz; ++j)
-            for (int i = 0; i < g.nx; ++i) {
-                const bool edge = (i == 0 && wave.direction.x > 0.0) || (i == g.nx - 1 && wave.direction.x < 0.0)
-                                  || (j == 0 && wave.direction.y > 0.0) || (j == g.nz - 1 && wave.direction.y < 0.0);
-                const std::size_t c = g.index(i, j);
-                if (!edge || !(k[c] > 0.0) || (pass == 0 && double(depth.depth_m[c]) < deepEnough_m))
-                    continue;
-                const glm::dvec2 p = depth.origin_m + depth.cell_m * glm::dvec2(i, j);
-                m.phase_rad[c] = wave.wavenumber_radpm * glm::dot(wave.direction, p);
-                entry[c] = 1;
-                push({m.phase_rad[c], c});
-            }
+    std::vector<double>& seedEnergy = scratch.seedEnergy;
+    seedEnergy.assign(n, 0.0);
+    for (const MarchSeed& seed : seeds) {
+        m.phase_rad[seed.cell] = seed.phase_rad;
+        entry[seed.cell] = 1;
+        seedEnergy[seed.cell] = seed.energy;
+        push({seed.phase_rad, seed.cell});
+    }
 
     std::vector<std::size_t>& order = scratch.order;
     order.clear();
@@ -186,6 +213,16 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
             if (candidate < m.phase_rad[d]) {
                 m.phase_rad[d] = candidate;
                 push({candidate, d});
+                // The accepted neighbour of least phase: where the ray
+                // through d comes from.
+                double least = kInf;
+                for (const auto& back : kNeighbours) {
+                    const int a = i + back[0], b = j + back[1];
+                    if (accepted(a, b) < least) {
+                        least = accepted(a, b);
+                        parent[d] = g.index(a, b);
+                    }
+                }
             }
         }
     }
@@ -197,8 +234,7 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
 
     // The energy, cell by cell in the order of arrival: what flows in across
     // the faces the group velocity crosses inwards leaves across the others
-    // (upwind finite volumes of div(E C_g d) = 0). A cell on an entry edge
-    // takes the open sea's energy, 1.
+    // (upwind finite volumes of div(E C_g d) = 0). A seed takes its own.
     std::vector<glm::dvec2>& velocity = scratch.velocity;
     velocity.assign(n, glm::dvec2(0.0));
     for (std::size_t c : order) {
@@ -207,17 +243,12 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
         const double length = std::sqrt(glm::dot(kv, kv));
         velocity[c] = length > 0.0 ? localGroupVelocity(wave.omega_radps, k[c], h) * kv / length : glm::dvec2(0.0);
     }
-    const double openGroupVelocity = localGroupVelocity(wave.omega_radps, wave.wavenumber_radpm, depth.outsideDepth_m);
     // The energy arriving at cell c of a field marched in the order of
     // arrival.
     auto arriving = [&](const std::vector<double>& field, std::size_t c) {
         const int ci = int(c % std::size_t(g.nx)), cj = int(c / std::size_t(g.nx));
-        // An entry cell shallower than the open sea has shoaled on the way
-        // (the normal-incidence shoaling of eq. 4.104, C_g0 / C_g).
-        if (entry[c]) {
-            const double h = std::max(double(depth.depth_m[c]), kShallowest_m);
-            return openGroupVelocity / localGroupVelocity(wave.omega_radps, k[c], h);
-        }
+        if (entry[c])
+            return seedEnergy[c];
         double in = 0.0, out = 0.0, inflowing = 0.0;
         for (const auto& nb : kNeighbours) {
             const int i = ci + nb[0], j = cj + nb[1];
@@ -244,6 +275,114 @@ WaveMarch marchWave(const DepthGrid& depth, const MarchedWave& wave, double brea
     }
     m.localWavenumber_radpm = std::move(k);
     return m;
+}
+
+} // namespace swell::coast
+
+namespace swell::coast {
+
+void marchWhileAbove(const DepthGrid& depth, const MarchedWave& wave, const std::vector<double>& k,
+                     const std::vector<MarchSeed>& seeds, double leastEnergy, MarchScratch& scratch, WaveMarch& m)
+{
+    const Grid g{depth.size.x, depth.size.y, depth.cell_m};
+    const std::size_t n = std::size_t(g.nx) * std::size_t(g.nz);
+    m.phase_rad.assign(n, kInf);
+    m.energy.assign(n, 0.0);
+    m.wavenumber_radpm.assign(n, wave.wavenumber_radpm * wave.direction);
+    m.reached.assign(n, 0);
+
+    using Entry = std::pair<double, std::size_t>;
+    std::vector<Entry>& trial = scratch.trial;
+    trial.clear();
+    auto push = [&trial](Entry e) {
+        trial.push_back(e);
+        std::push_heap(trial.begin(), trial.end(), std::greater<>{});
+    };
+    std::vector<std::uint8_t>& entry = scratch.entry;
+    entry.assign(n, 0);
+    // A seed's velocity is the way it leaves, set before the march.
+    std::vector<glm::dvec2>& velocity = scratch.velocity;
+    velocity.assign(n, glm::dvec2(0.0));
+    for (const MarchSeed& seed : seeds) {
+        const double h = std::max(double(depth.depth_m[seed.cell]), kShallowest_m);
+        velocity[seed.cell] = localGroupVelocity(wave.omega_radps, k[seed.cell], h) * seed.direction;
+        m.phase_rad[seed.cell] = seed.phase_rad;
+        m.energy[seed.cell] = seed.energy;
+        entry[seed.cell] = 1;
+        push({seed.phase_rad, seed.cell});
+    }
+    std::vector<std::size_t>& order = scratch.order;
+    order.clear();
+    auto accepted = [&](int ai, int aj) {
+        return g.inside(ai, aj) && m.reached[g.index(ai, aj)] ? m.phase_rad[g.index(ai, aj)] : kInf;
+    };
+    while (!trial.empty()) {
+        std::pop_heap(trial.begin(), trial.end(), std::greater<>{});
+        const auto [s, c] = trial.back();
+        trial.pop_back();
+        if (m.reached[c] || s > m.phase_rad[c])
+            continue;
+        m.reached[c] = 1;
+        order.push_back(c);
+        const int ci = int(c % std::size_t(g.nx)), cj = int(c / std::size_t(g.nx));
+        // The gradient from the upwind neighbours, the only ones final now.
+        glm::dvec2 grad(0.0);
+        for (int axis = 0; axis < 2; ++axis) {
+            const int di = axis == 0 ? 1 : 0, dj = axis == 0 ? 0 : 1;
+            const double lo = accepted(ci - di, cj - dj), hi = accepted(ci + di, cj + dj);
+            if (lo <= hi && lo < kInf)
+                grad[axis] = (s - lo) / g.cell;
+            else if (hi < kInf)
+                grad[axis] = (hi - s) / g.cell;
+        }
+        const double length = std::sqrt(glm::dot(grad, grad));
+        const double h = std::max(double(depth.depth_m[c]), kShallowest_m);
+        if (!entry[c] && length > 0.0)
+            velocity[c] = localGroupVelocity(wave.omega_radps, k[c], h) * grad / length;
+        // The energy flux's balance by donor cells: what each accepted
+        // neighbour's own velocity carries in across the face between, and
+        // what this sample's carries out across the faces it points through
+        // (so that over a slope E C_g is held, as eq. 4.104 says).
+        if (!entry[c]) {
+            double in = 0.0, out = 0.0, inflowing = 0.0;
+            for (const auto& nb : kNeighbours) {
+                const int i = ci + nb[0], j = cj + nb[1];
+                const glm::dvec2 normal(nb[0], nb[1]);
+                const double leaving = glm::dot(velocity[c], normal);
+                if (leaving > 0.0)
+                    out += leaving;
+                if (!g.inside(i, j) || !m.reached[g.index(i, j)])
+                    continue;
+                const double arriving = -glm::dot(velocity[g.index(i, j)], normal);
+                if (arriving > 0.0) {
+                    in += arriving * m.energy[g.index(i, j)];
+                    inflowing += arriving;
+                }
+            }
+            m.energy[c] = out > 1e-12 ? in / out : (inflowing > 0.0 ? in / inflowing : 0.0);
+            if (m.energy[c] < leastEnergy)
+                continue; // too low to march on from
+        }
+        for (const auto& nb : kNeighbours) {
+            const int i = ci + nb[0], j = cj + nb[1];
+            if (!g.inside(i, j))
+                continue;
+            const std::size_t d = g.index(i, j);
+            if (m.reached[d] || k[d] <= 0.0)
+                continue;
+            const double alongX = std::min(accepted(i - 1, j), accepted(i + 1, j));
+            const double alongZ = std::min(accepted(i, j - 1), accepted(i, j + 1));
+            const double candidate = upwindPhase(alongX, alongZ, k[d] * g.cell);
+            if (candidate < m.phase_rad[d]) {
+                m.phase_rad[d] = candidate;
+                push({candidate, d});
+            }
+        }
+    }
+    for (std::size_t c : order) {
+        const int i = int(c % std::size_t(g.nx)), j = int(c / std::size_t(g.nx));
+        m.wavenumber_radpm[c] = phaseGradient(g, m, i, j, wave.wavenumber_radpm * wave.direction);
+    }
 }
 
 } // namespace swell::coast

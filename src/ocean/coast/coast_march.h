@@ -60,13 +60,55 @@ struct MarchScratch {
     std::vector<std::size_t> order;
     std::vector<glm::dvec2> velocity;
     std::vector<std::pair<double, std::size_t>> trial; // a heap, the least phase on top
+    std::vector<double> seedEnergy;
+    // marchWave's, for reflectWave: each reached sample's accepted
+    // neighbour of least phase, where its ray comes from (size_t(-1): none).
+    std::vector<std::size_t> parent;
     // diffractWave
     std::vector<double> energyLimit;
     std::vector<double> energy[3];
     std::vector<float> coefficientSquared, carriedEnergy;
     std::vector<std::uint8_t> wet;
+    // diffractWave, for reflectWave: the wet samples the open sea's straight
+    // rays reach only across dry land (empty: no dry land).
+    std::vector<std::uint8_t> shadowed;
+    // reflectWave
+    WaveMarch reflected;
+    std::vector<int> seedOf, faceAtEdge;
+    std::vector<std::size_t> edgeOf;
 };
 
 WaveMarch marchWave(const DepthGrid& grid, const MarchedWave& wave, double breakerIndex, MarchScratch& scratch);
+
+// k(h) of every sample for a wave of angular frequency omega_radps; 0 on dry land.
+std::vector<double> localWavenumbers(const DepthGrid& grid, double omega_radps);
+
+// Where a march starts: a wet sample, its phase and its energy.
+struct MarchSeed {
+    std::size_t cell = 0;
+    double phase_rad = 0.0;
+    double energy = 0.0;
+    glm::dvec2 direction{0.0}; // the way it leaves (marchWhileAbove's; marchFromSeeds finds it from the phase)
+};
+
+// The march of marchWave from any seeds (the edges the open sea enters by), over the local wavenumbers k: the
+// first arrival's phase from the seeds, and the energy carried from them
+// along its gradient, cut at the breaking height (its `unbroken` holds no
+// cut). Each reached sample's accepted neighbour of least phase is left in
+// scratch.parent.
+WaveMarch marchFromSeeds(const DepthGrid& grid, const MarchedWave& wave, std::vector<double> k,
+                         const std::vector<MarchSeed>& seeds, double breakerIndex, MarchScratch& scratch);
+
+// The march of a reflected wave from the faces it leaves (coast_reflection.h):
+// marchFromSeeds's phase and carried energy (no breaking cut; no
+// `unbroken`), the energy found as each sample is accepted, from its
+// upwind neighbours alone, and no march on from a sample whose energy is
+// under leastEnergy, so that a reflected wave is marched where it has some
+// height, not over the whole grid. The samples it does not march on from
+// are reached; those beyond them not. Into `march` (its phase, energy,
+// wavenumber and reached).
+void marchWhileAbove(const DepthGrid& grid, const MarchedWave& wave, const std::vector<double>& k,
+                     const std::vector<MarchSeed>& seeds, double leastEnergy, MarchScratch& scratch,
+                     WaveMarch& march);
 
 } // namespace swell::coast
