@@ -28,11 +28,19 @@
 //   Kirby's 1986 wide-angle Pade operator), dry land a rigid side wall, read
 //   where the straight rays from the open sea cross land and within a
 //   wavelength of that shadow; elsewhere the ray solution's height times the
-//   march's diffraction coefficient (the fringes beside a shadow's edge).
-// What it cannot do: reflection from breakwaters, steep shores and walls
-// (so a rigid breakwater's lee, where the reflected wave diffracts in too,
-// is up to a third lower 60 degrees into the shadow than Penney & Price's
-// diagrams; the solution without the reflected wave is held within 25%),
+//   march's diffraction coefficient (the fringes beside a shadow's edge);
+// - steep faces (breakwaters, walls, cliffs) send part of the wave back:
+//   R = xi^2 / (5.5 + xi^2) of a smooth slope (Seelig & Ahrens 1981; the
+//   surf similarity xi, Battjes 1974; a vertical wall 1, a gentle beach
+//   under 0.1 and nothing), the reflected wave marched out from the faces
+//   by the same eikonal and summed with the incident one as complex
+//   amplitudes into the same texels (a clapotis before a wall: the phase
+//   turns by half a wave across a node, where the height is small); in a
+//   shadow its share of what diffracts round the edge is Penney & Price's
+//   (1952) far-field ratio, so a rigid breakwater's lee holds their
+//   solution with R = 1 within 25%.
+// What it cannot do: a wave reflected twice, a reflected wave higher than
+// the incident one, a face's material (R is a smooth impermeable slope's),
 // refraction and shoaling inside a shadow (the march carries the diffracted
 // wave at its height, cut only by breaking), more than one arrival where
 // rays cross (the first arrival's phase wins, also in a lee, where the
