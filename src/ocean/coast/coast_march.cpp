@@ -339,43 +339,57 @@ void marchWhileAbove(const DepthGrid& depth, const MarchedWave& wave, const std:
         const double h = std::max(double(depth.depth_m[c]), kShallowest_m);
         if (!entry[c] && length > 0.0)
             velocity[c] = localGroupVelocity(wave.omega_radps, k[c], h) * grad / length;
-        // The energy flux's balance by donor cells: what each accepted
-        // neighbour's own velocity carries in across the face between, and
-        // what this sample's carries out across the faces it points through
-        // (so that over a slope E C_g is held, as eq. 4.104 says).
+        // The phase each wet neighbour not yet accepted would take from
+        // here, as the march's update gives it.
+        double candidate[4];
+        for (int b = 0; b < 4; ++b) {
+            const int i = ci + kNeighbours[b][0], j = cj + kNeighbours[b][1];
+            candidate[b] = kInf;
+            if (!g.inside(i, j) || m.reached[g.index(i, j)] || k[g.index(i, j)] <= 0.0)
+                continue;
+            const double alongX = std::min(accepted(i - 1, j), accepted(i + 1, j));
+            const double alongZ = std::min(accepted(i, j - 1), accepted(i, j + 1));
+            candidate[b] = std::min(m.phase_rad[g.index(i, j)], upwindPhase(alongX, alongZ, k[g.index(i, j)] * g.cell));
+        }
+        // The energy flux's balance by donor cells, each face's share of
+        // the flux the phase's rise across it over the rise a full step
+        // along the rays makes there (the cosine of the rays' angle to the
+        // face's normal): in, the accepted neighbours' energy at their own
+        // group velocity; out, this sample's at its own, also sideways where
+        // the rays spread (a corner's cylindrical wave thins as it goes),
+        // and onto dry land along its upwind gradient, spent there. Over a
+        // slope at normal incidence E C_g is held, as eq. 4.104 says.
         if (!entry[c]) {
+            const double speed = std::sqrt(glm::dot(velocity[c], velocity[c]));
             double in = 0.0, out = 0.0, inflowing = 0.0;
-            for (const auto& nb : kNeighbours) {
-                const int i = ci + nb[0], j = cj + nb[1];
-                const glm::dvec2 normal(nb[0], nb[1]);
-                const double leaving = glm::dot(velocity[c], normal);
-                if (leaving > 0.0)
-                    out += leaving;
-                if (!g.inside(i, j) || !m.reached[g.index(i, j)])
+            for (int b = 0; b < 4; ++b) {
+                const int i = ci + kNeighbours[b][0], j = cj + kNeighbours[b][1];
+                const glm::dvec2 normal(kNeighbours[b][0], kNeighbours[b][1]);
+                if (!g.inside(i, j) || k[g.index(i, j)] <= 0.0) {
+                    out += std::max(0.0, glm::dot(velocity[c], normal));
                     continue;
-                const double arriving = -glm::dot(velocity[g.index(i, j)], normal);
-                if (arriving > 0.0) {
-                    in += arriving * m.energy[g.index(i, j)];
-                    inflowing += arriving;
+                }
+                const std::size_t d = g.index(i, j);
+                if (m.reached[d]) {
+                    const double share = std::min(1.0, (s - m.phase_rad[d]) / (k[c] * g.cell));
+                    if (share > 0.0) {
+                        const double flux = share * std::sqrt(glm::dot(velocity[d], velocity[d]));
+                        in += flux * m.energy[d];
+                        inflowing += flux;
+                    }
+                } else if (candidate[b] < kInf) {
+                    out += speed * std::clamp((candidate[b] - s) / (k[d] * g.cell), 0.0, 1.0);
                 }
             }
             m.energy[c] = out > 1e-12 ? in / out : (inflowing > 0.0 ? in / inflowing : 0.0);
             if (m.energy[c] < leastEnergy)
                 continue; // too low to march on from
         }
-        for (const auto& nb : kNeighbours) {
-            const int i = ci + nb[0], j = cj + nb[1];
-            if (!g.inside(i, j))
-                continue;
-            const std::size_t d = g.index(i, j);
-            if (m.reached[d] || k[d] <= 0.0)
-                continue;
-            const double alongX = std::min(accepted(i - 1, j), accepted(i + 1, j));
-            const double alongZ = std::min(accepted(i, j - 1), accepted(i, j + 1));
-            const double candidate = upwindPhase(alongX, alongZ, k[d] * g.cell);
-            if (candidate < m.phase_rad[d]) {
-                m.phase_rad[d] = candidate;
-                push({candidate, d});
+        for (int b = 0; b < 4; ++b) {
+            const int i = ci + kNeighbours[b][0], j = cj + kNeighbours[b][1];
+            if (candidate[b] < kInf && candidate[b] < m.phase_rad[g.index(i, j)]) {
+                m.phase_rad[g.index(i, j)] = candidate[b];
+                push({candidate[b], g.index(i, j)});
             }
         }
     }
