@@ -88,22 +88,23 @@ struct MarchSeed {
     std::size_t cell = 0;
     double phase_rad = 0.0;
     double energy = 0.0;
-    glm::dvec2 direction{0.0}; // the way it leaves (marchWhileAbove's; marchFromSeeds finds it from the phase)
+    glm::dvec2 direction{0.0}; // unit, the way it leaves: marchWhileAbove's (marchFromSeeds takes the phase's gradient)
 };
 
-// The march of marchWave from any seeds (the edges the open sea enters by), over the local wavenumbers k: the
-// first arrival's phase from the seeds, and the energy carried from them
-// along its gradient, cut at the breaking height (its `unbroken` holds no
-// cut). Each reached sample's accepted neighbour of least phase is left in
-// scratch.parent.
+// marchWave's march from its seeds (the samples of the edges the open sea
+// enters by), over the local wavenumbers k: the first arrival's phase from
+// the seeds, and the energy carried from them along its gradient, cut at
+// the breaking height (its `unbroken` holds no cut). Each reached sample's
+// accepted neighbour of least phase is left in scratch.parent.
 WaveMarch marchFromSeeds(const DepthGrid& grid, const MarchedWave& wave, std::vector<double> k,
                          const std::vector<MarchSeed>& seeds, double breakerIndex, MarchScratch& scratch);
 
 // The march of a reflected wave from the faces it leaves (coast_reflection.h):
 // marchFromSeeds's phase and carried energy (no breaking cut; no
-// `unbroken`), the energy found as each sample is accepted, from its
-// upwind neighbours alone, and no march on from a sample whose energy is
-// under leastEnergy, so that a reflected wave is marched where it has some
+// `unbroken`), the energy found as each sample is accepted (donor cells:
+// in from its accepted neighbours, out to the others in the share of the
+// phase's rise across each face), and no march on from a sample whose
+// energy is under leastEnergy, so that a reflected wave is marched where it has some
 // height, not over the whole grid. The samples it does not march on from
 // are reached; those beyond them not. Into `march` (its phase, energy,
 // wavenumber and reached).
