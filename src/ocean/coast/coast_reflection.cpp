@@ -235,14 +235,17 @@ void reflectWave(const DepthGrid& depth, const MarchedWave& wave, double seaHeig
         // rays make the shadow; a point nearer the reflected wave's
         // direction than that (no half-plane's lee: a face that sends its
         // wave on into the shadow) takes the reflected wave as marched.
-        const std::size_t edge = shadowed[c] ? edgeOfSample(c) : kNone;
-        const Face face = edge < n ? faceAround(edge) : Face{};
-        const double kLength = std::sqrt(glm::dot(ki, ki));
-        const glm::dvec2 u = kLength > 0.0 ? ki / kLength : wave.direction;
-        const double fromIncident = std::sin(0.5 * angleBetween(u, wave.direction));
-        const double fromReflected = std::sin(0.5 * angleBetween(u, face.reflected));
-        if (face.reflection > 0.0 && fromReflected > fromIncident) {
-            const double share = face.reflection * fromIncident / fromReflected;
+        double share = -1.0; // none: the reflected wave as marched
+        if (const std::size_t edge = shadowed[c] ? edgeOfSample(c) : kNone; edge < n) {
+            const Face face = faceAround(edge);
+            const double kLength = std::sqrt(glm::dot(ki, ki));
+            const glm::dvec2 u = kLength > 0.0 ? ki / kLength : wave.direction;
+            const double fromIncident = std::sin(0.5 * angleBetween(u, wave.direction));
+            const double fromReflected = std::sin(0.5 * angleBetween(u, face.reflected));
+            if (face.reflection > 0.0 && fromReflected > fromIncident)
+                share = face.reflection * fromIncident / fromReflected;
+        }
+        if (share >= 0.0) {
             energy = incidentEnergy * (1.0 + share) * (1.0 + share);
         } else {
             if (!reflected.reached[c] || !(reflected.energy[c] > 0.0))
