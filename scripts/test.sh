@@ -24,6 +24,10 @@ built=$((SECONDS - start))
 cd "${SWELL_BUILD_DIR:-$root/build}"
 # The slowest tests first (a fresh build has no timings of its own).
 "$root/scripts/seed-test-costs.sh" . "$costs"
+# What scenes derive at a cost (the coast field, the breaking ramps) solved
+# once for the build and read back by every other test process
+# (docs/LIBRARY.md, "The cache of derived data"; docs/TESTING.md, "CI").
+export SWELL_CACHE_DIR=${SWELL_CACHE_DIR-$PWD/derived-cache}
 start=$SECONDS
 rc=0
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600 || rc=$?
