@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
@@ -100,7 +101,12 @@ fs::path entryPath(const fs::path& folder, std::string_view kind, std::span<cons
     return folder / fmt::format("{}-{:016x}{:016x}.bin", kind, fnv1a64(header), fnv1a64(header, kSecondSeed));
 }
 
-std::optional<std::vector<std::byte>> readFile(const fs::path& path)
+struct FileBytes {
+    std::unique_ptr<std::byte[]> bytes;
+    std::size_t size = 0;
+};
+
+std::optional<FileBytes> readFile(const fs::path& path)
 {
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in)
@@ -108,11 +114,11 @@ std::optional<std::vector<std::byte>> readFile(const fs::path& path)
     const std::streamoff size = in.tellg();
     if (size < 0)
         return std::nullopt;
-    std::vector<std::byte> bytes(static_cast<std::size_t>(size));
+    FileBytes file{std::make_unique_for_overwrite<std::byte[]>(static_cast<std::size_t>(size)), static_cast<std::size_t>(size)};
     in.seekg(0);
-    if (!in.read(reinterpret_cast<char*>(bytes.data()), size))
+    if (!in.read(reinterpret_cast<char*>(file.bytes.get()), size))
         return std::nullopt;
-    return bytes;
+    return file;
 }
 
 // Removes the least recently used entries (by modification time, which a
@@ -161,32 +167,46 @@ std::uint64_t fnv1a64(std::span<const std::byte> bytes, std::uint64_t seed)
     return h;
 }
 
-std::optional<std::vector<std::byte>> loadDerived(std::string_view kind, std::span<const std::byte> key)
+std::optional<DerivedEntry> loadDerived(std::string_view kind, std::span<const std::byte> key)
 {
     const fs::path folder = cacheFolder();
     if (folder.empty())
         return std::nullopt;
     const std::vector<std::byte> header = headerOf(kind, key);
     const fs::path path = entryPath(folder, kind, header);
-    std::optional<std::vector<std::byte>> file = readFile(path);
+    std::optional<FileBytes> file = readFile(path);
     // header, payload size, payload, checksum of all before it.
-    constexpr std::size_t kTail = sizeof(std::uint64_t);
-    if (!file || file->size() < header.size() + 2 * kTail
-        || !std::equal(header.begin(), header.end(), file->begin()))
+    constexpr std::size_t kWord = sizeof(std::uint64_t);
+    if (!file || file->size < header.size() + 2 * kWord)
         return std::nullopt;
-    CacheReader tail(std::span<const std::byte>(*file).last(kTail));
-    const std::span<const std::byte> body = std::span<const std::byte>(*file).first(file->size() - kTail);
-    if (tail.get<std::uint64_t>() != fnv1a64(body))
+    const std::span<const std::byte> all(file->bytes.get(), file->size);
+    const std::span<const std::byte> body = all.first(all.size() - kWord);
+    if (!std::equal(header.begin(), header.end(), body.begin())
+        || CacheReader(all.last(kWord)).get<std::uint64_t>() != wordChecksum(body))
         return std::nullopt;
-    CacheReader reader(body.subspan(header.size()));
-    std::vector<std::byte> payload = reader.getVector<std::byte>(body.size());
-    if (!reader.ok())
+    CacheReader sizeOf(body.subspan(header.size(), kWord));
+    const auto payloadSize = sizeOf.get<std::uint64_t>();
+    if (payloadSize != body.size() - header.size() - kWord)
         return std::nullopt;
     // Renewed, so the bound removes the entries not used for longest.
     std::error_code ignored;
     fs::last_write_time(path, fs::file_time_type::clock::now(), ignored);
     ++hits;
-    return payload;
+    return DerivedEntry(std::move(file->bytes), header.size() + kWord, payloadSize);
+}
+
+std::uint64_t wordChecksum(std::span<const std::byte> bytes)
+{
+    std::uint64_t h = 1469598103934665603ull;
+    std::size_t at = 0;
+    for (; at + 8 <= bytes.size(); at += 8) {
+        std::uint64_t word;
+        std::memcpy(&word, bytes.data() + at, 8);
+        h = (h ^ word) * 1099511628211ull;
+    }
+    std::uint64_t last = 0;
+    std::memcpy(&last, bytes.data() + at, bytes.size() - at);
+    return (h ^ last ^ (std::uint64_t(bytes.size()) << 56)) * 1099511628211ull;
 }
 
 std::uint64_t derivedCacheHits() { return hits.load(); }
@@ -201,13 +221,16 @@ void storeDerived(std::string_view kind, std::span<const std::byte> key, std::sp
     if (ec)
         return;
     const std::vector<std::byte> header = headerOf(kind, key);
-    std::vector<std::byte> file(header);
-    CacheBytes rest;
-    rest.addSpan(payload);
-    file.insert(file.end(), rest.bytes().begin(), rest.bytes().end());
-    const std::uint64_t checksum = fnv1a64(file);
-    const auto* c = reinterpret_cast<const std::byte*>(&checksum);
-    file.insert(file.end(), c, c + sizeof checksum);
+    // As loadDerived reads it: header, payload size, payload, checksum.
+    std::vector<std::byte> file;
+    file.reserve(header.size() + payload.size() + 2 * sizeof(std::uint64_t));
+    auto append = [&file](std::span<const std::byte> b) { file.insert(file.end(), b.begin(), b.end()); };
+    const std::uint64_t payloadSize = payload.size();
+    append(header);
+    append(std::as_bytes(std::span(&payloadSize, 1)));
+    append(payload);
+    const std::uint64_t checksum = wordChecksum(file);
+    append(std::as_bytes(std::span(&checksum, 1)));
 
     const fs::path path = entryPath(folder, kind, header);
     static std::mutex mutex; // one temporary name per process at a time

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -90,10 +91,29 @@ private:
 
 // FNV-1a, 64 bits, from `seed` (two seeds give the 128-bit keys).
 std::uint64_t fnv1a64(std::span<const std::byte> bytes, std::uint64_t seed = 1469598103934665603ull);
+// An entry's checksum: FNV-1a's step on 8 bytes at a time (eight times
+// fewer multiplies than fnv1a64; each step is a bijection of the state, so
+// any one word changed changes the sum), the last bytes zero-padded.
+std::uint64_t wordChecksum(std::span<const std::byte> bytes);
+
+// An entry read back: the file's bytes, read into memory not zeroed first
+// (the island's field is 28 MB), and where its payload lies in them.
+class DerivedEntry {
+public:
+    DerivedEntry(std::unique_ptr<std::byte[]> file, std::size_t payloadAt, std::size_t payloadSize)
+        : file_(std::move(file)), at_(payloadAt), size_(payloadSize)
+    {
+    }
+    std::span<const std::byte> payload() const { return {file_.get() + at_, size_}; }
+
+private:
+    std::unique_ptr<std::byte[]> file_;
+    std::size_t at_, size_;
+};
 
 // The entry of `kind` ("coast", "ramps") whose key is `key`, if the cache
 // is on and holds a sound one of this build.
-std::optional<std::vector<std::byte>> loadDerived(std::string_view kind, std::span<const std::byte> key);
+std::optional<DerivedEntry> loadDerived(std::string_view kind, std::span<const std::byte> key);
 // Keeps `payload` under `key`; does nothing when the cache is off or its
 // folder cannot be written.
 void storeDerived(std::string_view kind, std::span<const std::byte> key, std::span<const std::byte> payload);

@@ -87,8 +87,8 @@ namespace coast {
 std::shared_ptr<const CoastField> solvedOrCachedField(const WaveSet& waves, DepthGrid grid)
 {
     const detail::CacheBytes key = detail::CoastFieldBytes::keyOf(waves, grid, kBreakerIndex);
-    if (const auto bytes = detail::loadDerived("coast", key.bytes()))
-        if (auto field = detail::CoastFieldBytes::fieldOf(*bytes, waves, grid))
+    if (const auto entry = detail::loadDerived("coast", key.bytes()))
+        if (auto field = detail::CoastFieldBytes::fieldOf(entry->payload(), waves, grid))
             return field;
     auto field = std::make_shared<const CoastField>(waves, std::move(grid));
     detail::storeDerived("coast", key.bytes(), detail::CoastFieldBytes::texelsOf(*field).bytes());

@@ -125,8 +125,8 @@ BreakingRamps calibratedBreakingRamps(std::shared_ptr<const SpectralField> field
             return it->second;
     }
     BreakingRamps ramps;
-    if (const auto bytes = detail::loadDerived("ramps", diskKeyBytes); bytes && bytes->size() == sizeof ramps) {
-        std::memcpy(&ramps, bytes->data(), sizeof ramps);
+    if (const auto entry = detail::loadDerived("ramps", diskKeyBytes); entry && entry->payload().size() == sizeof ramps) {
+        std::memcpy(&ramps, entry->payload().data(), sizeof ramps);
     } else {
         ramps = findRamps(std::move(field), windSpeed10_mps);
         detail::storeDerived("ramps", diskKeyBytes, std::as_bytes(std::span(&ramps, 1)));
