@@ -24,6 +24,12 @@ built=$((SECONDS - start))
 cd "${SWELL_BUILD_DIR:-$root/build}"
 # The slowest tests first (a fresh build has no timings of its own).
 "$root/scripts/seed-test-costs.sh" . "$costs"
+# What scenes derive at a cost (the coast field, the breaking ramps) solved
+# once for the build and read back by every other test process
+# (docs/LIBRARY.md, "The cache of derived data"; docs/TESTING.md, "CI").
+# 4 GB: the suite's distinct fields (26 MB each over the island) would churn
+# through the default 512 MB, the soak's cycle of them among the first.
+export SWELL_CACHE_DIR=${SWELL_CACHE_DIR-$PWD/derived-cache} SWELL_CACHE_MAX_MB=${SWELL_CACHE_MAX_MB-4096}
 start=$SECONDS
 rc=0
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600 || rc=$?

@@ -1,5 +1,6 @@
 #include "data_folders.h"
 
+#include <cstdlib>
 #include <system_error>
 
 namespace swell::app {
@@ -28,6 +29,21 @@ DataFolders dataFolders()
         return {share / "scenes", share / "models", share / "shaders", share / "include", true};
     const fs::path source = SWELL_SOURCE_DIR;
     return {source / "scenes", source / "assets" / "models", source / "shaders", source / "include", false};
+}
+
+void nameTheDerivedDataCache()
+{
+    if (std::getenv("SWELL_CACHE_DIR") != nullptr)
+        return;
+    fs::path folder;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg == '/')
+        folder = fs::path(xdg) / "swell";
+    else if (const char* home = std::getenv("HOME"); home != nullptr && *home == '/')
+        folder = fs::path(home) / ".cache" / "swell";
+    else
+        return;
+    // Before any thread reads the environment: the first thing main() does.
+    ::setenv("SWELL_CACHE_DIR", folder.c_str(), 0);
 }
 
 } // namespace swell::app

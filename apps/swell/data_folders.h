@@ -23,4 +23,11 @@ struct DataFolders {
 
 DataFolders dataFolders();
 
+// The executable keeps what scenes derive at a cost (the coast field's
+// solve, the breaking ramps) on disk, in $XDG_CACHE_HOME/swell or
+// ~/.cache/swell (docs/LIBRARY.md, "The cache of derived data"): sets the
+// library's SWELL_CACHE_DIR to it unless the environment already sets it
+// (an empty value turns the cache off).
+void nameTheDerivedDataCache();
+
 } // namespace swell::app

@@ -133,6 +133,7 @@ constexpr const char* kSceneHelp =
 
 int main(int argc, char** argv)
 {
+    swell::app::nameTheDerivedDataCache();
     CLI::App app{"Swell: a real-time ocean renderer.\n"
                  "With no subcommand: a window on the default scene when a display is usable,\n"
                  "otherwise a headless render of it to swell-default.png."};

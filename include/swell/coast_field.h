@@ -117,6 +117,9 @@ struct CoastTrainDepths {
 };
 
 class CoastField;
+namespace detail {
+struct CoastFieldBytes;
+}
 
 // The trains' share b of the band at world point (x, z): 1 - smoothstep
 // between the two depths of the field's bilinear depth there, times how far
@@ -165,6 +168,11 @@ public:
     double inside(glm::dvec2 world_m) const;
 
 private:
+    // The cache on disk of derived data keeps the solved texels and gives
+    // a field back from them (src/ocean/coast/coast_cache.cpp).
+    friend struct detail::CoastFieldBytes;
+    CoastField() = default;
+
     DepthGrid depth_;
     std::vector<std::vector<glm::vec4>> layers_;
     std::vector<int> layerOfWave_;

@@ -1,6 +1,8 @@
 // The scene's depth grid for the coast field (coast_grid.h).
 #include "ocean/coast/coast_grid.h"
 
+#include "ocean/coast/coast_cache.h"
+
 #include "swell/scene/seabed.h"
 #include "swell/scene/waves.h"
 
@@ -38,7 +40,7 @@ std::shared_ptr<const CoastField> keptFieldOf(const WaveSet& waves, DepthGrid gr
             if (sameWaves(e.waves, waves) && sameGrid(e.field->depth(), grid))
                 return e.field;
     }
-    auto field = std::make_shared<const CoastField>(waves, std::move(grid));
+    auto field = solvedOrCachedField(waves, std::move(grid));
     const std::lock_guard lock(mutex);
     kept.push_front({waves, field});
     if (kept.size() > kKept)

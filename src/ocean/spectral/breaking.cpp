@@ -1,5 +1,7 @@
 #include "ocean/spectral/breaking.h"
 
+#include "core/derived_cache.h"
+
 #include "ocean/foam/foam_texture.h"
 #include "ocean/spectral/foam_replay.h"
 #include "ocean/spectral/whitecaps.h"
@@ -8,34 +10,31 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <mutex>
+#include <span>
 #include <vector>
 
 namespace swell::spectral {
 
 namespace {
 
-// A fingerprint of what the breaking depends on: the folding cascades'
-// seeded amplitudes, their patches and the choppiness (FNV-1a over the
-// bytes), and the wind that sets the cover asked for.
-std::uint64_t fingerprint(const SpectralField& field, double windSpeed10_mps)
+// What the breaking depends on: the folding cascades' seeded amplitudes,
+// their patches, warps and the choppiness, and the wind that sets the cover
+// asked for.
+detail::CacheBytes breakingInputsOf(const SpectralField& field, double windSpeed10_mps)
 {
-    std::uint64_t h = 1469598103934665603ull;
-    auto add = [&h](const void* data, size_t bytes) {
-        const auto* b = static_cast<const unsigned char*>(data);
-        for (size_t i = 0; i < bytes; ++i)
-            h = (h ^ b[i]) * 1099511628211ull;
-    };
+    detail::CacheBytes inputs;
     for (int c = 0; c < kFoamCascades; ++c) {
-        add(field.h0[size_t(c)].data(), field.h0[size_t(c)].size() * sizeof(field.h0[size_t(c)][0]));
-        add(&field.cascades[size_t(c)].patch_m, sizeof(double));
-        add(&field.warps[size_t(c)], sizeof(field.warps[size_t(c)]));
+        inputs.addSpan(std::span(field.h0[size_t(c)]));
+        inputs.add(field.cascades[size_t(c)].patch_m);
+        inputs.add(field.warps[size_t(c)]);
     }
-    add(&field.choppiness, sizeof(double));
-    add(&windSpeed10_mps, sizeof(double));
-    return h;
+    inputs.add(field.choppiness);
+    inputs.add(windSpeed10_mps);
+    return inputs;
 }
 
 // Each texel's lowest score over all the steps (NaN scores, which make no
@@ -110,16 +109,28 @@ BreakingRamps findRamps(std::shared_ptr<const SpectralField> field, double windS
 BreakingRamps calibratedBreakingRamps(std::shared_ptr<const SpectralField> field, double windSpeed10_mps)
 {
     // A scene is often built again with the same sea (the viewer's edits of
-    // other keys, tests, a sweep's frames): the ramps found once serve it.
+    // other keys, tests, a sweep's frames): the ramps found once serve it,
+    // in this process and, through the cache on disk, in the next.
     static std::mutex mutex;
     static std::map<std::uint64_t, BreakingRamps> found;
-    const std::uint64_t key = fingerprint(*field, windSpeed10_mps);
+    const detail::CacheBytes inputs = breakingInputsOf(*field, windSpeed10_mps);
+    // The inputs are megabytes of spectra: the disk's key is their 128-bit
+    // hash (two FNV-1a seeds), the process's its first half.
+    const std::uint64_t key = detail::fnv1a64(inputs.bytes());
+    const std::array<std::uint64_t, 2> diskKey{key, detail::fnv1a64(inputs.bytes(), 0x9e3779b97f4a7c15ull)};
+    const auto diskKeyBytes = std::as_bytes(std::span(diskKey));
     {
         const std::lock_guard<std::mutex> lock(mutex);
         if (const auto it = found.find(key); it != found.end())
             return it->second;
     }
-    const BreakingRamps ramps = findRamps(std::move(field), windSpeed10_mps);
+    BreakingRamps ramps;
+    if (const auto entry = detail::loadDerived("ramps", diskKeyBytes); entry && entry->payload().size() == sizeof ramps) {
+        std::memcpy(&ramps, entry->payload().data(), sizeof ramps);
+    } else {
+        ramps = findRamps(std::move(field), windSpeed10_mps);
+        detail::storeDerived("ramps", diskKeyBytes, std::as_bytes(std::span(&ramps, 1)));
+    }
     const std::lock_guard<std::mutex> lock(mutex);
     if (found.size() >= 64)
         found.clear();
