@@ -257,10 +257,15 @@ void reflectWave(const DepthGrid& depth, const MarchedWave& wave, double seaHeig
             // wrap (where it would be higher, a lee the incident wave
             // hardly reaches, it is cut).
             // Where the march stops (kLeastReflectedEnergy) the reflected
-            // wave fades in over twice the least height, not at once.
+            // wave fades in over twice the least height, not at once. In
+            // the surf, where the incident wave breaks, it does not stand:
+            // it is held to the share of its height the breaking left the
+            // incident one (R, the heights' ratio seaward of the face, has
+            // counted what the breaking takes).
             const double least = std::sqrt(kLeastReflectedEnergy), height = std::sqrt(reflected.energy[c]);
             const double ai = std::sqrt(incidentEnergy);
-            const double ar = std::min(height * smoothstep01((height - least) / least), ai);
+            const double unbroken = march.unbroken[c] > incidentEnergy ? std::sqrt(incidentEnergy / march.unbroken[c]) : 1.0;
+            const double ar = std::min(height * smoothstep01((height - least) / least) * unbroken, ai);
             const Complex rotation = std::polar(1.0, reflected.phase_rad[c] - march.phase_rad[c]);
             const Complex sum = ai + ar * rotation;
             energy = std::norm(sum);
