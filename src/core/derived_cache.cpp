@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstring>
 #include <atomic>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -30,8 +30,8 @@ constexpr double kDefaultBound_mb = 512.0;
 
 std::atomic<std::uint64_t> hits{0};
 
-// Where the file holding `symbol` (or, when null, this code) lies, as the
-// identity of its build: device, inode, size and modification time change
+// The file holding the code or data at `address`, as the identity of its
+// build: its path, device, inode, size and modification time, which change
 // whenever it is built or installed again. Empty when it cannot be found.
 std::string fileIdentityOf(const void* address)
 {

@@ -94,12 +94,11 @@ bool worldUnderMap(const FrameUniforms& f, const CausticsUniforms& map, const st
 bool causticsWanted(RenderContext& context, const ViewFrame& v, bool ownWorld)
 {
     Resources& resources = context.resources;
-    // The world's boxes in worldBoxes()' order: the island's, then each object's.
-    std::vector<bool> floating;
-    if (resources.world.island.indexCount() > 0)
-        floating.push_back(false);
-    for (const SceneObject& o : context.simulation.seaScene().objects)
-        floating.push_back(o.floats);
+    // A list of its own here once left out the sea floor's box, so the
+    // floor of a scene without the island whose first object floats was
+    // taken for a floating hull: no map was drawn, and the floor read it
+    // empty, dark within 24 m of the eye (CausticsShallows).
+    const std::vector<bool> floating = worldBoxesThatFloat(resources.world, context.simulation.seaScene());
     // Seen from under the water, the caustics on anything there (a hull's
     // underside included) are in full view.
     const bool wanted =

@@ -103,4 +103,17 @@ int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, g
     return count <= SWELL_MAX_WORLD_BOXES ? count : -1;
 }
 
+std::vector<bool> worldBoxesThatFloat(const World& world, const Scene& scene)
+{
+    // worldBoxes()' order: the island, the sea floor, then each object.
+    std::vector<bool> floating;
+    if (world.island.indexCount() > 0)
+        floating.push_back(false);
+    if (world.seabed.indexCount() > 0)
+        floating.push_back(false);
+    for (size_t i = 0; i < world.meshes.size() && i < scene.objects.size(); ++i)
+        floating.push_back(scene.objects[i].floats);
+    return floating;
+}
+
 } // namespace swell::detail

@@ -66,5 +66,8 @@ World buildWorld(const Scene& scene, const SceneAssets& assets);
 // `poses` are this frame's objectPoses(): rigid bodies are boxed where they are.
 int worldBoxes(const World& world, const Scene& scene, const WaveReach& reach, glm::dvec3 origin,
                const std::vector<glm::dmat4>& poses, WorldBoxUniform* boxes);
+// Which of worldBoxes()' boxes, in its order, bound an object that rides
+// the water (the island's and the sea floor's stay put).
+std::vector<bool> worldBoxesThatFloat(const World& world, const Scene& scene);
 
 } // namespace swell::detail
