@@ -1,5 +1,6 @@
 #include "render/view_frame.h"
 
+#include "core/grid_tiles.h"
 #include "ocean/coast/swash.h"
 #include "render/frame_uniforms.h"
 #include "render/waterline.h"
@@ -90,6 +91,22 @@ bool worldUnderMap(const FrameUniforms& f, const CausticsUniforms& map, const st
     return false;
 }
 
+// Whether the water over the caustics map's square shows in the view. From
+// the air, what the map lights under the water is seen through the surface,
+// and a ray refracted there keeps its way across (a wave's slope turns it by
+// far less than the pad): a floor under the map shows only through the
+// surface over it. A view from 60 m up, whose nearest water lies 50 m off
+// (the harbour preset's), sees none of the map's 48 m square, and its
+// frames need no map.
+bool waterOverMapInView(const ViewFrame& v, const CausticsUniforms& map, const WaveReach& reach)
+{
+    constexpr double kPad_m = 2.0;
+    const glm::dvec2 lo = glm::dvec2(map.mapCorner_m) - kPad_m;
+    const glm::dvec2 hi = glm::dvec2(map.mapCorner_m) + double(map.mapSize_m) + kPad_m;
+    const Bounds box{{lo.x, -reach.vertical_m - kPad_m, lo.y}, {hi.x, reach.vertical_m + kPad_m, hi.y}};
+    return frustumContains(frustumPlanes(v.viewProj, v.depth.zeroToOne()), box) != Containment::Outside;
+}
+
 // Whether the caustics map is worth drawing for the view (prepareViewMaps).
 bool causticsWanted(RenderContext& context, const ViewFrame& v, bool ownWorld)
 {
@@ -101,8 +118,9 @@ bool causticsWanted(RenderContext& context, const ViewFrame& v, bool ownWorld)
     const std::vector<bool> floating = worldBoxesThatFloat(resources.world, context.simulation.seaScene());
     // Seen from under the water, the caustics on anything there (a hull's
     // underside included) are in full view.
-    const bool wanted =
-        v.base.eyeUnderwater != 0 || worldUnderMap(v.base, resources.caustics.uniforms(), floating);
+    const bool wanted = v.base.eyeUnderwater != 0 || (worldUnderMap(v.base, resources.caustics.uniforms(), floating) &&
+                                                      waterOverMapInView(v, resources.caustics.uniforms(),
+                                                                         context.simulation.reach()));
     // The shafts of light read it along the rays of any pixel under the
     // water, the world drawn or not: wherever the main pass's near plane is
     // not wholly in the air (its programs then have no shafts).

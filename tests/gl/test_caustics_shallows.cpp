@@ -7,7 +7,9 @@
 // on average. The frame's list of which world boxes float once left out
 // the floor's box, took the floor for the floating body's, drew no map and
 // left the floor reading an empty one: a dark, straight-edged square of
-// floor around the eye in the harbour preset's shallows.
+// floor around the eye in the harbour preset's shallows. From high up, where
+// none of the water over the map's square is in view, no map is drawn and
+// the picture is the one without caustics.
 #include "support/gl_test.h"
 
 #include "swell/renderer.h"
@@ -24,7 +26,7 @@ class CausticsShallows : public test::GlTest {};
 constexpr glm::ivec2 kShallowsSize{160, 90};
 constexpr double kShallowsTime_s = 20.0;
 
-Scene shallowsScene(bool caustics)
+Scene shallowsScene(bool caustics, glm::dvec3 eye_m = {0.0, 8.0, 10.0}, double pitch_deg = -40.0)
 {
     Scene scene = defaultScene();
     scene.showTerrain = false;
@@ -32,7 +34,7 @@ Scene shallowsScene(bool caustics)
     scene.seabed.beaches = {SeabedBeach{.shorePoint_m = {0.0, 60.0}, .seawardAzimuth_deg = 0.0, .slope = 0.02}};
     // The first object floats, out of view.
     scene.objects = {SceneObject{.path = "builtin:buoy", .position_m = {60.0, 0.0, -80.0}, .floats = true}};
-    scene.camera.path = {CameraKey{0.0, {0.0, 8.0, 10.0}, 0.0, -40.0}};
+    scene.camera.path = {CameraKey{0.0, eye_m, 0.0, pitch_deg}};
     scene.camera.fovY_deg = 40.0;
     scene.water.caustics = caustics;
     return scene;
@@ -65,6 +67,20 @@ TEST_F(CausticsShallows, TheFloorNearTheEyeIsLitByTheMap)
     // level within a tenth of the level surface's light (measured 0.972;
     // 0.767 with the floor's box taken for the buoy's, and no map drawn).
     EXPECT_NEAR(lit / levelLit, 1.0, 0.1) << "with the map " << lit << ", with the level surface's light " << levelLit;
+}
+
+// 60 m up, looking 15 degrees down over the shallows: the nearest water in
+// view lies about 86 m off, the map's square within 24 m of the eye.
+TEST_F(CausticsShallows, AMapNoneOfWhoseWaterIsInViewIsNotDrawn)
+{
+    const glm::dvec3 eye_m{0.0, 60.0, 40.0};
+    Renderer withMap(shallowsScene(true, eye_m, -15.0));
+    const Camera camera = withMap.sceneCameraAt(kShallowsTime_s);
+    const Image image = withMap.renderImage(camera, kShallowsTime_s, kShallowsSize);
+    EXPECT_EQ(withMap.counters().causticsTriangles, 0) << "a map drawn that no pixel reads";
+    Renderer level(shallowsScene(false, eye_m, -15.0));
+    const ImageDifference d = compareImages(image, level.renderImage(camera, kShallowsTime_s, kShallowsSize));
+    EXPECT_LE(d.maxChannel, 1) << "the picture without the map is not the one without caustics";
 }
 
 } // namespace
