@@ -75,6 +75,41 @@ struct Grid {
 
 constexpr int kNeighbours[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
 
+// A march's fields before any cell is reached: no phase, no energy, the
+// open sea's wavenumber everywhere.
+void startMarch(WaveMarch& m, std::size_t n, const MarchedWave& wave)
+{
+    m.phase_rad.assign(n, kInf);
+    m.energy.assign(n, 0.0);
+    m.wavenumber_radpm.assign(n, wave.wavenumber_radpm * wave.direction);
+    m.reached.assign(n, 0);
+}
+
+// The trial cells: a heap of (phase, cell), the least on top, as
+// std::priority_queue keeps one (the same push_heap and pop_heap), in the
+// scratch's storage.
+class TrialCells {
+public:
+    using Entry = std::pair<double, std::size_t>;
+    explicit TrialCells(std::vector<Entry>& storage) : cells_(storage) { cells_.clear(); }
+    bool empty() const { return cells_.empty(); }
+    void push(Entry e)
+    {
+        cells_.push_back(e);
+        std::push_heap(cells_.begin(), cells_.end(), std::greater<>{});
+    }
+    Entry pop()
+    {
+        std::pop_heap(cells_.begin(), cells_.end(), std::greater<>{});
+        const Entry e = cells_.back();
+        cells_.pop_back();
+        return e;
+    }
+
+private:
+    std::vector<Entry>& cells_;
+};
+
 // Sethian's update: the S that makes the upwind differences' gradient k
 // long, from the accepted neighbours along x and along z.
 double upwindPhase(double alongX, double alongZ, double step)
@@ -157,23 +192,10 @@ WaveMarch marchFromSeeds(const DepthGrid& depth, const MarchedWave& wave, std::v
     const Grid g{depth.size.x, depth.size.y, depth.cell_m};
     const std::size_t n = std::size_t(g.nx) * std::size_t(g.nz);
     WaveMarch m;
-    m.phase_rad.assign(n, kInf);
-    m.energy.assign(n, 0.0);
-    m.wavenumber_radpm.assign(n, wave.wavenumber_radpm * wave.direction);
-    m.reached.assign(n, 0);
+    startMarch(m, n, wave);
     std::vector<std::size_t>& parent = scratch.parent;
     parent.assign(n, std::size_t(-1));
-
-    // The trial cells: a heap of (phase, cell), the least on top, as
-    // std::priority_queue keeps one (the same push_heap and pop_heap), in
-    // the scratch's storage.
-    using Entry = std::pair<double, std::size_t>;
-    std::vector<Entry>& trial = scratch.trial;
-    trial.clear();
-    auto push = [&trial](Entry e) {
-        trial.push_back(e);
-        std::push_heap(trial.begin(), trial.end(), std::greater<>{});
-    };
+    TrialCells trial(scratch.trial);
     std::vector<std::uint8_t>& entry = scratch.entry;
     entry.assign(n, 0);
     std::vector<double>& seedEnergy = scratch.seedEnergy;
@@ -182,16 +204,14 @@ WaveMarch marchFromSeeds(const DepthGrid& depth, const MarchedWave& wave, std::v
         m.phase_rad[seed.cell] = seed.phase_rad;
         entry[seed.cell] = 1;
         seedEnergy[seed.cell] = seed.energy;
-        push({seed.phase_rad, seed.cell});
+        trial.push({seed.phase_rad, seed.cell});
     }
 
     std::vector<std::size_t>& order = scratch.order;
     order.clear();
     order.reserve(n);
     while (!trial.empty()) {
-        std::pop_heap(trial.begin(), trial.end(), std::greater<>{});
-        const auto [s, c] = trial.back();
-        trial.pop_back();
+        const auto [s, c] = trial.pop();
         if (m.reached[c] || s > m.phase_rad[c])
             continue;
         m.reached[c] = 1;
@@ -212,7 +232,7 @@ WaveMarch marchFromSeeds(const DepthGrid& depth, const MarchedWave& wave, std::v
             const double candidate = upwindPhase(alongX, alongZ, k[d] * g.cell);
             if (candidate < m.phase_rad[d]) {
                 m.phase_rad[d] = candidate;
-                push({candidate, d});
+                trial.push({candidate, d});
                 // The accepted neighbour of least phase: where the ray
                 // through d comes from.
                 double least = kInf;
@@ -286,18 +306,8 @@ void marchWhileAbove(const DepthGrid& depth, const MarchedWave& wave, const std:
 {
     const Grid g{depth.size.x, depth.size.y, depth.cell_m};
     const std::size_t n = std::size_t(g.nx) * std::size_t(g.nz);
-    m.phase_rad.assign(n, kInf);
-    m.energy.assign(n, 0.0);
-    m.wavenumber_radpm.assign(n, wave.wavenumber_radpm * wave.direction);
-    m.reached.assign(n, 0);
-
-    using Entry = std::pair<double, std::size_t>;
-    std::vector<Entry>& trial = scratch.trial;
-    trial.clear();
-    auto push = [&trial](Entry e) {
-        trial.push_back(e);
-        std::push_heap(trial.begin(), trial.end(), std::greater<>{});
-    };
+    startMarch(m, n, wave);
+    TrialCells trial(scratch.trial);
     std::vector<std::uint8_t>& entry = scratch.entry;
     entry.assign(n, 0);
     // A seed's velocity is the way it leaves, set before the march.
@@ -309,7 +319,7 @@ void marchWhileAbove(const DepthGrid& depth, const MarchedWave& wave, const std:
         m.phase_rad[seed.cell] = seed.phase_rad;
         m.energy[seed.cell] = seed.energy;
         entry[seed.cell] = 1;
-        push({seed.phase_rad, seed.cell});
+        trial.push({seed.phase_rad, seed.cell});
     }
     std::vector<std::size_t>& order = scratch.order;
     order.clear();
@@ -317,9 +327,7 @@ void marchWhileAbove(const DepthGrid& depth, const MarchedWave& wave, const std:
         return g.inside(ai, aj) && m.reached[g.index(ai, aj)] ? m.phase_rad[g.index(ai, aj)] : kInf;
     };
     while (!trial.empty()) {
-        std::pop_heap(trial.begin(), trial.end(), std::greater<>{});
-        const auto [s, c] = trial.back();
-        trial.pop_back();
+        const auto [s, c] = trial.pop();
         if (m.reached[c] || s > m.phase_rad[c])
             continue;
         m.reached[c] = 1;
@@ -389,7 +397,7 @@ void marchWhileAbove(const DepthGrid& depth, const MarchedWave& wave, const std:
             const int i = ci + kNeighbours[b][0], j = cj + kNeighbours[b][1];
             if (candidate[b] < kInf && candidate[b] < m.phase_rad[g.index(i, j)]) {
                 m.phase_rad[g.index(i, j)] = candidate[b];
-                push({candidate[b], g.index(i, j)});
+                trial.push({candidate[b], g.index(i, j)});
             }
         }
     }
