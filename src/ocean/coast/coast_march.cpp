@@ -92,18 +92,28 @@ class TrialCells {
 public:
     using Entry = std::pair<double, std::size_t>;
     explicit TrialCells(std::vector<Entry>& storage) : cells_(storage) { cells_.clear(); }
-    bool empty() const { return cells_.empty(); }
     void push(Entry e)
     {
         cells_.push_back(e);
         std::push_heap(cells_.begin(), cells_.end(), std::greater<>{});
     }
-    Entry pop()
+    static constexpr std::size_t kNone = std::size_t(-1);
+    // The next cell the march accepts, marked reached and added to `order`:
+    // the least phase on the heap that is current (not reached already, nor
+    // pushed before a lower phase was found for it); kNone when none is left.
+    std::size_t acceptNext(WaveMarch& m, std::vector<std::size_t>& order)
     {
-        std::pop_heap(cells_.begin(), cells_.end(), std::greater<>{});
-        const Entry e = cells_.back();
-        cells_.pop_back();
-        return e;
+        while (!cells_.empty()) {
+            std::pop_heap(cells_.begin(), cells_.end(), std::greater<>{});
+            const auto [phase, c] = cells_.back();
+            cells_.pop_back();
+            if (m.reached[c] || phase > m.phase_rad[c])
+                continue;
+            m.reached[c] = 1;
+            order.push_back(c);
+            return c;
+        }
+        return kNone;
     }
 
 private:
@@ -210,12 +220,7 @@ WaveMarch marchFromSeeds(const DepthGrid& depth, const MarchedWave& wave, std::v
     std::vector<std::size_t>& order = scratch.order;
     order.clear();
     order.reserve(n);
-    while (!trial.empty()) {
-        const auto [s, c] = trial.pop();
-        if (m.reached[c] || s > m.phase_rad[c])
-            continue;
-        m.reached[c] = 1;
-        order.push_back(c);
+    for (std::size_t c; (c = trial.acceptNext(m, order)) != TrialCells::kNone;) {
         const int ci = int(c % std::size_t(g.nx)), cj = int(c / std::size_t(g.nx));
         for (const auto& nb : kNeighbours) {
             const int i = ci + nb[0], j = cj + nb[1];
@@ -326,12 +331,8 @@ void marchWhileAbove(const DepthGrid& depth, const MarchedWave& wave, const std:
     auto accepted = [&](int ai, int aj) {
         return g.inside(ai, aj) && m.reached[g.index(ai, aj)] ? m.phase_rad[g.index(ai, aj)] : kInf;
     };
-    while (!trial.empty()) {
-        const auto [s, c] = trial.pop();
-        if (m.reached[c] || s > m.phase_rad[c])
-            continue;
-        m.reached[c] = 1;
-        order.push_back(c);
+    for (std::size_t c; (c = trial.acceptNext(m, order)) != TrialCells::kNone;) {
+        const double s = m.phase_rad[c]; // the phase it was accepted at
         const int ci = int(c % std::size_t(g.nx)), cj = int(c / std::size_t(g.nx));
         // The gradient from the upwind neighbours, the only ones final now.
         glm::dvec2 grad(0.0);
