@@ -195,6 +195,11 @@ std::optional<DerivedEntry> loadDerived(std::string_view kind, std::span<const s
     return DerivedEntry(std::move(file->bytes), header.size() + kWord, payloadSize);
 }
 
+std::array<std::uint64_t, 2> hash128(std::span<const std::byte> bytes)
+{
+    return {fnv1a64(bytes), fnv1a64(bytes, kSecondSeed)};
+}
+
 std::uint64_t wordChecksum(std::span<const std::byte> bytes)
 {
     std::uint64_t h = 1469598103934665603ull;

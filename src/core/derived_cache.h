@@ -20,6 +20,7 @@
 // Library-internal.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -89,8 +90,11 @@ private:
     bool ok_ = true;
 };
 
-// FNV-1a, 64 bits, from `seed` (two seeds give the 128-bit keys).
+// FNV-1a, 64 bits, from `seed`.
 std::uint64_t fnv1a64(std::span<const std::byte> bytes, std::uint64_t seed = 1469598103934665603ull);
+// A 128-bit key for inputs too large to keep in an entry: fnv1a64 from two
+// seeds, the first half fnv1a64's own.
+std::array<std::uint64_t, 2> hash128(std::span<const std::byte> bytes);
 // An entry's checksum: FNV-1a's step on 8 bytes at a time (eight times
 // fewer multiplies than fnv1a64; each step is a bijection of the state, so
 // any one word changed changes the sum), the last bytes zero-padded.

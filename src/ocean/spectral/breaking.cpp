@@ -115,9 +115,9 @@ BreakingRamps calibratedBreakingRamps(std::shared_ptr<const SpectralField> field
     static std::map<std::uint64_t, BreakingRamps> found;
     const detail::CacheBytes inputs = breakingInputsOf(*field, windSpeed10_mps);
     // The inputs are megabytes of spectra: the disk's key is their 128-bit
-    // hash (two FNV-1a seeds), the process's its first half.
-    const std::uint64_t key = detail::fnv1a64(inputs.bytes());
-    const std::array<std::uint64_t, 2> diskKey{key, detail::fnv1a64(inputs.bytes(), 0x9e3779b97f4a7c15ull)};
+    // hash, the process's its first half.
+    const std::array<std::uint64_t, 2> diskKey = detail::hash128(inputs.bytes());
+    const std::uint64_t key = diskKey[0];
     const auto diskKeyBytes = std::as_bytes(std::span(diskKey));
     {
         const std::lock_guard<std::mutex> lock(mutex);
