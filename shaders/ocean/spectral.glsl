@@ -3,7 +3,8 @@
 // The displacement is the sum over cascades of exact bilinear samples at
 // level 0 (texelFetch with weights computed here: the hardware's filter
 // weights have too few bits to match the CPU), each cascade weighed by
-// whether the samples resolve its shortest wave; the normal comes from the
+// whether the samples resolve its shortest wave, and where they do not, of
+// the same field averaged over the footprint (its mip chain); the normal comes from the
 // slopes, filtered by the footprint through their mipmaps. Each cascade is
 // looked up at its anti-tiling warp's point x + w_c(x)
 // (src/ocean/spectral/spectral_warp.h), its slopes carried to the rest point
@@ -73,6 +74,54 @@ vec4 bilinearFetch(sampler2DArray field, vec2 s, int cascade)
 }
 
 vec4 bilinearDisplacement(vec2 s, int cascade) { return bilinearFetch(oceanDisplacement, s, cascade); }
+
+// swell::spectral::displacementLevel: the level of a cascade's mip chain
+// whose texels are footprint_m wide.
+float displacementLevel(int c, float footprint_m)
+{
+    return clamp(log2(max(footprint_m * cascades[c].texelsPerMetre, 1.0)), 0.0, float(SWELL_FFT_LOG2_SIZE));
+}
+
+// swell::spectral::filteredCascadeWeight: where the exact field fades, the
+// filtered one takes the rest while its wave is resolved.
+float filteredCascadeWeight(int c, float footprint_m)
+{
+    float exact = cascadeWeight(cascades[c].shortestWavelength_m, footprint_m);
+    if (exact >= 1.0)
+        return 0.0;
+    return (1.0 - exact) * cascadeWeight(cascades[c].filteredWavelength_m, footprint_m);
+}
+
+// Level `level` of a cascade's displacement at level 0's texel position s,
+// bilinear with exact weights: its texel j is the mean of level 0's
+// j * 2^level .. (j + 1) * 2^level - 1.
+vec3 bilinearDisplacementAt(vec2 s, int cascade, int level)
+{
+    float scale = exp2(-float(level));
+    vec2 sl = (s + 0.5) * scale - 0.5;
+    vec2 cell = floor(sl);
+    vec2 f = sl - cell;
+    int mask = (SWELL_FFT_SIZE >> level) - 1;
+    ivec2 i0 = ivec2(cell) & mask;
+    ivec2 i1 = (i0 + 1) & mask;
+    vec3 top = mix(texelFetch(oceanDisplacement, ivec3(i0.x, i0.y, cascade), level).xyz,
+                   texelFetch(oceanDisplacement, ivec3(i1.x, i0.y, cascade), level).xyz, f.x);
+    vec3 bottom = mix(texelFetch(oceanDisplacement, ivec3(i0.x, i1.y, cascade), level).xyz,
+                      texelFetch(oceanDisplacement, ivec3(i1.x, i1.y, cascade), level).xyz, f.x);
+    return mix(top, bottom, f.y);
+}
+
+// swell::spectral::CpuSurface::filteredDisplacement: cascade c's
+// displacement averaged over texels as wide as the footprint, the two
+// levels about it blended.
+vec3 filteredDisplacement(int c, vec2 s, float footprint_m)
+{
+    float level = displacementLevel(c, footprint_m);
+    int first = int(floor(level));
+    int second = min(first + 1, SWELL_FFT_LOG2_SIZE);
+    vec3 a = bilinearDisplacementAt(s, c, first);
+    return second == first ? a : mix(a, bilinearDisplacementAt(s, c, second), level - float(first));
+}
 
 // The Jacobian of the horizontal displacement of cascades
 // 0..cascadeCount-1 (unfiltered) at a rest point: where it falls low, the
@@ -371,10 +420,16 @@ SurfacePoint oceanSurface(vec2 restOffset_m, float footprint_m, float heightScal
     SpectralCoast coast = spectralCoastAt(restOffset_m);
     vec3 displacement = vec3(0.0); // Dx, Dy, Dz
     for (int c = 0; c < SWELL_FFT_CASCADES; ++c) {
-        float weight = cascadeWeight(cascades[c].shortestWavelength_m, footprint_m) * coastCascadeWeight(coast, c);
-        if (weight > 0.0) {
+        float coastWeight = coastCascadeWeight(coast, c);
+        float weight = cascadeWeight(cascades[c].shortestWavelength_m, footprint_m) * coastWeight;
+        float filteredWeight = filteredCascadeWeight(c, footprint_m) * coastWeight;
+        if (weight > 0.0 || filteredWeight > 0.0) {
             mat2 jacobian;
-            displacement += weight * bilinearDisplacement(warpedTexels(c, restOffset_m, jacobian), c).xyz;
+            vec2 s = warpedTexels(c, restOffset_m, jacobian);
+            if (filteredWeight > 0.0)
+                displacement += filteredWeight * filteredDisplacement(c, s, footprint_m);
+            if (weight > 0.0)
+                displacement += weight * bilinearDisplacement(s, c).xyz;
         }
     }
     if (coast.share > 0.0) {

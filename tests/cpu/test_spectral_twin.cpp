@@ -64,23 +64,34 @@ TEST(SpectralTwin, AQueryTransformsOnlyTheColumnsItReads)
 {
     const auto field = testField();
     const swell::SurfaceFilter filter{0.5, 1.0};
+    // The cascades whose exact fields it weighs, and the columns under the
+    // texels the others' filtered fields read (two texels of the coarser
+    // level, of two pairs) at most.
     int weighed = 0;
-    for (const Cascade& cascade : field->cascades)
+    std::int64_t filteredAtMost = 0;
+    for (int c = 0; c < kCascades; ++c) {
+        const Cascade& cascade = field->cascades[size_t(c)];
         weighed += cascadeWeight(cascade, filter.footprint_m) > 0.0 ? 1 : 0;
+        if (filteredCascadeWeight(*field, c, filter.footprint_m) > 0.0)
+            filteredAtMost += 2 * (std::int64_t(2) << int(std::floor(displacementLevel(cascade, filter.footprint_m)) + 1));
+    }
     ASSERT_GT(weighed, 0);
-    ASSERT_LT(weighed, kCascades) << "the test needs a cascade the filter leaves out";
+    ASSERT_LT(weighed, kCascades) << "the test needs a cascade whose exact field the filter leaves out";
 
     const glm::dvec2 a(13.7, -250.2), b(-40.0, 77.0);
     const double time_s = 12.5;
     CpuSurface first(field), second(field), eager(field);
     // Its two columns (x0 and x0 + 1) of the two displacement pairs of each cascade it weighs.
     const glm::dvec3 da = first.displacementAt(a, time_s, filter);
-    EXPECT_EQ(first.columnsTransformed(), weighed * 2 * 2);
-    // Asked again, nothing more is made; a normal makes the two derivative pairs' columns.
+    const std::int64_t displacementColumns = first.columnsTransformed();
+    EXPECT_GE(displacementColumns, weighed * 2 * 2);
+    EXPECT_LE(displacementColumns, weighed * 2 * 2 + filteredAtMost);
+    // Asked again, nothing more is made; a normal makes the two derivative
+    // pairs' columns of the exact fields (a filtered field has no slopes).
     EXPECT_EQ(first.displacementAt(a, time_s, filter), da);
-    EXPECT_EQ(first.columnsTransformed(), weighed * 2 * 2);
+    EXPECT_EQ(first.columnsTransformed(), displacementColumns);
     const swell::SurfacePoint na = first.surfaceAt(a, time_s, filter);
-    EXPECT_EQ(first.columnsTransformed(), weighed * 4 * 2);
+    EXPECT_EQ(first.columnsTransformed(), displacementColumns + weighed * 2 * 2);
     const swell::SurfacePoint nb = first.surfaceAt(b, time_s, filter);
 
     // The other order, and every field made first: the same answers, bit for bit.
@@ -100,7 +111,38 @@ TEST(SpectralTwin, AQueryTransformsOnlyTheColumnsItReads)
     // A new time starts again from nothing.
     const std::int64_t before = first.columnsTransformed();
     first.displacementAt(a, time_s + 1.0, filter);
-    EXPECT_EQ(first.columnsTransformed() - before, weighed * 2 * 2);
+    EXPECT_EQ(first.columnsTransformed() - before, displacementColumns);
+}
+
+// A query whose footprint reads a cascade's filtered field (its mip chain)
+// makes only the texels of the chain it reads, from the columns under them,
+// and answers bit for bit as a twin that made every field first.
+TEST(SpectralTwin, AFilteredFieldIsMadeFromTheColumnsUnderItsTexels)
+{
+    const auto field = testField();
+    const swell::SurfaceFilter filter{0.5, 1.0};
+    int filteredCascade = -1;
+    for (int c = 0; c < kCascades; ++c)
+        if (filteredCascadeWeight(*field, c, filter.footprint_m) > 0.0 && cascadeWeight(field->cascades[size_t(c)], filter.footprint_m) == 0.0)
+            filteredCascade = c;
+    ASSERT_GE(filteredCascade, 0) << "the test needs a cascade read only through its filtered field";
+    const double level = displacementLevel(field->cascades[size_t(filteredCascade)], filter.footprint_m);
+    ASSERT_GT(level, 1.0);
+    ASSERT_LT(level, 6.0);
+    // The columns under two texels of the coarser level read, of two pairs.
+    const std::int64_t under = 2 * (std::int64_t(2) << int(std::floor(level) + 1));
+
+    const double time_s = 12.5;
+    CpuSurface lazy(field), eager(field);
+    eager.fieldsAt(time_s);
+    for (glm::dvec2 p : {glm::dvec2(0.3, 0.1), glm::dvec2(13.7, -250.2), glm::dvec2(1.0e4, 3.3e3)}) {
+        const std::int64_t before = lazy.columnsTransformed();
+        const glm::dvec3 d = lazy.displacementAt(p, time_s, filter);
+        EXPECT_EQ(d, eager.displacementAt(p, time_s, filter));
+        // Every other cascade's exact columns, and the filtered one's under its texels.
+        EXPECT_LE(lazy.columnsTransformed() - before, (kCascades - 1) * 2 * 2 + under);
+    }
+    EXPECT_LT(lazy.columnsTransformed(), kCascades * 2 * kSize / 2);
 }
 
 // An interactive view's twin shares each time's transforms with a worker

@@ -75,13 +75,15 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
     // The step: transform the rows (evolving the spectra as they are read),
     // then the columns (in place, writing the shading's half-float copy of
     // the derivatives with the slopes' second moments), step the foam; a
-    // barrier after each; then mipmaps of that copy, and of the foam, by compute
-    // dispatches and a barrier after each (gl/mip_downsample.h): on a GPU
-    // from shared memory, each chain by dispatches of up to
-    // SWELL_DOWNSAMPLE_LEVELS levels (a 256^2 chain's 8 levels: 2); on a
-    // software rasteriser by blocks, both chains in the same dispatches of
-    // up to SWELL_DOWNSAMPLE_BLOCK_LEVELS levels (2); then the frame's
-    // water queries (render/surface_probe.h), one dispatch and its barrier.
+    // barrier after each; then mipmaps of that copy, of the foam and of the
+    // displacement (what far vertices read), by compute dispatches and a
+    // barrier after each (gl/mip_downsample.h): on a GPU from shared
+    // memory, each chain by dispatches of up to SWELL_DOWNSAMPLE_LEVELS
+    // levels (a 256^2 chain's 8 levels: 2); on a software rasteriser by
+    // blocks, the copy's and the foam's chains in the same dispatches of up
+    // to SWELL_DOWNSAMPLE_BLOCK_LEVELS levels (2), the displacement's in
+    // two more; then the frame's water queries (render/surface_probe.h),
+    // one dispatch and its barrier.
     const long long n = 1 << SWELL_FFT_LOG2_SIZE, cascades = SWELL_FFT_CASCADES;
     const long long foamSize = 1 << SWELL_FOAM_LOG2_SIZE, foamLevels = SWELL_FOAM_LEVELS;
     constexpr long long kRgba32f = 16, kRgba16f = 8, kR16f = 2; // bytes a texel
@@ -92,28 +94,30 @@ TEST_F(FrameWork, OneSpectralStepIsItsDispatchesBarriersMipmapsAndBytes)
         << "the eye within the waves' reach, so its side of the water is asked on the GPU";
     static_assert(SWELL_FFT_LOG2_SIZE == SWELL_FOAM_LOG2_SIZE, "the chains share dispatches when of one size");
     const int chains = gl::isSoftwareRasterizer()
-        ? dispatchesOfChain(SWELL_FFT_LOG2_SIZE, SWELL_DOWNSAMPLE_BLOCK_LEVELS)
-        : dispatchesOfChain(SWELL_FFT_LOG2_SIZE, SWELL_DOWNSAMPLE_LEVELS) +
+        ? 2 * dispatchesOfChain(SWELL_FFT_LOG2_SIZE, SWELL_DOWNSAMPLE_BLOCK_LEVELS)
+        : 2 * dispatchesOfChain(SWELL_FFT_LOG2_SIZE, SWELL_DOWNSAMPLE_LEVELS) +
               dispatchesOfChain(SWELL_FOAM_LOG2_SIZE, SWELL_DOWNSAMPLE_LEVELS);
     EXPECT_EQ(c.simulationGpu.dispatches, 4 + chains);
     EXPECT_EQ(c.simulationGpu.barriers, 4 + chains);
-    EXPECT_EQ(c.simulationGpu.dispatches, gl::isSoftwareRasterizer() ? 6 : 8) << "today's 256^2 fields and foam";
+    EXPECT_EQ(c.simulationGpu.dispatches, gl::isSoftwareRasterizer() ? 8 : 10) << "today's 256^2 fields and foam";
     EXPECT_EQ(c.simulationGpu.mipmaps, 0) << "no glGenerateTextureMipmap";
     const long long spectra = 2 * n * n * cascades * kRgba32f; // the displacement's and the derivatives' images
     const long long transforms = 2 * spectra;                  // written by each FFT pass
     // Written by the column pass: the derivatives' copy and the moments.
     const long long slopes = 2 * n * n * cascades * kRgba16f;
     const long long slopeMips = mipLevelsAboveBase(n, 2 * cascades) * kRgba16f; // the moments' layers too
+    const long long displacementMips = mipLevelsAboveBase(n, cascades) * kRgba32f;
     const long long foam = foamSize * foamSize * foamLevels * kR16f + mipLevelsAboveBase(foamSize, foamLevels) * kR16f;
     // Each query's answer: 3 vec4s and the 8 x 8 block's vertices; this
     // open sea floats nothing, so the viewpoint's alone.
     const long long queries = (3 + SWELL_PROBE_BLOCK * SWELL_PROBE_BLOCK) * 16;
-    EXPECT_EQ(c.simulationGpu.bytesWritten, transforms + slopes + slopeMips + foam + queries);
+    EXPECT_EQ(c.simulationGpu.bytesWritten, transforms + slopes + slopeMips + displacementMips + foam + queries);
     // The same by hand for today's 4 cascades of 256^2 and 2 foam levels of
     // 256^2: 16 MiB of spectra, 4 MiB of the shading's copy (2 MiB of
-    // derivatives, 2 MiB of moments), 1398080 bytes of its mipmaps, 256 KiB
-    // of foam and 87380 bytes of its mipmaps, 1072 bytes of the answer.
-    EXPECT_EQ(c.simulationGpu.bytesWritten, 22720196);
+    // derivatives, 2 MiB of moments), 1398080 bytes of its mipmaps, 1398080
+    // of the displacement's, 256 KiB of foam and 87380 bytes of its
+    // mipmaps, 1072 bytes of the answer.
+    EXPECT_EQ(c.simulationGpu.bytesWritten, 24118276);
 
     // A view simulates nothing: the spectral model's views write no image;
     // the spray's passes and the water's tile list are its only dispatches.

@@ -19,6 +19,25 @@ double cascadeWeight(const Cascade& cascade, double footprint_m)
     return waveLodWeight(cascade.shortestWavelength_m(), footprint_m);
 }
 
+double filteredFieldWavelength_m(const SpectralField& field, int c)
+{
+    return c == 0 ? std::numeric_limits<double>::infinity() : field.meanWavelength_m[size_t(c)];
+}
+
+double filteredCascadeWeight(const SpectralField& field, int c, double footprint_m)
+{
+    const double exact = cascadeWeight(field.cascades[size_t(c)], footprint_m);
+    if (exact >= 1.0)
+        return 0.0;
+    return (1.0 - exact) * waveLodWeight(filteredFieldWavelength_m(field, c), footprint_m);
+}
+
+double displacementLevel(const Cascade& cascade, double footprint_m)
+{
+    const double texels = footprint_m * kSize / cascade.patch_m;
+    return std::clamp(std::log2(std::max(texels, 1.0)), 0.0, double(kLog2Size));
+}
+
 CpuSurface::CpuSurface(std::shared_ptr<const SpectralField> field, std::shared_ptr<const CoastTrains> coast)
     : field_(std::move(field)), coast_(std::move(coast))
 {
@@ -71,6 +90,10 @@ void CpuSurface::startTime(double time_s) const
     fields_.hasDerivatives = false;
     for (CascadeState& state : cascades_) {
         state.evolved = false;
+        if (state.mipsUsed)
+            for (std::vector<std::uint8_t>& done : state.mipDone)
+                std::fill(done.begin(), done.end(), std::uint8_t(0));
+        state.mipsUsed = false;
         state.rowsDone = {};
         for (std::vector<std::uint8_t>& done : state.columnDone)
             done.assign(size_t(kSize), 0);
@@ -143,24 +166,26 @@ void CpuSurface::makeColumn(int c, int p, int column, void* fft) const
 namespace {
 
 // Field v of one cascade at texel position (sx, sz), bilinear, the patch
-// repeating every kSize texels.
+// repeating every `size` texels (kSize at level 0, kSize >> l at level l).
 struct Bilinear {
     size_t i00, i01, i10, i11; // (row, column) 00, 01, 10, 11
-    int column0, column1;
+    int column0, column1, row0, row1;
     double fx, fz;
-    Bilinear(double sx, double sz)
+    Bilinear(double sx, double sz, int size = kSize)
     {
         const double x0 = std::floor(sx), z0 = std::floor(sz);
         fx = sx - x0;
         fz = sz - z0;
-        auto wrap = [](double v) { return int(v - kSize * std::floor(v / kSize)); };
-        const int c0 = wrap(x0), c1 = (c0 + 1) % kSize, r0 = wrap(z0), r1 = (r0 + 1) % kSize;
+        auto wrap = [size](double v) { return int(v - size * std::floor(v / size)); };
+        const int c0 = wrap(x0), c1 = (c0 + 1) % size, r0 = wrap(z0), r1 = (r0 + 1) % size;
         column0 = c0;
         column1 = c1;
-        i00 = size_t(r0) * kSize + size_t(c0);
-        i01 = size_t(r0) * kSize + size_t(c1);
-        i10 = size_t(r1) * kSize + size_t(c0);
-        i11 = size_t(r1) * kSize + size_t(c1);
+        row0 = r0;
+        row1 = r1;
+        i00 = size_t(r0) * size_t(size) + size_t(c0);
+        i01 = size_t(r0) * size_t(size) + size_t(c1);
+        i10 = size_t(r1) * size_t(size) + size_t(c0);
+        i11 = size_t(r1) * size_t(size) + size_t(c1);
     }
     double operator()(const std::vector<float>& a) const
     {
@@ -172,8 +197,63 @@ struct Bilinear {
 
 } // namespace
 
+float CpuSurface::mipTexel(int c, int level, int row, int column, int f) const
+{
+    if (level == 0) {
+        makeColumn(c, f < 2 ? 0 : 1, column); // (Dx, Dy) and (Dz, dDx/dz)
+        return fields_.values[size_t(c)][size_t(f)][size_t(row) * kSize + size_t(column)];
+    }
+    CascadeState& state = cascades_[size_t(c)];
+    if (state.mips.empty()) {
+        state.mips.resize(size_t(kLog2Size));
+        state.mipDone.resize(size_t(kLog2Size));
+        for (int l = 1; l <= kLog2Size; ++l) {
+            const size_t texels = size_t(kSize >> l) * size_t(kSize >> l);
+            for (std::vector<float>& v : state.mips[size_t(l - 1)])
+                v.assign(texels, 0.0f);
+            state.mipDone[size_t(l - 1)].assign(texels, 0);
+        }
+    }
+    state.mipsUsed = true;
+    const size_t at = size_t(row) * size_t(kSize >> level) + size_t(column);
+    auto& values = state.mips[size_t(level - 1)];
+    if (!state.mipDone[size_t(level - 1)][at]) {
+        for (int field = 0; field < 3; ++field) {
+            const float a = mipTexel(c, level - 1, 2 * row, 2 * column, field);
+            const float b = mipTexel(c, level - 1, 2 * row, 2 * column + 1, field);
+            const float d = mipTexel(c, level - 1, 2 * row + 1, 2 * column, field);
+            const float e = mipTexel(c, level - 1, 2 * row + 1, 2 * column + 1, field);
+            values[size_t(field)][at] = 0.25f * ((a + b) + (d + e));
+        }
+        state.mipDone[size_t(level - 1)][at] = 1;
+    }
+    return values[size_t(f)][at];
+}
+
+glm::dvec3 CpuSurface::filteredDisplacement(int c, glm::dvec2 s, double footprint_m) const
+{
+    const double level = displacementLevel(field_->cascades[size_t(c)], footprint_m);
+    const int first = int(std::floor(level)), second = std::min(first + 1, kLog2Size);
+    auto at = [&](int l) {
+        // Level l's texel j is the mean of level 0's j * 2^l .. (j + 1) * 2^l - 1.
+        const double scale = std::ldexp(1.0, -l);
+        const Bilinear b((s.x + 0.5) * scale - 0.5, (s.y + 0.5) * scale - 0.5, kSize >> l);
+        glm::dvec3 v;
+        for (int f = 0; f < 3; ++f) {
+            const double top =
+                mipTexel(c, l, b.row0, b.column0, f) * (1.0 - b.fx) + mipTexel(c, l, b.row0, b.column1, f) * b.fx;
+            const double bottom =
+                mipTexel(c, l, b.row1, b.column0, f) * (1.0 - b.fx) + mipTexel(c, l, b.row1, b.column1, f) * b.fx;
+            v[f] = top * (1.0 - b.fz) + bottom * b.fz;
+        }
+        return v;
+    };
+    const glm::dvec3 a = at(first);
+    return second == first ? a : glm::mix(a, at(second), level - first);
+}
+
 void CpuSurface::sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives,
-                        Sample& out, int cascadeCount, bool overCoast) const
+                        Sample& out, int cascadeCount, bool overCoast, bool filtered) const
 {
     if (!(fields_.time_s == time_s))
         startTime(time_s);
@@ -189,15 +269,20 @@ void CpuSurface::sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilt
     }
     for (int c = 0; c < std::min(cascadeCount, kCascades); ++c) {
         const Cascade& cascade = field_->cascades[size_t(c)];
-        const double weight =
-            cascadeWeight(cascade, filter.footprint_m) * gain * (c == 0 ? std::sqrt(1.0 - shareOfBand) : 1.0);
-        if (weight <= 0.0)
+        const double common = gain * (c == 0 ? std::sqrt(1.0 - shareOfBand) : 1.0);
+        const double weight = cascadeWeight(cascade, filter.footprint_m) * common;
+        const double filteredWeight = filtered ? filteredCascadeWeight(*field_, c, filter.footprint_m) * common : 0.0;
+        if (weight <= 0.0 && filteredWeight <= 0.0)
             continue;
         // The anti-tiling warp: the cascade is looked up at x + w_c(x).
         const WarpSample warp = warpAt(field_->warps[size_t(c)], restPoint_m);
         // Sample (col, row) holds world (col, row) * L/N, repeating every L.
         const double scale = kSize / cascade.patch_m;
         const glm::dvec2 s = (restPoint_m + warp.offset_m) * scale;
+        if (filteredWeight > 0.0)
+            out.displacement_m += filteredWeight * filteredDisplacement(c, s, filter.footprint_m);
+        if (weight <= 0.0)
+            continue;
         const Bilinear at(s.x, s.y);
         // The two columns it reads, of the pairs it reads.
         for (int p = 0; p < (derivatives ? 4 : 2); ++p) {
@@ -271,7 +356,7 @@ double CpuSurface::foldJacobianAt(glm::dvec2 restPoint_m, double time_s, const S
 {
     std::lock_guard lock(mutex_);
     Sample sum;
-    sample(time_s, restPoint_m, filter, true, sum, cascadeCount, false);
+    sample(time_s, restPoint_m, filter, true, sum, cascadeCount, false, false);
     return (1.0 + sum.gradDx.x) * (1.0 + sum.gradDz.y) - sum.gradDx.y * sum.gradDz.x;
 }
 

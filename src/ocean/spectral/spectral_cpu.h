@@ -39,6 +39,26 @@ namespace swell::spectral {
 // of that wavelength); 1 for a footprint of 0.
 double cascadeWeight(const Cascade& cascade, double footprint_m);
 
+// Where a cascade's exact field fades (cascadeWeight below 1), its filtered
+// field takes the rest: the same field averaged over texels as wide as the
+// footprint (its mip chain, each level's texel the mean of the 2 x 2 below
+// it, read at displacementLevel()), so the cascade's long waves stay in the
+// geometry where its short ones would alias. Without it a far vertex lost
+// every cascade whose shortest wave it could not resolve, and with them
+// the swell they also hold: the storm's 300 m waves went flat 470 m off.
+// The filtered field is drawn while the samples resolve
+// filteredFieldWavelength_m(): beyond it its mean is near zero. The GLSL
+// twins are in shaders/ocean/spectral.glsl.
+double filteredCascadeWeight(const SpectralField& field, int c, double footprint_m);
+// The wave whose resolution decides where cascade c's filtered field is
+// drawn, m: its mean wavelength (SpectralField::meanWavelength_m); none
+// (infinite) for the first cascade, which holds every wave longer than its
+// band's start, the swell that reaches the horizon.
+double filteredFieldWavelength_m(const SpectralField& field, int c);
+// The level of a cascade's mip chain whose texels are footprint_m wide,
+// 0 .. log2(kSize), fractional: the two levels about it are blended.
+double displacementLevel(const Cascade& cascade, double footprint_m);
+
 // The field over a sea floor (spectral_coast.h): the trains solved over
 // their coast field (trains.coast) and where they take over.
 struct CoastTrains {
@@ -116,6 +136,12 @@ private:
         std::array<bool, 4> rowsDone{};
         std::array<std::vector<std::complex<float>>, 4> rows;
         std::array<std::vector<std::uint8_t>, 4> columnDone;
+        // The displacement's mip chain (Dx, Dy, Dz), levels 1 .. log2(kSize),
+        // each texel made when a query first reads it (from the level-0
+        // columns under it): a floating body's query makes a few.
+        bool mipsUsed = false; // since the time started
+        std::vector<std::array<std::vector<float>, 3>> mips; // [level - 1][field]
+        std::vector<std::vector<std::uint8_t>> mipDone;      // [level - 1][texel]
     };
     mutable std::array<CascadeState, kCascades> cascades_;
     // Atomic: the split fieldsAt() counts from two threads.
@@ -131,6 +157,15 @@ private:
     void makeCascade(int c, int lastPacked, void* fft) const;
     // Makes every column of packed pairs [firstPacked, lastPacked) of every cascade.
     void makeAll(int firstPacked, int lastPacked) const;
+    // Field f (0..2: Dx, Dy, Dz) of cascade c's texel (row, column) at
+    // `level` of its mip chain, made with the texels under it if not yet,
+    // in the order of shaders/mip_blocks.comp and mip_downsample.comp:
+    // (a + b) + (c + d), the two pairs along x, then times 1/4, in floats.
+    // Every field of the texel is made at once.
+    float mipTexel(int c, int level, int row, int column, int f) const;
+    // Cascade c's filtered displacement at texel position s (level 0's
+    // texels, centres at integers) for a footprint (displacementLevel).
+    glm::dvec3 filteredDisplacement(int c, glm::dvec2 s, double footprint_m) const;
     const Fields& fieldsFor(double time_s, bool derivatives) const;
     // The displacement at a rest point and, with derivatives, its gradients
     // along rest x and z: every cascade's bilinear sample at its warped
@@ -143,8 +178,10 @@ private:
     // overCoast: with the coast's weights and trains (the surface's
     // queries); without, the patches' own sum (the foam's fold, which the GPU
     // makes in the patches).
+    // Without `filtered`, the exact fields alone (the foam's fold, whose
+    // displacement is not read).
     void sample(double time_s, glm::dvec2 restPoint_m, const SurfaceFilter& filter, bool derivatives, Sample& out,
-                int cascadeCount = kCascades, bool overCoast = true) const;
+                int cascadeCount = kCascades, bool overCoast = true, bool filtered = true) const;
     // The coast's share of the sample (trains, weights): what sample() adds.
     void addCoast(glm::dvec2 restPoint_m, double time_s, const SurfaceFilter& filter, double shareOfBand,
                   Sample& out) const;

@@ -86,7 +86,9 @@ public:
         };
         initial_ = array(kInitialFormat, 1);
         omega_ = array(kOmegaFormat, 1);
-        displacement_ = array(kSpectrumFormat, 1);
+        // With its mip chain: a far vertex reads a cascade's displacement
+        // averaged over its footprint (spectral_cpu.h, filteredCascadeWeight).
+        displacement_ = array(kSpectrumFormat, kFieldLevels);
         derivatives_ = array(kSpectrumFormat, 1);
         slopes_ = array(kSlopeFormat, kFieldLevels, kSlopeLayers);
         foam_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
@@ -95,7 +97,7 @@ public:
         glTextureParameteri(foam_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         clearFoam();
         work_ = {}; // not a frame's work
-        glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(displacement_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
         glTextureParameteri(displacement_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glTextureParameteri(derivatives_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(derivatives_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -191,6 +193,7 @@ public:
             uc.originTexels = glm::vec2(origin * scale);
             uc.texelsPerMetre = float(scale);
             uc.shortestWavelength_m = float(cascade.shortestWavelength_m());
+            uc.filteredWavelength_m = float(std::min(filteredFieldWavelength_m(*field_, c), 1e30));
             double shortestWarp_m = std::numeric_limits<double>::infinity();
             for (int i = 0; i < kWarpWaves; ++i) {
                 const WarpWave& w = field_->warps[size_t(c)][size_t(i)];
@@ -461,12 +464,20 @@ private:
         const gl::MipDownsampler::Work work = slopeMipmapsStale_ && foamMipmapsStale_ ? downsampler_.run(slopes, foam)
                                               : slopeMipmapsStale_                   ? downsampler_.run(slopes)
                                                                                      : downsampler_.run(foam);
-        endStage(stage);
         work_.dispatches += work.dispatches;
         work_.barriers += work.barriers;
+        // The displacement's chain changes with the slopes' (every cascade transformed).
+        if (slopeMipmapsStale_) {
+            const gl::MipDownsampler::Work moved =
+                downsampler_.run({&displacement_, kSpectrumFormat, kSize, kFieldLevels, kCascades});
+            work_.dispatches += moved.dispatches;
+            work_.barriers += moved.barriers;
+        }
+        endStage(stage);
         // Levels 1 and up of each chain built, in its own format.
         if (slopeMipmapsStale_)
-            work_.bytesWritten += texelBytes(kSlopeFormat) * mipTexels(kSize, kFieldLevels, kSlopeLayers, 1);
+            work_.bytesWritten += texelBytes(kSlopeFormat) * mipTexels(kSize, kFieldLevels, kSlopeLayers, 1) +
+                                  texelBytes(kSpectrumFormat) * mipTexels(kSize, kFieldLevels, kCascades, 1);
         if (foamMipmapsStale_)
             work_.bytesWritten += texelBytes(kFoamFormat) * mipTexels(kFoamSize, kFoamFieldLevels, kFoamLevels, 1);
         slopeMipmapsStale_ = foamMipmapsStale_ = false;
@@ -479,11 +490,16 @@ private:
         if (keepPrevious_ && std::isfinite(fieldsTime_s_)) {
             if (!previous_) {
                 previous_ = gl::Texture::create(GLenum(GL_TEXTURE_2D_ARRAY));
-                glTextureStorage3D(previous_.id(), 1, kSpectrumFormat, kSize, kSize, kCascades);
+                glTextureStorage3D(previous_.id(), kFieldLevels, kSpectrumFormat, kSize, kSize, kCascades);
+                glTextureParameteri(previous_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+                glTextureParameteri(previous_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
             }
-            glCopyImageSubData(displacement_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, previous_.id(),
-                               GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, kSize, kSize, kCascades);
-            work_.bytesWritten += texelBytes(kSpectrumFormat) * kSize * kSize * kCascades;
+            // Every level: its far vertices read the chain (the fields of
+            // one time have theirs, built with the last step's mipmaps).
+            for (int level = 0; level < kFieldLevels; ++level)
+                glCopyImageSubData(displacement_.id(), GL_TEXTURE_2D_ARRAY, level, 0, 0, 0, previous_.id(),
+                                   GL_TEXTURE_2D_ARRAY, level, 0, 0, 0, kSize >> level, kSize >> level, kCascades);
+            work_.bytesWritten += texelBytes(kSpectrumFormat) * mipTexels(kSize, kFieldLevels, kCascades);
         }
         previousTime_s_ = keepPrevious_ ? fieldsTime_s_ : kNoTime;
         fieldsTime_s_ = cascades == kCascades ? time_s : kNoTime;
