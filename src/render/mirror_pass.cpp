@@ -89,7 +89,13 @@ void WaterlinePass::draw(RenderContext& context, WaterlineMask& mask, const View
     pass.frame.viewportOrigin = glm::vec2(0.0f);
     pass.framebuffer = mask.framebuffer();
     pass.viewport = glm::ivec4(0, 0, v.size);
+    // The mask's own depth, whatever the frame's convention: waterline.frag
+    // writes the distance to the eye, nearer passing (its clip control
+    // stays the frame's, which its projection is for).
     pass.depth = v.depth;
+    pass.depth.cleared = 1.0f;
+    pass.depth.test = GL_LESS;
+    pass.depth.testOrFar = GL_LEQUAL;
     pass.begin(context.resources, context.telemetry, glm::vec4(SWELL_WATERLINE_NO_HIT));
     glBindTextureUnit(SWELL_UNIT_WATERLINE, mask.allAbove()); // never the target itself
     const Resources& resources = context.resources;

@@ -124,6 +124,33 @@ TEST_F(HorizonLine, NoDepthsColourAtAnyFarPlaneOrCameraHeight)
     EXPECT_EQ(failed, 0);
 }
 
+// The swell's crests on the horizon through a long lens (the storm 7 m up,
+// a 10 degree lens 0.49 degrees down, where its far crests' ridges lie 700
+// to 1200 m off): no pixel of the depths' colour along their ridges. There
+// the front and back faces of a crest meet closer than a standard depth
+// buffer tells apart at that distance, so the waterline mask compares the
+// distance to the eye instead (waterline.frag), and a face within 2
+// degrees of edge-on is seen from above from the air (underwater.glsl):
+// with the frame's depth, 2 pixels of this view were seen from below; by
+// the facet alone, 1 more.
+TEST_F(HorizonLine, NoDepthsColourAlongTheCrestsOfTheHorizonsSwell)
+{
+    swell::Scene scene = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/storm.toml");
+    scene.antialiasing = swell::Antialiasing::Off;
+    scene.water.deepColor = kMarker;
+    scene.waves.choppiness = 0.0; // no folds, whose undersides are seen from below
+    scene.camera.position_m = {0.0, 7.0, 0.0};
+    scene.camera.yaw_deg = -36.6;
+    scene.camera.pitch_deg = -0.49;
+    scene.camera.fovY_deg = 10.0;
+    swell::Renderer renderer(scene);
+    const double time_s = 20.0;
+    const swell::Image image = renderer.renderImage(swell::cameraAt(scene.camera, time_s), time_s, {960, 540});
+    const Found f = scanRows(image, 0, image.height - 1);
+    EXPECT_EQ(f.count, 0) << "first at " << f.firstX << "," << f.firstY << ": "
+                          << swell::test::saveTestImage(image, "horizon_line_long_lens");
+}
+
 // Every preset in scenes/ whose camera is in the air, at the README's
 // pictures' size and time: the horizon's row and the rows next to it, at
 // both borders (where the far plane reaches furthest past the water's
