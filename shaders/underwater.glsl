@@ -85,27 +85,25 @@ bool pixelUnderwater()
 // position's screen derivatives (what the rasteriser drew, not the shading
 // normal), turned to point up; call in uniform control flow.
 //
-// Seen from the air, a facet within 2 degrees of edge-on is seen from
-// above: from an eye in the air a surface without folds is only ever seen
-// from above, and what the air legitimately sees from below is a fold's
-// underside, an overhang far steeper than that. The plane from the
-// position's differences across a pixel came out up to a degree wrong for
-// a far crest's face (653 m off, seen from 2 m up through a 10 degree
-// lens, whose pixels step 0.2 m across it), and the horizon's crests are
-// seen that close to edge-on at their ridges: judged by the facet alone,
-// pixels along those ridges were seen from below (specks of the depths'
-// colour on the horizon). From under the water no such rule holds (a near
-// plane that straddles the surface sees it from above at a graze too).
-const float kEdgeOnCosine = 0.0349; // sin(2 deg)
+// Seen from the air, a facet within 30 degrees of level is seen from
+// above. From an eye in the air a surface without folds is only ever seen
+// from above; what the air rightly sees from below is a fold's underside
+// where the surface turns over, steeper than that. A facet near level said
+// otherwise only where it is met near edge-on: on the ridges of the
+// horizon's crests, 650 to 1200 m off from 2 to 7 m up, the plane from a
+// pixel's differences put the eye 0.1 to 5 degrees below it (specks of the
+// depths' colour along the horizon's swell). From under the water no such
+// rule holds (a near plane that straddles the surface sees it from above
+// at a graze too).
+const float kLevelFacetCosine = 0.866; // cos(30 deg)
 
 bool facetSeenFromBelow(vec3 p)
 {
-    vec3 facet = cross(dFdx(p), dFdy(p));
+    vec3 facet = normalize(cross(dFdx(p), dFdy(p)));
     facet *= facet.y < 0.0 ? -1.0 : 1.0;
-    float side = dot(normalize(facet), normalize(eyePosition - p));
-    if (eyeUnderwater == 0 && side > -kEdgeOnCosine)
+    if (eyeUnderwater == 0 && facet.y > kLevelFacetCosine)
         return false;
-    return side < 0.0;
+    return dot(facet, eyePosition - p) < 0.0;
 }
 
 // Light the water itself scatters towards the eye along a path of length

@@ -19,9 +19,9 @@ double cascadeWeight(const Cascade& cascade, double footprint_m)
     return waveLodWeight(cascade.shortestWavelength_m(), footprint_m);
 }
 
-double filteredFieldWavelength_m(const SpectralField& field, int c)
+double filteredFieldWavelength_m(int c)
 {
-    return c == 0 ? std::numeric_limits<double>::infinity() : field.meanWavelength_m[size_t(c)];
+    return c == 0 ? std::numeric_limits<double>::infinity() : 0.0;
 }
 
 double filteredCascadeWeight(const SpectralField& field, int c, double footprint_m)
@@ -29,7 +29,7 @@ double filteredCascadeWeight(const SpectralField& field, int c, double footprint
     const double exact = cascadeWeight(field.cascades[size_t(c)], footprint_m);
     if (exact >= 1.0)
         return 0.0;
-    return (1.0 - exact) * waveLodWeight(filteredFieldWavelength_m(field, c), footprint_m);
+    return (1.0 - exact) * waveLodWeight(filteredFieldWavelength_m(c), footprint_m);
 }
 
 double displacementLevel(const Cascade& cascade, double footprint_m)

@@ -39,22 +39,24 @@ namespace swell::spectral {
 // of that wavelength); 1 for a footprint of 0.
 double cascadeWeight(const Cascade& cascade, double footprint_m);
 
-// Where a cascade's exact field fades (cascadeWeight below 1), its filtered
-// field takes the rest: the same field averaged over texels as wide as the
-// footprint (its mip chain, each level's texel the mean of the 2 x 2 below
-// it, read at displacementLevel()), so the cascade's long waves stay in the
-// geometry where its short ones would alias. Without it a far vertex lost
-// every cascade whose shortest wave it could not resolve, and with them
-// the swell they also hold: the storm's 300 m waves went flat 470 m off.
-// The filtered field is drawn while the samples resolve
-// filteredFieldWavelength_m(): beyond it its mean is near zero. The GLSL
-// twins are in shaders/ocean/spectral.glsl.
+// Where the first cascade's exact field fades (cascadeWeight below 1), its
+// filtered field takes the rest: the same field averaged over texels as
+// wide as the footprint (its mip chain, each level's texel the mean of the
+// 2 x 2 below it, read at displacementLevel()), so the swell it holds stays
+// in the geometry where its short waves would alias. Without it a far
+// vertex lost the whole cascade, and with it every wave longer than its
+// band's start: the storm's 300 m swell went flat 470 m off. The other
+// cascades keep their exact fields alone: with theirs (drawn while the
+// cells resolved their mean wavelength), the storm's foam seen from 20 m
+// showed a lattice 0.23 m apart (FoamTexture.NoCellsFrom20m: a peak 13.2
+// times its ring's median against 9.6), the creases of the chain's bilinear
+// texels in the horizontal displacement. The GLSL twins are in
+// shaders/ocean/spectral.glsl.
 double filteredCascadeWeight(const SpectralField& field, int c, double footprint_m);
 // The wave whose resolution decides where cascade c's filtered field is
-// drawn, m: its mean wavelength (SpectralField::meanWavelength_m); none
-// (infinite) for the first cascade, which holds every wave longer than its
-// band's start, the swell that reaches the horizon.
-double filteredFieldWavelength_m(const SpectralField& field, int c);
+// drawn, m: none (infinite) for the first cascade, which holds every wave
+// longer than its band's start; for the others 0 (never drawn).
+double filteredFieldWavelength_m(int c);
 // The level of a cascade's mip chain whose texels are footprint_m wide,
 // 0 .. log2(kSize), fractional: the two levels about it are blended.
 double displacementLevel(const Cascade& cascade, double footprint_m);

@@ -156,7 +156,6 @@ SpectralField makeSpectralField(const SeaSpectrum& sea, double choppiness, std::
         meanWavelength_m[size_t(c)] = variance > 0.0 ? weighted_m / variance : cascade.shortestWavelength_m();
     }
     f.warps = makeWarps(patches_m, meanWavelength_m, seed, warpStrength);
-    f.meanWavelength_m = meanWavelength_m;
     f.verticalReach_m = sumAbs;
     f.horizontalReach_m = choppiness * sumAbs;
     f.unresolvedSlopeVariance = unresolvedSlopeVariance(sea, f.cascades.back().shortestWavelength_m());

@@ -81,10 +81,6 @@ struct SpectralField {
     // Each cascade is looked up at x + w_c(x) (spectral_warp.h), so the sum
     // does not repeat with any patch.
     std::array<CascadeWarp, kCascades> warps{};
-    // Each cascade's wavelength weighted by its waves' variance, m: the wave
-    // that carries its energy (what its warp turns, and what decides where
-    // its filtered field still shows: spectral_cpu.h, filteredCascadeWeight).
-    std::array<double, kCascades> meanWavelength_m{};
 };
 
 // Draws the field of a sea. The same spectrum, choppiness and seed give

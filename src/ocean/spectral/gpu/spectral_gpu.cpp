@@ -193,7 +193,7 @@ public:
             uc.originTexels = glm::vec2(origin * scale);
             uc.texelsPerMetre = float(scale);
             uc.shortestWavelength_m = float(cascade.shortestWavelength_m());
-            uc.filteredWavelength_m = float(std::min(filteredFieldWavelength_m(*field_, c), 1e30));
+            uc.filteredWavelength_m = float(std::min(filteredFieldWavelength_m(c), 1e30));
             double shortestWarp_m = std::numeric_limits<double>::infinity();
             for (int i = 0; i < kWarpWaves; ++i) {
                 const WarpWave& w = field_->warps[size_t(c)][size_t(i)];

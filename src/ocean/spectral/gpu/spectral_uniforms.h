@@ -28,7 +28,7 @@ struct alignas(16) CascadeUniform {
     float texelsPerMetre;       // N / L
     float shortestWavelength_m; // the shortest wave the cascade holds (what the LOD weight tests), m
     float vertexWarpCell_m;     // grid cells up to this (m) take the warp interpolated from their vertices
-    float filteredWavelength_m; // its filtered field is drawn while this wave is resolved (1e30: always), m
+    float filteredWavelength_m; // its filtered field is drawn while this wave is resolved (1e30: always; 0: never), m
     WarpWaveUniform warp[SWELL_FFT_WARP_WAVES];
 };
 
