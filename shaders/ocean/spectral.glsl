@@ -92,23 +92,39 @@ float filteredCascadeWeight(int c, float footprint_m)
     return (1.0 - exact) * cascadeWeight(cascades[c].filteredWavelength_m, footprint_m);
 }
 
+// The uniform cubic B-spline's weights of the texels at cell - 1 .. cell + 2
+// for a point f (0..1) past texel `cell`, along each axis.
+void cubicBSplineWeights(vec2 f, out vec2 w[4])
+{
+    w[0] = (1.0 - f) * (1.0 - f) * (1.0 - f) / 6.0;
+    w[1] = (4.0 - 6.0 * f * f + 3.0 * f * f * f) / 6.0;
+    w[3] = f * f * f / 6.0;
+    w[2] = 1.0 - w[0] - w[1] - w[3];
+}
+
 // Level `level` of a cascade's displacement at level 0's texel position s,
-// bilinear with exact weights: its texel j is the mean of level 0's
-// j * 2^level .. (j + 1) * 2^level - 1.
-vec3 bilinearDisplacementAt(vec2 s, int cascade, int level)
+// through a cubic B-spline over its texels (level l's texel j is the mean
+// of level 0's j * 2^l .. (j + 1) * 2^l - 1), with exact weights: a
+// bilinear surface creases along the texels' lines, and the chain's coarse
+// texels are cells wide.
+vec3 bsplineDisplacementAt(vec2 s, int cascade, int level)
 {
     float scale = exp2(-float(level));
     vec2 sl = (s + 0.5) * scale - 0.5;
     vec2 cell = floor(sl);
-    vec2 f = sl - cell;
+    vec2 w[4];
+    cubicBSplineWeights(sl - cell, w);
     int mask = (SWELL_FFT_SIZE >> level) - 1;
-    ivec2 i0 = ivec2(cell) & mask;
-    ivec2 i1 = (i0 + 1) & mask;
-    vec3 top = mix(texelFetch(oceanDisplacement, ivec3(i0.x, i0.y, cascade), level).xyz,
-                   texelFetch(oceanDisplacement, ivec3(i1.x, i0.y, cascade), level).xyz, f.x);
-    vec3 bottom = mix(texelFetch(oceanDisplacement, ivec3(i0.x, i1.y, cascade), level).xyz,
-                      texelFetch(oceanDisplacement, ivec3(i1.x, i1.y, cascade), level).xyz, f.x);
-    return mix(top, bottom, f.y);
+    ivec2 first = ivec2(cell) - 1;
+    vec3 sum = vec3(0.0);
+    for (int row = 0; row < 4; ++row) {
+        vec3 line = vec3(0.0);
+        for (int col = 0; col < 4; ++col)
+            line += w[col].x *
+                    texelFetch(oceanDisplacement, ivec3((first.x + col) & mask, (first.y + row) & mask, cascade), level).xyz;
+        sum += w[row].y * line;
+    }
+    return sum;
 }
 
 // swell::spectral::CpuSurface::filteredDisplacement: cascade c's
@@ -119,8 +135,8 @@ vec3 filteredDisplacement(int c, vec2 s, float footprint_m)
     float level = displacementLevel(c, footprint_m);
     int first = int(floor(level));
     int second = min(first + 1, SWELL_FFT_LOG2_SIZE);
-    vec3 a = bilinearDisplacementAt(s, c, first);
-    return second == first ? a : mix(a, bilinearDisplacementAt(s, c, second), level - float(first));
+    vec3 a = bsplineDisplacementAt(s, c, first);
+    return second == first ? a : mix(a, bsplineDisplacementAt(s, c, second), level - float(first));
 }
 
 // The Jacobian of the horizontal displacement of cascades
@@ -150,15 +166,13 @@ float foldJacobian(vec2 restOffset_m, int cascadeCount)
 // filter's, thresholded into foam edges, step along the texel grid.
 float foamBSpline(vec2 s, int level)
 {
-    vec2 cell = floor(s), f = s - cell;
-    vec2 w0 = (1.0 - f) * (1.0 - f) * (1.0 - f) / 6.0;
-    vec2 w1 = (4.0 - 6.0 * f * f + 3.0 * f * f * f) / 6.0;
-    vec2 w3 = f * f * f / 6.0;
-    vec2 w2 = 1.0 - w0 - w1 - w3;
-    vec2 g0 = w0 + w1, g1 = w2 + w3;
+    vec2 cell = floor(s);
+    vec2 w[4];
+    cubicBSplineWeights(s - cell, w);
+    vec2 g0 = w[0] + w[1], g1 = w[2] + w[3];
     // The taps' texel coordinates, plus half a texel for the hardware's filter.
-    vec2 h0 = (cell - 1.0 + w1 / g0 + 0.5) / float(SWELL_FOAM_SIZE);
-    vec2 h1 = (cell + 1.0 + w3 / g1 + 0.5) / float(SWELL_FOAM_SIZE);
+    vec2 h0 = (cell - 1.0 + w[1] / g0 + 0.5) / float(SWELL_FOAM_SIZE);
+    vec2 h1 = (cell + 1.0 + w[3] / g1 + 0.5) / float(SWELL_FOAM_SIZE);
     float l = float(level);
     return g0.y * (g0.x * textureLod(oceanFoam, vec3(h0.x, h0.y, l), 0.0).r +
                    g1.x * textureLod(oceanFoam, vec3(h1.x, h0.y, l), 0.0).r) +

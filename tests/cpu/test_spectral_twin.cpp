@@ -120,8 +120,10 @@ TEST(SpectralTwin, AFilteredFieldIsMadeFromTheColumnsUnderItsTexels)
     const double level = displacementLevel(field->cascades[size_t(filteredCascade)], filter.footprint_m);
     ASSERT_GT(level, 1.0);
     ASSERT_LT(level, 6.0);
-    // The columns under two texels of the coarser level read, of two pairs.
-    const std::int64_t under = 2 * (std::int64_t(2) << int(std::floor(level) + 1));
+    // The columns under the four texels a row of each level's B-spline
+    // reads, of two pairs.
+    const int first = int(std::floor(level));
+    const std::int64_t under = 2 * ((std::int64_t(4) << first) + (std::int64_t(4) << (first + 1)));
 
     const double time_s = 12.5;
     CpuSurface lazy(field), eager(field);

@@ -166,26 +166,24 @@ void CpuSurface::makeColumn(int c, int p, int column, void* fft) const
 namespace {
 
 // Field v of one cascade at texel position (sx, sz), bilinear, the patch
-// repeating every `size` texels (kSize at level 0, kSize >> l at level l).
+// repeating every kSize texels.
 struct Bilinear {
     size_t i00, i01, i10, i11; // (row, column) 00, 01, 10, 11
-    int column0, column1, row0, row1;
+    int column0, column1;
     double fx, fz;
-    Bilinear(double sx, double sz, int size = kSize)
+    Bilinear(double sx, double sz)
     {
         const double x0 = std::floor(sx), z0 = std::floor(sz);
         fx = sx - x0;
         fz = sz - z0;
-        auto wrap = [size](double v) { return int(v - size * std::floor(v / size)); };
-        const int c0 = wrap(x0), c1 = (c0 + 1) % size, r0 = wrap(z0), r1 = (r0 + 1) % size;
+        auto wrap = [](double v) { return int(v - kSize * std::floor(v / kSize)); };
+        const int c0 = wrap(x0), c1 = (c0 + 1) % kSize, r0 = wrap(z0), r1 = (r0 + 1) % kSize;
         column0 = c0;
         column1 = c1;
-        row0 = r0;
-        row1 = r1;
-        i00 = size_t(r0) * size_t(size) + size_t(c0);
-        i01 = size_t(r0) * size_t(size) + size_t(c1);
-        i10 = size_t(r1) * size_t(size) + size_t(c0);
-        i11 = size_t(r1) * size_t(size) + size_t(c1);
+        i00 = size_t(r0) * kSize + size_t(c0);
+        i01 = size_t(r0) * kSize + size_t(c1);
+        i10 = size_t(r1) * kSize + size_t(c0);
+        i11 = size_t(r1) * kSize + size_t(c1);
     }
     double operator()(const std::vector<float>& a) const
     {
@@ -235,16 +233,26 @@ glm::dvec3 CpuSurface::filteredDisplacement(int c, glm::dvec2 s, double footprin
     const double level = displacementLevel(field_->cascades[size_t(c)], footprint_m);
     const int first = int(std::floor(level)), second = std::min(first + 1, kLog2Size);
     auto at = [&](int l) {
-        // Level l's texel j is the mean of level 0's j * 2^l .. (j + 1) * 2^l - 1.
+        // Level l's texel j is the mean of level 0's j * 2^l .. (j + 1) * 2^l - 1;
+        // a cubic B-spline over its texels (spectral.glsl's bsplineDisplacementAt).
+        const int n = kSize >> l;
         const double scale = std::ldexp(1.0, -l);
-        const Bilinear b((s.x + 0.5) * scale - 0.5, (s.y + 0.5) * scale - 0.5, kSize >> l);
-        glm::dvec3 v;
-        for (int f = 0; f < 3; ++f) {
-            const double top =
-                mipTexel(c, l, b.row0, b.column0, f) * (1.0 - b.fx) + mipTexel(c, l, b.row0, b.column1, f) * b.fx;
-            const double bottom =
-                mipTexel(c, l, b.row1, b.column0, f) * (1.0 - b.fx) + mipTexel(c, l, b.row1, b.column1, f) * b.fx;
-            v[f] = top * (1.0 - b.fz) + bottom * b.fz;
+        const glm::dvec2 sl = (s + 0.5) * scale - 0.5;
+        const glm::dvec2 cell = glm::floor(sl), f = sl - cell;
+        glm::dvec2 w[4];
+        w[0] = (1.0 - f) * (1.0 - f) * (1.0 - f) / 6.0;
+        w[1] = (4.0 - 6.0 * f * f + 3.0 * f * f * f) / 6.0;
+        w[3] = f * f * f / 6.0;
+        w[2] = 1.0 - w[0] - w[1] - w[3];
+        auto wrap = [n](double v) { return int(v - n * std::floor(v / n)); };
+        const int x0 = wrap(cell.x - 1.0), z0 = wrap(cell.y - 1.0);
+        glm::dvec3 v(0.0);
+        for (int row = 0; row < 4; ++row) {
+            glm::dvec3 line(0.0);
+            for (int col = 0; col < 4; ++col)
+                for (int field = 0; field < 3; ++field)
+                    line[field] += w[col].x * mipTexel(c, l, (z0 + row) % n, (x0 + col) % n, field);
+            v += w[row].y * line;
         }
         return v;
     };

@@ -42,15 +42,17 @@ double cascadeWeight(const Cascade& cascade, double footprint_m);
 // Where the first cascade's exact field fades (cascadeWeight below 1), its
 // filtered field takes the rest: the same field averaged over texels as
 // wide as the footprint (its mip chain, each level's texel the mean of the
-// 2 x 2 below it, read at displacementLevel()), so the swell it holds stays
+// 2 x 2 below it, read at displacementLevel() through a cubic B-spline over
+// the level's texels, whose lines a bilinear read creased), so the swell it holds stays
 // in the geometry where its short waves would alias. Without it a far
 // vertex lost the whole cascade, and with it every wave longer than its
 // band's start: the storm's 300 m swell went flat 470 m off. The other
 // cascades keep their exact fields alone: with theirs (drawn while the
 // cells resolved their mean wavelength), the storm's foam seen from 20 m
-// showed a lattice 0.23 m apart (FoamTexture.NoCellsFrom20m: a peak 13.2
-// times its ring's median against 9.6), the creases of the chain's bilinear
-// texels in the horizontal displacement. The GLSL twins are in
+// showed a lattice 0.23 m apart, about the grid's cells there
+// (FoamTexture.NoCellsFrom20m: a peak 13.2 times its ring's median, 14.0
+// through the B-spline, against 9.6): waves of a few cells each facet the
+// drawn surface cell by cell. The GLSL twins are in
 // shaders/ocean/spectral.glsl.
 double filteredCascadeWeight(const SpectralField& field, int c, double footprint_m);
 // The wave whose resolution decides where cascade c's filtered field is
