@@ -84,25 +84,10 @@ bool pixelUnderwater()
 // waterline.frag): the eye lies under the plane of the facet drawn there. The facet's normal comes from the
 // position's screen derivatives (what the rasteriser drew, not the shading
 // normal), turned to point up; call in uniform control flow.
-//
-// Seen from the air, a facet within 30 degrees of level is seen from
-// above. From an eye in the air a surface without folds is only ever seen
-// from above; what the air rightly sees from below is a fold's underside
-// where the surface turns over, steeper than that. A facet near level said
-// otherwise only where it is met near edge-on: on the ridges of the
-// horizon's crests, 650 to 1200 m off from 2 to 7 m up, the plane from a
-// pixel's differences put the eye 0.1 to 5 degrees below it (specks of the
-// depths' colour along the horizon's swell). From under the water no such
-// rule holds (a near plane that straddles the surface sees it from above
-// at a graze too).
-const float kLevelFacetCosine = 0.866; // cos(30 deg)
-
 bool facetSeenFromBelow(vec3 p)
 {
-    vec3 facet = normalize(cross(dFdx(p), dFdy(p)));
+    vec3 facet = cross(dFdx(p), dFdy(p));
     facet *= facet.y < 0.0 ? -1.0 : 1.0;
-    if (eyeUnderwater == 0 && facet.y > kLevelFacetCosine)
-        return false;
     return dot(facet, eyePosition - p) < 0.0;
 }
 

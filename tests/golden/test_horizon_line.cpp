@@ -129,10 +129,8 @@ TEST_F(HorizonLine, NoDepthsColourAtAnyFarPlaneOrCameraHeight)
 // to 1200 m off): no pixel of the depths' colour along their ridges. There
 // the front and back faces of a crest meet closer than a standard depth
 // buffer tells apart at that distance, so the waterline mask compares the
-// distance to the eye instead (waterline.frag), and from the air a facet
-// within 30 degrees of level is seen from above (underwater.glsl): with the
-// frame's depth, 2 pixels of this view were seen from below; by the facet
-// alone, 1 more.
+// distance to the eye instead (waterline.frag): with the frame's depth,
+// pixels of this view were seen from below (945,257).
 TEST_F(HorizonLine, NoDepthsColourAlongTheCrestsOfTheHorizonsSwell)
 {
     swell::Scene scene = swell::loadScene(std::string(SWELL_SOURCE_DIR) + "/scenes/storm.toml");
