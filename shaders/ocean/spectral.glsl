@@ -82,14 +82,11 @@ float displacementLevel(int c, float footprint_m)
     return clamp(log2(max(footprint_m * cascades[c].texelsPerMetre, 1.0)), 0.0, float(SWELL_FFT_LOG2_SIZE));
 }
 
-// swell::spectral::filteredCascadeWeight: where the exact field fades, the
-// filtered one takes the rest while its wave is resolved.
+// swell::spectral::filteredCascadeWeight: where the exact field of the
+// first SWELL_FFT_FILTERED_CASCADES fades, the filtered one takes the rest.
 float filteredCascadeWeight(int c, float footprint_m)
 {
-    float exact = cascadeWeight(cascades[c].shortestWavelength_m, footprint_m);
-    if (exact >= 1.0)
-        return 0.0;
-    return (1.0 - exact) * cascadeWeight(cascades[c].filteredWavelength_m, footprint_m);
+    return c < SWELL_FFT_FILTERED_CASCADES ? 1.0 - cascadeWeight(cascades[c].shortestWavelength_m, footprint_m) : 0.0;
 }
 
 // The uniform cubic B-spline's weights of the texels at cell - 1 .. cell + 2

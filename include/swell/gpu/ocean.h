@@ -20,6 +20,11 @@
 #define SWELL_FFT_SIZE 256
 #define SWELL_FFT_LOG2_SIZE 8
 #define SWELL_FFT_CASCADES 4
+// The cascades whose displacement far vertices read filtered (a mip chain)
+// where their exact field fades: the first, which holds the swell
+// (src/ocean/spectral/spectral_cpu.h, filteredCascadeWeight). Only their
+// layers of the displacement's chain are built.
+#define SWELL_FFT_FILTERED_CASCADES 1
 // Sinusoids in each cascade's anti-tiling warp (src/ocean/spectral/
 // spectral_warp.h): enough directions that every wave direction and every
 // shift is decorrelated, few enough to cost little per vertex and pixel.

@@ -19,17 +19,9 @@ double cascadeWeight(const Cascade& cascade, double footprint_m)
     return waveLodWeight(cascade.shortestWavelength_m(), footprint_m);
 }
 
-double filteredFieldWavelength_m(int c)
-{
-    return c == 0 ? std::numeric_limits<double>::infinity() : 0.0;
-}
-
 double filteredCascadeWeight(const SpectralField& field, int c, double footprint_m)
 {
-    const double exact = cascadeWeight(field.cascades[size_t(c)], footprint_m);
-    if (exact >= 1.0)
-        return 0.0;
-    return (1.0 - exact) * waveLodWeight(filteredFieldWavelength_m(c), footprint_m);
+    return c < SWELL_FFT_FILTERED_CASCADES ? 1.0 - cascadeWeight(field.cascades[size_t(c)], footprint_m) : 0.0;
 }
 
 double displacementLevel(const Cascade& cascade, double footprint_m)

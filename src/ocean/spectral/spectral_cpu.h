@@ -54,11 +54,8 @@ double cascadeWeight(const Cascade& cascade, double footprint_m);
 // through the B-spline, against 9.6): waves of a few cells each facet the
 // drawn surface cell by cell. The GLSL twins are in
 // shaders/ocean/spectral.glsl.
+// 1 - cascadeWeight for the first SWELL_FFT_FILTERED_CASCADES, 0 for the others.
 double filteredCascadeWeight(const SpectralField& field, int c, double footprint_m);
-// The wave whose resolution decides where cascade c's filtered field is
-// drawn, m: none (infinite) for the first cascade, which holds every wave
-// longer than its band's start; for the others 0 (never drawn).
-double filteredFieldWavelength_m(int c);
 // The level of a cascade's mip chain whose texels are footprint_m wide,
 // 0 .. log2(kSize), fractional: the two levels about it are blended.
 double displacementLevel(const Cascade& cascade, double footprint_m);

@@ -193,7 +193,6 @@ public:
             uc.originTexels = glm::vec2(origin * scale);
             uc.texelsPerMetre = float(scale);
             uc.shortestWavelength_m = float(cascade.shortestWavelength_m());
-            uc.filteredWavelength_m = float(std::min(filteredFieldWavelength_m(c), 1e30));
             double shortestWarp_m = std::numeric_limits<double>::infinity();
             for (int i = 0; i < kWarpWaves; ++i) {
                 const WarpWave& w = field_->warps[size_t(c)][size_t(i)];
@@ -466,10 +465,11 @@ private:
                                                                                      : downsampler_.run(foam);
         work_.dispatches += work.dispatches;
         work_.barriers += work.barriers;
-        // The displacement's chain changes with the slopes' (every cascade transformed).
+        // The displacement's chain changes with the slopes' (every cascade
+        // transformed): the layers far vertices read filtered.
         if (slopeMipmapsStale_) {
             const gl::MipDownsampler::Work moved =
-                downsampler_.run({&displacement_, kSpectrumFormat, kSize, kFieldLevels, kCascades});
+                downsampler_.run({&displacement_, kSpectrumFormat, kSize, kFieldLevels, kFilteredCascades});
             work_.dispatches += moved.dispatches;
             work_.barriers += moved.barriers;
         }
@@ -477,7 +477,7 @@ private:
         // Levels 1 and up of each chain built, in its own format.
         if (slopeMipmapsStale_)
             work_.bytesWritten += texelBytes(kSlopeFormat) * mipTexels(kSize, kFieldLevels, kSlopeLayers, 1) +
-                                  texelBytes(kSpectrumFormat) * mipTexels(kSize, kFieldLevels, kCascades, 1);
+                                  texelBytes(kSpectrumFormat) * mipTexels(kSize, kFieldLevels, kFilteredCascades, 1);
         if (foamMipmapsStale_)
             work_.bytesWritten += texelBytes(kFoamFormat) * mipTexels(kFoamSize, kFoamFieldLevels, kFoamLevels, 1);
         slopeMipmapsStale_ = foamMipmapsStale_ = false;
@@ -494,12 +494,15 @@ private:
                 glTextureParameteri(previous_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
                 glTextureParameteri(previous_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
             }
-            // Every level: its far vertices read the chain (the fields of
-            // one time have theirs, built with the last step's mipmaps).
+            // Every cascade's base, and the chain of those far vertices read
+            // filtered (the fields of one time have theirs, built with the
+            // last step's mipmaps).
             for (int level = 0; level < kFieldLevels; ++level)
                 glCopyImageSubData(displacement_.id(), GL_TEXTURE_2D_ARRAY, level, 0, 0, 0, previous_.id(),
-                                   GL_TEXTURE_2D_ARRAY, level, 0, 0, 0, kSize >> level, kSize >> level, kCascades);
-            work_.bytesWritten += texelBytes(kSpectrumFormat) * mipTexels(kSize, kFieldLevels, kCascades);
+                                   GL_TEXTURE_2D_ARRAY, level, 0, 0, 0, kSize >> level, kSize >> level,
+                                   level == 0 ? kCascades : kFilteredCascades);
+            work_.bytesWritten += texelBytes(kSpectrumFormat) * (mipTexels(kSize, 1, kCascades) +
+                                                                 mipTexels(kSize, kFieldLevels, kFilteredCascades, 1));
         }
         previousTime_s_ = keepPrevious_ ? fieldsTime_s_ : kNoTime;
         fieldsTime_s_ = cascades == kCascades ? time_s : kNoTime;
@@ -516,6 +519,8 @@ private:
 
     // Mip levels of the cascades' fields and of the foam's windows.
     static constexpr int kFieldLevels = SWELL_FFT_LOG2_SIZE + 1;
+    // The displacement's layers whose chain is built (the rest: their base).
+    static constexpr int kFilteredCascades = SWELL_FFT_FILTERED_CASCADES;
     // The slopes' image: each cascade's derivatives, then each one's slope moments.
     static constexpr int kSlopeLayers = 2 * kCascades;
     static constexpr int kFoamFieldLevels = SWELL_FOAM_LOG2_SIZE + 1;

@@ -28,7 +28,6 @@ struct alignas(16) CascadeUniform {
     float texelsPerMetre;       // N / L
     float shortestWavelength_m; // the shortest wave the cascade holds (what the LOD weight tests), m
     float vertexWarpCell_m;     // grid cells up to this (m) take the warp interpolated from their vertices
-    float filteredWavelength_m; // its filtered field is drawn while this wave is resolved (1e30: always; 0: never), m
     WarpWaveUniform warp[SWELL_FFT_WARP_WAVES];
 };
 
@@ -64,8 +63,7 @@ inline const gl::BlockStruct& blockStructOf(const CascadeUniform*)
     static const gl::BlockStruct s{"SpectralCascade", "swell::spectral::CascadeUniform", sizeof(S),
                                    {SWELL_BLOCK_MEMBER(S, originTexels), SWELL_BLOCK_MEMBER(S, texelsPerMetre),
                                     SWELL_BLOCK_MEMBER(S, shortestWavelength_m),
-                                    SWELL_BLOCK_MEMBER(S, vertexWarpCell_m),
-                                    SWELL_BLOCK_MEMBER(S, filteredWavelength_m), SWELL_BLOCK_MEMBER(S, warp)}};
+                                    SWELL_BLOCK_MEMBER(S, vertexWarpCell_m), SWELL_BLOCK_MEMBER(S, warp)}};
     return s;
 }
 
